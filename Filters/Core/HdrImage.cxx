@@ -1,0 +1,103 @@
+#include "HdrImage.h"
+
+#include <ImfArray.h>
+#include <ImfRgbaFile.h>
+
+#include <cmath>
+#include <exception>
+
+namespace radiosity
+{
+
+std::vector<float> RenderRadiosity(
+  const Visibility& scene, const std::vector<Vec3>& pointValues, const PinholeCamera& camera)
+{
+  const int w = camera.Width, h = camera.Height;
+  std::vector<float> rgb(3 * static_cast<size_t>(w) * h, 0.0f);
+  const Vec3 forward = Normalized(camera.FocalPoint - camera.Position);
+  const Vec3 right = Normalized(Cross(forward, camera.ViewUp));
+  const Vec3 up = Cross(right, forward);
+  const double halfHeight = std::tan(0.5 * camera.ViewAngle * 3.14159265358979323846 / 180.0);
+  const double halfWidth = halfHeight * w / h;
+  for (int y = 0; y < h; ++y)
+  {
+    for (int x = 0; x < w; ++x)
+    {
+      const double sx = (2.0 * (x + 0.5) / w - 1.0) * halfWidth;
+      const double sy = (1.0 - 2.0 * (y + 0.5) / h) * halfHeight;
+      Visibility::Hit hit;
+      if (!scene.Intersect(camera.Position, forward + right * sx + up * sy, hit))
+      {
+        continue;
+      }
+      const double w0 = 1.0 - hit.u - hit.v;
+      const Vec3 value = pointValues[hit.corner[0]] * w0 + pointValues[hit.corner[1]] * hit.u +
+        pointValues[hit.corner[2]] * hit.v;
+      float* px = &rgb[3 * (static_cast<size_t>(y) * w + x)];
+      px[0] = static_cast<float>(value.x);
+      px[1] = static_cast<float>(value.y);
+      px[2] = static_cast<float>(value.z);
+    }
+  }
+  return rgb;
+}
+
+std::string WriteExr(const std::string& path, int width, int height, const std::vector<float>& rgb)
+{
+  if (width <= 0 || height <= 0 || rgb.size() != 3 * static_cast<size_t>(width) * height)
+  {
+    return "WriteExr: image size does not match its pixel data";
+  }
+  try
+  {
+    Imf::Array2D<Imf::Rgba> pixels(height, width);
+    for (int y = 0; y < height; ++y)
+    {
+      for (int x = 0; x < width; ++x)
+      {
+        const float* p = &rgb[3 * (static_cast<size_t>(y) * width + x)];
+        pixels[y][x] = Imf::Rgba(p[0], p[1], p[2], 1.0f);
+      }
+    }
+    Imf::RgbaOutputFile file(path.c_str(), width, height, Imf::WRITE_RGB);
+    file.setFrameBuffer(&pixels[0][0], 1, width);
+    file.writePixels(height);
+  }
+  catch (const std::exception& e)
+  {
+    return std::string("OpenEXR could not write ") + path + ": " + e.what();
+  }
+  return std::string();
+}
+
+std::string ReadExr(const std::string& path, int& width, int& height, std::vector<float>& rgb)
+{
+  try
+  {
+    Imf::RgbaInputFile file(path.c_str());
+    const Imath::Box2i window = file.dataWindow();
+    width = window.max.x - window.min.x + 1;
+    height = window.max.y - window.min.y + 1;
+    Imf::Array2D<Imf::Rgba> pixels(height, width);
+    file.setFrameBuffer(&pixels[0][0] - window.min.x - window.min.y * width, 1, width);
+    file.readPixels(window.min.y, window.max.y);
+    rgb.resize(3 * static_cast<size_t>(width) * height);
+    for (int y = 0; y < height; ++y)
+    {
+      for (int x = 0; x < width; ++x)
+      {
+        float* p = &rgb[3 * (static_cast<size_t>(y) * width + x)];
+        p[0] = pixels[y][x].r;
+        p[1] = pixels[y][x].g;
+        p[2] = pixels[y][x].b;
+      }
+    }
+  }
+  catch (const std::exception& e)
+  {
+    return std::string("OpenEXR could not read ") + path + ": " + e.what();
+  }
+  return std::string();
+}
+
+} // namespace radiosity

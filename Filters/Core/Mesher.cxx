@@ -1,0 +1,267 @@
+#include "Mesher.h"
+#include "Polygon.h"
+
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <tuple>
+
+namespace radiosity
+{
+
+namespace
+{
+using SurfaceMesh = OpenMesh::PolyMesh_ArrayKernelT<>;
+
+/// Elements of one input polygon before they are stitched into a surface.
+struct Piece
+{
+  std::vector<Vec3> corners; // flattened, `sides` per element
+  std::vector<int> sides;
+  std::vector<int> localPatch;
+  int patchCount = 0;
+};
+
+int Divisions(double length, double size)
+{
+  return std::max(1, static_cast<int>(std::ceil(length / size - 1e-9)));
+}
+
+void SplitQuad(const Vec3* q, const MesherOptions& o, Piece& piece)
+{
+  const double lu = std::max(Norm(q[1] - q[0]), Norm(q[2] - q[3]));
+  const double lv = std::max(Norm(q[3] - q[0]), Norm(q[2] - q[1]));
+  const int pu = Divisions(lu, o.PatchSize), pv = Divisions(lv, o.PatchSize);
+  const int eu = Divisions(lu / pu, o.ElementSize), ev = Divisions(lv / pv, o.ElementSize);
+  const int nu = pu * eu, nv = pv * ev;
+  // Every point comes from the same bilinear formula, so neighbours share exact values.
+  auto at = [&](int i, int j) {
+    const double s = static_cast<double>(i) / nu, t = static_cast<double>(j) / nv;
+    return q[0] * ((1 - s) * (1 - t)) + q[1] * (s * (1 - t)) + q[2] * (s * t) + q[3] * ((1 - s) * t);
+  };
+  for (int j = 0; j < nv; ++j)
+  {
+    for (int i = 0; i < nu; ++i)
+    {
+      piece.corners.insert(piece.corners.end(), { at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1) });
+      piece.sides.push_back(4);
+      piece.localPatch.push_back((j / ev) * pu + i / eu);
+    }
+  }
+  piece.patchCount = pu * pv;
+}
+
+void SplitTriangle(const Vec3& a, const Vec3& b, const Vec3& c, const MesherOptions& o, Piece& piece)
+{
+  const double longest = std::max({ Norm(b - a), Norm(c - b), Norm(a - c) });
+  const int np = Divisions(longest, o.PatchSize);
+  const int ne = Divisions(longest / np, o.ElementSize);
+  const int n = np * ne;
+  auto at = [&](int i, int j) {
+    return a + (b - a) * (static_cast<double>(i) / n) + (c - a) * (static_cast<double>(j) / n);
+  };
+  // A patch is a cell of the coarse lattice: upright (I, J) or inverted; the element's
+  // centroid in coarse coordinates tells which.
+  auto patchOf = [&](double ci, double cj) {
+    const int I = static_cast<int>(std::floor(ci / ne)), J = static_cast<int>(std::floor(cj / ne));
+    const bool inverted = (ci / ne - I) + (cj / ne - J) > 1;
+    return piece.patchCount + (I * np + J) * 2 + (inverted ? 1 : 0);
+  };
+  for (int i = 0; i < n; ++i)
+  {
+    for (int j = 0; i + j < n; ++j)
+    {
+      piece.corners.insert(piece.corners.end(), { at(i, j), at(i + 1, j), at(i, j + 1) });
+      piece.sides.push_back(3);
+      piece.localPatch.push_back(patchOf(i + 1.0 / 3, j + 1.0 / 3));
+      if (i + j + 1 < n)
+      {
+        piece.corners.insert(piece.corners.end(), { at(i + 1, j), at(i + 1, j + 1), at(i, j + 1) });
+        piece.sides.push_back(3);
+        piece.localPatch.push_back(patchOf(i + 2.0 / 3, j + 2.0 / 3));
+      }
+    }
+  }
+  piece.patchCount += np * np * 2;
+}
+
+long long EstimateElements(const std::vector<Vec3>& loop, const MesherOptions& o)
+{
+  double longest = 0;
+  for (size_t i = 0; i < loop.size(); ++i)
+  {
+    longest = std::max(longest, Norm(loop[(i + 1) % loop.size()] - loop[i]));
+  }
+  const double per = std::ceil(longest / o.ElementSize) + 1;
+  return static_cast<long long>(per * per) * static_cast<long long>(loop.size());
+}
+} // namespace
+
+std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, const std::vector<int>& surfaceKey,
+  const MesherOptions& options, MeshedPolygons& out)
+{
+  out = MeshedPolygons();
+  std::ostringstream err;
+  if (!(options.PatchSize > 0) || !(options.ElementSize > 0) || !std::isfinite(options.PatchSize))
+  {
+    err << "PatchSize (" << options.PatchSize << ") and ElementSize (" << options.ElementSize
+        << ") must be positive";
+    return err.str();
+  }
+  const int count = static_cast<int>(offsets.size()) - 1;
+  double diagonal = 0;
+  {
+    Vec3 lo = points.empty() ? Vec3() : points[0], hi = lo;
+    for (const Vec3& p : points)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        lo[c] = std::min(lo[c], p[c]);
+        hi[c] = std::max(hi[c], p[c]);
+      }
+    }
+    diagonal = Norm(hi - lo);
+  }
+  const double quantum = std::max(diagonal, 1e-300) * 1e-9;
+
+  // Surfaces: same caller key and same plane, up to a tolerance relative to the scene.
+  using SurfaceId = std::tuple<int, long long, long long, long long, long long>;
+  std::map<SurfaceId, int> surfaceIndex;
+  std::vector<SurfaceMesh> surfaces;
+  std::vector<std::map<std::tuple<long long, long long, long long>, SurfaceMesh::VertexHandle>> welds;
+  // Per surface face: (input polygon, global patch id), parallel to the OpenMesh faces.
+  std::vector<std::vector<std::pair<int, int>>> faceInfo;
+
+  long long estimate = 0;
+  for (int i = 0; i < count; ++i)
+  {
+    std::vector<Vec3> loop;
+    for (int k = offsets[i]; k < offsets[i + 1]; ++k)
+    {
+      loop.push_back(points[connectivity[k]]);
+    }
+    estimate += EstimateElements(loop, options);
+  }
+  if (estimate > options.MaximumElements)
+  {
+    err << "ElementSize " << options.ElementSize << " would make about " << estimate
+        << " elements, more than the limit of " << options.MaximumElements
+        << "; choose a larger ElementSize";
+    return err.str();
+  }
+
+  for (int i = 0; i < count; ++i)
+  {
+    if (options.Progress && !options.Progress(static_cast<double>(i) / std::max(count, 1)))
+    {
+      return "meshing was aborted";
+    }
+    std::vector<Vec3> loop;
+    for (int k = offsets[i]; k < offsets[i + 1]; ++k)
+    {
+      loop.push_back(points[connectivity[k]]);
+    }
+    if (loop.size() < 3)
+    {
+      err << "cell " << i << " has " << loop.size() << " points; polygons need at least 3";
+      return err.str();
+    }
+    const Vec3 newell = NewellVector(loop.data(), static_cast<int>(loop.size()));
+    if (!(0.5 * Norm(newell) > 1e-14 * diagonal * diagonal))
+    {
+      err << "cell " << i << " has zero area; remove degenerate cells";
+      return err.str();
+    }
+    const Vec3 normal = Normalized(newell);
+    Piece piece;
+    if (loop.size() == 4)
+    {
+      SplitQuad(loop.data(), options, piece);
+    }
+    else
+    {
+      for (size_t t = 1; t + 1 < loop.size(); ++t)
+      {
+        SplitTriangle(loop[0], loop[t], loop[t + 1], options, piece);
+      }
+    }
+
+    const double planeOffset = Dot(normal, PolygonCentroid(loop.data(), static_cast<int>(loop.size())));
+    auto q = [&](double v, double scale) { return static_cast<long long>(std::llround(v / scale)); };
+    const SurfaceId id{ surfaceKey[i], q(normal.x, 1e-6), q(normal.y, 1e-6), q(normal.z, 1e-6),
+      q(planeOffset, quantum * 1000) };
+    auto found = surfaceIndex.emplace(id, static_cast<int>(surfaces.size()));
+    const int s = found.first->second;
+    if (found.second)
+    {
+      surfaces.emplace_back();
+      welds.emplace_back();
+      faceInfo.emplace_back();
+    }
+    SurfaceMesh& mesh = surfaces[s];
+    size_t corner = 0;
+    for (size_t e = 0; e < piece.sides.size(); ++e)
+    {
+      std::vector<SurfaceMesh::VertexHandle> handles;
+      for (int v = 0; v < piece.sides[e]; ++v, ++corner)
+      {
+        const Vec3& p = piece.corners[corner];
+        const auto key = std::make_tuple(q(p.x, quantum), q(p.y, quantum), q(p.z, quantum));
+        auto weld = welds[s].find(key);
+        if (weld == welds[s].end())
+        {
+          weld = welds[s].emplace(key, mesh.add_vertex(SurfaceMesh::Point(p.x, p.y, p.z))).first;
+        }
+        handles.push_back(weld->second);
+      }
+      SurfaceMesh::FaceHandle face = mesh.add_face(handles);
+      if (!face.is_valid())
+      {
+        // Overlapping input (coincident faces, T-shaped junctions of three faces on one
+        // edge) is not a 2-manifold: give the element its own vertices instead.
+        for (auto& h : handles)
+        {
+          const auto p = mesh.point(h);
+          h = mesh.add_vertex(p);
+        }
+        face = mesh.add_face(handles);
+      }
+      faceInfo[s].emplace_back(i, out.patches + piece.localPatch[e]);
+    }
+    out.patches += piece.patchCount;
+  }
+
+  // Patch ids of empty lattice cells are never used; compact them to 0..patches-1.
+  std::map<int, int> compact;
+  for (size_t s = 0; s < surfaces.size(); ++s)
+  {
+    const SurfaceMesh& mesh = surfaces[s];
+    const int base = static_cast<int>(out.points.size());
+    for (auto v : mesh.vertices())
+    {
+      const auto p = mesh.point(v);
+      out.points.push_back({ p[0], p[1], p[2] });
+    }
+    size_t f = 0;
+    for (auto face : mesh.faces())
+    {
+      for (auto v : mesh.fv_range(face))
+      {
+        out.connectivity.push_back(base + v.idx());
+      }
+      out.offsets.push_back(static_cast<int>(out.connectivity.size()));
+      out.sourcePolygon.push_back(faceInfo[s][f].first);
+      const int patch = compact.emplace(faceInfo[s][f].second, static_cast<int>(compact.size())).first->second;
+      out.patchId.push_back(patch);
+      ++f;
+    }
+  }
+  out.patches = static_cast<int>(compact.size());
+  return std::string();
+}
+
+} // namespace radiosity

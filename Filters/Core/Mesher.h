@@ -1,0 +1,45 @@
+// Two-level uniform meshing for substructured radiosity: polygons -> patches -> elements.
+#ifndef RadiosityCore_Mesher_h
+#define RadiosityCore_Mesher_h
+
+#include "Vec3.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace radiosity
+{
+
+struct MesherOptions
+{
+  double PatchSize = 1.0;   ///< longest patch edge, world units
+  double ElementSize = 0.25; ///< longest element edge, world units
+  long long MaximumElements = 20000000; ///< refuse settings that would exhaust memory
+  std::function<bool(double)> Progress; ///< return false to abort
+};
+
+struct MeshedPolygons
+{
+  std::vector<Vec3> points;
+  std::vector<int> offsets{ 0 };
+  std::vector<int> connectivity;
+  std::vector<int> sourcePolygon; ///< input polygon each element came from
+  std::vector<int> patchId;       ///< 0..patches-1
+  int patches = 0;
+};
+
+/// Splits each planar convex polygon (quads on a bilinear grid, others fan-triangulated and
+/// split on a barycentric lattice) into patches with edges <= PatchSize, and each patch
+/// into elements with edges <= ElementSize. Points are shared between elements of input
+/// polygons that lie in one plane with the same `surfaceKey` (the caller's material id)
+/// and touch; everywhere else they are split, so smoothing over shared vertices never
+/// mixes two materials or orientations. The connectivity is held in OpenMesh meshes, one
+/// per surface. Returns an empty string or an error naming the problem.
+std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, const std::vector<int>& surfaceKey,
+  const MesherOptions& options, MeshedPolygons& out);
+
+} // namespace radiosity
+
+#endif

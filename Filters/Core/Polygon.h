@@ -1,0 +1,31 @@
+// Planar convex polygon helpers shared by the form-factor code, the solver and the mesher.
+#ifndef RadiosityCore_Polygon_h
+#define RadiosityCore_Polygon_h
+
+#include "Vec3.h"
+
+#include <vector>
+
+namespace radiosity
+{
+
+/// Newell's vector: normal direction of the right-hand-rule loop, length = 2 * area.
+/// Robust for non-planar or nearly degenerate loops, unlike a single cross product.
+Vec3 NewellVector(const Vec3* loop, int count);
+
+inline double PolygonArea(const Vec3* loop, int count)
+{
+  return 0.5 * Norm(NewellVector(loop, count));
+}
+
+Vec3 PolygonCentroid(const Vec3* loop, int count);
+
+/// Keeps the part of a convex loop with dot(normal, x - origin) >= 0 (Sutherland-Hodgman).
+/// The analytic form factor integrates over the whole polygon, so parts behind the receiver
+/// must be removed first or they cancel visible parts.
+void ClipToHalfSpace(const Vec3* loop, int count, const Vec3& origin, const Vec3& normal,
+  std::vector<Vec3>& clipped);
+
+} // namespace radiosity
+
+#endif

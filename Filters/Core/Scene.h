@@ -1,0 +1,52 @@
+// The radiosity scene as the core sees it: polygons (elements) grouped into patches.
+#ifndef RadiosityCore_Scene_h
+#define RadiosityCore_Scene_h
+
+#include "Vec3.h"
+
+#include <string>
+#include <vector>
+
+namespace radiosity
+{
+
+/// Input mesh, flat arrays so a VTK adapter can fill it without VTK types leaking in.
+/// Conventions used everywhere in the core:
+/// - radiosity B and emission E are exitances (W/m^2 per channel), not radiances;
+/// - a polygon's front side is given by the right-hand rule; emitters emit only forward.
+struct SceneMesh
+{
+  std::vector<Vec3> points;
+  std::vector<int> offsets{ 0 }; ///< polygon i uses connectivity[offsets[i], offsets[i+1])
+  std::vector<int> connectivity;
+  std::vector<Vec3> reflectance; ///< per polygon, RGB in [0, 1]
+  std::vector<int> lightId;      ///< per polygon, -1 or 0..k-1
+  std::vector<int> patchId;      ///< per polygon; empty: every polygon is its own patch
+
+  int NumberOfPolygons() const { return static_cast<int>(offsets.size()) - 1; }
+  int PolygonSize(int i) const { return offsets[i + 1] - offsets[i]; }
+  const int* Polygon(int i) const { return connectivity.data() + offsets[i]; }
+  void AddPolygon(const std::vector<int>& ids);
+};
+
+/// Checks the input contract. Returns an empty string when valid, otherwise a message that
+/// names the offending array, the item and the value. On success sets `numberOfLights`.
+std::string ValidateScene(const SceneMesh& mesh, int& numberOfLights);
+
+/// Geometry derived once per solve: element normals, areas, centroids and patch groups.
+struct SceneGeometry
+{
+  std::vector<Vec3> normal; ///< unit, per element
+  std::vector<double> area;
+  std::vector<Vec3> centroid;
+  std::vector<std::vector<int>> patchElements; ///< elements of each (compacted) patch
+  std::vector<int> elementPatch;               ///< compacted patch index of each element
+  std::vector<double> patchArea;
+  double sceneDiagonal = 0;
+
+  explicit SceneGeometry(const SceneMesh& mesh);
+};
+
+} // namespace radiosity
+
+#endif

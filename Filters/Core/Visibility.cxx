@@ -1,0 +1,165 @@
+#include "Visibility.h"
+
+#include <embree3/rtcore.h>
+
+#include <limits>
+#include <vector>
+
+namespace radiosity
+{
+
+struct Visibility::Internals
+{
+  RTCDevice Device = nullptr;
+  RTCScene Scene = nullptr;
+  std::string Error;
+  std::vector<int> TrianglePolygon;        // source polygon of each triangle
+  std::vector<unsigned> TriangleCorners;   // 3 point ids per triangle
+  Vec3 Origin;                             // points are stored relative to this, in float
+};
+
+namespace
+{
+void OnEmbreeError(void* user, RTCError code, const char* message)
+{
+  auto* error = static_cast<std::string*>(user);
+  if (error->empty())
+  {
+    *error = "Embree error " + std::to_string(static_cast<int>(code)) + ": " +
+      (message ? message : "unknown");
+  }
+}
+
+void InitRay(RTCRay& ray, const Vec3& origin, const Vec3& direction, float tfar)
+{
+  ray.org_x = static_cast<float>(origin.x);
+  ray.org_y = static_cast<float>(origin.y);
+  ray.org_z = static_cast<float>(origin.z);
+  ray.dir_x = static_cast<float>(direction.x);
+  ray.dir_y = static_cast<float>(direction.y);
+  ray.dir_z = static_cast<float>(direction.z);
+  ray.tnear = 0.0f;
+  ray.tfar = tfar;
+  ray.time = 0.0f;
+  ray.mask = 0xFFFFFFFFu;
+  ray.id = 0;
+  ray.flags = 0;
+}
+} // namespace
+
+Visibility::Visibility(const SceneMesh& mesh)
+  : Impl(new Internals)
+{
+  Internals& d = *Impl;
+  // Embree works in float: center the scene so large coordinates keep their precision.
+  if (!mesh.points.empty())
+  {
+    Vec3 lo = mesh.points[0], hi = mesh.points[0];
+    for (const Vec3& p : mesh.points)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        lo[c] = p[c] < lo[c] ? p[c] : lo[c];
+        hi[c] = p[c] > hi[c] ? p[c] : hi[c];
+      }
+    }
+    d.Origin = (lo + hi) * 0.5;
+  }
+  d.Device = rtcNewDevice(nullptr);
+  if (!d.Device)
+  {
+    d.Error = "Embree could not create a device";
+    return;
+  }
+  rtcSetDeviceErrorFunction(d.Device, OnEmbreeError, &d.Error);
+  for (int i = 0; i < mesh.NumberOfPolygons(); ++i)
+  {
+    const int* ids = mesh.Polygon(i);
+    for (int t = 1; t + 1 < mesh.PolygonSize(i); ++t)
+    {
+      d.TriangleCorners.insert(d.TriangleCorners.end(),
+        { static_cast<unsigned>(ids[0]), static_cast<unsigned>(ids[t]),
+          static_cast<unsigned>(ids[t + 1]) });
+      d.TrianglePolygon.push_back(i);
+    }
+  }
+  d.Scene = rtcNewScene(d.Device);
+  // Robust mode avoids rays slipping through shared edges and vertices (light leaks).
+  rtcSetSceneFlags(d.Scene, RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneBuildQuality(d.Scene, RTC_BUILD_QUALITY_HIGH);
+  RTCGeometry geom = rtcNewGeometry(d.Device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0,
+    RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.points.size()));
+  auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0,
+    RTC_FORMAT_UINT3, 3 * sizeof(unsigned), d.TrianglePolygon.size()));
+  if (vertices && indices)
+  {
+    for (size_t p = 0; p < mesh.points.size(); ++p)
+    {
+      const Vec3 q = mesh.points[p] - d.Origin;
+      vertices[3 * p + 0] = static_cast<float>(q.x);
+      vertices[3 * p + 1] = static_cast<float>(q.y);
+      vertices[3 * p + 2] = static_cast<float>(q.z);
+    }
+    std::copy(d.TriangleCorners.begin(), d.TriangleCorners.end(), indices);
+  }
+  rtcCommitGeometry(geom);
+  rtcAttachGeometry(d.Scene, geom);
+  rtcReleaseGeometry(geom);
+  rtcCommitScene(d.Scene);
+}
+
+Visibility::~Visibility()
+{
+  if (Impl->Scene)
+  {
+    rtcReleaseScene(Impl->Scene);
+  }
+  if (Impl->Device)
+  {
+    rtcReleaseDevice(Impl->Device);
+  }
+}
+
+const std::string& Visibility::Error() const
+{
+  return Impl->Error;
+}
+
+bool Visibility::Occluded(const Vec3& from, const Vec3& to, double tolerance) const
+{
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRay ray;
+  // Unnormalized direction: t runs from 0 (from) to 1 (to).
+  InitRay(ray, from - Impl->Origin, to - from, static_cast<float>(1.0 - tolerance));
+  rtcOccluded1(Impl->Scene, &context, &ray);
+  return ray.tfar < 0.0f;
+}
+
+bool Visibility::Intersect(const Vec3& origin, const Vec3& direction, Hit& hit) const
+{
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rh;
+  InitRay(rh.ray, origin - Impl->Origin, direction, std::numeric_limits<float>::infinity());
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(Impl->Scene, &context, &rh);
+  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID)
+  {
+    return false;
+  }
+  const unsigned tri = rh.hit.primID;
+  hit.polygon = Impl->TrianglePolygon[tri];
+  for (int c = 0; c < 3; ++c)
+  {
+    hit.corner[c] = static_cast<int>(Impl->TriangleCorners[3 * tri + c]);
+  }
+  hit.u = rh.hit.u;
+  hit.v = rh.hit.v;
+  return true;
+}
+
+} // namespace radiosity

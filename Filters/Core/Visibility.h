@@ -1,0 +1,48 @@
+// Segment occlusion queries against the scene's polygons with Embree.
+#ifndef RadiosityCore_Visibility_h
+#define RadiosityCore_Visibility_h
+
+#include "Scene.h"
+
+#include <memory>
+#include <string>
+
+namespace radiosity
+{
+
+/// Builds one Embree scene (polygons fan-triangulated) and answers "is the open segment
+/// between two points blocked?" from any number of threads at once.
+class Visibility
+{
+public:
+  explicit Visibility(const SceneMesh& mesh);
+  ~Visibility();
+  Visibility(const Visibility&) = delete;
+  Visibility& operator=(const Visibility&) = delete;
+
+  /// Empty when the device and scene were built, otherwise Embree's error.
+  const std::string& Error() const;
+
+  /// True when a polygon intersects the segment strictly between `from` and `to`. The
+  /// caller offsets the endpoints off their surfaces; `tolerance` (a fraction of the
+  /// segment) keeps the far endpoint's own surface from counting as a blocker.
+  bool Occluded(const Vec3& from, const Vec3& to, double tolerance = 1e-4) const;
+
+  /// Closest hit along a ray: the triangle's source polygon and the barycentric coordinates
+  /// in that triangle; returns false on a miss. Used to render images of a solution.
+  struct Hit
+  {
+    int polygon = -1;
+    int corner[3] = { -1, -1, -1 }; ///< point ids of the hit triangle
+    double u = 0, v = 0;            ///< weights of corner[1] and corner[2]
+  };
+  bool Intersect(const Vec3& origin, const Vec3& direction, Hit& hit) const;
+
+private:
+  struct Internals;
+  std::unique_ptr<Internals> Impl;
+};
+
+} // namespace radiosity
+
+#endif

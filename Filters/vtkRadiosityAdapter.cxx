@@ -1,0 +1,172 @@
+#include "vtkRadiosityAdapter.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkStringArray.h"
+
+#include <cmath>
+#include <set>
+
+namespace vtkRadiosityAdapter
+{
+
+bool CopyPolygons(vtkPolyData* input, radiosity::SceneMesh& mesh, std::string& error)
+{
+  if (!input || input->GetNumberOfPolys() == 0)
+  {
+    error = "the input has no polygons";
+    return false;
+  }
+  if (input->GetNumberOfVerts() + input->GetNumberOfLines() + input->GetNumberOfStrips() > 0)
+  {
+    error = "the input has vertices, lines or triangle strips; only polygons are supported "
+            "(apply vtkTriangleFilter or extract the surface polygons first)";
+    return false;
+  }
+  const vtkIdType nPoints = input->GetNumberOfPoints();
+  mesh.points.resize(nPoints);
+  for (vtkIdType p = 0; p < nPoints; ++p)
+  {
+    double x[3];
+    input->GetPoint(p, x);
+    mesh.points[p] = { x[0], x[1], x[2] };
+  }
+  mesh.offsets.assign(1, 0);
+  mesh.connectivity.clear();
+  vtkCellArray* polys = input->GetPolys();
+  vtkIdType npts;
+  const vtkIdType* ids;
+  for (polys->InitTraversal(); polys->GetNextCell(npts, ids);)
+  {
+    for (vtkIdType i = 0; i < npts; ++i)
+    {
+      mesh.connectivity.push_back(static_cast<int>(ids[i]));
+    }
+    mesh.offsets.push_back(static_cast<int>(mesh.connectivity.size()));
+  }
+  return true;
+}
+
+vtkDataArray* RequireCellArray(
+  vtkPolyData* input, const char* name, int components, bool integral, std::string& error)
+{
+  vtkAbstractArray* abstract = input->GetCellData()->GetAbstractArray(name);
+  if (!abstract)
+  {
+    error = std::string("the input has no cell array '") + name + "'";
+    return nullptr;
+  }
+  vtkDataArray* array = vtkDataArray::SafeDownCast(abstract);
+  if (!array)
+  {
+    error = std::string("cell array '") + name + "' is a " + abstract->GetClassName() +
+      "; it must be a numeric array";
+    return nullptr;
+  }
+  if (array->GetNumberOfComponents() != components)
+  {
+    error = std::string("cell array '") + name + "' has " +
+      std::to_string(array->GetNumberOfComponents()) + " components; it needs " +
+      std::to_string(components);
+    return nullptr;
+  }
+  if (integral)
+  {
+    for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
+    {
+      const double v = array->GetComponent(i, 0);
+      if (!(std::floor(v) == v))
+      {
+        error = std::string("cell array '") + name + "' must hold integers; cell " +
+          std::to_string(i) + " has " + std::to_string(v);
+        return nullptr;
+      }
+    }
+  }
+  return array;
+}
+
+bool ReadSceneArrays(vtkPolyData* input, radiosity::SceneMesh& mesh,
+  std::vector<radiosity::Vec3>& emission, std::string& error)
+{
+  vtkDataArray* reflectance = RequireCellArray(input, "Reflectance", 3, false, error);
+  vtkDataArray* lightId = reflectance ? RequireCellArray(input, "LightId", 1, true, error) : nullptr;
+  if (!lightId)
+  {
+    return false;
+  }
+  vtkDataArray* patch = nullptr;
+  if (input->GetCellData()->GetAbstractArray("PatchId") &&
+    !(patch = RequireCellArray(input, "PatchId", 1, true, error)))
+  {
+    return false;
+  }
+  vtkDataArray* color = nullptr;
+  if (input->GetCellData()->GetAbstractArray("Emission") &&
+    !(color = RequireCellArray(input, "Emission", 3, false, error)))
+  {
+    return false;
+  }
+  const vtkIdType n = input->GetNumberOfPolys();
+  mesh.reflectance.resize(n);
+  mesh.lightId.resize(n);
+  mesh.patchId.assign(patch ? n : 0, 0);
+  emission.assign(color ? n : 0, radiosity::Vec3());
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double r[3];
+    reflectance->GetTuple(i, r);
+    for (int c = 0; c < 3; ++c)
+    {
+      if (!(r[c] >= 0.0 && r[c] <= 1.0))
+      {
+        error = "Reflectance of cell " + std::to_string(i) + " is " + std::to_string(r[c]) +
+          " in component " + std::to_string(c) + "; it must be a number in [0, 1]";
+        return false;
+      }
+    }
+    mesh.reflectance[i] = { r[0], r[1], r[2] };
+    mesh.lightId[i] = static_cast<int>(lightId->GetComponent(i, 0));
+    if (patch)
+    {
+      mesh.patchId[i] = static_cast<int>(patch->GetComponent(i, 0));
+    }
+    if (color)
+    {
+      color->GetTuple(i, r);
+      if (!std::isfinite(r[0]) || !std::isfinite(r[1]) || !std::isfinite(r[2]) || r[0] < 0 ||
+        r[1] < 0 || r[2] < 0)
+      {
+        error = "Emission of cell " + std::to_string(i) + " must be finite and non-negative";
+        return false;
+      }
+      emission[i] = { r[0], r[1], r[2] };
+    }
+  }
+  return true;
+}
+
+std::vector<std::string> LightNames(vtkFieldData* fields, int count)
+{
+  std::vector<std::string> names(count);
+  auto* given = fields ? vtkStringArray::SafeDownCast(fields->GetAbstractArray("LightNames")) : nullptr;
+  std::set<std::string> used;
+  for (int i = 0; i < count; ++i)
+  {
+    std::string name = given && i < given->GetNumberOfValues() ? given->GetValue(i) : std::string();
+    // Names become array names: keep them non-empty and unique.
+    if (name.empty() || !used.insert(name).second)
+    {
+      name = "Light" + std::to_string(i);
+      used.insert(name);
+    }
+    names[i] = name;
+  }
+  return names;
+}
+
+}

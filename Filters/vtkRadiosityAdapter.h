@@ -1,0 +1,35 @@
+// Conversions between vtkPolyData and the VTK-free core's SceneMesh (not wrapped).
+#ifndef vtkRadiosityAdapter_h
+#define vtkRadiosityAdapter_h
+
+#include "Scene.h"
+
+#include <string>
+#include <vector>
+
+class vtkDataArray;
+class vtkFieldData;
+class vtkPolyData;
+
+namespace vtkRadiosityAdapter
+{
+
+/// Points and polygons of `input` into `mesh` (arrays left empty). Fails with a message
+/// if the input has vertices, lines or strips, since cell data would no longer line up.
+bool CopyPolygons(vtkPolyData* input, radiosity::SceneMesh& mesh, std::string& error);
+
+/// A cell array with the given name, checked for component count (and integral values if
+/// `integral`); returns nullptr with a message naming the array and the problem.
+vtkDataArray* RequireCellArray(vtkPolyData* input, const char* name, int components,
+  bool integral, std::string& error);
+
+/// Reads Reflectance, LightId, optional PatchId; optional Emission into `emission`.
+bool ReadSceneArrays(vtkPolyData* input, radiosity::SceneMesh& mesh,
+  std::vector<radiosity::Vec3>& emission, std::string& error);
+
+/// `count` names from the field array LightNames, or Light<i> for missing ones.
+std::vector<std::string> LightNames(vtkFieldData* fields, int count);
+
+}
+
+#endif

@@ -1,0 +1,64 @@
+/**
+ * @class   vtkRadiosityEXRWriter
+ * @brief   ray-casts a view of a radiosity solution and writes it as OpenEXR (HDR)
+ *
+ * Display colours are clamped to 8 bits; this writer keeps the linear radiosity. Each
+ * pixel shows the point array ArrayName (3 components, default `Radiosity`) interpolated
+ * over the polygon hit by the pixel's centre ray (Embree), from a pinhole camera with
+ * VTK's conventions (position, focal point, view up, vertical view angle in degrees).
+ * The stored value is exitance, the same units as the array.
+ *
+ * @sa vtkRadiosityRelight
+ */
+#ifndef vtkRadiosityEXRWriter_h
+#define vtkRadiosityEXRWriter_h
+
+#include "vtkRadiosityFiltersModule.h" // for export macro
+#include "vtkWriter.h"
+
+class VTKRADIOSITYFILTERS_EXPORT vtkRadiosityEXRWriter : public vtkWriter
+{
+public:
+  static vtkRadiosityEXRWriter* New();
+  vtkTypeMacro(vtkRadiosityEXRWriter, vtkWriter);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  vtkSetStringMacro(FileName);
+  vtkGetStringMacro(FileName);
+  vtkSetStringMacro(ArrayName);
+  vtkGetStringMacro(ArrayName);
+
+  ///@{
+  /// Camera, as vtkCamera defines it.
+  vtkSetVector3Macro(CameraPosition, double);
+  vtkGetVector3Macro(CameraPosition, double);
+  vtkSetVector3Macro(FocalPoint, double);
+  vtkGetVector3Macro(FocalPoint, double);
+  vtkSetVector3Macro(ViewUp, double);
+  vtkGetVector3Macro(ViewUp, double);
+  vtkSetClampMacro(ViewAngle, double, 1e-3, 179.0);
+  vtkGetMacro(ViewAngle, double);
+  vtkSetVector2Macro(Size, int);
+  vtkGetVector2Macro(Size, int);
+  ///@}
+
+protected:
+  vtkRadiosityEXRWriter();
+  ~vtkRadiosityEXRWriter() override;
+  void WriteData() override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+
+private:
+  vtkRadiosityEXRWriter(const vtkRadiosityEXRWriter&) = delete;
+  void operator=(const vtkRadiosityEXRWriter&) = delete;
+
+  char* FileName = nullptr;
+  char* ArrayName = nullptr;
+  double CameraPosition[3] = { 0, 0, 1 };
+  double FocalPoint[3] = { 0, 0, 0 };
+  double ViewUp[3] = { 0, 1, 0 };
+  double ViewAngle = 30;
+  int Size[2] = { 640, 480 };
+};
+
+#endif

@@ -1,0 +1,57 @@
+/**
+ * @class   vtkRadiosityMesher
+ * @brief   splits polygons into radiosity patches and elements
+ *
+ * Each input polygon (triangle, quad or planar convex polygon) is split into patches with
+ * edges at most PatchSize and each patch into elements with edges at most ElementSize
+ * (world units). The output polygons are the elements; cell array `PatchId` tells which
+ * patch each belongs to, and every input cell array (`Reflectance`, `LightId`, `Emission`,
+ * ...) is passed to the elements cut from that cell. Points are shared within a flat
+ * surface of one material and duplicated where orientation or material changes, so
+ * smoothing radiosity over points never bleeds across a corner.
+ *
+ * The input needs cell arrays `Reflectance` (3 components) and `LightId` (1 integer
+ * component); errors name the missing or malformed array and leave the output empty.
+ * The connectivity is built with OpenMesh.
+ *
+ * @sa vtkLightTaggedRadiosity vtkRadiosityRelight
+ */
+#ifndef vtkRadiosityMesher_h
+#define vtkRadiosityMesher_h
+
+#include "vtkPolyDataAlgorithm.h"
+#include "vtkRadiosityFiltersModule.h" // for export macro
+
+class VTKRADIOSITYFILTERS_EXPORT vtkRadiosityMesher : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkRadiosityMesher* New();
+  vtkTypeMacro(vtkRadiosityMesher, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// Longest edge of a patch (the shooting unit), in world units. Default 1.
+  vtkSetClampMacro(PatchSize, double, 1e-300, VTK_DOUBLE_MAX);
+  vtkGetMacro(PatchSize, double);
+  ///@}
+
+  ///@{
+  /// Longest edge of an element (the receiving unit), in world units. Default 0.25.
+  vtkSetClampMacro(ElementSize, double, 1e-300, VTK_DOUBLE_MAX);
+  vtkGetMacro(ElementSize, double);
+  ///@}
+
+protected:
+  vtkRadiosityMesher();
+  ~vtkRadiosityMesher() override = default;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+private:
+  vtkRadiosityMesher(const vtkRadiosityMesher&) = delete;
+  void operator=(const vtkRadiosityMesher&) = delete;
+
+  double PatchSize = 1.0;
+  double ElementSize = 0.25;
+};
+
+#endif

@@ -1,0 +1,360 @@
+#include "vtkRadiosityRelight.h"
+
+#include "Relight.h"
+
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkStringArray.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <cmath>
+
+vtkStandardNewMacro(vtkRadiosityRelight);
+
+vtkRadiosityRelight::vtkRadiosityRelight() = default;
+
+void vtkRadiosityRelight::Setting::ApplyTo(Setting& effective) const
+{
+  if (this->HasColor)
+  {
+    std::copy(this->Color, this->Color + 3, effective.Color);
+  }
+  if (this->HasIntensity)
+  {
+    effective.Intensity = this->Intensity;
+  }
+  if (this->HasEnabled)
+  {
+    effective.Enabled = this->Enabled;
+  }
+}
+
+void vtkRadiosityRelight::SetLightColor(int light, double r, double g, double b)
+{
+  Setting& s = this->ByIndex[light];
+  s.HasColor = true;
+  s.Color[0] = r;
+  s.Color[1] = g;
+  s.Color[2] = b;
+  this->Modified();
+}
+
+void vtkRadiosityRelight::SetLightIntensity(int light, double intensity)
+{
+  Setting& s = this->ByIndex[light];
+  s.HasIntensity = true;
+  s.Intensity = intensity;
+  this->Modified();
+}
+
+void vtkRadiosityRelight::SetLightEnabled(int light, bool enabled)
+{
+  Setting& s = this->ByIndex[light];
+  s.HasEnabled = true;
+  s.Enabled = enabled;
+  this->Modified();
+}
+
+void vtkRadiosityRelight::SetLightSetting(
+  const char* name, double r, double g, double b, double intensity, int enabled)
+{
+  if (!name)
+  {
+    return;
+  }
+  Setting& s = this->ByName[name];
+  s.HasColor = s.HasIntensity = s.HasEnabled = true;
+  s.Color[0] = r;
+  s.Color[1] = g;
+  s.Color[2] = b;
+  s.Intensity = intensity;
+  s.Enabled = enabled != 0;
+  this->Modified();
+}
+
+void vtkRadiosityRelight::ClearLightSettings()
+{
+  if (!this->ByName.empty())
+  {
+    this->ByName.clear();
+    this->Modified();
+  }
+}
+
+void vtkRadiosityRelight::ResetLights()
+{
+  this->ByName.clear();
+  this->ByIndex.clear();
+  this->Modified();
+}
+
+const char* vtkRadiosityRelight::GetLightName(int light) const
+{
+  return light >= 0 && light < this->GetNumberOfLights() ? this->Resolved[light].Name.c_str()
+                                                         : nullptr;
+}
+
+void vtkRadiosityRelight::GetLightColor(int light, double rgb[3]) const
+{
+  const bool valid = light >= 0 && light < this->GetNumberOfLights();
+  for (int c = 0; c < 3; ++c)
+  {
+    rgb[c] = valid ? this->Resolved[light].Effective.Color[c] : 0.0;
+  }
+}
+
+double vtkRadiosityRelight::GetLightIntensity(int light) const
+{
+  return light >= 0 && light < this->GetNumberOfLights() ? this->Resolved[light].Effective.Intensity
+                                                         : 0.0;
+}
+
+bool vtkRadiosityRelight::GetLightEnabled(int light) const
+{
+  return light >= 0 && light < this->GetNumberOfLights() && this->Resolved[light].Effective.Enabled;
+}
+
+void vtkRadiosityRelight::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Exposure: " << this->Exposure << "\n";
+  for (const Light& light : this->Resolved)
+  {
+    const Setting& s = light.Effective;
+    os << indent << light.Name << ": colour (" << s.Color[0] << ", " << s.Color[1] << ", "
+       << s.Color[2] << ") intensity " << s.Intensity << (s.Enabled ? " on" : " off") << "\n";
+  }
+}
+
+namespace
+{
+/// Combines the arrays of one attribute set; false with a message on a bad array.
+bool Combine(vtkFieldData* data, const std::vector<std::string>& arrays,
+  const std::vector<double>& weights, vtkIdType tuples, vtkFloatArray* out, std::string& error)
+{
+  std::vector<const float*> floats;
+  std::vector<const double*> doubles;
+  for (const std::string& name : arrays)
+  {
+    vtkAbstractArray* array = data->GetAbstractArray(name.c_str());
+    if (!array)
+    {
+      error = "array '" + name + "' is missing";
+      return false;
+    }
+    if (array->GetNumberOfComponents() != 3 || array->GetNumberOfTuples() != tuples)
+    {
+      error = "array '" + name + "' must have 3 components and one tuple per item";
+      return false;
+    }
+    if (auto* f = vtkFloatArray::FastDownCast(array))
+    {
+      floats.push_back(f->GetPointer(0));
+    }
+    else if (auto* d = vtkDoubleArray::FastDownCast(array))
+    {
+      doubles.push_back(d->GetPointer(0));
+    }
+    else
+    {
+      error = "array '" + name + "' is a " + array->GetClassName() +
+        "; solutions must be float or double";
+      return false;
+    }
+  }
+  if (!floats.empty() && !doubles.empty())
+  {
+    error = "the solution arrays mix float and double; use one type";
+    return false;
+  }
+  out->SetNumberOfComponents(3);
+  out->SetNumberOfTuples(tuples);
+  if (!floats.empty())
+  {
+    radiosity::CombineLights(floats, weights, static_cast<size_t>(tuples), out->GetPointer(0));
+  }
+  else
+  {
+    radiosity::CombineLights(doubles, weights, static_cast<size_t>(tuples), out->GetPointer(0));
+  }
+  const float* values = out->GetPointer(0);
+  for (vtkIdType i = 0; i < 3 * tuples; ++i)
+  {
+    if (!std::isfinite(values[i]))
+    {
+      error = "the combination is not finite at item " + std::to_string(i / 3) +
+        "; a solution array or a light setting holds NaN or infinity";
+      return false;
+    }
+  }
+  return true;
+}
+
+vtkSmartPointer<vtkUnsignedCharArray> Display(vtkFloatArray* linear, double exposure)
+{
+  auto colors = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  colors->SetName("DisplayColors");
+  colors->SetNumberOfComponents(3);
+  colors->SetNumberOfTuples(linear->GetNumberOfTuples());
+  const float* in = linear->GetPointer(0);
+  unsigned char* out = colors->GetPointer(0);
+  for (vtkIdType i = 0; i < 3 * linear->GetNumberOfTuples(); ++i)
+  {
+    out[i] = radiosity::ToDisplay(in[i], exposure);
+  }
+  return colors;
+}
+}
+
+int vtkRadiosityRelight::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  this->Resolved.clear();
+  this->NamesString.clear();
+
+  // Lights: the solver's LightNames, else every Radiosity_* point or cell array.
+  std::vector<std::string> names;
+  const std::string prefix = "Radiosity_";
+  if (auto* given = vtkStringArray::SafeDownCast(input->GetFieldData()->GetAbstractArray("LightNames")))
+  {
+    for (vtkIdType i = 0; i < given->GetNumberOfValues(); ++i)
+    {
+      names.push_back(given->GetValue(i));
+    }
+  }
+  else
+  {
+    vtkFieldData* source = input->GetPointData()->GetNumberOfArrays() > 0
+      ? static_cast<vtkFieldData*>(input->GetPointData())
+      : static_cast<vtkFieldData*>(input->GetCellData());
+    for (int a = 0; a < source->GetNumberOfArrays(); ++a)
+    {
+      const char* name = source->GetArrayName(a);
+      if (name && std::string(name).compare(0, prefix.size(), prefix) == 0)
+      {
+        names.push_back(std::string(name).substr(prefix.size()));
+      }
+    }
+  }
+  if (names.empty())
+  {
+    vtkErrorMacro(<< "Cannot relight: the input has no lights (no field array 'LightNames' and "
+                     "no 'Radiosity_<name>' arrays); run vtkLightTaggedRadiosity first.");
+    return 0;
+  }
+
+  // Default colours: the mean Emission of each light's cells.
+  const int k = static_cast<int>(names.size());
+  std::vector<double> emissionSum(3 * k, 0.0);
+  std::vector<int> emissionCount(k, 0);
+  vtkDataArray* lightId = input->GetCellData()->GetArray("LightId");
+  vtkDataArray* emission = input->GetCellData()->GetArray("Emission");
+  if (lightId && emission && emission->GetNumberOfComponents() == 3)
+  {
+    for (vtkIdType c = 0; c < input->GetNumberOfCells(); ++c)
+    {
+      const double id = lightId->GetComponent(c, 0);
+      if (id >= 0 && id < k)
+      {
+        const int l = static_cast<int>(id);
+        for (int j = 0; j < 3; ++j)
+        {
+          emissionSum[3 * l + j] += emission->GetComponent(c, j);
+        }
+        ++emissionCount[l];
+      }
+    }
+  }
+  std::vector<double> weights(3 * k, 0.0);
+  std::vector<std::string> pointArrays, cellArrays;
+  for (int i = 0; i < k; ++i)
+  {
+    Light light;
+    light.Name = names[i];
+    Setting& s = light.Effective;
+    if (emissionCount[i] > 0 &&
+      emissionSum[3 * i] + emissionSum[3 * i + 1] + emissionSum[3 * i + 2] > 0)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        s.Color[j] = emissionSum[3 * i + j] / emissionCount[i];
+      }
+    }
+    auto byName = this->ByName.find(light.Name);
+    if (byName != this->ByName.end())
+    {
+      byName->second.ApplyTo(s);
+    }
+    auto byIndex = this->ByIndex.find(i);
+    if (byIndex != this->ByIndex.end())
+    {
+      byIndex->second.ApplyTo(s);
+    }
+    for (int j = 0; j < 3; ++j)
+    {
+      weights[3 * i + j] = s.Enabled ? s.Color[j] * s.Intensity : 0.0;
+    }
+    this->NamesString += (i ? ";" : "") + light.Name;
+    this->Resolved.push_back(light);
+    pointArrays.push_back(prefix + light.Name);
+    cellArrays.push_back(prefix + light.Name);
+  }
+  for (const auto& entry : this->ByName)
+  {
+    if (std::find(names.begin(), names.end(), entry.first) == names.end())
+    {
+      vtkWarningMacro(<< "No light is named '" << entry.first << "'; lights are: " << this->NamesString);
+    }
+  }
+  for (const auto& entry : this->ByIndex)
+  {
+    if (entry.first < 0 || entry.first >= k)
+    {
+      vtkWarningMacro(<< "Light index " << entry.first << " is out of range; there are " << k << " lights.");
+    }
+  }
+
+  const bool hasPoints = input->GetPointData()->GetAbstractArray(pointArrays[0].c_str()) != nullptr;
+  const bool hasCells = input->GetCellData()->GetAbstractArray(cellArrays[0].c_str()) != nullptr;
+  if (!hasPoints && !hasCells)
+  {
+    vtkErrorMacro(<< "Cannot relight: no point or cell array '" << pointArrays[0] << "'.");
+    return 0;
+  }
+  vtkNew<vtkFloatArray> pointResult, cellResult;
+  std::string error;
+  if ((hasPoints && !Combine(input->GetPointData(), pointArrays, weights,
+                      input->GetNumberOfPoints(), pointResult, error)) ||
+    (hasCells && !Combine(input->GetCellData(), cellArrays, weights, input->GetNumberOfCells(),
+                   cellResult, error)))
+  {
+    vtkErrorMacro(<< "Cannot relight: " << error << ".");
+    return 0;
+  }
+
+  output->ShallowCopy(input);
+  if (hasPoints)
+  {
+    pointResult->SetName("Radiosity");
+    output->GetPointData()->AddArray(pointResult);
+    output->GetPointData()->SetScalars(Display(pointResult, this->Exposure));
+  }
+  if (hasCells)
+  {
+    cellResult->SetName("Radiosity");
+    output->GetCellData()->AddArray(cellResult);
+    output->GetCellData()->SetScalars(Display(cellResult, this->Exposure));
+  }
+  return 1;
+}

@@ -1,0 +1,58 @@
+// Small scenes with known answers, built directly (independent of the mesher).
+#ifndef RadiosityTest_SceneBuilders_h
+#define RadiosityTest_SceneBuilders_h
+
+#include "Scene.h"
+
+namespace radiosity_test
+{
+using radiosity::SceneMesh;
+using radiosity::Vec3;
+
+/// Adds the quad origin + [0,1]u + [0,1]v as an n x n grid of elements (normal u x v)
+/// grouped into patches of `per` x `per` elements, with its own points.
+inline void AddGrid(SceneMesh& mesh, const Vec3& origin, const Vec3& u, const Vec3& v, int n,
+  int per, const Vec3& rho, int light, int& nextPatch)
+{
+  const int base = static_cast<int>(mesh.points.size());
+  for (int j = 0; j <= n; ++j)
+  {
+    for (int i = 0; i <= n; ++i)
+    {
+      mesh.points.push_back(origin + u * (double(i) / n) + v * (double(j) / n));
+    }
+  }
+  const int patchesPerRow = (n + per - 1) / per;
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      const int a = base + j * (n + 1) + i;
+      mesh.AddPolygon({ a, a + 1, a + n + 2, a + n + 1 });
+      mesh.reflectance.push_back(rho);
+      mesh.lightId.push_back(light);
+      mesh.patchId.push_back(nextPatch + (j / per) * patchesPerRow + i / per);
+    }
+  }
+  nextPatch += patchesPerRow * patchesPerRow;
+}
+
+/// Axis-aligned box [0,s]^3 with inward-facing faces; face f gets lightId light(f).
+template <typename LightOf>
+SceneMesh Box(double s, int n, int per, const Vec3& rho, LightOf light)
+{
+  SceneMesh mesh;
+  int patch = 0;
+  const Vec3 X{ s, 0, 0 }, Y{ 0, s, 0 }, Z{ 0, 0, s }, O{ 0, 0, 0 };
+  // Each (origin, u, v) with u x v pointing into the box.
+  AddGrid(mesh, O, X, Y, n, per, rho, light(0), patch); // z = 0
+  AddGrid(mesh, Z, Y, X, n, per, rho, light(1), patch); // z = s
+  AddGrid(mesh, O, Z, X, n, per, rho, light(2), patch); // y = 0
+  AddGrid(mesh, Y, X, Z, n, per, rho, light(3), patch); // y = s
+  AddGrid(mesh, O, Y, Z, n, per, rho, light(4), patch); // x = 0
+  AddGrid(mesh, X, Z, Y, n, per, rho, light(5), patch); // x = s
+  return mesh;
+}
+}
+
+#endif

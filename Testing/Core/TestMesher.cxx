@@ -1,0 +1,91 @@
+#include "Mesher.h"
+#include "Polygon.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+using namespace radiosity;
+
+namespace
+{
+double TotalArea(const MeshedPolygons& m)
+{
+  double area = 0;
+  for (size_t e = 0; e + 1 < m.offsets.size(); ++e)
+  {
+    std::vector<Vec3> loop;
+    for (int k = m.offsets[e]; k < m.offsets[e + 1]; ++k)
+    {
+      loop.push_back(m.points[m.connectivity[k]]);
+    }
+    area += PolygonArea(loop.data(), static_cast<int>(loop.size()));
+  }
+  return area;
+}
+
+MesherOptions Sizes(double patch, double element)
+{
+  MesherOptions o;
+  o.PatchSize = patch;
+  o.ElementSize = element;
+  return o;
+}
+}
+
+TEST(Mesher, QuadBecomesGridOfPatchesAndElements)
+{
+  const std::vector<Vec3> points = { { 0, 0, 0 }, { 2, 0, 0 }, { 2, 1, 0 }, { 0, 1, 0 } };
+  MeshedPolygons m;
+  ASSERT_EQ(MeshPolygons(points, { 0, 4 }, { 0, 1, 2, 3 }, { 0 }, Sizes(1, 0.5), m), "");
+  EXPECT_EQ(m.patches, 2);
+  EXPECT_EQ(m.sourcePolygon.size(), 8u);
+  EXPECT_EQ(m.points.size(), 15u); // a 5 x 3 lattice: points are shared
+  EXPECT_NEAR(TotalArea(m), 2.0, 1e-12);
+  for (int p = 0; p < 2; ++p)
+  {
+    EXPECT_EQ(std::count(m.patchId.begin(), m.patchId.end(), p), 4);
+  }
+}
+
+TEST(Mesher, TriangleEdgesStayWithinSizes)
+{
+  const std::vector<Vec3> points = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } };
+  MeshedPolygons m;
+  ASSERT_EQ(MeshPolygons(points, { 0, 3 }, { 0, 1, 2 }, { 0 }, Sizes(1, 0.5), m), "");
+  EXPECT_EQ(m.sourcePolygon.size(), 16u);
+  EXPECT_EQ(m.patches, 4);
+  EXPECT_NEAR(TotalArea(m), 0.5, 1e-12);
+  for (size_t e = 0; e + 1 < m.offsets.size(); ++e)
+  {
+    for (int k = m.offsets[e]; k < m.offsets[e + 1]; ++k)
+    {
+      const int next = k + 1 < m.offsets[e + 1] ? k + 1 : m.offsets[e];
+      EXPECT_LE(Norm(m.points[m.connectivity[k]] - m.points[m.connectivity[next]]), 0.5 + 1e-12);
+    }
+  }
+}
+
+TEST(Mesher, SharesPointsOnlyWithinOneFlatMaterial)
+{
+  // Two coplanar unit quads side by side, and a wall standing on their shared edge line.
+  const std::vector<Vec3> points = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 2, 0, 0 },
+    { 2, 1, 0 }, { 1, 0, 1 }, { 1, 1, 1 } };
+  const std::vector<int> offsets = { 0, 4, 8, 12 };
+  const std::vector<int> conn = { 0, 1, 2, 3, 1, 4, 5, 2, 1, 2, 7, 6 };
+  MeshedPolygons same, different;
+  ASSERT_EQ(MeshPolygons(points, offsets, conn, { 0, 0, 0 }, Sizes(1, 1), same), "");
+  ASSERT_EQ(MeshPolygons(points, offsets, conn, { 0, 1, 0 }, Sizes(1, 1), different), "");
+  // Same material: the floor quads share 2 points; the wall has its own 4.
+  EXPECT_EQ(same.points.size(), 6u + 4u);
+  EXPECT_EQ(different.points.size(), 4u + 4u + 4u);
+}
+
+TEST(Mesher, RefusesBadSizesAndExplosions)
+{
+  const std::vector<Vec3> points = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } };
+  MeshedPolygons m;
+  EXPECT_NE(MeshPolygons(points, { 0, 3 }, { 0, 1, 2 }, { 0 }, Sizes(0, 0.5), m), "");
+  MesherOptions tiny = Sizes(1, 1e-6);
+  EXPECT_NE(MeshPolygons(points, { 0, 3 }, { 0, 1, 2 }, { 0 }, tiny, m).find("ElementSize"), std::string::npos);
+}

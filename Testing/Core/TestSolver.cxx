@@ -1,0 +1,245 @@
+// The light-tagged solver against closed forms, the standard method and invariants.
+#include "LightSolutions.h"
+#include "SceneBuilders.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace radiosity;
+using radiosity_test::AddGrid;
+using radiosity_test::Box;
+
+namespace
+{
+SolverOptions Converged(double threshold = 1e-7)
+{
+  SolverOptions o;
+  o.MaximumShots = 100000;
+  o.ConvergenceThreshold = threshold;
+  return o;
+}
+}
+
+TEST(Solver, BoxBuilderFacesInward)
+{
+  SceneMesh box = Box(1.0, 2, 1, { 0.5, 0.5, 0.5 }, [](int) { return -1; });
+  SceneGeometry g(box);
+  for (size_t e = 0; e < g.normal.size(); ++e)
+  {
+    EXPECT_GT(Dot(g.normal[e], Vec3{ 0.5, 0.5, 0.5 } - g.centroid[e]), 0) << e;
+  }
+}
+
+TEST(Solver, FurnaceGivesOneOverOneMinusRho)
+{
+  // Closed box, every face emitting 1, uniform rho: B = 1 / (1 - rho) everywhere.
+  for (double rho : { 0.3, 0.5, 0.9 })
+  {
+    SceneMesh box = Box(2.0, 6, 2, { rho, rho, rho }, [](int) { return 0; });
+    ProgressiveRadiosity solver(box);
+    ASSERT_TRUE(solver.Error().empty()) << solver.Error();
+    LightSolutions s = SolveLights(solver, box, 1, {}, SolutionMode::LightTagged, Converged(1e-9));
+    ASSERT_TRUE(s.Statistics.Converged);
+    const double expected = 1.0 / (1.0 - rho);
+    for (const Vec3& b : s.Radiosity)
+    {
+      EXPECT_NEAR(b.x, expected, 1e-6 * expected);
+      EXPECT_NEAR(b.y, expected, 1e-6 * expected);
+      EXPECT_NEAR(b.z, expected, 1e-6 * expected);
+    }
+  }
+}
+
+TEST(Solver, SingleBounceBetweenOpposedSquaresMatchesHowell)
+{
+  // Unit emitter facing a unit receiver at gap 1 (rho_emitter = 0): the receiver's
+  // area-mean radiosity is rho * F(receiver -> emitter) = rho * 0.199825 (Howell C-11).
+  SceneMesh mesh;
+  int patch = 0;
+  AddGrid(mesh, { 0, 0, 1 }, { 0, 1, 0 }, { 1, 0, 0 }, 1, 1, { 0, 0, 0 }, 0, patch); // faces -z
+  const int n = 32;
+  AddGrid(mesh, { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, n, n, { 0.5, 0.5, 0.5 }, -1, patch);
+  ProgressiveRadiosity solver(mesh);
+  LightSolutions s = SolveLights(solver, mesh, 1, {}, SolutionMode::LightTagged, Converged());
+  double mean = 0;
+  for (int e = 1; e < mesh.NumberOfPolygons(); ++e)
+  {
+    mean += s.Radiosity[e].x / (n * n);
+  }
+  EXPECT_NEAR(mean, 0.5 * 0.199825, 2e-4 * 0.1);
+}
+
+TEST(Solver, OccluderBlocksDirectLight)
+{
+  // A large black plate between a small emitter and a receiver: no direct light arrives.
+  SceneMesh mesh;
+  int patch = 0;
+  AddGrid(mesh, { 0.4, 0.4, 2 }, { 0, 0.2, 0 }, { 0.2, 0, 0 }, 1, 1, { 0, 0, 0 }, 0, patch);
+  AddGrid(mesh, { -5, -5, 1 }, { 10, 0, 0 }, { 0, 10, 0 }, 2, 1, { 0, 0, 0 }, -1, patch);
+  AddGrid(mesh, { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, 4, 4, { 0.8, 0.8, 0.8 }, -1, patch);
+  ProgressiveRadiosity solver(mesh);
+  LightSolutions s = SolveLights(solver, mesh, 1, {}, SolutionMode::LightTagged, Converged());
+  for (int e = 1 + 4; e < mesh.NumberOfPolygons(); ++e)
+  {
+    EXPECT_EQ(s.Radiosity[e].x, 0.0) << e;
+  }
+  // Without the plate the receiver is lit.
+  SceneMesh open;
+  patch = 0;
+  AddGrid(open, { 0.4, 0.4, 2 }, { 0, 0.2, 0 }, { 0.2, 0, 0 }, 1, 1, { 0, 0, 0 }, 0, patch);
+  AddGrid(open, { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, 4, 4, { 0.8, 0.8, 0.8 }, -1, patch);
+  ProgressiveRadiosity openSolver(open);
+  LightSolutions lit = SolveLights(openSolver, open, 1, {}, SolutionMode::LightTagged, Converged());
+  EXPECT_GT(lit.Radiosity[5].x, 1e-3);
+}
+
+namespace
+{
+/// An open box (no lid) with two occluding walls and three coloured lights.
+SceneMesh ThreeLightScene(std::vector<Vec3>& colors)
+{
+  SceneMesh mesh = Box(4.0, 8, 2, { 0.6, 0.5, 0.4 }, [](int) { return -1; });
+  int patch = 1000;
+  AddGrid(mesh, { 1, 0.5, 3.9 }, { 0, 0.4, 0 }, { 0.4, 0, 0 }, 1, 1, { 0.7, 0.7, 0.7 }, 0, patch);
+  AddGrid(mesh, { 3, 3, 3.9 }, { 0, 0.4, 0 }, { 0.4, 0, 0 }, 1, 1, { 0.7, 0.7, 0.7 }, 1, patch);
+  AddGrid(mesh, { 0.1, 2, 1 }, { 0, 0, 0.4 }, { 0, 0.4, 0 }, 1, 1, { 0.7, 0.7, 0.7 }, 2, patch);
+  AddGrid(mesh, { 2, 0, 0 }, { 0, 0, 2 }, { 0, 3, 0 }, 4, 2, { 0.2, 0.8, 0.3 }, -1, patch); // partition
+  colors.assign(mesh.NumberOfPolygons(), Vec3());
+  const Vec3 palette[3] = { { 1.0, 0.8, 0.6 }, { 0.2, 0.4, 1.5 }, { 3.0, 0.1, 0.1 } };
+  for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
+  {
+    if (mesh.lightId[e] >= 0)
+    {
+      colors[e] = palette[mesh.lightId[e]];
+    }
+  }
+  return mesh;
+}
+}
+
+TEST(Solver, TaggedRelitEqualsStandardCombined)
+{
+  std::vector<Vec3> colors;
+  SceneMesh mesh = ThreeLightScene(colors);
+  int k = 0;
+  ASSERT_EQ(ValidateScene(mesh, k), "");
+  ASSERT_EQ(k, 3);
+  ProgressiveRadiosity solver(mesh);
+  const LightSolutions tagged = SolveLights(solver, mesh, k, colors, SolutionMode::LightTagged, Converged(1e-9));
+  const LightSolutions combined = SolveLights(solver, mesh, k, colors, SolutionMode::StandardCombined, Converged(1e-9));
+  ASSERT_TRUE(tagged.Statistics.Converged && combined.Statistics.Converged);
+  const Vec3 palette[3] = { { 1.0, 0.8, 0.6 }, { 0.2, 0.4, 1.5 }, { 3.0, 0.1, 0.1 } };
+  double worst = 0, peak = 0;
+  for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
+  {
+    Vec3 relit;
+    for (int m = 0; m < k; ++m)
+    {
+      const Vec3& b = tagged.Radiosity[e * k + m];
+      relit += Vec3{ b.x * palette[m].x, b.y * palette[m].y, b.z * palette[m].z };
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      worst = std::max(worst, std::fabs(relit[c] - combined.Radiosity[e][c]));
+      peak = std::max(peak, combined.Radiosity[e][c]);
+    }
+  }
+  EXPECT_LT(worst, 1e-6 * peak);
+  EXPECT_GT(peak, 0.5); // the comparison is not between two zeros
+}
+
+TEST(Solver, SeparateEqualsTagged)
+{
+  std::vector<Vec3> colors;
+  SceneMesh mesh = ThreeLightScene(colors);
+  ProgressiveRadiosity solver(mesh);
+  const LightSolutions tagged = SolveLights(solver, mesh, 3, colors, SolutionMode::LightTagged, Converged(1e-9));
+  const LightSolutions separate = SolveLights(solver, mesh, 3, colors, SolutionMode::StandardSeparate, Converged(1e-9));
+  ASSERT_EQ(tagged.Radiosity.size(), separate.Radiosity.size());
+  for (size_t i = 0; i < tagged.Radiosity.size(); ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      EXPECT_NEAR(tagged.Radiosity[i][c], separate.Radiosity[i][c], 1e-7) << i;
+    }
+  }
+  // The point of light tagging: one form-factor pass per shot instead of one per light.
+  EXPECT_LT(tagged.Statistics.FormFactorCount, separate.Statistics.FormFactorCount);
+}
+
+TEST(Solver, EnergyArrivesInClosedBox)
+{
+  // In a closed box everything shot arrives somewhere: received / shot -> 1, up to the
+  // centroid quadrature of the receivers (a few per mille at 8 x 8 elements per face).
+  SceneMesh box = Box(1.0, 8, 2, { 0.7, 0.7, 0.7 }, [](int f) { return f == 1 ? 0 : -1; });
+  ProgressiveRadiosity solver(box);
+  LightSolutions s = SolveLights(solver, box, 1, {}, SolutionMode::LightTagged, Converged(1e-6));
+  EXPECT_NEAR(s.Statistics.ReceivedPower / s.Statistics.ShotPower, 1.0, 0.01);
+}
+
+TEST(Solver, ResultDoesNotDependOnThreads)
+{
+  std::vector<Vec3> colors;
+  SceneMesh mesh = ThreeLightScene(colors);
+  ProgressiveRadiosity solver(mesh);
+  SolverOptions one = Converged(1e-4), many = Converged(1e-4);
+  one.Threads = 1;
+  many.Threads = 4;
+  const LightSolutions a = SolveLights(solver, mesh, 3, colors, SolutionMode::LightTagged, one);
+  const LightSolutions b = SolveLights(solver, mesh, 3, colors, SolutionMode::LightTagged, many);
+  ASSERT_EQ(a.Radiosity.size(), b.Radiosity.size());
+  for (size_t i = 0; i < a.Radiosity.size(); ++i)
+  {
+    EXPECT_EQ(a.Radiosity[i].x, b.Radiosity[i].x);
+  }
+}
+
+TEST(Solver, AbortKeepsValidPartialResult)
+{
+  SceneMesh box = Box(1.0, 4, 2, { 0.9, 0.9, 0.9 }, [](int f) { return f == 1 ? 0 : -1; });
+  ProgressiveRadiosity solver(box);
+  SolverOptions o = Converged();
+  int calls = 0;
+  o.Progress = [&](double) { return ++calls <= 3; };
+  LightSolutions s = SolveLights(solver, box, 1, {}, SolutionMode::LightTagged, o);
+  EXPECT_TRUE(s.Statistics.Aborted);
+  EXPECT_EQ(s.Statistics.Shots, 3);
+  for (const Vec3& b : s.Radiosity)
+  {
+    EXPECT_TRUE(std::isfinite(b.x) && b.x >= 0);
+  }
+}
+
+TEST(Validation, NamesTheProblem)
+{
+  auto scene = [] { return Box(1.0, 1, 1, { 0.5, 0.5, 0.5 }, [](int f) { return f == 0 ? 0 : -1; }); };
+  int k = 0;
+  SceneMesh ok = scene();
+  EXPECT_EQ(ValidateScene(ok, k), "");
+  EXPECT_EQ(k, 1);
+
+  SceneMesh nan = scene();
+  nan.reflectance[2].y = std::nan("");
+  EXPECT_NE(ValidateScene(nan, k).find("Reflectance of cell 2"), std::string::npos);
+
+  SceneMesh high = scene();
+  high.reflectance[3].x = 1.5;
+  EXPECT_NE(ValidateScene(high, k).find("[0, 1]"), std::string::npos);
+
+  SceneMesh gap = scene();
+  gap.lightId[0] = 1;
+  EXPECT_NE(ValidateScene(gap, k).find("gap"), std::string::npos);
+
+  SceneMesh dark = scene();
+  dark.lightId[0] = -1;
+  EXPECT_NE(ValidateScene(dark, k).find("no lights"), std::string::npos);
+
+  SceneMesh flat = scene();
+  flat.points[flat.Polygon(4)[2]] = flat.points[flat.Polygon(4)[1]];
+  flat.points[flat.Polygon(4)[3]] = flat.points[flat.Polygon(4)[0]];
+  EXPECT_NE(ValidateScene(flat, k).find("zero area"), std::string::npos);
+
+  SceneMesh empty;
+  EXPECT_NE(ValidateScene(empty, k).find("no polygons"), std::string::npos);
+}
