@@ -14,7 +14,13 @@ namespace radiosity
 
 namespace
 {
-using SurfaceMesh = OpenMesh::PolyMesh_ArrayKernelT<>;
+// OpenMesh stores float points by default; radiosity scenes span many orders of magnitude.
+struct DoublePrecision : OpenMesh::DefaultTraits
+{
+  typedef OpenMesh::Vec3d Point;
+  typedef OpenMesh::Vec3d Normal;
+};
+using SurfaceMesh = OpenMesh::PolyMesh_ArrayKernelT<DoublePrecision>;
 
 /// Elements of one input polygon before they are stitched into a surface.
 struct Piece

@@ -1,0 +1,28 @@
+"""RadiosityRelight: interactive relighting of radiosity-lit scenes, from Python.
+
+The three VTK filters (wrapped C++):
+
+- ``vtkRadiosityMesher``: polygons -> patches -> elements (cell array ``PatchId``);
+- ``vtkLightTaggedRadiosity``: one radiosity solution per light in one progressive pass,
+  as point/cell arrays ``Radiosity_<light>``;
+- ``vtkRadiosityRelight``: ``sum_i colour_i * intensity_i * Radiosity_<light i>``.
+
+plus ``vtkRadiosityEXRWriter`` for HDR images, and helpers in :mod:`relight.scene`.
+"""
+
+from .vtkRadiosityFilters import (  # noqa: F401
+    vtkLightTaggedRadiosity,
+    vtkRadiosityEXRWriter,
+    vtkRadiosityMesher,
+    vtkRadiosityRelight,
+)
+from .scene import (  # noqa: F401
+    ErrorCatcher,
+    light_names,
+    point_array,
+    cell_array,
+    read_polydata,
+    render_png,
+    solve,
+    write_exr,
+)

@@ -1,0 +1,159 @@
+"""Helpers around the filters: reading scenes, running the pipeline, pictures."""
+
+import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (registers the OpenGL backend)
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkCommonCore import vtkCommand
+from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+from vtkmodules.vtkRenderingCore import (
+    vtkActor,
+    vtkPolyDataMapper,
+    vtkRenderer,
+    vtkRenderWindow,
+    vtkWindowToImageFilter,
+)
+from vtkmodules.vtkIOImage import vtkPNGWriter
+
+from .vtkRadiosityFilters import (
+    vtkLightTaggedRadiosity,
+    vtkRadiosityEXRWriter,
+    vtkRadiosityMesher,
+)
+
+
+class ErrorCatcher:
+    """Collects a VTK object's error and warning messages instead of printing them.
+
+    >>> catcher = ErrorCatcher(some_filter)
+    >>> some_filter.Update()
+    >>> catcher.errors  # list of message strings
+    """
+
+    def __init__(self, vtk_object):
+        self.errors = []
+        self.warnings = []
+        vtk_object.AddObserver(vtkCommand.ErrorEvent, self._error)
+        vtk_object.AddObserver(vtkCommand.WarningEvent, self._warning)
+
+    def _error(self, _obj, _event, message=None):
+        self.errors.append(str(message))
+
+    def _warning(self, _obj, _event, message=None):
+        self.warnings.append(str(message))
+
+    # VTK passes the message as call data only to callbacks that ask for a string.
+    _error.CallDataType = "string0"
+    _warning.CallDataType = "string0"
+
+
+def read_polydata(path):
+    """Reads a .vtp file; raises OSError if it cannot."""
+    reader = vtkXMLPolyDataReader()
+    reader.SetFileName(str(path))
+    reader.Update()
+    data = reader.GetOutput()
+    if data.GetNumberOfCells() == 0:
+        raise OSError(f"{path}: no cells read (missing or not a .vtp file)")
+    return data
+
+
+def solve(scene, patch_size, element_size, **solver_settings):
+    """Meshes and solves `scene` (vtkPolyData); returns the solver's output.
+
+    `solver_settings` are vtkLightTaggedRadiosity properties, e.g. MaximumShots=500.
+    """
+    mesher = vtkRadiosityMesher()
+    mesher.SetInputData(scene)
+    mesher.SetPatchSize(patch_size)
+    mesher.SetElementSize(element_size)
+    solver = vtkLightTaggedRadiosity()
+    solver.SetInputConnection(mesher.GetOutputPort())
+    for name, value in solver_settings.items():
+        getattr(solver, "Set" + name)(value)
+    solver.Update()
+    return solver
+
+
+def light_names(data):
+    """The light names in the field array LightNames, in LightId order."""
+    names = data.GetFieldData().GetAbstractArray("LightNames")
+    return [names.GetValue(i) for i in range(names.GetNumberOfValues())] if names else []
+
+
+def point_array(data, name):
+    """A point array as a numpy array (a view, no copy)."""
+    array = data.GetPointData().GetAbstractArray(name)
+    if array is None:
+        raise KeyError(f"no point array {name!r}")
+    return vtk_to_numpy(array)
+
+
+def cell_array(data, name):
+    """A cell array as a numpy array (a view, no copy)."""
+    array = data.GetCellData().GetAbstractArray(name)
+    if array is None:
+        raise KeyError(f"no cell array {name!r}")
+    return vtk_to_numpy(array)
+
+
+def _camera_settings(camera):
+    position, focal, up, angle = camera
+    return position, focal, up, angle
+
+
+def render_png(data, path, camera, size=(640, 480)):
+    """Renders the relit `data` (its DisplayColors point scalars) to a PNG file.
+
+    Radiosity already holds the lighting, so the renderer's own lights are off
+    (ambient 1, diffuse 0): what you see is the solution.
+    `camera` = (position, focal_point, view_up, view_angle_degrees).
+    """
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputData(data)
+    mapper.SetScalarModeToUsePointData()
+    mapper.SetColorModeToDirectScalars()
+    mapper.ScalarVisibilityOn()
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    actor.GetProperty().SetAmbient(1.0)
+    actor.GetProperty().SetDiffuse(0.0)
+    actor.GetProperty().SetSpecular(0.0)
+    renderer = vtkRenderer()
+    renderer.AddActor(actor)
+    renderer.SetBackground(0.1, 0.1, 0.12)
+    window = vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    window.AddRenderer(renderer)
+    window.SetSize(*size)
+    position, focal, up, angle = _camera_settings(camera)
+    cam = renderer.GetActiveCamera()
+    cam.SetPosition(*position)
+    cam.SetFocalPoint(*focal)
+    cam.SetViewUp(*up)
+    cam.SetViewAngle(angle)
+    renderer.ResetCameraClippingRange()
+    window.Render()
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.ReadFrontBufferOff()
+    grab.Update()
+    writer = vtkPNGWriter()
+    writer.SetFileName(str(path))
+    writer.SetInputConnection(grab.GetOutputPort())
+    writer.Write()
+    window.Finalize()
+
+
+def write_exr(data, path, camera, size=(640, 480), array="Radiosity"):
+    """Writes a linear HDR view of the point array `array` as OpenEXR."""
+    writer = vtkRadiosityEXRWriter()
+    writer.SetInputData(data)
+    writer.SetFileName(str(path))
+    writer.SetArrayName(array)
+    position, focal, up, angle = _camera_settings(camera)
+    writer.SetCameraPosition(*position)
+    writer.SetFocalPoint(*focal)
+    writer.SetViewUp(*up)
+    writer.SetViewAngle(angle)
+    writer.SetSize(*size)
+    if not writer.Write():
+        raise OSError(f"could not write {path}")
