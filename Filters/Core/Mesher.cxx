@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <map>
 #include <sstream>
 #include <tuple>
@@ -94,7 +95,7 @@ void SplitTriangle(const Vec3& a, const Vec3& b, const Vec3& c, const MesherOpti
   piece.patchCount += np * np * 2;
 }
 
-long long EstimateElements(const std::vector<Vec3>& loop, const MesherOptions& o)
+double EstimateElements(const std::vector<Vec3>& loop, const MesherOptions& o)
 {
   double longest = 0;
   for (size_t i = 0; i < loop.size(); ++i)
@@ -102,7 +103,7 @@ long long EstimateElements(const std::vector<Vec3>& loop, const MesherOptions& o
     longest = std::max(longest, Norm(loop[(i + 1) % loop.size()] - loop[i]));
   }
   const double per = std::ceil(longest / o.ElementSize) + 1;
-  return static_cast<long long>(per * per) * static_cast<long long>(loop.size());
+  return per * per * static_cast<double>(loop.size()); // double: absurd sizes must not overflow
 }
 } // namespace
 
@@ -142,7 +143,7 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
   // Per surface face: (input polygon, global patch id), parallel to the OpenMesh faces.
   std::vector<std::vector<std::pair<int, int>>> faceInfo;
 
-  long long estimate = 0;
+  double estimate = 0;
   for (int i = 0; i < count; ++i)
   {
     std::vector<Vec3> loop;
@@ -152,9 +153,10 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
     }
     estimate += EstimateElements(loop, options);
   }
-  if (estimate > options.MaximumElements)
+  if (!(estimate <= static_cast<double>(options.MaximumElements)))
   {
-    err << "ElementSize " << options.ElementSize << " would make about " << estimate
+    err << "ElementSize " << options.ElementSize << " would make about " << std::setprecision(3)
+        << estimate
         << " elements, more than the limit of " << options.MaximumElements
         << "; choose a larger ElementSize";
     return err.str();

@@ -1,0 +1,140 @@
+"""Bad input gets a clear error naming the problem and an empty output: no crash, no NaN."""
+
+import math
+import sys
+
+import numpy as np
+from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkFloatArray, vtkIntArray, vtkPoints, vtkStringArray
+from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+
+import relight
+from relight import ErrorCatcher
+from vtkmodules.vtkCommonCore import vtkLogger
+
+# The executive logs every failed request too; the filters' own messages are what we check.
+vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_OFF)
+
+failures = []
+
+
+def scene(reflectance=(0.5, 0.5, 0.5), light_ids=(0, -1), points=None, reflectance_components=3,
+          light_array=vtkIntArray, with_reflectance=True, with_light=True):
+    """Two unit quads facing each other; the first one is the light."""
+    data = vtkPolyData()
+    pts = vtkPoints()
+    pts.SetDataTypeToDouble()
+    coords = points or [(0, 0, 1), (0, 1, 1), (1, 1, 1), (1, 0, 1), (0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)]
+    for p in coords:
+        pts.InsertNextPoint(*p)
+    polys = vtkCellArray()
+    for ids in ((0, 1, 2, 3), (4, 5, 6, 7))[: len(light_ids)]:
+        polys.InsertNextCell(4, ids)
+    data.SetPoints(pts)
+    data.SetPolys(polys)
+    if with_reflectance:
+        r = vtkFloatArray()
+        r.SetName("Reflectance")
+        r.SetNumberOfComponents(reflectance_components)
+        for _ in light_ids:
+            r.InsertNextTuple(list(reflectance)[:reflectance_components])
+        data.GetCellData().AddArray(r)
+    if with_light:
+        ids = light_array()
+        ids.SetName("LightId")
+        for i in light_ids:
+            ids.InsertNextValue(i)
+        data.GetCellData().AddArray(ids)
+    return data
+
+
+def expect_error(filter_class, data, fragment, setup=None):
+    f = filter_class()
+    f.SetInputData(data)
+    if setup:
+        setup(f)
+    catcher = ErrorCatcher(f)
+    f.Update()
+    out = f.GetOutput()
+    message = " | ".join(catcher.errors)
+    ok = any(fragment in e for e in catcher.errors) and out.GetNumberOfCells() == 0
+    print(f"{'ok  ' if ok else 'FAIL'} {filter_class.__name__}: expected '{fragment}', got: {message}")
+    if not ok:
+        failures.append(fragment)
+
+
+solver = relight.vtkLightTaggedRadiosity
+mesher = relight.vtkRadiosityMesher
+nan = math.nan
+# Reflectance
+expect_error(solver, scene(reflectance=(0.5, nan, 0.5)), "Reflectance of cell 0")
+expect_error(mesher, scene(reflectance=(0.5, nan, 0.5)), "Reflectance of cell 0")
+expect_error(solver, scene(reflectance=(1.5, 0.5, 0.5)), "must be a number in [0, 1]")
+expect_error(solver, scene(reflectance=(-0.1, 0.5, 0.5)), "must be a number in [0, 1]")
+expect_error(solver, scene(reflectance_components=1), "'Reflectance' has 1 components; it needs 3")
+expect_error(solver, scene(with_reflectance=False), "no cell array 'Reflectance'")
+# LightId
+expect_error(solver, scene(with_light=False), "no cell array 'LightId'")
+expect_error(solver, scene(light_ids=(1, -1)), "LightId has a gap")
+expect_error(solver, scene(light_ids=(0, -3)), "LightId of cell 1 is -3")
+expect_error(solver, scene(light_ids=(-1, -1)), "no lights (k = 0)")
+expect_error(mesher, scene(light_ids=(0.5, -1), light_array=vtkDoubleArray), "must hold integers")
+string_ids = scene(with_light=False)
+s = vtkStringArray()
+s.SetName("LightId")
+s.InsertNextValue("0")
+s.InsertNextValue("-1")
+string_ids.GetCellData().AddArray(s)
+expect_error(solver, string_ids, "it must be a numeric array")
+# Geometry
+expect_error(solver, vtkPolyData(), "no polygons")
+expect_error(mesher, vtkPolyData(), "no polygons")
+flat = [(0, 0, 1), (0, 0, 1), (1, 1, 1), (1, 1, 1), (0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)]
+expect_error(solver, scene(points=flat), "cell 0 has zero area")
+expect_error(mesher, scene(points=flat), "cell 0 has zero area")
+nan_point = [(0, 0, 1), (0, nan, 1), (1, 1, 1), (1, 0, 1), (0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)]
+expect_error(solver, scene(points=nan_point), "non-finite coordinate")
+expect_error(mesher, scene(), "choose a larger ElementSize", setup=lambda m: m.SetElementSize(1e-9))
+
+# Relight: no solutions, wrong array types, NaN inside a solution.
+expect_error(relight.vtkRadiosityRelight, scene(), "no lights")
+wrong = scene()
+ints = vtkIntArray()
+ints.SetName("Radiosity_Bad")
+ints.SetNumberOfComponents(3)
+for _ in range(wrong.GetNumberOfPoints()):
+    ints.InsertNextTuple3(1, 1, 1)
+wrong.GetPointData().AddArray(ints)
+expect_error(relight.vtkRadiosityRelight, wrong, "solutions must be float or double")
+poisoned = scene()
+values = vtkFloatArray()
+values.SetName("Radiosity_Lamp")
+values.SetNumberOfComponents(3)
+for i in range(poisoned.GetNumberOfPoints()):
+    values.InsertNextTuple3(nan if i == 3 else 0.5, 0.5, 0.5)
+poisoned.GetPointData().AddArray(values)
+expect_error(relight.vtkRadiosityRelight, poisoned, "not finite at item 3")
+
+# A NaN in a disabled light is not an error: the light contributes nothing.
+r = relight.vtkRadiosityRelight()
+r.SetInputData(poisoned)
+r.SetLightEnabled(0, False)
+r.Update()
+got = relight.point_array(r.GetOutput(), "Radiosity")
+if not (np.all(got == 0) and got.shape == (8, 3)):
+    failures.append("disabled NaN light")
+    print("FAIL disabled light with NaN data should give zeros")
+
+# The input the user made is never modified.
+original = scene(reflectance=(0.5, nan, 0.5))
+before = relight.cell_array(original, "Reflectance").copy()
+f = solver()
+f.SetInputData(original)
+ErrorCatcher(f)
+f.Update()
+if not np.array_equal(before, relight.cell_array(original, "Reflectance"), equal_nan=True):
+    failures.append("input modified")
+
+if failures:
+    print(f"{len(failures)} check(s) failed")
+    sys.exit(1)
+print("TestBadInput: all checks passed")

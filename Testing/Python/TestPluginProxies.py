@@ -1,0 +1,208 @@
+"""End-to-end test of the RadiosityRelight ParaView plugin proxies.
+
+Usage:
+    pvbatch Testing/Python/TestPluginProxies.py <plugin.so> <cornell_box.vtp> [screenshot.png]
+
+Loads the plugin, runs reader -> RadiosityMesher -> LightTaggedRadiosity ->
+RadiosityRelight on the Cornell box (millimetres), fetches the results and
+checks the arrays and the relighting arithmetic. Exits non-zero on failure and
+prints a line containing 'passed' on success.
+"""
+
+import math
+import sys
+
+from paraview.simple import *  # noqa: F401,F403  (LoadPlugin, Show, Render, ...)
+from paraview import servermanager
+
+import numpy as np
+from vtkmodules.util import numpy_support
+from vtkmodules.util.vtkConstants import VTK_UNSIGNED_CHAR
+
+LIGHT = "Ceiling"
+COLOUR = (1.0, 0.8, 0.6)
+INTENSITY = 2.0
+ENABLED = 1
+REL_TOL = 1e-5
+
+
+class TestFailure(Exception):
+    pass
+
+
+def check(condition, message):
+    if not condition:
+        raise TestFailure(message)
+
+
+def get_array(attributes, name, where, count):
+    """Returns the vtkDataArray `name` of `attributes`; it must have 3 components
+    and `count` tuples."""
+    array = attributes.GetArray(name)
+    check(array is not None, "%s: missing array '%s'" % (where, name))
+    check(array.GetNumberOfComponents() == 3,
+          "%s: array '%s' has %d components, expected 3"
+          % (where, name, array.GetNumberOfComponents()))
+    check(array.GetNumberOfTuples() == count,
+          "%s: array '%s' has %d tuples, expected %d"
+          % (where, name, array.GetNumberOfTuples(), count))
+    return array
+
+
+def check_finite(dataset, label):
+    """No NaN (or Inf) in any floating-point point or cell array."""
+    for kind, attributes in (("point", dataset.GetPointData()), ("cell", dataset.GetCellData())):
+        for i in range(attributes.GetNumberOfArrays()):
+            array = attributes.GetArray(i)
+            if array is None:  # not a vtkDataArray (e.g. a string array)
+                continue
+            values = numpy_support.vtk_to_numpy(array)
+            if values.dtype.kind == "f":
+                check(np.all(np.isfinite(values)),
+                      "%s: %s array '%s' contains NaN or Inf"
+                      % (label, kind, array.GetName()))
+
+
+def main(argv):
+    if len(argv) < 3:
+        print("usage: pvbatch %s <plugin.so> <cornell_box.vtp> [screenshot.png]" % argv[0])
+        return 2
+    plugin_path, data_path = argv[1], argv[2]
+    screenshot = argv[3] if len(argv) > 3 else None
+
+    LoadPlugin(plugin_path, ns=globals())
+    for name in ("RadiosityMesher", "LightTaggedRadiosity", "RadiosityRelight"):
+        check(name in globals(), "plugin did not provide the filter '%s'" % name)
+
+    # --- pipeline ---------------------------------------------------------
+    reader = XMLPolyDataReader(registrationName="cornell_box.vtp", FileName=[data_path])
+    mesher = RadiosityMesher(registrationName="Mesher", Input=reader)
+    mesher.PatchSize = 100.0   # Cornell box is in millimetres
+    mesher.ElementSize = 50.0
+    solver = LightTaggedRadiosity(registrationName="Solver", Input=mesher)
+    solver.MaximumShots = 200
+    mode = solver.GetProperty("SolutionMode").GetData()
+    check(mode == "LightTagged", "default SolutionMode is %r, expected 'LightTagged'" % (mode,))
+    relight = RadiosityRelight(registrationName="Relight", Input=solver)
+    # One row of the repeatable string-vector property:
+    # Name, Red, Green, Blue, Intensity, Enabled (all passed as strings).
+    relight.LightSettings = [LIGHT] + [repr(float(c)) for c in COLOUR] + [
+        repr(float(INTENSITY)), str(int(ENABLED))]
+    check(len(relight.LightSettings) == 6,
+          "LightSettings has %d elements, expected 6" % len(relight.LightSettings))
+
+    UpdatePipeline(proxy=relight)
+
+    # --- information properties -------------------------------------------
+    relight.UpdatePipelineInformation()  # pulls the information_only properties
+    names_info = relight.GetProperty("LightNamesInfo").GetElement(0) or ""
+    names = [n for n in names_info.split(";") if n]
+    check(LIGHT in names, "LightNamesInfo is %r, expected it to list '%s'" % (names_info, LIGHT))
+    n_lights = relight.GetProperty("NumberOfLights").GetElement(0)
+    check(n_lights == len(names),
+          "NumberOfLights is %d but LightNamesInfo lists %d names" % (n_lights, len(names)))
+
+    # --- fetch results ----------------------------------------------------
+    solved = servermanager.Fetch(solver)
+    relit = servermanager.Fetch(relight)
+    check(solved is not None and solved.IsA("vtkPolyData"), "solver output is not vtkPolyData")
+    check(relit is not None and relit.IsA("vtkPolyData"), "relight output is not vtkPolyData")
+    check(solved.GetNumberOfCells() > 0, "solver output has no cells")
+    check(relit.GetNumberOfCells() == solved.GetNumberOfCells(),
+          "relight output has %d cells, solver output %d"
+          % (relit.GetNumberOfCells(), solved.GetNumberOfCells()))
+    check(relit.GetNumberOfPoints() == solved.GetNumberOfPoints(),
+          "relight output has %d points, solver output %d"
+          % (relit.GetNumberOfPoints(), solved.GetNumberOfPoints()))
+
+    per_light = "Radiosity_" + LIGHT
+    get_array(solved.GetPointData(), per_light, "solver point data", solved.GetNumberOfPoints())
+    solved_cells = get_array(solved.GetCellData(), per_light, "solver cell data",
+                             solved.GetNumberOfCells())
+
+    for kind, attributes, count in (("point", relit.GetPointData(), relit.GetNumberOfPoints()),
+                                    ("cell", relit.GetCellData(), relit.GetNumberOfCells())):
+        where = "relight %s data" % kind
+        get_array(attributes, "Radiosity", where, count)
+        colors = get_array(attributes, "DisplayColors", where, count)
+        check(colors.GetDataType() == VTK_UNSIGNED_CHAR,
+              "%s: DisplayColors is %s, expected unsigned char"
+              % (where, colors.GetDataTypeAsString()))
+
+    check_finite(solved, "solver output")
+    check_finite(relit, "relight output")
+
+    # --- relighting arithmetic --------------------------------------------
+    base = numpy_support.vtk_to_numpy(solved_cells).astype(np.float64)
+    relit_cells = numpy_support.vtk_to_numpy(
+        relit.GetCellData().GetArray("Radiosity")).astype(np.float64)
+    expected = base * (np.asarray(COLOUR, dtype=np.float64) * INTENSITY)[np.newaxis, :]
+    scale = max(float(np.max(np.abs(expected))), 1e-300)
+    error = np.abs(relit_cells - expected)
+    allowed = REL_TOL * np.abs(expected) + 1e-12 * scale
+    bad = np.nonzero(np.any(error > allowed, axis=1))[0]
+    check(bad.size == 0,
+          "relit cell Radiosity != colour * intensity * %s at %d cells; first: cell %d "
+          "relit %s expected %s" % (per_light, bad.size, bad[0] if bad.size else -1,
+                                    relit_cells[bad[0]] if bad.size else None,
+                                    expected[bad[0]] if bad.size else None))
+
+    # Mean over the element cells that are not lights (all cells if LightId
+    # was not passed through): light must have reached the room.
+    light_id = relit.GetCellData().GetArray("LightId")
+    mask = np.ones(relit.GetNumberOfCells(), dtype=bool)
+    if light_id is not None:
+        mask = numpy_support.vtk_to_numpy(light_id).reshape(-1) < 0
+        check(np.any(mask), "no non-light cells in the relight output")
+    mean = float(np.mean(relit_cells[mask]))
+    check(math.isfinite(mean) and mean > 0.0,
+          "mean relit Radiosity of the element cells is %r, expected > 0" % mean)
+
+    # --- render -----------------------------------------------------------
+    view = GetActiveViewOrCreate("RenderView")
+    view.ViewSize = [600, 600]
+    view.OrientationAxesVisibility = 0
+    display = Show(relight, view)
+    ColorBy(display, ("POINTS", "DisplayColors"))
+    display.MapScalars = 0  # show the sRGB DisplayColors as they are
+    display.Ambient = 1.0   # radiosity is view independent: no extra shading
+    display.Diffuse = 0.0
+    display.SetScalarBarVisibility(view, False)
+    bounds = relit.GetBounds()
+    centre = [0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
+              0.5 * (bounds[4] + bounds[5])]
+    size = max(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4])
+    view.CameraFocalPoint = centre
+    view.CameraPosition = [centre[0], centre[1], bounds[4] - 2.0 * size]  # open side, z = min
+    view.CameraViewUp = [0.0, 1.0, 0.0]
+    view.ResetCamera()
+    Render(view)
+    if screenshot:
+        SaveScreenshot(screenshot, view, ImageResolution=[600, 600])
+    # Release the view before the interpreter exits: with an X/GLX build,
+    # a render window still alive at exit can abort with GLXBadContext.
+    Delete(display)
+    Delete(view)
+    del display, view
+
+    print("TestPluginProxies passed: %d elements, %d points, light(s) %s, "
+          "mean relit radiosity %.6g" % (relit.GetNumberOfCells(), relit.GetNumberOfPoints(),
+                                         ";".join(names), mean))
+    return 0
+
+
+if __name__ == "__main__":
+    try:
+        status = main(sys.argv)
+    except TestFailure as failure:
+        print("TestPluginProxies FAILED: %s" % failure)
+        status = 1
+    except Exception:
+        import traceback
+        traceback.print_exc()
+        print("TestPluginProxies FAILED with an exception")
+        status = 1
+    sys.stdout.flush()
+    if status != 0:
+        sys.exit(status)
+    # On success just end the script: pvbatch then exits with status 0.
