@@ -4,37 +4,57 @@
 #include "LightSolutions.h"
 
 #include "vtkCellData.h"
+#include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkStringArray.h"
+#include "vtkTable.h"
 
 #include <chrono>
 
 vtkStandardNewMacro(vtkLightTaggedRadiosity);
 
-vtkLightTaggedRadiosity::vtkLightTaggedRadiosity() = default;
+vtkLightTaggedRadiosity::vtkLightTaggedRadiosity()
+{
+  this->SetNumberOfOutputPorts(2);
+}
+
+int vtkLightTaggedRadiosity::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 1)
+  {
+    info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkTable");
+    return 1;
+  }
+  return this->Superclass::FillOutputPortInformation(port, info);
+}
 
 void vtkLightTaggedRadiosity::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "SolutionMode: " << this->SolutionMode << "\n";
+  os << indent << "FormFactorMethod: " << this->FormFactorMethod << "\n";
+  os << indent << "FormFactorSamples: " << this->FormFactorSamples << "\n";
   os << indent << "MaximumShots: " << this->MaximumShots << "\n";
   os << indent << "ConvergenceThreshold: " << this->ConvergenceThreshold << "\n";
-  os << indent << "ShadowRays: " << this->ShadowRays << "\n";
+  os << indent << "TimeBudget: " << this->TimeBudget << "\n";
+  os << indent << "AmbientTerm: " << this->AmbientTerm << "\n";
+  os << indent << "SeparateDirect: " << this->SeparateDirect << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
 }
 
 namespace
 {
-vtkSmartPointer<vtkFloatArray> MakeArray(const std::string& name, const std::vector<radiosity::Vec3>& values,
-  int columns, int column, size_t count)
+vtkSmartPointer<vtkFloatArray> MakeArray(const std::string& name,
+  const std::vector<radiosity::Vec3>& values, int columns, int column, size_t count)
 {
   auto array = vtkSmartPointer<vtkFloatArray>::New();
   array->SetName(name.c_str());
@@ -50,13 +70,41 @@ vtkSmartPointer<vtkFloatArray> MakeArray(const std::string& name, const std::vec
   }
   return array;
 }
+
+/// Names of the solutions: a light's own name, or its bank's members joined by '+'.
+std::vector<std::string> SolutionNames(
+  const std::vector<std::string>& lights, const radiosity::LightGrouping& grouping)
+{
+  std::vector<std::string> names(grouping.Solutions);
+  for (size_t i = 0; i < lights.size(); ++i)
+  {
+    std::string& name = names[grouping.SolutionOfLight[i]];
+    name += (name.empty() ? "" : "+") + lights[i];
+  }
+  return names;
+}
+
+void AddColumn(vtkTable* table, const std::string& name, const std::vector<double>& values,
+  size_t stride, size_t offset)
+{
+  vtkNew<vtkDoubleArray> column;
+  column->SetName(name.c_str());
+  const size_t rows = stride ? values.size() / stride : 0;
+  column->SetNumberOfValues(static_cast<vtkIdType>(rows));
+  for (size_t r = 0; r < rows; ++r)
+  {
+    column->SetValue(static_cast<vtkIdType>(r), values[r * stride + offset]);
+  }
+  table->AddColumn(column);
+}
 }
 
 int vtkLightTaggedRadiosity::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  vtkTable* history = vtkTable::GetData(outputVector, 1);
 
   radiosity::SceneMesh mesh;
   std::vector<radiosity::Vec3> emission;
@@ -69,6 +117,20 @@ int vtkLightTaggedRadiosity::RequestData(
     vtkErrorMacro(<< "Cannot solve: " << error << ".");
     return 0;
   }
+  radiosity::LightGrouping grouping = radiosity::LightGrouping::OnePerLight(lights);
+  if (vtkDataArray* banks = input->GetFieldData()->GetArray("LightBanks"))
+  {
+    std::vector<int> ids;
+    for (vtkIdType i = 0; i < banks->GetNumberOfTuples(); ++i)
+    {
+      ids.push_back(static_cast<int>(banks->GetComponent(i, 0)));
+    }
+    if (!(error = radiosity::LightGrouping::FromBanks(ids, lights, grouping)).empty())
+    {
+      vtkErrorMacro(<< "Cannot solve: " << error << ".");
+      return 0;
+    }
+  }
 
   const auto start = std::chrono::steady_clock::now();
   radiosity::ProgressiveRadiosity solver(mesh);
@@ -80,57 +142,106 @@ int vtkLightTaggedRadiosity::RequestData(
   radiosity::SolverOptions options;
   options.MaximumShots = this->MaximumShots;
   options.ConvergenceThreshold = this->ConvergenceThreshold;
-  options.ShadowRays = this->ShadowRays;
+  options.TimeBudget = this->TimeBudget;
+  options.Method = static_cast<radiosity::FormFactorMethod>(this->FormFactorMethod);
+  options.Samples = this->FormFactorSamples;
   options.Threads = this->NumberOfThreads;
+  options.AmbientTerm = this->AmbientTerm;
+  options.SeparateDirect = this->SeparateDirect;
   options.Progress = [this](double f) {
     this->UpdateProgress(f);
     return !this->GetAbortExecute();
   };
   const auto mode = static_cast<radiosity::SolutionMode>(this->SolutionMode);
-  const radiosity::LightSolutions result =
-    radiosity::SolveLights(solver, mesh, lights, emission, mode, options);
+  const radiosity::Solution result =
+    radiosity::SolveLights(solver, mesh, grouping, emission, mode, options);
+  const int columns = result.Solutions;
   const std::vector<radiosity::Vec3> pointValues =
-    radiosity::AverageToPoints(mesh, solver.Geometry(), result.Radiosity, result.Solutions);
+    radiosity::AverageToPoints(mesh, solver.Geometry(), result.Radiosity, columns);
+  const std::vector<radiosity::Vec3> pointDirect = result.Direct.empty()
+    ? std::vector<radiosity::Vec3>()
+    : radiosity::AverageToPoints(mesh, solver.Geometry(), result.Direct, columns);
   this->LastSolveSeconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  this->LastShots = result.Statistics.Shots;
-  this->LastConverged = result.Statistics.Converged;
-  this->LastShadowRays = result.Statistics.ShadowRayCount;
-  if (result.Statistics.Aborted)
+  const radiosity::SolverStatistics& stats = result.Statistics;
+  this->LastShots = stats.Shots;
+  this->LastConverged = stats.Converged;
+  this->LastRays = stats.RayCount;
+  if (stats.Aborted)
   {
-    vtkWarningMacro(<< "Solve aborted after " << result.Statistics.Shots
+    vtkWarningMacro(<< "Solve aborted after " << stats.Shots
                     << " shots; the output holds the partial result.");
+  }
+  if (stats.OutOfTime)
+  {
+    vtkWarningMacro(<< "TimeBudget of " << this->TimeBudget << " s reached after " << stats.Shots
+                    << " shots; remaining unshot energy "
+                    << (stats.RemainingHistory.empty() ? 1.0 : stats.RemainingHistory.back())
+                    << " of the initial.");
   }
 
   output->ShallowCopy(input);
-  const std::vector<std::string> names = vtkRadiosityAdapter::LightNames(input->GetFieldData(), lights);
+  const bool combined = mode == radiosity::SolutionMode::StandardCombined;
+  const std::vector<std::string> names = combined
+    ? std::vector<std::string>{ "" }
+    : SolutionNames(vtkRadiosityAdapter::LightNames(input->GetFieldData(), lights), grouping);
   const size_t cells = mesh.NumberOfPolygons();
   const size_t points = mesh.points.size();
-  for (int m = 0; m < result.Solutions; ++m)
+  for (int m = 0; m < columns; ++m)
   {
-    const std::string name =
-      mode == radiosity::SolutionMode::StandardCombined ? "Radiosity" : "Radiosity_" + names[m];
-    output->GetCellData()->AddArray(MakeArray(name, result.Radiosity, result.Solutions, m, cells));
-    output->GetPointData()->AddArray(MakeArray(name, pointValues, result.Solutions, m, points));
+    const std::string name = combined ? "Radiosity" : "Radiosity_" + names[m];
+    output->GetCellData()->AddArray(MakeArray(name, result.Radiosity, columns, m, cells));
+    output->GetPointData()->AddArray(MakeArray(name, pointValues, columns, m, points));
+    if (!result.Direct.empty())
+    {
+      const std::string direct = combined ? "Direct" : "Direct_" + names[m];
+      output->GetCellData()->AddArray(MakeArray(direct, result.Direct, columns, m, cells));
+      output->GetPointData()->AddArray(MakeArray(direct, pointDirect, columns, m, points));
+    }
   }
 
   // Fresh field data: the input's arrays are shared, ours are added on top.
   vtkNew<vtkFieldData> fields;
   fields->ShallowCopy(input->GetFieldData());
-  vtkNew<vtkStringArray> lightNames;
-  lightNames->SetName("LightNames");
-  for (const std::string& name : names)
+  if (!combined)
   {
-    lightNames->InsertNextValue(name);
+    vtkNew<vtkStringArray> lightNames;
+    lightNames->SetName("LightNames");
+    for (const std::string& name : names)
+    {
+      lightNames->InsertNextValue(name);
+    }
+    fields->AddArray(lightNames);
+    vtkNew<vtkDoubleArray> defaults;
+    defaults->SetName("LightDefaultColors");
+    defaults->SetNumberOfComponents(3);
+    for (const radiosity::Vec3& c : radiosity::DefaultColors(mesh, grouping, emission))
+    {
+      defaults->InsertNextTuple3(c.x, c.y, c.z);
+    }
+    fields->AddArray(defaults);
   }
-  fields->AddArray(lightNames);
-  vtkNew<vtkDoubleArray> history;
-  history->SetName("UnshotHistory");
-  for (double r : result.Statistics.RemainingHistory)
+  vtkNew<vtkDoubleArray> unshot;
+  unshot->SetName("UnshotHistory");
+  for (double r : stats.RemainingHistory)
   {
-    history->InsertNextValue(r);
+    unshot->InsertNextValue(r);
   }
-  fields->AddArray(history);
+  fields->AddArray(unshot);
   output->SetFieldData(fields);
+
+  vtkNew<vtkIntArray> shotColumn;
+  shotColumn->SetName("Shot");
+  for (int s = 1; s <= stats.Shots; ++s)
+  {
+    shotColumn->InsertNextValue(s);
+  }
+  history->AddColumn(shotColumn);
+  AddColumn(history, "Time", stats.TimeHistory, 1, 0);
+  AddColumn(history, "Remaining", stats.RemainingHistory, 1, 0);
+  for (int m = 0; m < columns && !combined; ++m)
+  {
+    AddColumn(history, "Remaining_" + names[m], stats.RemainingPerSolution, columns, m);
+  }
   return 1;
 }

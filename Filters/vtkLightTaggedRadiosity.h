@@ -13,14 +13,22 @@
  * optional `Emission` (3), `PatchId`, and field array `LightNames`. Light m's solution is
  * for unit exitance on its cells.
  *
- * Output: the input plus, for each light, point and cell arrays `Radiosity_<name>`
- * (3 components, float, exitance), field arrays `LightNames` and `UnshotHistory`
- * (remaining unshot power / initial after each shot). In StandardCombined mode one array
- * `Radiosity` instead, with every light at its `Emission`.
+ * Output port 0: the input plus, for each light (or bank), point and cell arrays
+ * `Radiosity_<name>` (3 components, float, exitance) and with SeparateDirect also
+ * `Direct_<name>`; field arrays `LightNames`, `LightDefaultColors` (the relight colour
+ * that reproduces the scene's Emission) and `UnshotHistory` (remaining unshot power /
+ * initial after each shot). In StandardCombined mode one array `Radiosity` instead, with
+ * every light at its `Emission`.
+ * Output port 1: the convergence history as a table (Shot, Time, Remaining and
+ * Remaining_<name> per solution), ready for a line chart.
  *
- * Solves stop at MaximumShots or when the remaining unshot power falls below
- * ConvergenceThreshold times the initial power. Work is spread over all hardware threads;
- * results do not depend on the thread count.
+ * An optional field array `LightBanks` (k integers, 0..b-1) groups lights into banks that
+ * share one solution (their relative Emission colours are kept inside it).
+ *
+ * Solves stop at MaximumShots, when the remaining unshot power falls below
+ * ConvergenceThreshold times the initial power, when TimeBudget seconds have passed, or
+ * on abort; every stop leaves a valid partial result. Work is spread over all hardware
+ * threads; results do not depend on the thread count.
  *
  * @sa vtkRadiosityMesher vtkRadiosityRelight
  */
@@ -67,11 +75,52 @@ public:
   vtkGetMacro(ConvergenceThreshold, double);
   ///@}
 
+  enum FormFactorMethods
+  {
+    ANALYTIC = 0,
+    HEMICUBE = 1,
+    MONTE_CARLO = 2
+  };
+
   ///@{
-  /// Shadow rays per receiver and shot (stratified over the shooter); 0 ignores
-  /// occlusion. Default 16.
-  vtkSetClampMacro(ShadowRays, int, 0, 4096);
-  vtkGetMacro(ShadowRays, int);
+  /// Analytic (default): exact point-to-polygon factor at each receiver times the visible
+  /// fraction of FormFactorSamples shadow rays. Hemicube: a hemicube of resolution
+  /// FormFactorSamples at the shooter, pixels cast as rays. MonteCarlo: FormFactorSamples
+  /// cosine-distributed rays per shot.
+  vtkSetClampMacro(FormFactorMethod, int, ANALYTIC, MONTE_CARLO);
+  vtkGetMacro(FormFactorMethod, int);
+  void SetFormFactorMethodToAnalytic() { this->SetFormFactorMethod(ANALYTIC); }
+  void SetFormFactorMethodToHemicube() { this->SetFormFactorMethod(HEMICUBE); }
+  void SetFormFactorMethodToMonteCarlo() { this->SetFormFactorMethod(MONTE_CARLO); }
+  ///@}
+
+  ///@{
+  /// Shadow rays per receiver (Analytic; 0 ignores occlusion), hemicube resolution, or
+  /// rays per shot (MonteCarlo). Default 16.
+  vtkSetClampMacro(FormFactorSamples, int, 0, 1 << 24);
+  vtkGetMacro(FormFactorSamples, int);
+  ///@}
+
+  ///@{
+  /// Stop after this many seconds of shooting; 0 (default) means no limit.
+  vtkSetClampMacro(TimeBudget, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(TimeBudget, double);
+  ///@}
+
+  ///@{
+  /// Add each light's ambient term (Cohen et al. 1988) so unconverged results display
+  /// sensibly. Off by default.
+  vtkSetMacro(AmbientTerm, bool);
+  vtkGetMacro(AmbientTerm, bool);
+  vtkBooleanMacro(AmbientTerm, bool);
+  ///@}
+
+  ///@{
+  /// Also output `Direct_<name>` (emission plus first bounce) per light, so indirect
+  /// light can be scaled separately when relighting. Off by default.
+  vtkSetMacro(SeparateDirect, bool);
+  vtkGetMacro(SeparateDirect, bool);
+  vtkBooleanMacro(SeparateDirect, bool);
   ///@}
 
   ///@{
@@ -84,7 +133,7 @@ public:
   /// Statistics of the last solve.
   vtkGetMacro(LastShots, int);
   vtkGetMacro(LastConverged, bool);
-  vtkGetMacro(LastShadowRays, long long);
+  vtkGetMacro(LastRays, long long);
   vtkGetMacro(LastSolveSeconds, double);
   ///@}
 
@@ -92,6 +141,7 @@ protected:
   vtkLightTaggedRadiosity();
   ~vtkLightTaggedRadiosity() override = default;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
 
 private:
   vtkLightTaggedRadiosity(const vtkLightTaggedRadiosity&) = delete;
@@ -100,11 +150,15 @@ private:
   int SolutionMode = LIGHT_TAGGED;
   int MaximumShots = 2000;
   double ConvergenceThreshold = 1e-3;
-  int ShadowRays = 16;
+  int FormFactorMethod = ANALYTIC;
+  int FormFactorSamples = 16;
+  double TimeBudget = 0;
+  bool AmbientTerm = false;
+  bool SeparateDirect = false;
   int NumberOfThreads = 0;
   int LastShots = 0;
   bool LastConverged = false;
-  long long LastShadowRays = 0;
+  long long LastRays = 0;
   double LastSolveSeconds = 0;
 };
 

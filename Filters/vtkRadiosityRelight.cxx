@@ -1,6 +1,7 @@
 #include "vtkRadiosityRelight.h"
 
 #include "Relight.h"
+#include "WorkerPool.h"
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -137,6 +138,13 @@ void vtkRadiosityRelight::PrintSelf(ostream& os, vtkIndent indent)
 
 namespace
 {
+/// Shared by every relight filter: threads are started once per process, not per frame.
+const radiosity::WorkerPool& Pool()
+{
+  static const radiosity::WorkerPool pool(0);
+  return pool;
+}
+
 /// Combines the arrays of one attribute set; false with a message on a bad array.
 bool Combine(vtkFieldData* data, const std::vector<std::string>& arrays,
   const std::vector<double>& weights, vtkIdType tuples, vtkFloatArray* out, std::string& error)
@@ -180,11 +188,11 @@ bool Combine(vtkFieldData* data, const std::vector<std::string>& arrays,
   out->SetNumberOfTuples(tuples);
   if (!floats.empty())
   {
-    radiosity::CombineLights(floats, weights, static_cast<size_t>(tuples), out->GetPointer(0));
+    radiosity::CombineLights(floats, weights, static_cast<size_t>(tuples), out->GetPointer(0), &Pool());
   }
   else
   {
-    radiosity::CombineLights(doubles, weights, static_cast<size_t>(tuples), out->GetPointer(0));
+    radiosity::CombineLights(doubles, weights, static_cast<size_t>(tuples), out->GetPointer(0), &Pool());
   }
   const float* values = out->GetPointer(0);
   for (vtkIdType i = 0; i < 3 * tuples; ++i)
@@ -205,12 +213,9 @@ vtkSmartPointer<vtkUnsignedCharArray> Display(vtkFloatArray* linear, double expo
   colors->SetName("DisplayColors");
   colors->SetNumberOfComponents(3);
   colors->SetNumberOfTuples(linear->GetNumberOfTuples());
-  const float* in = linear->GetPointer(0);
-  unsigned char* out = colors->GetPointer(0);
-  for (vtkIdType i = 0; i < 3 * linear->GetNumberOfTuples(); ++i)
-  {
-    out[i] = radiosity::ToDisplay(in[i], exposure);
-  }
+  static const radiosity::DisplayCurve curve;
+  curve.Apply(linear->GetPointer(0), 3 * static_cast<size_t>(linear->GetNumberOfTuples()), exposure,
+    colors->GetPointer(0));
   return colors;
 }
 }
@@ -254,13 +259,18 @@ int vtkRadiosityRelight::RequestData(
     return 0;
   }
 
-  // Default colours: the mean Emission of each light's cells.
+  // Default colours: the solver's, else the mean Emission of each light's cells.
   const int k = static_cast<int>(names.size());
+  vtkDataArray* defaults = input->GetFieldData()->GetArray("LightDefaultColors");
+  if (defaults && (defaults->GetNumberOfComponents() != 3 || defaults->GetNumberOfTuples() != k))
+  {
+    defaults = nullptr;
+  }
   std::vector<double> emissionSum(3 * k, 0.0);
   std::vector<int> emissionCount(k, 0);
   vtkDataArray* lightId = input->GetCellData()->GetArray("LightId");
   vtkDataArray* emission = input->GetCellData()->GetArray("Emission");
-  if (lightId && emission && emission->GetNumberOfComponents() == 3)
+  if (!defaults && lightId && emission && emission->GetNumberOfComponents() == 3)
   {
     for (vtkIdType c = 0; c < input->GetNumberOfCells(); ++c)
     {
@@ -283,7 +293,11 @@ int vtkRadiosityRelight::RequestData(
     Light light;
     light.Name = names[i];
     Setting& s = light.Effective;
-    if (emissionCount[i] > 0 &&
+    if (defaults)
+    {
+      defaults->GetTuple(i, s.Color);
+    }
+    else if (emissionCount[i] > 0 &&
       emissionSum[3 * i] + emissionSum[3 * i + 1] + emissionSum[3 * i + 2] > 0)
     {
       for (int j = 0; j < 3; ++j)
@@ -322,6 +336,30 @@ int vtkRadiosityRelight::RequestData(
     if (entry.first < 0 || entry.first >= k)
     {
       vtkWarningMacro(<< "Light index " << entry.first << " is out of range; there are " << k << " lights.");
+    }
+  }
+
+  // B = s B_total + (1 - s) B_direct: the same combination over 2k arrays.
+  if (this->IndirectScale != 1.0)
+  {
+    const std::string direct = "Direct_" + names[0];
+    if (!input->GetPointData()->GetAbstractArray(direct.c_str()) &&
+      !input->GetCellData()->GetAbstractArray(direct.c_str()))
+    {
+      vtkErrorMacro(<< "Cannot relight: IndirectScale needs the arrays '" << direct
+                    << "' etc.; turn on SeparateDirect in the solver.");
+      return 0;
+    }
+    const size_t total = weights.size();
+    for (size_t w = 0; w < total; ++w)
+    {
+      weights.push_back(weights[w] * (1.0 - this->IndirectScale));
+      weights[w] *= this->IndirectScale;
+    }
+    for (const std::string& name : names)
+    {
+      pointArrays.push_back("Direct_" + name);
+      cellArrays.push_back("Direct_" + name);
     }
   }
 

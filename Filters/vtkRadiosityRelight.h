@@ -8,8 +8,10 @@
  * Changing a light re-executes only this filter, and this filter only combines: cost
  * O(n k), nothing upstream is recomputed.
  *
- * A light's default colour is the mean `Emission` of its cells (white if there is none),
- * its default intensity 1 and it is enabled. Lights are addressed by index (SetLightColor
+ * A light's default colour is the solver's field array `LightDefaultColors` (else the mean
+ * `Emission` of its cells, else white), its default intensity 1 and it is enabled.
+ * With the solver's `Direct_<name>` arrays, IndirectScale scales indirect light alone:
+ * B = Direct + IndirectScale * (Radiosity - Direct). Lights are addressed by index (SetLightColor
  * etc.) or by name (SetLightSetting, used by ParaView); index settings win.
  *
  * Output: the input plus point and cell arrays `Radiosity` (3 components, linear exitance)
@@ -58,6 +60,12 @@ public:
   ///@}
 
   ///@{
+  /// Factor on indirect light (needs the solver's SeparateDirect output). Default 1.
+  vtkSetClampMacro(IndirectScale, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(IndirectScale, double);
+  ///@}
+
+  ///@{
   /// The lights found by the last execution and their effective settings.
   int GetNumberOfLights() const { return static_cast<int>(this->Resolved.size()); }
   const char* GetLightName(int light) const;
@@ -96,6 +104,7 @@ private:
   std::vector<Light> Resolved;
   std::string NamesString;
   double Exposure = 1.0;
+  double IndirectScale = 1.0;
 };
 
 #endif

@@ -1,14 +1,107 @@
 #include "LightSolutions.h"
 
+#include <algorithm>
+#include <set>
+
 namespace radiosity
 {
 
-LightSolutions SolveLights(const ProgressiveRadiosity& solver, const SceneMesh& mesh, int lights,
-  const std::vector<Vec3>& emissionColor, SolutionMode mode, const SolverOptions& options)
+LightGrouping LightGrouping::OnePerLight(int lights)
 {
-  LightSolutions out;
+  LightGrouping g;
+  g.Solutions = lights;
+  for (int i = 0; i < lights; ++i)
+  {
+    g.SolutionOfLight.push_back(i);
+  }
+  return g;
+}
+
+std::string LightGrouping::FromBanks(const std::vector<int>& banks, int lights, LightGrouping& out)
+{
+  if (static_cast<int>(banks.size()) != lights)
+  {
+    return "LightBanks has " + std::to_string(banks.size()) + " entries; it needs one per light (" +
+      std::to_string(lights) + ")";
+  }
+  const std::set<int> used(banks.begin(), banks.end());
+  if (*used.begin() != 0 || *used.rbegin() != static_cast<int>(used.size()) - 1)
+  {
+    return "LightBanks must number banks 0..b-1 without gaps";
+  }
+  out.SolutionOfLight = banks;
+  out.Solutions = static_cast<int>(used.size());
+  return std::string();
+}
+
+namespace
+{
+std::vector<int> LightsPerSolution(const LightGrouping& grouping)
+{
+  std::vector<int> count(grouping.Solutions, 0);
+  for (int s : grouping.SolutionOfLight)
+  {
+    ++count[s];
+  }
+  return count;
+}
+} // namespace
+
+std::vector<Vec3> SolutionEmission(
+  const SceneMesh& mesh, const LightGrouping& grouping, const std::vector<Vec3>& emissionColor)
+{
   const int n = mesh.NumberOfPolygons();
-  const Vec3 unit{ 1, 1, 1 };
+  const int L = grouping.Solutions;
+  const std::vector<int> members = LightsPerSolution(grouping);
+  std::vector<Vec3> emission(static_cast<size_t>(n) * L);
+  for (int e = 0; e < n; ++e)
+  {
+    if (mesh.lightId[e] < 0)
+    {
+      continue;
+    }
+    const int s = grouping.SolutionOfLight[mesh.lightId[e]];
+    const bool bank = members[s] > 1 && !emissionColor.empty();
+    emission[e * L + s] = bank ? emissionColor[e] : Vec3{ 1, 1, 1 };
+  }
+  return emission;
+}
+
+std::vector<Vec3> DefaultColors(
+  const SceneMesh& mesh, const LightGrouping& grouping, const std::vector<Vec3>& emissionColor)
+{
+  const int L = grouping.Solutions;
+  const std::vector<int> members = LightsPerSolution(grouping);
+  std::vector<Vec3> sum(L);
+  std::vector<int> cells(L, 0);
+  if (!emissionColor.empty())
+  {
+    for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
+    {
+      if (mesh.lightId[e] >= 0)
+      {
+        const int s = grouping.SolutionOfLight[mesh.lightId[e]];
+        sum[s] += emissionColor[e];
+        ++cells[s];
+      }
+    }
+  }
+  std::vector<Vec3> colors(L, Vec3{ 1, 1, 1 });
+  for (int s = 0; s < L; ++s)
+  {
+    if (members[s] == 1 && cells[s] > 0 && (sum[s].x + sum[s].y + sum[s].z) > 0)
+    {
+      colors[s] = sum[s] * (1.0 / cells[s]);
+    }
+  }
+  return colors;
+}
+
+Solution SolveLights(const ProgressiveRadiosity& solver, const SceneMesh& mesh,
+  const LightGrouping& grouping, const std::vector<Vec3>& emissionColor, SolutionMode mode,
+  const SolverOptions& options)
+{
+  const int n = mesh.NumberOfPolygons();
   if (mode == SolutionMode::StandardCombined)
   {
     std::vector<Vec3> emission(n);
@@ -16,58 +109,81 @@ LightSolutions SolveLights(const ProgressiveRadiosity& solver, const SceneMesh& 
     {
       if (mesh.lightId[e] >= 0)
       {
-        emission[e] = emissionColor.empty() ? unit : emissionColor[e];
+        emission[e] = emissionColor.empty() ? Vec3{ 1, 1, 1 } : emissionColor[e];
       }
     }
-    out.Solutions = 1;
-    out.Statistics = solver.Solve(emission, 1, options, out.Radiosity);
-    return out;
+    return solver.Solve(emission, 1, options);
   }
-  out.Solutions = lights;
+  const int L = grouping.Solutions;
+  const std::vector<Vec3> emission = SolutionEmission(mesh, grouping, emissionColor);
   if (mode == SolutionMode::LightTagged)
   {
-    std::vector<Vec3> emission(static_cast<size_t>(n) * lights);
-    for (int e = 0; e < n; ++e)
-    {
-      if (mesh.lightId[e] >= 0)
-      {
-        emission[e * lights + mesh.lightId[e]] = unit;
-      }
-    }
-    out.Statistics = solver.Solve(emission, lights, options, out.Radiosity);
-    return out;
+    return solver.Solve(emission, L, options);
   }
-  // StandardSeparate: the baseline the paper beats, form factors recomputed per light.
-  out.Radiosity.assign(static_cast<size_t>(n) * lights, Vec3());
-  out.Statistics.Converged = true;
-  std::vector<Vec3> emission(n), single;
-  for (int m = 0; m < lights; ++m)
+
+  // StandardSeparate: the baseline the paper beats, form factors recomputed per solution.
+  Solution out;
+  out.Solutions = L;
+  out.Radiosity.assign(static_cast<size_t>(n) * L, Vec3());
+  if (options.SeparateDirect)
+  {
+    out.Direct.assign(static_cast<size_t>(n) * L, Vec3());
+  }
+  out.Ambient.assign(L, Vec3());
+  SolverStatistics& total = out.Statistics;
+  total.Converged = true;
+  std::vector<double> lastRemaining(L, 1.0);
+  std::vector<Vec3> single(n);
+  double elapsed = 0;
+  for (int m = 0; m < L; ++m)
   {
     for (int e = 0; e < n; ++e)
     {
-      emission[e] = mesh.lightId[e] == m ? unit : Vec3();
+      single[e] = emission[e * L + m];
     }
     SolverOptions each = options;
     if (options.Progress)
     {
-      each.Progress = [&, m](double f) { return options.Progress((m + f) / lights); };
+      each.Progress = [&, m](double f) { return options.Progress((m + f) / L); };
     }
-    const SolverStatistics s = solver.Solve(emission, 1, each, single);
+    if (options.TimeBudget > 0)
+    {
+      each.TimeBudget = std::max(1e-9, options.TimeBudget - elapsed);
+    }
+    const Solution s = solver.Solve(single, 1, each);
     for (int e = 0; e < n; ++e)
     {
-      out.Radiosity[e * lights + m] = single[e];
+      out.Radiosity[e * L + m] = s.Radiosity[e];
+      if (options.SeparateDirect)
+      {
+        out.Direct[e * L + m] = s.Direct[e];
+      }
     }
-    SolverStatistics& t = out.Statistics;
-    t.Shots += s.Shots;
-    t.Converged = t.Converged && s.Converged;
-    t.Aborted = s.Aborted;
-    t.RemainingHistory.insert(t.RemainingHistory.end(), s.RemainingHistory.begin(),
-      s.RemainingHistory.end());
-    t.ShadowRayCount += s.ShadowRayCount;
-    t.FormFactorCount += s.FormFactorCount;
-    t.ShotPower += s.ShotPower;
-    t.ReceivedPower += s.ReceivedPower;
-    if (s.Aborted)
+    out.Ambient[m] = s.Ambient[0];
+    const SolverStatistics& t = s.Statistics;
+    for (int shot = 0; shot < t.Shots; ++shot)
+    {
+      lastRemaining[m] = t.RemainingPerSolution[shot];
+      double sum = 0;
+      for (double r : lastRemaining)
+      {
+        sum += r;
+      }
+      total.RemainingPerSolution.insert(
+        total.RemainingPerSolution.end(), lastRemaining.begin(), lastRemaining.end());
+      total.RemainingHistory.push_back(sum / L);
+      total.TimeHistory.push_back(elapsed + t.TimeHistory[shot]);
+    }
+    elapsed += t.TimeHistory.empty() ? 0.0 : t.TimeHistory.back();
+    total.Shots += t.Shots;
+    total.Converged = total.Converged && t.Converged;
+    total.Aborted = t.Aborted;
+    total.OutOfTime = t.OutOfTime;
+    total.RayCount += t.RayCount;
+    total.FormFactorCount += t.FormFactorCount;
+    total.ShotPower += t.ShotPower;
+    total.ReceivedPower += t.ReceivedPower;
+    if (t.Aborted || t.OutOfTime)
     {
       break;
     }

@@ -1,4 +1,4 @@
-// One solution per light (or one combined), the three ways the paper compares.
+// One solution per light or bank (or one combined), the three ways the paper compares.
 #ifndef RadiosityCore_LightSolutions_h
 #define RadiosityCore_LightSolutions_h
 
@@ -9,22 +9,37 @@ namespace radiosity
 
 enum class SolutionMode
 {
-  LightTagged = 0,      ///< k unit-emission solutions in one pass (the paper's method)
+  LightTagged = 0,      ///< one solution per light or bank, all in one pass (the paper)
   StandardCombined = 1, ///< one ordinary solution with every light at its Emission colour
-  StandardSeparate = 2  ///< k unit-emission solutions, solved one after the other
+  StandardSeparate = 2  ///< the same solutions as LightTagged, solved one after the other
 };
 
-struct LightSolutions
+/// Which lights share a solution. A light alone in its solution emits unit exitance (its
+/// colour is applied when relighting); lights in a shared bank emit their Emission colour
+/// (white without one), so relighting scales the bank as one (paper 2.1, Dorsey 1995).
+struct LightGrouping
 {
-  int Solutions = 0;             ///< k, or 1 for StandardCombined
-  std::vector<Vec3> Radiosity;   ///< [element * Solutions + m]
-  SolverStatistics Statistics;   ///< summed over the solves of StandardSeparate
+  std::vector<int> SolutionOfLight; ///< k entries, 0..solutions-1
+  int Solutions = 0;
+
+  static LightGrouping OnePerLight(int lights);
+  /// Returns an empty string or why `banks` (k bank ids) is not usable.
+  static std::string FromBanks(const std::vector<int>& banks, int lights, LightGrouping& out);
 };
 
-/// `lights` is k from ValidateScene; `emissionColor` (per element) is used only by
-/// StandardCombined. Unit emission means exitance 1 in every channel on a light's cells.
-LightSolutions SolveLights(const ProgressiveRadiosity& solver, const SceneMesh& mesh, int lights,
-  const std::vector<Vec3>& emissionColor, SolutionMode mode, const SolverOptions& options);
+/// Per-element emission of each solution for the tagged/separate modes.
+std::vector<Vec3> SolutionEmission(const SceneMesh& mesh, const LightGrouping& grouping,
+  const std::vector<Vec3>& emissionColor);
+
+/// The relight colour that reproduces the scene's own Emission: a lone light's mean
+/// Emission (white if it has none), white for a bank (its colour is inside the solution).
+std::vector<Vec3> DefaultColors(const SceneMesh& mesh, const LightGrouping& grouping,
+  const std::vector<Vec3>& emissionColor);
+
+/// `emissionColor` (per element, may be empty) is used by StandardCombined and by banks.
+Solution SolveLights(const ProgressiveRadiosity& solver, const SceneMesh& mesh,
+  const LightGrouping& grouping, const std::vector<Vec3>& emissionColor, SolutionMode mode,
+  const SolverOptions& options);
 
 /// Vertex values as the area-weighted mean of the cells around each vertex. Vertices are
 /// shared only within a flat surface of one material, so nothing bleeds across corners.

@@ -1,69 +1,31 @@
 #include "ProgressiveRadiosity.h"
-#include "FormFactor.h"
-#include "Parallel.h"
+#include "WorkerPool.h"
 
 #include <algorithm>
-#include <cstdint>
+#include <chrono>
 
 namespace radiosity
 {
 
 namespace
 {
-/// Counter-based random numbers: a sample depends only on (shooter, receiver, index), so
-/// results are the same for any number of threads.
-struct SampleStream
-{
-  std::uint64_t State;
-  SampleStream(std::uint64_t a, std::uint64_t b)
-    : State(a * 0x9E3779B97F4A7C15ull ^ (b + 0x632BE59BD9B4E019ull))
-  {
-  }
-  double Next()
-  {
-    std::uint64_t z = (State += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    return static_cast<double>(z >> 11) * (1.0 / 9007199254740992.0);
-  }
-};
-
 double ChannelSum(const Vec3& v)
 {
   return v.x + v.y + v.z;
+}
+
+Vec3 Times(const Vec3& a, const Vec3& b)
+{
+  return { a.x * b.x, a.y * b.y, a.z * b.z };
 }
 } // namespace
 
 ProgressiveRadiosity::ProgressiveRadiosity(const SceneMesh& mesh)
   : Mesh(mesh)
   , Geometry_(mesh)
-  , Rays(new Visibility(mesh))
+  , Rays_(new Visibility(mesh))
 {
-  Error_ = Rays->Error();
-  Loops.reserve(mesh.connectivity.size());
-  for (int id : mesh.connectivity)
-  {
-    Loops.push_back(mesh.points[id]);
-  }
-  PatchTriangles.resize(Geometry_.patchElements.size());
-  for (size_t p = 0; p < PatchTriangles.size(); ++p)
-  {
-    double total = 0;
-    for (int e : Geometry_.patchElements[p])
-    {
-      const Vec3* loop = Loops.data() + mesh.offsets[e];
-      for (int t = 1; t + 1 < mesh.PolygonSize(e); ++t)
-      {
-        total += 0.5 * Norm(Cross(loop[t] - loop[0], loop[t + 1] - loop[0]));
-        PatchTriangles[p].push_back({ loop[0], loop[t], loop[t + 1], total });
-      }
-    }
-    for (SampleTriangle& tri : PatchTriangles[p])
-    {
-      tri.Cdf = total > 0 ? tri.Cdf / total : 1.0;
-    }
-  }
+  Error_ = Rays_->Error();
 }
 
 ProgressiveRadiosity::~ProgressiveRadiosity() = default;
@@ -73,92 +35,30 @@ const std::string& ProgressiveRadiosity::Error() const
   return Error_;
 }
 
-void ProgressiveRadiosity::ShootFormFactors(
-  int patch, const SolverOptions& options, std::vector<double>& factors, long long& rays) const
+Solution ProgressiveRadiosity::Solve(
+  const std::vector<Vec3>& emission, int solutions, const SolverOptions& options) const
 {
-  const SceneGeometry& g = Geometry_;
-  const int n = static_cast<int>(g.normal.size());
-  const std::vector<int>& shooters = g.patchElements[patch];
-  const std::vector<SampleTriangle>& triangles = PatchTriangles[patch];
-  // Offsets keep rays from starting or ending inside their own surfaces; relative to the
-  // scene so the result does not depend on its units.
-  const double eps = 1e-6 * g.sceneDiagonal;
-  std::vector<long long> raysPerElement(n, 0);
-
-  ParallelFor(n, ResolveThreadCount(options.Threads), 64, [&](int begin, int end) {
-    std::vector<Vec3> scratch;
-    for (int e = begin; e < end; ++e)
-    {
-      factors[e] = 0;
-      if (g.elementPatch[e] == patch)
-      {
-        continue;
-      }
-      const Vec3& x = g.centroid[e];
-      double f = 0;
-      for (int s : shooters)
-      {
-        // Emitters and reflectors radiate only from their front side.
-        if (Dot(g.normal[s], x - g.centroid[s]) <= 0)
-        {
-          continue;
-        }
-        f += PointToPolygonFormFactor(
-          x, g.normal[e], Loops.data() + Mesh.offsets[s], Mesh.PolygonSize(s), scratch);
-      }
-      if (f <= 0 || options.ShadowRays <= 0)
-      {
-        factors[e] = f;
-        continue;
-      }
-      SampleStream random(static_cast<std::uint64_t>(patch), static_cast<std::uint64_t>(e));
-      const Vec3 from = x + g.normal[e] * eps;
-      const int count = options.ShadowRays;
-      int visible = 0;
-      for (int r = 0; r < count; ++r)
-      {
-        // Stratified in the area CDF, so the samples cover the whole patch.
-        const double u = (r + random.Next()) / count;
-        const auto it = std::lower_bound(triangles.begin(), triangles.end(), u,
-          [](const SampleTriangle& t, double value) { return t.Cdf < value; });
-        const SampleTriangle& tri = it == triangles.end() ? triangles.back() : *it;
-        double a = random.Next(), b = random.Next();
-        if (a + b > 1)
-        {
-          a = 1 - a;
-          b = 1 - b;
-        }
-        const Vec3 target = tri.A + (tri.B - tri.A) * a + (tri.C - tri.A) * b;
-        const Vec3 toward = Normalized(Cross(tri.B - tri.A, tri.C - tri.A));
-        if (!Rays->Occluded(from, target + toward * eps, 1e-6))
-        {
-          ++visible;
-        }
-      }
-      raysPerElement[e] = count;
-      factors[e] = f * visible / count;
-    }
-  });
-  for (long long r : raysPerElement)
-  {
-    rays += r;
-  }
-}
-
-SolverStatistics ProgressiveRadiosity::Solve(const std::vector<Vec3>& emission, int solutions,
-  const SolverOptions& options, std::vector<Vec3>& radiosity) const
-{
-  SolverStatistics stats;
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  Solution out;
+  SolverStatistics& stats = out.Statistics;
   const SceneGeometry& g = Geometry_;
   const int n = static_cast<int>(g.normal.size());
   const int patches = static_cast<int>(g.patchElements.size());
   const int L = solutions;
-  radiosity = emission;
+  out.Solutions = L;
+  out.Radiosity = emission;
+  out.Ambient.assign(std::max(L, 0), Vec3());
+  if (options.SeparateDirect)
+  {
+    out.Direct = emission;
+  }
   if (L <= 0 || n == 0)
   {
     stats.Converged = true;
-    return stats;
+    return out;
   }
+  std::vector<Vec3>& radiosity = out.Radiosity;
 
   // Unshot radiosity per patch and solution: the area average of its elements' emission.
   // Doubles throughout: at reflectance near 1 float accumulation drifts (REFERENCES.md).
@@ -171,30 +71,37 @@ SolverStatistics ProgressiveRadiosity::Solve(const std::vector<Vec3>& emission, 
       unshot[p * L + m] += emission[e * L + m] * (g.area[e] / g.patchArea[p]);
     }
   }
-  auto patchPower = [&](int p) {
-    double sum = 0;
-    for (int m = 0; m < L; ++m)
-    {
-      sum += ChannelSum(unshot[p * L + m]);
-    }
-    return sum * g.patchArea[p];
-  };
-  double initial = 0;
+  // The part of the unshot energy that is still emission (for the direct/indirect split).
+  std::vector<Vec3> unshotEmission;
+  if (options.SeparateDirect)
+  {
+    unshotEmission = unshot;
+  }
+  auto power = [&](int p, int m) { return ChannelSum(unshot[p * L + m]) * g.patchArea[p]; };
+  std::vector<double> initialPer(L, 0.0), remainingPer(L, 0.0);
   for (int p = 0; p < patches; ++p)
   {
-    initial += patchPower(p);
+    for (int m = 0; m < L; ++m)
+    {
+      initialPer[m] += power(p, m);
+    }
+  }
+  double initial = 0;
+  for (double v : initialPer)
+  {
+    initial += v;
   }
   if (!(initial > 0))
   {
     stats.Converged = true;
-    return stats;
+    return out;
   }
 
+  WorkerPool pool(options.Threads);
+  ShooterFormFactors estimator(Mesh, g, *Rays_, pool);
   std::vector<double> factors(n);
-  std::vector<Vec3> shot(L);
-  std::vector<Vec3> delta(static_cast<size_t>(n) * L);
+  std::vector<Vec3> shot(L), shotEmission(L);
   double remaining = initial;
-  const int threads = ResolveThreadCount(options.Threads);
   while (true)
   {
     if (remaining / initial < options.ConvergenceThreshold)
@@ -204,6 +111,12 @@ SolverStatistics ProgressiveRadiosity::Solve(const std::vector<Vec3>& emission, 
     }
     if (stats.Shots >= options.MaximumShots)
     {
+      break;
+    }
+    if (options.TimeBudget > 0 &&
+      std::chrono::duration<double>(Clock::now() - start).count() >= options.TimeBudget)
+    {
+      stats.OutOfTime = true;
       break;
     }
     if (options.Progress &&
@@ -216,70 +129,133 @@ SolverStatistics ProgressiveRadiosity::Solve(const std::vector<Vec3>& emission, 
     double best = -1;
     for (int p = 0; p < patches; ++p)
     {
-      const double power = patchPower(p);
-      if (power > best)
+      double sum = 0;
+      for (int m = 0; m < L; ++m)
       {
-        best = power;
+        sum += power(p, m);
+      }
+      if (sum > best)
+      {
+        best = sum;
         shooter = p;
       }
     }
 
     // The expensive part, done once per shot whatever the number of solutions.
-    ShootFormFactors(shooter, options, factors, stats.ShadowRayCount);
+    stats.RayCount += estimator.Compute(shooter, options.Method, options.Samples, stats.Shots, factors);
     stats.FormFactorCount += n;
+    double shotSum = 0;
     for (int m = 0; m < L; ++m)
     {
       shot[m] = unshot[shooter * L + m];
       unshot[shooter * L + m] = Vec3();
+      shotSum += ChannelSum(shot[m]);
+      if (options.SeparateDirect)
+      {
+        shotEmission[m] = unshotEmission[shooter * L + m];
+        unshotEmission[shooter * L + m] = Vec3();
+      }
     }
     stats.ShotPower += best;
 
-    // Distribute every solution's unshot energy with the same form factors.
-    ParallelFor(n, threads, 256, [&](int begin, int end) {
+    // Distribute every solution's unshot energy with the same form factors. Each element
+    // is written by one thread; the patch sums below run in element order.
+    pool.For(n, 512, [&](int begin, int end) {
       for (int e = begin; e < end; ++e)
       {
         const double f = factors[e];
-        const Vec3& rho = Mesh.reflectance[e];
+        if (f <= 0)
+        {
+          continue;
+        }
+        const Vec3 rf = Mesh.reflectance[e] * f;
         for (int m = 0; m < L; ++m)
         {
-          const Vec3& u = shot[m];
-          const Vec3 d{ rho.x * u.x * f, rho.y * u.y * f, rho.z * u.z * f };
-          delta[e * L + m] = d;
-          radiosity[e * L + m] += d;
+          radiosity[e * L + m] += Times(rf, shot[m]);
+        }
+        if (options.SeparateDirect)
+        {
+          for (int m = 0; m < L; ++m)
+          {
+            out.Direct[e * L + m] += Times(rf, shotEmission[m]);
+          }
         }
       }
     });
-    double shotSum = 0;
-    for (int m = 0; m < L; ++m)
-    {
-      shotSum += ChannelSum(shot[m]);
-    }
     double received = 0;
     for (int e = 0; e < n; ++e)
     {
-      if (factors[e] <= 0)
+      const double f = factors[e];
+      if (f <= 0)
       {
         continue;
       }
       const int p = g.elementPatch[e];
-      const double w = g.area[e] / g.patchArea[p];
+      const Vec3 rf = Mesh.reflectance[e] * (f * g.area[e] / g.patchArea[p]);
       for (int m = 0; m < L; ++m)
       {
-        unshot[p * L + m] += delta[e * L + m] * w;
+        unshot[p * L + m] += Times(rf, shot[m]);
       }
-      received += shotSum * factors[e] * g.area[e];
+      received += shotSum * f * g.area[e];
     }
     stats.ReceivedPower += received;
 
-    remaining = 0;
+    std::fill(remainingPer.begin(), remainingPer.end(), 0.0);
     for (int p = 0; p < patches; ++p)
     {
-      remaining += patchPower(p);
+      for (int m = 0; m < L; ++m)
+      {
+        remainingPer[m] += power(p, m);
+      }
+    }
+    remaining = 0;
+    for (int m = 0; m < L; ++m)
+    {
+      remaining += remainingPer[m];
+      stats.RemainingPerSolution.push_back(initialPer[m] > 0 ? remainingPer[m] / initialPer[m] : 0.0);
     }
     ++stats.Shots;
     stats.RemainingHistory.push_back(remaining / initial);
+    stats.TimeHistory.push_back(std::chrono::duration<double>(Clock::now() - start).count());
   }
-  return stats;
+
+  if (options.AmbientTerm)
+  {
+    // Cohen et al. 1988: ambient = R * (sum_p U_p A_p) / (sum_p A_p), with the
+    // interreflection factor R = 1 / (1 - mean reflectance) per channel; each element
+    // shows rho * ambient on top of what it received.
+    Vec3 meanRho;
+    double area = 0;
+    for (int e = 0; e < n; ++e)
+    {
+      meanRho += Mesh.reflectance[e] * g.area[e];
+      area += g.area[e];
+    }
+    meanRho = meanRho * (1.0 / area);
+    Vec3 interreflection;
+    for (int c = 0; c < 3; ++c)
+    {
+      // Capped: a closed scene of perfect reflectors has no finite ambient.
+      interreflection[c] = 1.0 / std::max(1.0 - meanRho[c], 1e-6);
+    }
+    for (int m = 0; m < L; ++m)
+    {
+      Vec3 unshotPower;
+      for (int p = 0; p < patches; ++p)
+      {
+        unshotPower += unshot[p * L + m] * g.patchArea[p];
+      }
+      out.Ambient[m] = Times(interreflection, unshotPower * (1.0 / area));
+    }
+    for (int e = 0; e < n; ++e)
+    {
+      for (int m = 0; m < L; ++m)
+      {
+        radiosity[e * L + m] += Times(Mesh.reflectance[e], out.Ambient[m]);
+      }
+    }
+  }
+  return out;
 }
 
 } // namespace radiosity

@@ -4,6 +4,7 @@
 #define RadiosityCore_ProgressiveRadiosity_h
 
 #include "Scene.h"
+#include "ShooterFormFactors.h"
 #include "Visibility.h"
 
 #include <functional>
@@ -19,10 +20,18 @@ struct SolverOptions
   int MaximumShots = 2000;
   /// Stop when remaining unshot power / initial power falls below this.
   double ConvergenceThreshold = 1e-3;
-  /// Shadow rays from each receiver to stratified points of the shooting patch; 0 treats
-  /// every pair as unoccluded.
-  int ShadowRays = 16;
+  /// Stop after this many seconds of shooting (0: no limit); the result stays valid.
+  double TimeBudget = 0;
+  FormFactorMethod Method = FormFactorMethod::Analytic;
+  /// Analytic: shadow rays per receiver and shot (0: ignore occlusion); Hemicube: the
+  /// resolution of its top face; MonteCarlo: rays per shot.
+  int Samples = 16;
   int Threads = 0; ///< 0: all hardware threads
+  /// Add the ambient term of Cohen et al. 1988 per solution: the unshot energy, spread
+  /// evenly and interreflected in closed form, so unconverged results look plausible.
+  bool AmbientTerm = false;
+  /// Also keep each solution's direct part: emission plus the first bounce of it.
+  bool SeparateDirect = false;
   /// Called between shots with the fraction done; returning false aborts the solve, which
   /// then keeps the valid partial result of the shots made so far.
   std::function<bool(double)> Progress;
@@ -33,14 +42,27 @@ struct SolverStatistics
   int Shots = 0;
   bool Converged = false;
   bool Aborted = false;
-  /// Remaining unshot power relative to the initial power, after each shot.
+  bool OutOfTime = false;
+  /// Per shot: seconds since the start, remaining unshot power / initial (all solutions),
+  /// and the same per solution ([shot * solutions + m]).
+  std::vector<double> TimeHistory;
   std::vector<double> RemainingHistory;
-  long long ShadowRayCount = 0;
+  std::vector<double> RemainingPerSolution;
+  long long RayCount = 0;
   long long FormFactorCount = 0; ///< receiver-shooter pairs evaluated
   /// Channel-summed power shot by patches and power arriving at receivers (irradiance
   /// times area, before reflection); equal up to discretization in a closed scene.
   double ShotPower = 0;
   double ReceivedPower = 0;
+};
+
+struct Solution
+{
+  int Solutions = 0;
+  std::vector<Vec3> Radiosity; ///< [element * Solutions + m], with the ambient term if asked
+  std::vector<Vec3> Direct;    ///< same layout, only with SeparateDirect
+  std::vector<Vec3> Ambient;   ///< per solution, the ambient radiosity (0 without it)
+  SolverStatistics Statistics;
 };
 
 /// Holds the per-solve geometry and the Embree scene, so several solves (k separate
@@ -54,30 +76,18 @@ public:
   /// Empty when the scene could be prepared.
   const std::string& Error() const;
   const SceneGeometry& Geometry() const { return Geometry_; }
+  const Visibility& Rays() const { return *Rays_; }
 
   /// Solves `solutions` independent systems at once. `emission[e * solutions + m]` is the
   /// exitance of element e in solution m. Form factors are computed once per shot and the
   /// shot energy of every solution is distributed with them: this is the light tagging.
   /// The shooter is the patch with the largest unshot power summed over solutions.
-  /// On return `radiosity` has the same layout as `emission`.
-  SolverStatistics Solve(const std::vector<Vec3>& emission, int solutions,
-    const SolverOptions& options, std::vector<Vec3>& radiosity) const;
+  Solution Solve(const std::vector<Vec3>& emission, int solutions, const SolverOptions& options) const;
 
 private:
-  /// F(element -> patch) for every element, including shadow-ray visibility.
-  void ShootFormFactors(int patch, const SolverOptions& options, std::vector<double>& factors,
-    long long& rays) const;
-
   const SceneMesh& Mesh;
   SceneGeometry Geometry_;
-  std::unique_ptr<Visibility> Rays;
-  std::vector<Vec3> Loops; ///< element polygons' points, laid out like Mesh.connectivity
-  struct SampleTriangle
-  {
-    Vec3 A, B, C;
-    double Cdf; ///< cumulative area fraction within its patch, ending at 1
-  };
-  std::vector<std::vector<SampleTriangle>> PatchTriangles;
+  std::unique_ptr<Visibility> Rays_;
   std::string Error_;
 };
 

@@ -39,7 +39,7 @@ TEST(Solver, FurnaceGivesOneOverOneMinusRho)
     SceneMesh box = Box(2.0, 6, 2, { rho, rho, rho }, [](int) { return 0; });
     ProgressiveRadiosity solver(box);
     ASSERT_TRUE(solver.Error().empty()) << solver.Error();
-    LightSolutions s = SolveLights(solver, box, 1, {}, SolutionMode::LightTagged, Converged(1e-9));
+    Solution s = SolveLights(solver, box, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, Converged(1e-9));
     ASSERT_TRUE(s.Statistics.Converged);
     const double expected = 1.0 / (1.0 - rho);
     for (const Vec3& b : s.Radiosity)
@@ -61,7 +61,7 @@ TEST(Solver, SingleBounceBetweenOpposedSquaresMatchesHowell)
   const int n = 32;
   AddGrid(mesh, { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, n, n, { 0.5, 0.5, 0.5 }, -1, patch);
   ProgressiveRadiosity solver(mesh);
-  LightSolutions s = SolveLights(solver, mesh, 1, {}, SolutionMode::LightTagged, Converged());
+  Solution s = SolveLights(solver, mesh, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, Converged());
   double mean = 0;
   for (int e = 1; e < mesh.NumberOfPolygons(); ++e)
   {
@@ -79,7 +79,7 @@ TEST(Solver, OccluderBlocksDirectLight)
   AddGrid(mesh, { -5, -5, 1 }, { 10, 0, 0 }, { 0, 10, 0 }, 2, 1, { 0, 0, 0 }, -1, patch);
   AddGrid(mesh, { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, 4, 4, { 0.8, 0.8, 0.8 }, -1, patch);
   ProgressiveRadiosity solver(mesh);
-  LightSolutions s = SolveLights(solver, mesh, 1, {}, SolutionMode::LightTagged, Converged());
+  Solution s = SolveLights(solver, mesh, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, Converged());
   for (int e = 1 + 4; e < mesh.NumberOfPolygons(); ++e)
   {
     EXPECT_EQ(s.Radiosity[e].x, 0.0) << e;
@@ -90,7 +90,7 @@ TEST(Solver, OccluderBlocksDirectLight)
   AddGrid(open, { 0.4, 0.4, 2 }, { 0, 0.2, 0 }, { 0.2, 0, 0 }, 1, 1, { 0, 0, 0 }, 0, patch);
   AddGrid(open, { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, 4, 4, { 0.8, 0.8, 0.8 }, -1, patch);
   ProgressiveRadiosity openSolver(open);
-  LightSolutions lit = SolveLights(openSolver, open, 1, {}, SolutionMode::LightTagged, Converged());
+  Solution lit = SolveLights(openSolver, open, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, Converged());
   EXPECT_GT(lit.Radiosity[5].x, 1e-3);
 }
 
@@ -126,8 +126,8 @@ TEST(Solver, TaggedRelitEqualsStandardCombined)
   ASSERT_EQ(ValidateScene(mesh, k), "");
   ASSERT_EQ(k, 3);
   ProgressiveRadiosity solver(mesh);
-  const LightSolutions tagged = SolveLights(solver, mesh, k, colors, SolutionMode::LightTagged, Converged(1e-9));
-  const LightSolutions combined = SolveLights(solver, mesh, k, colors, SolutionMode::StandardCombined, Converged(1e-9));
+  const Solution tagged = SolveLights(solver, mesh, LightGrouping::OnePerLight(k), colors, SolutionMode::LightTagged, Converged(1e-9));
+  const Solution combined = SolveLights(solver, mesh, LightGrouping::OnePerLight(k), colors, SolutionMode::StandardCombined, Converged(1e-9));
   ASSERT_TRUE(tagged.Statistics.Converged && combined.Statistics.Converged);
   const Vec3 palette[3] = { { 1.0, 0.8, 0.6 }, { 0.2, 0.4, 1.5 }, { 3.0, 0.1, 0.1 } };
   double worst = 0, peak = 0;
@@ -154,8 +154,8 @@ TEST(Solver, SeparateEqualsTagged)
   std::vector<Vec3> colors;
   SceneMesh mesh = ThreeLightScene(colors);
   ProgressiveRadiosity solver(mesh);
-  const LightSolutions tagged = SolveLights(solver, mesh, 3, colors, SolutionMode::LightTagged, Converged(1e-9));
-  const LightSolutions separate = SolveLights(solver, mesh, 3, colors, SolutionMode::StandardSeparate, Converged(1e-9));
+  const Solution tagged = SolveLights(solver, mesh, LightGrouping::OnePerLight(3), colors, SolutionMode::LightTagged, Converged(1e-9));
+  const Solution separate = SolveLights(solver, mesh, LightGrouping::OnePerLight(3), colors, SolutionMode::StandardSeparate, Converged(1e-9));
   ASSERT_EQ(tagged.Radiosity.size(), separate.Radiosity.size());
   for (size_t i = 0; i < tagged.Radiosity.size(); ++i)
   {
@@ -174,7 +174,7 @@ TEST(Solver, EnergyArrivesInClosedBox)
   // centroid quadrature of the receivers (a few per mille at 8 x 8 elements per face).
   SceneMesh box = Box(1.0, 8, 2, { 0.7, 0.7, 0.7 }, [](int f) { return f == 1 ? 0 : -1; });
   ProgressiveRadiosity solver(box);
-  LightSolutions s = SolveLights(solver, box, 1, {}, SolutionMode::LightTagged, Converged(1e-6));
+  Solution s = SolveLights(solver, box, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, Converged(1e-6));
   EXPECT_NEAR(s.Statistics.ReceivedPower / s.Statistics.ShotPower, 1.0, 0.01);
 }
 
@@ -186,8 +186,8 @@ TEST(Solver, ResultDoesNotDependOnThreads)
   SolverOptions one = Converged(1e-4), many = Converged(1e-4);
   one.Threads = 1;
   many.Threads = 4;
-  const LightSolutions a = SolveLights(solver, mesh, 3, colors, SolutionMode::LightTagged, one);
-  const LightSolutions b = SolveLights(solver, mesh, 3, colors, SolutionMode::LightTagged, many);
+  const Solution a = SolveLights(solver, mesh, LightGrouping::OnePerLight(3), colors, SolutionMode::LightTagged, one);
+  const Solution b = SolveLights(solver, mesh, LightGrouping::OnePerLight(3), colors, SolutionMode::LightTagged, many);
   ASSERT_EQ(a.Radiosity.size(), b.Radiosity.size());
   for (size_t i = 0; i < a.Radiosity.size(); ++i)
   {
@@ -202,7 +202,7 @@ TEST(Solver, AbortKeepsValidPartialResult)
   SolverOptions o = Converged();
   int calls = 0;
   o.Progress = [&](double) { return ++calls <= 3; };
-  LightSolutions s = SolveLights(solver, box, 1, {}, SolutionMode::LightTagged, o);
+  Solution s = SolveLights(solver, box, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, o);
   EXPECT_TRUE(s.Statistics.Aborted);
   EXPECT_EQ(s.Statistics.Shots, 3);
   for (const Vec3& b : s.Radiosity)

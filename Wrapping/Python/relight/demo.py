@@ -73,7 +73,7 @@ def main():
     )
     print(
         f"sampling (light-tagged solve): {sampling:.3f} s, {solver.GetLastShots()} shots, "
-        f"converged: {bool(solver.GetLastConverged())}, shadow rays: {solver.GetLastShadowRays()}"
+        f"converged: {bool(solver.GetLastConverged())}, rays: {solver.GetLastRays()}"
     )
 
     relight = vtkRadiosityRelight()

@@ -1,0 +1,295 @@
+#include "ShooterFormFactors.h"
+#include "FormFactor.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdint>
+
+namespace radiosity
+{
+
+namespace
+{
+constexpr double kPi = 3.14159265358979323846;
+
+/// Counter-based random numbers: a sample depends only on its indices, so results are the
+/// same for any number of threads.
+struct SampleStream
+{
+  std::uint64_t State;
+  SampleStream(std::uint64_t a, std::uint64_t b, std::uint64_t c = 0)
+    : State((a * 0x9E3779B97F4A7C15ull) ^ (b * 0xC2B2AE3D27D4EB4Full) ^ (c + 0x632BE59BD9B4E019ull))
+  {
+  }
+  double Next()
+  {
+    std::uint64_t z = (State += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    z ^= z >> 31;
+    return static_cast<double>(z >> 11) * (1.0 / 9007199254740992.0);
+  }
+};
+
+void Frame(const Vec3& n, Vec3& t, Vec3& b)
+{
+  const Vec3 helper = std::fabs(n.x) < 0.6 ? Vec3{ 1, 0, 0 } : Vec3{ 0, 1, 0 };
+  t = Normalized(Cross(helper, n));
+  b = Cross(n, t);
+}
+} // namespace
+
+ShooterFormFactors::ShooterFormFactors(
+  const SceneMesh& mesh, const SceneGeometry& geometry, const Visibility& rays, const WorkerPool& pool)
+  : Mesh(mesh)
+  , Geometry(geometry)
+  , Rays(rays)
+  , Pool(pool)
+{
+  // Offsets keep rays from starting or ending inside their own surfaces; relative to the
+  // scene so the result does not depend on its units.
+  Epsilon = 1e-6 * geometry.sceneDiagonal;
+  Loops.reserve(mesh.connectivity.size());
+  for (int id : mesh.connectivity)
+  {
+    Loops.push_back(mesh.points[id]);
+  }
+  const size_t patches = geometry.patchElements.size();
+  PatchTriangles.resize(patches);
+  PatchCentre.resize(patches);
+  PatchNormal.resize(patches);
+  for (size_t p = 0; p < patches; ++p)
+  {
+    double total = 0;
+    Vec3 centre, normal;
+    for (int e : geometry.patchElements[p])
+    {
+      const Vec3* loop = Loops.data() + mesh.offsets[e];
+      for (int t = 1; t + 1 < mesh.PolygonSize(e); ++t)
+      {
+        const Vec3 cross = Cross(loop[t] - loop[0], loop[t + 1] - loop[0]);
+        total += 0.5 * Norm(cross);
+        PatchTriangles[p].push_back({ loop[0], loop[t], loop[t + 1], Normalized(cross), total });
+      }
+      centre += geometry.centroid[e] * geometry.area[e];
+      normal += geometry.normal[e] * geometry.area[e];
+    }
+    for (SampleTriangle& tri : PatchTriangles[p])
+    {
+      tri.Cdf = total > 0 ? tri.Cdf / total : 1.0;
+    }
+    PatchCentre[p] = centre * (1.0 / geometry.patchArea[p]);
+    PatchNormal[p] = Normalized(normal);
+  }
+}
+
+const ShooterFormFactors::SampleTriangle& ShooterFormFactors::PickTriangle(int patch, double u) const
+{
+  const std::vector<SampleTriangle>& triangles = PatchTriangles[patch];
+  const auto it = std::lower_bound(triangles.begin(), triangles.end(), u,
+    [](const SampleTriangle& t, double value) { return t.Cdf < value; });
+  return it == triangles.end() ? triangles.back() : *it;
+}
+
+int ShooterFormFactors::FrontHit(const Vec3& origin, const Vec3& direction) const
+{
+  Visibility::Hit hit;
+  if (!Rays.Intersect(origin, direction, hit))
+  {
+    return -1;
+  }
+  // A ray reaching a polygon's back is absorbed there: back faces do not receive.
+  return Dot(Geometry.normal[hit.polygon], direction) < 0 ? hit.polygon : -1;
+}
+
+long long ShooterFormFactors::Compute(
+  int patch, FormFactorMethod method, int samples, int shot, std::vector<double>& factors)
+{
+  switch (method)
+  {
+    case FormFactorMethod::Hemicube:
+      return Hemicube(patch, samples, factors);
+    case FormFactorMethod::MonteCarlo:
+      return MonteCarlo(patch, samples, shot, factors);
+    case FormFactorMethod::Analytic:
+    default:
+      return Analytic(patch, samples, factors);
+  }
+}
+
+long long ShooterFormFactors::Analytic(int patch, int samples, std::vector<double>& factors)
+{
+  const SceneGeometry& g = Geometry;
+  const int n = static_cast<int>(g.normal.size());
+  const std::vector<int>& shooters = g.patchElements[patch];
+  std::atomic<long long> rays{ 0 };
+  Pool.For(n, 64, [&](int begin, int end) {
+    std::vector<Vec3> scratch; // once per chunk; reused by every receiver in it
+    scratch.reserve(8);
+    long long chunkRays = 0;
+    for (int e = begin; e < end; ++e)
+    {
+      factors[e] = 0;
+      if (g.elementPatch[e] == patch)
+      {
+        continue;
+      }
+      const Vec3& x = g.centroid[e];
+      double f = 0;
+      for (int s : shooters)
+      {
+        // Emitters and reflectors radiate only from their front side.
+        if (Dot(g.normal[s], x - g.centroid[s]) <= 0)
+        {
+          continue;
+        }
+        f += PointToPolygonFormFactor(
+          x, g.normal[e], Loops.data() + Mesh.offsets[s], Mesh.PolygonSize(s), scratch);
+      }
+      if (f <= 0 || samples <= 0)
+      {
+        factors[e] = f;
+        continue;
+      }
+      SampleStream random(static_cast<std::uint64_t>(patch), static_cast<std::uint64_t>(e));
+      const Vec3 from = x + g.normal[e] * Epsilon;
+      int visible = 0;
+      for (int r = 0; r < samples; ++r)
+      {
+        // Stratified in the area CDF, so the samples cover the whole patch.
+        const SampleTriangle& tri = PickTriangle(patch, (r + random.Next()) / samples);
+        double a = random.Next(), b = random.Next();
+        if (a + b > 1)
+        {
+          a = 1 - a;
+          b = 1 - b;
+        }
+        const Vec3 target = tri.A + (tri.B - tri.A) * a + (tri.C - tri.A) * b;
+        if (!Rays.Occluded(from, target + tri.Normal * Epsilon, 1e-6))
+        {
+          ++visible;
+        }
+      }
+      chunkRays += samples;
+      factors[e] = f * visible / samples;
+    }
+    rays += chunkRays;
+  });
+  return rays;
+}
+
+long long ShooterFormFactors::Hemicube(int patch, int resolution, std::vector<double>& factors)
+{
+  resolution = std::max(2, resolution + (resolution & 1)); // side faces need R/2 rows
+  if (resolution != CubeResolution)
+  {
+    // Delta form factors of the unit hemicube (Cohen & Greenberg 1985): top face z = 1,
+    // dF = dA / (pi (x^2 + y^2 + 1)^2); side face x = 1, dF = z dA / (pi (y^2 + z^2 + 1)^2).
+    CubeResolution = resolution;
+    CubeDirections.clear();
+    CubeWeights.clear();
+    const double d = 2.0 / resolution, dA = d * d;
+    for (int i = 0; i < resolution; ++i)
+    {
+      for (int j = 0; j < resolution; ++j)
+      {
+        const double x = -1 + (i + 0.5) * d, y = -1 + (j + 0.5) * d;
+        const double r = x * x + y * y + 1;
+        CubeDirections.push_back({ x, y, 1 });
+        CubeWeights.push_back(dA / (kPi * r * r));
+      }
+    }
+    for (int side = 0; side < 4; ++side)
+    {
+      for (int i = 0; i < resolution; ++i)
+      {
+        for (int k = 0; k < resolution / 2; ++k)
+        {
+          const double u = -1 + (i + 0.5) * d, z = (k + 0.5) * d;
+          const double r = u * u + z * z + 1;
+          const Vec3 dir = side == 0 ? Vec3{ 1, u, z }
+            : side == 1              ? Vec3{ -1, u, z }
+            : side == 2              ? Vec3{ u, 1, z }
+                                     : Vec3{ u, -1, z };
+          CubeDirections.push_back(dir);
+          CubeWeights.push_back(z * dA / (kPi * r * r));
+        }
+      }
+    }
+  }
+  const int count = static_cast<int>(CubeDirections.size());
+  HitElement.resize(count);
+  const Vec3 n = PatchNormal[patch];
+  Vec3 t, b;
+  Frame(n, t, b);
+  const Vec3 origin = PatchCentre[patch] + n * Epsilon;
+  Pool.For(count, 256, [&](int begin, int end) {
+    for (int i = begin; i < end; ++i)
+    {
+      const Vec3& l = CubeDirections[i];
+      HitElement[i] = FrontHit(origin, t * l.x + b * l.y + n * l.z);
+    }
+  });
+  std::fill(factors.begin(), factors.end(), 0.0);
+  for (int i = 0; i < count; ++i) // in pixel order: deterministic sums
+  {
+    if (HitElement[i] >= 0 && Geometry.elementPatch[HitElement[i]] != patch)
+    {
+      factors[HitElement[i]] += CubeWeights[i];
+    }
+  }
+  Reciprocal(patch, factors);
+  return count;
+}
+
+long long ShooterFormFactors::MonteCarlo(int patch, int samples, int shot, std::vector<double>& factors)
+{
+  samples = std::max(1, samples);
+  HitElement.resize(samples);
+  Pool.For(samples, 256, [&](int begin, int end) {
+    for (int r = begin; r < end; ++r)
+    {
+      SampleStream random(static_cast<std::uint64_t>(patch), static_cast<std::uint64_t>(shot),
+        static_cast<std::uint64_t>(r) + 1);
+      const SampleTriangle& tri = PickTriangle(patch, (r + random.Next()) / samples);
+      double a = random.Next(), b = random.Next();
+      if (a + b > 1)
+      {
+        a = 1 - a;
+        b = 1 - b;
+      }
+      const Vec3 origin = tri.A + (tri.B - tri.A) * a + (tri.C - tri.A) * b + tri.Normal * Epsilon;
+      // Cosine-distributed direction (Malley): uniform on the disk, lifted to the hemisphere.
+      const double u = random.Next(), phi = 2 * kPi * random.Next();
+      const double radius = std::sqrt(u);
+      Vec3 t, bt;
+      Frame(tri.Normal, t, bt);
+      const Vec3 dir = t * (radius * std::cos(phi)) + bt * (radius * std::sin(phi)) +
+        tri.Normal * std::sqrt(std::max(0.0, 1 - u));
+      HitElement[r] = FrontHit(origin, dir);
+    }
+  });
+  std::fill(factors.begin(), factors.end(), 0.0);
+  const double w = 1.0 / samples;
+  for (int r = 0; r < samples; ++r)
+  {
+    if (HitElement[r] >= 0 && Geometry.elementPatch[HitElement[r]] != patch)
+    {
+      factors[HitElement[r]] += w;
+    }
+  }
+  Reciprocal(patch, factors);
+  return samples;
+}
+
+void ShooterFormFactors::Reciprocal(int patch, std::vector<double>& factors) const
+{
+  const double shooterArea = Geometry.patchArea[patch];
+  for (size_t e = 0; e < factors.size(); ++e)
+  {
+    factors[e] = factors[e] > 0 ? factors[e] * shooterArea / Geometry.area[e] : 0.0;
+  }
+}
+
+} // namespace radiosity

@@ -1,0 +1,75 @@
+// Form factors from one shooting patch to every element, by three methods.
+#ifndef RadiosityCore_ShooterFormFactors_h
+#define RadiosityCore_ShooterFormFactors_h
+
+#include "Scene.h"
+#include "Visibility.h"
+#include "WorkerPool.h"
+
+#include <vector>
+
+namespace radiosity
+{
+
+enum class FormFactorMethod
+{
+  /// Lambert's exact point-to-polygon formula at each receiver, times the fraction of
+  /// `samples` stratified shadow rays to the shooter that are unblocked (0: none cast).
+  /// Exact for unoccluded pairs however close, including adjacent ones.
+  Analytic = 0,
+  /// A hemicube of resolution `samples` (top face samples^2 pixels) at the shooter's
+  /// centre, its pixels cast as Embree rays (Cohen & Greenberg 1985).
+  Hemicube = 1,
+  /// `samples` cosine-distributed rays from stratified points on the shooter; each hit
+  /// carries 1/samples. Cost independent of the number of receivers.
+  MonteCarlo = 2
+};
+
+/// Per-solve helper that owns the buffers, so shots allocate nothing.
+class ShooterFormFactors
+{
+public:
+  ShooterFormFactors(const SceneMesh& mesh, const SceneGeometry& geometry, const Visibility& rays,
+    const WorkerPool& pool);
+
+  /// factors[e] = F(element e -> patch), the factor shooting needs
+  /// (delta B_e = rho_e * unshot_patch * factors[e]). `shot` decorrelates repeated shots
+  /// of one patch for the sampling methods. Returns the number of rays cast.
+  long long Compute(int patch, FormFactorMethod method, int samples, int shot,
+    std::vector<double>& factors);
+
+private:
+  long long Analytic(int patch, int samples, std::vector<double>& factors);
+  long long Hemicube(int patch, int resolution, std::vector<double>& factors);
+  long long MonteCarlo(int patch, int samples, int shot, std::vector<double>& factors);
+  /// Turns F(patch -> e) sums in `factors` into F(e -> patch) by reciprocity.
+  void Reciprocal(int patch, std::vector<double>& factors) const;
+  /// Closest polygon hit by the ray that faces the ray (receives on its front), else -1.
+  int FrontHit(const Vec3& origin, const Vec3& direction) const;
+
+  const SceneMesh& Mesh;
+  const SceneGeometry& Geometry;
+  const Visibility& Rays;
+  const WorkerPool& Pool;
+  std::vector<Vec3> Loops; ///< element points, laid out like Mesh.connectivity
+  struct SampleTriangle
+  {
+    Vec3 A, B, C, Normal;
+    double Cdf; ///< cumulative area fraction within its patch, ending at 1
+  };
+  std::vector<std::vector<SampleTriangle>> PatchTriangles;
+  std::vector<Vec3> PatchCentre, PatchNormal;
+  /// Hemicube pixel directions in the local frame (x, y, z = normal) and delta factors.
+  std::vector<Vec3> CubeDirections;
+  std::vector<double> CubeWeights;
+  int CubeResolution = 0;
+  std::vector<int> HitElement; ///< per ray, -1 for a miss
+  std::vector<double> HitWeight;
+  double Epsilon = 0;
+
+  const SampleTriangle& PickTriangle(int patch, double u) const;
+};
+
+} // namespace radiosity
+
+#endif
