@@ -243,3 +243,93 @@ TEST(Validation, NamesTheProblem)
   SceneMesh empty;
   EXPECT_NE(ValidateScene(empty, k).find("no polygons"), std::string::npos);
 }
+
+TEST(Solver, AmbientTermFixesTheFurnaceAfterOneSweep)
+{
+  // rho = 0.99: after each patch has shot once, B is far from 1/(1-rho) = 100; the ambient
+  // term accounts for the unshot energy and brings it within 1 % (Cohen et al. 1988).
+  SceneMesh box = Box(1.0, 8, 2, { 0.99, 0.99, 0.99 }, [](int) { return 0; }); // 96 patches
+  ProgressiveRadiosity solver(box);
+  SolverOptions o = Converged();
+  o.MaximumShots = static_cast<int>(solver.Geometry().patchElements.size());
+  const Solution plain = SolveLights(solver, box, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, o);
+  o.AmbientTerm = true;
+  const Solution ambient = SolveLights(solver, box, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, o);
+  double plainError = 0, ambientError = 0;
+  for (size_t e = 0; e < plain.Radiosity.size(); ++e)
+  {
+    plainError = std::max(plainError, std::fabs(plain.Radiosity[e].x - 100.0) / 100.0);
+    ambientError = std::max(ambientError, std::fabs(ambient.Radiosity[e].x - 100.0) / 100.0);
+  }
+  EXPECT_GT(plainError, 0.9);
+  EXPECT_LT(ambientError, 0.01);
+}
+
+TEST(Solver, DirectPartIsEmissionPlusFirstBounce)
+{
+  // One light patch: its first (and only emitting) shot is everything direct. A solve
+  // stopped after that shot is therefore the direct part of the converged solve.
+  SceneMesh mesh = Box(2.0, 6, 2, { 0.6, 0.5, 0.4 }, [](int) { return -1; });
+  int patch = 1000;
+  AddGrid(mesh, { 0.8, 0.8, 1.9 }, { 0, 0.4, 0 }, { 0.4, 0, 0 }, 2, 2, { 0.7, 0.7, 0.7 }, 0, patch);
+  ProgressiveRadiosity solver(mesh);
+  SolverOptions o = Converged(1e-6);
+  o.SeparateDirect = true;
+  const Solution full = SolveLights(solver, mesh, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, o);
+  o.MaximumShots = 1;
+  const Solution first = SolveLights(solver, mesh, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, o);
+  double indirect = 0;
+  for (size_t e = 0; e < full.Radiosity.size(); ++e)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      EXPECT_NEAR(full.Direct[e][c], first.Radiosity[e][c], 1e-12);
+      EXPECT_LE(full.Direct[e][c], full.Radiosity[e][c] + 1e-12);
+      indirect += full.Radiosity[e][c] - full.Direct[e][c];
+    }
+  }
+  EXPECT_GT(indirect, 0.1);
+}
+
+TEST(Solver, BankEqualsEmissionWeightedSumOfItsLights)
+{
+  // Linearity: a bank's solution is its lights' unit solutions weighted by their colours.
+  std::vector<Vec3> colors;
+  SceneMesh mesh = ThreeLightScene(colors);
+  ProgressiveRadiosity solver(mesh);
+  LightGrouping banks;
+  ASSERT_EQ(LightGrouping::FromBanks({ 0, 1, 0 }, 3, banks), "");
+  const Solution banked = SolveLights(solver, mesh, banks, colors, SolutionMode::LightTagged, Converged(1e-9));
+  const Solution single = SolveLights(solver, mesh, LightGrouping::OnePerLight(3), colors, SolutionMode::LightTagged, Converged(1e-9));
+  const Vec3 palette[3] = { { 1.0, 0.8, 0.6 }, { 0.2, 0.4, 1.5 }, { 3.0, 0.1, 0.1 } };
+  ASSERT_EQ(banked.Solutions, 2);
+  for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
+  {
+    const Vec3& l0 = single.Radiosity[e * 3 + 0];
+    const Vec3& l2 = single.Radiosity[e * 3 + 2];
+    for (int c = 0; c < 3; ++c)
+    {
+      EXPECT_NEAR(banked.Radiosity[e * 2 + 0][c], palette[0][c] * l0[c] + palette[2][c] * l2[c], 1e-6);
+      EXPECT_NEAR(banked.Radiosity[e * 2 + 1][c], single.Radiosity[e * 3 + 1][c], 1e-6);
+    }
+  }
+  LightGrouping bad;
+  EXPECT_NE(LightGrouping::FromBanks({ 0, 2, 0 }, 3, bad), "");
+  EXPECT_NE(LightGrouping::FromBanks({ 0, 1 }, 3, bad), "");
+}
+
+TEST(Solver, TimeBudgetStopsWithValidResult)
+{
+  SceneMesh box = Box(1.0, 16, 1, { 0.9, 0.9, 0.9 }, [](int f) { return f == 1 ? 0 : -1; });
+  ProgressiveRadiosity solver(box);
+  SolverOptions o = Converged(0.0);
+  o.TimeBudget = 0.05;
+  const Solution s = SolveLights(solver, box, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, o);
+  EXPECT_TRUE(s.Statistics.OutOfTime);
+  EXPECT_FALSE(s.Statistics.Converged);
+  EXPECT_EQ(s.Statistics.TimeHistory.size(), static_cast<size_t>(s.Statistics.Shots));
+  for (const Vec3& b : s.Radiosity)
+  {
+    EXPECT_TRUE(std::isfinite(b.x) && b.x >= 0);
+  }
+}
