@@ -96,7 +96,8 @@ public:
 
   ///@{
   /// Shadow rays per receiver (Analytic; 0 ignores occlusion), hemicube resolution, or
-  /// rays per shot (MonteCarlo). Default 16.
+  /// rays per shot (MonteCarlo). Default 4, the fastest setting on the measured
+  /// accuracy-time front (README, `./relight bench accuracy`).
   vtkSetClampMacro(FormFactorSamples, int, 0, 1 << 24);
   vtkGetMacro(FormFactorSamples, int);
   ///@}
@@ -151,7 +152,7 @@ private:
   int MaximumShots = 2000;
   double ConvergenceThreshold = 1e-3;
   int FormFactorMethod = ANALYTIC;
-  int FormFactorSamples = 16;
+  int FormFactorSamples = 4;
   double TimeBudget = 0;
   bool AmbientTerm = false;
   bool SeparateDirect = false;

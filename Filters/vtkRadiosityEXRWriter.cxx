@@ -4,6 +4,7 @@
 #include "HdrImage.h"
 
 #include "vtkDataArray.h"
+#include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -28,27 +29,22 @@ int vtkRadiosityEXRWriter::FillInputPortInformation(int, vtkInformation* info)
   return 1;
 }
 
-void vtkRadiosityEXRWriter::WriteData()
+bool vtkRadiosityEXRWriter::Render(std::vector<float>& rgb)
 {
   vtkPolyData* input = vtkPolyData::SafeDownCast(this->GetInput());
-  if (!this->FileName || !*this->FileName)
-  {
-    vtkErrorMacro(<< "Cannot write: no FileName set.");
-    return;
-  }
   radiosity::SceneMesh mesh;
   std::string error;
   if (!vtkRadiosityAdapter::CopyPolygons(input, mesh, error))
   {
-    vtkErrorMacro(<< "Cannot write: " << error << ".");
-    return;
+    vtkErrorMacro(<< "Cannot render: " << error << ".");
+    return false;
   }
   vtkDataArray* values = this->ArrayName ? input->GetPointData()->GetArray(this->ArrayName) : nullptr;
   if (!values || values->GetNumberOfComponents() != 3)
   {
-    vtkErrorMacro(<< "Cannot write: the input needs a 3-component point array '"
+    vtkErrorMacro(<< "Cannot render: the input needs a 3-component point array '"
                   << (this->ArrayName ? this->ArrayName : "") << "'.");
-    return;
+    return false;
   }
   std::vector<radiosity::Vec3> pointValues(input->GetNumberOfPoints());
   for (vtkIdType p = 0; p < input->GetNumberOfPoints(); ++p)
@@ -60,8 +56,8 @@ void vtkRadiosityEXRWriter::WriteData()
   radiosity::Visibility scene(mesh);
   if (!scene.Error().empty())
   {
-    vtkErrorMacro(<< "Cannot write: " << scene.Error() << ".");
-    return;
+    vtkErrorMacro(<< "Cannot render: " << scene.Error() << ".");
+    return false;
   }
   radiosity::PinholeCamera camera;
   camera.Position = { this->CameraPosition[0], this->CameraPosition[1], this->CameraPosition[2] };
@@ -70,8 +66,40 @@ void vtkRadiosityEXRWriter::WriteData()
   camera.ViewAngle = this->ViewAngle;
   camera.Width = this->Size[0];
   camera.Height = this->Size[1];
-  const std::vector<float> rgb = radiosity::RenderRadiosity(scene, pointValues, camera);
-  error = radiosity::WriteExr(this->FileName, camera.Width, camera.Height, rgb);
+  rgb = radiosity::RenderRadiosity(scene, pointValues, camera);
+  return true;
+}
+
+bool vtkRadiosityEXRWriter::RenderImage(vtkFloatArray* rgb)
+{
+  if (vtkAlgorithm* source = this->GetInputAlgorithm())
+  {
+    source->Update();
+  }
+  std::vector<float> pixels;
+  if (!rgb || !this->GetInput() || !this->Render(pixels))
+  {
+    return false;
+  }
+  rgb->SetNumberOfComponents(3);
+  rgb->SetNumberOfTuples(static_cast<vtkIdType>(pixels.size() / 3));
+  std::copy(pixels.begin(), pixels.end(), rgb->GetPointer(0));
+  return true;
+}
+
+void vtkRadiosityEXRWriter::WriteData()
+{
+  if (!this->FileName || !*this->FileName)
+  {
+    vtkErrorMacro(<< "Cannot write: no FileName set.");
+    return;
+  }
+  std::vector<float> rgb;
+  if (!this->Render(rgb))
+  {
+    return;
+  }
+  const std::string error = radiosity::WriteExr(this->FileName, this->Size[0], this->Size[1], rgb);
   if (!error.empty())
   {
     vtkErrorMacro(<< error);

@@ -16,6 +16,10 @@
 #include "vtkRadiosityFiltersModule.h" // for export macro
 #include "vtkWriter.h"
 
+#include <vector> // for the pixel buffer
+
+class vtkFloatArray;
+
 class VTKRADIOSITYFILTERS_EXPORT vtkRadiosityEXRWriter : public vtkWriter
 {
 public:
@@ -42,6 +46,13 @@ public:
   vtkGetVector2Macro(Size, int);
   ///@}
 
+  /**
+   * Ray-casts the current input into `rgb` (Size[0] * Size[1] tuples of 3 components, row
+   * 0 at the top) without writing a file; misses are 0. Returns false with an error on bad
+   * input. Used to compare solutions pixel by pixel.
+   */
+  bool RenderImage(vtkFloatArray* rgb);
+
 protected:
   vtkRadiosityEXRWriter();
   ~vtkRadiosityEXRWriter() override;
@@ -49,6 +60,7 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
 
 private:
+  bool Render(std::vector<float>& rgb);
   vtkRadiosityEXRWriter(const vtkRadiosityEXRWriter&) = delete;
   void operator=(const vtkRadiosityEXRWriter&) = delete;
 

@@ -10,24 +10,27 @@ namespace
 {
 constexpr double kPi = 3.14159265358979323846;
 
+/// One edge's term of Lambert's contour integral, seen from the origin.
+inline double EdgeTerm(const Vec3& normal, const Vec3& a, const Vec3& b)
+{
+  const Vec3 c = Cross(a, b);
+  const double cn = Norm(c);
+  // An edge collinear with the point subtends no solid angle (or lies on the point,
+  // which only happens for points on the boundary, a set of measure zero).
+  if (cn <= 1e-300)
+  {
+    return 0.0;
+  }
+  // atan2 keeps full precision for tiny edge angles, where acos of a dot product does not.
+  return std::atan2(cn, Dot(a, b)) * Dot(normal, c) / cn;
+}
+
 double LambertContour(const Vec3& point, const Vec3& normal, const Vec3* loop, int count)
 {
   double sum = 0;
   for (int i = 0; i < count; ++i)
   {
-    const Vec3 a = loop[i] - point;
-    const Vec3 b = loop[(i + 1) % count] - point;
-    const Vec3 c = Cross(a, b);
-    const double cn = Norm(c);
-    // An edge collinear with the point subtends no solid angle (or lies on the point,
-    // which only happens for points on the boundary, a set of measure zero).
-    if (cn <= 1e-300)
-    {
-      continue;
-    }
-    // atan2 keeps full precision for tiny edge angles, where acos of a dot product does not.
-    const double gamma = std::atan2(cn, Dot(a, b));
-    sum += gamma * Dot(normal, c) / cn;
+    sum += EdgeTerm(normal, loop[i] - point, loop[(i + 1) % count] - point);
   }
   return std::fabs(sum) / (2.0 * kPi);
 }
@@ -64,6 +67,17 @@ double PointToPolygonFormFactor(const Vec3& point, const Vec3& normal, const Vec
 {
   std::vector<Vec3> scratch;
   return PointToPolygonFormFactor(point, normal, loop, count, scratch);
+}
+
+double EdgeSetFormFactor(
+  const Vec3& point, const Vec3& normal, const Vec3* edges, int edgeCount)
+{
+  double sum = 0;
+  for (int i = 0; i < edgeCount; ++i)
+  {
+    sum += EdgeTerm(normal, edges[2 * i] - point, edges[2 * i + 1] - point);
+  }
+  return std::fabs(sum) / (2.0 * kPi);
 }
 
 double PolygonToPolygonFormFactor(const Vec3* from, int fromCount, const Vec3* to, int toCount,

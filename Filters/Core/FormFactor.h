@@ -18,6 +18,11 @@ double PointToPolygonFormFactor(const Vec3& point, const Vec3& normal, const Vec
 
 double PointToPolygonFormFactor(const Vec3& point, const Vec3& normal, const Vec3* loop, int count);
 
+/// The same sum over a set of directed edges (start, end pairs, any order), e.g. the
+/// boundary of a planar patch made of many elements: interior edges cancel, so the cost
+/// is that of the outline. No clipping: every endpoint must be in the front half-space.
+double EdgeSetFormFactor(const Vec3& point, const Vec3& normal, const Vec3* edges, int edgeCount);
+
 /// F(A_from -> A_to) = (1/A_from) * integral over A_from of F(dA -> A_to), by splitting
 /// `from` into fan triangles, each into `subdivisions`^2 sub-triangles, evaluating the exact
 /// inner integral at each sub-triangle's centroid. The inner integral is exact, so the only

@@ -25,7 +25,7 @@ struct SolverOptions
   FormFactorMethod Method = FormFactorMethod::Analytic;
   /// Analytic: shadow rays per receiver and shot (0: ignore occlusion); Hemicube: the
   /// resolution of its top face; MonteCarlo: rays per shot.
-  int Samples = 16;
+  int Samples = 4;
   int Threads = 0; ///< 0: all hardware threads
   /// Add the ambient term of Cohen et al. 1988 per solution: the unshot energy, spread
   /// evenly and interreflected in closed form, so unconverged results look plausible.

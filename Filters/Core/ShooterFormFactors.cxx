@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <map>
 
 namespace radiosity
 {
@@ -82,6 +83,58 @@ ShooterFormFactors::ShooterFormFactors(
     PatchCentre[p] = centre * (1.0 / geometry.patchArea[p]);
     PatchNormal[p] = Normalized(normal);
   }
+  BuildOutlines();
+}
+
+void ShooterFormFactors::BuildOutlines()
+{
+  const size_t patches = Geometry.patchElements.size();
+  PatchOutline.assign(patches, {});
+  for (size_t p = 0; p < patches; ++p)
+  {
+    const std::vector<int>& elements = Geometry.patchElements[p];
+    const Vec3& n = PatchNormal[p];
+    bool planar = true;
+    for (int e : elements)
+    {
+      // Coplanar within a tolerance relative to the scene: then one front test and one
+      // outline serve the whole patch.
+      planar = planar && Dot(Geometry.normal[e], n) > 1 - 1e-9 &&
+        std::fabs(Dot(n, Geometry.centroid[e] - PatchCentre[p])) <= 1e-9 * Geometry.sceneDiagonal;
+    }
+    if (!planar || elements.size() < 2)
+    {
+      continue;
+    }
+    // Directed edges by point id; an edge and its reverse are interior and cancel.
+    std::map<std::pair<int, int>, int> edges;
+    for (int e : elements)
+    {
+      const int* ids = Mesh.Polygon(e);
+      const int count = Mesh.PolygonSize(e);
+      for (int v = 0; v < count; ++v)
+      {
+        const std::pair<int, int> edge(ids[v], ids[(v + 1) % count]);
+        auto reverse = edges.find({ edge.second, edge.first });
+        if (reverse != edges.end() && --reverse->second == 0)
+        {
+          edges.erase(reverse);
+        }
+        else if (reverse == edges.end())
+        {
+          ++edges[edge];
+        }
+      }
+    }
+    for (const auto& edge : edges)
+    {
+      for (int c = 0; c < edge.second; ++c)
+      {
+        PatchOutline[p].push_back(Mesh.points[edge.first.first]);
+        PatchOutline[p].push_back(Mesh.points[edge.first.second]);
+      }
+    }
+  }
 }
 
 const ShooterFormFactors::SampleTriangle& ShooterFormFactors::PickTriangle(int patch, double u) const
@@ -137,15 +190,32 @@ long long ShooterFormFactors::Analytic(int patch, int samples, std::vector<doubl
       }
       const Vec3& x = g.centroid[e];
       double f = 0;
-      for (int s : shooters)
+      const std::vector<Vec3>& outline = PatchOutline[patch];
+      bool outlineInFront = !outline.empty();
+      for (size_t v = 0; v < outline.size() && outlineInFront; ++v)
       {
-        // Emitters and reflectors radiate only from their front side.
-        if (Dot(g.normal[s], x - g.centroid[s]) <= 0)
+        outlineInFront = Dot(g.normal[e], outline[v] - x) >= 0;
+      }
+      if (outlineInFront)
+      {
+        // Planar patch wholly in front of the receiver: one outline instead of every
+        // element, and one front test (emitters radiate only from their front side).
+        if (Dot(PatchNormal[patch], x - PatchCentre[patch]) > 0)
         {
-          continue;
+          f = EdgeSetFormFactor(x, g.normal[e], outline.data(), static_cast<int>(outline.size() / 2));
         }
-        f += PointToPolygonFormFactor(
-          x, g.normal[e], Loops.data() + Mesh.offsets[s], Mesh.PolygonSize(s), scratch);
+      }
+      else
+      {
+        for (int s : shooters)
+        {
+          if (Dot(g.normal[s], x - g.centroid[s]) <= 0)
+          {
+            continue;
+          }
+          f += PointToPolygonFormFactor(
+            x, g.normal[e], Loops.data() + Mesh.offsets[s], Mesh.PolygonSize(s), scratch);
+        }
       }
       if (f <= 0 || samples <= 0)
       {

@@ -42,6 +42,7 @@ private:
   long long Analytic(int patch, int samples, std::vector<double>& factors);
   long long Hemicube(int patch, int resolution, std::vector<double>& factors);
   long long MonteCarlo(int patch, int samples, int shot, std::vector<double>& factors);
+  void BuildOutlines();
   /// Turns F(patch -> e) sums in `factors` into F(e -> patch) by reciprocity.
   void Reciprocal(int patch, std::vector<double>& factors) const;
   /// Closest polygon hit by the ray that faces the ray (receives on its front), else -1.
@@ -59,6 +60,9 @@ private:
   };
   std::vector<std::vector<SampleTriangle>> PatchTriangles;
   std::vector<Vec3> PatchCentre, PatchNormal;
+  /// Outline of each planar patch (interior edges cancelled), as start/end point pairs;
+  /// empty for a patch whose elements are not coplanar.
+  std::vector<std::vector<Vec3>> PatchOutline;
   /// Hemicube pixel directions in the local frame (x, y, z = normal) and delta factors.
   std::vector<Vec3> CubeDirections;
   std::vector<double> CubeWeights;

@@ -1,0 +1,274 @@
+"""What accuracy costs in time: ``./relight bench accuracy``.
+
+Sweeps element size, form-factor method and samples, and the convergence threshold on
+(a) a scene with a closed-form answer (the furnace: a closed box, every face emitting,
+uniform reflectance: B = E / (1 - rho) everywhere) and (b) the Cornell box and the
+3-light paper scene against a converged fine reference. For each setting it measures
+the solve time and the error, and writes
+
+- ``accuracy.csv``: one row per (scene, setting, light);
+- ``accuracy.png``: error against time, Pareto front marked;
+- ``accuracy.md``: the fastest setting for 10 %, 3 % and 1 % error.
+
+Errors on the reference scenes are per light and per pixel of a ray-cast view of the
+linear radiosity (independent of the mesh): |B - B_ref| / mean(B_ref); "mean" averages
+that over the pixels that see a surface, "max" is its largest value (shadow edges).
+"""
+
+import argparse
+import csv
+import pathlib
+import time
+
+import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkCommonCore import vtkFloatArray, vtkIntArray, vtkLogger
+from vtkmodules.vtkFiltersSources import vtkCubeSource
+from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
+
+from . import (
+    cell_array,
+    light_names,
+    read_polydata,
+    vtkLightTaggedRadiosity,
+    vtkRadiosityEXRWriter,
+    vtkRadiosityMesher,
+)
+
+METHODS = {"Analytic": 0, "Hemicube": 1, "MonteCarlo": 2}
+
+# Cameras for the image comparison: (position, focal point, view up, view angle).
+CAMERAS = {
+    "cornell": ((278, 273, -800), (278, 273, 0), (0, 1, 0), 39.3),
+    "paper3": ((2.0, 1.5, 0.05), (2.0, 0.9, 4.0), (0, 1, 0), 80.0),
+}
+
+
+def furnace_scene(rho):
+    cube = vtkCubeSource()
+    cube.SetXLength(2)
+    cube.SetYLength(2)
+    cube.SetZLength(2)
+    inward = vtkPolyDataNormals()  # the cube's faces point out; the furnace is seen from inside
+    inward.SetInputConnection(cube.GetOutputPort())
+    inward.FlipNormalsOn()
+    inward.SplittingOff()
+    inward.AutoOrientNormalsOff()
+    inward.Update()
+    box = inward.GetOutput()
+    box.GetPointData().Initialize()
+    reflectance = vtkFloatArray()
+    reflectance.SetName("Reflectance")
+    reflectance.SetNumberOfComponents(3)
+    ids = vtkIntArray()
+    ids.SetName("LightId")
+    for _ in range(box.GetNumberOfCells()):
+        reflectance.InsertNextTuple3(rho, rho, rho)
+        ids.InsertNextValue(0)
+    box.GetCellData().AddArray(reflectance)
+    box.GetCellData().AddArray(ids)
+    return box
+
+
+def solve(scene, patch, element, method, samples, threshold, ambient=False, max_shots=20000):
+    mesher = vtkRadiosityMesher()
+    mesher.SetInputData(scene)
+    mesher.SetPatchSize(patch)
+    mesher.SetElementSize(element)
+    mesher.Update()
+    solver = vtkLightTaggedRadiosity()
+    solver.SetInputConnection(mesher.GetOutputPort())
+    solver.SetFormFactorMethod(METHODS[method])
+    solver.SetFormFactorSamples(samples)
+    solver.SetConvergenceThreshold(threshold)
+    solver.SetMaximumShots(max_shots)
+    solver.SetAmbientTerm(ambient)
+    solver.Update()
+    return solver
+
+
+def images(data, camera, size):
+    """Linear radiosity image per light: {name: (h, w, 3) array}."""
+    writer = vtkRadiosityEXRWriter()
+    writer.SetInputData(data)
+    position, focal, up, angle = camera
+    writer.SetCameraPosition(*position)
+    writer.SetFocalPoint(*focal)
+    writer.SetViewUp(*up)
+    writer.SetViewAngle(angle)
+    writer.SetSize(*size)
+    result = {}
+    for name in light_names(data):
+        writer.SetArrayName("Radiosity_" + name)
+        rgb = vtkFloatArray()
+        if not writer.RenderImage(rgb):
+            raise RuntimeError("rendering failed")
+        result[name] = vtk_to_numpy(rgb).reshape(size[1], size[0], 3).astype(np.float64)
+    return result
+
+
+def image_errors(image, reference):
+    seen = reference.sum(axis=2) > 0
+    scale = reference[seen].mean()
+    error = np.abs(image - reference).mean(axis=2)[seen] / scale
+    return float(error.mean()), float(error.max())
+
+
+def settings(quick):
+    """(label, element scale, method, samples, threshold, ambient) to try on every scene."""
+    if quick:
+        return [("A16 t1e-2", 1.0, "Analytic", 16, 1e-2, False),
+                ("H32 t1e-2", 1.0, "Hemicube", 32, 1e-2, False),
+                ("M2k t1e-2", 1.0, "MonteCarlo", 2000, 1e-2, False)]
+    methods = [("Analytic", 4), ("Analytic", 16), ("Analytic", 64), ("Hemicube", 64),
+               ("Hemicube", 128), ("MonteCarlo", 10000), ("MonteCarlo", 100000)]
+    out = []
+    for scale in (2.0, 1.0, 0.5):
+        for method, samples in methods:
+            for threshold in (3e-2, 1e-3):
+                label = f"{method[0]}{samples} e{scale:g} t{threshold:g}"
+                out.append((label, scale, method, samples, threshold, False))
+    for threshold in (1e-1, 3e-2):  # the ambient term on early, unconverged results
+        out.append((f"A16 e1 t{threshold:g} ambient", 1.0, "Analytic", 16, threshold, True))
+    out.append(("A16 e1 t0.1", 1.0, "Analytic", 16, 1e-1, False))  # the same without it
+    return out
+
+
+def pareto(points):
+    """Indices of the points no other point beats in both time and error."""
+    order = sorted(range(len(points)), key=lambda i: (points[i][0], points[i][1]))
+    front, best = [], float("inf")
+    for i in order:
+        if points[i][1] < best:
+            front.append(i)
+            best = points[i][1]
+    return front
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--data", default="Data")
+    parser.add_argument("--out", default="out/bench")
+    parser.add_argument("--quick", action="store_true", help="a few settings, small references (CI)")
+    args = parser.parse_args()
+    vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_WARNING)
+    out = pathlib.Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    data = pathlib.Path(args.data)
+    size = (96, 96) if args.quick else (240, 240)
+
+    # scene: (polydata, base patch size, base element size, reference element, closed form)
+    scenes = {
+        "furnace": (furnace_scene(0.8), 1.0, 0.5, None, 1.0 / (1.0 - 0.8)),
+        "cornell": (read_polydata(data / "cornell_box.vtp"), 100.0, 50.0, 25.0 if args.quick else 12.5, None),
+        "paper3": (read_polydata(data / "paper_3lights.vtp"), 1.5, 0.375, 0.375 if args.quick else 0.125, None),
+    }
+    if args.quick:
+        del scenes["paper3"]
+    rows = []
+    for scene_name, (scene, patch, element, reference_element, exact) in scenes.items():
+        reference = None
+        if reference_element is not None:
+            start = time.perf_counter()
+            ref = solve(scene, patch, reference_element, "Analytic", 16 if args.quick else 32,
+                        1e-3 if args.quick else 1e-4)
+            reference = images(ref.GetOutput(), CAMERAS[scene_name], size)
+            print(f"{scene_name}: reference ({ref.GetOutput().GetNumberOfCells()} elements, "
+                  f"{ref.GetLastShots()} shots) in {time.perf_counter() - start:.1f} s")
+        for label, scale, method, samples, threshold, ambient in settings(args.quick):
+            solver = solve(scene, max(patch, element * scale), element * scale, method, samples,
+                           threshold, ambient)
+            result = solver.GetOutput()
+            seconds = solver.GetLastSolveSeconds()
+            if exact is not None:
+                b = cell_array(result, "Radiosity_Light0")
+                error = np.abs(b - exact) / exact
+                errors = {"Light0": (float(error.mean()), float(error.max()))}
+            else:
+                mine = images(result, CAMERAS[scene_name], size)
+                errors = {name: image_errors(mine[name], reference[name]) for name in reference}
+            for light, (mean, worst) in errors.items():
+                rows.append({
+                    "scene": scene_name, "setting": label, "light": light,
+                    "element": element * scale, "method": method, "samples": samples,
+                    "threshold": threshold, "ambient": int(ambient),
+                    "elements": result.GetNumberOfCells(), "shots": solver.GetLastShots(),
+                    "seconds": seconds, "mean_error": mean, "max_error": worst,
+                })
+            worst_mean = max(m for m, _ in errors.values())
+            print(f"{scene_name:8s} {label:24s} {result.GetNumberOfCells():6d} el "
+                  f"{solver.GetLastShots():5d} shots {seconds:8.3f} s  mean error {worst_mean:7.2%}")
+
+    with open(out / "accuracy.csv", "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+        writer.writeheader()
+        writer.writerows(rows)
+    summary = summarize(rows)
+    (out / "accuracy.md").write_text(summary)
+    plot(rows, out / "accuracy.png")
+    print(summary)
+    print(f"wrote {out / 'accuracy.csv'}, {out / 'accuracy.png'}, {out / 'accuracy.md'}")
+
+
+def per_setting(rows, scene):
+    """(seconds, worst mean error over lights, row) per setting of one scene."""
+    settings = {}
+    for r in rows:
+        if r["scene"] != scene:
+            continue
+        seconds, error, first = settings.get(r["setting"], (r["seconds"], 0.0, r))
+        settings[r["setting"]] = (seconds, max(error, r["mean_error"]), first)
+    return list(settings.values())
+
+
+def summarize(rows):
+    lines = ["# Accuracy against time", "",
+             "Fastest setting that reaches each mean error (worst light), per scene.", "",
+             "| scene | target | setting | element | method (samples) | threshold | time (s) | mean error |",
+             "|---|---|---|---|---|---|---|---|"]
+    for scene in sorted({r["scene"] for r in rows}):
+        points = per_setting(rows, scene)
+        for target in (0.10, 0.03, 0.01):
+            good = [p for p in points if p[1] <= target]
+            if not good:
+                lines.append(f"| {scene} | {target:.0%} | none reached | | | | | |")
+                continue
+            seconds, error, r = min(good, key=lambda p: p[0])
+            lines.append(f"| {scene} | {target:.0%} | {r['setting']} | {r['element']:g} | "
+                         f"{r['method']} ({r['samples']}) | {r['threshold']:g} | {seconds:.3f} | {error:.2%} |")
+    return "\n".join(lines) + "\n"
+
+
+def plot(rows, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    scenes = sorted({r["scene"] for r in rows})
+    fig, axes = plt.subplots(1, len(scenes), figsize=(5.2 * len(scenes), 4.4), squeeze=False)
+    colours = {"Analytic": "tab:blue", "Hemicube": "tab:orange", "MonteCarlo": "tab:green"}
+    for ax, scene in zip(axes[0], scenes):
+        points = per_setting(rows, scene)
+        for seconds, error, r in points:
+            ax.scatter(seconds, max(error, 1e-6), color=colours[r["method"]], s=18 + 6 * r["samples"] ** 0.25,
+                       marker="o" if not r["ambient"] else "^", alpha=0.8)
+        front = pareto([(p[0], p[1]) for p in points])
+        xs = [points[i][0] for i in front]
+        ys = [max(points[i][1], 1e-6) for i in front]
+        ax.step(xs, ys, where="post", color="black", linewidth=1.2, label="Pareto front")
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel("solve time (s)")
+        ax.set_ylabel("mean error (worst light)")
+        ax.set_title(scene)
+        ax.grid(True, which="both", alpha=0.3)
+        for method, colour in colours.items():
+            ax.scatter([], [], color=colour, label=method)
+        ax.legend(fontsize=8)
+    fig.suptitle("What accuracy costs in time (marker size: samples; triangles: ambient term)")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+
+
+if __name__ == "__main__":
+    main()
