@@ -178,8 +178,7 @@ long long ShooterFormFactors::Analytic(int patch, int samples, std::vector<doubl
   const std::vector<int>& shooters = g.patchElements[patch];
   std::atomic<long long> rays{ 0 };
   Pool.For(n, 64, [&](int begin, int end) {
-    std::vector<Vec3> scratch; // once per chunk; reused by every receiver in it
-    scratch.reserve(8);
+    thread_local std::vector<Vec3> scratch; // clipping buffer, allocated once per thread
     long long chunkRays = 0;
     for (int e = begin; e < end; ++e)
     {

@@ -33,7 +33,7 @@ int WorkerPool::Threads() const
   return Impl->Threads;
 }
 
-void WorkerPool::For(int count, int grain, const std::function<void(int, int)>& body) const
+void WorkerPool::Run(int count, int grain, void (*call)(const void*, int, int), const void* context) const
 {
   if (count <= 0)
   {
@@ -42,12 +42,12 @@ void WorkerPool::For(int count, int grain, const std::function<void(int, int)>& 
   grain = std::max(1, grain);
   if (!Impl->Arena || count <= grain)
   {
-    body(0, count);
+    call(context, 0, count);
     return;
   }
   Impl->Arena->execute([&] {
     tbb::parallel_for(tbb::blocked_range<int>(0, count, grain),
-      [&](const tbb::blocked_range<int>& r) { body(r.begin(), r.end()); });
+      [&](const tbb::blocked_range<int>& r) { call(context, r.begin(), r.end()); });
   });
 }
 

@@ -2,7 +2,6 @@
 #ifndef RadiosityCore_WorkerPool_h
 #define RadiosityCore_WorkerPool_h
 
-#include <functional>
 #include <memory>
 
 namespace radiosity
@@ -21,10 +20,18 @@ public:
 
   int Threads() const;
 
-  /// Calls body(begin, end) on sub-ranges of [0, count) of about `grain` items.
-  void For(int count, int grain, const std::function<void(int, int)>& body) const;
+  /// Calls body(begin, end) on sub-ranges of [0, count) of about `grain` items. The body
+  /// is passed by reference, not wrapped in a std::function: a call allocates nothing.
+  template <typename Body>
+  void For(int count, int grain, const Body& body) const
+  {
+    this->Run(count, grain,
+      [](const void* context, int begin, int end) { (*static_cast<const Body*>(context))(begin, end); },
+      &body);
+  }
 
 private:
+  void Run(int count, int grain, void (*call)(const void*, int, int), const void* context) const;
   struct Internals;
   std::unique_ptr<Internals> Impl;
 };

@@ -108,6 +108,10 @@ def main(argv):
     check(solved is not None and solved.IsA("vtkPolyData"), "solver output is not vtkPolyData")
     check(relit is not None and relit.IsA("vtkPolyData"), "relight output is not vtkPolyData")
     check(solved.GetNumberOfCells() > 0, "solver output has no cells")
+    history = servermanager.Fetch(solver, idx=1)  # the convergence table, for a line chart
+    check(history is not None and history.IsA("vtkTable") and history.GetNumberOfRows() > 0
+          and history.GetColumnByName("Remaining_" + LIGHT) is not None,
+          "solver port 1 is not the convergence table")
     check(relit.GetNumberOfCells() == solved.GetNumberOfCells(),
           "relight output has %d cells, solver output %d"
           % (relit.GetNumberOfCells(), solved.GetNumberOfCells()))
