@@ -171,7 +171,16 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
     std::vector<Vec3> loop;
     for (int k = offsets[i]; k < offsets[i + 1]; ++k)
     {
-      loop.push_back(points[connectivity[k]]);
+      // Repeated consecutive points would make zero-area elements: drop them.
+      const Vec3& p = points[connectivity[k]];
+      if (loop.empty() || Norm(p - loop.back()) > quantum)
+      {
+        loop.push_back(p);
+      }
+    }
+    while (loop.size() > 1 && Norm(loop.front() - loop.back()) <= quantum)
+    {
+      loop.pop_back();
     }
     if (loop.size() < 3)
     {
@@ -186,15 +195,16 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
     }
     const Vec3 normal = Normalized(newell);
     Piece piece;
-    if (loop.size() == 4)
+    if (loop.size() == 4 && IsConvex(loop.data(), 4))
     {
       SplitQuad(loop.data(), options, piece);
     }
     else
     {
-      for (size_t t = 1; t + 1 < loop.size(); ++t)
+      const std::vector<int> corners = Triangulate(loop.data(), static_cast<int>(loop.size()));
+      for (size_t t = 0; t + 2 < corners.size(); t += 3)
       {
-        SplitTriangle(loop[0], loop[t], loop[t + 1], options, piece);
+        SplitTriangle(loop[corners[t]], loop[corners[t + 1]], loop[corners[t + 2]], options, piece);
       }
     }
 

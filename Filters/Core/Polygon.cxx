@@ -19,12 +19,14 @@ Vec3 NewellVector(const Vec3* loop, int count)
 
 Vec3 PolygonCentroid(const Vec3* loop, int count)
 {
-  // Area-weighted centroid of the fan triangles, so uneven vertex spacing does not bias it.
+  // Area-weighted centroid of the fan triangles with signed areas (along the polygon's
+  // normal), which is exact for non-convex polygons too.
+  const Vec3 normal = Normalized(NewellVector(loop, count));
   Vec3 weighted;
   double total = 0;
   for (int i = 1; i + 1 < count; ++i)
   {
-    const double a = 0.5 * Norm(Cross(loop[i] - loop[0], loop[i + 1] - loop[0]));
+    const double a = 0.5 * Dot(normal, Cross(loop[i] - loop[0], loop[i + 1] - loop[0]));
     weighted += (loop[0] + loop[i] + loop[i + 1]) * (a / 3.0);
     total += a;
   }
@@ -38,6 +40,83 @@ Vec3 PolygonCentroid(const Vec3* loop, int count)
     mean += loop[i];
   }
   return count > 0 ? mean * (1.0 / count) : mean;
+}
+
+bool IsConvex(const Vec3* loop, int count)
+{
+  const Vec3 normal = NewellVector(loop, count);
+  for (int i = 0; i < count; ++i)
+  {
+    const Vec3& a = loop[(i + count - 1) % count];
+    const Vec3& b = loop[i];
+    const Vec3& c = loop[(i + 1) % count];
+    if (Dot(normal, Cross(b - a, c - b)) < 0)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+std::vector<int> Triangulate(const Vec3* loop, int count)
+{
+  std::vector<int> triangles;
+  if (count < 3)
+  {
+    return triangles;
+  }
+  if (IsConvex(loop, count))
+  {
+    for (int i = 1; i + 1 < count; ++i)
+    {
+      triangles.insert(triangles.end(), { 0, i, i + 1 });
+    }
+    return triangles;
+  }
+  const Vec3 normal = NewellVector(loop, count);
+  std::vector<int> remaining(count);
+  for (int i = 0; i < count; ++i)
+  {
+    remaining[i] = i;
+  }
+  auto turn = [&](int a, int b, int c) { return Dot(normal, Cross(loop[b] - loop[a], loop[c] - loop[b])); };
+  auto inside = [&](int p, int a, int b, int c) {
+    return turn(a, b, p) >= 0 && turn(b, c, p) >= 0 && turn(c, a, p) >= 0;
+  };
+  while (remaining.size() > 3)
+  {
+    const int n = static_cast<int>(remaining.size());
+    bool clipped = false;
+    for (int i = 0; i < n && !clipped; ++i)
+    {
+      const int a = remaining[(i + n - 1) % n], b = remaining[i], c = remaining[(i + 1) % n];
+      if (turn(a, b, c) <= 0)
+      {
+        continue; // reflex or collinear corner: not an ear
+      }
+      bool empty = true;
+      for (int j = 0; j < n && empty; ++j)
+      {
+        const int p = remaining[j];
+        empty = p == a || p == b || p == c || !inside(p, a, b, c);
+      }
+      if (empty)
+      {
+        triangles.insert(triangles.end(), { a, b, c });
+        remaining.erase(remaining.begin() + i);
+        clipped = true;
+      }
+    }
+    if (!clipped)
+    {
+      break; // self-intersecting input: fan what is left rather than loop forever
+    }
+  }
+  for (size_t i = 1; i + 1 < remaining.size(); ++i)
+  {
+    triangles.insert(triangles.end(), { remaining[0], remaining[i], remaining[i + 1] });
+  }
+  return triangles;
 }
 
 void ClipToHalfSpace(const Vec3* loop, int count, const Vec3& origin, const Vec3& normal,

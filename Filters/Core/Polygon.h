@@ -26,6 +26,14 @@ Vec3 PolygonCentroid(const Vec3* loop, int count);
 void ClipToHalfSpace(const Vec3* loop, int count, const Vec3& origin, const Vec3& normal,
   std::vector<Vec3>& clipped);
 
+/// Triangles covering a simple planar polygon (convex or not), as index triples into
+/// `loop`: a fan when the polygon is convex, ear clipping otherwise. A fan over a
+/// non-convex polygon would cover area outside it and miss area inside.
+std::vector<int> Triangulate(const Vec3* loop, int count);
+
+/// True if every corner turns the same way about the polygon's normal.
+bool IsConvex(const Vec3* loop, int count);
+
 } // namespace radiosity
 
 #endif

@@ -91,6 +91,7 @@ Solution ProgressiveRadiosity::Solve(
   {
     initial += v;
   }
+  stats.EmittedPower = stats.UnshotPower = initial;
   if (!(initial > 0))
   {
     stats.Converged = true;
@@ -199,6 +200,7 @@ Solution ProgressiveRadiosity::Solve(
       received += shotSum * f * g.area[e];
     }
     stats.ReceivedPower += received;
+    stats.EscapedPower += best - received;
 
     std::fill(remainingPer.begin(), remainingPer.end(), 0.0);
     for (int p = 0; p < patches; ++p)
@@ -215,6 +217,7 @@ Solution ProgressiveRadiosity::Solve(
       stats.RemainingPerSolution.push_back(initialPer[m] > 0 ? remainingPer[m] / initialPer[m] : 0.0);
     }
     ++stats.Shots;
+    stats.UnshotPower = remaining;
     stats.RemainingHistory.push_back(remaining / initial);
     stats.TimeHistory.push_back(std::chrono::duration<double>(Clock::now() - start).count());
   }

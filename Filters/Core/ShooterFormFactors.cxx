@@ -1,5 +1,6 @@
 #include "ShooterFormFactors.h"
 #include "FormFactor.h"
+#include "Polygon.h"
 
 #include <algorithm>
 #include <atomic>
@@ -67,11 +68,13 @@ ShooterFormFactors::ShooterFormFactors(
     for (int e : geometry.patchElements[p])
     {
       const Vec3* loop = Loops.data() + mesh.offsets[e];
-      for (int t = 1; t + 1 < mesh.PolygonSize(e); ++t)
+      const std::vector<int> corners = Triangulate(loop, mesh.PolygonSize(e));
+      for (size_t t = 0; t + 2 < corners.size(); t += 3)
       {
-        const Vec3 cross = Cross(loop[t] - loop[0], loop[t + 1] - loop[0]);
+        const Vec3 &a = loop[corners[t]], &b = loop[corners[t + 1]], &c = loop[corners[t + 2]];
+        const Vec3 cross = Cross(b - a, c - a);
         total += 0.5 * Norm(cross);
-        PatchTriangles[p].push_back({ loop[0], loop[t], loop[t + 1], Normalized(cross), total });
+        PatchTriangles[p].push_back({ a, b, c, Normalized(cross), total });
       }
       centre += geometry.centroid[e] * geometry.area[e];
       normal += geometry.normal[e] * geometry.area[e];

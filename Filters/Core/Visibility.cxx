@@ -1,4 +1,5 @@
 #include "Visibility.h"
+#include "Polygon.h"
 
 #include <embree3/rtcore.h>
 
@@ -72,14 +73,21 @@ Visibility::Visibility(const SceneMesh& mesh)
     return;
   }
   rtcSetDeviceErrorFunction(d.Device, OnEmbreeError, &d.Error);
+  std::vector<Vec3> loop;
   for (int i = 0; i < mesh.NumberOfPolygons(); ++i)
   {
     const int* ids = mesh.Polygon(i);
-    for (int t = 1; t + 1 < mesh.PolygonSize(i); ++t)
+    loop.clear();
+    for (int v = 0; v < mesh.PolygonSize(i); ++v)
+    {
+      loop.push_back(mesh.points[ids[v]]);
+    }
+    const std::vector<int> corners = Triangulate(loop.data(), static_cast<int>(loop.size()));
+    for (size_t t = 0; t + 2 < corners.size(); t += 3)
     {
       d.TriangleCorners.insert(d.TriangleCorners.end(),
-        { static_cast<unsigned>(ids[0]), static_cast<unsigned>(ids[t]),
-          static_cast<unsigned>(ids[t + 1]) });
+        { static_cast<unsigned>(ids[corners[t]]), static_cast<unsigned>(ids[corners[t + 1]]),
+          static_cast<unsigned>(ids[corners[t + 2]]) });
       d.TrianglePolygon.push_back(i);
     }
   }
