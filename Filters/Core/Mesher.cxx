@@ -182,9 +182,15 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
     {
       loop.pop_back();
     }
+    if (offsets[i + 1] - offsets[i] < 3)
+    {
+      err << "cell " << i << " has " << offsets[i + 1] - offsets[i] << " points; polygons need at least 3";
+      return err.str();
+    }
     if (loop.size() < 3)
     {
-      err << "cell " << i << " has " << loop.size() << " points; polygons need at least 3";
+      err << "cell " << i << " has zero area (only " << loop.size()
+          << " distinct points); remove degenerate cells";
       return err.str();
     }
     const Vec3 newell = NewellVector(loop.data(), static_cast<int>(loop.size()));
