@@ -252,6 +252,20 @@ int vtkRadiosityRelight::RequestData(
       }
     }
   }
+  bool perLight = false;
+  for (const std::string& name : names)
+  {
+    perLight = perLight || input->GetCellData()->GetAbstractArray((prefix + name).c_str()) ||
+      input->GetPointData()->GetAbstractArray((prefix + name).c_str());
+  }
+  const bool combinedOnly = !perLight && input->GetCellData()->GetAbstractArray("Radiosity");
+  if (combinedOnly)
+  {
+    vtkErrorMacro(<< "Cannot relight: the input holds one combined solution (SolutionMode "
+                     "StandardCombined); relighting needs the per-light solutions of LightTagged "
+                     "or StandardSeparate.");
+    return 0;
+  }
   if (names.empty())
   {
     vtkErrorMacro(<< "Cannot relight: the input has no lights (no field array 'LightNames' and "

@@ -102,7 +102,8 @@ double EstimateElements(const std::vector<Vec3>& loop, const MesherOptions& o)
   {
     longest = std::max(longest, Norm(loop[(i + 1) % loop.size()] - loop[i]));
   }
-  const double per = std::ceil(longest / o.ElementSize) + 1;
+  // Elements are never larger than patches, so the smaller size decides the count.
+  const double per = std::ceil(longest / std::min(o.ElementSize, o.PatchSize)) + 1;
   return per * per * static_cast<double>(loop.size()); // double: absurd sizes must not overflow
 }
 } // namespace
@@ -155,10 +156,10 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
   }
   if (!(estimate <= static_cast<double>(options.MaximumElements)))
   {
-    err << "ElementSize " << options.ElementSize << " would make about " << std::setprecision(3)
-        << estimate
+    err << "PatchSize " << options.PatchSize << " and ElementSize " << options.ElementSize
+        << " would make about " << std::setprecision(3) << estimate
         << " elements, more than the limit of " << options.MaximumElements
-        << "; choose a larger ElementSize";
+        << "; choose a larger ElementSize (or PatchSize)";
     return err.str();
   }
 
