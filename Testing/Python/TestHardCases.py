@@ -6,12 +6,11 @@ import os
 import sys
 
 import numpy as np
-from vtkmodules.vtkCommonCore import vtkFloatArray, vtkIntArray, vtkLogger, vtkPoints, vtkStringArray
-from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+from vtkmodules.vtkCommonCore import vtkLogger
 from vtkmodules.vtkFiltersVerdict import vtkCellSizeFilter
 
 import relight
-from relight import ErrorCatcher, cell_array, point_array, read_polydata
+from relight import ErrorCatcher, cell_array, make_scene, point_array, read_polydata
 
 vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_OFF)
 DATA = os.path.join(os.environ.get("RELIGHT_ROOT", "."), "Data")
@@ -25,31 +24,7 @@ def check(condition, message):
 
 
 def polydata(polygons, reflectance, light_ids, names=None):
-    data = vtkPolyData()
-    points = vtkPoints()
-    points.SetDataTypeToDouble()
-    cells = vtkCellArray()
-    for polygon in polygons:
-        cells.InsertNextCell(len(polygon), [points.InsertNextPoint(*p) for p in polygon])
-    data.SetPoints(points)
-    data.SetPolys(cells)
-    r = vtkFloatArray()
-    r.SetName("Reflectance")
-    r.SetNumberOfComponents(3)
-    ids = vtkIntArray()
-    ids.SetName("LightId")
-    for rho, light in zip(reflectance, light_ids):
-        r.InsertNextTuple3(*rho)
-        ids.InsertNextValue(light)
-    data.GetCellData().AddArray(r)
-    data.GetCellData().AddArray(ids)
-    if names:
-        array = vtkStringArray()
-        array.SetName("LightNames")
-        for name in names:
-            array.InsertNextValue(name)
-        data.GetFieldData().AddArray(array)
-    return data
+    return make_scene(polygons, reflectance, light_ids, light_names=names)
 
 
 def pipeline(scene, patch, element, **solver_settings):

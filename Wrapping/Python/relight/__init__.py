@@ -19,6 +19,7 @@ from .vtkRadiosityFilters import (  # noqa: F401
 from .scene import (  # noqa: F401
     ErrorCatcher,
     light_names,
+    make_scene,
     point_array,
     cell_array,
     read_polydata,

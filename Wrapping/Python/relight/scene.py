@@ -45,6 +45,43 @@ class ErrorCatcher:
     _warning.CallDataType = "string0"
 
 
+def make_scene(polygons, reflectance, light_ids, light_names=None, emission=None):
+    """A vtkPolyData in the input contract from plain Python lists.
+
+    `polygons`: lists of (x, y, z) points, front side by the right-hand rule;
+    `reflectance`: an RGB triple per polygon; `light_ids`: -1 or 0..k-1 per polygon;
+    `light_names` (k strings) and `emission` (an RGB triple per polygon) are optional.
+    """
+    from vtkmodules.vtkCommonCore import vtkFloatArray, vtkIntArray, vtkPoints, vtkStringArray
+    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+
+    data = vtkPolyData()
+    points = vtkPoints()
+    points.SetDataTypeToDouble()
+    cells = vtkCellArray()
+    for polygon in polygons:
+        cells.InsertNextCell(len(polygon), [points.InsertNextPoint(*p) for p in polygon])
+    data.SetPoints(points)
+    data.SetPolys(cells)
+    arrays = [("Reflectance", vtkFloatArray, 3, reflectance), ("LightId", vtkIntArray, 1, light_ids)]
+    if emission is not None:
+        arrays.append(("Emission", vtkFloatArray, 3, emission))
+    for name, kind, components, values in arrays:
+        array = kind()
+        array.SetName(name)
+        array.SetNumberOfComponents(components)
+        for value in values:
+            array.InsertNextTuple(value if components > 1 else (value,))
+        data.GetCellData().AddArray(array)
+    if light_names:
+        names = vtkStringArray()
+        names.SetName("LightNames")
+        for name in light_names:
+            names.InsertNextValue(name)
+        data.GetFieldData().AddArray(names)
+    return data
+
+
 def read_polydata(path):
     """Reads a .vtp file; raises OSError if it cannot."""
     reader = vtkXMLPolyDataReader()
