@@ -633,3 +633,29 @@ TEST(HardInvariants, MoreReflectanceNeverDarkensAnything)
     }
   }
 }
+
+TEST(HardDegenerate, OpenBoxConvergesAndCountsWhatEscapes)
+{
+  // No lid: a third of the light leaves through the opening. The solve still converges
+  // (escaping energy is simply never shot again) and the ledger accounts for it.
+  SceneMesh box = Box(1.0, 6, 2, { 0.7, 0.7, 0.7 }, [](int f) { return f == 0 ? 0 : -1; });
+  SceneMesh open;
+  const SceneGeometry geometry(box);
+  for (int e = 0; e < box.NumberOfPolygons(); ++e)
+  {
+    if (geometry.centroid[e].z > 1 - 1e-9)
+      continue; // drop the lid (z = 1)
+    std::vector<int> ids(box.Polygon(e), box.Polygon(e) + 4);
+    open.AddPolygon(ids);
+    open.reflectance.push_back(box.reflectance[e]);
+    open.lightId.push_back(box.lightId[e]);
+    open.patchId.push_back(box.patchId[e]);
+  }
+  open.points = box.points;
+  const Solution s = SolveOne(open, Converged(1e-8));
+  ASSERT_TRUE(s.Statistics.Converged);
+  ASSERT_TRUE(AllFinite(s.Radiosity));
+  const SolverStatistics& t = s.Statistics;
+  EXPECT_GT(t.EscapedPower, 0.2 * t.EmittedPower);
+  EXPECT_LT(t.EscapedPower, t.EmittedPower);
+}
