@@ -1,6 +1,7 @@
 #include "vtkLightTaggedRadiosity.h"
 #include "vtkRadiosityAdapter.h"
 
+#include "Effects.h"
 #include "LightSolutions.h"
 
 #include "vtkCellData.h"
@@ -11,6 +12,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
+#include "vtkLogger.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -117,19 +119,27 @@ int vtkLightTaggedRadiosity::RequestData(
     vtkErrorMacro(<< "Cannot solve: " << error << ".");
     return 0;
   }
-  radiosity::LightGrouping grouping = radiosity::LightGrouping::OnePerLight(lights);
-  if (vtkDataArray* banks = input->GetFieldData()->GetArray("LightBanks"))
+  auto effect = [this](int mode) {
+    return this->ForceAllEffects ? radiosity::EffectMode::On : static_cast<radiosity::EffectMode>(mode);
+  };
+  auto fieldInts = [input](const char* name) {
+    std::vector<int> values;
+    if (vtkDataArray* array = input->GetFieldData()->GetArray(name))
+    {
+      for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
+      {
+        values.push_back(static_cast<int>(array->GetComponent(i, 0)));
+      }
+    }
+    return values;
+  };
+  radiosity::LightGrouping grouping;
+  error = radiosity::GroupLights(lights, fieldInts("LightBanks"), fieldInts("StaticLights"),
+    effect(this->LightSeparationEffect), grouping);
+  if (!error.empty())
   {
-    std::vector<int> ids;
-    for (vtkIdType i = 0; i < banks->GetNumberOfTuples(); ++i)
-    {
-      ids.push_back(static_cast<int>(banks->GetComponent(i, 0)));
-    }
-    if (!(error = radiosity::LightGrouping::FromBanks(ids, lights, grouping)).empty())
-    {
-      vtkErrorMacro(<< "Cannot solve: " << error << ".");
-      return 0;
-    }
+    vtkErrorMacro(<< "Cannot solve: " << error << ".");
+    return 0;
   }
 
   const auto start = std::chrono::steady_clock::now();
@@ -148,6 +158,10 @@ int vtkLightTaggedRadiosity::RequestData(
   options.Threads = this->NumberOfThreads;
   options.AmbientTerm = this->AmbientTerm;
   options.SeparateDirect = this->SeparateDirect;
+  options.Visibility = effect(this->VisibilityEffect);
+  options.Interreflection = effect(this->InterreflectionEffect);
+  options.Color = effect(this->ColorEffect);
+  options.ConvergedSolutions = effect(this->ConvergedLightsEffect);
   options.Progress = [this](double f) {
     this->UpdateProgress(f);
     return !this->GetAbortExecute();
@@ -221,6 +235,24 @@ int vtkLightTaggedRadiosity::RequestData(
     }
     fields->AddArray(defaults);
   }
+  const std::vector<radiosity::EffectDecision> effects =
+    radiosity::DescribeEffects(mesh, options, result, grouping, lights, mode);
+  vtkNew<vtkStringArray> effectNames, decisions, reasons;
+  effectNames->SetName("Effects");
+  decisions->SetName("EffectDecisions");
+  reasons->SetName("EffectReasons");
+  for (const radiosity::EffectDecision& e : effects)
+  {
+    effectNames->InsertNextValue(e.Effect);
+    decisions->InsertNextValue(e.Simulated ? "simulated" : "skipped");
+    reasons->InsertNextValue(e.Reason);
+  }
+  fields->AddArray(effectNames);
+  fields->AddArray(decisions);
+  fields->AddArray(reasons);
+  vtkLogF(INFO, "LightTaggedRadiosity: %d shots, %.3f s; %s", stats.Shots, this->LastSolveSeconds,
+    radiosity::SummarizeEffects(effects).c_str());
+
   vtkNew<vtkDoubleArray> unshot;
   unshot->SetName("UnshotHistory");
   for (double r : stats.RemainingHistory)

@@ -23,7 +23,9 @@
  * Remaining_<name> per solution), ready for a line chart.
  *
  * An optional field array `LightBanks` (k integers, 0..b-1) groups lights into banks that
- * share one solution (their relative Emission colours are kept inside it).
+ * share one solution (their relative Emission colours are kept inside it); an optional
+ * field array `StaticLights` (k integers) marks lights nobody will change, merged into one
+ * bank when LightSeparationEffect is Auto.
  *
  * Solves stop at MaximumShots, when the remaining unshot power falls below
  * ConvergenceThreshold times the initial power, when TimeBudget seconds have passed, or
@@ -124,6 +126,47 @@ public:
   vtkBooleanMacro(SeparateDirect, bool);
   ///@}
 
+  enum EffectModes
+  {
+    EFFECT_AUTO = 0,
+    EFFECT_ON = 1,
+    EFFECT_OFF = 2
+  };
+
+  ///@{
+  /// Simulate only what the scene calls for. Each effect is Auto (default: simulated only
+  /// where it can change the result, decided conservatively), On or Off:
+  /// - Visibility: shadow rays; Auto skips pairs no surface can block (a convex room needs
+  ///   none); Off ignores occlusion.
+  /// - Interreflection: Off keeps direct light only.
+  /// - Color: Auto solves one channel when everything is grey; Off always does.
+  /// - LightSeparation: Auto merges lights flagged in the field array `StaticLights`
+  ///   (k integers, 1 = static) into one solution; On keeps every light separate; Off
+  ///   merges all.
+  /// - ConvergedLights: Auto and Off stop shooting a light whose unshot power is below the
+  ///   threshold; On shoots every light until all converge.
+  /// Decisions and savings go to the field arrays `Effects`, `EffectDecisions` and
+  /// `EffectReasons`, and to a one-line log message.
+  vtkSetClampMacro(VisibilityEffect, int, EFFECT_AUTO, EFFECT_OFF);
+  vtkGetMacro(VisibilityEffect, int);
+  vtkSetClampMacro(InterreflectionEffect, int, EFFECT_AUTO, EFFECT_OFF);
+  vtkGetMacro(InterreflectionEffect, int);
+  vtkSetClampMacro(ColorEffect, int, EFFECT_AUTO, EFFECT_OFF);
+  vtkGetMacro(ColorEffect, int);
+  vtkSetClampMacro(LightSeparationEffect, int, EFFECT_AUTO, EFFECT_OFF);
+  vtkGetMacro(LightSeparationEffect, int);
+  vtkSetClampMacro(ConvergedLightsEffect, int, EFFECT_AUTO, EFFECT_OFF);
+  vtkGetMacro(ConvergedLightsEffect, int);
+  ///@}
+
+  ///@{
+  /// Turn every effect above On (outputs such as SeparateDirect are not changed), to
+  /// compare against the Auto decisions. Off by default.
+  vtkSetMacro(ForceAllEffects, bool);
+  vtkGetMacro(ForceAllEffects, bool);
+  vtkBooleanMacro(ForceAllEffects, bool);
+  ///@}
+
   ///@{
   /// Threads for the form factors; 0 (default) uses every hardware thread.
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
@@ -157,6 +200,12 @@ private:
   bool AmbientTerm = false;
   bool SeparateDirect = false;
   int NumberOfThreads = 0;
+  int VisibilityEffect = EFFECT_AUTO;
+  int InterreflectionEffect = EFFECT_AUTO;
+  int ColorEffect = EFFECT_AUTO;
+  int LightSeparationEffect = EFFECT_AUTO;
+  int ConvergedLightsEffect = EFFECT_AUTO;
+  bool ForceAllEffects = false;
   int LastShots = 0;
   bool LastConverged = false;
   long long LastRays = 0;

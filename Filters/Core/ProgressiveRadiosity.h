@@ -15,6 +15,15 @@
 namespace radiosity
 {
 
+/// How an optional piece of simulation is chosen. Auto simulates it only where it can
+/// change the result (decided conservatively); On always simulates it; Off never does.
+enum class EffectMode
+{
+  Auto = 0,
+  On = 1,
+  Off = 2
+};
+
 struct SolverOptions
 {
   int MaximumShots = 2000;
@@ -32,6 +41,20 @@ struct SolverOptions
   bool AmbientTerm = false;
   /// Also keep each solution's direct part: emission plus the first bounce of it.
   bool SeparateDirect = false;
+  /// Shadow rays. Auto skips them for pairs no surface can block: only a polygon with
+  /// scene geometry behind its plane can come between two surfaces that see each other,
+  /// so pairs whose bounding box meets no such polygon are unoccluded (a convex room has
+  /// none at all). Off treats every pair as unoccluded.
+  EffectMode Visibility = EffectMode::Auto;
+  /// Reflected light. Off keeps direct light only (emission and its first bounce).
+  EffectMode Interreflection = EffectMode::Auto;
+  /// RGB channels. Auto solves one channel when every reflectance and emission is grey
+  /// (exact, a third of the work and memory); Off always does (using the mean).
+  EffectMode Color = EffectMode::Auto;
+  /// Shooting a solution whose remaining unshot power is already below the threshold of
+  /// its own emitted power. Auto and Off stop shooting it; On keeps it going until every
+  /// solution has converged.
+  EffectMode ConvergedSolutions = EffectMode::Auto;
   /// Called between shots with the fraction done; returning false aborts the solve, which
   /// then keeps the valid partial result of the shots made so far.
   std::function<bool(double)> Progress;
@@ -49,6 +72,11 @@ struct SolverStatistics
   std::vector<double> RemainingHistory;
   std::vector<double> RemainingPerSolution;
   long long RayCount = 0;
+  long long RaysSkipped = 0;      ///< shadow rays Visibility=Auto proved unnecessary
+  long long PairsUnblockable = 0; ///< receiver-shooter pairs no surface can block
+  long long DistributionsSkipped = 0; ///< (shot, solution) pairs not distributed
+  bool SingleChannel = false;     ///< solved one grey channel instead of RGB
+  int BlockingSurfaces = -1;      ///< planes with geometry behind them (-1: not examined)
   long long FormFactorCount = 0; ///< receiver-shooter pairs evaluated
   /// Channel-summed power shot by patches and power arriving at receivers (irradiance
   /// times area, before reflection); equal up to discretization in a closed scene.
@@ -62,9 +90,18 @@ struct SolverStatistics
   double UnshotPower = 0;
 };
 
+/// One line of the solver's account of what it simulated and what it skipped.
+struct EffectDecision
+{
+  std::string Effect;
+  bool Simulated = true;
+  std::string Reason; ///< why, and what skipping saved
+};
+
 struct Solution
 {
   int Solutions = 0;
+  std::vector<EffectDecision> Effects;
   std::vector<Vec3> Radiosity; ///< [element * Solutions + m], with the ambient term if asked
   std::vector<Vec3> Direct;    ///< same layout, only with SeparateDirect
   std::vector<Vec3> Ambient;   ///< per solution, the ambient radiosity (0 without it)

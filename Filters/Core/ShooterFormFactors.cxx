@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <array>
 #include <map>
 
 namespace radiosity
@@ -42,12 +43,13 @@ void Frame(const Vec3& n, Vec3& t, Vec3& b)
 }
 } // namespace
 
-ShooterFormFactors::ShooterFormFactors(
-  const SceneMesh& mesh, const SceneGeometry& geometry, const Visibility& rays, const WorkerPool& pool)
+ShooterFormFactors::ShooterFormFactors(const SceneMesh& mesh, const SceneGeometry& geometry,
+  const Visibility& rays, const WorkerPool& pool, bool cullVisibility)
   : Mesh(mesh)
   , Geometry(geometry)
   , Rays(rays)
   , Pool(pool)
+  , CullVisibility(cullVisibility)
 {
   // Offsets keep rays from starting or ending inside their own surfaces; relative to the
   // scene so the result does not depend on its units.
@@ -87,6 +89,124 @@ ShooterFormFactors::ShooterFormFactors(
     PatchNormal[p] = Normalized(normal);
   }
   BuildOutlines();
+  if (CullVisibility)
+  {
+    FindBlockers();
+  }
+}
+
+void ShooterFormFactors::Box::Add(const Vec3& p)
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    Lo[c] = std::min(Lo[c], p[c]);
+    Hi[c] = std::max(Hi[c], p[c]);
+  }
+}
+
+void ShooterFormFactors::Box::Add(const Box& b)
+{
+  Add(b.Lo);
+  Add(b.Hi);
+}
+
+bool ShooterFormFactors::Box::Overlaps(const Box& b, double tolerance) const
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    if (b.Lo[c] > Hi[c] + tolerance || Lo[c] > b.Hi[c] + tolerance)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+void ShooterFormFactors::FindBlockers()
+{
+  const int n = Mesh.NumberOfPolygons();
+  ElementBox.assign(n, Box());
+  PatchBox.assign(Geometry.patchElements.size(), Box());
+  Box scene;
+  for (int e = 0; e < n; ++e)
+  {
+    for (int v = 0; v < Mesh.PolygonSize(e); ++v)
+    {
+      ElementBox[e].Add(Mesh.points[Mesh.Polygon(e)[v]]);
+    }
+    PatchBox[Geometry.elementPatch[e]].Add(ElementBox[e]);
+    scene.Add(ElementBox[e]);
+  }
+  // A segment between two points in front of (or on) a plane never crosses it. So a
+  // polygon with no scene point strictly behind its plane cannot block any pair; only
+  // the others ("blockers") can. Elements are grouped by plane: one test per plane.
+  const double eps = 1e-9 * Geometry.sceneDiagonal;
+  std::map<std::array<long long, 4>, Box> planes;
+  std::map<std::array<long long, 4>, bool> blocking;
+  for (int e = 0; e < n; ++e)
+  {
+    const Vec3& normal = Geometry.normal[e];
+    const double offset = Dot(normal, Geometry.centroid[e]);
+    const std::array<long long, 4> key = { std::llround(normal.x * 1e6), std::llround(normal.y * 1e6),
+      std::llround(normal.z * 1e6), std::llround(offset / (eps * 1e3)) };
+    auto known = blocking.find(key);
+    if (known == blocking.end())
+    {
+      bool behind = false;
+      // The scene box's corners bound every point: if none is behind, nothing is.
+      for (int corner = 0; corner < 8 && !behind; ++corner)
+      {
+        const Vec3 p{ corner & 1 ? scene.Hi.x : scene.Lo.x, corner & 2 ? scene.Hi.y : scene.Lo.y,
+          corner & 4 ? scene.Hi.z : scene.Lo.z };
+        behind = Dot(normal, p) < offset - eps;
+      }
+      if (behind)
+      {
+        behind = false;
+        for (size_t p = 0; p < Mesh.points.size() && !behind; ++p)
+        {
+          behind = Dot(normal, Mesh.points[p]) < offset - eps;
+        }
+      }
+      known = blocking.emplace(key, behind).first;
+    }
+    if (known->second)
+    {
+      planes[key].Add(ElementBox[e]);
+    }
+  }
+  for (const auto& plane : planes)
+  {
+    Blockers.push_back(plane.second);
+    AllBlockers.Add(plane.second);
+  }
+}
+
+bool ShooterFormFactors::MayBeBlocked(int patch, int element) const
+{
+  if (Blockers.empty())
+  {
+    return false;
+  }
+  Box shaft = PatchBox[patch];
+  shaft.Add(ElementBox[element]);
+  const double tolerance = 1e-9 * Geometry.sceneDiagonal;
+  if (!shaft.Overlaps(AllBlockers, tolerance))
+  {
+    return false;
+  }
+  if (Blockers.size() > 256)
+  {
+    return true; // too many to check one by one: be conservative
+  }
+  for (const Box& blocker : Blockers)
+  {
+    if (shaft.Overlaps(blocker, tolerance))
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 void ShooterFormFactors::BuildOutlines()
@@ -182,7 +302,7 @@ long long ShooterFormFactors::Analytic(int patch, int samples, std::vector<doubl
   std::atomic<long long> rays{ 0 };
   Pool.For(n, 64, [&](int begin, int end) {
     thread_local std::vector<Vec3> scratch; // clipping buffer, allocated once per thread
-    long long chunkRays = 0;
+    long long chunkRays = 0, unblockable = 0;
     for (int e = begin; e < end; ++e)
     {
       factors[e] = 0;
@@ -224,6 +344,12 @@ long long ShooterFormFactors::Analytic(int patch, int samples, std::vector<doubl
         factors[e] = f;
         continue;
       }
+      if (CullVisibility && !MayBeBlocked(patch, e))
+      {
+        factors[e] = f;
+        ++unblockable;
+        continue;
+      }
       SampleStream random(static_cast<std::uint64_t>(patch), static_cast<std::uint64_t>(e));
       const Vec3 from = x + g.normal[e] * Epsilon;
       int visible = 0;
@@ -247,6 +373,8 @@ long long ShooterFormFactors::Analytic(int patch, int samples, std::vector<doubl
       factors[e] = f * visible / samples;
     }
     rays += chunkRays;
+    Unblockable += unblockable;
+    Skipped += unblockable * samples;
   });
   return rays;
 }

@@ -6,6 +6,7 @@
 #include "Visibility.h"
 #include "WorkerPool.h"
 
+#include <atomic>
 #include <vector>
 
 namespace radiosity
@@ -29,14 +30,23 @@ enum class FormFactorMethod
 class ShooterFormFactors
 {
 public:
+  /// `cullVisibility`: find the surfaces that can block (see SolverOptions::Visibility) and
+  /// cast no shadow rays for pairs none of them can come between.
   ShooterFormFactors(const SceneMesh& mesh, const SceneGeometry& geometry, const Visibility& rays,
-    const WorkerPool& pool);
+    const WorkerPool& pool, bool cullVisibility = false);
 
   /// factors[e] = F(element e -> patch), the factor shooting needs
   /// (delta B_e = rho_e * unshot_patch * factors[e]). `shot` decorrelates repeated shots
   /// of one patch for the sampling methods. Returns the number of rays cast.
   long long Compute(int patch, FormFactorMethod method, int samples, int shot,
     std::vector<double>& factors);
+
+  /// Planes of elements with scene geometry strictly behind them: the only surfaces that
+  /// can block a pair. -1 when not examined.
+  int BlockingPlanes() const { return CullVisibility ? static_cast<int>(Blockers.size()) : -1; }
+  /// Pairs and rays skipped by the culling since construction.
+  long long PairsUnblockable() const { return Unblockable; }
+  long long RaysSkipped() const { return Skipped; }
 
 private:
   long long Analytic(int patch, int samples, std::vector<double>& factors);
@@ -72,6 +82,20 @@ private:
   double Epsilon = 0;
 
   const SampleTriangle& PickTriangle(int patch, double u) const;
+
+  struct Box
+  {
+    Vec3 Lo{ 1e300, 1e300, 1e300 }, Hi{ -1e300, -1e300, -1e300 };
+    void Add(const Vec3& p);
+    void Add(const Box& b);
+    bool Overlaps(const Box& b, double tolerance) const;
+  };
+  void FindBlockers();
+  bool MayBeBlocked(int patch, int element) const;
+  bool CullVisibility = false;
+  std::vector<Box> ElementBox, PatchBox, Blockers;
+  Box AllBlockers;
+  std::atomic<long long> Unblockable{ 0 }, Skipped{ 0 };
 };
 
 } // namespace radiosity
