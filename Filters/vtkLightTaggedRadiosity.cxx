@@ -51,6 +51,10 @@ void vtkLightTaggedRadiosity::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AmbientTerm: " << this->AmbientTerm << "\n";
   os << indent << "SeparateDirect: " << this->SeparateDirect << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "Effects (visibility, interreflection, color, separation, converged): "
+     << this->VisibilityEffect << " " << this->InterreflectionEffect << " " << this->ColorEffect << " "
+     << this->LightSeparationEffect << " " << this->ConvergedLightsEffect
+     << (this->ForceAllEffects ? " (all forced on)" : "") << "\n";
 }
 
 namespace

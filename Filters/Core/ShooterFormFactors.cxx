@@ -143,6 +143,7 @@ void ShooterFormFactors::FindBlockers()
   const double eps = 1e-9 * Geometry.sceneDiagonal;
   std::map<std::array<long long, 4>, Box> planes;
   std::map<std::array<long long, 4>, bool> blocking;
+  std::map<int, Box> patches; // blocking elements' boxes per patch: tighter than per plane
   for (int e = 0; e < n; ++e)
   {
     const Vec3& normal = Geometry.normal[e];
@@ -173,11 +174,21 @@ void ShooterFormFactors::FindBlockers()
     if (known->second)
     {
       planes[key].Add(ElementBox[e]);
+      patches[Geometry.elementPatch[e]].Add(ElementBox[e]);
     }
+  }
+  BlockingPlaneCount = static_cast<int>(planes.size());
+  const auto& boxes = patches.size() <= 256 ? patches : std::map<int, Box>();
+  for (const auto& patch : boxes)
+  {
+    Blockers.push_back(patch.second);
   }
   for (const auto& plane : planes)
   {
-    Blockers.push_back(plane.second);
+    if (boxes.empty())
+    {
+      Blockers.push_back(plane.second);
+    }
     AllBlockers.Add(plane.second);
   }
 }

@@ -43,7 +43,7 @@ public:
 
   /// Planes of elements with scene geometry strictly behind them: the only surfaces that
   /// can block a pair. -1 when not examined.
-  int BlockingPlanes() const { return CullVisibility ? static_cast<int>(Blockers.size()) : -1; }
+  int BlockingPlanes() const { return CullVisibility ? BlockingPlaneCount : -1; }
   /// Pairs and rays skipped by the culling since construction.
   long long PairsUnblockable() const { return Unblockable; }
   long long RaysSkipped() const { return Skipped; }
@@ -93,6 +93,7 @@ private:
   void FindBlockers();
   bool MayBeBlocked(int patch, int element) const;
   bool CullVisibility = false;
+  int BlockingPlaneCount = 0;
   std::vector<Box> ElementBox, PatchBox, Blockers;
   Box AllBlockers;
   std::atomic<long long> Unblockable{ 0 }, Skipped{ 0 };

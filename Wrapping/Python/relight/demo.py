@@ -76,6 +76,11 @@ def main():
         f"converged: {bool(solver.GetLastConverged())}, rays: {solver.GetLastRays()}"
     )
 
+    fields = solved.GetFieldData()
+    effects, decisions, reasons = (fields.GetAbstractArray(a) for a in ("Effects", "EffectDecisions", "EffectReasons"))
+    for i in range(effects.GetNumberOfValues()):
+        print(f"  effect {effects.GetValue(i):20s} {decisions.GetValue(i):9s} {reasons.GetValue(i)}")
+
     relight = vtkRadiosityRelight()
     relight.SetInputConnection(solver.GetOutputPort())
     frame_times = []

@@ -1,0 +1,88 @@
+"""Effects through the VTK filter: decisions reported in field data, ForceAllEffects gives
+the same answer with more work, static lights share a solution."""
+
+import os
+import sys
+
+import numpy as np
+from vtkmodules.vtkCommonCore import vtkIntArray, vtkLogger
+
+import relight
+from relight import cell_array, light_names, make_scene, read_polydata
+
+vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_WARNING)
+DATA = os.path.join(os.environ.get("RELIGHT_ROOT", "."), "Data")
+failures = []
+
+
+def check(condition, message):
+    print(("ok   " if condition else "FAIL ") + message)
+    if not condition:
+        failures.append(message)
+
+
+def effects(data):
+    fields = data.GetFieldData()
+    arrays = [fields.GetAbstractArray(name) for name in ("Effects", "EffectDecisions", "EffectReasons")]
+    return {arrays[0].GetValue(i): (arrays[1].GetValue(i), arrays[2].GetValue(i))
+            for i in range(arrays[0].GetNumberOfValues())}
+
+
+def solve(scene, force=False, patch=0.5, element=0.25):
+    mesher = relight.vtkRadiosityMesher()
+    mesher.SetInputData(scene)
+    mesher.SetPatchSize(patch)
+    mesher.SetElementSize(element)
+    solver = relight.vtkLightTaggedRadiosity()
+    solver.SetInputConnection(mesher.GetOutputPort())
+    solver.SetConvergenceThreshold(1e-6)
+    solver.SetForceAllEffects(force)
+    solver.Update()
+    return solver
+
+
+# A convex grey room lit by its own ceiling: no shadow rays, one channel.
+c = [(0, 0, 0), (2, 0, 0), (2, 2, 0), (0, 2, 0), (0, 0, 2), (2, 0, 2), (2, 2, 2), (0, 2, 2)]
+faces = [f[::-1] for f in [(0, 3, 2, 1), (4, 5, 6, 7), (0, 1, 5, 4), (2, 3, 7, 6), (0, 4, 7, 3), (1, 2, 6, 5)]]  # inward
+room = make_scene([[c[i] for i in f] for f in faces], [(0.6, 0.6, 0.6)] * 6, [-1, 0, -1, -1, -1, -1],
+                  light_names=["Ceiling"])
+auto, forced = solve(room), solve(room, force=True)
+decided = effects(auto.GetOutput())
+check(list(decided) == ["Visibility", "Interreflection", "Color", "LightSeparation", "ConvergedSolutions",
+                        "DirectIndirectSplit", "MovingLightBasis"], f"effect rows {list(decided)}")
+check(decided["Visibility"][0] == "skipped" and "convex" in decided["Visibility"][1], f"visibility: {decided['Visibility']}")
+check(decided["Color"][0] == "skipped" and "grey" in decided["Color"][1], f"color: {decided['Color']}")
+forced_decisions = effects(forced.GetOutput())
+check(all(forced_decisions[e][0] == "simulated" for e in ("Visibility", "Interreflection", "Color", "ConvergedSolutions")),
+      f"ForceAllEffects simulates everything: {forced_decisions}")
+a, b = cell_array(auto.GetOutput(), "Radiosity_Ceiling"), cell_array(forced.GetOutput(), "Radiosity_Ceiling")
+check(np.allclose(a, b, rtol=1e-6, atol=1e-9), "Auto gives the same radiosity as ForceAllEffects")
+check(auto.GetLastRays() == 0 and forced.GetLastRays() > 0,
+      f"and casts no rays where forced casts {forced.GetLastRays()}")
+
+# Static lights share one solution; relit by default it equals the standard solution.
+scene = read_polydata(os.path.join(DATA, "paper_3lights.vtp"))
+flags = vtkIntArray()
+flags.SetName("StaticLights")
+for value in (1, 0, 1):
+    flags.InsertNextValue(value)
+scene.GetFieldData().AddArray(flags)
+merged = solve(scene, patch=1.5, element=0.375)
+check(light_names(merged.GetOutput()) == ["WarmWhite+Amber", "CoolWhite"], "static lights merged into one bank")
+check(effects(merged.GetOutput())["LightSeparation"][0] == "skipped", "the merge is reported")
+combined = relight.vtkLightTaggedRadiosity()
+combined.SetInputConnection(merged.GetInputConnection(0, 0).GetProducer().GetOutputPort())
+combined.SetSolutionModeToStandardCombined()
+combined.SetConvergenceThreshold(1e-6)
+combined.Update()
+rl = relight.vtkRadiosityRelight()
+rl.SetInputConnection(merged.GetOutputPort())
+rl.Update()
+reference = cell_array(combined.GetOutput(), "Radiosity")
+check(np.allclose(cell_array(rl.GetOutput(), "Radiosity"), reference, rtol=1e-4, atol=1e-5 * reference.max()),
+      "merged static lights relight to the standard solution")
+
+if failures:
+    print(f"{len(failures)} check(s) failed")
+    sys.exit(1)
+print("TestEffects: all checks passed")
