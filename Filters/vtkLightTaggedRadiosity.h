@@ -27,8 +27,8 @@
  * field array `StaticLights` (k integers) marks lights nobody will change, merged into one
  * bank when LightSeparationEffect is Auto.
  *
- * Solves stop at MaximumShots, when the remaining unshot power falls below
- * ConvergenceThreshold times the initial power, when TimeBudget seconds have passed, or
+ * Solves stop at MaximumShots, when every light's remaining unshot power falls below
+ * ConvergenceThreshold times its emitted power, when TimeBudget seconds have passed, or
  * on abort; every stop leaves a valid partial result. Work is spread over all hardware
  * threads; results do not depend on the thread count.
  *
@@ -72,7 +72,8 @@ public:
   ///@}
 
   ///@{
-  /// Stop when remaining unshot power / initial power drops below this. Default 1e-3.
+  /// Stop when every light's remaining unshot power is below this fraction of the power
+  /// it emitted (each light accurate on its own scale). Default 1e-3.
   vtkSetClampMacro(ConvergenceThreshold, double, 0.0, 1.0);
   vtkGetMacro(ConvergenceThreshold, double);
   ///@}

@@ -180,6 +180,14 @@ Solution SolveLights(const ProgressiveRadiosity& solver, const SceneMesh& mesh,
     total.Aborted = t.Aborted;
     total.OutOfTime = t.OutOfTime;
     total.RayCount += t.RayCount;
+    total.RaysSkipped += t.RaysSkipped;
+    total.PairsUnblockable += t.PairsUnblockable;
+    total.DistributionsSkipped += t.DistributionsSkipped;
+    total.SingleChannel = m == 0 ? t.SingleChannel : total.SingleChannel && t.SingleChannel;
+    total.BlockingSurfaces = t.BlockingSurfaces;
+    total.EmittedPower += t.EmittedPower;
+    total.EscapedPower += t.EscapedPower;
+    total.UnshotPower += t.UnshotPower;
     total.FormFactorCount += t.FormFactorCount;
     total.ShotPower += t.ShotPower;
     total.ReceivedPower += t.ReceivedPower;

@@ -27,7 +27,8 @@ enum class EffectMode
 struct SolverOptions
 {
   int MaximumShots = 2000;
-  /// Stop when remaining unshot power / initial power falls below this.
+  /// Stop when every solution's remaining unshot power is below this fraction of its own
+  /// emitted power.
   double ConvergenceThreshold = 1e-3;
   /// Stop after this many seconds of shooting (0: no limit); the result stays valid.
   double TimeBudget = 0;
