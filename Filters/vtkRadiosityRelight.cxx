@@ -13,15 +13,163 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
+#include <fstream>
+#include <sstream>
 #include <cmath>
 
 vtkStandardNewMacro(vtkRadiosityRelight);
 
 vtkRadiosityRelight::vtkRadiosityRelight() = default;
+
+vtkRadiosityRelight::~vtkRadiosityRelight()
+{
+  this->SetScheduleFileName(nullptr);
+}
+
+void vtkRadiosityRelight::AddScheduleEntry(
+  double time, const char* light, double r, double g, double b, double intensity, int enabled)
+{
+  if (!light)
+  {
+    return;
+  }
+  this->Schedule.push_back({ time, light, { r, g, b }, intensity, enabled != 0 });
+  this->Modified();
+}
+
+void vtkRadiosityRelight::ClearSchedule()
+{
+  if (!this->Schedule.empty())
+  {
+    this->Schedule.clear();
+    this->Modified();
+  }
+}
+
+bool vtkRadiosityRelight::LoadSchedule(std::string& error)
+{
+  const std::string file = this->ScheduleFileName ? this->ScheduleFileName : "";
+  if (file == this->LoadedScheduleFile)
+  {
+    return true;
+  }
+  this->FileSchedule.clear();
+  this->LoadedScheduleFile.clear();
+  if (file.empty())
+  {
+    return true;
+  }
+  std::ifstream in(file);
+  if (!in)
+  {
+    error = "cannot open the schedule file '" + file + "'";
+    return false;
+  }
+  std::string line;
+  int number = 0;
+  while (std::getline(in, line))
+  {
+    ++number;
+    std::replace(line.begin(), line.end(), ',', ' ');
+    std::istringstream fields(line);
+    Keyframe k{ 0, "", { 1, 1, 1 }, 1, true };
+    int enabled = 1;
+    if (!(fields >> k.Time >> k.Light >> k.Color[0] >> k.Color[1] >> k.Color[2] >> k.Intensity))
+    {
+      if (number == 1 || line.find_first_not_of(" \t\r") == std::string::npos)
+      {
+        continue; // a header or an empty line
+      }
+      error = "line " + std::to_string(number) + " of '" + file +
+        "' is not 'time, light, r, g, b, intensity[, enabled]'";
+      return false;
+    }
+    if (fields >> enabled)
+    {
+      k.Enabled = enabled != 0;
+    }
+    this->FileSchedule.push_back(k);
+  }
+  this->LoadedScheduleFile = file;
+  return true;
+}
+
+bool vtkRadiosityRelight::ScheduledSetting(
+  const std::string& name, int index, double time, Setting& out) const
+{
+  const Keyframe* before = nullptr;
+  const Keyframe* after = nullptr;
+  for (const auto* list : { &this->FileSchedule, &this->Schedule })
+  {
+    for (const Keyframe& k : *list)
+    {
+      if (k.Light != name && k.Light != std::to_string(index))
+      {
+        continue;
+      }
+      if (k.Time <= time && (!before || k.Time >= before->Time))
+      {
+        before = &k;
+      }
+      if (k.Time >= time && (!after || k.Time < after->Time))
+      {
+        after = &k;
+      }
+    }
+  }
+  if (!before && !after)
+  {
+    return false;
+  }
+  const Keyframe& a = before ? *before : *after;
+  const Keyframe& b = after ? *after : *before;
+  const double w = b.Time > a.Time ? (time - a.Time) / (b.Time - a.Time) : 0.0;
+  out.HasColor = out.HasIntensity = out.HasEnabled = true;
+  for (int c = 0; c < 3; ++c)
+  {
+    out.Color[c] = a.Color[c] + w * (b.Color[c] - a.Color[c]);
+  }
+  out.Intensity = a.Intensity + w * (b.Intensity - a.Intensity);
+  out.Enabled = a.Enabled;
+  return true;
+}
+
+int vtkRadiosityRelight::RequestInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkInformation* info = outputVector->GetInformationObject(0);
+  std::string error;
+  if (!this->LoadSchedule(error))
+  {
+    vtkErrorMacro(<< "Cannot relight: " << error << ".");
+    return 0;
+  }
+  std::vector<double> times;
+  for (const auto* list : { &this->FileSchedule, &this->Schedule })
+  {
+    for (const Keyframe& k : *list)
+    {
+      times.push_back(k.Time);
+    }
+  }
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  if (times.empty())
+  {
+    info->Remove(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+    info->Remove(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
+    return 1;
+  }
+  info->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), times.data(), static_cast<int>(times.size()));
+  const double range[2] = { times.front(), times.back() };
+  info->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+  return 1;
+}
 
 void vtkRadiosityRelight::Setting::ApplyTo(Setting& effective) const
 {
@@ -226,6 +374,16 @@ int vtkRadiosityRelight::RequestData(
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   this->Resolved.clear();
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  double time = 0;
+  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
+  {
+    time = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+  }
+  else if (outInfo->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()))
+  {
+    time = outInfo->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS())[0];
+  }
   this->NamesString.clear();
 
   // Lights: the solver's LightNames, else every Radiosity_* point or cell array.
@@ -324,6 +482,11 @@ int vtkRadiosityRelight::RequestData(
     {
       byName->second.ApplyTo(s);
     }
+    Setting scheduled;
+    if (this->ScheduledSetting(light.Name, i, time, scheduled))
+    {
+      scheduled.ApplyTo(s);
+    }
     auto byIndex = this->ByIndex.find(i);
     if (byIndex != this->ByIndex.end())
     {
@@ -396,6 +559,10 @@ int vtkRadiosityRelight::RequestData(
   }
 
   output->ShallowCopy(input);
+  if (!this->Schedule.empty() || !this->FileSchedule.empty())
+  {
+    output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);
+  }
   if (hasPoints)
   {
     pointResult->SetName("Radiosity");

@@ -50,8 +50,26 @@ public:
   void ClearLightSettings();
   ///@}
 
-  /// Forget every setting made by index or by name.
+  /// Forget every setting made by index or by name (the schedule stays).
   void ResetLights();
+
+  ///@{
+  /**
+   * A light schedule animates lights over time: keyframes (time, light, r, g, b,
+   * intensity, enabled), the light given by name or by index. Between keyframes colour and
+   * intensity are interpolated linearly, `enabled` holds from the previous keyframe. With
+   * a schedule the filter reports its keyframe times as time steps, so a time slider (or
+   * UpdateTimeStep) relights. Entries come from AddScheduleEntry or from a CSV file
+   * (ScheduleFileName; header line optional; columns as above, enabled optional).
+   * Precedence: defaults, then SetLightSetting, then the schedule, then index settings.
+   */
+  void AddScheduleEntry(double time, const char* light, double r, double g, double b, double intensity,
+    int enabled);
+  void ClearSchedule();
+  vtkSetStringMacro(ScheduleFileName);
+  vtkGetStringMacro(ScheduleFileName);
+  int GetNumberOfScheduleEntries() const { return static_cast<int>(this->Schedule.size()); }
+  ///@}
 
   ///@{
   /// Multiplier applied before clamping to display colours. Default 1.
@@ -77,7 +95,8 @@ public:
 
 protected:
   vtkRadiosityRelight();
-  ~vtkRadiosityRelight() override = default;
+  ~vtkRadiosityRelight() override;
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
 private:
@@ -102,6 +121,21 @@ private:
     Setting Effective;
   };
   std::vector<Light> Resolved;
+  struct Keyframe
+  {
+    double Time;
+    std::string Light;
+    double Color[3];
+    double Intensity;
+    bool Enabled;
+  };
+  std::vector<Keyframe> Schedule;     ///< entries from AddScheduleEntry
+  std::vector<Keyframe> FileSchedule; ///< entries read from ScheduleFileName
+  std::string LoadedScheduleFile;
+  char* ScheduleFileName = nullptr;
+  bool LoadSchedule(std::string& error);
+  /// The schedule's settings for `name` (or `index`) at `time`; false if it has none.
+  bool ScheduledSetting(const std::string& name, int index, double time, Setting& out) const;
   std::string NamesString;
   double Exposure = 1.0;
   double IndirectScale = 1.0;

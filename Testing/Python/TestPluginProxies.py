@@ -102,6 +102,15 @@ def main(argv):
     check(n_lights == len(names),
           "NumberOfLights is %d but LightNamesInfo lists %d names" % (n_lights, len(names)))
 
+    # --- a light schedule makes the filter time-aware -------------------------
+    schedule = RadiosityRelight(Input=solver)
+    schedule.LightSchedule = ["0", LIGHT, "1", "1", "1", "1", "1", "4", LIGHT, "1", "0", "0", "2", "1"]
+    schedule.UpdatePipelineInformation()
+    check(list(schedule.TimestepValues) == [0.0, 4.0],
+          "schedule time steps are %r, expected [0, 4]" % (list(schedule.TimestepValues),))
+    schedule.UpdatePipeline(2.0)
+    Delete(schedule)
+
     # --- fetch results ----------------------------------------------------
     solved = servermanager.Fetch(solver)
     relit = servermanager.Fetch(relight)
