@@ -18,6 +18,7 @@ from .vtkRadiosityFilters import (  # noqa: F401
 )
 from .scene import (  # noqa: F401
     ErrorCatcher,
+    FrameRenderer,
     light_names,
     make_scene,
     point_array,

@@ -10,6 +10,7 @@ import pathlib
 import time
 
 from . import (
+    FrameRenderer,
     light_names,
     read_polydata,
     render_png,
@@ -41,6 +42,52 @@ def light_sequence(names):
         ("cool blue, dimmed", night),
         (f"only {names[0]}", single),
     ]
+
+
+def animate(solver, names, out, frames=32):
+    """Lights come up one after another, driven by a schedule; PNG frames plus a movie."""
+    from vtkmodules.vtkIOImage import vtkPNGWriter
+
+    animated = vtkRadiosityRelight()
+    animated.SetInputConnection(solver.GetOutputPort())
+    period = frames / len(names)
+    colours = solver.GetOutput().GetFieldData().GetArray("LightDefaultColors")
+    for i, name in enumerate(names):
+        colour = colours.GetTuple3(i)
+        for t, level in ((i * period - period, 0.1), (i * period, 4.0), (i * period + 2 * period, 0.1)):
+            animated.AddScheduleEntry(t, name, *colour, INTENSITY * level, 1)
+    folder = out / "animation"
+    folder.mkdir(exist_ok=True)
+    renderer = FrameRenderer(CAMERA, (480, 360))
+    movie = None
+    try:
+        from vtkmodules.vtkIOOggTheora import vtkOggTheoraWriter
+        movie = vtkOggTheoraWriter()
+        movie.SetFileName(str(out / "relight_animation.ogv"))
+        movie.SetRate(8)
+        movie.SetQuality(2)
+    except ImportError:
+        print("no movie encoder in this VTK: writing frames only")
+    png = vtkPNGWriter()
+    times = []
+    for frame in range(frames):
+        start = time.perf_counter()
+        animated.UpdateTimeStep(float(frame))
+        times.append(time.perf_counter() - start)
+        image = renderer.render(animated.GetOutput())
+        png.SetInputData(image)
+        png.SetFileName(str(folder / f"frame_{frame:02d}.png"))
+        png.Write()
+        if movie is not None:
+            movie.SetInputData(image)
+            if frame == 0:
+                movie.Start()
+            movie.Write()
+    if movie is not None:
+        movie.End()
+    renderer.close()
+    print(f"animation: {frames} frames in {folder}/" + (f", movie {movie.GetFileName()}" if movie else "") +
+          f"; relight per frame {1e3 * sum(times) / len(times):.3f} ms (schedule interpolation included)")
 
 
 def main():
@@ -97,6 +144,8 @@ def main():
         image = out / f"relight_{frame:02d}.png"
         render_png(relight.GetOutput(), image, CAMERA)
         print(f"frame {frame}: {title:32s} relight {frame_times[-1] * 1e3:7.3f} ms -> {image}")
+
+    animate(solver, names, out)
 
     relight.ResetLights()
     for i in range(len(names)):

@@ -180,6 +180,48 @@ def render_png(data, path, camera, size=(640, 480)):
     window.Finalize()
 
 
+class FrameRenderer:
+    """One off-screen window reused for many frames (an animation), unlit like render_png."""
+
+    def __init__(self, camera, size=(640, 480)):
+        self.mapper = vtkPolyDataMapper()
+        self.mapper.SetScalarModeToUsePointData()
+        self.mapper.SetColorModeToDirectScalars()
+        actor = vtkActor()
+        actor.SetMapper(self.mapper)
+        actor.GetProperty().SetAmbient(1.0)
+        actor.GetProperty().SetDiffuse(0.0)
+        actor.GetProperty().SetSpecular(0.0)
+        self.renderer = vtkRenderer()
+        self.renderer.AddActor(actor)
+        self.renderer.SetBackground(0.1, 0.1, 0.12)
+        self.window = vtkRenderWindow()
+        self.window.SetOffScreenRendering(1)
+        self.window.AddRenderer(self.renderer)
+        self.window.SetSize(*size)
+        position, focal, up, angle = _camera_settings(camera)
+        cam = self.renderer.GetActiveCamera()
+        cam.SetPosition(*position)
+        cam.SetFocalPoint(*focal)
+        cam.SetViewUp(*up)
+        cam.SetViewAngle(angle)
+        self.grab = vtkWindowToImageFilter()
+        self.grab.SetInput(self.window)
+        self.grab.ReadFrontBufferOff()
+
+    def render(self, data):
+        """Renders `data` and returns the frame as vtkImageData."""
+        self.mapper.SetInputData(data)
+        self.renderer.ResetCameraClippingRange()
+        self.window.Render()
+        self.grab.Modified()
+        self.grab.Update()
+        return self.grab.GetOutput()
+
+    def close(self):
+        self.window.Finalize()
+
+
 def write_exr(data, path, camera, size=(640, 480), array="Radiosity"):
     """Writes a linear HDR view of the point array `array` as OpenEXR."""
     writer = vtkRadiosityEXRWriter()
