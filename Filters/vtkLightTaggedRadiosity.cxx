@@ -3,6 +3,7 @@
 
 #include "Effects.h"
 #include "LightSolutions.h"
+#include "MovingLights.h"
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -21,6 +22,7 @@
 #include "vtkTable.h"
 
 #include <chrono>
+#include <cstdio>
 
 vtkStandardNewMacro(vtkLightTaggedRadiosity);
 
@@ -239,8 +241,25 @@ int vtkLightTaggedRadiosity::RequestData(
     }
     fields->AddArray(defaults);
   }
-  const std::vector<radiosity::EffectDecision> effects =
+  std::vector<radiosity::EffectDecision> effects =
     radiosity::DescribeEffects(mesh, options, result, grouping, lights, mode);
+  if (this->PatchBasis && !stats.Aborted)
+  {
+    radiosity::SolverStatistics basisStats;
+    const std::vector<float> basis = radiosity::SolvePatchBasis(solver, mesh, options, basisStats);
+    const int patches = static_cast<int>(solver.Geometry().patchElements.size());
+    vtkNew<vtkFloatArray> array;
+    array->SetName("PatchBasis");
+    array->SetNumberOfComponents(3 * patches);
+    array->SetNumberOfTuples(static_cast<vtkIdType>(cells));
+    std::copy(basis.begin(), basis.end(), array->GetPointer(0));
+    output->GetCellData()->AddArray(array);
+    char reason[256];
+    std::snprintf(reason, sizeof(reason),
+      "simulated: asked for (PatchBasis), %d patches x %zu elements, %.1f KB, %d shots", patches, cells,
+      basis.size() * sizeof(float) / 1024.0, basisStats.Shots);
+    effects.back() = { "MovingLightBasis", true, reason };
+  }
   vtkNew<vtkStringArray> effectNames, decisions, reasons;
   effectNames->SetName("Effects");
   decisions->SetName("EffectDecisions");

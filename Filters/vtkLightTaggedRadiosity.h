@@ -169,6 +169,17 @@ public:
   ///@}
 
   ///@{
+  /// Also solve the moving-light basis (paper 2.4): every patch a unit emitter, output as
+  /// the cell array `PatchBasis` (3P float components per element: patch q's RGB at 3q).
+  /// It holds only reflected light: each patch's own unit emission is removed, so that
+  /// vtkRadiosityRelight adds it as the frame's direct light. Memory: 12 P bytes per
+  /// element (reported in EffectReasons). Off by default.
+  vtkSetMacro(PatchBasis, bool);
+  vtkGetMacro(PatchBasis, bool);
+  vtkBooleanMacro(PatchBasis, bool);
+  ///@}
+
+  ///@{
   /// Threads for the form factors; 0 (default) uses every hardware thread.
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
   vtkGetMacro(NumberOfThreads, int);
@@ -207,6 +218,7 @@ private:
   int LightSeparationEffect = EFFECT_AUTO;
   int ConvergedLightsEffect = EFFECT_AUTO;
   bool ForceAllEffects = false;
+  bool PatchBasis = false;
   int LastShots = 0;
   bool LastConverged = false;
   long long LastRays = 0;

@@ -1,6 +1,9 @@
 #include "vtkRadiosityRelight.h"
 
+#include "LightSolutions.h"
+#include "MovingLights.h"
 #include "Relight.h"
+#include "vtkRadiosityAdapter.h"
 #include "WorkerPool.h"
 
 #include "vtkCellData.h"
@@ -18,17 +21,159 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
+#include <chrono>
+#include <memory>
 #include <fstream>
 #include <sstream>
 #include <cmath>
 
+namespace
+{
+/// Shared by every relight filter: threads are started once per process, not per frame.
+const radiosity::WorkerPool& Pool()
+{
+  static const radiosity::WorkerPool pool(0);
+  return pool;
+}
+
+}
+
 vtkStandardNewMacro(vtkRadiosityRelight);
 
-vtkRadiosityRelight::vtkRadiosityRelight() = default;
+struct vtkRadiosityRelight::MovingState
+{
+  vtkMTimeType SceneTime = 0, DynamicTime = 0;
+  radiosity::SceneMesh Scene, Dynamic;
+  std::unique_ptr<radiosity::MovingLightShader> Shader;
+};
+
+vtkRadiosityRelight::vtkRadiosityRelight()
+{
+  this->SetNumberOfInputPorts(3);
+}
 
 vtkRadiosityRelight::~vtkRadiosityRelight()
 {
   this->SetScheduleFileName(nullptr);
+  delete this->Moving;
+}
+
+int vtkRadiosityRelight::FillInputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  if (port > 0)
+  {
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  }
+  return 1;
+}
+
+bool vtkRadiosityRelight::AddMovingLights(vtkPolyData* scene, vtkPolyData* lights, vtkPolyData* dynamic,
+  vtkFloatArray* pointResult, vtkFloatArray* cellResult, std::string& error)
+{
+  const auto start = std::chrono::steady_clock::now();
+  vtkDataArray* basis = scene->GetCellData()->GetArray("PatchBasis");
+  if (!vtkFloatArray::SafeDownCast(basis))
+  {
+    error = "moving lights need the float cell array 'PatchBasis' (vtkLightTaggedRadiosity::PatchBasisOn())";
+    return false;
+  }
+  if (!this->Moving)
+  {
+    this->Moving = new MovingState;
+  }
+  MovingState& state = *this->Moving;
+  const vtkMTimeType sceneTime = scene->GetMTime();
+  const vtkMTimeType dynamicTime = dynamic ? dynamic->GetMTime() : 0;
+  if (!state.Shader || state.SceneTime != sceneTime || state.DynamicTime != dynamicTime)
+  {
+    state = MovingState();
+    std::vector<radiosity::Vec3> unused;
+    int lightCount = 0;
+    if (!vtkRadiosityAdapter::CopyPolygons(scene, state.Scene, error) ||
+      !vtkRadiosityAdapter::ReadSceneArrays(scene, state.Scene, unused, error) ||
+      !(error = radiosity::ValidateScene(state.Scene, lightCount)).empty())
+    {
+      return false;
+    }
+    if (dynamic && dynamic->GetNumberOfPolys() > 0 &&
+      !vtkRadiosityAdapter::CopyPolygons(dynamic, state.Dynamic, error))
+    {
+      error = "dynamic objects: " + error;
+      return false;
+    }
+    state.Shader.reset(new radiosity::MovingLightShader(
+      state.Scene, state.Dynamic.NumberOfPolygons() > 0 ? &state.Dynamic : nullptr));
+    state.SceneTime = sceneTime;
+    state.DynamicTime = dynamicTime;
+  }
+  const radiosity::SceneGeometry& g = state.Shader->Geometry();
+  const int patches = static_cast<int>(g.patchElements.size());
+  if (basis->GetNumberOfComponents() != 3 * patches || basis->GetNumberOfTuples() != scene->GetNumberOfCells())
+  {
+    error = "'PatchBasis' has " + std::to_string(basis->GetNumberOfComponents()) +
+      " components; the scene's " + std::to_string(patches) + " patches need " + std::to_string(3 * patches);
+    return false;
+  }
+  std::vector<radiosity::MovingLight> movers(lights->GetNumberOfPoints());
+  vtkDataArray* color = lights->GetPointData()->GetArray("Color");
+  vtkDataArray* intensity = lights->GetPointData()->GetArray("Intensity");
+  vtkDataArray* normal = lights->GetPointData()->GetArray("Normal");
+  for (vtkIdType i = 0; i < lights->GetNumberOfPoints(); ++i)
+  {
+    radiosity::MovingLight& light = movers[i];
+    double v[3];
+    lights->GetPoint(i, v);
+    light.Position = { v[0], v[1], v[2] };
+    if (color && color->GetNumberOfComponents() == 3)
+    {
+      color->GetTuple(i, v);
+      light.Color = { v[0], v[1], v[2] };
+    }
+    if (intensity)
+    {
+      light.Intensity = intensity->GetComponent(i, 0);
+    }
+    if (normal && normal->GetNumberOfComponents() == 3)
+    {
+      normal->GetTuple(i, v);
+      light.Normal = { v[0], v[1], v[2] };
+    }
+    const radiosity::Vec3& p = light.Position;
+    if (!std::isfinite(p.x + p.y + p.z + light.Intensity + light.Color.x + light.Color.y + light.Color.z))
+    {
+      error = "moving light " + std::to_string(i) + " has a non-finite position, colour or intensity";
+      return false;
+    }
+  }
+  std::vector<radiosity::Vec3> direct, cells;
+  this->LastMovingRays = state.Shader->Direct(movers, Pool(), direct);
+  radiosity::AddBasisInterreflection(
+    g, direct, vtkFloatArray::SafeDownCast(basis)->GetPointer(0), patches, Pool(), cells);
+  if (cellResult->GetNumberOfTuples() == static_cast<vtkIdType>(cells.size()))
+  {
+    float* out = cellResult->GetPointer(0);
+    for (size_t e = 0; e < cells.size(); ++e)
+    {
+      out[3 * e + 0] += static_cast<float>(cells[e].x);
+      out[3 * e + 1] += static_cast<float>(cells[e].y);
+      out[3 * e + 2] += static_cast<float>(cells[e].z);
+    }
+  }
+  if (pointResult->GetNumberOfTuples() == scene->GetNumberOfPoints())
+  {
+    const std::vector<radiosity::Vec3> points = radiosity::AverageToPoints(state.Scene, g, cells, 1);
+    float* out = pointResult->GetPointer(0);
+    for (size_t p = 0; p < points.size(); ++p)
+    {
+      out[3 * p + 0] += static_cast<float>(points[p].x);
+      out[3 * p + 1] += static_cast<float>(points[p].y);
+      out[3 * p + 2] += static_cast<float>(points[p].z);
+    }
+  }
+  this->LastMovingSeconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return true;
 }
 
 void vtkRadiosityRelight::AddScheduleEntry(
@@ -286,13 +431,6 @@ void vtkRadiosityRelight::PrintSelf(ostream& os, vtkIndent indent)
 
 namespace
 {
-/// Shared by every relight filter: threads are started once per process, not per frame.
-const radiosity::WorkerPool& Pool()
-{
-  static const radiosity::WorkerPool pool(0);
-  return pool;
-}
-
 /// Combines the arrays of one attribute set; false with a message on a bad array.
 bool Combine(vtkFieldData* data, const std::vector<std::string>& arrays,
   const std::vector<double>& weights, vtkIdType tuples, vtkFloatArray* out, std::string& error)
@@ -553,6 +691,17 @@ int vtkRadiosityRelight::RequestData(
                       input->GetNumberOfPoints(), pointResult, error)) ||
     (hasCells && !Combine(input->GetCellData(), cellArrays, weights, input->GetNumberOfCells(),
                    cellResult, error)))
+  {
+    vtkErrorMacro(<< "Cannot relight: " << error << ".");
+    return 0;
+  }
+
+  this->LastMovingRays = 0;
+  this->LastMovingSeconds = 0;
+  vtkPolyData* movers = this->GetNumberOfInputConnections(1) ? vtkPolyData::GetData(inputVector[1], 0) : nullptr;
+  vtkPolyData* dynamic = this->GetNumberOfInputConnections(2) ? vtkPolyData::GetData(inputVector[2], 0) : nullptr;
+  if (movers && movers->GetNumberOfPoints() > 0 &&
+    !this->AddMovingLights(input, movers, dynamic, pointResult, cellResult, error))
   {
     vtkErrorMacro(<< "Cannot relight: " << error << ".");
     return 0;

@@ -14,6 +14,17 @@
  * B = Direct + IndirectScale * (Radiosity - Direct). Lights are addressed by index (SetLightColor
  * etc.) or by name (SetLightSetting, used by ParaView); index settings win.
  *
+ * Moving lights (paper 2.4): an optional second input (port 1) of point lights, a
+ * vtkPolyData whose points are the lights with point arrays `Color` (3, default white),
+ * `Intensity` (radiant intensity, default 1) and optionally `Normal` (3: a small Lambertian
+ * emitter facing it instead of an isotropic light). Each execution shoots their direct
+ * light to every element (Embree shadow rays), sets each patch's emission to the light it
+ * reflects and lets the solver's `PatchBasis` carry the interreflection:
+ * B = direct + sum_q E_q basis_q, added to the static lights' combination. An optional
+ * third input (port 2) holds dynamic objects that cast shadows of the moving lights'
+ * direct light only. The pipeline's time reaches both inputs, so time-varying sources
+ * animate the lights.
+ *
  * Output: the input plus point and cell arrays `Radiosity` (3 components, linear exitance)
  * and `DisplayColors` (unsigned char RGB: Radiosity times Exposure, clamped, sRGB), the
  * latter active so a default mapper shows it directly.
@@ -25,6 +36,8 @@
 
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkRadiosityFiltersModule.h" // for export macro
+
+class vtkFloatArray;
 
 #include <map>     // for settings
 #include <string>  // for names
@@ -84,6 +97,12 @@ public:
   ///@}
 
   ///@{
+  /// Work of the last execution for the moving lights: shadow rays and seconds (0 without).
+  vtkGetMacro(LastMovingRays, long long);
+  vtkGetMacro(LastMovingSeconds, double);
+  ///@}
+
+  ///@{
   /// The lights found by the last execution and their effective settings.
   int GetNumberOfLights() const { return static_cast<int>(this->Resolved.size()); }
   const char* GetLightName(int light) const;
@@ -98,6 +117,7 @@ protected:
   ~vtkRadiosityRelight() override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
 
 private:
   vtkRadiosityRelight(const vtkRadiosityRelight&) = delete;
@@ -137,6 +157,12 @@ private:
   /// The schedule's settings for `name` (or `index`) at `time`; false if it has none.
   bool ScheduledSetting(const std::string& name, int index, double time, Setting& out) const;
   std::string NamesString;
+  struct MovingState;
+  MovingState* Moving = nullptr; ///< scene and Embree shader, rebuilt only when inputs change
+  bool AddMovingLights(vtkPolyData* scene, vtkPolyData* lights, vtkPolyData* dynamic,
+    vtkFloatArray* pointResult, vtkFloatArray* cellResult, std::string& error);
+  long long LastMovingRays = 0;
+  double LastMovingSeconds = 0;
   double Exposure = 1.0;
   double IndirectScale = 1.0;
 };
