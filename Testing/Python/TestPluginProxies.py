@@ -111,6 +111,18 @@ def main(argv):
     schedule.UpdatePipeline(2.0)
     Delete(schedule)
 
+    # --- a moving light through the second input ------------------------------
+    basis_solver = LightTaggedRadiosity(Input=mesher, PatchBasis=1, MaximumShots=200)
+    lamp = PointSource(Center=[278.0, 400.0, 280.0], NumberOfPoints=1, Radius=0.0)
+    moving = RadiosityRelight(Input=basis_solver, MovingLights=lamp)
+    moving.LightSettings = [LIGHT, "1", "1", "1", "1", "0"]  # the ceiling lamp off
+    moving.UpdatePipeline()
+    moved = servermanager.Fetch(moving).GetCellData().GetArray("Radiosity")
+    check(moved is not None and moved.GetRange(0)[1] > 0,
+          "a moving light on the second input lights the scene with the ceiling lamp off")
+    for proxy in (moving, lamp, basis_solver):
+        Delete(proxy)
+
     # --- fetch results ----------------------------------------------------
     solved = servermanager.Fetch(solver)
     relit = servermanager.Fetch(relight)
