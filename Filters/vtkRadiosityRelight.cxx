@@ -285,7 +285,7 @@ bool vtkRadiosityRelight::ScheduledSetting(
 }
 
 int vtkRadiosityRelight::RequestInformation(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkInformation* info = outputVector->GetInformationObject(0);
   std::string error;
@@ -294,6 +294,8 @@ int vtkRadiosityRelight::RequestInformation(
     vtkErrorMacro(<< "Cannot relight: " << error << ".");
     return 0;
   }
+  // Time steps: the schedule's keyframes and those of a time-varying moving-light source.
+  // Without either, the scene's own (copied by the pipeline) stay as they are.
   std::vector<double> times;
   for (const auto* list : { &this->FileSchedule, &this->Schedule })
   {
@@ -302,12 +304,19 @@ int vtkRadiosityRelight::RequestInformation(
       times.push_back(k.Time);
     }
   }
+  if (this->GetNumberOfInputConnections(1) > 0)
+  {
+    vtkInformation* lights = inputVector[1]->GetInformationObject(0);
+    if (lights->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()))
+    {
+      const double* steps = lights->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+      times.insert(times.end(), steps, steps + lights->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()));
+    }
+  }
   std::sort(times.begin(), times.end());
   times.erase(std::unique(times.begin(), times.end()), times.end());
   if (times.empty())
   {
-    info->Remove(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
-    info->Remove(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
     return 1;
   }
   info->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), times.data(), static_cast<int>(times.size()));

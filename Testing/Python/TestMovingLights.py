@@ -115,6 +115,46 @@ check(np.all(shadowed[below] == 0) and np.allclose(shadowed[~below & (np.abs(c[:
       "a dynamic object shadows the floor below it and nothing far away")
 rl.RemoveAllInputConnections(2)
 
+# --- 4. a time-varying light source drives the animation through the pipeline's time ---------
+from vtkmodules.util.vtkAlgorithm import VTKPythonAlgorithmBase  # noqa: E402
+from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline as sddp  # noqa: E402
+
+
+class LightOnAPath(VTKPythonAlgorithmBase):
+    """One point light moving along x over time steps 0..4."""
+
+    def __init__(self):
+        super().__init__(nInputPorts=0, nOutputPorts=1, outputType="vtkPolyData")
+
+    def RequestInformation(self, request, inInfo, outInfo):
+        info = outInfo.GetInformationObject(0)
+        info.Set(sddp.TIME_STEPS(), [0.0, 1.0, 2.0, 3.0, 4.0], 5)
+        info.Set(sddp.TIME_RANGE(), [0.0, 4.0], 2)
+        return 1
+
+    def RequestData(self, request, inInfo, outInfo):
+        info = outInfo.GetInformationObject(0)
+        t = info.Get(sddp.UPDATE_TIME_STEP()) if info.Has(sddp.UPDATE_TIME_STEP()) else 0.0
+        out = vtkPolyData.GetData(outInfo)
+        out.ShallowCopy(lights([(0.2 + 0.4 * t, 1.0, 1.5)]))
+        return 1
+
+
+path = LightOnAPath()
+animated = relight.vtkRadiosityRelight()
+animated.SetInputConnection(0, solver.GetOutputPort())
+animated.SetInputConnection(1, path.GetOutputPort())
+animated.SetLightEnabled(0, False)
+animated.UpdateInformation()
+steps = animated.GetOutputInformation(0).Get(sddp.TIME_STEPS())
+check(steps is not None and list(steps) == [0.0, 1.0, 2.0, 3.0, 4.0], f"the path's time steps reach the output: {steps}")
+brightest = []
+for t in (0.0, 4.0):
+    animated.UpdateTimeStep(t)
+    values = cell_array(animated.GetOutput(), "Radiosity")[:, 0]
+    brightest.append(float(c[np.argmax(values[on_floor]), 0]))
+check(brightest[0] < 0.5 and brightest[1] > 1.5, f"the lit spot follows the light along x: {brightest}")
+
 # --- 2. moving light vs full solve, error against patch size ----------------------------------
 # A lamp close to a reflective wall, so its direct light varies a lot within a patch: the
 # basis spreads each patch's reflected light evenly, which is what finer patches improve.
