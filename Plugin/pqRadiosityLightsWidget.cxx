@@ -1,0 +1,170 @@
+#include "pqRadiosityLightsWidget.h"
+
+#include "vtkCommand.h"
+#include "vtkEventQtSlotConnect.h"
+#include "vtkSMPropertyHelper.h"
+#include "vtkSMProxy.h"
+#include "vtkSMStringVectorProperty.h"
+
+#include <QCheckBox>
+#include <QColorDialog>
+#include <QDoubleSpinBox>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include <algorithm>
+
+pqRadiosityLightsWidget::pqRadiosityLightsWidget(vtkSMProxy* proxy, vtkSMProperty* property, QWidget* parent)
+  : Superclass(proxy, parent)
+  , Property(property)
+  , Table(new QTableWidget(0, 4, this))
+  , Connection(vtkEventQtSlotConnect::New())
+{
+  this->setShowLabel(false);
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  layout->addWidget(new QLabel("Lights (after the first Apply):", this));
+  this->Table->setHorizontalHeaderLabels({ "Light", "Colour", "Intensity", "On" });
+  this->Table->verticalHeader()->hide();
+  this->Table->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+  this->Table->setSelectionMode(QAbstractItemView::NoSelection);
+  layout->addWidget(this->Table);
+  // The names are known once the filter has run: rebuild after every update of the data.
+  this->Connection->Connect(proxy, vtkCommand::UpdateDataEvent, this, SLOT(rebuild()));
+  this->rebuild();
+}
+
+pqRadiosityLightsWidget::~pqRadiosityLightsWidget()
+{
+  this->Connection->Disconnect();
+  this->Connection->Delete();
+}
+
+void pqRadiosityLightsWidget::rebuild()
+{
+  vtkSMProxy* proxy = this->proxy();
+  proxy->UpdatePropertyInformation();
+  const QStringList names =
+    QString(vtkSMPropertyHelper(proxy, "LightNamesInfo").GetAsString()).split(';', Qt::SkipEmptyParts);
+  // Current values: rows of the property (name, r, g, b, intensity, enabled).
+  vtkSMPropertyHelper values(this->Property);
+  QVector<Light> lights;
+  for (const QString& name : names)
+  {
+    Light light;
+    light.Name = name;
+    for (unsigned int i = 0; i + 5 < values.GetNumberOfElements(); i += 6)
+    {
+      if (name == values.GetAsString(i))
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          light.Color[c] = QString(values.GetAsString(i + 1 + c)).toDouble();
+        }
+        light.Intensity = QString(values.GetAsString(i + 4)).toDouble();
+        light.Enabled = QString(values.GetAsString(i + 5)).toInt() != 0;
+        light.Edited = true;
+      }
+    }
+    lights.push_back(light);
+  }
+  if (lights.size() == this->Lights.size() &&
+    std::equal(lights.begin(), lights.end(), this->Lights.begin(),
+      [](const Light& a, const Light& b) { return a.Name == b.Name; }))
+  {
+    return; // same lights: keep the user's unapplied edits
+  }
+  this->Lights = lights;
+  this->Updating = true;
+  this->Table->setRowCount(lights.size());
+  for (int row = 0; row < lights.size(); ++row)
+  {
+    auto* name = new QTableWidgetItem(lights[row].Name);
+    name->setFlags(Qt::ItemIsEnabled);
+    this->Table->setItem(row, 0, name);
+
+    auto* color = new QPushButton(this->Table);
+    this->Table->setCellWidget(row, 1, color);
+    QObject::connect(color, &QPushButton::clicked, this, [this, row]() {
+      Light& light = this->Lights[row];
+      const QColor chosen = QColorDialog::getColor(
+        QColor::fromRgbF(std::min(1.0, light.Color[0]), std::min(1.0, light.Color[1]), std::min(1.0, light.Color[2])),
+        this, "Colour of " + light.Name);
+      if (chosen.isValid())
+      {
+        light.Color[0] = chosen.redF();
+        light.Color[1] = chosen.greenF();
+        light.Color[2] = chosen.blueF();
+        light.Edited = true;
+        this->paintColorButton(row);
+        this->push();
+      }
+    });
+    this->paintColorButton(row);
+
+    auto* intensity = new QDoubleSpinBox(this->Table);
+    intensity->setRange(0.0, 1e9);
+    intensity->setDecimals(3);
+    intensity->setValue(lights[row].Intensity);
+    this->Table->setCellWidget(row, 2, intensity);
+    QObject::connect(intensity, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this, row](double v) {
+      this->Lights[row].Intensity = v;
+      this->Lights[row].Edited = true;
+      this->push();
+    });
+
+    auto* enabled = new QCheckBox(this->Table);
+    enabled->setChecked(lights[row].Enabled);
+    this->Table->setCellWidget(row, 3, enabled);
+    QObject::connect(enabled, &QCheckBox::toggled, this, [this, row](bool on) {
+      this->Lights[row].Enabled = on;
+      this->Lights[row].Edited = true;
+      this->push();
+    });
+  }
+  this->Updating = false;
+}
+
+void pqRadiosityLightsWidget::paintColorButton(int row)
+{
+  auto* button = qobject_cast<QPushButton*>(this->Table->cellWidget(row, 1));
+  const Light& light = this->Lights[row];
+  const QColor shown = QColor::fromRgbF(
+    std::min(1.0, light.Color[0]), std::min(1.0, light.Color[1]), std::min(1.0, light.Color[2]));
+  button->setText(light.Edited ? "" : "default");
+  button->setStyleSheet(light.Edited ? QString("background-color: %1").arg(shown.name()) : QString());
+}
+
+void pqRadiosityLightsWidget::push()
+{
+  if (this->Updating)
+  {
+    return;
+  }
+  std::vector<std::string> elements;
+  for (const Light& light : this->Lights)
+  {
+    if (!light.Edited)
+    {
+      continue;
+    }
+    elements.push_back(light.Name.toStdString());
+    for (double c : light.Color)
+    {
+      elements.push_back(QString::number(c, 'g', 9).toStdString());
+    }
+    elements.push_back(QString::number(light.Intensity, 'g', 9).toStdString());
+    elements.push_back(light.Enabled ? "1" : "0");
+  }
+  vtkSMPropertyHelper helper(this->Property);
+  helper.SetNumberOfElements(static_cast<unsigned int>(elements.size()));
+  for (unsigned int i = 0; i < elements.size(); ++i)
+  {
+    helper.Set(i, elements[i].c_str());
+  }
+  Q_EMIT this->changeAvailable();
+  Q_EMIT this->changeFinished();
+}

@@ -1,0 +1,45 @@
+// ParaView panel for the relight filter's per-light settings: one row per light, by name,
+// with a colour button, an intensity box and an on/off check box.
+#ifndef pqRadiosityLightsWidget_h
+#define pqRadiosityLightsWidget_h
+
+#include "pqPropertyWidget.h"
+
+#include <QVector>
+
+class QTableWidget;
+class vtkEventQtSlotConnect;
+
+class pqRadiosityLightsWidget : public pqPropertyWidget
+{
+  Q_OBJECT
+  typedef pqPropertyWidget Superclass;
+
+public:
+  pqRadiosityLightsWidget(vtkSMProxy* proxy, vtkSMProperty* property, QWidget* parent = nullptr);
+  ~pqRadiosityLightsWidget() override;
+
+private Q_SLOTS:
+  /// Rows for the lights the filter found (its LightNamesInfo), values from the property.
+  void rebuild();
+
+private:
+  struct Light
+  {
+    QString Name;
+    double Color[3] = { 1, 1, 1 };
+    double Intensity = 1;
+    bool Enabled = true;
+    bool Edited = false; ///< only edited lights are written, others keep their defaults
+  };
+  void push();
+  void paintColorButton(int row);
+
+  vtkSMProperty* Property;
+  QTableWidget* Table;
+  QVector<Light> Lights;
+  vtkEventQtSlotConnect* Connection;
+  bool Updating = false;
+};
+
+#endif
