@@ -192,6 +192,14 @@ int vtkLightTaggedRadiosity::RequestData(
     vtkWarningMacro(<< "Solve aborted after " << stats.Shots
                     << " shots; the output holds the partial result.");
   }
+  if (!stats.Converged && !stats.Aborted && !stats.OutOfTime)
+  {
+    vtkWarningMacro(<< "Stopped at MaximumShots (" << this->MaximumShots
+                    << ") before converging: remaining unshot energy "
+                    << (stats.RemainingHistory.empty() ? 1.0 : stats.RemainingHistory.back())
+                    << " of the initial, threshold " << this->ConvergenceThreshold
+                    << ". Raise MaximumShots (or use the ambient term) for a converged result.");
+  }
   if (stats.OutOfTime)
   {
     vtkWarningMacro(<< "TimeBudget of " << this->TimeBudget << " s reached after " << stats.Shots

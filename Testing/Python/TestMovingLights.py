@@ -179,6 +179,7 @@ def tagged(patch, basis):
     solver = relight.vtkLightTaggedRadiosity()
     solver.SetInputConnection(mesher.GetOutputPort())
     solver.SetConvergenceThreshold(1e-5)
+    solver.SetMaximumShots(1000000)  # converge: the default cap would stop fine meshes early
     solver.SetPatchBasis(basis)
     solver.SetSeparateDirect(True)
     solver.Update()
