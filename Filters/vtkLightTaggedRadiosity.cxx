@@ -266,7 +266,18 @@ int vtkLightTaggedRadiosity::RequestData(
     std::snprintf(reason, sizeof(reason),
       "simulated: asked for (PatchBasis), %d patches x %zu elements, %.1f KB, %d shots", patches, cells,
       basis.size() * sizeof(float) / 1024.0, basisStats.Shots);
-    effects.back() = { "MovingLightBasis", true, reason };
+    for (radiosity::EffectDecision& row : effects)
+    {
+      if (row.Effect == "MovingLightBasis")
+      {
+        row = { "MovingLightBasis", true, reason };
+      }
+    }
+    if (!basisStats.Converged)
+    {
+      vtkWarningMacro(<< "The patch basis stopped before converging (" << basisStats.Shots
+                      << " shots); moving lights will miss some interreflection.");
+    }
   }
   vtkNew<vtkStringArray> effectNames, decisions, reasons;
   effectNames->SetName("Effects");

@@ -138,7 +138,7 @@ public:
   /// Simulate only what the scene calls for. Each effect is Auto (default: simulated only
   /// where it can change the result, decided conservatively), On or Off:
   /// - Visibility: shadow rays; Auto skips pairs no surface can block (a convex room needs
-  ///   none); Off ignores occlusion.
+  ///   none); Off ignores occlusion (Analytic method only).
   /// - Interreflection: Off keeps direct light only.
   /// - Color: Auto solves one channel when everything is grey; Off always does.
   /// - LightSeparation: Auto merges lights flagged in the field array `StaticLights`
@@ -180,7 +180,7 @@ public:
   ///@}
 
   ///@{
-  /// Threads for the form factors; 0 (default) uses every hardware thread.
+  /// Threads for the solve; 0 (default) uses every hardware thread.
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
   vtkGetMacro(NumberOfThreads, int);
   ///@}

@@ -67,6 +67,12 @@ vtkDataArray* RequireCellArray(
       "; it must be a numeric array";
     return nullptr;
   }
+  if (array->GetNumberOfTuples() != input->GetNumberOfCells())
+  {
+    error = std::string("cell array '") + name + "' has " + std::to_string(array->GetNumberOfTuples()) +
+      " tuples; it needs one per cell (" + std::to_string(input->GetNumberOfCells()) + ")";
+    return nullptr;
+  }
   if (array->GetNumberOfComponents() != components)
   {
     error = std::string("cell array '") + name + "' has " +
@@ -79,9 +85,10 @@ vtkDataArray* RequireCellArray(
     for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
     {
       const double v = array->GetComponent(i, 0);
-      if (!(std::floor(v) == v))
+      // Integral and within int: ids are used as indices.
+      if (!(std::floor(v) == v) || std::fabs(v) > 2147483647.0)
       {
-        error = std::string("cell array '") + name + "' must hold integers; cell " +
+        error = std::string("cell array '") + name + "' must hold integers (in the int range); cell " +
           std::to_string(i) + " has " + std::to_string(v);
         return nullptr;
       }
@@ -162,7 +169,10 @@ std::vector<std::string> LightNames(vtkFieldData* fields, int count)
     if (name.empty() || !used.insert(name).second)
     {
       name = "Light" + std::to_string(i);
-      used.insert(name);
+      for (int suffix = 1; !used.insert(name).second; ++suffix)
+      {
+        name = "Light" + std::to_string(i) + "_" + std::to_string(suffix);
+      }
     }
     names[i] = name;
   }

@@ -104,6 +104,12 @@ bool vtkRadiosityRelight::AddMovingLights(vtkPolyData* scene, vtkPolyData* light
     }
     state.Shader.reset(new radiosity::MovingLightShader(
       state.Scene, state.Dynamic.NumberOfPolygons() > 0 ? &state.Dynamic : nullptr));
+    if (!state.Shader->Error().empty())
+    {
+      error = state.Shader->Error();
+      state.Shader.reset();
+      return false;
+    }
     state.SceneTime = sceneTime;
     state.DynamicTime = dynamicTime;
   }
@@ -111,14 +117,24 @@ bool vtkRadiosityRelight::AddMovingLights(vtkPolyData* scene, vtkPolyData* light
   const int patches = static_cast<int>(g.patchElements.size());
   if (basis->GetNumberOfComponents() != 3 * patches || basis->GetNumberOfTuples() != scene->GetNumberOfCells())
   {
-    error = "'PatchBasis' has " + std::to_string(basis->GetNumberOfComponents()) +
-      " components; the scene's " + std::to_string(patches) + " patches need " + std::to_string(3 * patches);
+    error = "'PatchBasis' has " + std::to_string(basis->GetNumberOfTuples()) + " tuples of " +
+      std::to_string(basis->GetNumberOfComponents()) + " components; the scene needs " +
+      std::to_string(scene->GetNumberOfCells()) + " of " + std::to_string(3 * patches) + " (" +
+      std::to_string(patches) + " patches)";
     return false;
   }
   std::vector<radiosity::MovingLight> movers(lights->GetNumberOfPoints());
   vtkDataArray* color = lights->GetPointData()->GetArray("Color");
   vtkDataArray* intensity = lights->GetPointData()->GetArray("Intensity");
   vtkDataArray* normal = lights->GetPointData()->GetArray("Normal");
+  for (vtkDataArray* array : { color, intensity, normal })
+  {
+    if (array && array->GetNumberOfTuples() != lights->GetNumberOfPoints())
+    {
+      error = std::string("moving-light array '") + array->GetName() + "' needs one tuple per light";
+      return false;
+    }
+  }
   for (vtkIdType i = 0; i < lights->GetNumberOfPoints(); ++i)
   {
     radiosity::MovingLight& light = movers[i];
@@ -374,8 +390,12 @@ void vtkRadiosityRelight::SetLightSetting(
   {
     return;
   }
+  // NaN means "keep the default": a panel that changed only the intensity must not
+  // replace the light's own colour with a guess.
   Setting& s = this->ByName[name];
-  s.HasColor = s.HasIntensity = s.HasEnabled = true;
+  s.HasColor = !(std::isnan(r) || std::isnan(g) || std::isnan(b));
+  s.HasIntensity = !std::isnan(intensity);
+  s.HasEnabled = true;
   s.Color[0] = r;
   s.Color[1] = g;
   s.Color[2] = b;

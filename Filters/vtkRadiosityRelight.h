@@ -58,7 +58,8 @@ public:
   ///@}
 
   ///@{
-  /// Per-light settings by name, all at once (ParaView's repeatable property).
+  /// Per-light settings by name, all at once (ParaView's repeatable property). A NaN
+  /// colour component or intensity keeps that part at its default.
   void SetLightSetting(const char* name, double r, double g, double b, double intensity, int enabled);
   void ClearLightSettings();
   ///@}

@@ -60,10 +60,14 @@ void pqRadiosityLightsWidget::rebuild()
     {
       if (name == values.GetAsString(i))
       {
+        bool numbers = true;
         for (int c = 0; c < 3; ++c)
         {
-          light.Color[c] = QString(values.GetAsString(i + 1 + c)).toDouble();
+          const QString text = values.GetAsString(i + 1 + c);
+          light.Color[c] = text.toDouble();
+          numbers = numbers && text.toLower() != "nan";
         }
+        light.ColorEdited = numbers;
         light.Intensity = QString(values.GetAsString(i + 4)).toDouble();
         light.Enabled = QString(values.GetAsString(i + 5)).toInt() != 0;
         light.Edited = true;
@@ -98,7 +102,7 @@ void pqRadiosityLightsWidget::rebuild()
         light.Color[0] = chosen.redF();
         light.Color[1] = chosen.greenF();
         light.Color[2] = chosen.blueF();
-        light.Edited = true;
+        light.Edited = light.ColorEdited = true;
         this->paintColorButton(row);
         this->push();
       }
@@ -134,8 +138,8 @@ void pqRadiosityLightsWidget::paintColorButton(int row)
   const Light& light = this->Lights[row];
   const QColor shown = QColor::fromRgbF(
     std::min(1.0, light.Color[0]), std::min(1.0, light.Color[1]), std::min(1.0, light.Color[2]));
-  button->setText(light.Edited ? "" : "default");
-  button->setStyleSheet(light.Edited ? QString("background-color: %1").arg(shown.name()) : QString());
+  button->setText(light.ColorEdited ? "" : "default");
+  button->setStyleSheet(light.ColorEdited ? QString("background-color: %1").arg(shown.name()) : QString());
 }
 
 void pqRadiosityLightsWidget::push()
@@ -154,7 +158,7 @@ void pqRadiosityLightsWidget::push()
     elements.push_back(light.Name.toStdString());
     for (double c : light.Color)
     {
-      elements.push_back(QString::number(c, 'g', 9).toStdString());
+      elements.push_back(light.ColorEdited ? QString::number(c, 'g', 9).toStdString() : "nan");
     }
     elements.push_back(QString::number(light.Intensity, 'g', 9).toStdString());
     elements.push_back(light.Enabled ? "1" : "0");

@@ -30,7 +30,8 @@ private:
     double Color[3] = { 1, 1, 1 };
     double Intensity = 1;
     bool Enabled = true;
-    bool Edited = false; ///< only edited lights are written, others keep their defaults
+    bool Edited = false;      ///< only edited lights are written, others keep their defaults
+    bool ColorEdited = false; ///< an unedited colour is written as NaN: keep the default
   };
   void push();
   void paintColorButton(int row);

@@ -62,7 +62,7 @@ std::vector<Vec3> SolutionEmission(
     }
     const int s = grouping.SolutionOfLight[mesh.lightId[e]];
     const bool bank = members[s] > 1 && !emissionColor.empty();
-    emission[e * L + s] = bank ? emissionColor[e] : Vec3{ 1, 1, 1 };
+    emission[static_cast<size_t>(e) * L + s] = bank ? emissionColor[e] : Vec3{ 1, 1, 1 };
   }
   return emission;
 }
@@ -133,13 +133,29 @@ Solution SolveLights(const ProgressiveRadiosity& solver, const SceneMesh& mesh,
   SolverStatistics& total = out.Statistics;
   total.Converged = true;
   std::vector<double> lastRemaining(L, 1.0);
+  // Each solution's emitted power, so the history is total remaining / total initial, as
+  // in the one-pass modes.
+  std::vector<double> initialPower(L, 0.0);
+  double totalInitial = 0;
+  for (int e = 0; e < n; ++e)
+  {
+    for (int m = 0; m < L; ++m)
+    {
+      const Vec3& v = emission[static_cast<size_t>(e) * L + m];
+      initialPower[m] += (v.x + v.y + v.z) * solver.Geometry().area[e];
+    }
+  }
+  for (double p : initialPower)
+  {
+    totalInitial += p;
+  }
   std::vector<Vec3> single(n);
   double elapsed = 0;
   for (int m = 0; m < L; ++m)
   {
     for (int e = 0; e < n; ++e)
     {
-      single[e] = emission[e * L + m];
+      single[e] = emission[static_cast<size_t>(e) * L + m];
     }
     SolverOptions each = options;
     if (options.Progress)
@@ -153,10 +169,10 @@ Solution SolveLights(const ProgressiveRadiosity& solver, const SceneMesh& mesh,
     const Solution s = solver.Solve(single, 1, each);
     for (int e = 0; e < n; ++e)
     {
-      out.Radiosity[e * L + m] = s.Radiosity[e];
+      out.Radiosity[static_cast<size_t>(e) * L + m] = s.Radiosity[e];
       if (options.SeparateDirect)
       {
-        out.Direct[e * L + m] = s.Direct[e];
+        out.Direct[static_cast<size_t>(e) * L + m] = s.Direct[e];
       }
     }
     out.Ambient[m] = s.Ambient[0];
@@ -164,14 +180,14 @@ Solution SolveLights(const ProgressiveRadiosity& solver, const SceneMesh& mesh,
     for (int shot = 0; shot < t.Shots; ++shot)
     {
       lastRemaining[m] = t.RemainingPerSolution[shot];
-      double sum = 0;
-      for (double r : lastRemaining)
+      double remaining = 0;
+      for (int j = 0; j < L; ++j)
       {
-        sum += r;
+        remaining += lastRemaining[j] * initialPower[j];
       }
       total.RemainingPerSolution.insert(
         total.RemainingPerSolution.end(), lastRemaining.begin(), lastRemaining.end());
-      total.RemainingHistory.push_back(sum / L);
+      total.RemainingHistory.push_back(totalInitial > 0 ? remaining / totalInitial : 0.0);
       total.TimeHistory.push_back(elapsed + t.TimeHistory[shot]);
     }
     elapsed += t.TimeHistory.empty() ? 0.0 : t.TimeHistory.back();
@@ -214,7 +230,7 @@ std::vector<Vec3> AverageToPoints(
       weights[ids[v]] += w;
       for (int m = 0; m < columns; ++m)
       {
-        sums[ids[v] * columns + m] += cells[e * columns + m] * w;
+        sums[static_cast<size_t>(ids[v]) * columns + m] += cells[static_cast<size_t>(e) * columns + m] * w;
       }
     }
   }

@@ -29,8 +29,8 @@ struct MeshedPolygons
   int patches = 0;
 };
 
-/// Splits each planar convex polygon (quads on a bilinear grid, others fan-triangulated and
-/// split on a barycentric lattice) into patches with edges <= PatchSize, and each patch
+/// Splits each planar polygon (convex quads on a bilinear grid, others ear-clipped into
+/// triangles and split on a barycentric lattice) into patches with edges <= PatchSize, and each patch
 /// into elements with edges <= ElementSize. Points are shared between elements of input
 /// polygons that lie in one plane with the same `surfaceKey` (the caller's material id)
 /// and touch; everywhere else they are split, so smoothing over shared vertices never

@@ -54,10 +54,10 @@ void Shoot(const SceneMesh& mesh, const SceneGeometry& g, const Visibility& rays
     const int p = g.elementPatch[e];
     for (int m = 0; m < L; ++m)
     {
-      const Value v = Channel::From(emission[e * L + m]);
-      radiosity[e * L + m] = v;
+      const Value v = Channel::From(emission[static_cast<size_t>(e) * L + m]);
+      radiosity[static_cast<size_t>(e) * L + m] = v;
       // Unshot radiosity of a patch: the area average of its elements' emission.
-      unshot[p * L + m] += v * (g.area[e] / g.patchArea[p]);
+      unshot[static_cast<size_t>(p) * L + m] += v * (g.area[e] / g.patchArea[p]);
     }
   }
   if (direct)
@@ -70,7 +70,7 @@ void Shoot(const SceneMesh& mesh, const SceneGeometry& g, const Visibility& rays
   {
     unshotEmission = unshot;
   }
-  auto power = [&](int p, int m) { return Channel::Sum(unshot[p * L + m]) * g.patchArea[p]; };
+  auto power = [&](int p, int m) { return Channel::Sum(unshot[static_cast<size_t>(p) * L + m]) * g.patchArea[p]; };
   std::vector<double> initialPer(L, 0.0), remainingPer(L, 0.0);
   for (int p = 0; p < patches; ++p)
   {
@@ -159,16 +159,20 @@ void Shoot(const SceneMesh& mesh, const SceneGeometry& g, const Visibility& rays
       if (!distribute[m])
       {
         shot[m] = Value();
+        if (direct)
+        {
+          shotEmission[m] = Value();
+        }
         ++stats.DistributionsSkipped;
         continue;
       }
-      shot[m] = unshot[shooter * L + m];
-      unshot[shooter * L + m] = Value();
+      shot[m] = unshot[static_cast<size_t>(shooter) * L + m];
+      unshot[static_cast<size_t>(shooter) * L + m] = Value();
       shotSum += Channel::Sum(shot[m]);
       if (direct)
       {
-        shotEmission[m] = unshotEmission[shooter * L + m];
-        unshotEmission[shooter * L + m] = Value();
+        shotEmission[m] = unshotEmission[static_cast<size_t>(shooter) * L + m];
+        unshotEmission[static_cast<size_t>(shooter) * L + m] = Value();
       }
     }
     stats.ShotPower += shotSum * g.patchArea[shooter];
@@ -186,10 +190,10 @@ void Shoot(const SceneMesh& mesh, const SceneGeometry& g, const Visibility& rays
         const Vec3& rho = mesh.reflectance[e];
         for (int m = 0; m < L; ++m)
         {
-          radiosity[e * L + m] += Channel::Reflect(rho, shot[m], f);
+          radiosity[static_cast<size_t>(e) * L + m] += Channel::Reflect(rho, shot[m], f);
           if (direct)
           {
-            directPart[e * L + m] += Channel::Reflect(rho, shotEmission[m], f);
+            directPart[static_cast<size_t>(e) * L + m] += Channel::Reflect(rho, shotEmission[m], f);
           }
         }
       }
@@ -211,7 +215,7 @@ void Shoot(const SceneMesh& mesh, const SceneGeometry& g, const Visibility& rays
       const double w = f * g.area[e] / g.patchArea[p];
       for (int m = 0; m < L; ++m)
       {
-        unshot[p * L + m] += Channel::Reflect(mesh.reflectance[e], shot[m], w);
+        unshot[static_cast<size_t>(p) * L + m] += Channel::Reflect(mesh.reflectance[e], shot[m], w);
       }
     }
     stats.ReceivedPower += received;
@@ -264,7 +268,7 @@ void Shoot(const SceneMesh& mesh, const SceneGeometry& g, const Visibility& rays
       Vec3 unshotPower;
       for (int p = 0; p < patches; ++p)
       {
-        unshotPower += Channel::To(unshot[p * L + m]) * g.patchArea[p];
+        unshotPower += Channel::To(unshot[static_cast<size_t>(p) * L + m]) * g.patchArea[p];
       }
       const Vec3 a = unshotPower * (1.0 / area);
       out.Ambient[m] = { interreflection.x * a.x, interreflection.y * a.y, interreflection.z * a.z };
@@ -277,7 +281,7 @@ void Shoot(const SceneMesh& mesh, const SceneGeometry& g, const Visibility& rays
     {
       const Vec3& rho = mesh.reflectance[e];
       const Vec3& a = out.Ambient[m];
-      out.Radiosity[e * L + m] = Channel::To(radiosity[e * L + m]) + Vec3{ rho.x * a.x, rho.y * a.y, rho.z * a.z };
+      out.Radiosity[static_cast<size_t>(e) * L + m] = Channel::To(radiosity[static_cast<size_t>(e) * L + m]) + Vec3{ rho.x * a.x, rho.y * a.y, rho.z * a.z };
     }
   }
   if (direct)

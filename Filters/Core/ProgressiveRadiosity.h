@@ -45,7 +45,8 @@ struct SolverOptions
   /// Shadow rays. Auto skips them for pairs no surface can block: only a polygon with
   /// scene geometry behind its plane can come between two surfaces that see each other,
   /// so pairs whose bounding box meets no such polygon are unoccluded (a convex room has
-  /// none at all). Off treats every pair as unoccluded.
+  /// none at all). Off treats every pair as unoccluded. Analytic method only: the
+  /// hemicube's and Monte Carlo's rays are the form factors themselves.
   EffectMode Visibility = EffectMode::Auto;
   /// Reflected light. Off keeps direct light only (emission and its first bounce).
   EffectMode Interreflection = EffectMode::Auto;

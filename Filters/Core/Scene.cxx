@@ -114,6 +114,12 @@ std::string ValidateScene(const SceneMesh& mesh, int& numberOfLights)
         return err.str();
       }
     }
+    if (mesh.lightId[i] >= n)
+    {
+      err << "LightId of cell " << i << " is " << mesh.lightId[i] << "; there are only " << n
+          << " cells, so ids must be -1 or 0..k-1 with k <= " << n;
+      return err.str();
+    }
     if (mesh.lightId[i] < -1)
     {
       err << "LightId of cell " << i << " is " << mesh.lightId[i] << "; use -1 or 0..k-1";

@@ -10,7 +10,7 @@
 namespace radiosity
 {
 
-/// Builds one Embree scene (polygons fan-triangulated) and answers "is the open segment
+/// Builds one Embree scene (polygons triangulated, non-convex ones by ear clipping) and answers "is the open segment
 /// between two points blocked?" from any number of threads at once.
 class Visibility
 {

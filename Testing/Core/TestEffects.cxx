@@ -142,3 +142,18 @@ TEST(Effects, StaticLightsShareOneSolution)
   ASSERT_EQ(GroupLights(3, { 0, 0, 1 }, { 0, 0, 0 }, EffectMode::On, g), "");
   EXPECT_EQ(g.Solutions, 2);
 }
+
+TEST(Effects, DirectOnlyStaysDirectWithSeveralLights)
+{
+  // Interreflection off: radiosity is emission plus first bounce, i.e. exactly the direct
+  // part, for every light, also after some lights stop being shot.
+  SceneMesh room = Box(2.0, 8, 2, { 0.7, 0.6, 0.5 }, [](int face) { return face == 1 ? 0 : -1; });
+  int patch = 1000;
+  AddGrid(room, { 0.9, 0.9, 0.001 }, { 0.05, 0, 0 }, { 0, 0.05, 0 }, 1, 1, { 0.7, 0.7, 0.7 }, 1, patch);
+  SolverOptions o = With(EffectMode::Auto, 1e-6);
+  o.Interreflection = EffectMode::Off;
+  o.SeparateDirect = true;
+  const Solution s = Solve(room, o, 2);
+  ASSERT_EQ(s.Direct.size(), s.Radiosity.size());
+  EXPECT_LT(MaxDifference(s.Direct, s.Radiosity), 1e-15);
+}

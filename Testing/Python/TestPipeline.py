@@ -125,6 +125,14 @@ by_name = default - emission[light_ids == 2].mean(axis=0) * amber + np.array([0.
 check(np.allclose(cell_array(rl.GetOutput(), "Radiosity"), by_name, rtol=1e-5, atol=1e-7),
       "SetLightSetting by name")
 
+# 'nan' keeps a part at its default: only the intensity of Amber changes here.
+rl.ResetLights()
+rl.SetLightSetting("Amber", float("nan"), float("nan"), float("nan"), 4.0, 1)
+rl.Update()
+keep = default - emission[light_ids == 2].mean(axis=0) * amber + 4.0 * emission[light_ids == 2].mean(axis=0) * amber
+check(np.allclose(cell_array(rl.GetOutput(), "Radiosity"), keep, rtol=1e-5, atol=1e-7),
+      "NaN colour in SetLightSetting keeps the default colour")
+
 # --- tagged relit == standard combined, once both converge --------------------------------
 combined = solver_for(os.path.join(DATA, "paper_3lights.vtp"), mode="StandardCombined", threshold=1e-6)
 rl.ResetLights()
