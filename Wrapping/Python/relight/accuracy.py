@@ -26,6 +26,7 @@ from vtkmodules.vtkCommonCore import vtkFloatArray, vtkIntArray, vtkLogger
 from vtkmodules.vtkFiltersSources import vtkCubeSource
 from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
 
+from .demo import CAMERA as DEMO_CAMERA
 from . import (
     cell_array,
     light_names,
@@ -40,7 +41,7 @@ METHODS = {"Analytic": 0, "Hemicube": 1, "MonteCarlo": 2}
 # Cameras for the image comparison: (position, focal point, view up, view angle).
 CAMERAS = {
     "cornell": ((278, 273, -800), (278, 273, 0), (0, 1, 0), 39.3),
-    "paper3": ((2.0, 1.5, 0.05), (2.0, 0.9, 4.0), (0, 1, 0), 80.0),
+    "paper3": DEMO_CAMERA,
 }
 
 
@@ -268,7 +269,7 @@ def plot(rows, path):
     fig, axes = plt.subplots(1, len(scenes), figsize=(5.2 * len(scenes), 4.4), squeeze=False)
     colours = {"Analytic": "tab:blue", "Hemicube": "tab:orange", "MonteCarlo": "tab:green"}
     for ax, scene in zip(axes[0], scenes):
-        points = [p for p in per_setting(rows, scene) if not p[2]["force_all"]]
+        points = per_setting(rows, scene)
         for seconds, error, r in points:
             ax.scatter(seconds, max(error, 1e-6), color=colours[r["method"]], s=18 + 6 * r["samples"] ** 0.25,
                        marker="o" if not r["ambient"] else "^", alpha=0.8)

@@ -132,11 +132,6 @@ def cell_array(data, name):
     return vtk_to_numpy(array)
 
 
-def _camera_settings(camera):
-    position, focal, up, angle = camera
-    return position, focal, up, angle
-
-
 def render_png(data, path, camera, size=(640, 480)):
     """Renders the relit `data` (its DisplayColors point scalars) to a PNG file.
 
@@ -144,44 +139,17 @@ def render_png(data, path, camera, size=(640, 480)):
     (ambient 1, diffuse 0): what you see is the solution.
     `camera` = (position, focal_point, view_up, view_angle_degrees).
     """
-    mapper = vtkPolyDataMapper()
-    mapper.SetInputData(data)
-    mapper.SetScalarModeToUsePointData()
-    mapper.SetColorModeToDirectScalars()
-    mapper.ScalarVisibilityOn()
-    actor = vtkActor()
-    actor.SetMapper(mapper)
-    actor.GetProperty().SetAmbient(1.0)
-    actor.GetProperty().SetDiffuse(0.0)
-    actor.GetProperty().SetSpecular(0.0)
-    renderer = vtkRenderer()
-    renderer.AddActor(actor)
-    renderer.SetBackground(0.1, 0.1, 0.12)
-    window = vtkRenderWindow()
-    window.SetOffScreenRendering(1)
-    window.AddRenderer(renderer)
-    window.SetSize(*size)
-    position, focal, up, angle = _camera_settings(camera)
-    cam = renderer.GetActiveCamera()
-    cam.SetPosition(*position)
-    cam.SetFocalPoint(*focal)
-    cam.SetViewUp(*up)
-    cam.SetViewAngle(angle)
-    renderer.ResetCameraClippingRange()
-    window.Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.ReadFrontBufferOff()
-    grab.Update()
+    renderer = FrameRenderer(camera, size)
     writer = vtkPNGWriter()
     writer.SetFileName(str(path))
-    writer.SetInputConnection(grab.GetOutputPort())
+    writer.SetInputData(renderer.render(data))
     writer.Write()
-    window.Finalize()
+    renderer.close()
 
 
 class FrameRenderer:
-    """One off-screen window reused for many frames (an animation), unlit like render_png."""
+    """An off-screen, unlit view of relit data (DisplayColors shown as they are), one window
+    reused for many frames (an animation)."""
 
     def __init__(self, camera, size=(640, 480)):
         self.mapper = vtkPolyDataMapper()
@@ -199,7 +167,7 @@ class FrameRenderer:
         self.window.SetOffScreenRendering(1)
         self.window.AddRenderer(self.renderer)
         self.window.SetSize(*size)
-        position, focal, up, angle = _camera_settings(camera)
+        position, focal, up, angle = camera
         cam = self.renderer.GetActiveCamera()
         cam.SetPosition(*position)
         cam.SetFocalPoint(*focal)
@@ -228,7 +196,7 @@ def write_exr(data, path, camera, size=(640, 480), array="Radiosity"):
     writer.SetInputData(data)
     writer.SetFileName(str(path))
     writer.SetArrayName(array)
-    position, focal, up, angle = _camera_settings(camera)
+    position, focal, up, angle = camera
     writer.SetCameraPosition(*position)
     writer.SetFocalPoint(*focal)
     writer.SetViewUp(*up)
