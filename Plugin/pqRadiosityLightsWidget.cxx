@@ -12,6 +12,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
+#include <QSignalBlocker>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -79,7 +80,24 @@ void pqRadiosityLightsWidget::rebuild()
     std::equal(lights.begin(), lights.end(), this->Lights.begin(),
       [](const Light& a, const Light& b) { return a.Name == b.Name; }))
   {
-    return; // same lights: keep the user's unapplied edits
+    // Same lights: refresh the values in place (they may have been set from Python or
+    // reset), without recreating the widgets someone may be typing in.
+    this->Lights = lights;
+    for (int row = 0; row < lights.size(); ++row)
+    {
+      if (auto* intensity = qobject_cast<QDoubleSpinBox*>(this->Table->cellWidget(row, 2)))
+      {
+        const QSignalBlocker block(intensity);
+        intensity->setValue(lights[row].Intensity);
+      }
+      if (auto* enabled = qobject_cast<QCheckBox*>(this->Table->cellWidget(row, 3)))
+      {
+        const QSignalBlocker block(enabled);
+        enabled->setChecked(lights[row].Enabled);
+      }
+      this->paintColorButton(row);
+    }
+    return;
   }
   this->Lights = lights;
   this->Updating = true;
