@@ -121,19 +121,7 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
     return err.str();
   }
   const int count = static_cast<int>(offsets.size()) - 1;
-  double diagonal = 0;
-  {
-    Vec3 lo = points.empty() ? Vec3() : points[0], hi = lo;
-    for (const Vec3& p : points)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        lo[c] = std::min(lo[c], p[c]);
-        hi[c] = std::max(hi[c], p[c]);
-      }
-    }
-    diagonal = Norm(hi - lo);
-  }
+  const double diagonal = Bounds(points).Diagonal();
   const double quantum = std::max(diagonal, 1e-300) * 1e-9;
 
   // Surfaces: same caller key and same plane, up to a tolerance relative to the scene.

@@ -1,7 +1,26 @@
 #include "Polygon.h"
 
+#include <algorithm>
+
 namespace radiosity
 {
+
+Bounds::Bounds(const std::vector<Vec3>& points)
+{
+  if (points.empty())
+  {
+    return;
+  }
+  Lo = Hi = points[0];
+  for (const Vec3& p : points)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      Lo[c] = std::min(Lo[c], p[c]);
+      Hi[c] = std::max(Hi[c], p[c]);
+    }
+  }
+}
 
 Vec3 NewellVector(const Vec3* loop, int count)
 {

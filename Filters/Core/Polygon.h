@@ -9,6 +9,15 @@
 namespace radiosity
 {
 
+/// Axis-aligned bounds of a point set (empty: both corners at the origin).
+struct Bounds
+{
+  Vec3 Lo, Hi;
+  explicit Bounds(const std::vector<Vec3>& points);
+  double Diagonal() const { return Norm(Hi - Lo); }
+  Vec3 Centre() const { return (Lo + Hi) * 0.5; }
+};
+
 /// Newell's vector: normal direction of the right-hand-rule loop, length = 2 * area.
 /// Robust for non-planar or nearly degenerate loops, unlike a single cross product.
 Vec3 NewellVector(const Vec3* loop, int count);

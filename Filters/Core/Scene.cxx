@@ -22,24 +22,6 @@ bool Finite(const Vec3& v)
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-double BoundingDiagonal(const std::vector<Vec3>& points)
-{
-  if (points.empty())
-  {
-    return 0;
-  }
-  Vec3 lo = points[0], hi = points[0];
-  for (const Vec3& p : points)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      lo[c] = std::min(lo[c], p[c]);
-      hi[c] = std::max(hi[c], p[c]);
-    }
-  }
-  return Norm(hi - lo);
-}
-
 std::vector<Vec3> Loop(const SceneMesh& mesh, int i)
 {
   std::vector<Vec3> loop;
@@ -76,7 +58,7 @@ std::string ValidateScene(const SceneMesh& mesh, int& numberOfLights)
       return err.str();
     }
   }
-  const double diag = BoundingDiagonal(mesh.points);
+  const double diag = Bounds(mesh.points).Diagonal();
   // Relative to the scene size, so the check is scale invariant.
   const double minArea = 1e-14 * diag * diag;
   int maxLight = -1;
@@ -179,7 +161,7 @@ SceneGeometry::SceneGeometry(const SceneMesh& mesh)
     patchElements[patch].push_back(i);
     patchArea[patch] += area[i];
   }
-  sceneDiagonal = BoundingDiagonal(mesh.points);
+  sceneDiagonal = Bounds(mesh.points).Diagonal();
 }
 
 } // namespace radiosity

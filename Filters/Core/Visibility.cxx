@@ -53,19 +53,7 @@ Visibility::Visibility(const SceneMesh& mesh)
 {
   Internals& d = *Impl;
   // Embree works in float: center the scene so large coordinates keep their precision.
-  if (!mesh.points.empty())
-  {
-    Vec3 lo = mesh.points[0], hi = mesh.points[0];
-    for (const Vec3& p : mesh.points)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        lo[c] = p[c] < lo[c] ? p[c] : lo[c];
-        hi[c] = p[c] > hi[c] ? p[c] : hi[c];
-      }
-    }
-    d.Origin = (lo + hi) * 0.5;
-  }
+  d.Origin = Bounds(mesh.points).Centre();
   d.Device = rtcNewDevice(nullptr);
   if (!d.Device)
   {
