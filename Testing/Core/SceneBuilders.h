@@ -2,12 +2,22 @@
 #ifndef RadiosityTest_SceneBuilders_h
 #define RadiosityTest_SceneBuilders_h
 
+#include "ProgressiveRadiosity.h"
 #include "Scene.h"
 
 namespace radiosity_test
 {
 using radiosity::SceneMesh;
 using radiosity::Vec3;
+
+/// Options that run a solve to `threshold` (the shot cap is never what stops it).
+inline radiosity::SolverOptions Converged(double threshold = 1e-7)
+{
+  radiosity::SolverOptions o;
+  o.MaximumShots = 1000000;
+  o.ConvergenceThreshold = threshold;
+  return o;
+}
 
 /// Adds the quad origin + [0,1]u + [0,1]v as an n x n grid of elements (normal u x v)
 /// grouped into patches of `per` x `per` elements, with its own points.

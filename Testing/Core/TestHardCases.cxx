@@ -13,17 +13,10 @@
 using namespace radiosity;
 using radiosity_test::AddGrid;
 using radiosity_test::Box;
+using radiosity_test::Converged;
 
 namespace
 {
-SolverOptions Converged(double threshold = 1e-7)
-{
-  SolverOptions o;
-  o.MaximumShots = 1000000;
-  o.ConvergenceThreshold = threshold;
-  return o;
-}
-
 Solution SolveOne(const SceneMesh& mesh, const SolverOptions& o, int lights = 1)
 {
   ProgressiveRadiosity solver(mesh);

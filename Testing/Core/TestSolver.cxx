@@ -9,17 +9,7 @@
 using namespace radiosity;
 using radiosity_test::AddGrid;
 using radiosity_test::Box;
-
-namespace
-{
-SolverOptions Converged(double threshold = 1e-7)
-{
-  SolverOptions o;
-  o.MaximumShots = 100000;
-  o.ConvergenceThreshold = threshold;
-  return o;
-}
-}
+using radiosity_test::Converged;
 
 TEST(Solver, BoxBuilderFacesInward)
 {

@@ -2,7 +2,6 @@
 filter time-aware; any time relights by linear interpolation between keyframes."""
 
 import os
-import sys
 import tempfile
 
 import numpy as np
@@ -10,19 +9,11 @@ from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline 
 from vtkmodules.vtkCommonCore import vtkLogger
 
 import relight
+from testlib import check, finish
 from relight import cell_array, read_polydata
 
 vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_WARNING)
 DATA = os.path.join(os.environ.get("RELIGHT_ROOT", "."), "Data")
-failures = []
-
-
-def check(condition, message):
-    print(("ok   " if condition else "FAIL ") + message)
-    if not condition:
-        failures.append(message)
-
-
 mesher = relight.vtkRadiosityMesher()
 mesher.SetInputData(read_polydata(os.path.join(DATA, "paper_3lights.vtp")))
 mesher.SetPatchSize(1.5)
@@ -76,7 +67,4 @@ from_file.SetScheduleFileName(f.name)
 run(from_file, "CSV schedule")
 os.unlink(f.name)
 
-if failures:
-    print(f"{len(failures)} check(s) failed")
-    sys.exit(1)
-print("TestAnimation: all checks passed")
+finish("TestAnimation")

@@ -4,11 +4,11 @@ import math
 import sys
 
 import numpy as np
-from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkFloatArray, vtkIntArray, vtkPoints, vtkStringArray
-from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkFloatArray, vtkIntArray, vtkStringArray
+from vtkmodules.vtkCommonDataModel import vtkPolyData
 
 import relight
-from relight import ErrorCatcher
+from relight import ErrorCatcher, make_scene
 from vtkmodules.vtkCommonCore import vtkLogger
 
 # The executive logs every failed request too; the filters' own messages are what we check.
@@ -19,31 +19,27 @@ failures = []
 
 def scene(reflectance=(0.5, 0.5, 0.5), light_ids=(0, -1), points=None, reflectance_components=3,
           light_array=vtkIntArray, with_reflectance=True, with_light=True):
-    """Two unit quads facing each other; the first one is the light."""
-    data = vtkPolyData()
-    pts = vtkPoints()
-    pts.SetDataTypeToDouble()
+    """Two unit quads facing each other; the first one is the light. The arguments break
+    one thing at a time."""
     coords = points or [(0, 0, 1), (0, 1, 1), (1, 1, 1), (1, 0, 1), (0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)]
-    for p in coords:
-        pts.InsertNextPoint(*p)
-    polys = vtkCellArray()
-    for ids in ((0, 1, 2, 3), (4, 5, 6, 7))[: len(light_ids)]:
-        polys.InsertNextCell(4, ids)
-    data.SetPoints(pts)
-    data.SetPolys(polys)
+    quads = [coords[0:4], coords[4:8]][: len(light_ids)]
+    data = make_scene(quads, [(0.5, 0.5, 0.5)] * len(quads), [-1] * len(quads))
+    cells = data.GetCellData()
+    cells.RemoveArray("Reflectance")
+    cells.RemoveArray("LightId")
     if with_reflectance:
         r = vtkFloatArray()
         r.SetName("Reflectance")
         r.SetNumberOfComponents(reflectance_components)
         for _ in light_ids:
             r.InsertNextTuple(list(reflectance)[:reflectance_components])
-        data.GetCellData().AddArray(r)
+        cells.AddArray(r)
     if with_light:
         ids = light_array()
         ids.SetName("LightId")
         for i in light_ids:
             ids.InsertNextValue(i)
-        data.GetCellData().AddArray(ids)
+        cells.AddArray(ids)
     return data
 
 

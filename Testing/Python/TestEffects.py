@@ -2,25 +2,16 @@
 the same answer with more work, static lights share a solution."""
 
 import os
-import sys
 
 import numpy as np
-from vtkmodules.vtkCommonCore import vtkIntArray, vtkLogger
+from vtkmodules.vtkCommonCore import vtkLogger
 
 import relight
-from relight import cell_array, light_names, make_scene, read_polydata
+from testlib import check, finish
+from relight import add_field_ints, cell_array, light_names, make_scene, read_polydata
 
 vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_WARNING)
 DATA = os.path.join(os.environ.get("RELIGHT_ROOT", "."), "Data")
-failures = []
-
-
-def check(condition, message):
-    print(("ok   " if condition else "FAIL ") + message)
-    if not condition:
-        failures.append(message)
-
-
 def effects(data):
     fields = data.GetFieldData()
     arrays = [fields.GetAbstractArray(name) for name in ("Effects", "EffectDecisions", "EffectReasons")]
@@ -29,16 +20,7 @@ def effects(data):
 
 
 def solve(scene, force=False, patch=0.5, element=0.25):
-    mesher = relight.vtkRadiosityMesher()
-    mesher.SetInputData(scene)
-    mesher.SetPatchSize(patch)
-    mesher.SetElementSize(element)
-    solver = relight.vtkLightTaggedRadiosity()
-    solver.SetInputConnection(mesher.GetOutputPort())
-    solver.SetConvergenceThreshold(1e-6)
-    solver.SetForceAllEffects(force)
-    solver.Update()
-    return solver
+    return relight.solve(scene, patch, element, ConvergenceThreshold=1e-6, ForceAllEffects=force)
 
 
 # A convex grey room lit by its own ceiling: no shadow rays, one channel.
@@ -61,12 +43,7 @@ check(auto.GetLastRays() == 0 and forced.GetLastRays() > 0,
       f"and casts no rays where forced casts {forced.GetLastRays()}")
 
 # Static lights share one solution; relit by default it equals the standard solution.
-scene = read_polydata(os.path.join(DATA, "paper_3lights.vtp"))
-flags = vtkIntArray()
-flags.SetName("StaticLights")
-for value in (1, 0, 1):
-    flags.InsertNextValue(value)
-scene.GetFieldData().AddArray(flags)
+scene = add_field_ints(read_polydata(os.path.join(DATA, "paper_3lights.vtp")), "StaticLights", (1, 0, 1))
 merged = solve(scene, patch=1.5, element=0.375)
 check(light_names(merged.GetOutput()) == ["WarmWhite+Amber", "CoolWhite"], "static lights merged into one bank")
 check(effects(merged.GetOutput())["LightSeparation"][0] == "skipped", "the merge is reported")
@@ -82,7 +59,4 @@ reference = cell_array(combined.GetOutput(), "Radiosity")
 check(np.allclose(cell_array(rl.GetOutput(), "Radiosity"), reference, rtol=1e-4, atol=1e-5 * reference.max()),
       "merged static lights relight to the standard solution")
 
-if failures:
-    print(f"{len(failures)} check(s) failed")
-    sys.exit(1)
-print("TestEffects: all checks passed")
+finish("TestEffects")

@@ -7,8 +7,6 @@
 """
 
 import math
-import os
-import sys
 import time
 
 import numpy as np
@@ -16,19 +14,11 @@ from vtkmodules.vtkCommonCore import vtkFloatArray, vtkLogger, vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 
 import relight
+from testlib import check, finish
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from relight import cell_array, make_scene
+from relight import cell_areas, cell_array, cell_centroids, make_scene
 
 vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_WARNING)
-failures = []
-
-
-def check(condition, message):
-    print(("ok   " if condition else "FAIL ") + message)
-    if not condition:
-        failures.append(message)
-
-
 def lights(positions, intensity=1.0, color=(1, 1, 1), normal=None):
     data = vtkPolyData()
     points = vtkPoints()
@@ -55,33 +45,7 @@ def lights(positions, intensity=1.0, color=(1, 1, 1), normal=None):
 
 
 def solve(scene, patch, element, basis=True, threshold=1e-4):
-    mesher = relight.vtkRadiosityMesher()
-    mesher.SetInputData(scene)
-    mesher.SetPatchSize(patch)
-    mesher.SetElementSize(element)
-    solver = relight.vtkLightTaggedRadiosity()
-    solver.SetInputConnection(mesher.GetOutputPort())
-    solver.SetConvergenceThreshold(threshold)
-    solver.SetPatchBasis(basis)
-    solver.Update()
-    return solver
-
-
-def areas(data):
-    from vtkmodules.vtkFiltersVerdict import vtkCellSizeFilter
-    sizes = vtkCellSizeFilter()
-    sizes.SetInputData(data)
-    sizes.ComputeAreaOn()
-    sizes.Update()
-    return cell_array(sizes.GetOutput(), "Area").astype(np.float64)
-
-
-def centroids(data):
-    out = []
-    for c in range(data.GetNumberOfCells()):
-        ids = data.GetCell(c).GetPointIds()
-        out.append(np.mean([data.GetPoint(ids.GetId(i)) for i in range(ids.GetNumberOfIds())], axis=0))
-    return np.array(out)
+    return relight.solve(scene, patch, element, ConvergenceThreshold=threshold, PatchBasis=basis)
 
 
 # --- 1. point light over a floor: the closed form ------------------------------------------
@@ -96,7 +60,7 @@ rl.SetLightEnabled(0, False)
 rl.Update()
 out = rl.GetOutput()
 on_floor = cell_array(out, "LightId") == -1
-c = centroids(out)[on_floor]
+c = cell_centroids(out)[on_floor]
 d = np.array([0.7, 1.1, 1.5]) - c
 r = np.linalg.norm(d, axis=1)
 expected = (np.array([0.5, 0.25, 0.125]) * np.array([1.0, 0.5, 0.25]) * 2.0)[None, :] * (d[:, 2] / r / r**2)[:, None]
@@ -172,18 +136,9 @@ lamp = [(centre[0], centre[1] - half, centre[2] - half), (centre[0], centre[1] -
         (centre[0], centre[1] + half, centre[2] + half), (centre[0], centre[1] + half, centre[2] - half)]  # faces -x
 scene = make_scene(room + [lamp], colours + [(0.0, 0.0, 0.0)], [-1] * 6 + [0], light_names=["Lamp"])
 def tagged(patch, basis):
-    mesher = relight.vtkRadiosityMesher()
-    mesher.SetInputData(scene)
-    mesher.SetPatchSize(patch)
-    mesher.SetElementSize(ELEMENT)
-    solver = relight.vtkLightTaggedRadiosity()
-    solver.SetInputConnection(mesher.GetOutputPort())
-    solver.SetConvergenceThreshold(1e-5)
-    solver.SetMaximumShots(1000000)  # converge: the default cap would stop fine meshes early
-    solver.SetPatchBasis(basis)
-    solver.SetSeparateDirect(True)
-    solver.Update()
-    return solver
+    # Converged: the default shot cap would stop the fine meshes early.
+    return relight.solve(scene, patch, ELEMENT, ConvergenceThreshold=1e-5, MaximumShots=1000000,
+                         PatchBasis=basis, SeparateDirect=True)
 
 
 ELEMENT = 0.25
@@ -194,7 +149,7 @@ receivers = cell_array(full, "LightId") == -1
 direct = cell_array(full, "Direct_Lamp").astype(np.float64)
 direct[~receivers] = 0.0  # the lamp's own unit emission is not reflected light
 indirect = (reference - direct)[receivers].mean()
-area = areas(full)
+area = cell_areas(full)
 print(f"reference: full solve, {full.GetNumberOfCells()} elements, {FINEST} m patches")
 print(f"{'patch':>6} {'patches':>7} {'basis KB':>9} {'solve s':>8} {'frame ms':>9} {'basis err':>10} {'filter err':>10}")
 errors = []
@@ -230,7 +185,4 @@ check(errors[2] < errors[1] < errors[0], "finer patches, smaller error in the in
 check(errors[-1] < 0.01, f"same patches: within 1 % of the full solve's indirect light ({errors[-1]:.2%})")
 check(filter_error < 0.02, f"the filter with a point-approximated lamp: within 2 % ({filter_error:.2%})")
 
-if failures:
-    print(f"{len(failures)} check(s) failed")
-    sys.exit(1)
-print("TestMovingLights: all checks passed")
+finish("TestMovingLights")

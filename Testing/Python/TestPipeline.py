@@ -2,38 +2,21 @@
 independent expectations (linearity of eq. 1, the standard method, closed forms)."""
 
 import os
-import sys
 
 import numpy as np
 
 import relight
+from testlib import check, finish
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkCommonCore import vtkFloatArray, vtkIntArray
-from relight import cell_array, light_names, point_array, read_polydata
+from relight import cell_areas, cell_array, light_names, point_array, read_polydata
 
 DATA = os.path.join(os.environ.get("RELIGHT_ROOT", "."), "Data")
-failures = []
-
-
-def check(condition, message):
-    if not condition:
-        failures.append(message)
-        print("FAIL:", message)
+MODES = {None: 0, "StandardCombined": 1, "StandardSeparate": 2}
 
 
 def solver_for(path, mode=None, threshold=1e-3, patch=1.5, element=0.375):
-    mesher = relight.vtkRadiosityMesher()
-    mesher.SetInputData(read_polydata(path))
-    mesher.SetPatchSize(patch)
-    mesher.SetElementSize(element)
-    solver = relight.vtkLightTaggedRadiosity()
-    solver.SetInputConnection(mesher.GetOutputPort())
-    solver.SetMaximumShots(100000)
-    solver.SetConvergenceThreshold(threshold)
-    if mode:
-        getattr(solver, "SetSolutionModeTo" + mode)()
-    solver.Update()
-    return solver
+    return relight.solve(read_polydata(path), patch, element, MaximumShots=100000,
+                         ConvergenceThreshold=threshold, SolutionMode=MODES[mode])
 
 
 # --- mesher: areas are preserved, patches and elements within their sizes -------------
@@ -44,14 +27,11 @@ mesher.SetPatchSize(1.5)
 mesher.SetElementSize(0.375)
 mesher.Update()
 meshed = mesher.GetOutput()
-from vtkmodules.vtkFiltersVerdict import vtkCellSizeFilter  # noqa: E402
+
 
 def total_area(data):
-    sizes = vtkCellSizeFilter()
-    sizes.SetInputData(data)
-    sizes.ComputeAreaOn()
-    sizes.Update()
-    return cell_array(sizes.GetOutput(), "Area").sum()
+    return cell_areas(data).sum()
+
 
 check(abs(total_area(meshed) - total_area(scene)) < 1e-12 * total_area(scene), "mesher keeps total area")
 check(meshed.GetCellData().GetArray("PatchId") is not None, "mesher writes PatchId")
@@ -171,20 +151,8 @@ expected = sum(direct_i + 2.5 * (total_i - direct_i) for total_i, direct_i in (
 check(np.allclose(cell_array(scaled.GetOutput(), "Radiosity"), expected, rtol=1e-5, atol=1e-7),
       "IndirectScale scales only the indirect part")
 
-banked_scene = read_polydata(os.path.join(DATA, "paper_3lights.vtp"))
-banks = vtkIntArray()
-banks.SetName("LightBanks")
-for b in (0, 1, 0):
-    banks.InsertNextValue(b)
-banked_scene.GetFieldData().AddArray(banks)
-banked = relight.vtkRadiosityMesher()
-banked.SetInputData(banked_scene)
-banked.SetPatchSize(1.5)
-banked.SetElementSize(0.375)
-bank_solver = relight.vtkLightTaggedRadiosity()
-bank_solver.SetInputConnection(banked.GetOutputPort())
-bank_solver.SetConvergenceThreshold(1e-6)
-bank_solver.Update()
+banked_scene = relight.add_field_ints(read_polydata(os.path.join(DATA, "paper_3lights.vtp")), "LightBanks", (0, 1, 0))
+bank_solver = relight.solve(banked_scene, 1.5, 0.375, ConvergenceThreshold=1e-6)
 check(light_names(bank_solver.GetOutput()) == ["WarmWhite+Amber", "CoolWhite"], "banks are named by members")
 bank_relit = relight.vtkRadiosityRelight()
 bank_relit.SetInputConnection(bank_solver.GetOutputPort())
@@ -193,47 +161,10 @@ check(np.allclose(cell_array(bank_relit.GetOutput(), "Radiosity"), reference, rt
       "default relight of banks equals the standard combined solution")
 
 # --- the furnace through the whole VTK pipeline --------------------------------------------
-from vtkmodules.vtkFiltersSources import vtkCubeSource  # noqa: E402
-from vtkmodules.vtkFiltersCore import vtkPolyDataNormals  # noqa: E402
-
-cube = vtkCubeSource()
-cube.SetXLength(2)
-cube.SetYLength(2)
-cube.SetZLength(2)
-flip = vtkPolyDataNormals()  # vtkCubeSource faces outwards: turn them into the box
-flip.SetInputConnection(cube.GetOutputPort())
-flip.FlipNormalsOn()
-flip.ConsistencyOn()
-flip.AutoOrientNormalsOff()
-flip.SplittingOff()
-flip.Update()
-box = flip.GetOutput()
-box.GetPointData().Initialize()
 rho = 0.6
-reflectance = vtkFloatArray()
-reflectance.SetName("Reflectance")
-reflectance.SetNumberOfComponents(3)
-ids = vtkIntArray()
-ids.SetName("LightId")
-for c in range(box.GetNumberOfCells()):
-    reflectance.InsertNextTuple3(rho, rho, rho)
-    ids.InsertNextValue(0)
-box.GetCellData().AddArray(reflectance)
-box.GetCellData().AddArray(ids)
-mesher = relight.vtkRadiosityMesher()
-mesher.SetInputData(box)
-mesher.SetPatchSize(1.0)
-mesher.SetElementSize(0.5)
-furnace = relight.vtkLightTaggedRadiosity()
-furnace.SetInputConnection(mesher.GetOutputPort())
-furnace.SetConvergenceThreshold(1e-8)
-furnace.SetMaximumShots(100000)
-furnace.Update()
+furnace = relight.solve(relight.furnace_box(2.0, rho), 1.0, 0.5, ConvergenceThreshold=1e-8, MaximumShots=100000)
 b = cell_array(furnace.GetOutput(), "Radiosity_Light0")
 print(f"furnace: B in [{b.min():.6f}, {b.max():.6f}], closed form {1 / (1 - rho):.6f}")
 check(np.allclose(b, 1 / (1 - rho), rtol=1e-5), "furnace B = 1/(1-rho)")
 
-if failures:
-    print(f"{len(failures)} check(s) failed")
-    sys.exit(1)
-print("TestPipeline: all checks passed")
+finish("TestPipeline")

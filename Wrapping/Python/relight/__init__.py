@@ -18,7 +18,12 @@ from .vtkRadiosityFilters import (  # noqa: F401
 )
 from .scene import (  # noqa: F401
     ErrorCatcher,
+    add_field_ints,
+    exr_writer,
     FrameRenderer,
+    cell_areas,
+    cell_centroids,
+    furnace_box,
     light_names,
     make_scene,
     point_array,

@@ -22,18 +22,16 @@ import time
 
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkCommonCore import vtkFloatArray, vtkIntArray, vtkLogger
-from vtkmodules.vtkFiltersSources import vtkCubeSource
-from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
+from vtkmodules.vtkCommonCore import vtkFloatArray, vtkLogger
 
 from .demo import CAMERA as DEMO_CAMERA
 from . import (
     cell_array,
+    exr_writer,
+    furnace_box,
     light_names,
     read_polydata,
-    vtkLightTaggedRadiosity,
-    vtkRadiosityEXRWriter,
-    vtkRadiosityMesher,
+    solve as solve_scene,
 )
 
 METHODS = {"Analytic": 0, "Hemicube": 1, "MonteCarlo": 2}
@@ -45,60 +43,15 @@ CAMERAS = {
 }
 
 
-def furnace_scene(rho):
-    cube = vtkCubeSource()
-    cube.SetXLength(2)
-    cube.SetYLength(2)
-    cube.SetZLength(2)
-    inward = vtkPolyDataNormals()  # the cube's faces point out; the furnace is seen from inside
-    inward.SetInputConnection(cube.GetOutputPort())
-    inward.FlipNormalsOn()
-    inward.SplittingOff()
-    inward.AutoOrientNormalsOff()
-    inward.Update()
-    box = inward.GetOutput()
-    box.GetPointData().Initialize()
-    reflectance = vtkFloatArray()
-    reflectance.SetName("Reflectance")
-    reflectance.SetNumberOfComponents(3)
-    ids = vtkIntArray()
-    ids.SetName("LightId")
-    for _ in range(box.GetNumberOfCells()):
-        reflectance.InsertNextTuple3(rho, rho, rho)
-        ids.InsertNextValue(0)
-    box.GetCellData().AddArray(reflectance)
-    box.GetCellData().AddArray(ids)
-    return box
-
-
 def solve(scene, patch, element, method, samples, threshold, ambient=False, max_shots=20000, force=False):
-    mesher = vtkRadiosityMesher()
-    mesher.SetInputData(scene)
-    mesher.SetPatchSize(patch)
-    mesher.SetElementSize(element)
-    mesher.Update()
-    solver = vtkLightTaggedRadiosity()
-    solver.SetInputConnection(mesher.GetOutputPort())
-    solver.SetFormFactorMethod(METHODS[method])
-    solver.SetFormFactorSamples(samples)
-    solver.SetConvergenceThreshold(threshold)
-    solver.SetMaximumShots(max_shots)
-    solver.SetAmbientTerm(ambient)
-    solver.SetForceAllEffects(force)
-    solver.Update()
-    return solver
+    return solve_scene(scene, patch, element, FormFactorMethod=METHODS[method], FormFactorSamples=samples,
+                       ConvergenceThreshold=threshold, MaximumShots=max_shots, AmbientTerm=ambient,
+                       ForceAllEffects=force)
 
 
 def images(data, camera, size):
     """Linear radiosity image per light: {name: (h, w, 3) array}."""
-    writer = vtkRadiosityEXRWriter()
-    writer.SetInputData(data)
-    position, focal, up, angle = camera
-    writer.SetCameraPosition(*position)
-    writer.SetFocalPoint(*focal)
-    writer.SetViewUp(*up)
-    writer.SetViewAngle(angle)
-    writer.SetSize(*size)
+    writer = exr_writer(data, camera, size)
     result = {}
     for name in light_names(data):
         writer.SetArrayName("Radiosity_" + name)
@@ -165,7 +118,7 @@ def main():
 
     # scene: (polydata, base patch size, base element size, reference element, closed form)
     scenes = {
-        "furnace": (furnace_scene(0.8), 1.0, 0.5, None, 1.0 / (1.0 - 0.8)),
+        "furnace": (furnace_box(2.0, 0.8), 1.0, 0.5, None, 1.0 / (1.0 - 0.8)),
         "cornell": (read_polydata(data / "cornell_box.vtp"), 100.0, 50.0, 25.0 if args.quick else 12.5, None),
         "paper3": (read_polydata(data / "paper_3lights.vtp"), 1.5, 0.375, 0.375 if args.quick else 0.125, None),
     }

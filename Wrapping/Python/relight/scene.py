@@ -94,9 +94,11 @@ def read_polydata(path):
 
 
 def solve(scene, patch_size, element_size, **solver_settings):
-    """Meshes and solves `scene` (vtkPolyData); returns the solver's output.
+    """Meshes and solves `scene` (vtkPolyData); returns the updated solver (its
+    GetOutput() has the solutions, GetInputAlgorithm() is the mesher).
 
     `solver_settings` are vtkLightTaggedRadiosity properties, e.g. MaximumShots=500.
+    Raises RuntimeError with the filters' message if meshing or solving fails.
     """
     mesher = vtkRadiosityMesher()
     mesher.SetInputData(scene)
@@ -106,8 +108,43 @@ def solve(scene, patch_size, element_size, **solver_settings):
     solver.SetInputConnection(mesher.GetOutputPort())
     for name, value in solver_settings.items():
         getattr(solver, "Set" + name)(value)
+    catchers = [ErrorCatcher(mesher), ErrorCatcher(solver)]
     solver.Update()
+    errors = [e for c in catchers for e in c.errors]
+    if errors:
+        raise RuntimeError(errors[0])
     return solver
+
+
+def furnace_box(size=2.0, rho=0.8):
+    """A closed cube whose six faces (facing in) all emit unit exitance with grey
+    reflectance `rho`: the furnace, where B = 1 / (1 - rho) everywhere."""
+    s = size
+    corners = [(0, 0, 0), (s, 0, 0), (s, s, 0), (0, s, 0), (0, 0, s), (s, 0, s), (s, s, s), (0, s, s)]
+    faces = [(0, 1, 2, 3), (4, 7, 6, 5), (0, 4, 5, 1), (2, 6, 7, 3), (0, 3, 7, 4), (1, 5, 6, 2)]
+    return make_scene([[corners[i] for i in f] for f in faces], [(rho, rho, rho)] * 6, [0] * 6)
+
+
+def cell_areas(data):
+    """Area of every cell, as a float64 numpy array."""
+    from vtkmodules.vtkFiltersVerdict import vtkCellSizeFilter
+
+    sizes = vtkCellSizeFilter()
+    sizes.SetInputData(data)
+    sizes.ComputeAreaOn()
+    sizes.Update()
+    return cell_array(sizes.GetOutput(), "Area").astype("float64")
+
+
+def cell_centroids(data):
+    """Mean of each cell's points, an (n, 3) numpy array."""
+    import numpy as np
+
+    out = np.empty((data.GetNumberOfCells(), 3))
+    for c in range(data.GetNumberOfCells()):
+        ids = data.GetCell(c).GetPointIds()
+        out[c] = np.mean([data.GetPoint(ids.GetId(i)) for i in range(ids.GetNumberOfIds())], axis=0)
+    return out
 
 
 def light_names(data):
@@ -190,11 +227,11 @@ class FrameRenderer:
         self.window.Finalize()
 
 
-def write_exr(data, path, camera, size=(640, 480), array="Radiosity"):
-    """Writes a linear HDR view of the point array `array` as OpenEXR."""
+def exr_writer(data, camera, size=(640, 480), array="Radiosity"):
+    """A vtkRadiosityEXRWriter set up for `data` seen from `camera`; Write() to a file or
+    RenderImage() into an array."""
     writer = vtkRadiosityEXRWriter()
     writer.SetInputData(data)
-    writer.SetFileName(str(path))
     writer.SetArrayName(array)
     position, focal, up, angle = camera
     writer.SetCameraPosition(*position)
@@ -202,5 +239,24 @@ def write_exr(data, path, camera, size=(640, 480), array="Radiosity"):
     writer.SetViewUp(*up)
     writer.SetViewAngle(angle)
     writer.SetSize(*size)
+    return writer
+
+
+def write_exr(data, path, camera, size=(640, 480), array="Radiosity"):
+    """Writes a linear HDR view of the point array `array` as OpenEXR."""
+    writer = exr_writer(data, camera, size, array)
+    writer.SetFileName(str(path))
     if not writer.Write():
         raise OSError(f"could not write {path}")
+
+
+def add_field_ints(data, name, values):
+    """Adds an integer field array, e.g. LightBanks or StaticLights (one value per light)."""
+    from vtkmodules.vtkCommonCore import vtkIntArray
+
+    array = vtkIntArray()
+    array.SetName(name)
+    for value in values:
+        array.InsertNextValue(int(value))
+    data.GetFieldData().AddArray(array)
+    return data
