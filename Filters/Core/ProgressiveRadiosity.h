@@ -24,8 +24,23 @@ enum class EffectMode
   Off = 2
 };
 
+/// How the transport is organised. Both shoot from patches in order of unshot power and
+/// carry every solution along each evaluation (light tagging).
+enum class SolverMethod
+{
+  /// Hierarchical where the scene is large enough for it to pay, otherwise progressive.
+  Auto = 0,
+  /// Every shot evaluates a form factor to every element: cost shots x elements.
+  ProgressiveRefinement = 1,
+  /// Two-level links (Hanrahan et al. 1991, in shooting order): a shooter links to a far,
+  /// weakly lit receiver patch as a whole and to near or partly hidden ones element by
+  /// element. Links are made at a patch's first shot and reused by its later shots.
+  Hierarchical = 2
+};
+
 struct SolverOptions
 {
+  SolverMethod Solver = SolverMethod::Auto;
   int MaximumShots = 2000;
   /// Stop when every solution's remaining unshot power is below this fraction of its own
   /// emitted power.
@@ -60,6 +75,16 @@ struct SolverOptions
   /// Called between shots with the fraction done; returning false aborts the solve, which
   /// then keeps the valid partial result of the shots made so far.
   std::function<bool(double)> Progress;
+  /// Hierarchical only: an emitter's first shot (its direct light) reaches every element
+  /// with its own shadow rays, as in progressive refinement. Off: it links like any other
+  /// shooter, which is much cheaper when many patches emit (the moving-light basis).
+  bool DirectToElements = true;
+  /// Hierarchical only: a far link that would carry at least this fraction of a
+  /// solution's emitted power at its first shot is resolved element by element. 0 (the
+  /// default) refines by geometry alone, so the links, and the light-tagged and combined
+  /// results, do not depend on which light shoots; measured, energy refinement gained
+  /// little (0.83 % -> 0.81 % against progressive refinement at 1e-4).
+  double RefinementThreshold = 0;
 };
 
 struct SolverStatistics
@@ -80,6 +105,10 @@ struct SolverStatistics
   bool SingleChannel = false;     ///< solved one grey channel instead of RGB
   int BlockingSurfaces = -1;      ///< planes with geometry behind them (-1: not examined)
   long long FormFactorCount = 0; ///< receiver-shooter pairs evaluated
+  SolverMethod Method = SolverMethod::ProgressiveRefinement; ///< the method that ran
+  long long PatchLinks = 0;   ///< hierarchical: shooter-to-patch links made
+  long long ElementLinks = 0; ///< hierarchical: shooter-to-element links made
+  double LinkBytes = 0;       ///< hierarchical: memory the links held
   /// Channel-summed power shot by patches and power arriving at receivers (irradiance
   /// times area, before reflection); equal up to discretization in a closed scene.
   double ShotPower = 0;

@@ -1,6 +1,7 @@
 #include "ShooterFormFactors.h"
 #include "FormFactor.h"
 #include "Polygon.h"
+#include "SampleStream.h"
 
 #include <algorithm>
 #include <atomic>
@@ -15,25 +16,6 @@ namespace radiosity
 namespace
 {
 constexpr double kPi = 3.14159265358979323846;
-
-/// Counter-based random numbers: a sample depends only on its indices, so results are the
-/// same for any number of threads.
-struct SampleStream
-{
-  std::uint64_t State;
-  SampleStream(std::uint64_t a, std::uint64_t b, std::uint64_t c = 0)
-    : State((a * 0x9E3779B97F4A7C15ull) ^ (b * 0xC2B2AE3D27D4EB4Full) ^ (c + 0x632BE59BD9B4E019ull))
-  {
-  }
-  double Next()
-  {
-    std::uint64_t z = (State += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    return static_cast<double>(z >> 11) * (1.0 / 9007199254740992.0);
-  }
-};
 
 void Frame(const Vec3& n, Vec3& t, Vec3& b)
 {
@@ -87,6 +69,17 @@ ShooterFormFactors::ShooterFormFactors(const SceneMesh& mesh, const SceneGeometr
     }
     PatchCentre[p] = centre * (1.0 / geometry.patchArea[p]);
     PatchNormal[p] = Normalized(normal);
+  }
+  PatchRadius.assign(patches, 0.0);
+  for (size_t p = 0; p < patches; ++p)
+  {
+    for (const SampleTriangle& tri : PatchTriangles[p])
+    {
+      for (const Vec3* corner : { &tri.A, &tri.B, &tri.C })
+      {
+        PatchRadius[p] = std::max(PatchRadius[p], Norm(*corner - PatchCentre[p]));
+      }
+    }
   }
   BuildOutlines();
   if (CullVisibility)
@@ -195,12 +188,22 @@ void ShooterFormFactors::FindBlockers()
 
 bool ShooterFormFactors::MayBeBlocked(int patch, int element) const
 {
+  return ShaftMayBeBlocked(PatchBox[patch], ElementBox[element]);
+}
+
+bool ShooterFormFactors::MayBeBlockedBetweenPatches(int receiver, int shooter) const
+{
+  return !CullVisibility || ShaftMayBeBlocked(PatchBox[shooter], PatchBox[receiver]);
+}
+
+bool ShooterFormFactors::ShaftMayBeBlocked(const Box& from, const Box& to) const
+{
   if (Blockers.empty())
   {
     return false;
   }
-  Box shaft = PatchBox[patch];
-  shaft.Add(ElementBox[element]);
+  Box shaft = from;
+  shaft.Add(to);
   const double tolerance = 1e-9 * Geometry.sceneDiagonal;
   if (!shaft.Overlaps(AllBlockers, tolerance))
   {
@@ -260,15 +263,60 @@ void ShooterFormFactors::BuildOutlines()
         }
       }
     }
-    for (const auto& edge : edges)
+    PatchOutline[p] = MergeCollinear(edges);
+  }
+}
+
+std::vector<Vec3> ShooterFormFactors::MergeCollinear(const std::map<std::pair<int, int>, int>& edges) const
+{
+  // Elements put points along the patch border; without merging, the outline (and the
+  // cost of every form factor to the patch) would grow with the number of elements.
+  std::map<int, std::vector<int>> next, previous;
+  for (const auto& edge : edges)
+  {
+    if (edge.second == 1)
+    {
+      next[edge.first.first].push_back(edge.first.second);
+      previous[edge.first.second].push_back(edge.first.first);
+    }
+  }
+  auto passThrough = [&](int b) {
+    const auto in = previous.find(b), out = next.find(b);
+    if (in == previous.end() || out == next.end() || in->second.size() != 1 || out->second.size() != 1)
+    {
+      return false;
+    }
+    const Vec3& a = Mesh.points[in->second[0]];
+    const Vec3& c = Mesh.points[out->second[0]];
+    const Vec3 ab = Mesh.points[b] - a, bc = c - Mesh.points[b];
+    return Dot(ab, bc) > 0 && Norm(Cross(ab, bc)) <= 1e-9 * Norm(ab) * Norm(bc);
+  };
+  std::vector<Vec3> outline;
+  for (const auto& edge : edges)
+  {
+    const int start = edge.first.first;
+    if (edge.second != 1)
     {
       for (int c = 0; c < edge.second; ++c)
       {
-        PatchOutline[p].push_back(Mesh.points[edge.first.first]);
-        PatchOutline[p].push_back(Mesh.points[edge.first.second]);
+        outline.push_back(Mesh.points[start]);
+        outline.push_back(Mesh.points[edge.first.second]);
       }
+      continue;
     }
+    if (passThrough(start))
+    {
+      continue; // inside a straight run that another edge starts
+    }
+    int end = edge.first.second;
+    for (size_t guard = 0; passThrough(end) && guard < edges.size(); ++guard)
+    {
+      end = next[end][0];
+    }
+    outline.push_back(Mesh.points[start]);
+    outline.push_back(Mesh.points[end]);
   }
+  return outline;
 }
 
 const ShooterFormFactors::SampleTriangle& ShooterFormFactors::PickTriangle(int patch, double u) const
@@ -305,87 +353,109 @@ long long ShooterFormFactors::Compute(
   }
 }
 
+double ShooterFormFactors::PointFactor(int patch, const Vec3& x, const Vec3& normal, std::vector<Vec3>& scratch) const
+{
+  const std::vector<Vec3>& outline = PatchOutline[patch];
+  bool outlineInFront = !outline.empty();
+  for (size_t v = 0; v < outline.size() && outlineInFront; ++v)
+  {
+    outlineInFront = Dot(normal, outline[v] - x) >= 0;
+  }
+  if (outlineInFront)
+  {
+    // Planar patch wholly in front of the receiver: one outline instead of every
+    // element, and one front test (emitters radiate only from their front side).
+    if (Dot(PatchNormal[patch], x - PatchCentre[patch]) <= 0)
+    {
+      return 0;
+    }
+    return EdgeSetFormFactor(x, normal, outline.data(), static_cast<int>(outline.size() / 2));
+  }
+  double f = 0;
+  for (int s : Geometry.patchElements[patch])
+  {
+    if (Dot(Geometry.normal[s], x - Geometry.centroid[s]) <= 0)
+    {
+      continue;
+    }
+    f += PointToPolygonFormFactor(x, normal, Loops.data() + Mesh.offsets[s], Mesh.PolygonSize(s), scratch);
+  }
+  return f;
+}
+
+Vec3 ShooterFormFactors::SamplePoint(int patch, int r, int samples, SampleStream& random) const
+{
+  // Stratified in the area CDF, so the samples cover the whole patch.
+  const SampleTriangle& tri = PickTriangle(patch, (r + random.Next()) / samples);
+  double a = random.Next(), b = random.Next();
+  if (a + b > 1)
+  {
+    a = 1 - a;
+    b = 1 - b;
+  }
+  return tri.A + (tri.B - tri.A) * a + (tri.C - tri.A) * b + tri.Normal * Epsilon;
+}
+
+int ShooterFormFactors::VisibleRays(int patch, int element, int samples) const
+{
+  SampleStream random(static_cast<std::uint64_t>(patch), static_cast<std::uint64_t>(element));
+  const Vec3 from = Geometry.centroid[element] + Geometry.normal[element] * Epsilon;
+  int visible = 0;
+  for (int r = 0; r < samples; ++r)
+  {
+    visible += Rays.Occluded(from, SamplePoint(patch, r, samples, random), 1e-6) ? 0 : 1;
+  }
+  return visible;
+}
+
+int ShooterFormFactors::VisibleRaysBetweenPatches(int receiver, int shooter, int samples) const
+{
+  SampleStream random(static_cast<std::uint64_t>(shooter), static_cast<std::uint64_t>(receiver), 7);
+  int visible = 0;
+  for (int r = 0; r < samples; ++r)
+  {
+    const Vec3 from = SamplePoint(receiver, r, samples, random);
+    visible += Rays.Occluded(from, SamplePoint(shooter, r, samples, random), 1e-6) ? 0 : 1;
+  }
+  return visible;
+}
+
+double ShooterFormFactors::ElementFactor(int patch, int e, int samples, std::vector<Vec3>& scratch, RayCounts& counts) const
+{
+  const double f = PointFactor(patch, Geometry.centroid[e], Geometry.normal[e], scratch);
+  if (f <= 0 || samples <= 0)
+  {
+    return f;
+  }
+  if (CullVisibility && !MayBeBlocked(patch, e))
+  {
+    ++counts.Unblockable;
+    return f;
+  }
+  counts.Rays += samples;
+  return f * VisibleRays(patch, e, samples) / samples;
+}
+
+void ShooterFormFactors::Count(const RayCounts& counts, int samples)
+{
+  Unblockable += counts.Unblockable;
+  Skipped += counts.Unblockable * samples;
+}
+
 long long ShooterFormFactors::Analytic(int patch, int samples, std::vector<double>& factors)
 {
   const SceneGeometry& g = Geometry;
   const int n = static_cast<int>(g.normal.size());
-  const std::vector<int>& shooters = g.patchElements[patch];
   std::atomic<long long> rays{ 0 };
   Pool.For(n, 64, [&](int begin, int end) {
     thread_local std::vector<Vec3> scratch; // clipping buffer, allocated once per thread
-    long long chunkRays = 0, unblockable = 0;
+    RayCounts counts;
     for (int e = begin; e < end; ++e)
     {
-      factors[e] = 0;
-      if (g.elementPatch[e] == patch)
-      {
-        continue;
-      }
-      const Vec3& x = g.centroid[e];
-      double f = 0;
-      const std::vector<Vec3>& outline = PatchOutline[patch];
-      bool outlineInFront = !outline.empty();
-      for (size_t v = 0; v < outline.size() && outlineInFront; ++v)
-      {
-        outlineInFront = Dot(g.normal[e], outline[v] - x) >= 0;
-      }
-      if (outlineInFront)
-      {
-        // Planar patch wholly in front of the receiver: one outline instead of every
-        // element, and one front test (emitters radiate only from their front side).
-        if (Dot(PatchNormal[patch], x - PatchCentre[patch]) > 0)
-        {
-          f = EdgeSetFormFactor(x, g.normal[e], outline.data(), static_cast<int>(outline.size() / 2));
-        }
-      }
-      else
-      {
-        for (int s : shooters)
-        {
-          if (Dot(g.normal[s], x - g.centroid[s]) <= 0)
-          {
-            continue;
-          }
-          f += PointToPolygonFormFactor(
-            x, g.normal[e], Loops.data() + Mesh.offsets[s], Mesh.PolygonSize(s), scratch);
-        }
-      }
-      if (f <= 0 || samples <= 0)
-      {
-        factors[e] = f;
-        continue;
-      }
-      if (CullVisibility && !MayBeBlocked(patch, e))
-      {
-        factors[e] = f;
-        ++unblockable;
-        continue;
-      }
-      SampleStream random(static_cast<std::uint64_t>(patch), static_cast<std::uint64_t>(e));
-      const Vec3 from = x + g.normal[e] * Epsilon;
-      int visible = 0;
-      for (int r = 0; r < samples; ++r)
-      {
-        // Stratified in the area CDF, so the samples cover the whole patch.
-        const SampleTriangle& tri = PickTriangle(patch, (r + random.Next()) / samples);
-        double a = random.Next(), b = random.Next();
-        if (a + b > 1)
-        {
-          a = 1 - a;
-          b = 1 - b;
-        }
-        const Vec3 target = tri.A + (tri.B - tri.A) * a + (tri.C - tri.A) * b;
-        if (!Rays.Occluded(from, target + tri.Normal * Epsilon, 1e-6))
-        {
-          ++visible;
-        }
-      }
-      chunkRays += samples;
-      factors[e] = f * visible / samples;
+      factors[e] = g.elementPatch[e] == patch ? 0.0 : ElementFactor(patch, e, samples, scratch, counts);
     }
-    rays += chunkRays;
-    Unblockable += unblockable;
-    Skipped += unblockable * samples;
+    rays += counts.Rays;
+    Count(counts, samples);
   });
   return rays;
 }

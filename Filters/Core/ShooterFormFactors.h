@@ -2,11 +2,13 @@
 #ifndef RadiosityCore_ShooterFormFactors_h
 #define RadiosityCore_ShooterFormFactors_h
 
+#include "SampleStream.h"
 #include "Scene.h"
 #include "Visibility.h"
 #include "WorkerPool.h"
 
 #include <atomic>
+#include <map>
 #include <vector>
 
 namespace radiosity
@@ -41,6 +43,35 @@ public:
   long long Compute(int patch, FormFactorMethod method, int samples, int shot,
     std::vector<double>& factors);
 
+  /// Rays cast and pairs proven unblockable, counted per thread and added up once.
+  struct RayCounts
+  {
+    long long Rays = 0;
+    long long Unblockable = 0;
+  };
+
+  /// Unoccluded F(dA at x with `normal` -> patch); 0 where the patch's front faces away.
+  double PointFactor(int patch, const Vec3& x, const Vec3& normal, std::vector<Vec3>& scratch) const;
+  /// The analytic method's factor for one element: PointFactor at its centroid times the
+  /// unblocked fraction of `samples` shadow rays (none where culling proves them useless).
+  double ElementFactor(int patch, int element, int samples, std::vector<Vec3>& scratch, RayCounts& counts) const;
+  /// Unblocked rays of `samples` between stratified points of two patches.
+  int VisibleRaysBetweenPatches(int receiver, int shooter, int samples) const;
+  /// Adds a thread's counts to the totals reported by RaysSkipped and PairsUnblockable.
+  void Count(const RayCounts& counts, int samples);
+  /// False when no blocking surface can come between the two patches.
+  bool MayBeBlockedBetweenPatches(int receiver, int shooter) const;
+  bool Culling() const { return CullVisibility; }
+
+  const Vec3& Centre(int patch) const { return PatchCentre[patch]; }
+  const Vec3& Normal(int patch) const { return PatchNormal[patch]; }
+  /// Largest distance from the centre to a point of the patch.
+  double Radius(int patch) const { return PatchRadius[patch]; }
+  /// True when the patch is flat and shoots through one outline.
+  bool Planar(int patch) const { return !PatchOutline[patch].empty(); }
+  const std::vector<std::vector<Vec3>>& Outlines() const { return PatchOutline; }
+  const std::vector<Vec3>& Centres() const { return PatchCentre; }
+
   /// Planes of elements with scene geometry strictly behind them: the only surfaces that
   /// can block a pair. -1 when not examined.
   int BlockingPlanes() const { return CullVisibility ? BlockingPlaneCount : -1; }
@@ -53,6 +84,8 @@ private:
   long long Hemicube(int patch, int resolution, std::vector<double>& factors);
   long long MonteCarlo(int patch, int samples, int shot, std::vector<double>& factors);
   void BuildOutlines();
+  /// Boundary edges (by point id, with multiplicity) as segments, straight runs joined.
+  std::vector<Vec3> MergeCollinear(const std::map<std::pair<int, int>, int>& edges) const;
   /// Turns F(patch -> e) sums in `factors` into F(e -> patch) by reciprocity.
   void Reciprocal(int patch, std::vector<double>& factors) const;
   /// Closest polygon hit by the ray that faces the ray (receives on its front), else -1.
@@ -70,6 +103,7 @@ private:
   };
   std::vector<std::vector<SampleTriangle>> PatchTriangles;
   std::vector<Vec3> PatchCentre, PatchNormal;
+  std::vector<double> PatchRadius;
   /// Outline of each planar patch (interior edges cancelled), as start/end point pairs;
   /// empty for a patch whose elements are not coplanar.
   std::vector<std::vector<Vec3>> PatchOutline;
@@ -82,6 +116,9 @@ private:
   double Epsilon = 0;
 
   const SampleTriangle& PickTriangle(int patch, double u) const;
+  /// The r-th of `samples` points stratified over the patch, just off its front.
+  Vec3 SamplePoint(int patch, int r, int samples, SampleStream& random) const;
+  int VisibleRays(int patch, int element, int samples) const;
 
   struct Box
   {
@@ -92,6 +129,7 @@ private:
   };
   void FindBlockers();
   bool MayBeBlocked(int patch, int element) const;
+  bool ShaftMayBeBlocked(const Box& from, const Box& to) const;
   bool CullVisibility = false;
   int BlockingPlaneCount = 0;
   std::vector<Box> ElementBox, PatchBox, Blockers;

@@ -1,0 +1,337 @@
+#include "HierarchicalRadiosity.h"
+#include "ShootingState.h"
+
+#include <atomic>
+
+namespace radiosity
+{
+
+namespace
+{
+/// One shooter's links: receiver patches taken whole, and receiver patches taken element by
+/// element, grouped by patch so that one thread owns each patch's unshot sum.
+struct ShooterLinks
+{
+  std::vector<int> Patches;
+  std::vector<int> NodeFactorBegin; ///< where each patch link's node factors start
+  std::vector<float> NodeFactors;   ///< F(node -> shooter) at each node of each linked patch
+  std::vector<float> MeanFactors;   ///< their area-weighted mean over the patch
+  std::vector<int> Groups;   ///< receiver patch of each element group
+  std::vector<int> GroupEnd; ///< end of each group in Elements
+  std::vector<int> Elements;
+  std::vector<float> ElementFactors;
+  /// Sum of factor x receiver area: the power received per unit of shot radiosity.
+  double ReceivingArea = 0;
+  bool Built = false;
+
+  double Bytes() const
+  {
+    return static_cast<double>(Patches.size() * 3 + NodeFactors.size() + Groups.size() * 2 + Elements.size() * 2) * 4;
+  }
+};
+
+enum class LinkKind : char
+{
+  None,
+  Patch,
+  Elements
+};
+
+/// Centres closer than this many times the sum of two patches' radii are linked element by
+/// element: there the form factor varies too much across the receiver for one value.
+constexpr double kNearRadii = 2.0;
+
+class LinkBuilder
+{
+public:
+  LinkBuilder(const SceneGeometry& g, ShooterFormFactors& factors, const PatchNodes& nodes, const WorkerPool& pool,
+    int samples, double threshold)
+    : G(g)
+    , Factors(factors)
+    , Nodes(nodes)
+    , Pool(pool)
+    , Samples(samples)
+    , Threshold(threshold)
+    , Patches(static_cast<int>(g.patchElements.size()))
+    , Kind(Patches)
+    , NodeFactor(nodes.Count())
+  {
+  }
+
+  /// `shotFraction`: the largest fraction of a solution's emitted power this shot carries.
+  ShooterLinks Build(int shooter, double shotFraction, SolverStatistics& stats)
+  {
+    Classify(shooter, shotFraction, stats);
+    ShooterLinks links;
+    links.Built = true;
+    for (int q = 0; q < Patches; ++q)
+    {
+      if (Kind[q] == LinkKind::Patch)
+      {
+        AddPatchLink(q, links);
+      }
+      else if (Kind[q] == LinkKind::Elements)
+      {
+        links.Groups.push_back(q);
+      }
+    }
+    LinkElements(shooter, links, stats);
+    stats.PatchLinks += static_cast<long long>(links.Patches.size());
+    stats.ElementLinks += static_cast<long long>(links.Elements.size());
+    stats.LinkBytes += links.Bytes();
+    return links;
+  }
+
+private:
+  void AddPatchLink(int q, ShooterLinks& links) const
+  {
+    links.Patches.push_back(q);
+    links.NodeFactorBegin.push_back(static_cast<int>(links.NodeFactors.size()));
+    double covered = 0;
+    for (int j = Nodes.Begin(q); j < Nodes.End(q); ++j)
+    {
+      const float f = static_cast<float>(NodeFactor[j]);
+      links.NodeFactors.push_back(f);
+      covered += f * Nodes.CoveredArea(j);
+    }
+    links.MeanFactors.push_back(static_cast<float>(covered / G.patchArea[q]));
+    links.ReceivingArea += static_cast<double>(links.MeanFactors.back()) * G.patchArea[q];
+  }
+
+  /// Decides per receiver patch: no link, one patch link, or element links.
+  void Classify(int shooter, double shotFraction, SolverStatistics& stats)
+  {
+    std::atomic<long long> rays{ 0 };
+    Pool.For(Patches, 16, [&](int begin, int end) {
+      thread_local std::vector<Vec3> scratch;
+      long long chunkRays = 0;
+      for (int q = begin; q < end; ++q)
+      {
+        Kind[q] = q == shooter ? LinkKind::None : Decide(shooter, q, shotFraction, scratch, chunkRays);
+      }
+      rays += chunkRays;
+    });
+    stats.RayCount += rays;
+    stats.FormFactorCount += Patches;
+  }
+
+  LinkKind Decide(int s, int q, double shotFraction, std::vector<Vec3>& scratch, long long& rays)
+  {
+    if (!Factors.Planar(s) || !Factors.Planar(q))
+    {
+      return LinkKind::Elements;
+    }
+    const Vec3 d = Factors.Centre(q) - Factors.Centre(s);
+    const double ahead = Dot(Factors.Normal(s), d), facing = -Dot(Factors.Normal(q), d);
+    const double rs = Factors.Radius(s), rq = Factors.Radius(q);
+    if (ahead + rq <= 0 || facing + rs <= 0)
+    {
+      return LinkKind::None; // one wholly behind the other's plane: nothing passes
+    }
+    if (Norm(d) < kNearRadii * (rs + rq) || Straddles(q, s) || Straddles(s, q))
+    {
+      return LinkKind::Elements; // near, or partly behind a plane: resolve per element
+    }
+    double covered = 0;
+    for (int j = Nodes.Begin(q); j < Nodes.End(q); ++j)
+    {
+      NodeFactor[j] = Factors.PointFactor(s, Nodes.Node(j), Factors.Normal(q), scratch);
+      covered += NodeFactor[j] * Nodes.CoveredArea(j);
+    }
+    if (covered <= 0)
+    {
+      return LinkKind::None;
+    }
+    // Power fraction reaching q: F(s -> q) = F(q -> s) A_q / A_s.
+    if (shotFraction * covered / G.patchArea[s] >= Threshold)
+    {
+      return LinkKind::Elements; // strong transfer: worth element resolution
+    }
+    double visible = 1;
+    if (Samples > 0 && Factors.MayBeBlockedBetweenPatches(q, s))
+    {
+      visible = static_cast<double>(Factors.VisibleRaysBetweenPatches(q, s, Samples)) / Samples;
+      rays += Samples;
+    }
+    for (int j = Nodes.Begin(q); j < Nodes.End(q); ++j)
+    {
+      NodeFactor[j] *= visible;
+    }
+    return visible > 0 ? LinkKind::Patch : LinkKind::None;
+  }
+
+  /// True when part of patch `a` lies behind the plane of patch `b` (where the form factor
+  /// is cut off inside `a`, which one value per node cannot represent).
+  bool Straddles(int a, int b) const
+  {
+    const double tolerance = 1e-9 * G.sceneDiagonal;
+    if (Nodes.End(a) - Nodes.Begin(a) < 3)
+    {
+      return Dot(Factors.Normal(b), Factors.Centre(a) - Factors.Centre(b)) - Factors.Radius(a) <= 0;
+    }
+    for (int j = Nodes.Begin(a); j < Nodes.End(a); ++j)
+    {
+      if (Dot(Factors.Normal(b), Nodes.Node(j) - Factors.Centre(b)) < -tolerance)
+      {
+        return true;
+      }
+    }
+    return false;
+  }
+
+  /// Element factors for every element group, in parallel, kept in patch order.
+  void LinkElements(int shooter, ShooterLinks& links, SolverStatistics& stats)
+  {
+    std::vector<size_t> offset(links.Groups.size() + 1, 0);
+    for (size_t i = 0; i < links.Groups.size(); ++i)
+    {
+      offset[i + 1] = offset[i] + G.patchElements[links.Groups[i]].size();
+    }
+    Scratch.assign(offset.back(), 0.0);
+    std::atomic<long long> rays{ 0 };
+    Pool.For(static_cast<int>(links.Groups.size()), 1, [&](int begin, int end) {
+      thread_local std::vector<Vec3> scratch;
+      ShooterFormFactors::RayCounts counts;
+      for (int i = begin; i < end; ++i)
+      {
+        const std::vector<int>& elements = G.patchElements[links.Groups[i]];
+        for (size_t j = 0; j < elements.size(); ++j)
+        {
+          Scratch[offset[i] + j] = Factors.ElementFactor(shooter, elements[j], Samples, scratch, counts);
+        }
+      }
+      rays += counts.Rays;
+      Factors.Count(counts, Samples);
+    });
+    stats.RayCount += rays;
+    stats.FormFactorCount += static_cast<long long>(offset.back());
+    for (size_t i = 0; i < links.Groups.size(); ++i)
+    {
+      const std::vector<int>& elements = G.patchElements[links.Groups[i]];
+      for (size_t j = 0; j < elements.size(); ++j)
+      {
+        const float f = static_cast<float>(Scratch[offset[i] + j]);
+        if (f > 0)
+        {
+          links.Elements.push_back(elements[j]);
+          links.ElementFactors.push_back(f);
+          links.ReceivingArea += static_cast<double>(f) * G.area[elements[j]];
+        }
+      }
+      links.GroupEnd.push_back(static_cast<int>(links.Elements.size()));
+    }
+  }
+
+  const SceneGeometry& G;
+  ShooterFormFactors& Factors;
+  const PatchNodes& Nodes;
+  const WorkerPool& Pool;
+  const int Samples;
+  const double Threshold;
+  const int Patches;
+  std::vector<LinkKind> Kind;
+  std::vector<double> NodeFactor, Scratch;
+};
+
+std::vector<Vec3> MeanReflectance(const SceneMesh& mesh, const SceneGeometry& g)
+{
+  std::vector<Vec3> mean(g.patchElements.size());
+  for (size_t p = 0; p < mean.size(); ++p)
+  {
+    for (int e : g.patchElements[p])
+    {
+      mean[p] += mesh.reflectance[e] * (g.area[e] / g.patchArea[p]);
+    }
+  }
+  return mean;
+}
+
+/// Sends the current shot along a shooter's links; returns the power received.
+template <typename Channel>
+double DistributeAlongLinks(ShootingState<Channel>& state, const WorkerPool& pool, const ShooterLinks& links,
+  const std::vector<Vec3>& meanReflectance)
+{
+  const int patchLinks = static_cast<int>(links.Patches.size());
+  const int items = patchLinks + static_cast<int>(links.Groups.size());
+  // Every item touches one receiver patch only, so the items run in parallel safely.
+  pool.For(items, 8, [&](int begin, int end) {
+    for (int i = begin; i < end; ++i)
+    {
+      if (i < patchLinks)
+      {
+        const int q = links.Patches[i];
+        state.GatherPatch(q, links.NodeFactors.data() + links.NodeFactorBegin[i], links.MeanFactors[i], meanReflectance[q]);
+        continue;
+      }
+      const int group = i - patchLinks;
+      const int first = group == 0 ? 0 : links.GroupEnd[group - 1];
+      for (int j = first; j < links.GroupEnd[group]; ++j)
+      {
+        state.Gather(links.Elements[j], links.ElementFactors[j]);
+        state.Deposit(links.Elements[j], links.ElementFactors[j]);
+      }
+    }
+  });
+  return state.ShotTotal() * links.ReceivingArea;
+}
+
+template <typename Channel>
+void Shoot(const SceneMesh& mesh, const SceneGeometry& g, const Visibility& rays,
+  const std::vector<Vec3>& emission, int L, const SolverOptions& options, SolverClock::time_point start,
+  Solution& out)
+{
+  ShootingState<Channel> state(mesh, g, emission, L, options, start, out);
+  SolverStatistics& stats = out.Statistics;
+  WorkerPool pool(options.Threads);
+  ShooterFormFactors estimator(mesh, g, rays, pool, options.Visibility == EffectMode::Auto);
+  const PatchNodes nodes(mesh, g, estimator.Outlines(), estimator.Centres());
+  state.EnablePatchGathering(nodes);
+  const int samples = options.Visibility == EffectMode::Off ? 0 : options.Samples;
+  const double refine = options.RefinementThreshold > 0 ? options.RefinementThreshold : 2.0; // 2: never
+  LinkBuilder builder(g, estimator, nodes, pool, samples, refine);
+  const std::vector<Vec3> meanReflectance = MeanReflectance(mesh, g);
+  std::vector<ShooterLinks> links(state.Patches);
+  std::vector<double> factors;
+  while (state.Continue())
+  {
+    const int shooter = state.PickShooter();
+    const bool emitting = options.DirectToElements && state.Emitting(shooter);
+    state.TakeShot(shooter);
+    if (emitting)
+    {
+      // Direct light: every element, per-element shadow rays, nothing kept.
+      factors.resize(state.Elements);
+      stats.RayCount += estimator.Compute(shooter, FormFactorMethod::Analytic, samples, stats.Shots, factors);
+      stats.FormFactorCount += state.Elements;
+      state.EndShot(shooter, DistributeToElements(state, pool, factors));
+      continue;
+    }
+    if (!links[shooter].Built)
+    {
+      links[shooter] = builder.Build(shooter, state.ShotFraction(shooter), stats);
+    }
+    state.EndShot(shooter, DistributeAlongLinks(state, pool, links[shooter], meanReflectance));
+  }
+  stats.RaysSkipped = estimator.RaysSkipped();
+  stats.PairsUnblockable = estimator.PairsUnblockable();
+  stats.BlockingSurfaces = estimator.BlockingPlanes();
+  state.Finish();
+}
+} // namespace
+
+void SolveHierarchical(const SceneMesh& mesh, const SceneGeometry& geometry, const Visibility& rays,
+  const std::vector<Vec3>& emission, int solutions, bool grey, const SolverOptions& options,
+  SolverClock::time_point start, Solution& out)
+{
+  out.Statistics.Method = SolverMethod::Hierarchical;
+  if (grey)
+  {
+    Shoot<Grey>(mesh, geometry, rays, emission, solutions, options, start, out);
+  }
+  else
+  {
+    Shoot<Rgb>(mesh, geometry, rays, emission, solutions, options, start, out);
+  }
+}
+
+} // namespace radiosity

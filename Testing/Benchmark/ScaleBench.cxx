@@ -1,0 +1,318 @@
+// ./relight bench scale: time, memory and accuracy of the solver methods as the furnished
+// room grows from 10k to 1M elements, k = 8 lights. Prints ratios measured in one run and
+// writes a CSV; it never judges them.
+#include "FurnishedRoom.h"
+#include "LightSolutions.h"
+#include "WorkerPool.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace radiosity;
+using namespace radiosity_bench;
+
+namespace
+{
+double Now()
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+/// Peak resident memory since the last ResetPeakMemory, in MB (Linux).
+double PeakMemoryMB()
+{
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+  {
+    if (line.rfind("VmHWM:", 0) == 0)
+    {
+      return std::atof(line.c_str() + 6) / 1024.0;
+    }
+  }
+  return 0;
+}
+
+void ResetPeakMemory()
+{
+  std::ofstream("/proc/self/clear_refs") << "5";
+}
+
+/// Fixed rays from three viewpoints inside the room; each hit is a probe point.
+struct Probes
+{
+  std::vector<Vec3> Origin, Direction;
+
+  Probes(int count)
+  {
+    std::mt19937 rng(11);
+    std::normal_distribution<double> normal;
+    const Vec3 eyes[3] = { { 3.0, 2.5, 1.6 }, { 1.2, 1.0, 1.2 }, { 4.6, 3.9, 2.2 } };
+    for (int i = 0; i < count; ++i)
+    {
+      Origin.push_back(eyes[i % 3]);
+      Direction.push_back(Normalized(Vec3{ normal(rng), normal(rng), normal(rng) }));
+    }
+  }
+};
+
+/// Per probe and solution, the point-interpolated radiosity (channel sum) that a renderer
+/// would show; NaN where the probe sees a lamp or nothing.
+std::vector<double> Sample(const ProgressiveRadiosity& solver, const SceneMesh& mesh, const Solution& s,
+  const Probes& probes)
+{
+  const int L = s.Solutions;
+  const std::vector<Vec3> points = AverageToPoints(mesh, solver.Geometry(), s.Radiosity, L);
+  std::vector<double> values(probes.Origin.size() * L, std::nan(""));
+  for (size_t i = 0; i < probes.Origin.size(); ++i)
+  {
+    Visibility::Hit hit;
+    if (!solver.Rays().Intersect(probes.Origin[i], probes.Direction[i], hit) || mesh.lightId[hit.polygon] >= 0)
+    {
+      continue;
+    }
+    const double w[3] = { 1 - hit.u - hit.v, hit.u, hit.v };
+    for (int m = 0; m < L; ++m)
+    {
+      double v = 0;
+      for (int c = 0; c < 3; ++c)
+      {
+        const Vec3& b = points[static_cast<size_t>(hit.corner[c]) * L + m];
+        v += w[c] * (b.x + b.y + b.z);
+      }
+      values[i * L + m] = v;
+    }
+  }
+  return values;
+}
+
+/// Mean over lights of mean |B - B_ref| / mean B_ref over the probes both see.
+double MeanError(const std::vector<double>& values, const std::vector<double>& reference, int L, double* worst)
+{
+  double total = 0;
+  *worst = 0;
+  for (int m = 0; m < L; ++m)
+  {
+    double diff = 0, sum = 0;
+    for (size_t i = m; i < values.size(); i += L)
+    {
+      if (!std::isnan(values[i]) && !std::isnan(reference[i]))
+      {
+        diff += std::fabs(values[i] - reference[i]);
+        sum += reference[i];
+      }
+    }
+    const double e = sum > 0 ? diff / sum : 0;
+    total += e;
+    *worst = std::max(*worst, e);
+  }
+  return total / L;
+}
+
+/// Writes the room's polygons and the probe points (where the probe rays hit, with the
+/// surface normal) as JSON, for an external renderer to make a reference.
+void ExportRoom(const RoomPolygons& room, const ProgressiveRadiosity& solver, const SceneMesh& mesh,
+  const Probes& probes, const std::string& path)
+{
+  std::ofstream out(path);
+  out.precision(9);
+  out << "{\"lights\": " << room.LightNames.size() << ",\n\"polygons\": [\n";
+  for (size_t c = 0; c + 1 < room.Offsets.size(); ++c)
+  {
+    out << (c ? ",\n" : "") << "{\"light\": " << room.LightId[c] << ", \"reflectance\": [" << room.Reflectance[c].x
+        << ", " << room.Reflectance[c].y << ", " << room.Reflectance[c].z << "], \"points\": [";
+    for (int v = room.Offsets[c]; v < room.Offsets[c + 1]; ++v)
+    {
+      const Vec3& p = room.Points[room.Connectivity[v]];
+      out << (v > room.Offsets[c] ? ", " : "") << "[" << p.x << ", " << p.y << ", " << p.z << "]";
+    }
+    out << "]}";
+  }
+  out << "],\n\"probes\": [\n";
+  for (size_t i = 0; i < probes.Origin.size(); ++i)
+  {
+    Visibility::Hit hit;
+    const bool seen = solver.Rays().Intersect(probes.Origin[i], probes.Direction[i], hit) && mesh.lightId[hit.polygon] < 0;
+    const Vec3& n = solver.Geometry().normal[seen ? hit.polygon : 0];
+    const Vec3 a = mesh.points[hit.corner[0]], b = mesh.points[hit.corner[1]], c = mesh.points[hit.corner[2]];
+    const Vec3 x = seen ? a * (1 - hit.u - hit.v) + b * hit.u + c * hit.v : Vec3();
+    out << (i ? ",\n" : "") << "{\"seen\": " << (seen ? "true" : "false") << ", \"point\": [" << x.x << ", " << x.y
+        << ", " << x.z << "], \"normal\": [" << n.x << ", " << n.y << ", " << n.z << "]}";
+  }
+  out << "]}\n";
+}
+
+struct Run
+{
+  Solution Result;
+  double Seconds = 0, MemoryMB = 0;
+};
+
+Run SolveRoom(const ProgressiveRadiosity& solver, const SceneMesh& mesh, int lights, SolutionMode mode,
+  SolverOptions options)
+{
+  ResetPeakMemory();
+  Run run;
+  const double t0 = Now();
+  run.Result = SolveLights(solver, mesh, LightGrouping::OnePerLight(lights), {}, mode, options);
+  run.Seconds = Now() - t0;
+  run.MemoryMB = PeakMemoryMB();
+  return run;
+}
+
+const char* Name(SolverMethod m)
+{
+  return m == SolverMethod::Hierarchical ? "hierarchical" : "progressive";
+}
+
+struct Csv
+{
+  std::ostringstream Text;
+  Csv() { Text << "elements,patches,method,mode,lights,seconds,shots,converged,peak_mb,links_mb,mean_error,max_error\n"; }
+  void Add(const SceneMesh& mesh, int patches, const Run& run, const char* mode, int lights, double mean,
+    double worst)
+  {
+    const SolverStatistics& s = run.Result.Statistics;
+    Text << mesh.NumberOfPolygons() << ',' << patches << ',' << Name(s.Method) << ',' << mode << ',' << lights
+         << ',' << run.Seconds << ',' << s.Shots << ',' << (s.Converged ? 1 : 0) << ',' << run.MemoryMB << ','
+         << s.LinkBytes / 1048576.0 << ',' << mean << ',' << worst << '\n';
+  }
+};
+
+void Print(const char* label, const SceneMesh& mesh, int patches, const Run& run, double mean, double worst)
+{
+  const SolverStatistics& s = run.Result.Statistics;
+  std::printf("%-28s %9d %7d %9.2f %7d %5s %8.0f %8.1f %8.2f%% %7.2f%%\n", label, mesh.NumberOfPolygons(), patches,
+    run.Seconds, s.Shots, s.Converged ? "yes" : "NO", run.MemoryMB, s.LinkBytes / 1048576.0, 100 * mean,
+    100 * worst);
+  std::fflush(stdout);
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  std::vector<long long> sizes = { 10000, 100000, 1000000 };
+  double patch = 0.4;
+  long long referenceElements = 40000;
+  std::string csvPath = "out/bench/scale.csv", exportPath;
+  for (int i = 1; i + 1 < argc; i += 2)
+  {
+    const std::string key = argv[i];
+    if (key == "--sizes")
+    {
+      sizes.clear();
+      std::istringstream list(argv[i + 1]);
+      for (std::string item; std::getline(list, item, ',');)
+      {
+        sizes.push_back(std::atoll(item.c_str()));
+      }
+    }
+    else if (key == "--patch")
+      patch = std::atof(argv[i + 1]);
+    else if (key == "--reference")
+      referenceElements = std::atoll(argv[i + 1]);
+    else if (key == "--csv")
+      csvPath = argv[i + 1];
+    else if (key == "--export")
+      exportPath = argv[i + 1];
+  }
+  const RoomPolygons room = FurnishedRoom();
+  const int lights = static_cast<int>(room.LightNames.size());
+  const double area = TotalArea(room);
+  const Probes probes(3000);
+  WorkerPool pool(0);
+  std::printf("Scale benchmark: furnished room, %zu polygons, %d lights, %.0f m^2, patch size %.2f m, %d threads\n\n",
+    room.Reflectance.size(), lights, area, patch, pool.Threads());
+
+  // The reference: progressive refinement converged to 1e-5 on a fine mesh.
+  const double referenceSize = std::sqrt(area / referenceElements);
+  SceneMesh referenceMesh;
+  std::string error = MeshRoom(room, 2 * referenceSize, referenceSize, referenceMesh);
+  if (!error.empty())
+  {
+    std::fprintf(stderr, "mesher: %s\n", error.c_str());
+    return 1;
+  }
+  ProgressiveRadiosity referenceSolver(referenceMesh);
+  if (!exportPath.empty())
+  {
+    ExportRoom(room, referenceSolver, referenceMesh, probes, exportPath);
+    std::printf("wrote %s\n", exportPath.c_str());
+    return 0;
+  }
+  SolverOptions converged;
+  converged.Solver = SolverMethod::ProgressiveRefinement;
+  converged.ConvergenceThreshold = 1e-5;
+  converged.MaximumShots = 1000000;
+  const Run reference = SolveRoom(referenceSolver, referenceMesh, lights, SolutionMode::LightTagged, converged);
+  const std::vector<double> referenceValues = Sample(referenceSolver, referenceMesh, reference.Result, probes);
+  std::printf("%-28s %9s %7s %9s %7s %5s %8s %8s %9s %8s\n", "run", "elements", "patches", "seconds", "shots",
+    "conv", "peak MB", "links MB", "mean err", "max err");
+  Print("reference (progressive 1e-5)", referenceMesh, static_cast<int>(referenceSolver.Geometry().patchElements.size()),
+    reference, 0, 0);
+
+  Csv csv;
+  std::vector<std::pair<double, double>> growth; // (elements, seconds) of hierarchical k = 8
+  double lastTagged = 0, lastCombined = 0;
+  for (long long target : sizes)
+  {
+    const double element = std::sqrt(area / target);
+    SceneMesh mesh;
+    error = MeshRoom(room, std::max(patch, element), element, mesh);
+    if (!error.empty())
+    {
+      std::fprintf(stderr, "mesher: %s\n", error.c_str());
+      return 1;
+    }
+    ProgressiveRadiosity solver(mesh);
+    const int patches = static_cast<int>(solver.Geometry().patchElements.size());
+    SolverOptions options;
+    options.Solver = SolverMethod::Hierarchical;
+    options.MaximumShots = 1000000;
+    double worst = 0, mean = 0;
+    const Run tagged = SolveRoom(solver, mesh, lights, SolutionMode::LightTagged, options);
+    mean = MeanError(Sample(solver, mesh, tagged.Result, probes), referenceValues, lights, &worst);
+    Print("hierarchical, k=8 tagged", mesh, patches, tagged, mean, worst);
+    std::printf("  links: %lld to patches, %lld to elements\n", tagged.Result.Statistics.PatchLinks,
+      tagged.Result.Statistics.ElementLinks);
+    csv.Add(mesh, patches, tagged, "tagged", lights, mean, worst);
+    const Run combined = SolveRoom(solver, mesh, lights, SolutionMode::StandardCombined, options);
+    Print("hierarchical, k=1 combined", mesh, patches, combined, std::nan(""), std::nan(""));
+    csv.Add(mesh, patches, combined, "combined", 1, std::nan(""), std::nan(""));
+    std::printf("  k=8 tagged / k=1 combined: %.2fx\n", tagged.Seconds / combined.Seconds);
+    growth.push_back({ static_cast<double>(mesh.NumberOfPolygons()), tagged.Seconds });
+    lastTagged = tagged.Seconds;
+    lastCombined = combined.Seconds;
+    if (target <= 20000)
+    {
+      options.Solver = SolverMethod::ProgressiveRefinement;
+      const Run progressive = SolveRoom(solver, mesh, lights, SolutionMode::LightTagged, options);
+      mean = MeanError(Sample(solver, mesh, progressive.Result, probes), referenceValues, lights, &worst);
+      Print("progressive, k=8 tagged", mesh, patches, progressive, mean, worst);
+      csv.Add(mesh, patches, progressive, "tagged", lights, mean, worst);
+      const double methodError = MeanError(Sample(solver, mesh, tagged.Result, probes),
+        Sample(solver, mesh, progressive.Result, probes), lights, &worst);
+      std::printf("  progressive / hierarchical: %.2fx time; hierarchical vs progressive on this mesh: %.2f%% mean, "
+                  "%.2f%% worst light\n",
+        progressive.Seconds / tagged.Seconds, 100 * methodError, 100 * worst);
+    }
+  }
+  std::printf("\n");
+  for (size_t i = 1; i < growth.size(); ++i)
+  {
+    const double exponent = std::log(growth[i].second / growth[i - 1].second) / std::log(growth[i].first / growth[i - 1].first);
+    std::printf("time growth exponent %.0f -> %.0f elements: %.2f\n", growth[i - 1].first, growth[i].first, exponent);
+  }
+  std::printf("largest size: k=8 tagged / k=1 combined %.2fx\n", lastTagged / std::max(lastCombined, 1e-9));
+  std::ofstream(csvPath) << csv.Text.str();
+  std::printf("wrote %s\n", csvPath.c_str());
+  return 0;
+}
