@@ -47,6 +47,7 @@ void vtkLightTaggedRadiosity::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SolutionMode: " << this->SolutionMode << "\n";
   os << indent << "FormFactorMethod: " << this->FormFactorMethod << "\n";
   os << indent << "FormFactorSamples: " << this->FormFactorSamples << "\n";
+  os << indent << "SolverMethod: " << this->SolverMethod << "\n";
   os << indent << "MaximumShots: " << this->MaximumShots << "\n";
   os << indent << "ConvergenceThreshold: " << this->ConvergenceThreshold << "\n";
   os << indent << "TimeBudget: " << this->TimeBudget << "\n";
@@ -90,6 +91,22 @@ std::vector<std::string> SolutionNames(
     name += (name.empty() ? "" : "+") + lights[i];
   }
   return names;
+}
+
+/// The method that ran, with what its transport held (field array SolverMethod).
+std::string DescribeMethod(const radiosity::SolverStatistics& stats)
+{
+  char text[256];
+  if (stats.Method == radiosity::SolverMethod::Hierarchical)
+  {
+    std::snprintf(text, sizeof(text), "Hierarchical: %lld patch links, %lld element links, %.1f MB of links",
+      stats.PatchLinks, stats.ElementLinks, stats.LinkBytes / 1048576.0);
+  }
+  else
+  {
+    std::snprintf(text, sizeof(text), "ProgressiveRefinement: %lld form factors", stats.FormFactorCount);
+  }
+  return text;
 }
 
 void AddColumn(vtkTable* table, const std::string& name, const std::vector<double>& values,
@@ -156,6 +173,7 @@ int vtkLightTaggedRadiosity::RequestData(
     return 0;
   }
   radiosity::SolverOptions options;
+  options.Solver = static_cast<radiosity::SolverMethod>(this->SolverMethod);
   options.MaximumShots = this->MaximumShots;
   options.ConvergenceThreshold = this->ConvergenceThreshold;
   options.TimeBudget = this->TimeBudget;
@@ -194,7 +212,7 @@ int vtkLightTaggedRadiosity::RequestData(
   }
   if (!stats.Converged && !stats.Aborted && !stats.OutOfTime)
   {
-    vtkWarningMacro(<< "Stopped at MaximumShots (" << this->MaximumShots
+    vtkWarningMacro(<< "Stopped at MaximumShots (" << stats.ShotCap
                     << ") before converging: remaining unshot energy "
                     << (stats.RemainingHistory.empty() ? 1.0 : stats.RemainingHistory.back())
                     << " of the initial, threshold " << this->ConvergenceThreshold
@@ -292,8 +310,13 @@ int vtkLightTaggedRadiosity::RequestData(
   fields->AddArray(effectNames);
   fields->AddArray(decisions);
   fields->AddArray(reasons);
-  vtkLogF(INFO, "LightTaggedRadiosity: %d shots, %.3f s; %s", stats.Shots, this->LastSolveSeconds,
-    radiosity::SummarizeEffects(effects).c_str());
+  const std::string method = DescribeMethod(stats);
+  vtkNew<vtkStringArray> methodArray;
+  methodArray->SetName("SolverMethod");
+  methodArray->InsertNextValue(method);
+  fields->AddArray(methodArray);
+  vtkLogF(INFO, "LightTaggedRadiosity: %s; %d shots, %.3f s; %s", method.c_str(), stats.Shots,
+    this->LastSolveSeconds, radiosity::SummarizeEffects(effects).c_str());
 
   vtkNew<vtkDoubleArray> unshot;
   unshot->SetName("UnshotHistory");

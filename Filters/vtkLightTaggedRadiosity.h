@@ -65,8 +65,33 @@ public:
   void SetSolutionModeToStandardSeparate() { this->SetSolutionMode(STANDARD_SEPARATE); }
   ///@}
 
+  enum SolverMethods
+  {
+    SOLVER_AUTO = 0,
+    PROGRESSIVE_REFINEMENT = 1,
+    HIERARCHICAL = 2
+  };
+
   ///@{
-  /// Upper bound on shots (per solve). Default 2000.
+  /// How transport is organised. ProgressiveRefinement: every shot evaluates a form factor
+  /// to every element (cost shots x elements; exact per element). Hierarchical: a shooter
+  /// links once to far receiver patches as a whole (form factors at their corners and
+  /// centre, interpolated) and to near ones per element, and reuses the links for later
+  /// shots; direct light from emitters still reaches every element with its own shadow
+  /// rays. Cost grows about linearly with elements. FormFactorMethod and
+  /// FormFactorSamples' meaning for Hemicube/MonteCarlo apply to ProgressiveRefinement
+  /// only; Hierarchical uses analytic factors with FormFactorSamples shadow rays.
+  /// Auto (default): Hierarchical for 20,000 elements or more (with Analytic factors and
+  /// patches of 4 or more elements on average), otherwise ProgressiveRefinement.
+  vtkSetClampMacro(SolverMethod, int, SOLVER_AUTO, HIERARCHICAL);
+  vtkGetMacro(SolverMethod, int);
+  void SetSolverMethodToAuto() { this->SetSolverMethod(SOLVER_AUTO); }
+  void SetSolverMethodToProgressiveRefinement() { this->SetSolverMethod(PROGRESSIVE_REFINEMENT); }
+  void SetSolverMethodToHierarchical() { this->SetSolverMethod(HIERARCHICAL); }
+  ///@}
+
+  ///@{
+  /// Upper bound on shots (per solve). 0 (default): 25 per patch, at least 2000.
   vtkSetClampMacro(MaximumShots, int, 0, VTK_INT_MAX);
   vtkGetMacro(MaximumShots, int);
   ///@}
@@ -204,7 +229,8 @@ private:
   void operator=(const vtkLightTaggedRadiosity&) = delete;
 
   int SolutionMode = LIGHT_TAGGED;
-  int MaximumShots = 2000;
+  int SolverMethod = SOLVER_AUTO;
+  int MaximumShots = 0;
   double ConvergenceThreshold = 1e-3;
   int FormFactorMethod = ANALYTIC;
   int FormFactorSamples = 4;

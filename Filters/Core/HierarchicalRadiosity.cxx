@@ -15,7 +15,7 @@ struct ShooterLinks
   std::vector<int> Patches;
   std::vector<int> NodeFactorBegin; ///< where each patch link's node factors start
   std::vector<float> NodeFactors;   ///< F(node -> shooter) at each node of each linked patch
-  std::vector<float> MeanFactors;   ///< their area-weighted mean over the patch
+  std::vector<double> MeanFactors;  ///< their area-weighted mean over the patch (exact sum)
   std::vector<int> Groups;   ///< receiver patch of each element group
   std::vector<int> GroupEnd; ///< end of each group in Elements
   std::vector<int> Elements;
@@ -26,7 +26,7 @@ struct ShooterLinks
 
   double Bytes() const
   {
-    return static_cast<double>(Patches.size() * 3 + NodeFactors.size() + Groups.size() * 2 + Elements.size() * 2) * 4;
+    return static_cast<double>(Patches.size() * 4 + NodeFactors.size() + Groups.size() * 2 + Elements.size() * 2) * 4;
   }
 };
 
@@ -94,8 +94,8 @@ private:
       links.NodeFactors.push_back(f);
       covered += f * Nodes.CoveredArea(j);
     }
-    links.MeanFactors.push_back(static_cast<float>(covered / G.patchArea[q]));
-    links.ReceivingArea += static_cast<double>(links.MeanFactors.back()) * G.patchArea[q];
+    links.MeanFactors.push_back(covered / G.patchArea[q]);
+    links.ReceivingArea += covered;
   }
 
   /// Decides per receiver patch: no link, one patch link, or element links.
@@ -132,12 +132,7 @@ private:
     {
       return LinkKind::Elements; // near, or partly behind a plane: resolve per element
     }
-    double covered = 0;
-    for (int j = Nodes.Begin(q); j < Nodes.End(q); ++j)
-    {
-      NodeFactor[j] = Factors.PointFactor(s, Nodes.Node(j), Factors.Normal(q), scratch);
-      covered += NodeFactor[j] * Nodes.CoveredArea(j);
-    }
+    const double covered = NodeFactors(s, q, scratch);
     if (covered <= 0)
     {
       return LinkKind::None;
@@ -158,6 +153,37 @@ private:
       NodeFactor[j] *= visible;
     }
     return visible > 0 ? LinkKind::Patch : LinkKind::None;
+  }
+
+  /// F(node -> s) at q's nodes, scaled so that their interpolant integrates over q like a
+  /// rule exact for quadratics: 3/4 of the fan triangles' centroid rule plus 1/4 of their
+  /// vertex rule (the interpolant's own integral). The vertex rule alone overestimates a
+  /// convex factor and underestimates a concave one, and the shooters linked per element
+  /// cannot make up for it: a closed box lost 0.1 % of every shot. Returns the integral.
+  double NodeFactors(int s, int q, std::vector<Vec3>& scratch)
+  {
+    const Vec3& normal = Factors.Normal(q);
+    double vertexRule = 0;
+    for (int j = Nodes.Begin(q); j < Nodes.End(q); ++j)
+    {
+      NodeFactor[j] = Factors.PointFactor(s, Nodes.Node(j), normal, scratch);
+      vertexRule += NodeFactor[j] * Nodes.CoveredArea(j);
+    }
+    if (Nodes.FanEnd(q) <= Nodes.FanBegin(q) || vertexRule <= 0)
+    {
+      return vertexRule;
+    }
+    double centroidRule = 0;
+    for (int t = Nodes.FanBegin(q); t < Nodes.FanEnd(q); ++t)
+    {
+      centroidRule += Factors.PointFactor(s, Nodes.FanCentroid(t), normal, scratch) * Nodes.FanArea(t);
+    }
+    const double integral = 0.75 * centroidRule + 0.25 * vertexRule;
+    for (int j = Nodes.Begin(q); j < Nodes.End(q); ++j)
+    {
+      NodeFactor[j] *= integral / vertexRule;
+    }
+    return integral;
   }
 
   /// True when part of patch `a` lies behind the plane of patch `b` (where the form factor
@@ -284,7 +310,7 @@ void Shoot(const SceneMesh& mesh, const SceneGeometry& g, const Visibility& rays
   SolverStatistics& stats = out.Statistics;
   WorkerPool pool(options.Threads);
   ShooterFormFactors estimator(mesh, g, rays, pool, options.Visibility == EffectMode::Auto);
-  const PatchNodes nodes(mesh, g, estimator.Outlines(), estimator.Centres());
+  const PatchNodes nodes(g, estimator.PatchLoops(), estimator.Centres());
   state.EnablePatchGathering(nodes);
   const int samples = options.Visibility == EffectMode::Off ? 0 : options.Samples;
   const double refine = options.RefinementThreshold > 0 ? options.RefinementThreshold : 2.0; // 2: never

@@ -130,6 +130,7 @@ std::vector<float> SolvePatchBasis(
   SolverOptions basisOptions = options;
   basisOptions.AmbientTerm = false;
   basisOptions.SeparateDirect = false;
+  basisOptions.DirectToElements = false; // every patch emits: links, not P x N factors
   const Solution s = solver.Solve(emission, P, basisOptions);
   stats = s.Statistics;
   std::vector<float> basis(static_cast<size_t>(n) * 3 * P);

@@ -160,4 +160,44 @@ void ClipToHalfSpace(const Vec3* loop, int count, const Vec3& origin, const Vec3
   }
 }
 
+/// Chains start/end segments into one closed loop of corners; empty unless they form
+/// exactly one simple loop.
+std::vector<Vec3> ChainLoop(const std::vector<Vec3>& segments)
+{
+  const size_t count = segments.size() / 2;
+  std::vector<Vec3> loop;
+  if (count < 3)
+  {
+    return loop;
+  }
+  std::vector<char> used(count, 0);
+  size_t current = 0;
+  used[0] = 1;
+  loop.push_back(segments[0]);
+  for (size_t step = 1; step < count; ++step)
+  {
+    const Vec3& end = segments[2 * current + 1];
+    size_t next = count;
+    for (size_t s = 0; s < count && next == count; ++s)
+    {
+      if (!used[s] && Norm(segments[2 * s] - end) == 0)
+      {
+        next = s;
+      }
+    }
+    if (next == count)
+    {
+      return {};
+    }
+    used[next] = 1;
+    loop.push_back(segments[2 * next]);
+    current = next;
+  }
+  if (Norm(segments[2 * current + 1] - loop[0]) != 0)
+  {
+    return {};
+  }
+  return loop;
+}
+
 } // namespace radiosity

@@ -40,6 +40,10 @@ void ClipToHalfSpace(const Vec3* loop, int count, const Vec3& origin, const Vec3
 /// non-convex polygon would cover area outside it and miss area inside.
 std::vector<int> Triangulate(const Vec3* loop, int count);
 
+/// Chains start/end segment pairs (exactly matching ends) into one closed loop of corners;
+/// empty unless they form exactly one loop.
+std::vector<Vec3> ChainLoop(const std::vector<Vec3>& segments);
+
 /// True if every corner turns the same way about the polygon's normal.
 bool IsConvex(const Vec3* loop, int count);
 

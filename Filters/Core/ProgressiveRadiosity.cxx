@@ -59,6 +59,15 @@ bool Grey3(const Vec3& v)
 }
 } // namespace
 
+int ShotCap(const SolverOptions& options, int patches)
+{
+  if (options.MaximumShots > 0)
+  {
+    return options.MaximumShots;
+  }
+  return static_cast<int>(std::min<long long>(std::max<long long>(2000, 25LL * patches), 1000000000LL));
+}
+
 ProgressiveRadiosity::ProgressiveRadiosity(const SceneMesh& mesh)
   : Mesh(mesh)
   , Geometry_(mesh)

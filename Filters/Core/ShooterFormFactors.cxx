@@ -265,6 +265,30 @@ void ShooterFormFactors::BuildOutlines()
     }
     PatchOutline[p] = MergeCollinear(edges);
   }
+  BuildLoops();
+}
+
+void ShooterFormFactors::BuildLoops()
+{
+  const size_t patches = Geometry.patchElements.size();
+  PatchLoop.assign(patches, {});
+  ConvexLoop.assign(patches, 0);
+  for (size_t p = 0; p < patches; ++p)
+  {
+    const std::vector<int>& elements = Geometry.patchElements[p];
+    if (elements.size() == 1)
+    {
+      for (int v = 0; v < Mesh.PolygonSize(elements[0]); ++v)
+      {
+        PatchLoop[p].push_back(Mesh.points[Mesh.Polygon(elements[0])[v]]);
+      }
+    }
+    else if (!PatchOutline[p].empty())
+    {
+      PatchLoop[p] = ChainLoop(PatchOutline[p]);
+    }
+    ConvexLoop[p] = PatchLoop[p].size() >= 3 && IsConvex(PatchLoop[p].data(), static_cast<int>(PatchLoop[p].size()));
+  }
 }
 
 std::vector<Vec3> ShooterFormFactors::MergeCollinear(const std::map<std::pair<int, int>, int>& edges) const
@@ -370,6 +394,16 @@ double ShooterFormFactors::PointFactor(int patch, const Vec3& x, const Vec3& nor
       return 0;
     }
     return EdgeSetFormFactor(x, normal, outline.data(), static_cast<int>(outline.size() / 2));
+  }
+  if (ConvexLoop[patch] && !outline.empty())
+  {
+    // Cut by the receiver's plane: clip the patch's corner loop once, not every element.
+    if (Dot(PatchNormal[patch], x - PatchCentre[patch]) <= 0)
+    {
+      return 0;
+    }
+    const std::vector<Vec3>& loop = PatchLoop[patch];
+    return PointToPolygonFormFactor(x, normal, loop.data(), static_cast<int>(loop.size()), scratch);
   }
   double f = 0;
   for (int s : Geometry.patchElements[patch])

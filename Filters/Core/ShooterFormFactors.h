@@ -67,9 +67,13 @@ public:
   const Vec3& Normal(int patch) const { return PatchNormal[patch]; }
   /// Largest distance from the centre to a point of the patch.
   double Radius(int patch) const { return PatchRadius[patch]; }
-  /// True when the patch is flat and shoots through one outline.
-  bool Planar(int patch) const { return !PatchOutline[patch].empty(); }
-  const std::vector<std::vector<Vec3>>& Outlines() const { return PatchOutline; }
+  /// True when the patch is flat: one element, or coplanar elements with one outline.
+  bool Planar(int patch) const
+  {
+    return !PatchOutline[patch].empty() || Geometry.patchElements[patch].size() == 1;
+  }
+  /// Each patch's outline as one loop of corners (empty where it is not one simple loop).
+  const std::vector<std::vector<Vec3>>& PatchLoops() const { return PatchLoop; }
   const std::vector<Vec3>& Centres() const { return PatchCentre; }
 
   /// Planes of elements with scene geometry strictly behind them: the only surfaces that
@@ -84,6 +88,7 @@ private:
   long long Hemicube(int patch, int resolution, std::vector<double>& factors);
   long long MonteCarlo(int patch, int samples, int shot, std::vector<double>& factors);
   void BuildOutlines();
+  void BuildLoops();
   /// Boundary edges (by point id, with multiplicity) as segments, straight runs joined.
   std::vector<Vec3> MergeCollinear(const std::map<std::pair<int, int>, int>& edges) const;
   /// Turns F(patch -> e) sums in `factors` into F(e -> patch) by reciprocity.
@@ -107,6 +112,8 @@ private:
   /// Outline of each planar patch (interior edges cancelled), as start/end point pairs;
   /// empty for a patch whose elements are not coplanar.
   std::vector<std::vector<Vec3>> PatchOutline;
+  std::vector<std::vector<Vec3>> PatchLoop;
+  std::vector<char> ConvexLoop;
   /// Hemicube pixel directions in the local frame (x, y, z = normal) and delta factors.
   std::vector<Vec3> CubeDirections;
   std::vector<double> CubeWeights;

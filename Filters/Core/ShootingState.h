@@ -74,7 +74,7 @@ public:
       Stats.Converged = true;
       return false;
     }
-    if (Stats.Shots >= Options.MaximumShots)
+    if (Stats.Shots >= Stats.ShotCap)
     {
       return false;
     }
@@ -83,7 +83,7 @@ public:
       Stats.OutOfTime = true;
       return false;
     }
-    if (Options.Progress && !Options.Progress(std::min(1.0, static_cast<double>(Stats.Shots) / Options.MaximumShots)))
+    if (Options.Progress && !Options.Progress(std::min(1.0, static_cast<double>(Stats.Shots) / Stats.ShotCap)))
     {
       Stats.Aborted = true;
       return false;
@@ -316,6 +316,7 @@ private:
       Initial += v;
     }
     Stats.EmittedPower = Stats.UnshotPower = Initial;
+    Stats.ShotCap = ShotCap(Options, Patches);
     RemainingPer = InitialPer;
   }
 

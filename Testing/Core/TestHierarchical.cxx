@@ -1,0 +1,234 @@
+// The hierarchical solver method against closed forms, against progressive refinement on
+// the same mesh, and against its own invariants (light tagging, the ledger, threads).
+#include "FurnishedRoom.h"
+#include "LightSolutions.h"
+#include "SceneBuilders.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace radiosity;
+using radiosity_test::AddGrid;
+using radiosity_test::Box;
+using radiosity_test::Converged;
+
+namespace
+{
+SolverOptions Hierarchical(double threshold = 1e-6)
+{
+  SolverOptions o = Converged(threshold);
+  o.Solver = SolverMethod::Hierarchical;
+  return o;
+}
+
+SceneMesh Room(double patch, double element)
+{
+  SceneMesh mesh;
+  const std::string error = radiosity_bench::MeshRoom(radiosity_bench::FurnishedRoom(), patch, element, mesh);
+  EXPECT_TRUE(error.empty()) << error;
+  return mesh;
+}
+
+Solution SolveRoom(const SceneMesh& mesh, const SolverOptions& options, SolutionMode mode = SolutionMode::LightTagged)
+{
+  const ProgressiveRadiosity solver(mesh);
+  EXPECT_TRUE(solver.Error().empty()) << solver.Error();
+  return SolveLights(solver, mesh, LightGrouping::OnePerLight(8), {}, mode, options);
+}
+
+/// Per light, sum |a - b| A / sum b A over the elements: the mean relative difference.
+std::vector<double> RelativeDifference(const SceneMesh& mesh, const Solution& a, const Solution& b)
+{
+  const SceneGeometry g(mesh);
+  const int L = a.Solutions;
+  std::vector<double> diff(L, 0.0), sum(L, 0.0);
+  for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
+  {
+    for (int m = 0; m < L; ++m)
+    {
+      const Vec3& x = a.Radiosity[static_cast<size_t>(e) * L + m];
+      const Vec3& y = b.Radiosity[static_cast<size_t>(e) * L + m];
+      diff[m] += (std::fabs(x.x - y.x) + std::fabs(x.y - y.y) + std::fabs(x.z - y.z)) * g.area[e];
+      sum[m] += (y.x + y.y + y.z) * g.area[e];
+    }
+  }
+  for (int m = 0; m < L; ++m)
+  {
+    diff[m] /= sum[m];
+  }
+  return diff;
+}
+} // namespace
+
+TEST(Hierarchical, FurnaceGivesOneOverOneMinusRho)
+{
+  // Closed box, every face emitting 1: B = 1 / (1 - rho). After the emitters' first shots
+  // all transport runs over links, most of them patch links.
+  for (double rho : { 0.5, 0.9 })
+  {
+    SceneMesh box = Box(2.0, 24, 4, { rho, rho, rho }, [](int) { return 0; });
+    ProgressiveRadiosity solver(box);
+    const Solution s = SolveLights(solver, box, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, Hierarchical(1e-7));
+    ASSERT_TRUE(s.Statistics.Converged);
+    EXPECT_EQ(s.Statistics.Method, SolverMethod::Hierarchical);
+    EXPECT_GT(s.Statistics.PatchLinks, 0);
+    // The mean within 0.5 %; single elements within 1 % (the corner interpolation's shape).
+    const double expected = 1.0 / (1.0 - rho);
+    double mean = 0;
+    for (const Vec3& b : s.Radiosity)
+    {
+      EXPECT_NEAR(b.x, expected, 1e-2 * expected);
+      mean += b.x / s.Radiosity.size();
+    }
+    EXPECT_NEAR(mean, expected, 5e-3 * expected);
+  }
+}
+
+TEST(Hierarchical, HowellPairsThroughPatchLinks)
+{
+  // Unit emitter of 4 x 4 patches and a unit receiver (rho 0.5) of 8 x 8 patches, 32 x 32
+  // elements, with the emitter's shots sent over links too: the receiver's area-mean radiosity is
+  // rho * F(receiver -> emitter). Howell C-11 (parallel, gap 1) 0.199825; C-14
+  // (perpendicular, sharing an edge) 0.200044.
+  struct Case
+  {
+    Vec3 origin, u, v;
+    double expected;
+  };
+  const Case cases[] = { { { 0, 0, 1 }, { 0, 1, 0 }, { 1, 0, 0 }, 0.199825 },
+    { { 0, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, 0.200044 } };
+  for (const Case& c : cases)
+  {
+    SceneMesh mesh;
+    int patch = 0;
+    AddGrid(mesh, c.origin, c.u, c.v, 4, 1, { 0, 0, 0 }, 0, patch);
+    AddGrid(mesh, { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, 32, 4, { 0.5, 0.5, 0.5 }, -1, patch);
+    SolverOptions options = Hierarchical();
+    options.DirectToElements = false;
+    ProgressiveRadiosity solver(mesh);
+    const Solution s = SolveLights(solver, mesh, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, options);
+    EXPECT_GT(s.Statistics.PatchLinks, 0);
+    double mean = 0;
+    for (int e = 16; e < mesh.NumberOfPolygons(); ++e)
+    {
+      mean += s.Radiosity[e].x / (32 * 32);
+    }
+    EXPECT_NEAR(mean, 0.5 * c.expected, 0.02 * 0.5 * c.expected);
+  }
+}
+
+TEST(Hierarchical, EqualsProgressiveRefinementOnTheSameMesh)
+{
+  // Furnished room, 8 lamps, about 6k elements: every light within 1 % (area-weighted mean).
+  const SceneMesh mesh = Room(0.5, 0.2);
+  const Solution fine = SolveRoom(mesh, [] {
+    SolverOptions o = Converged(1e-4);
+    o.Solver = SolverMethod::ProgressiveRefinement;
+    return o;
+  }());
+  const Solution linked = SolveRoom(mesh, Hierarchical(1e-4));
+  EXPECT_LT(linked.Statistics.FormFactorCount, fine.Statistics.FormFactorCount / 5);
+  for (double d : RelativeDifference(mesh, linked, fine))
+  {
+    EXPECT_LT(d, 0.01);
+  }
+}
+
+TEST(Hierarchical, TaggedRelitEqualsCombined)
+{
+  // The links do not depend on which light shoots, so the sum of the k unit solutions
+  // equals one solve with every lamp on, up to the convergence threshold.
+  const SceneMesh mesh = Room(0.6, 0.3);
+  const Solution tagged = SolveRoom(mesh, Hierarchical(1e-7));
+  const Solution combined = SolveRoom(mesh, Hierarchical(1e-7), SolutionMode::StandardCombined);
+  double peak = 0, worst = 0;
+  for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
+  {
+    Vec3 sum;
+    for (int m = 0; m < 8; ++m)
+    {
+      sum += tagged.Radiosity[static_cast<size_t>(e) * 8 + m];
+    }
+    peak = std::max(peak, combined.Radiosity[e].x);
+    worst = std::max(worst, std::fabs(sum.x - combined.Radiosity[e].x));
+  }
+  EXPECT_LT(worst, 1e-5 * peak);
+}
+
+TEST(Hierarchical, EnergyLedgerCloses)
+{
+  // Emitted = absorbed + escaped + unshot, absorbed recomputed from the output radiosity.
+  const SceneMesh mesh = Room(0.6, 0.3);
+  const Solution s = SolveRoom(mesh, Hierarchical(1e-3));
+  const SceneGeometry g(mesh);
+  double absorbed = 0;
+  for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
+  {
+    for (int m = 0; m < 8; ++m)
+    {
+      const double emitted = mesh.lightId[e] == m ? 1.0 : 0.0;
+      for (int c = 0; c < 3; ++c)
+      {
+        const double rho = mesh.reflectance[e][c];
+        absorbed += (s.Radiosity[static_cast<size_t>(e) * 8 + m][c] - emitted) / rho * (1 - rho) * g.area[e];
+      }
+    }
+  }
+  const SolverStatistics& t = s.Statistics;
+  EXPECT_NEAR(absorbed + t.EscapedPower + t.UnshotPower, t.EmittedPower, 1e-9 * t.EmittedPower);
+  EXPECT_LT(std::fabs(t.EscapedPower), 0.05 * t.EmittedPower);
+}
+
+TEST(Hierarchical, SameResultOnAnyNumberOfThreads)
+{
+  const SceneMesh mesh = Room(0.6, 0.3);
+  SolverOptions one = Hierarchical(1e-3), two = Hierarchical(1e-3);
+  one.Threads = 1;
+  two.Threads = 2;
+  const Solution a = SolveRoom(mesh, one), b = SolveRoom(mesh, two);
+  ASSERT_EQ(a.Radiosity.size(), b.Radiosity.size());
+  for (size_t i = 0; i < a.Radiosity.size(); ++i)
+  {
+    ASSERT_EQ(a.Radiosity[i].x, b.Radiosity[i].x) << i;
+    ASSERT_EQ(a.Radiosity[i].z, b.Radiosity[i].z) << i;
+  }
+}
+
+TEST(Hierarchical, AutoPicksByScaleAndReportsTheCap)
+{
+  // Auto: progressive on a small scene, hierarchical on a large one; a capped run says so.
+  const SceneMesh small = Room(0.6, 0.3);
+  SolverOptions automatic = Converged(1e-3);
+  automatic.MaximumShots = 50;
+  const Solution s = SolveRoom(small, automatic);
+  EXPECT_EQ(s.Statistics.Method, SolverMethod::ProgressiveRefinement);
+  EXPECT_FALSE(s.Statistics.Converged);
+  EXPECT_EQ(s.Statistics.Shots, 50);
+  const SceneMesh large = Room(0.4, 0.08);
+  ASSERT_GE(large.NumberOfPolygons(), 20000);
+  const Solution l = SolveRoom(large, automatic);
+  EXPECT_EQ(l.Statistics.Method, SolverMethod::Hierarchical);
+  EXPECT_FALSE(l.Statistics.Converged);
+  EXPECT_EQ(l.Statistics.Shots, 50);
+}
+
+TEST(Hierarchical, HundredThousandElementsConverge)
+{
+  // A 100k-element room converges at the defaults; the result stays physical: finite,
+  // non-negative, and the ledger closes.
+  const SceneMesh mesh = Room(0.4, 0.04);
+  ASSERT_GE(mesh.NumberOfPolygons(), 90000);
+  SolverOptions defaults;
+  defaults.MaximumShots = 1000000;
+  const Solution s = SolveRoom(mesh, defaults);
+  EXPECT_EQ(s.Statistics.Method, SolverMethod::Hierarchical);
+  EXPECT_TRUE(s.Statistics.Converged);
+  for (const Vec3& b : s.Radiosity)
+  {
+    ASSERT_TRUE(std::isfinite(b.x) && b.x >= 0 && b.z >= 0);
+  }
+  const SolverStatistics& t = s.Statistics;
+  EXPECT_LT(t.UnshotPower, 1e-3 * t.EmittedPower);
+  EXPECT_LT(std::fabs(t.EscapedPower), 0.05 * t.EmittedPower);
+}
