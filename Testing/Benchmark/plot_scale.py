@@ -1,0 +1,43 @@
+"""Log-log plot of `./relight bench scale`'s CSV: solve time against elements per method,
+with linear and quadratic guides through the first hierarchical point."""
+
+import csv
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def main(path, out):
+    rows = list(csv.DictReader(open(path)))
+    fig, ax = plt.subplots(figsize=(6.4, 4.4))
+    for method, mode, style in (("hierarchical", "tagged", "o-"), ("hierarchical", "combined", "s--"),
+                                ("progressive", "tagged", "^-")):
+        points = sorted((int(r["elements"]), float(r["seconds"])) for r in rows
+                        if r["method"] == method and r["mode"] == mode)
+        if points:
+            lights = "k=8" if mode == "tagged" else "k=1 combined"
+            ax.plot(*zip(*points), style, label=f"{method}, {lights}")
+    base = sorted((int(r["elements"]), float(r["seconds"])) for r in rows
+                  if r["method"] == "hierarchical" and r["mode"] == "tagged")
+    if base:
+        n0, t0 = base[0]
+        xs = [n0, base[-1][0]]
+        ax.plot(xs, [t0 * x / n0 for x in xs], ":", color="grey", label="linear")
+        ax.plot(xs, [t0 * (x / n0) ** 2 for x in xs], ":", color="black", label="quadratic")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("elements")
+    ax.set_ylabel("solve time (s), 2 cores")
+    ax.set_title("Furnished room, 8 lights, converged to 1e-3")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+    print(f"wrote {out}")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1], sys.argv[2])
