@@ -51,6 +51,18 @@ table = solver.GetOutputDataObject(1)
 check(table.GetNumberOfRows() == solver.GetLastShots() and table.GetNumberOfRows() > 0,
       f"convergence table has one row per shot ({table.GetNumberOfRows()})")
 
+# The moving-light patch basis (every patch a unit emitter, its first bounce sent over links
+# too, which is what keeps it affordable at scale) agrees with progressive refinement's
+# within 5 % (measured 3.2 %: the basis holds only reflected light, mostly first bounces,
+# where far patches get interpolated values).
+bases = []
+for method in (PROGRESSIVE, HIERARCHICAL):
+    data = solve(scene, 1.0, 0.25, method, PatchBasis=True).GetOutput()
+    bases.append(cell_array(data, "PatchBasis").astype(np.float64))
+basis_difference = np.abs(bases[1] - bases[0]).sum() / np.abs(bases[0]).sum()
+check(bases[0].shape == bases[1].shape and basis_difference < 0.05,
+      f"patch basis, hierarchical vs progressive: {100 * basis_difference:.2f} % (< 5 %), shape {bases[1].shape}")
+
 # Auto: a small scene stays with progressive refinement.
 auto = relight.solve(scene, 1.0, 0.5).GetOutput()
 check(auto.GetFieldData().GetAbstractArray("SolverMethod").GetValue(0).startswith("Progressive"),
