@@ -4,6 +4,7 @@
 #include "Mesher.h"
 
 #include "vtkCellArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkInformation.h"
@@ -57,7 +58,7 @@ int vtkRadiosityMesher::RequestData(
 
   radiosity::MesherOptions options;
   options.PatchSize = this->PatchSize;
-  options.ElementSize = this->ElementSize;
+  options.ElementSize = ChooseElementSize(mesh);
   options.Progress = [this](double f) {
     this->UpdateProgress(f);
     return !this->GetAbortExecute();
@@ -108,5 +109,34 @@ int vtkRadiosityMesher::RequestData(
   }
   outCD->AddArray(patchId);
   output->GetFieldData()->ShallowCopy(input->GetFieldData());
+  vtkNew<vtkDoubleArray> used;
+  used->SetName("MesherElementSize");
+  used->InsertNextValue(options.ElementSize);
+  output->GetFieldData()->AddArray(used);
   return 1;
+}
+
+double vtkRadiosityMesher::ChooseElementSize(const radiosity::SceneMesh& mesh)
+{
+  double size = this->ElementSize;
+  const double count =
+    radiosity::CountElements(mesh.points, mesh.offsets, mesh.connectivity, this->PatchSize, size);
+  if (this->MaximumElements > 0 && count > this->MaximumElements)
+  {
+    size = radiosity::ElementSizeForBudget(mesh.points, mesh.offsets, mesh.connectivity, this->PatchSize, size,
+      static_cast<double>(this->MaximumElements));
+    const double fitted =
+      radiosity::CountElements(mesh.points, mesh.offsets, mesh.connectivity, this->PatchSize, size);
+    vtkWarningMacro(<< "ElementSize " << this->ElementSize << " would make " << count
+                    << " elements, more than MaximumElements (" << this->MaximumElements << "); using "
+                    << size << " (" << fitted << " elements).");
+    return size;
+  }
+  if (count > 2e6)
+  {
+    vtkWarningMacro(<< "ElementSize " << size << " makes " << count
+                    << " elements: solving takes minutes and about " << count * 1.6e-6
+                    << " GB with 8 lights. Set MaximumElements (or a larger ElementSize) to bound it.");
+  }
+  return size;
 }

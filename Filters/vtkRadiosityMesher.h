@@ -22,6 +22,11 @@
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkRadiosityFiltersModule.h" // for export macro
 
+namespace radiosity
+{
+struct SceneMesh;
+}
+
 class VTKRADIOSITYFILTERS_EXPORT vtkRadiosityMesher : public vtkPolyDataAlgorithm
 {
 public:
@@ -41,10 +46,21 @@ public:
   vtkGetMacro(ElementSize, double);
   ///@}
 
+  ///@{
+  /// Element budget. 0 (default): none. Otherwise, when ElementSize would make more
+  /// elements than this, the mesher uses the smallest larger element size that fits and
+  /// says so; the size used is in the field array MesherElementSize. Without a budget,
+  /// more than 2,000,000 elements gives a warning (time and memory) before meshing.
+  vtkSetClampMacro(MaximumElements, vtkIdType, 0, VTK_ID_MAX);
+  vtkGetMacro(MaximumElements, vtkIdType);
+  ///@}
+
 protected:
   vtkRadiosityMesher();
   ~vtkRadiosityMesher() override = default;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  /// ElementSize, or the size MaximumElements calls for; warns on a huge mesh.
+  double ChooseElementSize(const radiosity::SceneMesh& mesh);
 
 private:
   vtkRadiosityMesher(const vtkRadiosityMesher&) = delete;
@@ -52,6 +68,7 @@ private:
 
   double PatchSize = 1.0;
   double ElementSize = 0.25;
+  vtkIdType MaximumElements = 0;
 };
 
 #endif

@@ -95,6 +95,23 @@ void SplitTriangle(const Vec3& a, const Vec3& b, const Vec3& c, const MesherOpti
   piece.patchCount += np * np * 2;
 }
 
+/// What SplitQuad / SplitTriangle will make, without making it.
+double CountQuad(const Vec3* q, double patch, double element)
+{
+  const double lu = std::max(Norm(q[1] - q[0]), Norm(q[2] - q[3]));
+  const double lv = std::max(Norm(q[3] - q[0]), Norm(q[2] - q[1]));
+  const int pu = Divisions(lu, patch), pv = Divisions(lv, patch);
+  return static_cast<double>(pu * Divisions(lu / pu, element)) * (pv * Divisions(lv / pv, element));
+}
+
+double CountTriangle(const Vec3& a, const Vec3& b, const Vec3& c, double patch, double element)
+{
+  const double longest = std::max({ Norm(b - a), Norm(c - b), Norm(a - c) });
+  const int np = Divisions(longest, patch);
+  const double n = static_cast<double>(np) * Divisions(longest / np, element);
+  return n * n;
+}
+
 double EstimateElements(const std::vector<Vec3>& loop, const MesherOptions& o)
 {
   double longest = 0;
@@ -107,6 +124,58 @@ double EstimateElements(const std::vector<Vec3>& loop, const MesherOptions& o)
   return per * per * static_cast<double>(loop.size()); // double: absurd sizes must not overflow
 }
 } // namespace
+
+double CountElements(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, double patchSize, double elementSize)
+{
+  if (!(patchSize > 0) || !(elementSize > 0))
+  {
+    return 0;
+  }
+  double total = 0;
+  for (size_t i = 0; i + 1 < offsets.size(); ++i)
+  {
+    std::vector<Vec3> loop;
+    for (int k = offsets[i]; k < offsets[i + 1]; ++k)
+    {
+      loop.push_back(points[connectivity[k]]);
+    }
+    if (loop.size() < 3)
+    {
+      continue;
+    }
+    if (loop.size() == 4 && IsConvex(loop.data(), 4))
+    {
+      total += CountQuad(loop.data(), patchSize, elementSize);
+      continue;
+    }
+    const std::vector<int> corners = Triangulate(loop.data(), static_cast<int>(loop.size()));
+    for (size_t t = 0; t + 2 < corners.size(); t += 3)
+    {
+      total += CountTriangle(loop[corners[t]], loop[corners[t + 1]], loop[corners[t + 2]], patchSize, elementSize);
+    }
+  }
+  return total;
+}
+
+double ElementSizeForBudget(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, double patchSize, double elementSize, double budget)
+{
+  auto count = [&](double size) { return CountElements(points, offsets, connectivity, patchSize, size); };
+  if (count(elementSize) <= budget)
+  {
+    return elementSize;
+  }
+  // The count falls (in steps) as the size grows; bisect on a log scale for the smallest
+  // size that fits. At the patch size every patch is one element: the floor.
+  double fits = std::max(patchSize, elementSize), tooSmall = elementSize;
+  for (int i = 0; i < 60 && fits > tooSmall * (1 + 1e-6); ++i)
+  {
+    const double middle = std::sqrt(fits * tooSmall);
+    (count(middle) <= budget ? fits : tooSmall) = middle;
+  }
+  return fits;
+}
 
 std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>& offsets,
   const std::vector<int>& connectivity, const std::vector<int>& surfaceKey,

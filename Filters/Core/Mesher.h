@@ -29,6 +29,16 @@ struct MeshedPolygons
   int patches = 0;
 };
 
+/// The number of elements MeshPolygons makes at these sizes (exactly, for valid input),
+/// without meshing: for a warning or a budget before the work.
+double CountElements(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, double patchSize, double elementSize);
+
+/// The smallest element size, at least `elementSize`, whose mesh has at most `budget`
+/// elements (the patch size when even one element per patch is over it).
+double ElementSizeForBudget(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, double patchSize, double elementSize, double budget);
+
 /// Splits each planar polygon (convex quads on a bilinear grid, others ear-clipped into
 /// triangles and split on a barycentric lattice) into patches with edges <= PatchSize, and each patch
 /// into elements with edges <= ElementSize. Points are shared between elements of input

@@ -89,3 +89,27 @@ TEST(Mesher, RefusesBadSizesAndExplosions)
   MesherOptions tiny = Sizes(1, 1e-6);
   EXPECT_NE(MeshPolygons(points, { 0, 3 }, { 0, 1, 2 }, { 0 }, tiny, m).find("ElementSize"), std::string::npos);
 }
+
+TEST(Mesher, CountAndBudgetMatchTheMesh)
+{
+  // A quad, a triangle and a non-convex L: the count without meshing equals the mesh, and
+  // the budget's element size is the smallest that fits.
+  const std::vector<Vec3> points = { { 0, 0, 0 }, { 3, 0, 0 }, { 3, 2, 0 }, { 0, 2, 0 }, // quad
+    { 0, 0, 1 }, { 2.5, 0, 1 }, { 0, 1.7, 1 },                                              // triangle
+    { 0, 0, 2 }, { 2, 0, 2 }, { 2, 1, 2 }, { 1, 1, 2 }, { 1, 2, 2 }, { 0, 2, 2 } };         // L
+  const std::vector<int> offsets = { 0, 4, 7, 13 };
+  const std::vector<int> connectivity = { 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12 };
+  for (double element : { 0.5, 0.23, 0.1 })
+  {
+    MeshedPolygons m;
+    ASSERT_EQ(MeshPolygons(points, offsets, connectivity, { 0, 1, 2 }, Sizes(1, element), m), "");
+    EXPECT_EQ(CountElements(points, offsets, connectivity, 1, element), static_cast<double>(m.sourcePolygon.size()))
+      << element;
+  }
+  const double budget = 500;
+  const double size = ElementSizeForBudget(points, offsets, connectivity, 1, 0.05, budget);
+  EXPECT_GT(size, 0.05);
+  EXPECT_LE(CountElements(points, offsets, connectivity, 1, size), budget);
+  EXPECT_GT(CountElements(points, offsets, connectivity, 1, size * 0.999), budget);
+  EXPECT_EQ(ElementSizeForBudget(points, offsets, connectivity, 1, 0.5, budget), 0.5); // fits already
+}

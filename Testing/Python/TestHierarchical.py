@@ -63,6 +63,20 @@ basis_difference = np.abs(bases[1] - bases[0]).sum() / np.abs(bases[0]).sum()
 check(bases[0].shape == bases[1].shape and basis_difference < 0.05,
       f"patch basis, hierarchical vs progressive: {100 * basis_difference:.2f} % (< 5 %), shape {bases[1].shape}")
 
+# The mesher's element budget picks the element size and says so.
+mesher = relight.vtkRadiosityMesher()
+mesher.SetInputData(scene)
+mesher.SetPatchSize(1.0)
+mesher.SetElementSize(0.05)
+mesher.SetMaximumElements(5000)
+catcher = relight.ErrorCatcher(mesher)
+mesher.Update()
+meshed = mesher.GetOutput()
+used = meshed.GetFieldData().GetArray("MesherElementSize").GetValue(0)
+check(0 < meshed.GetNumberOfCells() <= 5000 and used > 0.05,
+      f"MaximumElements 5000: {meshed.GetNumberOfCells()} elements at element size {used:.3f}")
+check(any("MaximumElements" in w for w in catcher.warnings), f"the budget is reported: {catcher.warnings}")
+
 # Auto: a small scene stays with progressive refinement.
 auto = relight.solve(scene, 1.0, 0.5).GetOutput()
 check(auto.GetFieldData().GetAbstractArray("SolverMethod").GetValue(0).startswith("Progressive"),

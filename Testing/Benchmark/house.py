@@ -1,0 +1,285 @@
+"""Benchmark on a real third-party building: KIT's FZK-Haus (IFC, from Debian's
+assimp-testmodels), converted to OBJ by assimp, lit by 6 ceiling lamps, solved with the
+Hierarchical method, and photographed from inside.
+
+    ./relight python Testing/Benchmark/house.py [--element 0.25] [--patch 0.5] [--out out/bench]
+"""
+
+import argparse, contextlib, os, pathlib, resource, shutil, subprocess, sys, tempfile, time
+import numpy as np
+import relight
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkCommonCore import vtkIdList, vtkPoints
+from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
+from vtkmodules.vtkFiltersGeneral import vtkOBBTree
+from vtkmodules.vtkIOGeometry import vtkOBJReader
+
+IFC = pathlib.Path("/usr/share/assimp/models/IFC/AC14-FZK-Haus.ifc")
+UP = 1  # assimp writes OBJ Y-up (checked below: the smallest extent is the height)
+DIRS = [np.array(d, float) for d in ((1, 0, 0), (-1, 0, 0), (0, 0, 1), (0, 0, -1))]
+
+
+def ensure_inputs():
+    """The IFC and the assimp tool come from Debian; install them if we may."""
+    if IFC.exists() and shutil.which("assimp"):
+        return
+    if os.geteuid() != 0:
+        sys.exit("need assimp-utils and assimp-testmodels: sudo apt-get install assimp-utils assimp-testmodels")
+    env = dict(os.environ, DEBIAN_FRONTEND="noninteractive")
+    subprocess.run(["apt-get", "install", "-y", "-q", "assimp-utils", "assimp-testmodels"], check=True, env=env)
+
+
+def convert(folder):
+    """IFC -> OBJ + MTL with assimp, cached in `folder`."""
+    obj = folder / "fzk.obj"
+    if not obj.exists() or obj.stat().st_mtime < IFC.stat().st_mtime:
+        folder.mkdir(parents=True, exist_ok=True)
+        subprocess.run(["assimp", "export", str(IFC), str(obj)], check=True, stdout=subprocess.DEVNULL)
+    return obj
+
+
+def parse_mtl(path):
+    """{material: Kd}. assimp writes one `newmtl` per IFC style, and IFC styles share
+    names with different colours; usemtl can only name one, so the first definition wins
+    (like most OBJ readers) and the conflicts are reported."""
+    kd, name, conflicts = {}, None, set()
+    for line in path.read_text(encoding="utf-8", errors="replace").splitlines():
+        words = line.split()
+        if words[:1] == ["newmtl"]:
+            name = line.split(None, 1)[1].strip()
+        elif words[:1] == ["Kd"] and name is not None:
+            value = tuple(float(w) for w in words[1:4])
+            if name in kd and kd[name] != value:
+                conflicts.add(name)
+            kd.setdefault(name, value)
+    return kd, conflicts
+
+
+def load_house(obj):
+    """The OBJ as (list of point arrays in metres, reflectance per polygon)."""
+    reader = vtkOBJReader()
+    reader.SetFileName(str(obj))
+    reader.Update()
+    data = reader.GetOutput()  # cell arrays MaterialIds, GroupIds; field MaterialNames
+    names = data.GetFieldData().GetAbstractArray("MaterialNames")
+    names = [names.GetValue(i) for i in range(names.GetNumberOfValues())]
+    kd, conflicts = parse_mtl(obj.with_suffix(".mtl"))
+    print(f"MTL: {len(kd)} material names; first Kd used for {len(conflicts)} defined with several colours: {sorted(conflicts)}")
+    rho = np.array([kd.get(n, (0.6, 0.6, 0.6)) for n in names])
+    clamped = np.clip(rho, 0.02, 0.9)
+    changed = [f"{n} {np.round(a, 3)} -> {np.round(b, 3)}" for n, a, b in zip(names, rho, clamped) if not np.allclose(a, b)]
+    print(f"Reflectance clamped to [0.02, 0.9]: {'; '.join(changed) or 'none needed'}")
+    extent = np.ptp(np.reshape(data.GetBounds(), (3, 2)), axis=1)
+    scale = 0.001 if extent.max() > 200 else 1.0  # a 12 m house in mm would be 12000
+    assert np.argmin(extent) == UP, f"expected Y-up, extents {extent}"
+    print(f"OBJ: {data.GetNumberOfPolys()} polygons, extent {np.round(extent * scale, 2)} m (scale {scale})")
+    pts = vtk_to_numpy(data.GetPoints().GetData()).astype(float) * scale
+    offsets = vtk_to_numpy(data.GetPolys().GetOffsetsArray())
+    conn = vtk_to_numpy(data.GetPolys().GetConnectivityArray())
+    ids = vtk_to_numpy(data.GetCellData().GetArray("MaterialIds"))[data.GetNumberOfVerts() + data.GetNumberOfLines():]
+    polygons, refl, dropped = [], [], 0
+    for c in range(len(offsets) - 1):
+        loop = pts[conn[offsets[c]:offsets[c + 1]]]
+        newell = np.cross(loop, np.roll(loop, -1, axis=0)).sum(axis=0)
+        if len(loop) < 3 or 0.5 * np.linalg.norm(newell) < 1e-10:  # zero area, collinear
+            dropped += 1
+            continue
+        polygons.append(loop)
+        refl.append(clamped[ids[c]])
+    print(f"dropped {dropped} degenerate polygons, kept {len(polygons)}")
+    return polygons, refl
+
+
+class Rays:
+    """Ray queries against the house (vtkOBBTree): all hits along a segment, with the
+    normal of the hit cell, so floors, ceilings and wall sides can be told apart."""
+
+    def __init__(self, scene):
+        self.tree = vtkOBBTree()
+        self.tree.SetDataSet(scene)
+        self.tree.BuildLocator()
+        normals = vtkPolyDataNormals()
+        normals.SetInputData(scene)
+        normals.ComputeCellNormalsOn(), normals.ComputePointNormalsOff(), normals.SplittingOff()
+        normals.ConsistencyOff(), normals.AutoOrientNormalsOff()
+        normals.Update()
+        self.normals = vtk_to_numpy(normals.GetOutput().GetCellData().GetArray("Normals"))
+
+    def hits(self, start, direction, length):
+        """[(distance, normal)] sorted by distance."""
+        points, cells = vtkPoints(), vtkIdList()
+        self.tree.IntersectWithLine(start, start + direction * length, points, cells)
+        out = [(np.dot(np.array(points.GetPoint(i)) - start, direction), self.normals[cells.GetId(i)])
+               for i in range(points.GetNumberOfPoints())]
+        return sorted(((d, n) for d, n in out if d > 1e-6), key=lambda h: h[0])
+
+    def first(self, start, direction, length=15.0):
+        h = self.hits(start, direction, length)
+        return h[0] if h else (np.inf, None)
+
+    def wall(self, start, direction):
+        """Distance to the first hit if it is a wall (near-vertical), else inf: under a
+        sloped roof a horizontal ray meets the roof first, which is no wall."""
+        d, n = self.first(start, direction)
+        return d if n is not None and abs(n[UP]) < 0.5 else np.inf
+
+    def indoors(self, p):
+        """Every horizontal ray meets the front of a wall: p is inside a closed room."""
+        return all(n is not None and np.dot(n, d) < 0 for d in DIRS for _, n in [self.first(p, d)])
+
+
+def lamp_at(rays, x, z, floor):
+    """A lamp position above floor (x, floor, z), or None: the lowest ceiling over the
+    0.3 m square must be 2.2-3.2 m up and face down (sloped roofs included), the room
+    must be closed and walls at least 0.4 m away (the quad's half width is 0.15 m)."""
+    up = np.eye(3)[UP]
+    tops = []
+    for dx, dz in ((0, 0), (-0.2, -0.2), (0.2, -0.2), (0.2, 0.2), (-0.2, 0.2)):
+        d, n = rays.first(np.array([x + dx, floor + 0.5, z + dz]), up)
+        if n is None or n[UP] > -0.3:
+            return None
+        tops.append(floor + 0.5 + d)
+    y = min(tops) - 0.02
+    p = np.array([x, y, z])
+    if not 2.2 <= y - floor <= 3.2 or not rays.indoors(np.array([x, floor + 1.2, z])):
+        return None
+    return p if min(rays.wall(p, d) for d in DIRS) >= 0.4 else None
+
+
+def find_lamps(rays, bounds, count=6, step=0.4):
+    """Floors = up-facing hits of vertical rays; keep lamp spots on the two storeys with
+    the most spots and spread 3 per storey by farthest-point sampling."""
+    spots = {}
+    for x in np.arange(bounds[0] + step / 2, bounds[1], step):
+        for z in np.arange(bounds[4] + step / 2, bounds[5], step):
+            start = np.array([x, bounds[2] - 1, z])
+            for d, n in rays.hits(start, np.eye(3)[UP], bounds[3] - bounds[2] + 2):
+                p = lamp_at(rays, x, z, start[UP] + d) if n[UP] > 0.9 else None
+                if p is not None:
+                    spots.setdefault(round(start[UP] + d, 1), []).append(p)
+    storeys = sorted(sorted(spots, key=lambda f: -len(spots[f]))[:2])
+    lamps = []
+    for f in storeys:
+        cand = np.array(spots[f])
+        chosen = [cand[np.argmin(np.linalg.norm(cand - cand.mean(axis=0), axis=1))]]
+        while len(chosen) < count // len(storeys):
+            dist = np.min([np.linalg.norm(cand - c, axis=1) for c in chosen], axis=0)
+            chosen.append(cand[np.argmax(dist)])
+        lamps += [(f, c) for c in chosen]
+    return lamps
+
+
+def lamp_quad(p, half=0.15):
+    """A square in the horizontal plane whose right-hand-rule normal points down."""
+    x, y, z = p
+    quad = np.array([(x - half, y, z - half), (x + half, y, z - half), (x + half, y, z + half), (x - half, y, z + half)])
+    assert np.cross(quad[1] - quad[0], quad[2] - quad[0])[UP] < 0
+    return quad
+
+
+@contextlib.contextmanager
+def stderr_to(path):
+    """OpenMesh prints one line per rejected face straight to fd 2; collect them."""
+    saved = os.dup(2)
+    with open(path, "w") as sink:
+        os.dup2(sink.fileno(), 2)
+        try:
+            yield
+        finally:
+            os.dup2(saved, 2)
+            os.close(saved)
+
+
+def solve(scene, patch, element):
+    """Mesh + Hierarchical solve at default settings; keeps warnings and errors."""
+    mesher = relight.vtkRadiosityMesher()
+    mesher.SetInputData(scene)
+    mesher.SetPatchSize(patch)
+    mesher.SetElementSize(element)
+    solver = relight.vtkLightTaggedRadiosity()
+    solver.SetInputConnection(mesher.GetOutputPort())
+    solver.SetSolverMethodToHierarchical()
+    catchers = [relight.ErrorCatcher(mesher), relight.ErrorCatcher(solver)]
+    log = pathlib.Path(tempfile.mkstemp(suffix=".log")[1])
+    with stderr_to(log):
+        solver.Update()
+    noise = log.read_text(errors="replace").splitlines()
+    complaints = sum("PolyMeshT::add_face" in line for line in noise)
+    for line in noise:
+        if "PolyMeshT::add_face" not in line:
+            print(line, file=sys.stderr)
+    errors = [e for c in catchers for e in c.errors]
+    warnings = [w for c in catchers for w in c.warnings]
+    if errors:
+        raise RuntimeError(errors[0])
+    return solver, warnings, complaints
+
+
+def camera(rays, floor, lamp):
+    """Stand against the wall behind the lamp, eye 1.5 m up, look at the far wall."""
+    eye = np.array([lamp[0], floor + 1.5, lamp[2]])
+    dist = [rays.first(eye, d)[0] for d in DIRS]
+    ahead = int(np.argmax(dist))
+    back = ahead ^ 1  # DIRS come in opposite pairs
+    eye = eye - DIRS[ahead] * max(dist[back] - 0.2, 0.0)
+    focal = eye + DIRS[ahead] * dist[ahead] - np.eye(3)[UP] * 0.4
+    return tuple(eye), tuple(focal), tuple(np.eye(3)[UP]), 80.0
+
+
+def render(solver, shots, out):
+    """All lamps on at unit exitance; exposure puts the 99th percentile of the lit
+    surfaces at 0.9 so walls are visible and only the lamps saturate."""
+    relit = relight.vtkRadiosityRelight()
+    relit.SetInputConnection(solver.GetOutputPort())
+    relit.Update()
+    b = relight.point_array(relit.GetOutput(), "Radiosity").max(axis=1)
+    lit = b[(b > 0) & (b < 0.5)]  # the lamps themselves are at 1
+    relit.SetExposure(0.9 / np.percentile(lit, 99))
+    relit.Update()
+    for i, cam in enumerate(shots, 1):
+        relight.render_png(relit.GetOutput(), out / f"house_inside_{i}.png", cam)
+    return relit.GetExposure()
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--element", type=float, default=0.25, help="ElementSize, m (0.25: ~174k elements)")
+    parser.add_argument("--patch", type=float, default=0.5, help="PatchSize, m")
+    parser.add_argument("--out", default="out/bench")
+    args = parser.parse_args()
+    out = pathlib.Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    ensure_inputs()
+    polygons, refl = load_house(convert(out / "fzk"))
+    house = relight.make_scene(polygons, refl, [-1] * len(polygons))
+    rays = Rays(house)
+    lamps = find_lamps(rays, house.GetBounds())
+    for i, (floor, p) in enumerate(lamps):
+        print(f"Lamp{i}: {np.round(p, 2)} (floor at {floor} m)")
+    polys = polygons + [lamp_quad(p) for _, p in lamps]
+    k = len(lamps)
+    scene = relight.make_scene(polys, refl + [(0.8,) * 3] * k, [-1] * len(polygons) + list(range(k)),
+                               [f"Lamp{i}" for i in range(k)], [(0, 0, 0)] * len(polygons) + [(1, 1, 1)] * k)
+    solver, warnings, complaints = solve(scene, args.patch, args.element)
+    result = solver.GetOutput()
+    method = result.GetFieldData().GetAbstractArray("SolverMethod").GetValue(0)
+    row = dict(polygons=scene.GetNumberOfCells(), elements=result.GetNumberOfCells(),
+               patches=len(np.unique(relight.cell_array(result, "PatchId"))), lights=k,
+               element=args.element, patch=args.patch, solve_s=round(solver.GetLastSolveSeconds(), 2),
+               shots=solver.GetLastShots(), converged=bool(solver.GetLastConverged()),
+               peak_mib=round(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024),
+               warnings=len(warnings), openmesh_msgs=complaints)
+    shots = [camera(rays, *lamps[0]), camera(rays, *lamps[-1])]
+    exposure = render(solver, shots, out)
+    summary = "\n".join([f"{key}: {value}" for key, value in row.items()] + [f"SolverMethod: {method}",
+                        f"exposure: {exposure:.4g}"] + [f"warning: {w.strip()}" for w in warnings])
+    print(summary)
+    (out / "house.txt").write_text(summary + "\n")
+    csv = out / "house.csv"
+    new = not csv.exists()
+    with csv.open("a") as f:
+        f.write((",".join(row) + "\n" if new else "") + ",".join(str(v) for v in row.values()) + "\n")
+
+
+if __name__ == "__main__":
+    main()
