@@ -166,7 +166,7 @@ int vtkLightTaggedRadiosity::RequestData(
   }
 
   const auto start = std::chrono::steady_clock::now();
-  radiosity::ProgressiveRadiosity solver(mesh);
+  radiosity::RadiositySolver solver(mesh);
   if (!solver.Error().empty())
   {
     vtkErrorMacro(<< "Cannot solve: " << solver.Error() << ".");

@@ -4,14 +4,14 @@
 #ifndef RadiosityCore_HierarchicalRadiosity_h
 #define RadiosityCore_HierarchicalRadiosity_h
 
-#include "ProgressiveRadiosity.h"
+#include "RadiositySolver.h"
 
 #include <chrono>
 
 namespace radiosity
 {
 
-/// What ProgressiveRadiosity::Solve runs for SolverMethod::Hierarchical.
+/// The SolveFunction for SolverMethod::Hierarchical.
 /// - An emitter patch's first shot (direct light) reaches every element, with shadow rays
 ///   per element, exactly as in progressive refinement: shadows stay sharp.
 /// - Every other shooter links once, at its first shot, to each receiver patch: to the

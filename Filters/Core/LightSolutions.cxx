@@ -97,7 +97,7 @@ std::vector<Vec3> DefaultColors(
   return colors;
 }
 
-Solution SolveLights(const ProgressiveRadiosity& solver, const SceneMesh& mesh,
+Solution SolveLights(const RadiositySolver& solver, const SceneMesh& mesh,
   const LightGrouping& grouping, const std::vector<Vec3>& emissionColor, SolutionMode mode,
   const SolverOptions& options)
 {

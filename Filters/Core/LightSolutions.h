@@ -2,7 +2,7 @@
 #ifndef RadiosityCore_LightSolutions_h
 #define RadiosityCore_LightSolutions_h
 
-#include "ProgressiveRadiosity.h"
+#include "RadiositySolver.h"
 
 namespace radiosity
 {
@@ -37,7 +37,7 @@ std::vector<Vec3> DefaultColors(const SceneMesh& mesh, const LightGrouping& grou
   const std::vector<Vec3>& emissionColor);
 
 /// `emissionColor` (per element, may be empty) is used by StandardCombined and by banks.
-Solution SolveLights(const ProgressiveRadiosity& solver, const SceneMesh& mesh,
+Solution SolveLights(const RadiositySolver& solver, const SceneMesh& mesh,
   const LightGrouping& grouping, const std::vector<Vec3>& emissionColor, SolutionMode mode,
   const SolverOptions& options);
 

@@ -117,7 +117,7 @@ void AddBasisInterreflection(const SceneGeometry& g, const std::vector<Vec3>& di
 }
 
 std::vector<float> SolvePatchBasis(
-  const ProgressiveRadiosity& solver, const SceneMesh& mesh, const SolverOptions& options, SolverStatistics& stats)
+  const RadiositySolver& solver, const SceneMesh& mesh, const SolverOptions& options, SolverStatistics& stats)
 {
   const SceneGeometry& g = solver.Geometry();
   const int n = mesh.NumberOfPolygons();

@@ -3,7 +3,7 @@
 #ifndef RadiosityCore_MovingLights_h
 #define RadiosityCore_MovingLights_h
 
-#include "ProgressiveRadiosity.h"
+#include "RadiositySolver.h"
 #include "Scene.h"
 #include "Visibility.h"
 #include "WorkerPool.h"
@@ -57,7 +57,7 @@ void AddBasisInterreflection(const SceneGeometry& geometry, const std::vector<Ve
 /// Solves the basis: every patch a unit emitter (all P solutions in one light-tagged
 /// pass), its own emission then removed. Returns n * 3P floats in the layout above.
 std::vector<float> SolvePatchBasis(
-  const ProgressiveRadiosity& solver, const SceneMesh& mesh, const SolverOptions& options, SolverStatistics& stats);
+  const RadiositySolver& solver, const SceneMesh& mesh, const SolverOptions& options, SolverStatistics& stats);
 
 } // namespace radiosity
 

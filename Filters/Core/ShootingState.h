@@ -5,7 +5,7 @@
 #define RadiosityCore_ShootingState_h
 
 #include "PatchNodes.h"
-#include "ProgressiveRadiosity.h"
+#include "RadiositySolver.h"
 #include "WorkerPool.h"
 
 #include <algorithm>

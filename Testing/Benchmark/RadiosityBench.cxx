@@ -179,7 +179,7 @@ int main(int argc, char* argv[])
     {
       return 1;
     }
-    ProgressiveRadiosity solver(scene.Mesh);
+    RadiositySolver solver(scene.Mesh);
     SolverOptions options;
     options.MaximumShots = shots;
     options.ConvergenceThreshold = 0; // exactly `shots` shots, as in the paper
@@ -210,7 +210,7 @@ int main(int argc, char* argv[])
   std::printf("paper (PIII 450 MHz, 128^2 hemicube): separate/tagged 6.30x at k = 8, tagged/combined 1.27x\n\n");
 
   // ---- Ceilings and scaling -------------------------------------------------------------
-  ProgressiveRadiosity solver8(eight.Mesh);
+  RadiositySolver solver8(eight.Mesh);
   const double raw = RawOcclusionRate(solver8.Rays(), solver8.Geometry(), all, 2000000);
   std::printf("Embree occlusion rays: raw %.2f M/s; the tagged k = 8 solve casts %.2f M/s = %.0f %% of raw\n",
     raw / 1e6, taggedRaysPerSecond / 1e6, 100 * taggedRaysPerSecond / raw);
@@ -304,7 +304,7 @@ int main(int argc, char* argv[])
     {
       return 1;
     }
-    ProgressiveRadiosity solver(scene.Mesh);
+    RadiositySolver solver(scene.Mesh);
     const SceneGeometry& g = solver.Geometry();
     const int n = scene.Mesh.NumberOfPolygons();
     const int P = static_cast<int>(g.patchElements.size());

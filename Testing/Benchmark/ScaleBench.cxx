@@ -66,7 +66,7 @@ struct Probes
 
 /// Per probe and solution, the point-interpolated radiosity (channel sum) that a renderer
 /// would show; NaN where the probe sees a lamp or nothing.
-std::vector<double> Sample(const ProgressiveRadiosity& solver, const SceneMesh& mesh, const Solution& s,
+std::vector<double> Sample(const RadiositySolver& solver, const SceneMesh& mesh, const Solution& s,
   const Probes& probes)
 {
   const int L = s.Solutions;
@@ -119,7 +119,7 @@ double MeanError(const std::vector<double>& values, const std::vector<double>& r
 
 /// Writes the room's polygons and the probe points (where the probe rays hit, with the
 /// surface normal) as JSON, for an external renderer to make a reference.
-void ExportRoom(const RoomPolygons& room, const ProgressiveRadiosity& solver, const SceneMesh& mesh,
+void ExportRoom(const RoomPolygons& room, const RadiositySolver& solver, const SceneMesh& mesh,
   const Probes& probes, const std::string& path)
 {
   std::ofstream out(path);
@@ -182,7 +182,7 @@ struct Run
   double Seconds = 0, MemoryMB = 0;
 };
 
-Run SolveRoom(const ProgressiveRadiosity& solver, const SceneMesh& mesh, int lights, SolutionMode mode,
+Run SolveRoom(const RadiositySolver& solver, const SceneMesh& mesh, int lights, SolutionMode mode,
   SolverOptions options)
 {
   ResetPeakMemory();
@@ -273,7 +273,7 @@ int main(int argc, char* argv[])
     std::fprintf(stderr, "mesher: %s\n", error.c_str());
     return 1;
   }
-  ProgressiveRadiosity referenceSolver(referenceMesh);
+  RadiositySolver referenceSolver(referenceMesh);
   if (!exportPath.empty())
   {
     ExportRoom(room, referenceSolver, referenceMesh, probes, exportPath);
@@ -315,7 +315,7 @@ int main(int argc, char* argv[])
       return 1;
     }
     const double t1 = Now();
-    ProgressiveRadiosity solver(mesh); // geometry and the Embree scene, shared by the solves
+    RadiositySolver solver(mesh); // geometry and the Embree scene, shared by the solves
     const double t2 = Now();
     const int patches = static_cast<int>(solver.Geometry().patchElements.size());
     SolverOptions options;

@@ -2,7 +2,7 @@
 #ifndef RadiosityTest_SceneBuilders_h
 #define RadiosityTest_SceneBuilders_h
 
-#include "ProgressiveRadiosity.h"
+#include "RadiositySolver.h"
 #include "Scene.h"
 
 namespace radiosity_test

@@ -44,7 +44,7 @@ SceneMesh ConvexRoom(const Vec3& rho)
 
 Solution Solve(const SceneMesh& mesh, const SolverOptions& o, int lights = 1)
 {
-  ProgressiveRadiosity solver(mesh);
+  RadiositySolver solver(mesh);
   return SolveLights(solver, mesh, LightGrouping::OnePerLight(lights), {}, SolutionMode::LightTagged, o);
 }
 } // namespace

@@ -19,7 +19,7 @@ namespace
 {
 Solution SolveOne(const SceneMesh& mesh, const SolverOptions& o, int lights = 1)
 {
-  ProgressiveRadiosity solver(mesh);
+  RadiositySolver solver(mesh);
   return SolveLights(solver, mesh, LightGrouping::OnePerLight(lights), {}, SolutionMode::LightTagged, o);
 }
 
@@ -363,7 +363,7 @@ TEST(HardLights, SixtyFourLightsTaggedEqualsSeparate)
   int k = 0;
   ASSERT_EQ(ValidateScene(mesh, k), "");
   ASSERT_EQ(k, 64);
-  ProgressiveRadiosity solver(mesh);
+  RadiositySolver solver(mesh);
   const LightGrouping g = LightGrouping::OnePerLight(k);
   const Solution tagged = SolveLights(solver, mesh, g, {}, SolutionMode::LightTagged, Converged(1e-5));
   const Solution separate = SolveLights(solver, mesh, g, {}, SolutionMode::StandardSeparate, Converged(1e-5));
@@ -562,7 +562,7 @@ TEST(HardInvariants, LinearityInEmission)
 {
   std::mt19937 rng(3);
   SceneMesh mesh = RandomRoom(rng, 2);
-  ProgressiveRadiosity solver(mesh);
+  RadiositySolver solver(mesh);
   std::vector<Vec3> e1(mesh.NumberOfPolygons()), e2(mesh.NumberOfPolygons());
   for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
   {

@@ -32,7 +32,7 @@ SceneMesh Room(double patch, double element)
 
 Solution SolveRoom(const SceneMesh& mesh, const SolverOptions& options, SolutionMode mode = SolutionMode::LightTagged)
 {
-  const ProgressiveRadiosity solver(mesh);
+  const RadiositySolver solver(mesh);
   EXPECT_TRUE(solver.Error().empty()) << solver.Error();
   return SolveLights(solver, mesh, LightGrouping::OnePerLight(8), {}, mode, options);
 }
@@ -68,7 +68,7 @@ TEST(Hierarchical, FurnaceGivesOneOverOneMinusRho)
   for (double rho : { 0.5, 0.9 })
   {
     SceneMesh box = Box(2.0, 24, 4, { rho, rho, rho }, [](int) { return 0; });
-    ProgressiveRadiosity solver(box);
+    RadiositySolver solver(box);
     const Solution s = SolveLights(solver, box, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, Hierarchical(1e-7));
     ASSERT_TRUE(s.Statistics.Converged);
     EXPECT_EQ(s.Statistics.Method, SolverMethod::Hierarchical);
@@ -106,7 +106,7 @@ TEST(Hierarchical, HowellPairsThroughPatchLinks)
     AddGrid(mesh, { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, 32, 4, { 0.5, 0.5, 0.5 }, -1, patch);
     SolverOptions options = Hierarchical();
     options.DirectToElements = false;
-    ProgressiveRadiosity solver(mesh);
+    RadiositySolver solver(mesh);
     const Solution s = SolveLights(solver, mesh, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, options);
     EXPECT_GT(s.Statistics.PatchLinks, 0);
     double mean = 0;

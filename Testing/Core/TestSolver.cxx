@@ -27,7 +27,7 @@ TEST(Solver, FurnaceGivesOneOverOneMinusRho)
   for (double rho : { 0.3, 0.5, 0.9 })
   {
     SceneMesh box = Box(2.0, 6, 2, { rho, rho, rho }, [](int) { return 0; });
-    ProgressiveRadiosity solver(box);
+    RadiositySolver solver(box);
     ASSERT_TRUE(solver.Error().empty()) << solver.Error();
     Solution s = SolveLights(solver, box, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, Converged(1e-9));
     ASSERT_TRUE(s.Statistics.Converged);
@@ -50,7 +50,7 @@ TEST(Solver, SingleBounceBetweenOpposedSquaresMatchesHowell)
   AddGrid(mesh, { 0, 0, 1 }, { 0, 1, 0 }, { 1, 0, 0 }, 1, 1, { 0, 0, 0 }, 0, patch); // faces -z
   const int n = 32;
   AddGrid(mesh, { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, n, n, { 0.5, 0.5, 0.5 }, -1, patch);
-  ProgressiveRadiosity solver(mesh);
+  RadiositySolver solver(mesh);
   Solution s = SolveLights(solver, mesh, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, Converged());
   double mean = 0;
   for (int e = 1; e < mesh.NumberOfPolygons(); ++e)
@@ -68,7 +68,7 @@ TEST(Solver, OccluderBlocksDirectLight)
   AddGrid(mesh, { 0.4, 0.4, 2 }, { 0, 0.2, 0 }, { 0.2, 0, 0 }, 1, 1, { 0, 0, 0 }, 0, patch);
   AddGrid(mesh, { -5, -5, 1 }, { 10, 0, 0 }, { 0, 10, 0 }, 2, 1, { 0, 0, 0 }, -1, patch);
   AddGrid(mesh, { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, 4, 4, { 0.8, 0.8, 0.8 }, -1, patch);
-  ProgressiveRadiosity solver(mesh);
+  RadiositySolver solver(mesh);
   Solution s = SolveLights(solver, mesh, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, Converged());
   for (int e = 1 + 4; e < mesh.NumberOfPolygons(); ++e)
   {
@@ -79,7 +79,7 @@ TEST(Solver, OccluderBlocksDirectLight)
   patch = 0;
   AddGrid(open, { 0.4, 0.4, 2 }, { 0, 0.2, 0 }, { 0.2, 0, 0 }, 1, 1, { 0, 0, 0 }, 0, patch);
   AddGrid(open, { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, 4, 4, { 0.8, 0.8, 0.8 }, -1, patch);
-  ProgressiveRadiosity openSolver(open);
+  RadiositySolver openSolver(open);
   Solution lit = SolveLights(openSolver, open, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, Converged());
   EXPECT_GT(lit.Radiosity[5].x, 1e-3);
 }
@@ -115,7 +115,7 @@ TEST(Solver, TaggedRelitEqualsStandardCombined)
   int k = 0;
   ASSERT_EQ(ValidateScene(mesh, k), "");
   ASSERT_EQ(k, 3);
-  ProgressiveRadiosity solver(mesh);
+  RadiositySolver solver(mesh);
   const Solution tagged = SolveLights(solver, mesh, LightGrouping::OnePerLight(k), colors, SolutionMode::LightTagged, Converged(1e-9));
   const Solution combined = SolveLights(solver, mesh, LightGrouping::OnePerLight(k), colors, SolutionMode::StandardCombined, Converged(1e-9));
   ASSERT_TRUE(tagged.Statistics.Converged && combined.Statistics.Converged);
@@ -143,7 +143,7 @@ TEST(Solver, SeparateEqualsTagged)
 {
   std::vector<Vec3> colors;
   SceneMesh mesh = ThreeLightScene(colors);
-  ProgressiveRadiosity solver(mesh);
+  RadiositySolver solver(mesh);
   const Solution tagged = SolveLights(solver, mesh, LightGrouping::OnePerLight(3), colors, SolutionMode::LightTagged, Converged(1e-9));
   const Solution separate = SolveLights(solver, mesh, LightGrouping::OnePerLight(3), colors, SolutionMode::StandardSeparate, Converged(1e-9));
   ASSERT_EQ(tagged.Radiosity.size(), separate.Radiosity.size());
@@ -163,7 +163,7 @@ TEST(Solver, EnergyArrivesInClosedBox)
   // In a closed box everything shot arrives somewhere: received / shot -> 1, up to the
   // centroid quadrature of the receivers (a few per mille at 8 x 8 elements per face).
   SceneMesh box = Box(1.0, 8, 2, { 0.7, 0.7, 0.7 }, [](int f) { return f == 1 ? 0 : -1; });
-  ProgressiveRadiosity solver(box);
+  RadiositySolver solver(box);
   Solution s = SolveLights(solver, box, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, Converged(1e-6));
   EXPECT_NEAR(s.Statistics.ReceivedPower / s.Statistics.ShotPower, 1.0, 0.01);
 }
@@ -172,7 +172,7 @@ TEST(Solver, ResultDoesNotDependOnThreads)
 {
   std::vector<Vec3> colors;
   SceneMesh mesh = ThreeLightScene(colors);
-  ProgressiveRadiosity solver(mesh);
+  RadiositySolver solver(mesh);
   SolverOptions one = Converged(1e-4), many = Converged(1e-4);
   one.Threads = 1;
   many.Threads = 4;
@@ -188,7 +188,7 @@ TEST(Solver, ResultDoesNotDependOnThreads)
 TEST(Solver, AbortKeepsValidPartialResult)
 {
   SceneMesh box = Box(1.0, 4, 2, { 0.9, 0.9, 0.9 }, [](int f) { return f == 1 ? 0 : -1; });
-  ProgressiveRadiosity solver(box);
+  RadiositySolver solver(box);
   SolverOptions o = Converged();
   int calls = 0;
   o.Progress = [&](double) { return ++calls <= 3; };
@@ -239,7 +239,7 @@ TEST(Solver, AmbientTermFixesTheFurnaceAfterOneSweep)
   // rho = 0.99: after each patch has shot once, B is far from 1/(1-rho) = 100; the ambient
   // term accounts for the unshot energy and brings it within 1 % (Cohen et al. 1988).
   SceneMesh box = Box(1.0, 8, 2, { 0.99, 0.99, 0.99 }, [](int) { return 0; }); // 96 patches
-  ProgressiveRadiosity solver(box);
+  RadiositySolver solver(box);
   SolverOptions o = Converged();
   o.MaximumShots = static_cast<int>(solver.Geometry().patchElements.size());
   const Solution plain = SolveLights(solver, box, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, o);
@@ -262,7 +262,7 @@ TEST(Solver, DirectPartIsEmissionPlusFirstBounce)
   SceneMesh mesh = Box(2.0, 6, 2, { 0.6, 0.5, 0.4 }, [](int) { return -1; });
   int patch = 1000;
   AddGrid(mesh, { 0.8, 0.8, 1.9 }, { 0, 0.4, 0 }, { 0.4, 0, 0 }, 2, 2, { 0.7, 0.7, 0.7 }, 0, patch);
-  ProgressiveRadiosity solver(mesh);
+  RadiositySolver solver(mesh);
   SolverOptions o = Converged(1e-6);
   o.SeparateDirect = true;
   const Solution full = SolveLights(solver, mesh, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, o);
@@ -286,7 +286,7 @@ TEST(Solver, BankEqualsEmissionWeightedSumOfItsLights)
   // Linearity: a bank's solution is its lights' unit solutions weighted by their colours.
   std::vector<Vec3> colors;
   SceneMesh mesh = ThreeLightScene(colors);
-  ProgressiveRadiosity solver(mesh);
+  RadiositySolver solver(mesh);
   LightGrouping banks;
   ASSERT_EQ(LightGrouping::FromBanks({ 0, 1, 0 }, 3, banks), "");
   const Solution banked = SolveLights(solver, mesh, banks, colors, SolutionMode::LightTagged, Converged(1e-9));
@@ -311,7 +311,7 @@ TEST(Solver, BankEqualsEmissionWeightedSumOfItsLights)
 TEST(Solver, TimeBudgetStopsWithValidResult)
 {
   SceneMesh box = Box(1.0, 16, 1, { 0.9, 0.9, 0.9 }, [](int f) { return f == 1 ? 0 : -1; });
-  ProgressiveRadiosity solver(box);
+  RadiositySolver solver(box);
   SolverOptions o = Converged(0.0);
   o.TimeBudget = 0.05;
   const Solution s = SolveLights(solver, box, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, o);
