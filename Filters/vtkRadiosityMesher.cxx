@@ -2,6 +2,8 @@
 #include "vtkRadiosityAdapter.h"
 
 #include "Mesher.h"
+#include "Polygon.h"
+#include "TrianglePairs.h"
 
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
@@ -58,7 +60,8 @@ int vtkRadiosityMesher::RequestData(
 
   radiosity::MesherOptions options;
   options.PatchSize = this->PatchSize;
-  options.ElementSize = ChooseElementSize(mesh);
+  options.ElementSize = ChooseElementSize(mesh, surfaceKey);
+  options.MergeTriangles = this->MergeTriangles;
   options.Progress = [this](double f) {
     this->UpdateProgress(f);
     return !this->GetAbortExecute();
@@ -109,6 +112,10 @@ int vtkRadiosityMesher::RequestData(
   }
   outCD->AddArray(patchId);
   output->GetFieldData()->ShallowCopy(input->GetFieldData());
+  vtkNew<vtkIntArray> merged;
+  merged->SetName("MergedTrianglePairs");
+  merged->InsertNextValue(meshed.mergedTrianglePairs);
+  output->GetFieldData()->AddArray(merged);
   vtkNew<vtkDoubleArray> used;
   used->SetName("MesherElementSize");
   used->InsertNextValue(options.ElementSize);
@@ -116,17 +123,29 @@ int vtkRadiosityMesher::RequestData(
   return 1;
 }
 
-double vtkRadiosityMesher::ChooseElementSize(const radiosity::SceneMesh& mesh)
+double vtkRadiosityMesher::ChooseElementSize(const radiosity::SceneMesh& mesh, const std::vector<int>& surfaceKey)
 {
+  // Count what will be meshed: the polygons after triangle pairs are joined.
+  radiosity::PairedPolygons polygons;
+  if (this->MergeTriangles)
+  {
+    polygons = radiosity::MergeTrianglePairs(mesh.points, mesh.offsets, mesh.connectivity, surfaceKey,
+      1e-7 * radiosity::Bounds(mesh.points).Diagonal());
+  }
+  else
+  {
+    polygons.offsets = mesh.offsets;
+    polygons.connectivity = mesh.connectivity;
+  }
   double size = this->ElementSize;
   const double count =
-    radiosity::CountElements(mesh.points, mesh.offsets, mesh.connectivity, this->PatchSize, size);
+    radiosity::CountElements(mesh.points, polygons.offsets, polygons.connectivity, this->PatchSize, size);
   if (this->MaximumElements > 0 && count > this->MaximumElements)
   {
-    size = radiosity::ElementSizeForBudget(mesh.points, mesh.offsets, mesh.connectivity, this->PatchSize, size,
-      static_cast<double>(this->MaximumElements));
+    size = radiosity::ElementSizeForBudget(mesh.points, polygons.offsets, polygons.connectivity, this->PatchSize,
+      size, static_cast<double>(this->MaximumElements));
     const double fitted =
-      radiosity::CountElements(mesh.points, mesh.offsets, mesh.connectivity, this->PatchSize, size);
+      radiosity::CountElements(mesh.points, polygons.offsets, polygons.connectivity, this->PatchSize, size);
     vtkWarningMacro(<< "ElementSize " << this->ElementSize << " would make " << count
                     << " elements, more than MaximumElements (" << this->MaximumElements << "); using "
                     << size << " (" << fitted << " elements).");

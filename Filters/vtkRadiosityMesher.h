@@ -22,6 +22,8 @@
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkRadiosityFiltersModule.h" // for export macro
 
+#include <vector> // for the private helper's argument
+
 namespace radiosity
 {
 struct SceneMesh;
@@ -47,6 +49,15 @@ public:
   ///@}
 
   ///@{
+  /// Join adjacent, flat, same-material triangle pairs that form a convex quad back into
+  /// that quad before meshing (a triangulating exporter's split), which then meshes into
+  /// a quarter of the elements. Default on; the count is in MergedTrianglePairs.
+  vtkSetMacro(MergeTriangles, bool);
+  vtkGetMacro(MergeTriangles, bool);
+  vtkBooleanMacro(MergeTriangles, bool);
+  ///@}
+
+  ///@{
   /// Element budget. 0 (default): none. Otherwise, when ElementSize would make more
   /// elements than this, the mesher uses the smallest larger element size that fits and
   /// says so; the size used is in the field array MesherElementSize. Without a budget,
@@ -60,7 +71,7 @@ protected:
   ~vtkRadiosityMesher() override = default;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   /// ElementSize, or the size MaximumElements calls for; warns on a huge mesh.
-  double ChooseElementSize(const radiosity::SceneMesh& mesh);
+  double ChooseElementSize(const radiosity::SceneMesh& mesh, const std::vector<int>& surfaceKey);
 
 private:
   vtkRadiosityMesher(const vtkRadiosityMesher&) = delete;
@@ -69,6 +80,7 @@ private:
   double PatchSize = 1.0;
   double ElementSize = 0.25;
   vtkIdType MaximumElements = 0;
+  bool MergeTriangles = true;
 };
 
 #endif

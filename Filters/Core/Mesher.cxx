@@ -1,5 +1,6 @@
 #include "Mesher.h"
 #include "Polygon.h"
+#include "TrianglePairs.h"
 
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 
@@ -177,8 +178,12 @@ double ElementSizeForBudget(const std::vector<Vec3>& points, const std::vector<i
   return fits;
 }
 
-std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>& offsets,
-  const std::vector<int>& connectivity, const std::vector<int>& surfaceKey,
+namespace
+{
+/// MeshPolygons on polygons that came from input cells `source[i]` (for messages, keys and
+/// the output's sourcePolygon).
+std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, const std::vector<int>& source, const std::vector<int>& surfaceKey,
   const MesherOptions& options, MeshedPolygons& out)
 {
   out = MeshedPolygons();
@@ -242,19 +247,19 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
     }
     if (offsets[i + 1] - offsets[i] < 3)
     {
-      err << "cell " << i << " has " << offsets[i + 1] - offsets[i] << " points; polygons need at least 3";
+      err << "cell " << source[i] << " has " << offsets[i + 1] - offsets[i] << " points; polygons need at least 3";
       return err.str();
     }
     if (loop.size() < 3)
     {
-      err << "cell " << i << " has zero area (only " << loop.size()
+      err << "cell " << source[i] << " has zero area (only " << loop.size()
           << " distinct points); remove degenerate cells";
       return err.str();
     }
     const Vec3 newell = NewellVector(loop.data(), static_cast<int>(loop.size()));
     if (!(0.5 * Norm(newell) > 1e-14 * diagonal * diagonal))
     {
-      err << "cell " << i << " has zero area; remove degenerate cells";
+      err << "cell " << source[i] << " has zero area; remove degenerate cells";
       return err.str();
     }
     const Vec3 normal = Normalized(newell);
@@ -274,7 +279,7 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
 
     const double planeOffset = Dot(normal, PolygonCentroid(loop.data(), static_cast<int>(loop.size())));
     auto q = [&](double v, double scale) { return static_cast<long long>(std::llround(v / scale)); };
-    const SurfaceId id{ surfaceKey[i], q(normal.x, 1e-6), q(normal.y, 1e-6), q(normal.z, 1e-6),
+    const SurfaceId id{ surfaceKey[source[i]], q(normal.x, 1e-6), q(normal.y, 1e-6), q(normal.z, 1e-6),
       q(planeOffset, quantum * 1000) };
     auto found = surfaceIndex.emplace(id, static_cast<int>(surfaces.size()));
     const int s = found.first->second;
@@ -312,7 +317,7 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
         }
         face = mesh.add_face(handles);
       }
-      faceInfo[s].emplace_back(i, out.patches + piece.localPatch[e]);
+      faceInfo[s].emplace_back(source[i], out.patches + piece.localPatch[e]);
     }
     out.patches += piece.patchCount;
   }
@@ -344,6 +349,29 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
   }
   out.patches = static_cast<int>(compact.size());
   return std::string();
+}
+
+} // namespace
+
+std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, const std::vector<int>& surfaceKey,
+  const MesherOptions& options, MeshedPolygons& out)
+{
+  if (!options.MergeTriangles)
+  {
+    std::vector<int> identity(offsets.size() - 1);
+    for (size_t i = 0; i < identity.size(); ++i)
+    {
+      identity[i] = static_cast<int>(i);
+    }
+    return MeshList(points, offsets, connectivity, identity, surfaceKey, options, out);
+  }
+  const double tolerance = 1e-7 * std::max(Bounds(points).Diagonal(), 1e-300);
+  const PairedPolygons paired = MergeTrianglePairs(points, offsets, connectivity, surfaceKey, tolerance);
+  const std::string error =
+    MeshList(points, paired.offsets, paired.connectivity, paired.source, surfaceKey, options, out);
+  out.mergedTrianglePairs = paired.merged;
+  return error;
 }
 
 } // namespace radiosity

@@ -16,6 +16,8 @@ struct MesherOptions
   double PatchSize = 1.0;   ///< longest patch edge, world units
   double ElementSize = 0.25; ///< longest element edge, world units
   long long MaximumElements = 20000000; ///< refuse settings that would exhaust memory
+  /// Join adjacent flat same-material triangle pairs into quads first (see TrianglePairs.h).
+  bool MergeTriangles = true;
   std::function<bool(double)> Progress; ///< return false to abort
 };
 
@@ -27,6 +29,7 @@ struct MeshedPolygons
   std::vector<int> sourcePolygon; ///< input polygon each element came from
   std::vector<int> patchId;       ///< 0..patches-1
   int patches = 0;
+  int mergedTrianglePairs = 0; ///< triangle pairs meshed as one quad
 };
 
 /// The number of elements MeshPolygons makes at these sizes (exactly, for valid input),

@@ -113,3 +113,35 @@ TEST(Mesher, CountAndBudgetMatchTheMesh)
   EXPECT_GT(CountElements(points, offsets, connectivity, 1, size * 0.999), budget);
   EXPECT_EQ(ElementSizeForBudget(points, offsets, connectivity, 1, 0.5, budget), 0.5); // fits already
 }
+
+TEST(Mesher, TrianglePairsBecomeQuads)
+{
+  // A unit square exported as two triangles with split vertices: meshed as the square.
+  const std::vector<Vec3> points = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 } };
+  const std::vector<int> offsets = { 0, 3, 6 }, connectivity = { 0, 1, 2, 3, 4, 5 };
+  MeshedPolygons quad, split;
+  ASSERT_EQ(MeshPolygons({ { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 } }, { 0, 4 }, { 0, 1, 2, 3 }, { 0 },
+              Sizes(1, 0.25), quad),
+    "");
+  ASSERT_EQ(MeshPolygons(points, offsets, connectivity, { 0, 0 }, Sizes(1, 0.25), split), "");
+  EXPECT_EQ(split.mergedTrianglePairs, 1);
+  EXPECT_EQ(split.sourcePolygon.size(), quad.sourcePolygon.size()); // 16, not 2 x 32
+  EXPECT_NEAR(TotalArea(split), 1.0, 1e-12);
+  // Not joined: another material, a fold, a non-convex union, or merging turned off.
+  MeshedPolygons other;
+  ASSERT_EQ(MeshPolygons(points, offsets, connectivity, { 0, 1 }, Sizes(1, 0.25), other), "");
+  EXPECT_EQ(other.mergedTrianglePairs, 0);
+  std::vector<Vec3> folded = points;
+  folded[5] = { 0, 1, 0.3 };
+  ASSERT_EQ(MeshPolygons(folded, offsets, connectivity, { 0, 0 }, Sizes(1, 0.25), other), "");
+  EXPECT_EQ(other.mergedTrianglePairs, 0);
+  std::vector<Vec3> dart = points;
+  dart[5] = { 1.5, 1.8, 0 }; // the union is not convex (reflex at (1, 1))
+  ASSERT_EQ(MeshPolygons(dart, offsets, connectivity, { 0, 0 }, Sizes(1, 0.25), other), "");
+  EXPECT_EQ(other.mergedTrianglePairs, 0);
+  MesherOptions off = Sizes(1, 0.25);
+  off.MergeTriangles = false;
+  ASSERT_EQ(MeshPolygons(points, offsets, connectivity, { 0, 0 }, off, other), "");
+  EXPECT_EQ(other.mergedTrianglePairs, 0);
+  EXPECT_GT(other.sourcePolygon.size(), quad.sourcePolygon.size());
+}

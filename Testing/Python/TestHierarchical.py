@@ -77,6 +77,26 @@ check(0 < meshed.GetNumberOfCells() <= 5000 and used > 0.05,
       f"MaximumElements 5000: {meshed.GetNumberOfCells()} elements at element size {used:.3f}")
 check(any("MaximumElements" in w for w in catcher.warnings), f"the budget is reported: {catcher.warnings}")
 
+# Triangle pairs from a triangulating exporter mesh like the quads they were.
+def meshed_cells(polygons, merge):
+    m = relight.vtkRadiosityMesher()
+    m.SetInputData(relight.make_scene(polygons, [(0.5, 0.5, 0.5)] * len(polygons), [0] + [-1] * (len(polygons) - 1)))
+    m.SetPatchSize(1.0)
+    m.SetElementSize(0.25)
+    m.SetMergeTriangles(merge)
+    m.Update()
+    return m.GetOutput()
+
+
+lamp = [(0.4, 0.4, 1.0), (0.4, 0.6, 1.0), (0.6, 0.6, 1.0), (0.6, 0.4, 1.0)]
+quads = meshed_cells([lamp, [(0, 0, 0), (2, 0, 0), (2, 1, 0), (0, 1, 0)]], True)
+halves = meshed_cells([lamp, [(0, 0, 0), (2, 0, 0), (2, 1, 0)], [(0, 0, 0), (2, 1, 0), (0, 1, 0)]], True)
+unmerged = meshed_cells([lamp, [(0, 0, 0), (2, 0, 0), (2, 1, 0)], [(0, 0, 0), (2, 1, 0), (0, 1, 0)]], False)
+pairs = halves.GetFieldData().GetArray("MergedTrianglePairs").GetValue(0)
+check(pairs == 1 and halves.GetNumberOfCells() == quads.GetNumberOfCells() < unmerged.GetNumberOfCells(),
+      f"triangle pair meshed as its quad: {halves.GetNumberOfCells()} elements (quad {quads.GetNumberOfCells()}, "
+      f"unmerged {unmerged.GetNumberOfCells()}), {pairs} pair joined")
+
 # Auto: a small scene stays with progressive refinement.
 auto = relight.solve(scene, 1.0, 0.5).GetOutput()
 check(auto.GetFieldData().GetAbstractArray("SolverMethod").GetValue(0).startswith("Progressive"),
