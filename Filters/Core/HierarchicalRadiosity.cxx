@@ -94,7 +94,7 @@ private:
       links.NodeFactors.push_back(f);
       covered += f * Nodes.CoveredArea(j);
     }
-    links.MeanFactors.push_back(covered / G.patchArea[q]);
+    links.MeanFactors.push_back(covered / G.patchOpenArea[q]); // unshot spreads over the open area
     links.ReceivingArea += covered;
   }
 
@@ -133,7 +133,7 @@ private:
       return LinkKind::Elements; // near, or partly behind a plane: resolve per element
     }
     const double covered = NodeFactors(s, q, scratch);
-    if (covered <= 0)
+    if (covered <= 0 || G.patchOpenArea[q] <= 0)
     {
       return LinkKind::None;
     }

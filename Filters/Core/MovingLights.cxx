@@ -96,7 +96,7 @@ void AddBasisInterreflection(const SceneGeometry& g, const std::vector<Vec3>& di
   for (int e = 0; e < n; ++e)
   {
     const int q = g.elementPatch[e];
-    emission[q] += direct[e] * (g.area[e] / g.patchArea[q]);
+    emission[q] += g.patchOpenArea[q] > 0 ? direct[e] * (g.area[e] / g.patchOpenArea[q]) : Vec3();
   }
   result = direct;
   const size_t stride = 3 * static_cast<size_t>(patches);
@@ -125,7 +125,10 @@ std::vector<float> SolvePatchBasis(
   std::vector<Vec3> emission(static_cast<size_t>(n) * P);
   for (int e = 0; e < n; ++e)
   {
-    emission[static_cast<size_t>(e) * P + g.elementPatch[e]] = { 1, 1, 1 };
+    if (!g.enclosed[e]) // unit exitance over the patch's open area
+    {
+      emission[static_cast<size_t>(e) * P + g.elementPatch[e]] = { 1, 1, 1 };
+    }
   }
   SolverOptions basisOptions = options;
   basisOptions.AmbientTerm = false;

@@ -43,6 +43,10 @@ RadiositySolver::RadiositySolver(const SceneMesh& mesh)
   , Rays_(new Visibility(mesh))
 {
   Error_ = Rays_->Error();
+  if (Error_.empty())
+  {
+    MarkEnclosed(*Rays_, Geometry_);
+  }
 }
 
 RadiositySolver::~RadiositySolver() = default;

@@ -162,6 +162,8 @@ SceneGeometry::SceneGeometry(const SceneMesh& mesh)
     patchArea[patch] += area[i];
   }
   sceneDiagonal = Bounds(mesh.points).Diagonal();
+  enclosed.assign(n, 0);
+  patchOpenArea = patchArea;
 }
 
 } // namespace radiosity

@@ -42,6 +42,12 @@ struct SceneGeometry
   std::vector<std::vector<int>> patchElements; ///< elements of each (compacted) patch
   std::vector<int> elementPatch;               ///< compacted patch index of each element
   std::vector<double> patchArea;
+  /// Elements no light can reach or leave (inside a closed object, e.g. floor under a
+  /// cabinet), and each patch's area without them: a patch's unshot energy is spread over
+  /// its open area, or a patch straddling a footprint would shoot part of its power into
+  /// the object and lose it (see MarkEnclosed). All open until marked.
+  std::vector<char> enclosed;
+  std::vector<double> patchOpenArea;
   double sceneDiagonal = 0;
 
   explicit SceneGeometry(const SceneMesh& mesh);

@@ -554,7 +554,7 @@ long long ShooterFormFactors::Hemicube(int patch, int resolution, std::vector<do
       factors[HitElement[i]] += CubeWeights[i];
     }
   }
-  Reciprocal(patch, factors);
+  Reciprocal(patch, Geometry.patchOpenArea[patch], factors); // the centre sees for the open part
   return count;
 }
 
@@ -594,13 +594,12 @@ long long ShooterFormFactors::MonteCarlo(int patch, int samples, int shot, std::
       factors[HitElement[r]] += w;
     }
   }
-  Reciprocal(patch, factors);
+  Reciprocal(patch, Geometry.patchArea[patch], factors); // rays from enclosed points are lost
   return samples;
 }
 
-void ShooterFormFactors::Reciprocal(int patch, std::vector<double>& factors) const
+void ShooterFormFactors::Reciprocal(int patch, double shooterArea, std::vector<double>& factors) const
 {
-  const double shooterArea = Geometry.patchArea[patch];
   for (size_t e = 0; e < factors.size(); ++e)
   {
     factors[e] = factors[e] > 0 ? factors[e] * shooterArea / Geometry.area[e] : 0.0;

@@ -91,8 +91,9 @@ private:
   void BuildLoops();
   /// Boundary edges (by point id, with multiplicity) as segments, straight runs joined.
   std::vector<Vec3> MergeCollinear(const std::map<std::pair<int, int>, int>& edges) const;
-  /// Turns F(patch -> e) sums in `factors` into F(e -> patch) by reciprocity.
-  void Reciprocal(int patch, std::vector<double>& factors) const;
+  /// Turns F(patch -> e) sums in `factors` into F(e -> patch) by reciprocity, for a
+  /// shooter whose power leaves from `shooterArea`.
+  void Reciprocal(int patch, double shooterArea, std::vector<double>& factors) const;
   /// Closest polygon hit by the ray that faces the ray (receives on its front), else -1.
   int FrontHit(const Vec3& origin, const Vec3& direction) const;
 

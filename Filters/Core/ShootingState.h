@@ -144,7 +144,7 @@ public:
         UnshotEmission[i] = Value();
       }
     }
-    Stats.ShotPower += ShotSum * G.patchArea[shooter];
+    Stats.ShotPower += ShotSum * G.patchOpenArea[shooter];
   }
 
   /// Element e receives the shot through F(e -> shooter) = f. Thread-safe per element.
@@ -170,7 +170,11 @@ public:
       return; // direct light only: what is received is not shot again
     }
     const int p = G.elementPatch[e];
-    const double w = f * G.area[e] / G.patchArea[p];
+    if (G.patchOpenArea[p] <= 0)
+    {
+      return;
+    }
+    const double w = f * G.area[e] / G.patchOpenArea[p];
     for (int m = 0; m < L; ++m)
     {
       Unshot[Index(p, m)] += Channel::Reflect(Mesh.reflectance[e], Shot[m], w);
@@ -209,7 +213,7 @@ public:
   void EndShot(int shooter, double received)
   {
     Stats.ReceivedPower += received;
-    Stats.EscapedPower += ShotSum * G.patchArea[shooter] - received;
+    Stats.EscapedPower += ShotSum * G.patchOpenArea[shooter] - received;
     std::fill(RemainingPer.begin(), RemainingPer.end(), 0.0);
     for (int p = 0; p < Patches; ++p)
     {
@@ -269,7 +273,7 @@ public:
     {
       if (InitialPer[m] > 0)
       {
-        most = std::max(most, Channel::Sum(Shot[m]) * G.patchArea[shooter] / InitialPer[m]);
+        most = std::max(most, Channel::Sum(Shot[m]) * G.patchOpenArea[shooter] / InitialPer[m]);
       }
     }
     return most;
@@ -293,8 +297,11 @@ private:
       {
         const Value v = Channel::From(emission[Index(e, m)]);
         Radiosity[Index(e, m)] = v;
-        // Unshot radiosity of a patch: the area average of its elements' emission.
-        Unshot[Index(p, m)] += v * (G.area[e] / G.patchArea[p]);
+        // Unshot radiosity of a patch: its elements' emission spread over its open area.
+        if (G.patchOpenArea[p] > 0)
+        {
+          Unshot[Index(p, m)] += v * (G.area[e] / G.patchOpenArea[p]);
+        }
         PendingEmission[p] = PendingEmission[p] || Channel::Sum(v) != 0;
       }
     }
@@ -320,7 +327,7 @@ private:
     RemainingPer = InitialPer;
   }
 
-  double Power(int p, int m) const { return Channel::Sum(Unshot[Index(p, m)]) * G.patchArea[p]; }
+  double Power(int p, int m) const { return Channel::Sum(Unshot[Index(p, m)]) * G.patchOpenArea[p]; }
 
   /// A solution is done once its unshot power is below the threshold of its own emission:
   /// then every light is accurate on its own scale, however dim it is.
@@ -380,7 +387,7 @@ private:
       Vec3 unshotPower;
       for (int p = 0; p < Patches; ++p)
       {
-        unshotPower += Channel::To(Unshot[Index(p, m)]) * G.patchArea[p];
+        unshotPower += Channel::To(Unshot[Index(p, m)]) * G.patchOpenArea[p];
       }
       const Vec3 a = unshotPower * (1.0 / area);
       Out.Ambient[m] = { interreflection.x * a.x, interreflection.y * a.y, interreflection.z * a.z };

@@ -1,8 +1,11 @@
 #include "Visibility.h"
 #include "Polygon.h"
+#include "WorkerPool.h"
 
 #include <embree3/rtcore.h>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -155,7 +158,54 @@ bool Visibility::Intersect(const Vec3& origin, const Vec3& direction, Hit& hit) 
   }
   hit.u = rh.hit.u;
   hit.v = rh.hit.v;
+  hit.distance = rh.ray.tfar * Norm(direction);
   return true;
+}
+
+namespace
+{
+bool ClosedOff(const Visibility& rays, const SceneGeometry& g, int e)
+{
+  const Vec3& n = g.normal[e];
+  const Vec3 helper = std::fabs(n.x) < 0.6 ? Vec3{ 1, 0, 0 } : Vec3{ 0, 1, 0 };
+  const Vec3 t = Normalized(Cross(helper, n)), b = Cross(n, t);
+  const double touching = 1e-6 * g.sceneDiagonal;
+  const Vec3 origin = g.centroid[e] + n * touching;
+  for (int r = 0; r < 17; ++r)
+  {
+    const double polar = r == 0 ? 0.0 : (r <= 8 ? 0.785398 : 1.396263);
+    const double azimuth = 0.785398 * (r % 8);
+    const Vec3 direction = n * std::cos(polar) + (t * std::cos(azimuth) + b * std::sin(azimuth)) * std::sin(polar);
+    Visibility::Hit hit;
+    if (!rays.Intersect(origin, direction, hit))
+    {
+      return false;
+    }
+    const bool backFace = Dot(g.normal[hit.polygon], direction) > 0;
+    if (!backFace && hit.distance > 2 * touching)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+} // namespace
+
+void MarkEnclosed(const Visibility& rays, SceneGeometry& g)
+{
+  const WorkerPool pool(0);
+  pool.For(static_cast<int>(g.normal.size()), 256, [&](int begin, int end) {
+    for (int e = begin; e < end; ++e)
+    {
+      g.enclosed[e] = ClosedOff(rays, g, e);
+    }
+  });
+  // Summed, not subtracted: a wholly enclosed patch gets exactly 0.
+  g.patchOpenArea.assign(g.patchArea.size(), 0.0);
+  for (size_t e = 0; e < g.normal.size(); ++e)
+  {
+    g.patchOpenArea[g.elementPatch[e]] += g.enclosed[e] ? 0.0 : g.area[e];
+  }
 }
 
 } // namespace radiosity

@@ -35,6 +35,7 @@ public:
     int polygon = -1;
     int corner[3] = { -1, -1, -1 }; ///< point ids of the hit triangle
     double u = 0, v = 0;            ///< weights of corner[1] and corner[2]
+    double distance = 0;            ///< from the origin, in world units
   };
   bool Intersect(const Vec3& origin, const Vec3& direction, Hit& hit) const;
 
@@ -42,6 +43,12 @@ private:
   struct Internals;
   std::unique_ptr<Internals> Impl;
 };
+
+/// Marks the elements that every one of 17 rays over their hemisphere (the normal, and 8
+/// each at 45 and 80 degrees from it) finds closed off: each ray hits a back face (it
+/// started inside an object) or a surface touching the element. Such an element can
+/// neither receive nor send light; it leaves its patch's open area.
+void MarkEnclosed(const Visibility& rays, SceneGeometry& geometry);
 
 } // namespace radiosity
 

@@ -238,7 +238,7 @@ void Print(const char* label, const SceneMesh& mesh, int patches, const Run& run
 
 int main(int argc, char* argv[])
 {
-  std::vector<long long> sizes = { 10000, 100000, 1000000 };
+  std::vector<long long> sizes = { 4000, 10000, 100000, 1000000 };
   double patch = 0.4;
   long long referenceElements = 40000;
   double mitsubaSeconds = 0; // wall time of the reference render (all probes, all lights)

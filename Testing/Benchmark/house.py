@@ -1,11 +1,8 @@
-"""Benchmark on a real third-party building: KIT's FZK-Haus (IFC, from Debian's
-assimp-testmodels), converted to OBJ by assimp, lit by 6 ceiling lamps, solved with the
-Hierarchical method, and photographed from inside.
+"""A real third-party building: KIT's FZK-Haus (IFC from Debian's assimp-testmodels, to OBJ by
+assimp), 6 ceiling lamps, Hierarchical solve, two pictures from inside. Run:
+./relight python Testing/Benchmark/house.py [--element 0.25] [--patch 0.5] [--out out/bench]"""
 
-    ./relight python Testing/Benchmark/house.py [--element 0.25] [--patch 0.5] [--out out/bench]
-"""
-
-import argparse, contextlib, os, pathlib, resource, shutil, subprocess, sys, tempfile, time
+import argparse, os, pathlib, resource, shutil, subprocess, sys
 import numpy as np
 import relight
 from vtkmodules.util.numpy_support import vtk_to_numpy
@@ -19,18 +16,13 @@ UP = 1  # assimp writes OBJ Y-up (checked below: the smallest extent is the heig
 DIRS = [np.array(d, float) for d in ((1, 0, 0), (-1, 0, 0), (0, 0, 1), (0, 0, -1))]
 
 
-def ensure_inputs():
-    """The IFC and the assimp tool come from Debian; install them if we may."""
-    if IFC.exists() and shutil.which("assimp"):
-        return
-    if os.geteuid() != 0:
-        sys.exit("need assimp-utils and assimp-testmodels: sudo apt-get install assimp-utils assimp-testmodels")
-    env = dict(os.environ, DEBIAN_FRONTEND="noninteractive")
-    subprocess.run(["apt-get", "install", "-y", "-q", "assimp-utils", "assimp-testmodels"], check=True, env=env)
-
-
 def convert(folder):
-    """IFC -> OBJ + MTL with assimp, cached in `folder`."""
+    """IFC -> OBJ + MTL with assimp, cached in `folder`; both come from Debian packages."""
+    if not (IFC.exists() and shutil.which("assimp")):
+        if os.geteuid() != 0:
+            sys.exit("need Debian's assimp-utils and assimp-testmodels: sudo apt-get install assimp-utils assimp-testmodels")
+        subprocess.run(["apt-get", "install", "-y", "-q", "assimp-utils", "assimp-testmodels"], check=True,
+                       env=dict(os.environ, DEBIAN_FRONTEND="noninteractive"))
     obj = folder / "fzk.obj"
     if not obj.exists() or obj.stat().st_mtime < IFC.stat().st_mtime:
         folder.mkdir(parents=True, exist_ok=True)
@@ -39,9 +31,8 @@ def convert(folder):
 
 
 def parse_mtl(path):
-    """{material: Kd}. assimp writes one `newmtl` per IFC style, and IFC styles share
-    names with different colours; usemtl can only name one, so the first definition wins
-    (like most OBJ readers) and the conflicts are reported."""
+    """{material: Kd}. assimp writes one `newmtl` per IFC style and styles may share a
+    name; usemtl names only one, so the first wins and differing repeats are reported."""
     kd, name, conflicts = {}, None, set()
     for line in path.read_text(encoding="utf-8", errors="replace").splitlines():
         words = line.split()
@@ -49,9 +40,7 @@ def parse_mtl(path):
             name = line.split(None, 1)[1].strip()
         elif words[:1] == ["Kd"] and name is not None:
             value = tuple(float(w) for w in words[1:4])
-            if name in kd and kd[name] != value:
-                conflicts.add(name)
-            kd.setdefault(name, value)
+            conflicts |= {name} if kd.setdefault(name, value) != value else set()
     return kd, conflicts
 
 
@@ -60,7 +49,7 @@ def load_house(obj):
     reader = vtkOBJReader()
     reader.SetFileName(str(obj))
     reader.Update()
-    data = reader.GetOutput()  # cell arrays MaterialIds, GroupIds; field MaterialNames
+    data = reader.GetOutput()  # cell arrays MaterialIds, GroupIds; field array MaterialNames
     names = data.GetFieldData().GetAbstractArray("MaterialNames")
     names = [names.GetValue(i) for i in range(names.GetNumberOfValues())]
     kd, conflicts = parse_mtl(obj.with_suffix(".mtl"))
@@ -77,17 +66,11 @@ def load_house(obj):
     offsets = vtk_to_numpy(data.GetPolys().GetOffsetsArray())
     conn = vtk_to_numpy(data.GetPolys().GetConnectivityArray())
     ids = vtk_to_numpy(data.GetCellData().GetArray("MaterialIds"))[data.GetNumberOfVerts() + data.GetNumberOfLines():]
-    polygons, refl, dropped = [], [], 0
-    for c in range(len(offsets) - 1):
-        loop = pts[conn[offsets[c]:offsets[c + 1]]]
-        newell = np.cross(loop, np.roll(loop, -1, axis=0)).sum(axis=0)
-        if len(loop) < 3 or 0.5 * np.linalg.norm(newell) < 1e-10:  # zero area, collinear
-            dropped += 1
-            continue
-        polygons.append(loop)
-        refl.append(clamped[ids[c]])
-    print(f"dropped {dropped} degenerate polygons, kept {len(polygons)}")
-    return polygons, refl
+    loops = [pts[conn[a:b]] for a, b in zip(offsets[:-1], offsets[1:])]
+    area = [0.5 * np.linalg.norm(np.cross(p, np.roll(p, -1, axis=0)).sum(axis=0)) for p in loops]  # Newell
+    keep = [c for c, p in enumerate(loops) if len(p) >= 3 and area[c] > 1e-10]  # not zero area nor collinear
+    print(f"dropped {len(loops) - len(keep)} degenerate polygons, kept {len(keep)}")
+    return [loops[c] for c in keep], [clamped[ids[c]] for c in keep]
 
 
 class Rays:
@@ -98,10 +81,9 @@ class Rays:
         self.tree = vtkOBBTree()
         self.tree.SetDataSet(scene)
         self.tree.BuildLocator()
-        normals = vtkPolyDataNormals()
+        normals = vtkPolyDataNormals()  # cell normals, each cell keeping its own orientation
         normals.SetInputData(scene)
-        normals.ComputeCellNormalsOn(), normals.ComputePointNormalsOff(), normals.SplittingOff()
-        normals.ConsistencyOff(), normals.AutoOrientNormalsOff()
+        normals.ComputeCellNormalsOn(), normals.ComputePointNormalsOff(), normals.SplittingOff(), normals.ConsistencyOff()
         normals.Update()
         self.normals = vtk_to_numpy(normals.GetOutput().GetCellData().GetArray("Normals"))
 
@@ -113,15 +95,9 @@ class Rays:
                for i in range(points.GetNumberOfPoints())]
         return sorted(((d, n) for d, n in out if d > 1e-6), key=lambda h: h[0])
 
-    def first(self, start, direction, length=15.0):
+    def first(self, start, direction, length=15.0):  # (inf, None) if nothing is hit
         h = self.hits(start, direction, length)
         return h[0] if h else (np.inf, None)
-
-    def wall(self, start, direction):
-        """Distance to the first hit if it is a wall (near-vertical), else inf: under a
-        sloped roof a horizontal ray meets the roof first, which is no wall."""
-        d, n = self.first(start, direction)
-        return d if n is not None and abs(n[UP]) < 0.5 else np.inf
 
     def indoors(self, p):
         """Every horizontal ray meets the front of a wall: p is inside a closed room."""
@@ -139,11 +115,12 @@ def lamp_at(rays, x, z, floor):
         if n is None or n[UP] > -0.3:
             return None
         tops.append(floor + 0.5 + d)
-    y = min(tops) - 0.02
-    p = np.array([x, y, z])
-    if not 2.2 <= y - floor <= 3.2 or not rays.indoors(np.array([x, floor + 1.2, z])):
+    p = np.array([x, min(tops) - 0.02, z])
+    if not 2.2 <= p[UP] - floor <= 3.2 or not rays.indoors(np.array([x, floor + 1.2, z])):
         return None
-    return p if min(rays.wall(p, d) for d in DIRS) >= 0.4 else None
+    # Only near-vertical hits count as walls: under a sloped roof a level ray meets the roof.
+    walls = [d for d, n in (rays.first(p, v) for v in DIRS) if n is not None and abs(n[UP]) < 0.5]
+    return p if min(walls, default=np.inf) >= 0.4 else None
 
 
 def find_lamps(rays, bounds, count=6, step=0.4):
@@ -177,42 +154,19 @@ def lamp_quad(p, half=0.15):
     return quad
 
 
-@contextlib.contextmanager
-def stderr_to(path):
-    """OpenMesh prints one line per rejected face straight to fd 2; collect them."""
-    saved = os.dup(2)
-    with open(path, "w") as sink:
-        os.dup2(sink.fileno(), 2)
-        try:
-            yield
-        finally:
-            os.dup2(saved, 2)
-            os.close(saved)
-
-
 def solve(scene, patch, element):
     """Mesh + Hierarchical solve at default settings; keeps warnings and errors."""
     mesher = relight.vtkRadiosityMesher()
     mesher.SetInputData(scene)
-    mesher.SetPatchSize(patch)
-    mesher.SetElementSize(element)
+    mesher.SetPatchSize(patch), mesher.SetElementSize(element)
     solver = relight.vtkLightTaggedRadiosity()
     solver.SetInputConnection(mesher.GetOutputPort())
     solver.SetSolverMethodToHierarchical()
     catchers = [relight.ErrorCatcher(mesher), relight.ErrorCatcher(solver)]
-    log = pathlib.Path(tempfile.mkstemp(suffix=".log")[1])
-    with stderr_to(log):
-        solver.Update()
-    noise = log.read_text(errors="replace").splitlines()
-    complaints = sum("PolyMeshT::add_face" in line for line in noise)
-    for line in noise:
-        if "PolyMeshT::add_face" not in line:
-            print(line, file=sys.stderr)
-    errors = [e for c in catchers for e in c.errors]
-    warnings = [w for c in catchers for w in c.warnings]
-    if errors:
-        raise RuntimeError(errors[0])
-    return solver, warnings, complaints
+    solver.Update()
+    if any(c.errors for c in catchers):
+        raise RuntimeError([e for c in catchers for e in c.errors][0])
+    return solver, [w for c in catchers for w in c.warnings]
 
 
 def camera(rays, floor, lamp):
@@ -228,13 +182,13 @@ def camera(rays, floor, lamp):
 
 def render(solver, shots, out):
     """All lamps on at unit exitance; exposure puts the 99th percentile of the lit
-    surfaces at 0.9 so walls are visible and only the lamps saturate."""
+    surfaces at 0.8 so walls are visible and only the lamps (and walls right by them) clip."""
     relit = relight.vtkRadiosityRelight()
-    relit.SetInputConnection(solver.GetOutputPort())
+    relit.SetInputConnection(solver.GetOutputPort())  # intensity 1, white: the Emission
     relit.Update()
     b = relight.point_array(relit.GetOutput(), "Radiosity").max(axis=1)
     lit = b[(b > 0) & (b < 0.5)]  # the lamps themselves are at 1
-    relit.SetExposure(0.9 / np.percentile(lit, 99))
+    relit.SetExposure(0.8 / np.percentile(lit, 99))
     relit.Update()
     for i, cam in enumerate(shots, 1):
         relight.render_png(relit.GetOutput(), out / f"house_inside_{i}.png", cam)
@@ -243,42 +197,39 @@ def render(solver, shots, out):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--element", type=float, default=0.25, help="ElementSize, m (0.25: ~174k elements)")
+    parser.add_argument("--element", type=float, default=0.25, help="ElementSize, m (0.1 gives ~830k elements)")
     parser.add_argument("--patch", type=float, default=0.5, help="PatchSize, m")
     parser.add_argument("--out", default="out/bench")
     args = parser.parse_args()
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
-    ensure_inputs()
     polygons, refl = load_house(convert(out / "fzk"))
     house = relight.make_scene(polygons, refl, [-1] * len(polygons))
     rays = Rays(house)
     lamps = find_lamps(rays, house.GetBounds())
-    for i, (floor, p) in enumerate(lamps):
-        print(f"Lamp{i}: {np.round(p, 2)} (floor at {floor} m)")
-    polys = polygons + [lamp_quad(p) for _, p in lamps]
-    k = len(lamps)
-    scene = relight.make_scene(polys, refl + [(0.8,) * 3] * k, [-1] * len(polygons) + list(range(k)),
-                               [f"Lamp{i}" for i in range(k)], [(0, 0, 0)] * len(polygons) + [(1, 1, 1)] * k)
-    solver, warnings, complaints = solve(scene, args.patch, args.element)
+    print("\n".join(f"Lamp{i}: {np.round(p, 2)} (floor at {f} m)" for i, (f, p) in enumerate(lamps)))
+    k, n = len(lamps), len(polygons)
+    scene = relight.make_scene(polygons + [lamp_quad(p) for _, p in lamps], refl + [(0.8,) * 3] * k,
+                               [-1] * n + list(range(k)), [f"Lamp{i}" for i in range(k)], [(0, 0, 0)] * n + [(1, 1, 1)] * k)
+    solver, warnings = solve(scene, args.patch, args.element)
     result = solver.GetOutput()
     method = result.GetFieldData().GetAbstractArray("SolverMethod").GetValue(0)
-    row = dict(polygons=scene.GetNumberOfCells(), elements=result.GetNumberOfCells(),
+    commit = subprocess.run(["git", "describe", "--always", "--dirty"], capture_output=True, text=True).stdout.strip()
+    row = dict(commit=commit or "?", polygons=scene.GetNumberOfCells(), elements=result.GetNumberOfCells(),
                patches=len(np.unique(relight.cell_array(result, "PatchId"))), lights=k,
                element=args.element, patch=args.patch, solve_s=round(solver.GetLastSolveSeconds(), 2),
                shots=solver.GetLastShots(), converged=bool(solver.GetLastConverged()),
                peak_mib=round(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024),
-               warnings=len(warnings), openmesh_msgs=complaints)
-    shots = [camera(rays, *lamps[0]), camera(rays, *lamps[-1])]
-    exposure = render(solver, shots, out)
+               warnings=len(warnings))
+    exposure = render(solver, [camera(rays, *lamps[0]), camera(rays, *lamps[-1])], out)  # one per storey
     summary = "\n".join([f"{key}: {value}" for key, value in row.items()] + [f"SolverMethod: {method}",
-                        f"exposure: {exposure:.4g}"] + [f"warning: {w.strip()}" for w in warnings])
+                         f"exposure: {exposure:.4g}"] + [f"warning: {w.strip()}" for w in warnings])
     print(summary)
     (out / "house.txt").write_text(summary + "\n")
     csv = out / "house.csv"
-    new = not csv.exists()
+    header = "" if csv.exists() else ",".join(row) + "\n"  # append: one row per run
     with csv.open("a") as f:
-        f.write((",".join(row) + "\n" if new else "") + ",".join(str(v) for v in row.values()) + "\n")
+        f.write(header + ",".join(str(v) for v in row.values()) + "\n")
 
 
 if __name__ == "__main__":

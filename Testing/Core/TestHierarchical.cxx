@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 using namespace radiosity;
 using radiosity_test::AddGrid;
@@ -120,17 +121,23 @@ TEST(Hierarchical, HowellPairsThroughPatchLinks)
 
 TEST(Hierarchical, EqualsProgressiveRefinementOnTheSameMesh)
 {
-  // Furnished room, 8 lamps, about 6k elements: every light within 1 % (area-weighted mean).
-  const SceneMesh mesh = Room(0.5, 0.2);
+  // Furnished room, 8 lamps, 9 elements a patch: every light within 1 % (area-weighted mean).
+  const SceneMesh mesh = Room(0.6, 0.2);
+  // 16 shadow rays: with 4, the two methods' different visibility sampling (per element
+  // and shot, per patch pair) alone differs by about 1 %; the bias between them is 0.1 %.
   const Solution fine = SolveRoom(mesh, [] {
     SolverOptions o = Converged(1e-4);
     o.Solver = SolverMethod::ProgressiveRefinement;
+    o.Samples = 16;
     return o;
   }());
-  const Solution linked = SolveRoom(mesh, Hierarchical(1e-4));
+  SolverOptions options = Hierarchical(1e-4);
+  options.Samples = 16;
+  const Solution linked = SolveRoom(mesh, options);
   EXPECT_LT(linked.Statistics.FormFactorCount, fine.Statistics.FormFactorCount / 5);
   for (double d : RelativeDifference(mesh, linked, fine))
   {
+    std::printf("hierarchical vs progressive: %.3f %%\n", 100 * d);
     EXPECT_LT(d, 0.01);
   }
 }
