@@ -298,7 +298,7 @@ private:
         const Value v = Channel::From(emission[Index(e, m)]);
         Radiosity[Index(e, m)] = v;
         // Unshot radiosity of a patch: its elements' emission spread over its open area.
-        if (G.patchOpenArea[p] > 0)
+        if (G.patchOpenArea[p] > 0 && !G.enclosed[e]) // enclosed emission never gets out
         {
           Unshot[Index(p, m)] += v * (G.area[e] / G.patchOpenArea[p]);
         }

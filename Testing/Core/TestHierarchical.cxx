@@ -239,3 +239,45 @@ TEST(Hierarchical, HundredThousandElementsConverge)
   EXPECT_LT(t.UnshotPower, 1e-3 * t.EmittedPower);
   EXPECT_LT(std::fabs(t.EscapedPower), 0.05 * t.EmittedPower);
 }
+
+TEST(Hierarchical, PatchesStraddlingAFootprintKeepTheirEnergy)
+{
+  // A furnace (every surface emits 1, rho 0.5) with a block standing on the floor, open at
+  // the bottom; floor patches straddle its footprint. Every element that can see out has
+  // B = 1 / (1 - rho) = 2, with either method: the floor under the block is enclosed and
+  // neither shoots nor takes a share of its patch's energy. Measured: mean 1.989 and 1.1 %
+  // of the power lost (1.973 and 2.7 % before enclosed elements left their patches); what
+  // remains is shadow rays weighting a partly hidden shooter by area, not by form factor.
+  SceneMesh mesh = Box(2.0, 8, 2, { 0.5, 0.5, 0.5 }, [](int) { return 0; });
+  int patch = 1000;
+  const Vec3 rho{ 0.5, 0.5, 0.5 }, lo{ 0.25, 0.25, 0 };
+  const double s = 0.5;
+  AddGrid(mesh, lo + Vec3{ 0, 0, s }, { s, 0, 0 }, { 0, s, 0 }, 2, 2, rho, 0, patch);  // top, +z
+  AddGrid(mesh, lo, { s, 0, 0 }, { 0, 0, s }, 2, 2, rho, 0, patch);                    // y = 0.25, -y
+  AddGrid(mesh, lo + Vec3{ 0, s, 0 }, { 0, 0, s }, { s, 0, 0 }, 2, 2, rho, 0, patch);  // y = 0.75, +y
+  AddGrid(mesh, lo, { 0, 0, s }, { 0, s, 0 }, 2, 2, rho, 0, patch);                    // x = 0.25, -x
+  AddGrid(mesh, lo + Vec3{ s, 0, 0 }, { 0, s, 0 }, { 0, 0, s }, 2, 2, rho, 0, patch);  // x = 0.75, +x
+  for (SolverMethod method : { SolverMethod::ProgressiveRefinement, SolverMethod::Hierarchical })
+  {
+    SolverOptions options = Converged(1e-6);
+    options.Solver = method;
+    options.Samples = 64;
+    const RadiositySolver solver(mesh);
+    const Solution sol = SolveLights(solver, mesh, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, options);
+    const SceneGeometry& g = solver.Geometry();
+    int enclosed = 0;
+    double mean = 0, area = 0;
+    for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
+    {
+      enclosed += g.enclosed[e];
+      if (!g.enclosed[e])
+      {
+        mean += sol.Radiosity[e].x * g.area[e];
+        area += g.area[e];
+      }
+    }
+    EXPECT_EQ(enclosed, 4) << "the floor elements under the block";
+    EXPECT_NEAR(mean / area, 2.0, 0.015) << static_cast<int>(method);
+    EXPECT_LT(std::fabs(sol.Statistics.EscapedPower), 0.015 * sol.Statistics.EmittedPower) << static_cast<int>(method);
+  }
+}
