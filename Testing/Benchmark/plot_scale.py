@@ -39,5 +39,22 @@ def main(path, out):
     print(f"wrote {out}")
 
 
+def table(path, out):
+    """The CSV as the README's markdown table."""
+    lines = ["| method | elements | k | solve | shots | converged | peak memory | links | mean error vs Mitsuba |",
+             "|---|---|---|---|---|---|---|---|---|"]
+    for r in csv.DictReader(open(path)):
+        k = "8" if r["mode"] == "tagged" else "1 (combined)"
+        memory = float(r["peak_mb"])
+        memory = f"{memory / 1024:.2f} GB" if memory >= 1024 else f"{memory:.0f} MB"
+        links = f"{float(r['links_mb']):.0f} MB" if r["method"] == "hierarchical" else "—"
+        error = "—" if r["mean_error"] == "nan" else f"{100 * float(r['mean_error']):.2f} %"
+        lines.append(f"| {r['method']} | {int(r['elements']):,} | {k} | {float(r['seconds']):.1f} s | "
+                     f"{int(r['shots']):,} | {'yes' if r['converged'] == '1' else 'no'} | {memory} | {links} | {error} |")
+    open(out, "w").write("\n".join(lines) + "\n")
+    print(f"wrote {out}")
+
+
 if __name__ == "__main__":
     main(sys.argv[1], sys.argv[2])
+    table(sys.argv[1], sys.argv[2].replace(".png", ".md"))
