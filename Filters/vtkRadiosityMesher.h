@@ -37,7 +37,9 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
-  /// Longest edge of a patch (the shooting unit), in world units. Default 1.
+  /// Longest edge of a patch (the shooting unit), in world units. Default 1. A sliver
+  /// triangle (narrower than a quarter of its length) gets patches of about PatchSize^2
+  /// area instead, so long thin strips do not turn into dozens of empty shooters.
   vtkSetClampMacro(PatchSize, double, 1e-300, VTK_DOUBLE_MAX);
   vtkGetMacro(PatchSize, double);
   ///@}

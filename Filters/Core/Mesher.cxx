@@ -62,10 +62,20 @@ void SplitQuad(const Vec3* q, const MesherOptions& o, Piece& piece)
   piece.patchCount = pu * pv;
 }
 
+/// Patches along a triangle's longest edge. A sliver (narrower than a quarter of its length, as
+/// triangulated walls and roofs of real models are full of) is split by its area instead:
+/// cutting a 3 m x 2 cm strip into 72 patches of nothing made a house of 16k polygons 66k
+/// patches, and every patch is a shooter.
+int TrianglePatchDivisions(const Vec3& a, const Vec3& b, const Vec3& c, double longest, double patch)
+{
+  const double width = Norm(Cross(b - a, c - a)) / longest; // twice the area over the base
+  return width < 0.25 * longest ? Divisions(std::sqrt(width * longest), patch) : Divisions(longest, patch);
+}
+
 void SplitTriangle(const Vec3& a, const Vec3& b, const Vec3& c, const MesherOptions& o, Piece& piece)
 {
   const double longest = std::max({ Norm(b - a), Norm(c - b), Norm(a - c) });
-  const int np = Divisions(longest, o.PatchSize);
+  const int np = TrianglePatchDivisions(a, b, c, longest, o.PatchSize);
   const int ne = Divisions(longest / np, o.ElementSize);
   const int n = np * ne;
   auto at = [&](int i, int j) {
@@ -108,7 +118,7 @@ double CountQuad(const Vec3* q, double patch, double element)
 double CountTriangle(const Vec3& a, const Vec3& b, const Vec3& c, double patch, double element)
 {
   const double longest = std::max({ Norm(b - a), Norm(c - b), Norm(a - c) });
-  const int np = Divisions(longest, patch);
+  const int np = TrianglePatchDivisions(a, b, c, longest, patch);
   const double n = static_cast<double>(np) * Divisions(longest / np, element);
   return n * n;
 }

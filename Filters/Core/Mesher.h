@@ -13,7 +13,7 @@ namespace radiosity
 
 struct MesherOptions
 {
-  double PatchSize = 1.0;   ///< longest patch edge, world units
+  double PatchSize = 1.0;   ///< longest patch edge, world units (slivers: by area)
   double ElementSize = 0.25; ///< longest element edge, world units
   long long MaximumElements = 20000000; ///< refuse settings that would exhaust memory
   /// Join adjacent flat same-material triangle pairs into quads first (see TrianglePairs.h).
@@ -43,7 +43,8 @@ double ElementSizeForBudget(const std::vector<Vec3>& points, const std::vector<i
   const std::vector<int>& connectivity, double patchSize, double elementSize, double budget);
 
 /// Splits each planar polygon (convex quads on a bilinear grid, others ear-clipped into
-/// triangles and split on a barycentric lattice) into patches with edges <= PatchSize, and each patch
+/// triangles and split on a barycentric lattice) into patches with edges <= PatchSize (a
+/// sliver triangle, narrower than a quarter of its length, into patches of about that area), and each patch
 /// into elements with edges <= ElementSize. Points are shared between elements of input
 /// polygons that lie in one plane with the same `surfaceKey` (the caller's material id)
 /// and touch; everywhere else they are split, so smoothing over shared vertices never

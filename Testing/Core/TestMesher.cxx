@@ -145,3 +145,23 @@ TEST(Mesher, TrianglePairsBecomeQuads)
   EXPECT_EQ(other.mergedTrianglePairs, 0);
   EXPECT_GT(other.sourcePolygon.size(), quad.sourcePolygon.size());
 }
+
+TEST(Mesher, SliversAreNotCutIntoManyPatches)
+{
+  // A 3 m x 2 cm strip: split along its length it would be 6 x 6 x 2 lattice patches of
+  // almost no area; by area it is one patch, and its elements still have short edges.
+  const std::vector<Vec3> points = { { 0, 0, 0 }, { 3, 0, 0 }, { 3, 0.02, 0 } };
+  MeshedPolygons m;
+  ASSERT_EQ(MeshPolygons(points, { 0, 3 }, { 0, 1, 2 }, { 0 }, Sizes(0.5, 0.25), m), "");
+  EXPECT_EQ(m.patches, 1);
+  EXPECT_NEAR(TotalArea(m), 0.03, 1e-12);
+  EXPECT_EQ(CountElements(points, { 0, 3 }, { 0, 1, 2 }, 0.5, 0.25), static_cast<double>(m.sourcePolygon.size()));
+  for (size_t e = 0; e + 1 < m.offsets.size(); ++e)
+  {
+    for (int k = m.offsets[e]; k < m.offsets[e + 1]; ++k)
+    {
+      const int next = k + 1 < m.offsets[e + 1] ? k + 1 : m.offsets[e];
+      EXPECT_LE(Norm(m.points[m.connectivity[k]] - m.points[m.connectivity[next]]), 0.25 + 1e-12);
+    }
+  }
+}
