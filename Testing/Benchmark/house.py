@@ -223,7 +223,7 @@ def main():
                warnings=len(warnings))
     exposure = render(solver, [camera(rays, *lamps[0]), camera(rays, *lamps[-1])], out)  # one per storey
     summary = "\n".join([f"{key}: {value}" for key, value in row.items()] + [f"SolverMethod: {method}",
-                         f"exposure: {exposure:.4g}"] + [f"warning: {w.strip()}" for w in warnings])
+                         f"exposure: {exposure:.4g}"] + [f"warning: {w.strip().splitlines()[-1]}" for w in warnings])
     print(summary)
     (out / "house.txt").write_text(summary + "\n")
     csv = out / "house.csv"
