@@ -62,6 +62,7 @@ int vtkRadiosityMesher::RequestData(
   options.PatchSize = this->PatchSize;
   options.ElementSize = ChooseElementSize(mesh, surfaceKey);
   options.MergeTriangles = this->MergeTriangles;
+  options.SharePatches = this->SharePatches;
   options.Progress = [this](double f) {
     this->UpdateProgress(f);
     return !this->GetAbortExecute();

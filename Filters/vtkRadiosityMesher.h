@@ -60,6 +60,15 @@ public:
   ///@}
 
   ///@{
+  /// Polygons that fit in one patch share it with the other such polygons of their flat,
+  /// same-material surface in the same PatchSize cell, so a model's many small parts do
+  /// not each become a shooter. Default on.
+  vtkSetMacro(SharePatches, bool);
+  vtkGetMacro(SharePatches, bool);
+  vtkBooleanMacro(SharePatches, bool);
+  ///@}
+
+  ///@{
   /// Element budget. 0 (default): none. Otherwise, when ElementSize would make more
   /// elements than this, the mesher uses the smallest larger element size that fits and
   /// says so; the size used is in the field array MesherElementSize. Without a budget,
@@ -83,6 +92,7 @@ private:
   double ElementSize = 0.25;
   vtkIdType MaximumElements = 0;
   bool MergeTriangles = true;
+  bool SharePatches = true;
 };
 
 #endif

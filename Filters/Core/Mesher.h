@@ -18,6 +18,9 @@ struct MesherOptions
   long long MaximumElements = 20000000; ///< refuse settings that would exhaust memory
   /// Join adjacent flat same-material triangle pairs into quads first (see TrianglePairs.h).
   bool MergeTriangles = true;
+  /// Polygons that fit in one patch share it with the other such polygons of their flat,
+  /// same-material surface in the same PatchSize cell of the plane.
+  bool SharePatches = true;
   std::function<bool(double)> Progress; ///< return false to abort
 };
 

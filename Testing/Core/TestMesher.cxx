@@ -165,3 +165,36 @@ TEST(Mesher, SliversAreNotCutIntoManyPatches)
     }
   }
 }
+
+TEST(Mesher, SmallPolygonsShareAPatchInTheirCell)
+{
+  // Four 0.2 m squares of one material in one plane, inside one 1 m cell: one patch. A
+  // fifth in another material, or one in another cell, keeps its own.
+  std::vector<Vec3> points;
+  std::vector<int> offsets = { 0 }, connectivity, keys;
+  auto square = [&](double x, double y, int key) {
+    for (const Vec3& p : { Vec3{ x, y, 0 }, Vec3{ x + 0.2, y, 0 }, Vec3{ x + 0.2, y + 0.2, 0 }, Vec3{ x, y + 0.2, 0 } })
+    {
+      connectivity.push_back(static_cast<int>(points.size()));
+      points.push_back(p);
+    }
+    offsets.push_back(static_cast<int>(connectivity.size()));
+    keys.push_back(key);
+  };
+  square(0.1, 0.1, 0);
+  square(0.5, 0.1, 0);
+  square(0.1, 0.5, 0);
+  square(0.3, 0.3, 0);
+  square(0.6, 0.6, 1); // another material
+  square(1.3, 0.1, 0); // another cell
+  MeshedPolygons shared, own;
+  ASSERT_EQ(MeshPolygons(points, offsets, connectivity, keys, Sizes(1, 0.1), shared), "");
+  EXPECT_EQ(shared.patches, 3);
+  std::set<int> first(shared.patchId.begin(), shared.patchId.begin() + 16);
+  EXPECT_EQ(first.size(), 1u); // the four squares' 4 x 4 elements
+  MesherOptions off = Sizes(1, 0.1);
+  off.SharePatches = false;
+  ASSERT_EQ(MeshPolygons(points, offsets, connectivity, keys, off, own), "");
+  EXPECT_EQ(own.patches, 6);
+  EXPECT_NEAR(TotalArea(shared), 6 * 0.04, 1e-12);
+}
