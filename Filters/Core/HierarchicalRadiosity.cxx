@@ -15,7 +15,7 @@ struct ShooterLinks
   std::vector<int> Patches;
   std::vector<int> NodeFactorBegin; ///< where each patch link's node factors start
   std::vector<float> NodeFactors;   ///< F(node -> shooter) at each node of each linked patch
-  std::vector<double> MeanFactors;  ///< their area-weighted mean over the patch (exact sum)
+  std::vector<double> MeanFactors;  ///< their integral over the patch per unit of its open area
   std::vector<int> Groups;   ///< receiver patch of each element group
   std::vector<int> GroupEnd; ///< end of each group in Elements
   std::vector<int> Elements;
