@@ -97,6 +97,36 @@ check(pairs == 1 and halves.GetNumberOfCells() == quads.GetNumberOfCells() < unm
       f"triangle pair meshed as its quad: {halves.GetNumberOfCells()} elements (quad {quads.GetNumberOfCells()}, "
       f"unmerged {unmerged.GetNumberOfCells()}), {pairs} pair joined")
 
+# Scale and placement: the same meshed scene, scaled by 1000 and rotated, gives the same
+# radiosity (tolerances are relative to the scene; samples depend on ids, not positions).
+from vtkmodules.vtkCommonTransforms import vtkTransform
+from vtkmodules.vtkFiltersGeneral import vtkTransformPolyDataFilter
+
+mesher = relight.vtkRadiosityMesher()
+mesher.SetInputData(scene)
+mesher.SetPatchSize(1.0)
+mesher.SetElementSize(0.25)
+mesher.Update()
+transform = vtkTransform()
+transform.RotateWXYZ(37.0, 0.3, 1.0, 0.2)
+transform.Translate(500.0, -20.0, 7.0)
+transform.Scale(1000.0, 1000.0, 1000.0)
+moved = vtkTransformPolyDataFilter()
+moved.SetTransform(transform)
+moved.SetInputConnection(mesher.GetOutputPort())
+moved.Update()
+results = []
+for data in (mesher.GetOutput(), moved.GetOutput()):
+    solver = relight.vtkLightTaggedRadiosity()
+    solver.SetInputData(data)
+    solver.SetSolverMethod(HIERARCHICAL)
+    solver.Update()
+    out = solver.GetOutput()
+    receivers = cell_array(out, "LightId") < 0
+    results.append(np.array(cell_array(out, "Radiosity_" + light_names(out)[0]))[receivers])  # a copy
+drift = np.abs(results[1] - results[0]).max() / results[0].max()
+check(drift < 1e-3, f"scaled x1000, rotated and moved: same radiosity to {drift:.1e} of the peak")
+
 # Auto: a small scene stays with progressive refinement.
 auto = relight.solve(scene, 1.0, 0.5).GetOutput()
 check(auto.GetFieldData().GetAbstractArray("SolverMethod").GetValue(0).startswith("Progressive"),
