@@ -338,10 +338,7 @@ void Shoot(const SceneMesh& mesh, const SceneGeometry& g, const Visibility& rays
     }
     state.EndShot(shooter, DistributeAlongLinks(state, pool, links[shooter], meanReflectance));
   }
-  stats.RaysSkipped = estimator.RaysSkipped();
-  stats.PairsUnblockable = estimator.PairsUnblockable();
-  stats.BlockingSurfaces = estimator.BlockingPlanes();
-  state.Finish();
+  state.Finish(estimator);
 }
 } // namespace
 
@@ -350,14 +347,9 @@ void SolveHierarchical(const SceneMesh& mesh, const SceneGeometry& geometry, con
   SolverClock::time_point start, Solution& out)
 {
   out.Statistics.Method = SolverMethod::Hierarchical;
-  if (grey)
-  {
-    Shoot<Grey>(mesh, geometry, rays, emission, solutions, options, start, out);
-  }
-  else
-  {
-    Shoot<Rgb>(mesh, geometry, rays, emission, solutions, options, start, out);
-  }
+  WithChannel(grey, [&](auto channel) {
+    Shoot<decltype(channel)>(mesh, geometry, rays, emission, solutions, options, start, out);
+  });
 }
 
 } // namespace radiosity

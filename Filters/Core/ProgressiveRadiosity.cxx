@@ -33,10 +33,7 @@ void Shoot(const SceneMesh& mesh, const SceneGeometry& g, const Visibility& rays
     state.TakeShot(shooter);
     state.EndShot(shooter, DistributeToElements(state, pool, factors));
   }
-  stats.RaysSkipped = estimator.RaysSkipped();
-  stats.PairsUnblockable = estimator.PairsUnblockable();
-  stats.BlockingSurfaces = estimator.BlockingPlanes();
-  state.Finish();
+  state.Finish(estimator);
 }
 } // namespace
 
@@ -45,14 +42,9 @@ void SolveProgressive(const SceneMesh& mesh, const SceneGeometry& geometry, cons
   SolverClock::time_point start, Solution& out)
 {
   out.Statistics.Method = SolverMethod::ProgressiveRefinement;
-  if (grey)
-  {
-    Shoot<Grey>(mesh, geometry, rays, emission, solutions, options, start, out);
-  }
-  else
-  {
-    Shoot<Rgb>(mesh, geometry, rays, emission, solutions, options, start, out);
-  }
+  WithChannel(grey, [&](auto channel) {
+    Shoot<decltype(channel)>(mesh, geometry, rays, emission, solutions, options, start, out);
+  });
 }
 
 } // namespace radiosity

@@ -234,6 +234,15 @@ public:
     Stats.TimeHistory.push_back(Seconds());
   }
 
+  /// Takes the estimator's culling counts, then Finish.
+  void Finish(const ShooterFormFactors& estimator)
+  {
+    Stats.RaysSkipped = estimator.RaysSkipped();
+    Stats.PairsUnblockable = estimator.PairsUnblockable();
+    Stats.BlockingSurfaces = estimator.BlockingPlanes();
+    Finish();
+  }
+
   /// Adds the patch-gathered irradiance, the ambient term, and writes the output.
   void Finish()
   {
@@ -405,6 +414,21 @@ private:
   double Initial = 0, ShotSum = 0;
   const PatchNodes* Nodes = nullptr;
 };
+
+/// Calls body(Grey()) for a single grey channel, body(Rgb()) otherwise: the solver methods
+/// are templates on the channel type.
+template <typename Body>
+void WithChannel(bool grey, const Body& body)
+{
+  if (grey)
+  {
+    body(Grey());
+  }
+  else
+  {
+    body(Rgb());
+  }
+}
 
 /// Every element receives the shot through factors[e] = F(e -> shooter); returns the
 /// power that arrived. Radiosity is updated in parallel, patch sums in element order.
