@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 namespace radiosity
 {
@@ -83,7 +84,7 @@ public:
       Stats.OutOfTime = true;
       return false;
     }
-    if (Options.Progress && !Options.Progress(std::min(1.0, static_cast<double>(Stats.Shots) / Stats.ShotCap)))
+    if (Options.Progress && !Options.Progress(Fraction()))
     {
       Stats.Aborted = true;
       return false;
@@ -269,6 +270,19 @@ public:
         Out.Direct[i] = Channel::To(DirectPart[i]);
       }
     }
+  }
+
+  /// How far the solve is: the larger of the shots against the cap and the unshot energy's
+  /// way down to the threshold on a log scale (a converging solve ends far below its cap).
+  double Fraction() const
+  {
+    double done = static_cast<double>(Stats.Shots) / std::max(Stats.ShotCap, 1);
+    const double threshold = Options.ConvergenceThreshold;
+    if (!Stats.RemainingHistory.empty() && threshold > 0 && threshold < 1 && Stats.RemainingHistory.back() > 0)
+    {
+      done = std::max(done, std::log(Stats.RemainingHistory.back()) / std::log(threshold));
+    }
+    return std::min(1.0, std::max(0.0, done));
   }
 
   double Seconds() const { return std::chrono::duration<double>(SolverClock::now() - Start).count(); }

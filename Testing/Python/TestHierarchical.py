@@ -127,6 +127,19 @@ for data in (mesher.GetOutput(), moved.GetOutput()):
 drift = np.abs(results[1] - results[0]).max() / results[0].max()
 check(drift < 1e-3, f"scaled x1000, rotated and moved: same radiosity to {drift:.1e} of the peak")
 
+# Progress follows the unshot energy down to the threshold, not only the shots against
+# the (automatic, generous) cap: a converging solve reports nearly 1 before it ends.
+progress = []
+watched = relight.vtkLightTaggedRadiosity()
+watched.SetInputData(mesher.GetOutput())
+watched.SetSolverMethod(HIERARCHICAL)
+watched.AddObserver("ProgressEvent", lambda obj, _event: progress.append(obj.GetProgress()))
+watched.Update()
+solver_reports = progress[:-1]  # the executive adds a final 1.0 of its own
+check(watched.GetLastConverged() and max(solver_reports) > 0.9 and progress == sorted(progress),
+      f"progress rises to {max(solver_reports):.2f} before the end, over {len(progress)} reports "
+      f"({watched.GetLastShots()} shots)")
+
 # Auto: a small scene stays with progressive refinement.
 auto = relight.solve(scene, 1.0, 0.5).GetOutput()
 check(auto.GetFieldData().GetAbstractArray("SolverMethod").GetValue(0).startswith("Progressive"),
