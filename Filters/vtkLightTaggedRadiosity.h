@@ -81,8 +81,8 @@ public:
   /// rays. Cost grows about linearly with elements. FormFactorMethod and
   /// FormFactorSamples' meaning for Hemicube/MonteCarlo apply to ProgressiveRefinement
   /// only; Hierarchical uses analytic factors with FormFactorSamples shadow rays.
-  /// Auto (default): Hierarchical for 20,000 elements or more (with Analytic factors and
-  /// patches of 4 or more elements on average), otherwise ProgressiveRefinement.
+  /// Auto (default): Hierarchical for 20,000 elements or more (with Analytic factors),
+  /// otherwise ProgressiveRefinement.
   vtkSetClampMacro(SolverMethod, int, SOLVER_AUTO, HIERARCHICAL);
   vtkGetMacro(SolverMethod, int);
   void SetSolverMethodToAuto() { this->SetSolverMethod(SOLVER_AUTO); }

@@ -9,15 +9,16 @@ namespace radiosity
 
 namespace
 {
-/// Auto: hierarchical links pay once patches hold many elements and the scene is large;
-/// the hemicube and Monte Carlo estimators exist only in progressive refinement.
-SolverMethod ResolveMethod(const SolverOptions& options, int elements, int patches)
+/// Auto: hierarchical links pay once the scene is large (even with small patches, a link
+/// made once is cheaper than a form factor per shot); the hemicube and Monte Carlo
+/// estimators exist only in progressive refinement.
+SolverMethod ResolveMethod(const SolverOptions& options, int elements)
 {
   if (options.Solver != SolverMethod::Auto)
   {
     return options.Solver;
   }
-  const bool large = elements >= 20000 && elements >= 4 * patches;
+  const bool large = elements >= 20000;
   return large && options.Method == FormFactorMethod::Analytic ? SolverMethod::Hierarchical
                                                                : SolverMethod::ProgressiveRefinement;
 }
@@ -77,7 +78,7 @@ Solution RadiositySolver::Solve(
       std::all_of(emission.begin(), emission.end(), Grey3);
   }
   out.Statistics.SingleChannel = grey;
-  const SolverMethod method = ResolveMethod(options, n, static_cast<int>(Geometry_.patchElements.size()));
+  const SolverMethod method = ResolveMethod(options, n);
   const SolveFunction solve = method == SolverMethod::Hierarchical ? SolveHierarchical : SolveProgressive;
   solve(Mesh, Geometry_, *Rays_, emission, solutions, grey, options, start, out);
   return out;

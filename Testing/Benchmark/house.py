@@ -155,13 +155,13 @@ def lamp_quad(p, half=0.15):
 
 
 def solve(scene, patch, element):
-    """Mesh + Hierarchical solve at default settings; keeps warnings and errors."""
+    """Mesh + solve at the solver's default settings (Auto picks Hierarchical at this size);
+    keeps warnings and errors."""
     mesher = relight.vtkRadiosityMesher()
     mesher.SetInputData(scene)
     mesher.SetPatchSize(patch), mesher.SetElementSize(element)
     solver = relight.vtkLightTaggedRadiosity()
     solver.SetInputConnection(mesher.GetOutputPort())
-    solver.SetSolverMethodToHierarchical()
     catchers = [relight.ErrorCatcher(mesher), relight.ErrorCatcher(solver)]
     solver.Update()
     if any(c.errors for c in catchers):
