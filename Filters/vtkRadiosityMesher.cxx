@@ -2,8 +2,6 @@
 #include "vtkRadiosityAdapter.h"
 
 #include "Mesher.h"
-#include "Polygon.h"
-#include "TrianglePairs.h"
 
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
@@ -60,7 +58,9 @@ int vtkRadiosityMesher::RequestData(
 
   radiosity::MesherOptions options;
   options.PatchSize = this->PatchSize;
-  options.ElementSize = ChooseElementSize(mesh, surfaceKey);
+  options.ElementSize = this->ElementSize;
+  options.ElementBudget = static_cast<double>(this->MaximumElements);
+  options.Warning = [this](const std::string& message) { vtkWarningMacro(<< message); };
   options.MergeTriangles = this->MergeTriangles;
   options.SharePatches = this->SharePatches;
   options.Progress = [this](double f) {
@@ -119,44 +119,7 @@ int vtkRadiosityMesher::RequestData(
   output->GetFieldData()->AddArray(merged);
   vtkNew<vtkDoubleArray> used;
   used->SetName("MesherElementSize");
-  used->InsertNextValue(options.ElementSize);
+  used->InsertNextValue(meshed.elementSize);
   output->GetFieldData()->AddArray(used);
   return 1;
-}
-
-double vtkRadiosityMesher::ChooseElementSize(const radiosity::SceneMesh& mesh, const std::vector<int>& surfaceKey)
-{
-  // Count what will be meshed: the polygons after triangle pairs are joined.
-  radiosity::PairedPolygons polygons;
-  if (this->MergeTriangles)
-  {
-    polygons = radiosity::MergeTrianglePairs(mesh.points, mesh.offsets, mesh.connectivity, surfaceKey,
-      1e-7 * radiosity::Bounds(mesh.points).Diagonal());
-  }
-  else
-  {
-    polygons.offsets = mesh.offsets;
-    polygons.connectivity = mesh.connectivity;
-  }
-  double size = this->ElementSize;
-  const double count =
-    radiosity::CountElements(mesh.points, polygons.offsets, polygons.connectivity, this->PatchSize, size);
-  if (this->MaximumElements > 0 && count > this->MaximumElements)
-  {
-    size = radiosity::ElementSizeForBudget(mesh.points, polygons.offsets, polygons.connectivity, this->PatchSize,
-      size, static_cast<double>(this->MaximumElements));
-    const double fitted =
-      radiosity::CountElements(mesh.points, polygons.offsets, polygons.connectivity, this->PatchSize, size);
-    vtkWarningMacro(<< "ElementSize " << this->ElementSize << " would make " << count
-                    << " elements, more than MaximumElements (" << this->MaximumElements << "); using "
-                    << size << " (" << fitted << " elements).");
-    return size;
-  }
-  if (count > 2e6)
-  {
-    vtkWarningMacro(<< "ElementSize " << size << " makes " << count
-                    << " elements: solving takes minutes and about " << count * 1.6e-6
-                    << " GB with 8 lights. Set MaximumElements (or a larger ElementSize) to bound it.");
-  }
-  return size;
 }

@@ -22,12 +22,7 @@
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkRadiosityFiltersModule.h" // for export macro
 
-#include <vector> // for the private helper's argument
 
-namespace radiosity
-{
-struct SceneMesh;
-}
 
 class VTKRADIOSITYFILTERS_EXPORT vtkRadiosityMesher : public vtkPolyDataAlgorithm
 {
@@ -81,8 +76,6 @@ protected:
   vtkRadiosityMesher();
   ~vtkRadiosityMesher() override = default;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  /// ElementSize, or the size MaximumElements calls for; warns on a huge mesh.
-  double ChooseElementSize(const radiosity::SceneMesh& mesh, const std::vector<int>& surfaceKey);
 
 private:
   vtkRadiosityMesher(const vtkRadiosityMesher&) = delete;

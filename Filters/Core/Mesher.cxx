@@ -379,24 +379,59 @@ std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& of
 
 } // namespace
 
+namespace
+{
+/// ElementSize, or the size ElementBudget calls for; says which, and warns on a huge mesh.
+double ChooseElementSize(const std::vector<Vec3>& points, const PairedPolygons& polygons, const MesherOptions& o)
+{
+  const double count = CountElements(points, polygons.offsets, polygons.connectivity, o.PatchSize, o.ElementSize);
+  std::ostringstream message;
+  double size = o.ElementSize;
+  if (o.ElementBudget > 0 && count > o.ElementBudget)
+  {
+    size = ElementSizeForBudget(points, polygons.offsets, polygons.connectivity, o.PatchSize, size, o.ElementBudget);
+    message << "ElementSize " << o.ElementSize << " would make " << count << " elements, more than MaximumElements ("
+            << o.ElementBudget << "); using " << size << " ("
+            << CountElements(points, polygons.offsets, polygons.connectivity, o.PatchSize, size) << " elements).";
+  }
+  else if (count > 2e6)
+  {
+    message << "ElementSize " << size << " makes " << count << " elements: solving takes minutes and about "
+            << count * 1.6e-6 << " GB with 8 lights. Set MaximumElements (or a larger ElementSize) to bound it.";
+  }
+  if (o.Warning && !message.str().empty())
+  {
+    o.Warning(message.str());
+  }
+  return size;
+}
+} // namespace
+
 std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>& offsets,
   const std::vector<int>& connectivity, const std::vector<int>& surfaceKey,
   const MesherOptions& options, MeshedPolygons& out)
 {
-  if (!options.MergeTriangles)
+  PairedPolygons polygons;
+  if (options.MergeTriangles)
   {
-    std::vector<int> identity(offsets.size() - 1);
-    for (size_t i = 0; i < identity.size(); ++i)
-    {
-      identity[i] = static_cast<int>(i);
-    }
-    return MeshList(points, offsets, connectivity, identity, surfaceKey, options, out);
+    const double tolerance = 1e-7 * std::max(Bounds(points).Diagonal(), 1e-300);
+    polygons = MergeTrianglePairs(points, offsets, connectivity, surfaceKey, tolerance);
   }
-  const double tolerance = 1e-7 * std::max(Bounds(points).Diagonal(), 1e-300);
-  const PairedPolygons paired = MergeTrianglePairs(points, offsets, connectivity, surfaceKey, tolerance);
+  else
+  {
+    polygons.offsets = offsets;
+    polygons.connectivity = connectivity;
+    for (size_t i = 0; i + 1 < offsets.size(); ++i)
+    {
+      polygons.source.push_back(static_cast<int>(i));
+    }
+  }
+  MesherOptions sized = options;
+  sized.ElementSize = ChooseElementSize(points, polygons, options);
   const std::string error =
-    MeshList(points, paired.offsets, paired.connectivity, paired.source, surfaceKey, options, out);
-  out.mergedTrianglePairs = paired.merged;
+    MeshList(points, polygons.offsets, polygons.connectivity, polygons.source, surfaceKey, sized, out);
+  out.mergedTrianglePairs = polygons.merged;
+  out.elementSize = sized.ElementSize;
   return error;
 }
 

@@ -21,7 +21,11 @@ struct MesherOptions
   /// Polygons that fit in one patch share it with the other such polygons of their flat,
   /// same-material surface in the same PatchSize cell of the plane.
   bool SharePatches = true;
+  /// Element budget (0: none): above it the smallest larger element size that fits is used.
+  double ElementBudget = 0;
   std::function<bool(double)> Progress; ///< return false to abort
+  /// Told, before meshing, when the budget changed the element size or the mesh is huge.
+  std::function<void(const std::string&)> Warning;
 };
 
 struct MeshedPolygons
@@ -33,6 +37,7 @@ struct MeshedPolygons
   std::vector<int> patchId;       ///< 0..patches-1
   int patches = 0;
   int mergedTrianglePairs = 0; ///< triangle pairs meshed as one quad
+  double elementSize = 0;      ///< the element size used (see ElementBudget)
 };
 
 /// The number of elements MeshPolygons makes at these sizes (exactly, for valid input),

@@ -19,6 +19,29 @@ inline radiosity::SolverOptions Converged(double threshold = 1e-7)
   return o;
 }
 
+/// Power absorbed over the scene, recomputed from the output radiosity rather than the
+/// solver's bookkeeping: (B - E) / rho is the irradiance, (1 - rho) of it is absorbed.
+/// Solution m's emitters are the cells with LightId m, at unit exitance.
+inline double AbsorbedPower(const SceneMesh& mesh, const radiosity::Solution& s)
+{
+  const radiosity::SceneGeometry g(mesh);
+  const int L = s.Solutions;
+  double absorbed = 0;
+  for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
+  {
+    for (int m = 0; m < L; ++m)
+    {
+      const double emitted = mesh.lightId[e] == m ? 1.0 : 0.0;
+      for (int c = 0; c < 3; ++c)
+      {
+        const double rho = mesh.reflectance[e][c];
+        absorbed += (s.Radiosity[static_cast<size_t>(e) * L + m][c] - emitted) / rho * (1 - rho) * g.area[e];
+      }
+    }
+  }
+  return absorbed;
+}
+
 /// Adds the quad origin + [0,1]u + [0,1]v as an n x n grid of elements (normal u x v)
 /// grouped into patches of `per` x `per` elements, with its own points.
 inline void AddGrid(SceneMesh& mesh, const Vec3& origin, const Vec3& u, const Vec3& v, int n,

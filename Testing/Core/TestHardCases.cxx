@@ -527,28 +527,13 @@ TEST(HardInvariants, ReciprocityOnRandomPolygonPairs)
 TEST(HardInvariants, EnergyLedgerClosesOnRandomRooms)
 {
   // Emitted = absorbed + escaped + unshot, with "absorbed" recomputed from the output
-  // radiosity ((B - E) / rho is the irradiance; (1 - rho) of it is absorbed), not from the
-  // solver's own bookkeeping.
+  // radiosity, not from the solver's own bookkeeping.
   std::mt19937 rng(5);
   for (int trial = 0; trial < 4; ++trial)
   {
     SceneMesh mesh = RandomRoom(rng, 3);
     const Solution s = SolveOne(mesh, Converged(1e-3), 3);
-    const SceneGeometry g(mesh);
-    double absorbed = 0;
-    for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
-    {
-      for (int m = 0; m < 3; ++m)
-      {
-        const double emitted = mesh.lightId[e] == m ? 1.0 : 0.0;
-        for (int c = 0; c < 3; ++c)
-        {
-          const double rho = mesh.reflectance[e][c];
-          const double irradiance = (s.Radiosity[e * 3 + m][c] - emitted) / rho;
-          absorbed += irradiance * (1 - rho) * g.area[e];
-        }
-      }
-    }
+    const double absorbed = radiosity_test::AbsorbedPower(mesh, s);
     const SolverStatistics& t = s.Statistics;
     EXPECT_NEAR(absorbed + t.EscapedPower + t.UnshotPower, t.EmittedPower, 1e-9 * t.EmittedPower) << trial;
     EXPECT_GT(t.UnshotPower, 0);

@@ -168,20 +168,7 @@ TEST(Hierarchical, EnergyLedgerCloses)
   // Emitted = absorbed + escaped + unshot, absorbed recomputed from the output radiosity.
   const SceneMesh mesh = Room(0.6, 0.3);
   const Solution s = SolveRoom(mesh, Hierarchical(1e-3));
-  const SceneGeometry g(mesh);
-  double absorbed = 0;
-  for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
-  {
-    for (int m = 0; m < 8; ++m)
-    {
-      const double emitted = mesh.lightId[e] == m ? 1.0 : 0.0;
-      for (int c = 0; c < 3; ++c)
-      {
-        const double rho = mesh.reflectance[e][c];
-        absorbed += (s.Radiosity[static_cast<size_t>(e) * 8 + m][c] - emitted) / rho * (1 - rho) * g.area[e];
-      }
-    }
-  }
+  const double absorbed = radiosity_test::AbsorbedPower(mesh, s);
   const SolverStatistics& t = s.Statistics;
   EXPECT_NEAR(absorbed + t.EscapedPower + t.UnshotPower, t.EmittedPower, 1e-9 * t.EmittedPower);
   EXPECT_LT(std::fabs(t.EscapedPower), 0.05 * t.EmittedPower);
