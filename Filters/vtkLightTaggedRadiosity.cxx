@@ -3,7 +3,7 @@
 
 #include "Effects.h"
 #include "LightSolutions.h"
-#include "MovingLights.h"
+#include "PatchBasis.h"
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -107,6 +107,64 @@ std::string DescribeMethod(const radiosity::SolverStatistics& stats)
     std::snprintf(text, sizeof(text), "ProgressiveRefinement: %lld form factors", stats.FormFactorCount);
   }
   return text;
+}
+
+/// Solves the moving-light basis and adds its arrays (see PatchBasisLevel); false, with
+/// the error reported, when the basis cannot be made.
+bool AddPatchBasis(vtkAlgorithm* self, int level, const radiosity::RadiositySolver& solver,
+  const radiosity::SceneMesh& mesh, const radiosity::SolverOptions& options, vtkPolyData* output,
+  vtkFieldData* fields, std::vector<radiosity::EffectDecision>& effects)
+{
+  radiosity::SolverStatistics stats;
+  const radiosity::PatchBasis basis =
+    radiosity::SolvePatchBasis(solver, mesh, options, static_cast<radiosity::BasisLevel>(level), stats);
+  if (!basis.Error.empty())
+  {
+    vtkErrorWithObjectMacro(self, << "Cannot solve the moving-light basis: " << basis.Error);
+    return false;
+  }
+  vtkNew<vtkFloatArray> values;
+  values->SetName("PatchBasis");
+  values->SetNumberOfComponents(3 * basis.Patches);
+  values->SetNumberOfTuples(basis.Receivers);
+  std::copy(basis.Values.begin(), basis.Values.end(), values->GetPointer(0));
+  const bool perElement = basis.Node.empty();
+  if (perElement)
+  {
+    output->GetCellData()->AddArray(values);
+  }
+  else
+  {
+    fields->AddArray(values);
+    vtkNew<vtkIntArray> nodes;
+    nodes->SetName("PatchBasisNodes");
+    nodes->SetNumberOfComponents(3);
+    nodes->SetNumberOfTuples(output->GetNumberOfCells());
+    std::copy(basis.Node.begin(), basis.Node.end(), nodes->GetPointer(0));
+    vtkNew<vtkFloatArray> weights;
+    weights->SetName("PatchBasisWeights");
+    weights->SetNumberOfComponents(3);
+    weights->SetNumberOfTuples(output->GetNumberOfCells());
+    std::copy(basis.Weight.begin(), basis.Weight.end(), weights->GetPointer(0));
+    output->GetCellData()->AddArray(nodes);
+    output->GetCellData()->AddArray(weights);
+  }
+  char reason[256];
+  std::snprintf(reason, sizeof(reason), "simulated: asked for (PatchBasis), %d patches x %d %s, %.1f MB, %d shots",
+    basis.Patches, basis.Receivers, perElement ? "elements" : "patch nodes", basis.Bytes() / 1048576.0, stats.Shots);
+  for (radiosity::EffectDecision& row : effects)
+  {
+    if (row.Effect == "MovingLightBasis")
+    {
+      row = { "MovingLightBasis", true, reason };
+    }
+  }
+  if (!stats.Converged)
+  {
+    vtkWarningWithObjectMacro(self, << "The patch basis stopped before converging (" << stats.Shots
+                                    << " shots); moving lights will miss some interreflection.");
+  }
+  return true;
 }
 
 void AddColumn(vtkTable* table, const std::string& name, const std::vector<double>& values,
@@ -269,33 +327,10 @@ int vtkLightTaggedRadiosity::RequestData(
   }
   std::vector<radiosity::EffectDecision> effects =
     radiosity::DescribeEffects(mesh, options, result, grouping, lights, mode);
-  if (this->PatchBasis && !stats.Aborted)
+  if (this->PatchBasis && !stats.Aborted && !AddPatchBasis(this, this->PatchBasisLevel, solver, mesh, options, output, fields, effects))
   {
-    radiosity::SolverStatistics basisStats;
-    const std::vector<float> basis = radiosity::SolvePatchBasis(solver, mesh, options, basisStats);
-    const int patches = static_cast<int>(solver.Geometry().patchElements.size());
-    vtkNew<vtkFloatArray> array;
-    array->SetName("PatchBasis");
-    array->SetNumberOfComponents(3 * patches);
-    array->SetNumberOfTuples(static_cast<vtkIdType>(cells));
-    std::copy(basis.begin(), basis.end(), array->GetPointer(0));
-    output->GetCellData()->AddArray(array);
-    char reason[256];
-    std::snprintf(reason, sizeof(reason),
-      "simulated: asked for (PatchBasis), %d patches x %zu elements, %.1f KB, %d shots", patches, cells,
-      basis.size() * sizeof(float) / 1024.0, basisStats.Shots);
-    for (radiosity::EffectDecision& row : effects)
-    {
-      if (row.Effect == "MovingLightBasis")
-      {
-        row = { "MovingLightBasis", true, reason };
-      }
-    }
-    if (!basisStats.Converged)
-    {
-      vtkWarningMacro(<< "The patch basis stopped before converging (" << basisStats.Shots
-                      << " shots); moving lights will miss some interreflection.");
-    }
+    output->Initialize();
+    return 0;
   }
   vtkNew<vtkStringArray> effectNames, decisions, reasons;
   effectNames->SetName("Effects");

@@ -194,14 +194,32 @@ public:
   ///@}
 
   ///@{
-  /// Also solve the moving-light basis (paper 2.4): every patch a unit emitter, output as
-  /// the cell array `PatchBasis` (3P float components per element: patch q's RGB at 3q).
-  /// It holds only reflected light: each patch's own unit emission is removed, so that
-  /// vtkRadiosityRelight adds it as the frame's direct light. Memory: 12 P bytes per
-  /// element (reported in EffectReasons). Off by default.
+  /// Also solve the moving-light basis (paper 2.4): every patch a unit emitter. It holds
+  /// only reflected light: each patch's own unit emission is removed, so that
+  /// vtkRadiosityRelight adds it as the frame's direct light. Off by default. Memory and
+  /// level are reported in EffectReasons (row MovingLightBasis).
   vtkSetMacro(PatchBasis, bool);
   vtkGetMacro(PatchBasis, bool);
   vtkBooleanMacro(PatchBasis, bool);
+  ///@}
+
+  enum BasisLevels
+  {
+    BASIS_AUTO = 0,
+    BASIS_ELEMENTS = 1,
+    BASIS_PATCHES = 2
+  };
+
+  ///@{
+  /// Where the basis lives. ELEMENTS: the cell array `PatchBasis`, 3P float components
+  /// per element (patch q's RGB at 3q), 12 P bytes per element. PATCHES: solved with each
+  /// patch as one receiver and stored per patch node (corners and centre): the field
+  /// array `PatchBasis` (3P components per node) and the cell arrays `PatchBasisNodes`
+  /// and `PatchBasisWeights` (3 each) that interpolate it to the elements; its memory does
+  /// not grow with the element count, and contact shadows in the interreflection blur to
+  /// patch size. AUTO (default): ELEMENTS up to 256 MB, otherwise PATCHES.
+  vtkSetClampMacro(PatchBasisLevel, int, BASIS_AUTO, BASIS_PATCHES);
+  vtkGetMacro(PatchBasisLevel, int);
   ///@}
 
   ///@{
@@ -245,6 +263,7 @@ private:
   int ConvergedLightsEffect = EFFECT_AUTO;
   bool ForceAllEffects = false;
   bool PatchBasis = false;
+  int PatchBasisLevel = BASIS_AUTO;
   int LastShots = 0;
   bool LastConverged = false;
   long long LastRays = 0;

@@ -2,6 +2,7 @@
 
 #include "LightSolutions.h"
 #include "MovingLights.h"
+#include "PatchBasis.h"
 #include "Relight.h"
 #include "vtkRadiosityAdapter.h"
 #include "WorkerPool.h"
@@ -13,6 +14,7 @@
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkIntArray.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
@@ -68,14 +70,62 @@ int vtkRadiosityRelight::FillInputPortInformation(int port, vtkInformation* info
   return 1;
 }
 
+namespace
+{
+/// The solver's basis, per element (cell array) or per patch node (field array plus the
+/// cell arrays that interpolate it), checked against the scene's patches.
+bool ReadBasis(vtkPolyData* scene, int patches, radiosity::BasisView& basis, std::string& error)
+{
+  const vtkIdType cells = scene->GetNumberOfCells();
+  auto* perElement = vtkFloatArray::SafeDownCast(scene->GetCellData()->GetArray("PatchBasis"));
+  auto* perNode = vtkFloatArray::SafeDownCast(scene->GetFieldData()->GetArray("PatchBasis"));
+  auto* nodes = vtkIntArray::SafeDownCast(scene->GetCellData()->GetArray("PatchBasisNodes"));
+  auto* weights = vtkFloatArray::SafeDownCast(scene->GetCellData()->GetArray("PatchBasisWeights"));
+  vtkFloatArray* values = perElement ? perElement : perNode;
+  if (!values || (!perElement && (!nodes || !weights)))
+  {
+    error = "'PatchBasis' must be a float array: per cell, or in the field data with the int cell array "
+            "'PatchBasisNodes' and the float cell array 'PatchBasisWeights'";
+    return false;
+  }
+  if (values->GetNumberOfComponents() != 3 * patches || (perElement && values->GetNumberOfTuples() != cells))
+  {
+    error = "'PatchBasis' has " + std::to_string(values->GetNumberOfTuples()) + " tuples of " +
+      std::to_string(values->GetNumberOfComponents()) + " components; the scene needs " +
+      (perElement ? std::to_string(cells) : std::string("one per node")) + " of " + std::to_string(3 * patches) +
+      " (" + std::to_string(patches) + " patches)";
+    return false;
+  }
+  basis = { patches, static_cast<int>(values->GetNumberOfTuples()), values->GetPointer(0) };
+  if (perElement)
+  {
+    return true;
+  }
+  if (nodes->GetNumberOfComponents() != 3 || weights->GetNumberOfComponents() != 3 ||
+    nodes->GetNumberOfTuples() != cells || weights->GetNumberOfTuples() != cells)
+  {
+    error = "'PatchBasisNodes' and 'PatchBasisWeights' need 3 components per cell";
+    return false;
+  }
+  const int* node = nodes->GetPointer(0);
+  if (std::any_of(node, node + 3 * cells, [&](int k) { return k < 0 || k >= basis.Receivers; }))
+  {
+    error = "'PatchBasisNodes' refers to a node outside 'PatchBasis' (" + std::to_string(basis.Receivers) + " nodes)";
+    return false;
+  }
+  basis.Node = node;
+  basis.Weight = weights->GetPointer(0);
+  return true;
+}
+}
+
 bool vtkRadiosityRelight::AddMovingLights(vtkPolyData* scene, vtkPolyData* lights, vtkPolyData* dynamic,
   vtkFloatArray* pointResult, vtkFloatArray* cellResult, std::string& error)
 {
   const auto start = std::chrono::steady_clock::now();
-  vtkDataArray* basis = scene->GetCellData()->GetArray("PatchBasis");
-  if (!vtkFloatArray::SafeDownCast(basis))
+  if (!scene->GetCellData()->GetArray("PatchBasis") && !scene->GetFieldData()->GetArray("PatchBasis"))
   {
-    error = "moving lights need the float cell array 'PatchBasis' (vtkLightTaggedRadiosity::PatchBasisOn())";
+    error = "moving lights need the solver's float array 'PatchBasis' (vtkLightTaggedRadiosity::PatchBasisOn())";
     return false;
   }
   if (!this->Moving)
@@ -115,12 +165,9 @@ bool vtkRadiosityRelight::AddMovingLights(vtkPolyData* scene, vtkPolyData* light
   }
   const radiosity::SceneGeometry& g = state.Shader->Geometry();
   const int patches = static_cast<int>(g.patchElements.size());
-  if (basis->GetNumberOfComponents() != 3 * patches || basis->GetNumberOfTuples() != scene->GetNumberOfCells())
+  radiosity::BasisView basis;
+  if (!ReadBasis(scene, patches, basis, error))
   {
-    error = "'PatchBasis' has " + std::to_string(basis->GetNumberOfTuples()) + " tuples of " +
-      std::to_string(basis->GetNumberOfComponents()) + " components; the scene needs " +
-      std::to_string(scene->GetNumberOfCells()) + " of " + std::to_string(3 * patches) + " (" +
-      std::to_string(patches) + " patches)";
     return false;
   }
   std::vector<radiosity::MovingLight> movers(lights->GetNumberOfPoints());
@@ -164,8 +211,7 @@ bool vtkRadiosityRelight::AddMovingLights(vtkPolyData* scene, vtkPolyData* light
   }
   std::vector<radiosity::Vec3> direct, cells;
   this->LastMovingRays = state.Shader->Direct(movers, Pool(), direct);
-  radiosity::AddBasisInterreflection(
-    g, direct, vtkFloatArray::SafeDownCast(basis)->GetPointer(0), patches, Pool(), cells);
+  radiosity::AddBasisInterreflection(g, direct, basis, Pool(), cells);
   if (cellResult->GetNumberOfTuples() == static_cast<vtkIdType>(cells.size()))
   {
     float* out = cellResult->GetPointer(0);

@@ -1,9 +1,8 @@
-// Moving lights through a patch basis (paper 2.4): direct light per frame, interreflection
-// from precomputed per-patch solutions.
+// Moving lights (paper 2.4): the direct part shot per frame; the patch basis
+// (PatchBasis.h) carries its interreflection.
 #ifndef RadiosityCore_MovingLights_h
 #define RadiosityCore_MovingLights_h
 
-#include "RadiositySolver.h"
 #include "Scene.h"
 #include "Visibility.h"
 #include "WorkerPool.h"
@@ -45,19 +44,6 @@ private:
   SceneGeometry Geometry_;
   std::unique_ptr<Visibility> Rays;
 };
-
-/// The basis convention: basis[e * 3P + 3q + c] is element e's radiosity in channel c when
-/// patch q emits unit exitance, WITHOUT q's own emission (only light reflected by the
-/// scene, including by q's elements). So the frame's result is
-///   B_e = D_e + sum_q E_q * basis_q(e),  E_q = area mean of D over patch q,
-/// where D (the direct part) already contains each patch's first reflection.
-void AddBasisInterreflection(const SceneGeometry& geometry, const std::vector<Vec3>& direct,
-  const float* basis, int patches, const WorkerPool& pool, std::vector<Vec3>& result);
-
-/// Solves the basis: every patch a unit emitter (all P solutions in one light-tagged
-/// pass), its own emission then removed. Returns n * 3P floats in the layout above.
-std::vector<float> SolvePatchBasis(
-  const RadiositySolver& solver, const SceneMesh& mesh, const SolverOptions& options, SolverStatistics& stats);
 
 } // namespace radiosity
 

@@ -3,6 +3,8 @@
 // writes a CSV; it never judges them.
 #include "FurnishedRoom.h"
 #include "LightSolutions.h"
+#include "MovingLights.h"
+#include "PatchBasis.h"
 #include "WorkerPool.h"
 
 #include <algorithm>
@@ -226,6 +228,44 @@ struct Csv
   }
 };
 
+/// The moving-light basis on this mesh (Auto level): its memory against what a basis per
+/// element would take, the time to solve it, and one frame (direct shadow rays plus basis).
+void MeasureBasis(const RadiositySolver& solver, const SceneMesh& mesh)
+{
+  const SceneGeometry& g = solver.Geometry();
+  const double n = static_cast<double>(g.normal.size()), P = static_cast<double>(g.patchElements.size());
+  ResetPeakMemory();
+  const double t0 = Now();
+  SolverStatistics stats;
+  const PatchBasis basis = SolvePatchBasis(solver, mesh, SolverOptions(), BasisLevel::Auto, stats);
+  const double solve = Now() - t0;
+  if (!basis.Error.empty())
+  {
+    std::printf("  moving-light basis: %s\n", basis.Error.c_str());
+    return;
+  }
+  const double peak = PeakMemoryMB();
+  MovingLightShader shader(mesh, nullptr);
+  std::vector<MovingLight> light(1);
+  light[0].Position = { 2.0, 2.0, 2.2 };
+  light[0].Intensity = 50;
+  WorkerPool pool(0);
+  std::vector<Vec3> direct, result;
+  const double t1 = Now();
+  const int frames = 5;
+  for (int f = 0; f < frames; ++f)
+  {
+    light[0].Position.x += 0.1;
+    shader.Direct(light, pool, direct);
+    AddBasisInterreflection(g, direct, View(basis), pool, result);
+  }
+  std::printf("  moving-light basis (%s): %d patches x %d receivers, %.1f MB (per element it would be %.0f MB), "
+              "solved in %.1f s (%d shots, %s), peak %.0f MB; %.1f ms per frame\n",
+    basis.Node.empty() ? "per element" : "per patch node", basis.Patches, basis.Receivers, basis.Bytes() / 1048576.0,
+    12 * n * P / 1048576.0, solve, stats.Shots, stats.Converged ? "converged" : "not converged", peak,
+    1e3 * (Now() - t1) / frames);
+}
+
 void Print(const char* label, const SceneMesh& mesh, int patches, const Run& run, double mean, double worst)
 {
   const SolverStatistics& s = run.Result.Statistics;
@@ -357,6 +397,10 @@ int main(int argc, char* argv[])
     }
     lastTagged = tagged.Seconds;
     lastCombined = combined.Seconds;
+    if (target >= 50000 && target <= 200000)
+    {
+      MeasureBasis(solver, mesh);
+    }
     if (target <= 20000)
     {
       options.Solver = SolverMethod::ProgressiveRefinement;
