@@ -1,12 +1,13 @@
 #include "PatchNodes.h"
 
 #include <cmath>
+#include <utility>
 
 namespace radiosity
 {
 
 
-void FanCoordinates(const Vec3& x, const Vec3& normal, const std::vector<Vec3>& loop, const Vec3& centre,
+size_t FanCoordinates(const Vec3& x, const Vec3& normal, const std::vector<Vec3>& loop, const Vec3& centre,
   double* weights)
 {
   const size_t n = loop.size();
@@ -42,7 +43,39 @@ void FanCoordinates(const Vec3& x, const Vec3& normal, const std::vector<Vec3>& 
   weights[best] = b;
   weights[(best + 1) % n] = c;
   weights[n] = a;
+  return best;
 }
+
+namespace
+{
+/// The fan triangles an element belongs to, with its share of each: the one holding its
+/// centroid, or both sides of a fan edge the centroid lies on (where the choice between
+/// them would follow round-off, and a rotated scene would be split differently).
+std::vector<std::pair<size_t, double>> FanShares(size_t fan, const double* w, size_t corners)
+{
+  const double tiny = 1e-9;
+  const bool onFirst = std::fabs(w[(fan + 1) % corners]) < tiny;  // on the edge to corner fan
+  const bool onSecond = std::fabs(w[fan]) < tiny;                  // on the edge to corner fan + 1
+  if (onFirst && onSecond)
+  {
+    std::vector<std::pair<size_t, double>> all;
+    for (size_t i = 0; i < corners; ++i)
+    {
+      all.push_back({ i, 1.0 / corners });
+    }
+    return all;
+  }
+  if (onFirst)
+  {
+    return { { fan, 0.5 }, { (fan + corners - 1) % corners, 0.5 } };
+  }
+  if (onSecond)
+  {
+    return { { fan, 0.5 }, { (fan + 1) % corners, 0.5 } };
+  }
+  return { { fan, 1.0 } };
+}
+} // namespace
 
 PatchNodes::PatchNodes(const SceneGeometry& g, const std::vector<std::vector<Vec3>>& loops, const std::vector<Vec3>& centres)
 {
@@ -81,6 +114,9 @@ void PatchNodes::AddNodes(int patch, const SceneGeometry& g, std::vector<Vec3> l
     FanCentroids.push_back((centre + a + b) * (1.0 / 3.0));
     FanAreas.push_back(0.5 * Dot(Cross(a - centre, b - centre), normal));
   }
+  // Fan triangles count only their open part (elements not sheltered), like the nodes.
+  const size_t firstFan = FanAreas.size() - corners.size();
+  std::vector<double> fanTotal(corners.size(), 0.0), fanOpen(corners.size(), 0.0);
   for (int e : elements)
   {
     WeightBegin[e] = WeightData.size();
@@ -88,16 +124,29 @@ void PatchNodes::AddNodes(int patch, const SceneGeometry& g, std::vector<Vec3> l
     double* w = WeightData.data() + WeightBegin[e];
     if (corners.empty())
     {
-      w[0] = 1;
+      w[0] = g.sheltered[e] ? 0 : 1;
     }
     else
     {
-      FanCoordinates(g.centroid[e], normal, corners, centre, w);
+      const size_t fan = FanCoordinates(g.centroid[e], normal, corners, centre, w);
+      for (const auto& [shared, part] : FanShares(fan, w, corners.size()))
+      {
+        fanTotal[shared] += part * g.area[e];
+        fanOpen[shared] += g.sheltered[e] ? 0.0 : part * g.area[e];
+      }
+      if (g.sheltered[e])
+      {
+        std::fill(w, w + loop.size(), 0.0); // what reaches the patch as a whole lands on its open part
+      }
     }
     for (size_t j = 0; j < loop.size(); ++j)
     {
       Area[first + j] += w[j] * g.area[e];
     }
+  }
+  for (size_t i = 0; i < corners.size(); ++i)
+  {
+    FanAreas[firstFan + i] *= fanTotal[i] > 0 ? fanOpen[i] / fanTotal[i] : 1.0;
   }
 }
 

@@ -26,6 +26,8 @@ public:
   int End(int patch) const { return NodeBegin[patch + 1]; }
   const Vec3& Node(int node) const { return Position[node]; }
   /// Sum over the patch's elements of weight x area: what a unit value at the node covers.
+  /// Sheltered elements (SceneGeometry::sheltered) have weight 0: what reaches a patch as a
+  /// whole lands on its open part.
   double CoveredArea(int node) const { return Area[node]; }
   /// The fan triangles (centre, corner i, corner i+1) of a patch with corners: node
   /// Begin(patch) + i is corner i, and fan triangle FanBegin(patch) + i follows it.
@@ -47,8 +49,8 @@ private:
 };
 
 /// Weights of x (corners..., centre) in the fan triangle of `loop` around `centre` that
-/// contains it (or comes nearest), in the plane with unit `normal`.
-void FanCoordinates(const Vec3& x, const Vec3& normal, const std::vector<Vec3>& loop, const Vec3& centre,
+/// contains it (or comes nearest), in the plane with unit `normal`; returns that triangle.
+size_t FanCoordinates(const Vec3& x, const Vec3& normal, const std::vector<Vec3>& loop, const Vec3& centre,
   double* weights);
 
 } // namespace radiosity

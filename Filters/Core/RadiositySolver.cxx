@@ -46,7 +46,7 @@ RadiositySolver::RadiositySolver(const SceneMesh& mesh)
   Error_ = Rays_->Error();
   if (Error_.empty())
   {
-    MarkEnclosed(*Rays_, Geometry_);
+    MarkEnclosed(*Rays_, Mesh, Geometry_);
   }
 }
 

@@ -163,6 +163,7 @@ SceneGeometry::SceneGeometry(const SceneMesh& mesh)
   }
   sceneDiagonal = Bounds(mesh.points).Diagonal();
   enclosed.assign(n, 0);
+  sheltered.assign(n, 0);
   patchOpenArea = patchArea;
 }
 

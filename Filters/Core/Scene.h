@@ -48,6 +48,11 @@ struct SceneGeometry
   /// the object and lose it (see MarkEnclosed). All open until marked.
   std::vector<char> enclosed;
   std::vector<double> patchOpenArea;
+  /// Elements most of whose hemisphere is blocked at once (the ceiling just above a lamp's
+  /// back, the floor at a cabinet's foot): dark for a reason that stops at their edge, so
+  /// vertex averages leave them out where open neighbours exist, and patch links do not land
+  /// on them. Enclosed implies sheltered.
+  std::vector<char> sheltered;
   double sceneDiagonal = 0;
 
   explicit SceneGeometry(const SceneMesh& mesh);

@@ -4,6 +4,7 @@
 #include "SampleStream.h"
 
 #include <algorithm>
+#include <iterator>
 #include <atomic>
 #include <cmath>
 #include <cstdint>
@@ -79,6 +80,16 @@ ShooterFormFactors::ShooterFormFactors(const SceneMesh& mesh, const SceneGeometr
       {
         PatchRadius[p] = std::max(PatchRadius[p], Norm(*corner - PatchCentre[p]));
       }
+    }
+  }
+  OpenElements.assign(patches, {});
+  for (size_t p = 0; p < patches; ++p)
+  {
+    const std::vector<int>& elements = geometry.patchElements[p];
+    if (std::any_of(elements.begin(), elements.end(), [&](int e) { return geometry.sheltered[e] != 0; }))
+    {
+      std::copy_if(elements.begin(), elements.end(), std::back_inserter(OpenElements[p]),
+        [&](int e) { return geometry.sheltered[e] == 0; });
     }
   }
   BuildOutlines();
@@ -430,6 +441,18 @@ Vec3 ShooterFormFactors::SamplePoint(int patch, int r, int samples, SampleStream
   return tri.A + (tri.B - tri.A) * a + (tri.C - tri.A) * b + tri.Normal * Epsilon;
 }
 
+Vec3 ShooterFormFactors::ReceiverPoint(int patch, int r, int samples, SampleStream& random) const
+{
+  const std::vector<int>& open = OpenElements[patch];
+  if (open.empty())
+  {
+    return SamplePoint(patch, r, samples, random);
+  }
+  const size_t pick = std::min(open.size() - 1, static_cast<size_t>((r + random.Next()) / samples * open.size()));
+  const int e = open[pick];
+  return Geometry.centroid[e] + Geometry.normal[e] * Epsilon;
+}
+
 int ShooterFormFactors::VisibleRays(int patch, int element, int samples) const
 {
   SampleStream random(static_cast<std::uint64_t>(patch), static_cast<std::uint64_t>(element));
@@ -448,7 +471,7 @@ int ShooterFormFactors::VisibleRaysBetweenPatches(int receiver, int shooter, int
   int visible = 0;
   for (int r = 0; r < samples; ++r)
   {
-    const Vec3 from = SamplePoint(receiver, r, samples, random);
+    const Vec3 from = ReceiverPoint(receiver, r, samples, random);
     visible += Rays.Occluded(from, SamplePoint(shooter, r, samples, random), 1e-6) ? 0 : 1;
   }
   return visible;

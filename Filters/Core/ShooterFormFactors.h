@@ -115,6 +115,9 @@ private:
   std::vector<std::vector<Vec3>> PatchOutline;
   std::vector<std::vector<Vec3>> PatchLoop;
   std::vector<char> ConvexLoop;
+  /// For a patch with sheltered elements, its other elements: where patch links land, so
+  /// where visibility to a linked shooter is sampled (empty for the other patches).
+  std::vector<std::vector<int>> OpenElements;
   /// Hemicube pixel directions in the local frame (x, y, z = normal) and delta factors.
   std::vector<Vec3> CubeDirections;
   std::vector<double> CubeWeights;
@@ -126,6 +129,8 @@ private:
   const SampleTriangle& PickTriangle(int patch, double u) const;
   /// The r-th of `samples` points stratified over the patch, just off its front.
   Vec3 SamplePoint(int patch, int r, int samples, SampleStream& random) const;
+  /// The same, as a receiver: over the patch's unsheltered elements (their centroids).
+  Vec3 ReceiverPoint(int patch, int r, int samples, SampleStream& random) const;
   int VisibleRays(int patch, int element, int samples) const;
 
   struct Box

@@ -164,40 +164,52 @@ bool Visibility::Intersect(const Vec3& origin, const Vec3& direction, Hit& hit) 
 
 namespace
 {
-bool ClosedOff(const Visibility& rays, const SceneGeometry& g, int e)
+/// How many of 17 hemisphere probes from the element's centroid are blocked at once (a back
+/// face, or a surface touching it); counting stops once 9 are open, since then the
+/// element is neither enclosed (all 17) nor sheltered (most).
+int BlockedProbes(const Visibility& rays, const SceneMesh& mesh, const SceneGeometry& g, double touching, int e)
 {
+  // The frame follows the element's first edge, not the world axes, so a rotated scene
+  // probes the same directions relative to its geometry and is marked the same.
   const Vec3& n = g.normal[e];
-  const Vec3 helper = std::fabs(n.x) < 0.6 ? Vec3{ 1, 0, 0 } : Vec3{ 0, 1, 0 };
-  const Vec3 t = Normalized(Cross(helper, n)), b = Cross(n, t);
-  const double touching = 1e-6 * g.sceneDiagonal;
+  const Vec3 edge = mesh.points[mesh.Polygon(e)[1]] - mesh.points[mesh.Polygon(e)[0]];
+  const Vec3 t = Normalized(edge - n * Dot(edge, n)), b = Cross(n, t);
   const Vec3 origin = g.centroid[e] + n * touching;
-  for (int r = 0; r < 17; ++r)
+  int blocked = 0;
+  for (int r = 0; r < 17 && r - blocked < 9; ++r)
   {
     const double polar = r == 0 ? 0.0 : (r <= 8 ? 0.785398 : 1.396263);
     const double azimuth = 0.785398 * (r % 8);
     const Vec3 direction = n * std::cos(polar) + (t * std::cos(azimuth) + b * std::sin(azimuth)) * std::sin(polar);
     Visibility::Hit hit;
-    if (!rays.Intersect(origin, direction, hit))
+    if (rays.Intersect(origin, direction, hit) &&
+      (Dot(g.normal[hit.polygon], direction) > 0 || hit.distance <= 2 * touching))
     {
-      return false;
-    }
-    const bool backFace = Dot(g.normal[hit.polygon], direction) > 0;
-    if (!backFace && hit.distance > 2 * touching)
-    {
-      return false;
+      ++blocked;
     }
   }
-  return true;
+  return blocked;
 }
 } // namespace
 
-void MarkEnclosed(const Visibility& rays, SceneGeometry& g)
+void MarkEnclosed(const Visibility& rays, const SceneMesh& mesh, SceneGeometry& g)
 {
+  // Touching, relative to the scene, and never finer than float coordinates can place a
+  // surface far from the origin (VTK points are floats: a leg standing on a floor 500 km
+  // away can float 3 cm above it).
+  double farthest = 0;
+  for (const Vec3& p : mesh.points)
+  {
+    farthest = std::max({ farthest, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z) });
+  }
+  const double touching = std::max(1e-6 * g.sceneDiagonal, 1e-6 * farthest);
   const WorkerPool pool(0);
   pool.For(static_cast<int>(g.normal.size()), 256, [&](int begin, int end) {
     for (int e = begin; e < end; ++e)
     {
-      g.enclosed[e] = ClosedOff(rays, g, e);
+      const int blocked = BlockedProbes(rays, mesh, g, touching, e);
+      g.enclosed[e] = blocked == 17;
+      g.sheltered[e] = blocked >= 9;
     }
   });
   // Summed, not subtracted: a wholly enclosed patch gets exactly 0.

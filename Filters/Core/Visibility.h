@@ -47,8 +47,9 @@ private:
 /// Marks the elements that every one of 17 rays over their hemisphere (the normal, and 8
 /// each at 45 and 80 degrees from it) finds closed off: each ray hits a back face (it
 /// started inside an object) or a surface touching the element. Such an element can
-/// neither receive nor send light; it leaves its patch's open area.
-void MarkEnclosed(const Visibility& rays, SceneGeometry& geometry);
+/// neither receive nor send light; it leaves its patch's open area. Elements where at least
+/// 9 of them are closed off are marked sheltered (SceneGeometry::sheltered).
+void MarkEnclosed(const Visibility& rays, const SceneMesh& mesh, SceneGeometry& geometry);
 
 } // namespace radiosity
 
