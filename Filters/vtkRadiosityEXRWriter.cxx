@@ -4,6 +4,7 @@
 #include "HdrImage.h"
 
 #include "vtkDataArray.h"
+#include "vtkErrorCode.h"
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkObjectFactory.h"
@@ -66,6 +67,11 @@ bool vtkRadiosityEXRWriter::Render(std::vector<float>& rgb)
   camera.ViewAngle = this->ViewAngle;
   camera.Width = this->Size[0];
   camera.Height = this->Size[1];
+  if (!(error = radiosity::ValidateCamera(camera)).empty())
+  {
+    vtkErrorMacro(<< "Cannot render: " << error << ".");
+    return false;
+  }
   rgb = radiosity::RenderRadiosity(scene, pointValues, camera);
   return true;
 }
@@ -92,17 +98,20 @@ void vtkRadiosityEXRWriter::WriteData()
   if (!this->FileName || !*this->FileName)
   {
     vtkErrorMacro(<< "Cannot write: no FileName set.");
+    this->SetErrorCode(vtkErrorCode::NoFileNameError);
     return;
   }
   std::vector<float> rgb;
   if (!this->Render(rgb))
   {
+    this->SetErrorCode(vtkErrorCode::UserError);
     return;
   }
   const std::string error = radiosity::WriteExr(this->FileName, this->Size[0], this->Size[1], rgb);
   if (!error.empty())
   {
     vtkErrorMacro(<< error);
+    this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
   }
 }
 

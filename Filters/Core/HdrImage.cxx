@@ -3,11 +3,48 @@
 #include <ImfArray.h>
 #include <ImfRgbaFile.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <exception>
+#include <sstream>
 
 namespace radiosity
 {
+
+std::string ValidateCamera(const PinholeCamera& c)
+{
+  std::ostringstream why;
+  auto finite = [](const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+  const Vec3 forward = c.FocalPoint - c.Position;
+  if (c.Width < 1 || c.Height < 1 || c.Width > MaximumImageSide || c.Height > MaximumImageSide)
+  {
+    why << "image size " << c.Width << " x " << c.Height << " is outside 1.." << MaximumImageSide << " per side";
+  }
+  else if (12.0 * c.Width * c.Height > MaximumImageBytes)
+  {
+    why << "image size " << c.Width << " x " << c.Height << " needs " << 12.0 * c.Width * c.Height / 1073741824.0
+        << " GB, more than " << MaximumImageBytes / 1073741824.0;
+  }
+  else if (!finite(c.Position) || !finite(c.FocalPoint) || !finite(c.ViewUp) || !std::isfinite(c.ViewAngle))
+  {
+    why << "camera position, focal point, view-up and view angle must be finite";
+  }
+  else if (!(Norm(forward) > 0))
+  {
+    why << "camera position equals its focal point, so there is no view direction";
+  }
+  else if (!(Norm(Cross(Normalized(forward), c.ViewUp)) > 1e-9 * Norm(c.ViewUp)))
+  {
+    why << "view-up is zero or along the view direction";
+  }
+  else if (!(c.ViewAngle > 0 && c.ViewAngle < 180))
+  {
+    why << "view angle " << c.ViewAngle << " is outside (0, 180) degrees";
+  }
+  return why.str();
+}
 
 std::vector<float> RenderRadiosity(
   const Visibility& scene, const std::vector<Vec3>& pointValues, const PinholeCamera& camera)
@@ -59,9 +96,29 @@ std::string WriteExr(const std::string& path, int width, int height, const std::
         pixels[y][x] = Imf::Rgba(p[0], p[1], p[2], 1.0f);
       }
     }
-    Imf::RgbaOutputFile file(path.c_str(), width, height, Imf::WRITE_RGB);
-    file.setFrameBuffer(&pixels[0][0], 1, width);
-    file.writePixels(height);
+    const std::string temporary = path + ".part";
+    bool created = false; // only a file we made is ours to remove
+    try
+    {
+      Imf::RgbaOutputFile file(temporary.c_str(), width, height, Imf::WRITE_RGB);
+      created = true;
+      file.setFrameBuffer(&pixels[0][0], 1, width);
+      file.writePixels(height);
+    } // closed (and flushed) before it replaces the old file
+    catch (...)
+    {
+      if (created)
+      {
+        std::remove(temporary.c_str());
+      }
+      throw;
+    }
+    if (std::rename(temporary.c_str(), path.c_str()) != 0)
+    {
+      const std::string reason = std::strerror(errno);
+      std::remove(temporary.c_str());
+      return "could not replace " + path + ": " + reason;
+    }
   }
   catch (const std::exception& e)
   {

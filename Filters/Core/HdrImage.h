@@ -20,6 +20,15 @@ struct PinholeCamera
   int Height = 480;
 };
 
+/// Largest image side accepted (pixels), and largest image (RGB floats, bytes).
+constexpr int MaximumImageSide = 32768;
+constexpr double MaximumImageBytes = 4.0 * 1024 * 1024 * 1024;
+
+/// Empty when the camera can make a picture; otherwise which setting is wrong and why:
+/// a size out of range, a non-finite vector, a position on its focal point, a view-up
+/// along the view direction, an angle outside (0, 180) degrees.
+std::string ValidateCamera(const PinholeCamera& camera);
+
 /// Linear RGB, row 0 at the top. Each pixel shows the radiosity interpolated from the
 /// point values of the triangle hit at its centre, so no tone mapping or clamping happens.
 /// Radiosity is exitance; for a diffuse surface the radiance seen is B / pi, and the image
@@ -28,6 +37,8 @@ std::vector<float> RenderRadiosity(
   const Visibility& scene, const std::vector<Vec3>& pointValues, const PinholeCamera& camera);
 
 /// Writes a half-float RGB OpenEXR file; returns an empty string or the library's error.
+/// The file is written beside `path` under a temporary name and renamed over it, so an
+/// interrupted write never leaves a truncated file where a good one was.
 std::string WriteExr(const std::string& path, int width, int height, const std::vector<float>& rgb);
 
 /// Reads an RGB OpenEXR file back (for tests and tools).

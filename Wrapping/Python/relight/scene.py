@@ -1,5 +1,6 @@
 """Helpers around the filters: reading scenes, running the pipeline, pictures."""
 
+import re
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (registers the OpenGL backend)
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkCommand
@@ -43,6 +44,13 @@ class ErrorCatcher:
     # VTK passes the message as call data only to callbacks that ask for a string.
     _error.CallDataType = "string0"
     _warning.CallDataType = "string0"
+
+    def first_error(self):
+        """The first error's own words, without VTK's file, line and object prefix."""
+        if not self.errors:
+            return "unknown error"
+        line = self.errors[0].strip().splitlines()[-1]
+        return re.sub(r"^\w+ \(0x[0-9a-fA-F]+\): ", "", line)
 
 
 def make_scene(polygons, reflectance, light_ids, light_names=None, emission=None):
@@ -246,8 +254,9 @@ def write_exr(data, path, camera, size=(640, 480), array="Radiosity"):
     """Writes a linear HDR view of the point array `array` as OpenEXR."""
     writer = exr_writer(data, camera, size, array)
     writer.SetFileName(str(path))
+    catcher = ErrorCatcher(writer)
     if not writer.Write():
-        raise OSError(f"could not write {path}")
+        raise OSError(f"could not write {path!r}: {catcher.first_error()}")
 
 
 def add_field_ints(data, name, values):
