@@ -3,6 +3,7 @@
 
 #include "Effects.h"
 #include "LightSolutions.h"
+#include "Memory.h"
 #include "PatchBasis.h"
 
 #include "vtkCellData.h"
@@ -185,195 +186,207 @@ void AddColumn(vtkTable* table, const std::string& name, const std::vector<doubl
 int vtkLightTaggedRadiosity::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  vtkTable* history = vtkTable::GetData(outputVector, 1);
+  return vtkRadiosityAdapter::Guarded(this, vtkPolyData::GetData(outputVector, 0), [&]() -> int {
+    vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+    vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+    vtkTable* history = vtkTable::GetData(outputVector, 1);
 
-  radiosity::SceneMesh mesh;
-  std::vector<radiosity::Vec3> emission;
-  std::string error;
-  int lights = 0;
-  if (!vtkRadiosityAdapter::CopyPolygons(input, mesh, error) ||
-    !vtkRadiosityAdapter::ReadSceneArrays(input, mesh, emission, error) ||
-    !(error = radiosity::ValidateScene(mesh, lights)).empty())
-  {
-    vtkErrorMacro(<< "Cannot solve: " << error << ".");
-    return 0;
-  }
-  auto effect = [this](int mode) {
-    return this->ForceAllEffects ? radiosity::EffectMode::On : static_cast<radiosity::EffectMode>(mode);
-  };
-  auto fieldInts = [input](const char* name) {
-    std::vector<int> values;
-    if (vtkDataArray* array = input->GetFieldData()->GetArray(name))
+    radiosity::SceneMesh mesh;
+    std::vector<radiosity::Vec3> emission;
+    std::string error;
+    int lights = 0;
+    if (!vtkRadiosityAdapter::CopyPolygons(input, mesh, error) ||
+      !vtkRadiosityAdapter::ReadSceneArrays(input, mesh, emission, error) ||
+      !(error = radiosity::ValidateScene(mesh, lights)).empty())
     {
-      for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
+      vtkErrorMacro(<< "Cannot solve: " << error << ".");
+      return 0;
+    }
+    auto effect = [this](int mode) {
+      return this->ForceAllEffects ? radiosity::EffectMode::On : static_cast<radiosity::EffectMode>(mode);
+    };
+    auto fieldInts = [input](const char* name) {
+      std::vector<int> values;
+      if (vtkDataArray* array = input->GetFieldData()->GetArray(name))
       {
-        values.push_back(static_cast<int>(array->GetComponent(i, 0)));
+        for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
+        {
+          values.push_back(static_cast<int>(array->GetComponent(i, 0)));
+        }
+      }
+      return values;
+    };
+    radiosity::LightGrouping grouping;
+    error = radiosity::GroupLights(lights, fieldInts("LightBanks"), fieldInts("StaticLights"),
+      effect(this->LightSeparationEffect), grouping);
+    if (!error.empty())
+    {
+      vtkErrorMacro(<< "Cannot solve: " << error << ".");
+      return 0;
+    }
+
+    const int solutions = this->SolutionMode == STANDARD_COMBINED ? 1 : grouping.Solutions;
+    if (!(error = radiosity::CheckMemory(radiosity::SolveMemory(mesh.NumberOfPolygons(),
+            static_cast<long long>(mesh.points.size()), solutions, this->SeparateDirect),
+            std::to_string(solutions) + " solutions on " + std::to_string(mesh.NumberOfPolygons()) + " elements"))
+           .empty())
+    {
+      vtkErrorMacro(<< "Cannot solve: " << error
+                    << "; group lights into LightBanks, solve StandardCombined, or use fewer elements.");
+      return 0;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    radiosity::RadiositySolver solver(mesh);
+    if (!solver.Error().empty())
+    {
+      vtkErrorMacro(<< "Cannot solve: " << solver.Error() << ".");
+      return 0;
+    }
+    radiosity::SolverOptions options;
+    options.Solver = static_cast<radiosity::SolverMethod>(this->SolverMethod);
+    options.MaximumShots = this->MaximumShots;
+    options.ConvergenceThreshold = this->ConvergenceThreshold;
+    options.TimeBudget = this->TimeBudget;
+    options.Method = static_cast<radiosity::FormFactorMethod>(this->FormFactorMethod);
+    options.Samples = this->FormFactorSamples;
+    options.Threads = this->NumberOfThreads;
+    options.AmbientTerm = this->AmbientTerm;
+    options.SeparateDirect = this->SeparateDirect;
+    options.Visibility = effect(this->VisibilityEffect);
+    options.Interreflection = effect(this->InterreflectionEffect);
+    options.Color = effect(this->ColorEffect);
+    options.ConvergedSolutions = effect(this->ConvergedLightsEffect);
+    options.Progress = [this](double f) {
+      this->UpdateProgress(f);
+      return !this->GetAbortExecute();
+    };
+    const auto mode = static_cast<radiosity::SolutionMode>(this->SolutionMode);
+    const radiosity::Solution result =
+      radiosity::SolveLights(solver, mesh, grouping, emission, mode, options);
+    const int columns = result.Solutions;
+    const std::vector<radiosity::Vec3> pointValues =
+      radiosity::AverageToPoints(mesh, solver.Geometry(), result.Radiosity, columns);
+    const std::vector<radiosity::Vec3> pointDirect = result.Direct.empty()
+      ? std::vector<radiosity::Vec3>()
+      : radiosity::AverageToPoints(mesh, solver.Geometry(), result.Direct, columns);
+    this->LastSolveSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const radiosity::SolverStatistics& stats = result.Statistics;
+    this->LastShots = stats.Shots;
+    this->LastConverged = stats.Converged;
+    this->LastRays = stats.RayCount;
+    if (stats.Aborted)
+    {
+      vtkWarningMacro(<< "Solve aborted after " << stats.Shots
+                      << " shots; the output holds the partial result.");
+    }
+    if (!stats.Converged && !stats.Aborted && !stats.OutOfTime)
+    {
+      vtkWarningMacro(<< "Stopped at MaximumShots (" << stats.ShotCap
+                      << ") before converging: remaining unshot energy "
+                      << (stats.RemainingHistory.empty() ? 1.0 : stats.RemainingHistory.back())
+                      << " of the initial, threshold " << this->ConvergenceThreshold
+                      << ". Raise MaximumShots (or use the ambient term) for a converged result.");
+    }
+    if (stats.OutOfTime)
+    {
+      vtkWarningMacro(<< "TimeBudget of " << this->TimeBudget << " s reached after " << stats.Shots
+                      << " shots; remaining unshot energy "
+                      << (stats.RemainingHistory.empty() ? 1.0 : stats.RemainingHistory.back())
+                      << " of the initial.");
+    }
+
+    output->ShallowCopy(input);
+    const bool combined = mode == radiosity::SolutionMode::StandardCombined;
+    const std::vector<std::string> names = combined
+      ? std::vector<std::string>{ "" }
+      : SolutionNames(vtkRadiosityAdapter::LightNames(input->GetFieldData(), lights), grouping);
+    const size_t cells = mesh.NumberOfPolygons();
+    const size_t points = mesh.points.size();
+    for (int m = 0; m < columns; ++m)
+    {
+      const std::string name = combined ? "Radiosity" : "Radiosity_" + names[m];
+      output->GetCellData()->AddArray(MakeArray(name, result.Radiosity, columns, m, cells));
+      output->GetPointData()->AddArray(MakeArray(name, pointValues, columns, m, points));
+      if (!result.Direct.empty())
+      {
+        const std::string direct = combined ? "Direct" : "Direct_" + names[m];
+        output->GetCellData()->AddArray(MakeArray(direct, result.Direct, columns, m, cells));
+        output->GetPointData()->AddArray(MakeArray(direct, pointDirect, columns, m, points));
       }
     }
-    return values;
-  };
-  radiosity::LightGrouping grouping;
-  error = radiosity::GroupLights(lights, fieldInts("LightBanks"), fieldInts("StaticLights"),
-    effect(this->LightSeparationEffect), grouping);
-  if (!error.empty())
-  {
-    vtkErrorMacro(<< "Cannot solve: " << error << ".");
-    return 0;
-  }
 
-  const auto start = std::chrono::steady_clock::now();
-  radiosity::RadiositySolver solver(mesh);
-  if (!solver.Error().empty())
-  {
-    vtkErrorMacro(<< "Cannot solve: " << solver.Error() << ".");
-    return 0;
-  }
-  radiosity::SolverOptions options;
-  options.Solver = static_cast<radiosity::SolverMethod>(this->SolverMethod);
-  options.MaximumShots = this->MaximumShots;
-  options.ConvergenceThreshold = this->ConvergenceThreshold;
-  options.TimeBudget = this->TimeBudget;
-  options.Method = static_cast<radiosity::FormFactorMethod>(this->FormFactorMethod);
-  options.Samples = this->FormFactorSamples;
-  options.Threads = this->NumberOfThreads;
-  options.AmbientTerm = this->AmbientTerm;
-  options.SeparateDirect = this->SeparateDirect;
-  options.Visibility = effect(this->VisibilityEffect);
-  options.Interreflection = effect(this->InterreflectionEffect);
-  options.Color = effect(this->ColorEffect);
-  options.ConvergedSolutions = effect(this->ConvergedLightsEffect);
-  options.Progress = [this](double f) {
-    this->UpdateProgress(f);
-    return !this->GetAbortExecute();
-  };
-  const auto mode = static_cast<radiosity::SolutionMode>(this->SolutionMode);
-  const radiosity::Solution result =
-    radiosity::SolveLights(solver, mesh, grouping, emission, mode, options);
-  const int columns = result.Solutions;
-  const std::vector<radiosity::Vec3> pointValues =
-    radiosity::AverageToPoints(mesh, solver.Geometry(), result.Radiosity, columns);
-  const std::vector<radiosity::Vec3> pointDirect = result.Direct.empty()
-    ? std::vector<radiosity::Vec3>()
-    : radiosity::AverageToPoints(mesh, solver.Geometry(), result.Direct, columns);
-  this->LastSolveSeconds =
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const radiosity::SolverStatistics& stats = result.Statistics;
-  this->LastShots = stats.Shots;
-  this->LastConverged = stats.Converged;
-  this->LastRays = stats.RayCount;
-  if (stats.Aborted)
-  {
-    vtkWarningMacro(<< "Solve aborted after " << stats.Shots
-                    << " shots; the output holds the partial result.");
-  }
-  if (!stats.Converged && !stats.Aborted && !stats.OutOfTime)
-  {
-    vtkWarningMacro(<< "Stopped at MaximumShots (" << stats.ShotCap
-                    << ") before converging: remaining unshot energy "
-                    << (stats.RemainingHistory.empty() ? 1.0 : stats.RemainingHistory.back())
-                    << " of the initial, threshold " << this->ConvergenceThreshold
-                    << ". Raise MaximumShots (or use the ambient term) for a converged result.");
-  }
-  if (stats.OutOfTime)
-  {
-    vtkWarningMacro(<< "TimeBudget of " << this->TimeBudget << " s reached after " << stats.Shots
-                    << " shots; remaining unshot energy "
-                    << (stats.RemainingHistory.empty() ? 1.0 : stats.RemainingHistory.back())
-                    << " of the initial.");
-  }
-
-  output->ShallowCopy(input);
-  const bool combined = mode == radiosity::SolutionMode::StandardCombined;
-  const std::vector<std::string> names = combined
-    ? std::vector<std::string>{ "" }
-    : SolutionNames(vtkRadiosityAdapter::LightNames(input->GetFieldData(), lights), grouping);
-  const size_t cells = mesh.NumberOfPolygons();
-  const size_t points = mesh.points.size();
-  for (int m = 0; m < columns; ++m)
-  {
-    const std::string name = combined ? "Radiosity" : "Radiosity_" + names[m];
-    output->GetCellData()->AddArray(MakeArray(name, result.Radiosity, columns, m, cells));
-    output->GetPointData()->AddArray(MakeArray(name, pointValues, columns, m, points));
-    if (!result.Direct.empty())
+    // Fresh field data: the input's arrays are shared, ours are added on top.
+    vtkNew<vtkFieldData> fields;
+    fields->ShallowCopy(input->GetFieldData());
+    if (!combined)
     {
-      const std::string direct = combined ? "Direct" : "Direct_" + names[m];
-      output->GetCellData()->AddArray(MakeArray(direct, result.Direct, columns, m, cells));
-      output->GetPointData()->AddArray(MakeArray(direct, pointDirect, columns, m, points));
+      vtkNew<vtkStringArray> lightNames;
+      lightNames->SetName("LightNames");
+      for (const std::string& name : names)
+      {
+        lightNames->InsertNextValue(name);
+      }
+      fields->AddArray(lightNames);
+      vtkNew<vtkDoubleArray> defaults;
+      defaults->SetName("LightDefaultColors");
+      defaults->SetNumberOfComponents(3);
+      for (const radiosity::Vec3& c : radiosity::DefaultColors(mesh, grouping, emission))
+      {
+        defaults->InsertNextTuple3(c.x, c.y, c.z);
+      }
+      fields->AddArray(defaults);
     }
-  }
-
-  // Fresh field data: the input's arrays are shared, ours are added on top.
-  vtkNew<vtkFieldData> fields;
-  fields->ShallowCopy(input->GetFieldData());
-  if (!combined)
-  {
-    vtkNew<vtkStringArray> lightNames;
-    lightNames->SetName("LightNames");
-    for (const std::string& name : names)
+    std::vector<radiosity::EffectDecision> effects =
+      radiosity::DescribeEffects(mesh, options, result, grouping, lights, mode);
+    if (this->PatchBasis && !stats.Aborted && !AddPatchBasis(this, this->PatchBasisLevel, solver, mesh, options, output, fields, effects))
     {
-      lightNames->InsertNextValue(name);
+      output->Initialize();
+      return 0;
     }
-    fields->AddArray(lightNames);
-    vtkNew<vtkDoubleArray> defaults;
-    defaults->SetName("LightDefaultColors");
-    defaults->SetNumberOfComponents(3);
-    for (const radiosity::Vec3& c : radiosity::DefaultColors(mesh, grouping, emission))
+    vtkNew<vtkStringArray> effectNames, decisions, reasons;
+    effectNames->SetName("Effects");
+    decisions->SetName("EffectDecisions");
+    reasons->SetName("EffectReasons");
+    for (const radiosity::EffectDecision& e : effects)
     {
-      defaults->InsertNextTuple3(c.x, c.y, c.z);
+      effectNames->InsertNextValue(e.Effect);
+      decisions->InsertNextValue(e.Simulated ? "simulated" : "skipped");
+      reasons->InsertNextValue(e.Reason);
     }
-    fields->AddArray(defaults);
-  }
-  std::vector<radiosity::EffectDecision> effects =
-    radiosity::DescribeEffects(mesh, options, result, grouping, lights, mode);
-  if (this->PatchBasis && !stats.Aborted && !AddPatchBasis(this, this->PatchBasisLevel, solver, mesh, options, output, fields, effects))
-  {
-    output->Initialize();
-    return 0;
-  }
-  vtkNew<vtkStringArray> effectNames, decisions, reasons;
-  effectNames->SetName("Effects");
-  decisions->SetName("EffectDecisions");
-  reasons->SetName("EffectReasons");
-  for (const radiosity::EffectDecision& e : effects)
-  {
-    effectNames->InsertNextValue(e.Effect);
-    decisions->InsertNextValue(e.Simulated ? "simulated" : "skipped");
-    reasons->InsertNextValue(e.Reason);
-  }
-  fields->AddArray(effectNames);
-  fields->AddArray(decisions);
-  fields->AddArray(reasons);
-  const std::string method = DescribeMethod(stats);
-  vtkNew<vtkStringArray> methodArray;
-  methodArray->SetName("SolverMethod");
-  methodArray->InsertNextValue(method);
-  fields->AddArray(methodArray);
-  vtkLogF(INFO, "LightTaggedRadiosity: %s; %d shots, %.3f s; %s", method.c_str(), stats.Shots,
-    this->LastSolveSeconds, radiosity::SummarizeEffects(effects).c_str());
+    fields->AddArray(effectNames);
+    fields->AddArray(decisions);
+    fields->AddArray(reasons);
+    const std::string method = DescribeMethod(stats);
+    vtkNew<vtkStringArray> methodArray;
+    methodArray->SetName("SolverMethod");
+    methodArray->InsertNextValue(method);
+    fields->AddArray(methodArray);
+    vtkLogF(INFO, "LightTaggedRadiosity: %s; %d shots, %.3f s; %s", method.c_str(), stats.Shots,
+      this->LastSolveSeconds, radiosity::SummarizeEffects(effects).c_str());
 
-  vtkNew<vtkDoubleArray> unshot;
-  unshot->SetName("UnshotHistory");
-  for (double r : stats.RemainingHistory)
-  {
-    unshot->InsertNextValue(r);
-  }
-  fields->AddArray(unshot);
-  output->SetFieldData(fields);
+    vtkNew<vtkDoubleArray> unshot;
+    unshot->SetName("UnshotHistory");
+    for (double r : stats.RemainingHistory)
+    {
+      unshot->InsertNextValue(r);
+    }
+    fields->AddArray(unshot);
+    output->SetFieldData(fields);
 
-  vtkNew<vtkIntArray> shotColumn;
-  shotColumn->SetName("Shot");
-  for (int s = 1; s <= stats.Shots; ++s)
-  {
-    shotColumn->InsertNextValue(s);
-  }
-  history->AddColumn(shotColumn);
-  AddColumn(history, "Time", stats.TimeHistory, 1, 0);
-  AddColumn(history, "Remaining", stats.RemainingHistory, 1, 0);
-  for (int m = 0; m < columns && !combined; ++m)
-  {
-    AddColumn(history, "Remaining_" + names[m], stats.RemainingPerSolution, columns, m);
-  }
-  return 1;
+    vtkNew<vtkIntArray> shotColumn;
+    shotColumn->SetName("Shot");
+    for (int s = 1; s <= stats.Shots; ++s)
+    {
+      shotColumn->InsertNextValue(s);
+    }
+    history->AddColumn(shotColumn);
+    AddColumn(history, "Time", stats.TimeHistory, 1, 0);
+    AddColumn(history, "Remaining", stats.RemainingHistory, 1, 0);
+    for (int m = 0; m < columns && !combined; ++m)
+    {
+      AddColumn(history, "Remaining_" + names[m], stats.RemainingPerSolution, columns, m);
+    }
+    return 1;
+  });
 }

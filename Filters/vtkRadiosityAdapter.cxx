@@ -1,5 +1,6 @@
 #include "vtkRadiosityAdapter.h"
 
+#include "vtkAlgorithm.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -9,6 +10,8 @@
 #include "vtkStringArray.h"
 
 #include <cmath>
+#include <exception>
+#include <new>
 #include <set>
 
 namespace vtkRadiosityAdapter
@@ -177,6 +180,30 @@ std::vector<std::string> LightNames(vtkFieldData* fields, int count)
     names[i] = name;
   }
   return names;
+}
+
+
+int Guarded(vtkAlgorithm* self, vtkPolyData* output, const std::function<int()>& work)
+{
+  std::string failure;
+  try
+  {
+    return work();
+  }
+  catch (const std::bad_alloc&)
+  {
+    failure = "out of memory; use a larger ElementSize (or PatchSize), fewer lights, or LightBanks";
+  }
+  catch (const std::exception& e)
+  {
+    failure = std::string("internal error: ") + e.what();
+  }
+  vtkErrorWithObjectMacro(self, << "Failed: " << failure << ".");
+  if (output)
+  {
+    output->Initialize();
+  }
+  return 0;
 }
 
 }

@@ -7,6 +7,9 @@
 #include <string>
 #include <vector>
 
+#include <functional>
+
+class vtkAlgorithm;
 class vtkDataArray;
 class vtkFieldData;
 class vtkPolyData;
@@ -29,6 +32,11 @@ bool ReadSceneArrays(vtkPolyData* input, radiosity::SceneMesh& mesh,
 
 /// `count` names from the field array LightNames, or Light<i> for missing ones.
 std::vector<std::string> LightNames(vtkFieldData* fields, int count);
+
+/// Runs a filter's work so that no C++ exception reaches Python or ParaView: running out
+/// of memory, or any other exception, becomes the filter's error and an empty `output`
+/// (may be null), and the work returns 0.
+int Guarded(vtkAlgorithm* self, vtkPolyData* output, const std::function<int()>& work);
 
 }
 

@@ -584,220 +584,222 @@ vtkSmartPointer<vtkUnsignedCharArray> Display(vtkFloatArray* linear, double expo
 int vtkRadiosityRelight::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  this->Resolved.clear();
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  double time = 0;
-  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
-  {
-    time = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
-  }
-  else if (outInfo->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()))
-  {
-    time = outInfo->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS())[0];
-  }
-  this->NamesString.clear();
-
-  // Lights: the solver's LightNames, else every Radiosity_* point or cell array.
-  std::vector<std::string> names;
-  const std::string prefix = "Radiosity_";
-  if (auto* given = vtkStringArray::SafeDownCast(input->GetFieldData()->GetAbstractArray("LightNames")))
-  {
-    for (vtkIdType i = 0; i < given->GetNumberOfValues(); ++i)
+  return vtkRadiosityAdapter::Guarded(this, vtkPolyData::GetData(outputVector), [&]() -> int {
+    vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+    vtkPolyData* output = vtkPolyData::GetData(outputVector);
+    this->Resolved.clear();
+    vtkInformation* outInfo = outputVector->GetInformationObject(0);
+    double time = 0;
+    if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
     {
-      names.push_back(given->GetValue(i));
+      time = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
     }
-  }
-  else
-  {
-    vtkFieldData* source = input->GetPointData()->GetNumberOfArrays() > 0
-      ? static_cast<vtkFieldData*>(input->GetPointData())
-      : static_cast<vtkFieldData*>(input->GetCellData());
-    for (int a = 0; a < source->GetNumberOfArrays(); ++a)
+    else if (outInfo->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()))
     {
-      const char* name = source->GetArrayName(a);
-      if (name && std::string(name).compare(0, prefix.size(), prefix) == 0)
+      time = outInfo->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS())[0];
+    }
+    this->NamesString.clear();
+
+    // Lights: the solver's LightNames, else every Radiosity_* point or cell array.
+    std::vector<std::string> names;
+    const std::string prefix = "Radiosity_";
+    if (auto* given = vtkStringArray::SafeDownCast(input->GetFieldData()->GetAbstractArray("LightNames")))
+    {
+      for (vtkIdType i = 0; i < given->GetNumberOfValues(); ++i)
       {
-        names.push_back(std::string(name).substr(prefix.size()));
+        names.push_back(given->GetValue(i));
       }
     }
-  }
-  bool perLight = false;
-  for (const std::string& name : names)
-  {
-    perLight = perLight || input->GetCellData()->GetAbstractArray((prefix + name).c_str()) ||
-      input->GetPointData()->GetAbstractArray((prefix + name).c_str());
-  }
-  const bool combinedOnly = !perLight && input->GetCellData()->GetAbstractArray("Radiosity");
-  if (combinedOnly)
-  {
-    vtkErrorMacro(<< "Cannot relight: the input holds one combined solution (SolutionMode "
-                     "StandardCombined); relighting needs the per-light solutions of LightTagged "
-                     "or StandardSeparate.");
-    return 0;
-  }
-  if (names.empty())
-  {
-    vtkErrorMacro(<< "Cannot relight: the input has no lights (no field array 'LightNames' and "
-                     "no 'Radiosity_<name>' arrays); run vtkLightTaggedRadiosity first.");
-    return 0;
-  }
-
-  // Default colours: the solver's, else the mean Emission of each light's cells.
-  const int k = static_cast<int>(names.size());
-  vtkDataArray* defaults = input->GetFieldData()->GetArray("LightDefaultColors");
-  if (defaults && (defaults->GetNumberOfComponents() != 3 || defaults->GetNumberOfTuples() != k))
-  {
-    defaults = nullptr;
-  }
-  std::vector<double> emissionSum(3 * k, 0.0);
-  std::vector<int> emissionCount(k, 0);
-  vtkDataArray* lightId = input->GetCellData()->GetArray("LightId");
-  vtkDataArray* emission = input->GetCellData()->GetArray("Emission");
-  if (!defaults && lightId && emission && emission->GetNumberOfComponents() == 3)
-  {
-    for (vtkIdType c = 0; c < input->GetNumberOfCells(); ++c)
+    else
     {
-      const double id = lightId->GetComponent(c, 0);
-      if (id >= 0 && id < k)
+      vtkFieldData* source = input->GetPointData()->GetNumberOfArrays() > 0
+        ? static_cast<vtkFieldData*>(input->GetPointData())
+        : static_cast<vtkFieldData*>(input->GetCellData());
+      for (int a = 0; a < source->GetNumberOfArrays(); ++a)
       {
-        const int l = static_cast<int>(id);
-        for (int j = 0; j < 3; ++j)
+        const char* name = source->GetArrayName(a);
+        if (name && std::string(name).compare(0, prefix.size(), prefix) == 0)
         {
-          emissionSum[3 * l + j] += emission->GetComponent(c, j);
+          names.push_back(std::string(name).substr(prefix.size()));
         }
-        ++emissionCount[l];
       }
     }
-  }
-  std::vector<double> weights(3 * k, 0.0);
-  std::vector<std::string> pointArrays, cellArrays;
-  for (int i = 0; i < k; ++i)
-  {
-    Light light;
-    light.Name = names[i];
-    Setting& s = light.Effective;
-    if (defaults)
-    {
-      defaults->GetTuple(i, s.Color);
-    }
-    else if (emissionCount[i] > 0 &&
-      emissionSum[3 * i] + emissionSum[3 * i + 1] + emissionSum[3 * i + 2] > 0)
-    {
-      for (int j = 0; j < 3; ++j)
-      {
-        s.Color[j] = emissionSum[3 * i + j] / emissionCount[i];
-      }
-    }
-    auto byName = this->ByName.find(light.Name);
-    if (byName != this->ByName.end())
-    {
-      byName->second.ApplyTo(s);
-    }
-    Setting scheduled;
-    if (this->ScheduledSetting(light.Name, i, time, scheduled))
-    {
-      scheduled.ApplyTo(s);
-    }
-    auto byIndex = this->ByIndex.find(i);
-    if (byIndex != this->ByIndex.end())
-    {
-      byIndex->second.ApplyTo(s);
-    }
-    for (int j = 0; j < 3; ++j)
-    {
-      weights[3 * i + j] = s.Enabled ? s.Color[j] * s.Intensity : 0.0;
-    }
-    this->NamesString += (i ? ";" : "") + light.Name;
-    this->Resolved.push_back(light);
-    pointArrays.push_back(prefix + light.Name);
-    cellArrays.push_back(prefix + light.Name);
-  }
-  for (const auto& entry : this->ByName)
-  {
-    if (std::find(names.begin(), names.end(), entry.first) == names.end())
-    {
-      vtkWarningMacro(<< "No light is named '" << entry.first << "'; lights are: " << this->NamesString);
-    }
-  }
-  for (const auto& entry : this->ByIndex)
-  {
-    if (entry.first < 0 || entry.first >= k)
-    {
-      vtkWarningMacro(<< "Light index " << entry.first << " is out of range; there are " << k << " lights.");
-    }
-  }
-
-  // B = s B_total + (1 - s) B_direct: the same combination over 2k arrays.
-  if (this->IndirectScale != 1.0)
-  {
-    const std::string direct = "Direct_" + names[0];
-    if (!input->GetPointData()->GetAbstractArray(direct.c_str()) &&
-      !input->GetCellData()->GetAbstractArray(direct.c_str()))
-    {
-      vtkErrorMacro(<< "Cannot relight: IndirectScale needs the arrays '" << direct
-                    << "' etc.; turn on SeparateDirect in the solver.");
-      return 0;
-    }
-    const size_t total = weights.size();
-    for (size_t w = 0; w < total; ++w)
-    {
-      weights.push_back(weights[w] * (1.0 - this->IndirectScale));
-      weights[w] *= this->IndirectScale;
-    }
+    bool perLight = false;
     for (const std::string& name : names)
     {
-      pointArrays.push_back("Direct_" + name);
-      cellArrays.push_back("Direct_" + name);
+      perLight = perLight || input->GetCellData()->GetAbstractArray((prefix + name).c_str()) ||
+        input->GetPointData()->GetAbstractArray((prefix + name).c_str());
     }
-  }
+    const bool combinedOnly = !perLight && input->GetCellData()->GetAbstractArray("Radiosity");
+    if (combinedOnly)
+    {
+      vtkErrorMacro(<< "Cannot relight: the input holds one combined solution (SolutionMode "
+                       "StandardCombined); relighting needs the per-light solutions of LightTagged "
+                       "or StandardSeparate.");
+      return 0;
+    }
+    if (names.empty())
+    {
+      vtkErrorMacro(<< "Cannot relight: the input has no lights (no field array 'LightNames' and "
+                       "no 'Radiosity_<name>' arrays); run vtkLightTaggedRadiosity first.");
+      return 0;
+    }
 
-  const bool hasPoints = input->GetPointData()->GetAbstractArray(pointArrays[0].c_str()) != nullptr;
-  const bool hasCells = input->GetCellData()->GetAbstractArray(cellArrays[0].c_str()) != nullptr;
-  if (!hasPoints && !hasCells)
-  {
-    vtkErrorMacro(<< "Cannot relight: no point or cell array '" << pointArrays[0] << "'.");
-    return 0;
-  }
-  vtkNew<vtkFloatArray> pointResult, cellResult;
-  std::string error;
-  if ((hasPoints && !Combine(input->GetPointData(), pointArrays, weights,
-                      input->GetNumberOfPoints(), pointResult, error)) ||
-    (hasCells && !Combine(input->GetCellData(), cellArrays, weights, input->GetNumberOfCells(),
-                   cellResult, error)))
-  {
-    vtkErrorMacro(<< "Cannot relight: " << error << ".");
-    return 0;
-  }
+    // Default colours: the solver's, else the mean Emission of each light's cells.
+    const int k = static_cast<int>(names.size());
+    vtkDataArray* defaults = input->GetFieldData()->GetArray("LightDefaultColors");
+    if (defaults && (defaults->GetNumberOfComponents() != 3 || defaults->GetNumberOfTuples() != k))
+    {
+      defaults = nullptr;
+    }
+    std::vector<double> emissionSum(3 * k, 0.0);
+    std::vector<int> emissionCount(k, 0);
+    vtkDataArray* lightId = input->GetCellData()->GetArray("LightId");
+    vtkDataArray* emission = input->GetCellData()->GetArray("Emission");
+    if (!defaults && lightId && emission && emission->GetNumberOfComponents() == 3)
+    {
+      for (vtkIdType c = 0; c < input->GetNumberOfCells(); ++c)
+      {
+        const double id = lightId->GetComponent(c, 0);
+        if (id >= 0 && id < k)
+        {
+          const int l = static_cast<int>(id);
+          for (int j = 0; j < 3; ++j)
+          {
+            emissionSum[3 * l + j] += emission->GetComponent(c, j);
+          }
+          ++emissionCount[l];
+        }
+      }
+    }
+    std::vector<double> weights(3 * k, 0.0);
+    std::vector<std::string> pointArrays, cellArrays;
+    for (int i = 0; i < k; ++i)
+    {
+      Light light;
+      light.Name = names[i];
+      Setting& s = light.Effective;
+      if (defaults)
+      {
+        defaults->GetTuple(i, s.Color);
+      }
+      else if (emissionCount[i] > 0 &&
+        emissionSum[3 * i] + emissionSum[3 * i + 1] + emissionSum[3 * i + 2] > 0)
+      {
+        for (int j = 0; j < 3; ++j)
+        {
+          s.Color[j] = emissionSum[3 * i + j] / emissionCount[i];
+        }
+      }
+      auto byName = this->ByName.find(light.Name);
+      if (byName != this->ByName.end())
+      {
+        byName->second.ApplyTo(s);
+      }
+      Setting scheduled;
+      if (this->ScheduledSetting(light.Name, i, time, scheduled))
+      {
+        scheduled.ApplyTo(s);
+      }
+      auto byIndex = this->ByIndex.find(i);
+      if (byIndex != this->ByIndex.end())
+      {
+        byIndex->second.ApplyTo(s);
+      }
+      for (int j = 0; j < 3; ++j)
+      {
+        weights[3 * i + j] = s.Enabled ? s.Color[j] * s.Intensity : 0.0;
+      }
+      this->NamesString += (i ? ";" : "") + light.Name;
+      this->Resolved.push_back(light);
+      pointArrays.push_back(prefix + light.Name);
+      cellArrays.push_back(prefix + light.Name);
+    }
+    for (const auto& entry : this->ByName)
+    {
+      if (std::find(names.begin(), names.end(), entry.first) == names.end())
+      {
+        vtkWarningMacro(<< "No light is named '" << entry.first << "'; lights are: " << this->NamesString);
+      }
+    }
+    for (const auto& entry : this->ByIndex)
+    {
+      if (entry.first < 0 || entry.first >= k)
+      {
+        vtkWarningMacro(<< "Light index " << entry.first << " is out of range; there are " << k << " lights.");
+      }
+    }
 
-  this->LastMovingRays = 0;
-  this->LastMovingSeconds = 0;
-  vtkPolyData* movers = this->GetNumberOfInputConnections(1) ? vtkPolyData::GetData(inputVector[1], 0) : nullptr;
-  vtkPolyData* dynamic = this->GetNumberOfInputConnections(2) ? vtkPolyData::GetData(inputVector[2], 0) : nullptr;
-  if (movers && movers->GetNumberOfPoints() > 0 &&
-    !this->AddMovingLights(input, movers, dynamic, pointResult, cellResult, error))
-  {
-    vtkErrorMacro(<< "Cannot relight: " << error << ".");
-    return 0;
-  }
+    // B = s B_total + (1 - s) B_direct: the same combination over 2k arrays.
+    if (this->IndirectScale != 1.0)
+    {
+      const std::string direct = "Direct_" + names[0];
+      if (!input->GetPointData()->GetAbstractArray(direct.c_str()) &&
+        !input->GetCellData()->GetAbstractArray(direct.c_str()))
+      {
+        vtkErrorMacro(<< "Cannot relight: IndirectScale needs the arrays '" << direct
+                      << "' etc.; turn on SeparateDirect in the solver.");
+        return 0;
+      }
+      const size_t total = weights.size();
+      for (size_t w = 0; w < total; ++w)
+      {
+        weights.push_back(weights[w] * (1.0 - this->IndirectScale));
+        weights[w] *= this->IndirectScale;
+      }
+      for (const std::string& name : names)
+      {
+        pointArrays.push_back("Direct_" + name);
+        cellArrays.push_back("Direct_" + name);
+      }
+    }
 
-  output->ShallowCopy(input);
-  if (!this->Schedule.empty() || !this->FileSchedule.empty())
-  {
-    output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);
-  }
-  if (hasPoints)
-  {
-    pointResult->SetName("Radiosity");
-    output->GetPointData()->AddArray(pointResult);
-    output->GetPointData()->SetScalars(Display(pointResult, this->Exposure));
-  }
-  if (hasCells)
-  {
-    cellResult->SetName("Radiosity");
-    output->GetCellData()->AddArray(cellResult);
-    output->GetCellData()->SetScalars(Display(cellResult, this->Exposure));
-  }
-  return 1;
+    const bool hasPoints = input->GetPointData()->GetAbstractArray(pointArrays[0].c_str()) != nullptr;
+    const bool hasCells = input->GetCellData()->GetAbstractArray(cellArrays[0].c_str()) != nullptr;
+    if (!hasPoints && !hasCells)
+    {
+      vtkErrorMacro(<< "Cannot relight: no point or cell array '" << pointArrays[0] << "'.");
+      return 0;
+    }
+    vtkNew<vtkFloatArray> pointResult, cellResult;
+    std::string error;
+    if ((hasPoints && !Combine(input->GetPointData(), pointArrays, weights,
+                        input->GetNumberOfPoints(), pointResult, error)) ||
+      (hasCells && !Combine(input->GetCellData(), cellArrays, weights, input->GetNumberOfCells(),
+                     cellResult, error)))
+    {
+      vtkErrorMacro(<< "Cannot relight: " << error << ".");
+      return 0;
+    }
+
+    this->LastMovingRays = 0;
+    this->LastMovingSeconds = 0;
+    vtkPolyData* movers = this->GetNumberOfInputConnections(1) ? vtkPolyData::GetData(inputVector[1], 0) : nullptr;
+    vtkPolyData* dynamic = this->GetNumberOfInputConnections(2) ? vtkPolyData::GetData(inputVector[2], 0) : nullptr;
+    if (movers && movers->GetNumberOfPoints() > 0 &&
+      !this->AddMovingLights(input, movers, dynamic, pointResult, cellResult, error))
+    {
+      vtkErrorMacro(<< "Cannot relight: " << error << ".");
+      return 0;
+    }
+
+    output->ShallowCopy(input);
+    if (!this->Schedule.empty() || !this->FileSchedule.empty())
+    {
+      output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);
+    }
+    if (hasPoints)
+    {
+      pointResult->SetName("Radiosity");
+      output->GetPointData()->AddArray(pointResult);
+      output->GetPointData()->SetScalars(Display(pointResult, this->Exposure));
+    }
+    if (hasCells)
+    {
+      cellResult->SetName("Radiosity");
+      output->GetCellData()->AddArray(cellResult);
+      output->GetCellData()->SetScalars(Display(cellResult, this->Exposure));
+    }
+    return 1;
+  });
 }

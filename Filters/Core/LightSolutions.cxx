@@ -215,6 +215,12 @@ Solution SolveLights(const RadiositySolver& solver, const SceneMesh& mesh,
   return out;
 }
 
+double SolveMemory(long long elements, long long points, int solutions, bool separateDirect)
+{
+  const double perSolution = elements * (3 * sizeof(Vec3) + 3 * sizeof(float)) + points * (sizeof(Vec3) + 3 * sizeof(float));
+  return perSolution * solutions * (separateDirect ? 2 : 1);
+}
+
 std::vector<Vec3> AverageToPoints(
   const SceneMesh& mesh, const SceneGeometry& geometry, const std::vector<Vec3>& cells, int columns)
 {

@@ -41,6 +41,12 @@ Solution SolveLights(const RadiositySolver& solver, const SceneMesh& mesh,
   const LightGrouping& grouping, const std::vector<Vec3>& emissionColor, SolutionMode mode,
   const SolverOptions& options);
 
+/// Bytes a solve of `solutions` solutions holds at its peak, with the filter's outputs:
+/// per element and solution its emission, the solver's radiosity, the solution and the
+/// float output; per point and solution the averaged value and its float output (twice
+/// with the direct part kept).
+double SolveMemory(long long elements, long long points, int solutions, bool separateDirect);
+
 /// Vertex values as the area-weighted mean of the cells around each vertex. Vertices are
 /// shared only within a flat surface of one material, so nothing bleeds across corners.
 std::vector<Vec3> AverageToPoints(

@@ -1,5 +1,6 @@
 #include "PatchBasis.h"
 
+#include "Memory.h"
 #include "PatchNodes.h"
 
 #include <algorithm>
@@ -396,6 +397,13 @@ PatchBasis SolvePatchBasis(const RadiositySolver& solver, const SceneMesh& mesh,
   level = ResolveBasisLevel(level, n, P);
   // Nodes: a patch has its corners and centre; 8 per patch bounds the estimate.
   const double bytes = 12.0 * P * (level == BasisLevel::Elements ? n : std::min(n, 8 * P));
+  const std::string tooBig = CheckMemory(2 * bytes, "the patch basis"); // its solve holds about as much again
+  if (!tooBig.empty())
+  {
+    PatchBasis none;
+    none.Error = tooBig + "; use a larger patch size";
+    return none;
+  }
   if (bytes > MaximumBasisBytes)
   {
     PatchBasis none;

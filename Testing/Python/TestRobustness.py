@@ -53,4 +53,23 @@ relight.write_exr(solved, good, CAMERA, size=(32, 24), array=ARRAY)
 check(sorted(os.listdir(folder)) == ["view.exr"] and os.path.getsize(good) != size,
       f"a good write replaces the file and leaves nothing else: {sorted(os.listdir(folder))}")
 
+# --- too many lights for the machine: a clear error with the size, not std::bad_alloc --------
+polygons, reflectance, ids = [[(0, 0, 0), (20, 0, 0), (20, 20, 0), (0, 20, 0)]], [(0.5,) * 3], [-1]
+for i in range(200):
+    for j in range(200):  # 40,000 lamps of 5 cm
+        x, y = 0.1 * i, 0.1 * j
+        polygons.append([(x, y, 1), (x, y + 0.05, 1), (x + 0.05, y + 0.05, 1), (x + 0.05, y, 1)])
+        reflectance.append((0.5,) * 3)
+        ids.append(len(ids) - 1)
+mesher = relight.vtkRadiosityMesher()
+mesher.SetInputData(relight.make_scene(polygons, reflectance, ids))
+mesher.SetPatchSize(1.0)
+mesher.SetElementSize(0.25)
+solver = relight.vtkLightTaggedRadiosity()
+solver.SetInputConnection(mesher.GetOutputPort())
+catcher = relight.ErrorCatcher(solver)
+solver.Update()
+check("40000 solutions on 46400 elements needs about" in catcher.first_error() and
+      solver.GetOutput().GetNumberOfCells() == 0, f"40,000 lights: {catcher.first_error()}")
+
 finish("TestRobustness")
