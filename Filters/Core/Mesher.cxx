@@ -5,6 +5,7 @@
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iomanip>
 #include <map>
@@ -190,6 +191,37 @@ double ElementSizeForBudget(const std::vector<Vec3>& points, const std::vector<i
 
 namespace
 {
+/// The entry whose key is `key` or one step off in any of its four quantised parts: a
+/// value on a rounding boundary lands on either side depending on round-off, so one plane
+/// could otherwise become two surfaces, and which planes split would follow placement.
+template <typename Map, typename Key>
+typename Map::iterator FindNearbyKey(Map& map, const Key& key)
+{
+  for (int a = -1; a <= 1; ++a)
+  {
+    for (int b = -1; b <= 1; ++b)
+    {
+      for (int c = -1; c <= 1; ++c)
+      {
+        for (int d = -1; d <= 1; ++d)
+        {
+          Key probe = key;
+          std::get<1>(probe) += a;
+          std::get<2>(probe) += b;
+          std::get<3>(probe) += c;
+          std::get<4>(probe) += d;
+          const auto found = map.find(probe);
+          if (found != map.end())
+          {
+            return found;
+          }
+        }
+      }
+    }
+  }
+  return map.end();
+}
+
 /// MeshPolygons on polygons that came from input cells `source[i]` (for messages, keys and
 /// the output's sourcePolygon).
 std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& offsets,
@@ -206,6 +238,7 @@ std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& of
   }
   const int count = static_cast<int>(offsets.size()) - 1;
   const double diagonal = Bounds(points).Diagonal();
+  const Vec3 sceneCentre = Bounds(points).Centre();
   const double quantum = std::max(diagonal, 1e-300) * 1e-9;
 
   // Surfaces: same caller key and same plane, up to a tolerance relative to the scene.
@@ -219,6 +252,7 @@ std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& of
   // same PatchSize cell of the plane: a model's many small parts would otherwise each be a
   // shooter (a house's 16k polygons made 59k patches).
   std::map<std::tuple<int, long long, long long>, int> sharedPatch;
+  std::vector<std::array<Vec3, 3>> gridFrames; // per surface: origin and in-plane axes
 
   double estimate = 0;
   for (int i = 0; i < count; ++i)
@@ -271,11 +305,6 @@ std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& of
       return err.str();
     }
     const Vec3 newell = NewellVector(loop.data(), static_cast<int>(loop.size()));
-    if (!(0.5 * Norm(newell) > 1e-14 * diagonal * diagonal))
-    {
-      err << "cell " << source[i] << " has zero area; remove degenerate cells";
-      return err.str();
-    }
     const Vec3 normal = Normalized(newell);
     Piece piece;
     if (loop.size() == 4 && IsConvex(loop.data(), 4))
@@ -291,27 +320,37 @@ std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& of
       }
     }
 
-    const double planeOffset = Dot(normal, PolygonCentroid(loop.data(), static_cast<int>(loop.size())));
+    // From the scene's centre: measured from the origin, a plane far away carries its
+    // normal's round-off times its distance, and one floor would split into many.
+    const double planeOffset = Dot(normal, PolygonCentroid(loop.data(), static_cast<int>(loop.size())) - sceneCentre);
     auto q = [&](double v, double scale) { return static_cast<long long>(std::llround(v / scale)); };
     const SurfaceId id{ surfaceKey[source[i]], q(normal.x, 1e-6), q(normal.y, 1e-6), q(normal.z, 1e-6),
       q(planeOffset, quantum * 1000) };
-    auto found = surfaceIndex.emplace(id, static_cast<int>(surfaces.size()));
+    auto found = std::make_pair(FindNearbyKey(surfaceIndex, id), false);
+    if (found.first == surfaceIndex.end())
+    {
+      found = surfaceIndex.emplace(id, static_cast<int>(surfaces.size()));
+    }
     const int s = found.first->second;
     if (found.second)
     {
       surfaces.emplace_back();
       welds.emplace_back();
       faceInfo.emplace_back();
+      // The sharing grid hangs from the surface's first polygon, not from world axes, so a
+      // moved or rotated scene groups its small polygons the same way.
+      const Vec3 edge = loop[1] - loop[0];
+      const Vec3 t = Normalized(edge - normal * Dot(edge, normal));
+      gridFrames.push_back({ loop[0], t, Cross(normal, t) });
     }
     SurfaceMesh& mesh = surfaces[s];
     int patchBase = out.patches, ownPatches = piece.patchCount;
     if (options.SharePatches && piece.patchCount == 1)
     {
-      const Vec3 helper = std::fabs(normal.x) < 0.6 ? Vec3{ 1, 0, 0 } : Vec3{ 0, 1, 0 };
-      const Vec3 t = Normalized(Cross(helper, normal)), b = Cross(normal, t);
-      const Vec3 c = PolygonCentroid(loop.data(), static_cast<int>(loop.size()));
-      const auto cell = std::make_tuple(s, static_cast<long long>(std::floor(Dot(c, t) / options.PatchSize)),
-        static_cast<long long>(std::floor(Dot(c, b) / options.PatchSize)));
+      const std::array<Vec3, 3>& frame = gridFrames[s];
+      const Vec3 c = PolygonCentroid(loop.data(), static_cast<int>(loop.size())) - frame[0];
+      const auto cell = std::make_tuple(s, static_cast<long long>(std::floor(Dot(c, frame[1]) / options.PatchSize)),
+        static_cast<long long>(std::floor(Dot(c, frame[2]) / options.PatchSize)));
       const auto shared = sharedPatch.emplace(cell, out.patches);
       patchBase = shared.first->second;
       ownPatches = shared.second ? 1 : 0;
@@ -411,6 +450,21 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
   const std::vector<int>& connectivity, const std::vector<int>& surfaceKey,
   const MesherOptions& options, MeshedPolygons& out)
 {
+  // Checked first: a NaN point would otherwise make the element count NaN, and a figure 8
+  // would be blamed on one of its elements by the solver.
+  for (size_t i = 0; i + 1 < offsets.size(); ++i)
+  {
+    std::vector<Vec3> loop;
+    for (int k = offsets[i]; k < offsets[i + 1]; ++k)
+    {
+      loop.push_back(points[connectivity[k]]);
+    }
+    const std::string problem = loop.size() < 3 ? std::string() : PolygonProblem(loop.data(), static_cast<int>(loop.size()));
+    if (!problem.empty())
+    {
+      return "cell " + std::to_string(i) + " " + problem;
+    }
+  }
   PairedPolygons polygons;
   if (options.MergeTriangles)
   {

@@ -1,6 +1,8 @@
 #include "Polygon.h"
 
 #include <algorithm>
+#include <cmath>
+#include <sstream>
 
 namespace radiosity
 {
@@ -24,11 +26,18 @@ Bounds::Bounds(const std::vector<Vec3>& points)
 
 Vec3 NewellVector(const Vec3* loop, int count)
 {
+  // Relative to the first point: the sums of far-away coordinates would cancel the
+  // digits that a small polygon's normal lives in.
   Vec3 n;
+  if (count <= 0)
+  {
+    return n;
+  }
+  const Vec3 o = loop[0];
   for (int i = 0; i < count; ++i)
   {
-    const Vec3& a = loop[i];
-    const Vec3& b = loop[(i + 1) % count];
+    const Vec3 a = loop[i] - o;
+    const Vec3 b = loop[(i + 1) % count] - o;
     n.x += (a.y - b.y) * (a.z + b.z);
     n.y += (a.z - b.z) * (a.x + b.x);
     n.z += (a.x - b.x) * (a.y + b.y);
@@ -46,12 +55,12 @@ Vec3 PolygonCentroid(const Vec3* loop, int count)
   for (int i = 1; i + 1 < count; ++i)
   {
     const double a = 0.5 * Dot(normal, Cross(loop[i] - loop[0], loop[i + 1] - loop[0]));
-    weighted += (loop[0] + loop[i] + loop[i + 1]) * (a / 3.0);
+    weighted += (loop[i] - loop[0] + loop[i + 1] - loop[0]) * (a / 3.0);
     total += a;
   }
   if (total > 0)
   {
-    return weighted * (1.0 / total);
+    return loop[0] + weighted * (1.0 / total);
   }
   Vec3 mean;
   for (int i = 0; i < count; ++i)
@@ -200,4 +209,86 @@ std::vector<Vec3> ChainLoop(const std::vector<Vec3>& segments)
   return loop;
 }
 
-} // namespace radiosity
+namespace
+{
+/// True when segments ab and cd (2-D) cross or touch beyond `tolerance`.
+bool SegmentsMeet(const double* a, const double* b, const double* c, const double* d, double tolerance)
+{
+  auto side = [](const double* p, const double* q, const double* r) {
+    return (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
+  };
+  const double d1 = side(c, d, a), d2 = side(c, d, b), d3 = side(a, b, c), d4 = side(a, b, d);
+  return ((d1 > tolerance && d2 < -tolerance) || (d1 < -tolerance && d2 > tolerance)) &&
+    ((d3 > tolerance && d4 < -tolerance) || (d3 < -tolerance && d4 > tolerance));
+}
+
+bool CrossesItself(const Vec3* loop, int count, const Vec3& newell, double extent)
+{
+  // Project on the plane of the largest normal component; crossings survive projection.
+  const int drop = std::fabs(newell.x) >= std::fabs(newell.y) && std::fabs(newell.x) >= std::fabs(newell.z)
+    ? 0
+    : (std::fabs(newell.y) >= std::fabs(newell.z) ? 1 : 2);
+  std::vector<double> flat(2 * count);
+  for (int i = 0; i < count; ++i)
+  {
+    flat[2 * i] = loop[i][drop == 0 ? 1 : 0];
+    flat[2 * i + 1] = loop[i][drop == 2 ? 1 : 2];
+  }
+  const double tolerance = 1e-9 * extent * extent;
+  for (int i = 0; i < count; ++i)
+  {
+    for (int j = i + 2; j < count; ++j)
+    {
+      if (i == 0 && j == count - 1)
+      {
+        continue; // neighbours through the closing edge
+      }
+      if (SegmentsMeet(&flat[2 * i], &flat[2 * ((i + 1) % count)], &flat[2 * j], &flat[2 * ((j + 1) % count)], tolerance))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+} // namespace
+
+std::string PolygonProblem(const Vec3* loop, int count)
+{
+  double extent = 0;
+  for (int i = 0; i < count; ++i)
+  {
+    const Vec3& p = loop[i];
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+    {
+      return "has a non-finite point (NaN or infinite)";
+    }
+    if (std::max({ std::fabs(p.x), std::fabs(p.y), std::fabs(p.z) }) > MaximumCoordinate)
+    {
+      std::ostringstream why;
+      why << "has a coordinate of magnitude " << std::max({ std::fabs(p.x), std::fabs(p.y), std::fabs(p.z) })
+          << ", beyond " << MaximumCoordinate << " that single-precision ray tracing can hold; rescale the scene";
+      return why.str();
+    }
+    extent = std::max(extent, Norm(loop[(i + 1) % count] - p));
+  }
+  // The plane from the widest corner triangle: Newell's vector vanishes for a symmetric
+  // figure 8, whose lobes cancel.
+  Vec3 plane;
+  for (int i = 1; i + 1 < count; ++i)
+  {
+    const Vec3 c = Cross(loop[i] - loop[0], loop[i + 1] - loop[0]);
+    plane = Norm(c) > Norm(plane) ? c : plane;
+  }
+  if (count > 3 && Norm(plane) > 1e-12 * extent * extent && CrossesItself(loop, count, plane, extent))
+  {
+    return "crosses itself (edges intersect, like a figure 8); split it into simple polygons";
+  }
+  if (!(0.5 * Norm(NewellVector(loop, count)) > 1e-12 * extent * extent))
+  {
+    return "has zero area (its points are collinear or coincident); remove degenerate cells";
+  }
+  return std::string();
+}
+
+}

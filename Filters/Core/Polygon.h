@@ -4,6 +4,7 @@
 
 #include "Vec3.h"
 
+#include <string>
 #include <vector>
 
 namespace radiosity
@@ -46,6 +47,16 @@ std::vector<Vec3> ChainLoop(const std::vector<Vec3>& segments);
 
 /// True if every corner turns the same way about the polygon's normal.
 bool IsConvex(const Vec3* loop, int count);
+
+/// Largest coordinate magnitude the ray tracer's single precision handles with room to
+/// spare (squares of lengths stay finite in float).
+constexpr double MaximumCoordinate = 1e18;
+
+/// Empty when the loop can be a radiosity polygon; otherwise what is wrong with it, to be
+/// prefixed with the cell's name: a non-finite or too large coordinate, zero area (its
+/// points collinear or coincident, judged against its own size, not the scene's), or
+/// edges that cross (a figure 8).
+std::string PolygonProblem(const Vec3* loop, int count);
 
 } // namespace radiosity
 

@@ -58,9 +58,6 @@ std::string ValidateScene(const SceneMesh& mesh, int& numberOfLights)
       return err.str();
     }
   }
-  const double diag = Bounds(mesh.points).Diagonal();
-  // Relative to the scene size, so the check is scale invariant.
-  const double minArea = 1e-14 * diag * diag;
   int maxLight = -1;
   for (int i = 0; i < n; ++i)
   {
@@ -80,10 +77,10 @@ std::string ValidateScene(const SceneMesh& mesh, int& numberOfLights)
       }
     }
     const std::vector<Vec3> loop = Loop(mesh, i);
-    const double area = PolygonArea(loop.data(), size);
-    if (!(area > minArea))
+    const std::string problem = PolygonProblem(loop.data(), size);
+    if (!problem.empty())
     {
-      err << "cell " << i << " has zero area (" << area << "); remove degenerate cells";
+      err << "cell " << i << " " << problem;
       return err.str();
     }
     const Vec3& r = mesh.reflectance[i];

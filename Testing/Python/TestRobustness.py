@@ -72,4 +72,74 @@ solver.Update()
 check("40000 solutions on 46400 elements needs about" in catcher.first_error() and
       solver.GetOutput().GetNumberOfCells() == 0, f"40,000 lights: {catcher.first_error()}")
 
+# --- the mesher refuses what the solver would, naming the input cell ---------------------------
+LAMP = [(1, 1, 2), (1, 2, 2), (2, 2, 2), (2, 1, 2)]
+
+
+def mesh(polygons, patch=1.0, element=0.25):
+    """Mesher output and its first error ('' when none)."""
+    mesher = relight.vtkRadiosityMesher()
+    mesher.SetInputData(relight.make_scene(polygons, [(0.5,) * 3] * len(polygons), [0] + [-1] * (len(polygons) - 1)))
+    mesher.SetPatchSize(patch)
+    mesher.SetElementSize(element)
+    catcher = relight.ErrorCatcher(mesher)
+    mesher.Update()
+    return mesher.GetOutput(), catcher.first_error() if catcher.errors else ""
+
+
+nan = float("nan")
+for label, polygon, fragment in [
+        ("a NaN point", [(0, 0, 0), (4, 0, 0), (4, 4, nan), (0, 4, 0)], "cell 1 has a non-finite point"),
+        ("a figure 8", [(0, 0, 0), (4, 4, 0), (4, 0, 0), (0, 4, 0)], "cell 1 crosses itself"),
+        ("collinear points", [(0, 0, 0), (1, 0, 0), (2, 0, 0), (3, 0, 0)], "cell 1 has zero area")]:
+    out, error = mesh([LAMP, polygon])
+    check(fragment in error and out.GetNumberOfCells() == 0, f"mesher, {label}: {error}")
+out, error = mesh([[(x * 1e78, y * 1e78, z * 1e78) for x, y, z in p] for p in (LAMP, [(0, 0, 0), (4, 0, 0), (4, 4, 0), (0, 4, 0)])],
+                  1e78, 2.5e77)
+check("beyond 1e+18" in error and out.GetNumberOfCells() == 0, f"mesher, coordinates of 1e78: {error}")
+# Zero area is judged against the polygon's own size, not the scene's.
+for label, small, floor, patch in [
+        ("a 1 mm lamp on a 20 km floor", [(1e4, 1e4, 2), (1e4, 1e4 + 1e-3, 2), (1e4 + 1e-3, 1e4 + 1e-3, 2), (1e4 + 1e-3, 1e4, 2)],
+         [(0, 0, 0), (2e4, 0, 0), (2e4, 2e4, 0), (0, 2e4, 0)], 5e3),
+        ("a 1 m lamp in a 1e7 m scene", [(5, 5, 1), (5, 6, 1), (6, 6, 1), (6, 5, 1)],
+         [(0, 0, 0), (1e7, 0, 0), (1e7, 1e7, 0), (0, 1e7, 0)], 2.5e6)]:
+    out, error = mesh([small, floor], patch, patch / 2)
+    solver = relight.vtkLightTaggedRadiosity()
+    solver.SetInputData(out)
+    catcher = relight.ErrorCatcher(solver)
+    solver.Update()
+    check(not error and not catcher.errors and solver.GetOutput().GetNumberOfCells() == out.GetNumberOfCells() > 0,
+          f"{label}: meshed and solved ({error or (catcher.first_error() if catcher.errors else 'no error')})")
+
+# --- the mesh does not depend on scale or placement -------------------------------------------
+# Tiles smaller than a patch share patches by cells of their surface; the cells hang from
+# the surface itself, so rotating and moving the scene changes nothing (26 -> 32 patches
+# before, with cells on world axes).
+from vtkmodules.vtkCommonTransforms import vtkTransform  # noqa: E402
+from vtkmodules.vtkFiltersGeneral import vtkTransformPolyDataFilter  # noqa: E402
+
+tiles = [LAMP] + [[(0.13 * i, 0.13 * j, 0), (0.13 * i + 0.12, 0.13 * j, 0), (0.13 * i + 0.12, 0.13 * j + 0.12, 0),
+                   (0.13 * i, 0.13 * j + 0.12, 0)] for i in range(33) for j in range(33)]
+tiled = relight.make_scene(tiles, [(0.5,) * 3] * len(tiles), [0] + [-1] * (len(tiles) - 1))
+counts = []
+for scale, rotate, shift in [(1, False, (0, 0, 0)), (1e-3, False, (0, 0, 0)), (1e3, False, (0, 0, 0)),
+                             (1, True, (500, -20, 7)), (0.01, True, (-3.3, 1e4, 0.7))]:
+    transform = vtkTransform()
+    if rotate:
+        transform.RotateWXYZ(37.0, 0.3, 1.0, 0.2)
+    transform.Translate(*shift)
+    transform.Scale(scale, scale, scale)
+    moved = vtkTransformPolyDataFilter()
+    moved.SetTransform(transform)
+    moved.SetOutputPointsPrecision(2)  # double: the 1e4 shift of a 4 cm scene needs it
+    moved.SetInputData(tiled)
+    mesher = relight.vtkRadiosityMesher()
+    mesher.SetInputConnection(moved.GetOutputPort())
+    mesher.SetPatchSize(1.0 * scale)
+    mesher.SetElementSize(0.25 * scale)
+    mesher.Update()
+    out = mesher.GetOutput()
+    counts.append((out.GetNumberOfCells(), len(np.unique(relight.cell_array(out, "PatchId")))))
+check(len(set(counts)) == 1, f"scaled by 1e-3 and 1e3, rotated and moved: the same (elements, patches) {counts}")
+
 finish("TestRobustness")
