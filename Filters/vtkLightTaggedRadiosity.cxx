@@ -331,9 +331,16 @@ int vtkLightTaggedRadiosity::RequestData(
       vtkNew<vtkDoubleArray> defaults;
       defaults->SetName("LightDefaultColors");
       defaults->SetNumberOfComponents(3);
-      for (const radiosity::Vec3& c : radiosity::DefaultColors(mesh, grouping, emission))
+      const std::vector<radiosity::Vec3> colors = radiosity::DefaultColors(mesh, grouping, emission);
+      for (size_t m = 0; m < colors.size(); ++m)
       {
+        const radiosity::Vec3& c = colors[m];
         defaults->InsertNextTuple3(c.x, c.y, c.z);
+        if (c.x + c.y + c.z <= 0)
+        {
+          vtkWarningMacro(<< "Light '" << names[m] << "' has zero Emission: it stays dark when relit until it "
+                          << "is given a colour (its unit solution is there).");
+        }
       }
       fields->AddArray(defaults);
     }

@@ -72,6 +72,25 @@ int vtkRadiosityRelight::FillInputPortInformation(int port, vtkInformation* info
 
 namespace
 {
+/// Why a light's effective setting cannot be used (empty when it can): light is never
+/// negative, and NaN would silently blank the picture.
+std::string InvalidSetting(double intensity, const double* color)
+{
+  std::ostringstream why;
+  if (!(std::isfinite(intensity) && intensity >= 0))
+  {
+    why << "has intensity " << intensity << "; it must be a finite number >= 0";
+  }
+  for (int j = 0; j < 3 && why.str().empty(); ++j)
+  {
+    if (!(std::isfinite(color[j]) && color[j] >= 0))
+    {
+      why << "has colour component " << j << " = " << color[j] << "; colours must be finite and >= 0";
+    }
+  }
+  return why.str();
+}
+
 /// The solver's basis, per element (cell array) or per patch node (field array plus the
 /// cell arrays that interpolate it), checked against the scene's patches.
 bool ReadBasis(vtkPolyData* scene, int patches, radiosity::BasisView& basis, std::string& error)
@@ -203,9 +222,18 @@ bool vtkRadiosityRelight::AddMovingLights(vtkPolyData* scene, vtkPolyData* light
       light.Normal = { v[0], v[1], v[2] };
     }
     const radiosity::Vec3& p = light.Position;
-    if (!std::isfinite(p.x + p.y + p.z + light.Intensity + light.Color.x + light.Color.y + light.Color.z))
+    const double colour[3] = { light.Color.x, light.Color.y, light.Color.z };
+    const std::string invalid = InvalidSetting(light.Intensity, colour);
+    if (!std::isfinite(p.x + p.y + p.z) || !invalid.empty())
     {
-      error = "moving light " + std::to_string(i) + " has a non-finite position, colour or intensity";
+      error = "moving light " + std::to_string(i) + (invalid.empty() ? " has a non-finite position" : " " + invalid);
+      return false;
+    }
+    const radiosity::Vec3& n = light.Normal;
+    if (normal && normal->GetNumberOfComponents() == 3 && !(std::isfinite(n.x + n.y + n.z) && radiosity::Norm(n) > 0))
+    {
+      error = "moving light " + std::to_string(i) + " has a zero or non-finite Normal; leave the array out for "
+                                                    "an isotropic light";
       return false;
     }
   }
@@ -568,6 +596,20 @@ bool Combine(vtkFieldData* data, const std::vector<std::string>& arrays,
   return true;
 }
 
+/// The first item of a 3-component result that is not finite, or -1.
+vtkIdType FirstNonFinite(vtkFloatArray* values)
+{
+  const float* v = values->GetPointer(0);
+  for (vtkIdType i = 0; i < 3 * values->GetNumberOfTuples(); ++i)
+  {
+    if (!std::isfinite(v[i]))
+    {
+      return i / 3;
+    }
+  }
+  return -1;
+}
+
 vtkSmartPointer<vtkUnsignedCharArray> Display(vtkFloatArray* linear, double exposure)
 {
   auto colors = vtkSmartPointer<vtkUnsignedCharArray>::New();
@@ -683,8 +725,7 @@ int vtkRadiosityRelight::RequestData(
       {
         defaults->GetTuple(i, s.Color);
       }
-      else if (emissionCount[i] > 0 &&
-        emissionSum[3 * i] + emissionSum[3 * i + 1] + emissionSum[3 * i + 2] > 0)
+      else if (emissionCount[i] > 0) // zero Emission stays zero, as in a combined solve
       {
         for (int j = 0; j < 3; ++j)
         {
@@ -705,6 +746,12 @@ int vtkRadiosityRelight::RequestData(
       if (byIndex != this->ByIndex.end())
       {
         byIndex->second.ApplyTo(s);
+      }
+      const std::string invalid = s.Enabled ? InvalidSetting(s.Intensity, s.Color) : std::string();
+      if (!invalid.empty())
+      {
+        vtkErrorMacro(<< "Cannot relight: light '" << light.Name << "' " << invalid << ".");
+        return 0;
       }
       for (int j = 0; j < 3; ++j)
       {
@@ -780,6 +827,22 @@ int vtkRadiosityRelight::RequestData(
       !this->AddMovingLights(input, movers, dynamic, pointResult, cellResult, error))
     {
       vtkErrorMacro(<< "Cannot relight: " << error << ".");
+      return 0;
+    }
+    for (vtkFloatArray* result : { hasPoints ? pointResult.Get() : nullptr, hasCells ? cellResult.Get() : nullptr })
+    {
+      const vtkIdType bad = result ? FirstNonFinite(result) : -1;
+      if (bad >= 0)
+      {
+        vtkErrorMacro(<< "Cannot relight: the result is not finite at item " << bad
+                      << " (moving lights included); a light is too strong for float.");
+        return 0;
+      }
+    }
+    if (!std::isfinite(this->Exposure) || !std::isfinite(this->IndirectScale))
+    {
+      vtkErrorMacro(<< "Cannot relight: Exposure (" << this->Exposure << ") and IndirectScale ("
+                    << this->IndirectScale << ") must be finite.");
       return 0;
     }
 

@@ -89,7 +89,7 @@ std::vector<Vec3> DefaultColors(
   std::vector<Vec3> colors(L, Vec3{ 1, 1, 1 });
   for (int s = 0; s < L; ++s)
   {
-    if (members[s] == 1 && cells[s] > 0 && (sum[s].x + sum[s].y + sum[s].z) > 0)
+    if (members[s] == 1 && cells[s] > 0) // zero Emission stays zero, as in a combined solve
     {
       colors[s] = sum[s] * (1.0 / cells[s]);
     }

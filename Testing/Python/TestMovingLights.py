@@ -10,8 +10,8 @@ import math
 import time
 
 import numpy as np
-from vtkmodules.vtkCommonCore import vtkFloatArray, vtkLogger, vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+from vtkmodules.vtkCommonCore import vtkLogger
+from vtkmodules.vtkCommonDataModel import vtkPolyData
 
 import relight
 from testlib import check, finish
@@ -19,29 +19,7 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 from relight import ErrorCatcher, cell_areas, cell_array, cell_centroids, make_scene
 
 vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_WARNING)
-def lights(positions, intensity=1.0, color=(1, 1, 1), normal=None):
-    data = vtkPolyData()
-    points = vtkPoints()
-    verts = vtkCellArray()
-    arrays = {"Color": 3, "Intensity": 1}
-    if normal is not None:
-        arrays["Normal"] = 3
-    made = {}
-    for name, components in arrays.items():
-        made[name] = vtkFloatArray()
-        made[name].SetName(name)
-        made[name].SetNumberOfComponents(components)
-    for p in positions:
-        verts.InsertNextCell(1, [points.InsertNextPoint(*p)])
-        made["Color"].InsertNextTuple3(*color)
-        made["Intensity"].InsertNextValue(intensity)
-        if normal is not None:
-            made["Normal"].InsertNextTuple3(*normal)
-    data.SetPoints(points)
-    data.SetVerts(verts)
-    for array in made.values():
-        data.GetPointData().AddArray(array)
-    return data
+lights = relight.point_lights
 
 
 def solve(scene, patch, element, basis=True, threshold=1e-4):

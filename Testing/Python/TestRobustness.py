@@ -142,4 +142,57 @@ for scale, rotate, shift in [(1, False, (0, 0, 0)), (1e-3, False, (0, 0, 0)), (1
     counts.append((out.GetNumberOfCells(), len(np.unique(relight.cell_array(out, "PatchId")))))
 check(len(set(counts)) == 1, f"scaled by 1e-3 and 1e3, rotated and moved: the same (elements, patches) {counts}")
 
+# --- relight settings: refused with the light's name, never NaN or negative light -------------
+def relit(data, setup, movers=None):
+    relighter = relight.vtkRadiosityRelight()
+    relighter.SetInputData(0, data)
+    if movers is not None:
+        relighter.SetInputData(1, movers)
+    setup(relighter)
+    catcher = relight.ErrorCatcher(relighter)
+    relighter.Update()
+    return relighter.GetOutput(), catcher.first_error() if catcher.errors else ""
+
+
+name = light_names(solved)[0]
+for label, setup, fragment in [
+        ("negative intensity", lambda r: r.SetLightIntensity(0, -2.0), f"light '{name}' has intensity -2"),
+        ("NaN intensity", lambda r: r.SetLightIntensity(0, float("nan")), "has intensity nan"),
+        ("negative colour", lambda r: r.SetLightColor(0, 1.0, -0.5, 1.0), "colour component 1 = -0.5"),
+        ("NaN exposure", lambda r: r.SetExposure(float("nan")), "Exposure (nan)")]:
+    out, error = relit(solved, setup)
+    check(fragment in error and out.GetNumberOfCells() == 0, f"relight, {label}: {error}")
+out, error = relit(solved, lambda r: (r.SetLightIntensity(0, float("nan")), r.SetLightEnabled(0, False)))
+check(not error and out.GetNumberOfCells() > 0, f"a disabled light's settings do not matter ({error or 'no error'})")
+
+# Moving lights: a bad Normal, negative or overflowing intensity.
+point_lights = relight.point_lights
+with_basis = relight.solve(read_polydata(os.path.join(DATA, "paper_1lights.vtp")), 1.0, 0.5,
+                           ConvergenceThreshold=1e-2, PatchBasis=True).GetOutput()
+for label, lights, fragment in [
+        ("zero Normal", point_lights([(2, 1.5, 2)], normal=(0, 0, 0)), "zero or non-finite Normal"),
+        ("NaN Normal", point_lights([(2, 1.5, 2)], normal=(nan, 0, 1)), "zero or non-finite Normal"),
+        ("negative intensity", point_lights([(2, 1.5, 2)], intensity=-1.0), "has intensity -1"),
+        ("intensity 3e38", point_lights([(2, 1.5, 2)], intensity=3e38), "not finite")]:
+    out, error = relit(with_basis, lambda r: r.SetLightEnabled(0, False), lights)
+    check(fragment in error and out.GetNumberOfCells() == 0, f"moving light, {label}: {error}")
+
+# A light with zero Emission stays dark when relit, as in a combined solve (it gave 1.005).
+dark = relight.make_scene([[(0, 0, 1), (0, 1, 1), (1, 1, 1), (1, 0, 1)], [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)]],
+                          [(0.5,) * 3] * 2, [0, -1], ["Off"], [(0, 0, 0), (0, 0, 0)])
+results = []
+for mode in (0, 1):
+    solver = relight.vtkLightTaggedRadiosity()
+    solver.SetInputData(dark)
+    solver.SetSolutionMode(mode)
+    catcher = relight.ErrorCatcher(solver)
+    solver.Update()
+    if mode == 0:
+        out, _ = relit(solver.GetOutput(), lambda r: None)
+        results.append(float(np.abs(relight.cell_array(out, "Radiosity")).max()))
+        warned = any("zero Emission" in w for w in catcher.warnings)
+    else:
+        results.append(float(np.abs(relight.cell_array(solver.GetOutput(), "Radiosity")).max()))
+check(results == [0.0, 0.0] and warned, f"zero-Emission light: relit {results[0]}, combined {results[1]}, warned {warned}")
+
 finish("TestRobustness")

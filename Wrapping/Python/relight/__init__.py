@@ -27,6 +27,7 @@ from .scene import (  # noqa: F401
     light_names,
     make_scene,
     point_array,
+    point_lights,
     cell_array,
     read_polydata,
     render_png,

@@ -259,6 +259,32 @@ def write_exr(data, path, camera, size=(640, 480), array="Radiosity"):
         raise OSError(f"could not write {path!r}: {catcher.first_error()}")
 
 
+def point_lights(positions, intensity=1.0, color=(1, 1, 1), normal=None):
+    """Moving lights for vtkRadiosityRelight's second input: one point per light with the
+    point arrays Color, Intensity and (for small Lambertian emitters) Normal."""
+    from vtkmodules.vtkCommonCore import vtkFloatArray, vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+
+    data, points, verts = vtkPolyData(), vtkPoints(), vtkCellArray()
+    arrays = {"Color": 3, "Intensity": 1, **({"Normal": 3} if normal is not None else {})}
+    made = {}
+    for name, components in arrays.items():
+        made[name] = vtkFloatArray()
+        made[name].SetName(name)
+        made[name].SetNumberOfComponents(components)
+    for p in positions:
+        verts.InsertNextCell(1, [points.InsertNextPoint(*p)])
+        made["Color"].InsertNextTuple3(*color)
+        made["Intensity"].InsertNextValue(intensity)
+        if normal is not None:
+            made["Normal"].InsertNextTuple3(*normal)
+    data.SetPoints(points)
+    data.SetVerts(verts)
+    for array in made.values():
+        data.GetPointData().AddArray(array)
+    return data
+
+
 def add_field_ints(data, name, values):
     """Adds an integer field array, e.g. LightBanks or StaticLights (one value per light)."""
     from vtkmodules.vtkCommonCore import vtkIntArray
