@@ -76,6 +76,7 @@ public:
       }
     }
     LinkElements(shooter, links, stats);
+    Conserve(shooter, links);
     stats.PatchLinks += static_cast<long long>(links.Patches.size());
     stats.ElementLinks += static_cast<long long>(links.Elements.size());
     stats.LinkBytes += links.Bytes();
@@ -96,6 +97,30 @@ private:
     }
     links.MeanFactors.push_back(covered / G.patchOpenArea[q]); // unshot spreads over the open area
     links.ReceivingArea += covered;
+  }
+
+  /// Scales every link of the shooter so that it delivers no more than it shoots, and
+  /// exactly that when it sees a closed scene (ShooterFormFactors::ConservationScale).
+  void Conserve(int shooter, ShooterLinks& links) const
+  {
+    const double scale = Factors.ConservationScale(shooter, links.ReceivingArea);
+    if (scale == 1.0)
+    {
+      return;
+    }
+    for (float& f : links.NodeFactors)
+    {
+      f = static_cast<float>(f * scale);
+    }
+    for (double& f : links.MeanFactors)
+    {
+      f *= scale;
+    }
+    for (float& f : links.ElementFactors)
+    {
+      f = static_cast<float>(f * scale);
+    }
+    links.ReceivingArea *= scale;
   }
 
   /// Decides per receiver patch: no link, one patch link, or element links.
@@ -329,6 +354,7 @@ void Shoot(const SceneMesh& mesh, const SceneGeometry& g, const Visibility& rays
       factors.resize(state.Elements);
       stats.RayCount += estimator.Compute(shooter, FormFactorMethod::Analytic, samples, stats.Shots, factors);
       stats.FormFactorCount += state.Elements;
+      estimator.Conserve(shooter, factors);
       state.EndShot(shooter, DistributeToElements(state, pool, factors));
       continue;
     }

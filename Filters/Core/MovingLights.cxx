@@ -30,6 +30,28 @@ SceneMesh Merge(const SceneMesh& scene, const SceneMesh* extra)
 }
 } // namespace
 
+namespace
+{
+/// cos(theta) / r^2 of a point light averaged over element e's fan triangles where the
+/// light is within twice the element's size (one centroid would misjudge it there, as the
+/// solver's receivers near a shooter would); 0 elsewhere, meaning: use the centroid. The
+/// light's own falloff (its Normal) is taken at the centroid.
+double NearFieldFactor(const SceneMesh& mesh, const SceneGeometry& g, int e, const MovingLight& light)
+{
+  const Vec3& c = g.centroid[e];
+  if (Norm(light.Position - c) > 2 * std::sqrt(g.area[e]))
+  {
+    return 0;
+  }
+  const double mean = FanAverage(mesh, g, e, [&](const Vec3& x) {
+    const Vec3 d = light.Position - x;
+    const double r2 = Dot(d, d);
+    return r2 > 0 ? std::max(0.0, Dot(g.normal[e], d)) / (std::sqrt(r2) * r2) : 0.0;
+  });
+  return std::isnan(mean) ? 0 : mean;
+}
+} // namespace
+
 MovingLightShader::MovingLightShader(const SceneMesh& scene, const SceneMesh* dynamicObjects)
   : Scene(scene)
   , Geometry_(scene)
@@ -53,6 +75,7 @@ long long MovingLightShader::Direct(
       Vec3 irradiance;
       for (const MovingLight& light : lights)
       {
+        const double near = NearFieldFactor(Scene, g, e, light);
         const Vec3 d = light.Position - x;
         const double r2 = Dot(d, d);
         const double cosReceiver = Dot(g.normal[e], d);
@@ -76,7 +99,7 @@ long long MovingLightShader::Direct(
         {
           continue;
         }
-        const double scale = intensity * (cosReceiver / r) / r2;
+        const double scale = intensity * (near > 0 ? near : (cosReceiver / r) / r2);
         irradiance += light.Color * scale;
       }
       const Vec3& rho = Scene.reflectance[e];

@@ -30,6 +30,7 @@ void Shoot(const SceneMesh& mesh, const SceneGeometry& g, const Visibility& rays
     // The expensive part, done once per shot whatever the number of solutions.
     stats.RayCount += estimator.Compute(shooter, options.Method, samples, stats.Shots, factors);
     stats.FormFactorCount += n;
+    estimator.Conserve(shooter, factors);
     state.TakeShot(shooter);
     state.EndShot(shooter, DistributeToElements(state, pool, factors));
   }

@@ -4,6 +4,7 @@
 
 #include "Vec3.h"
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -57,6 +58,30 @@ struct SceneGeometry
 
   explicit SceneGeometry(const SceneMesh& mesh);
 };
+
+/// The area mean of value(x) over element e, sampled at the centroids of its fan
+/// triangles (centroid, corner, next corner): for where one centroid misjudges a quantity
+/// that changes fast across the element. NaN when the element has no positive fan area.
+template <typename PointValue>
+double FanAverage(const SceneMesh& mesh, const SceneGeometry& g, int e, PointValue value)
+{
+  const Vec3& c = g.centroid[e];
+  const int* ids = mesh.Polygon(e);
+  const int count = mesh.PolygonSize(e);
+  double sum = 0, area = 0;
+  for (int i = 0; i < count; ++i)
+  {
+    const Vec3& a = mesh.points[ids[i]];
+    const Vec3& b = mesh.points[ids[(i + 1) % count]];
+    const double part = 0.5 * Dot(Cross(a - c, b - c), g.normal[e]);
+    if (part > 0)
+    {
+      sum += part * value((c + a + b) * (1.0 / 3.0));
+      area += part;
+    }
+  }
+  return area > 0 ? sum / area : std::numeric_limits<double>::quiet_NaN();
+}
 
 } // namespace radiosity
 

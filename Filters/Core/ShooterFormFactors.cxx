@@ -373,6 +373,66 @@ int ShooterFormFactors::FrontHit(const Vec3& origin, const Vec3& direction) cons
   return Dot(Geometry.normal[hit.polygon], direction) < 0 ? hit.polygon : -1;
 }
 
+bool ShooterFormFactors::SeesClosedScene(int patch)
+{
+  if (ClosedView.empty())
+  {
+    ClosedView.assign(Geometry.patchElements.size(), -1);
+  }
+  if (ClosedView[patch] < 0)
+  {
+    // Cosine-distributed rays from stratified points: one escaping (or meeting a back
+    // face) means light can leave, and then only an excess is corrected.
+    const int probes = 64;
+    SampleStream random(static_cast<std::uint64_t>(patch), 0, 11);
+    const Vec3& n = PatchNormal[patch];
+    const Vec3 helper = std::fabs(n.x) < 0.6 ? Vec3{ 1, 0, 0 } : Vec3{ 0, 1, 0 };
+    const Vec3 t = Normalized(Cross(helper, n)), b = Cross(n, t);
+    bool closed = Planar(patch);
+    for (int r = 0; r < probes && closed; ++r)
+    {
+      const Vec3 from = SamplePoint(patch, r, probes, random);
+      const double u = (r % 8 + random.Next()) / 8, phi = 2 * 3.14159265358979323846 * (r / 8 + random.Next()) / 8;
+      const double radius = std::sqrt(u);
+      const Vec3 direction = t * (radius * std::cos(phi)) + b * (radius * std::sin(phi)) + n * std::sqrt(1 - u);
+      closed = FrontHit(from, direction) >= 0;
+    }
+    ClosedView[patch] = closed ? 1 : 0;
+  }
+  return ClosedView[patch] == 1;
+}
+
+double ShooterFormFactors::ConservationScale(int patch, double receiving)
+{
+  const double shooting = Geometry.patchOpenArea[patch];
+  if (!(receiving > 0) || !(shooting > 0))
+  {
+    return 1.0;
+  }
+  if (receiving > shooting || SeesClosedScene(patch))
+  {
+    return shooting / receiving;
+  }
+  return 1.0;
+}
+
+void ShooterFormFactors::Conserve(int patch, std::vector<double>& factors)
+{
+  double receiving = 0;
+  for (size_t e = 0; e < factors.size(); ++e)
+  {
+    receiving += factors[e] * Geometry.area[e];
+  }
+  const double scale = ConservationScale(patch, receiving);
+  if (scale != 1.0)
+  {
+    for (double& f : factors)
+    {
+      f *= scale;
+    }
+  }
+}
+
 long long ShooterFormFactors::Compute(
   int patch, FormFactorMethod method, int samples, int shot, std::vector<double>& factors)
 {
@@ -477,9 +537,24 @@ int ShooterFormFactors::VisibleRaysBetweenPatches(int receiver, int shooter, int
   return visible;
 }
 
+double ShooterFormFactors::ReceiverFactor(int patch, int e, std::vector<Vec3>& scratch) const
+{
+  const Vec3& c = Geometry.centroid[e];
+  const double size = std::sqrt(Geometry.area[e]);
+  if (Norm(c - PatchCentre[patch]) - PatchRadius[patch] > 2 * size)
+  {
+    return PointFactor(patch, c, Geometry.normal[e], scratch);
+  }
+  // Near the shooter the factor changes across the element faster than one point can
+  // tell (a point beside a lamp sees far more of it than the element's far edge).
+  const double mean =
+    FanAverage(Mesh, Geometry, e, [&](const Vec3& x) { return PointFactor(patch, x, Geometry.normal[e], scratch); });
+  return std::isnan(mean) ? PointFactor(patch, c, Geometry.normal[e], scratch) : mean;
+}
+
 double ShooterFormFactors::ElementFactor(int patch, int e, int samples, std::vector<Vec3>& scratch, RayCounts& counts) const
 {
-  const double f = PointFactor(patch, Geometry.centroid[e], Geometry.normal[e], scratch);
+  const double f = ReceiverFactor(patch, e, scratch);
   if (f <= 0 || samples <= 0)
   {
     return f;

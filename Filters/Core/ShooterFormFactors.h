@@ -52,11 +52,24 @@ public:
 
   /// Unoccluded F(dA at x with `normal` -> patch); 0 where the patch's front faces away.
   double PointFactor(int patch, const Vec3& x, const Vec3& normal, std::vector<Vec3>& scratch) const;
-  /// The analytic method's factor for one element: PointFactor at its centroid times the
+  /// Unoccluded F(element e -> patch): PointFactor at the centroid, or, where the element
+  /// is within twice its size of the patch, the area mean over its fan triangles.
+  double ReceiverFactor(int patch, int e, std::vector<Vec3>& scratch) const;
+  /// The analytic method's factor for one element: ReceiverFactor times the
   /// unblocked fraction of `samples` shadow rays (none where culling proves them useless).
   double ElementFactor(int patch, int element, int samples, std::vector<Vec3>& scratch, RayCounts& counts) const;
   /// Unblocked rays of `samples` between stratified points of two patches.
   int VisibleRaysBetweenPatches(int receiver, int shooter, int samples) const;
+  /// The factor by which a shooter's factors must be scaled so that the power they deliver
+  /// (`receiving`: sum of factor x receiver area) never exceeds what the patch shoots from
+  /// its open area. Where every probe ray from the patch lands on a receiver's front (the
+  /// patch sees a closed scene), the delivered power equals the shot power exactly: the
+  /// point rule's excess near the shooter and its deficit at corners cancel out of the
+  /// total, so a closed room neither creates nor loses energy, even at rho = 0.999.
+  double ConservationScale(int patch, double receiving);
+  /// Scales a full set of factors (one per element) by ConservationScale.
+  void Conserve(int patch, std::vector<double>& factors);
+
   /// Adds a thread's counts to the totals reported by RaysSkipped and PairsUnblockable.
   void Count(const RayCounts& counts, int samples);
   /// False when no blocking surface can come between the two patches.
@@ -118,6 +131,9 @@ private:
   /// For a patch with sheltered elements, its other elements: where patch links land, so
   /// where visibility to a linked shooter is sampled (empty for the other patches).
   std::vector<std::vector<int>> OpenElements;
+  /// Per patch: 1 when all of its probe rays reach a receiver's front, 0 when not, -1 unknown.
+  std::vector<signed char> ClosedView;
+  bool SeesClosedScene(int patch);
   /// Hemicube pixel directions in the local frame (x, y, z = normal) and delta factors.
   std::vector<Vec3> CubeDirections;
   std::vector<double> CubeWeights;

@@ -23,7 +23,11 @@ TEST(Solver, BoxBuilderFacesInward)
 
 TEST(Solver, FurnaceGivesOneOverOneMinusRho)
 {
-  // Closed box, every face emitting 1, uniform rho: B = 1 / (1 - rho) everywhere.
+  // Closed box, every face emitting 1, uniform rho: B = 1 / (1 - rho) everywhere. Point
+  // collocation alone met this to 1e-6 (a point's analytic factors to a closed box sum to
+  // exactly 1) while shooting 0.1 % more or less power than each patch had; each shot now
+  // delivers exactly its power in a closed scene (issue 13), which costs the per-element
+  // exactness: measured within 0.06 %.
   for (double rho : { 0.3, 0.5, 0.9 })
   {
     SceneMesh box = Box(2.0, 6, 2, { rho, rho, rho }, [](int) { return 0; });
@@ -34,9 +38,9 @@ TEST(Solver, FurnaceGivesOneOverOneMinusRho)
     const double expected = 1.0 / (1.0 - rho);
     for (const Vec3& b : s.Radiosity)
     {
-      EXPECT_NEAR(b.x, expected, 1e-6 * expected);
-      EXPECT_NEAR(b.y, expected, 1e-6 * expected);
-      EXPECT_NEAR(b.z, expected, 1e-6 * expected);
+      EXPECT_NEAR(b.x, expected, 1e-3 * expected);
+      EXPECT_NEAR(b.y, expected, 1e-3 * expected);
+      EXPECT_NEAR(b.z, expected, 1e-3 * expected);
     }
   }
 }

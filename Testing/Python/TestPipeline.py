@@ -165,6 +165,8 @@ rho = 0.6
 furnace = relight.solve(relight.furnace_box(2.0, rho), 1.0, 0.5, ConvergenceThreshold=1e-8, MaximumShots=100000)
 b = cell_array(furnace.GetOutput(), "Radiosity_Light0")
 print(f"furnace: B in [{b.min():.6f}, {b.max():.6f}], closed form {1 / (1 - rho):.6f}")
-check(np.allclose(b, 1 / (1 - rho), rtol=1e-5), "furnace B = 1/(1-rho)")
+# Each shot delivers exactly its power in a closed scene, which leaves per-element values
+# within 0.13 % here (point collocation alone had met 1e-5 while not conserving power).
+check(np.allclose(b, 1 / (1 - rho), rtol=2e-3), "furnace B = 1/(1-rho) within 0.2 %")
 
 finish("TestPipeline")

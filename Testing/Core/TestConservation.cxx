@@ -1,0 +1,110 @@
+// Transport never creates energy, and in a closed scene it loses none: the issue-13 room
+// (a 0.2 m lamp under the ceiling of a closed unit room, 0.5 m elements) where a point
+// rule near the lamp once delivered 113.6 % of its power, and a closed room at rho = 0.999.
+#include "LightSolutions.h"
+#include "SceneBuilders.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+using namespace radiosity;
+using radiosity_test::AddGrid;
+using radiosity_test::Box;
+using radiosity_test::Converged;
+
+namespace
+{
+SceneMesh LampRoom(double rho)
+{
+  SceneMesh mesh = Box(1.0, 2, 1, { rho, rho, rho }, [](int) { return -1; });
+  int patch = 100;
+  AddGrid(mesh, { 0.4, 0.4, 0.95 }, { 0, 0.2, 0 }, { 0.2, 0, 0 }, 1, 1, { rho, rho, rho }, 0, patch); // faces -z
+  return mesh;
+}
+
+/// Power the surfaces reflect in total, from the output: sum of A (B - E).
+double ReflectedPower(const SceneMesh& mesh, const Solution& s)
+{
+  const SceneGeometry g(mesh);
+  double reflected = 0;
+  for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
+  {
+    const double emitted = mesh.lightId[e] == 0 ? 1.0 : 0.0;
+    reflected += (s.Radiosity[e].x - emitted) * g.area[e];
+  }
+  return reflected;
+}
+} // namespace
+
+TEST(Conservation, FirstShotNeverDeliversMoreThanItsPower)
+{
+  const SceneMesh mesh = LampRoom(0.5);
+  const RadiositySolver solver(mesh);
+  for (SolverMethod method : { SolverMethod::ProgressiveRefinement, SolverMethod::Hierarchical })
+  {
+    for (FormFactorMethod factors : { FormFactorMethod::Analytic, FormFactorMethod::Hemicube, FormFactorMethod::MonteCarlo })
+    {
+      if (method == SolverMethod::Hierarchical && factors != FormFactorMethod::Analytic)
+      {
+        continue;
+      }
+      SolverOptions options = Converged(0);
+      options.Solver = method;
+      options.Method = factors;
+      options.MaximumShots = 1;
+      const Solution s = SolveLights(solver, mesh, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, options);
+      const double lampPower = 3 * 0.04; // the statistics sum the three channels
+      const double delivered = s.Statistics.ReceivedPower / lampPower;
+      std::printf("method %d, factors %d: first shot delivers %.4f %% of the lamp's power\n", static_cast<int>(method),
+        static_cast<int>(factors), 100 * delivered);
+      EXPECT_LE(delivered, 1.0 + 1e-9);
+      EXPECT_GT(delivered, 0.97);
+    }
+  }
+}
+
+TEST(Conservation, ClosedRoomAtRhoNearOneReachesTheClosedForm)
+{
+  // A closed unit room whose ceiling is the lamp (no back face anywhere to absorb light),
+  // every surface reflecting 0.999: the surfaces reflect rho / (1 - rho) = 999 times the
+  // lamp's power in all. The ambient term carries what is still unshot at the threshold.
+  const double rho = 0.999;
+  const SceneMesh mesh = Box(1.0, 4, 2, { rho, rho, rho }, [](int face) { return face == 1 ? 0 : -1; });
+  const RadiositySolver solver(mesh);
+  for (SolverMethod method : { SolverMethod::ProgressiveRefinement, SolverMethod::Hierarchical })
+  {
+    SolverOptions options = Converged(1e-3);
+    options.Solver = method;
+    options.AmbientTerm = true;
+    const Solution s = SolveLights(solver, mesh, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, options);
+    const double got = ReflectedPower(mesh, s);
+    std::printf("method %d: reflected %.2f x the lamp's power (closed form %.0f), %d shots\n", static_cast<int>(method),
+      got, rho / (1 - rho), s.Statistics.Shots);
+    EXPECT_NEAR(got / (rho / (1 - rho)), 1.0, 0.01);
+  }
+}
+
+TEST(Conservation, LampRoomAtRhoNearOneNeverGains)
+{
+  // The lamp room at rho = 0.999 diverged (unshot 2e22 times its start). Its lamp's back
+  // absorbs what reaches it, so there is no closed form, only bounds: unshot energy never
+  // rises, and the surfaces reflect less than rho / (1 - rho) times the lamp's power.
+  const double rho = 0.999;
+  const SceneMesh mesh = LampRoom(rho);
+  const RadiositySolver solver(mesh);
+  for (SolverMethod method : { SolverMethod::ProgressiveRefinement, SolverMethod::Hierarchical })
+  {
+    SolverOptions options = Converged(1e-3);
+    options.Solver = method;
+    const Solution s = SolveLights(solver, mesh, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, options);
+    EXPECT_TRUE(s.Statistics.Converged);
+    EXPECT_LT(ReflectedPower(mesh, s) / 0.04, rho / (1 - rho));
+    const std::vector<double>& history = s.Statistics.RemainingHistory;
+    for (size_t i = 1; i < history.size(); ++i)
+    {
+      ASSERT_LE(history[i], history[i - 1] * (1 + 1e-12)) << "unshot energy rose at shot " << i;
+    }
+  }
+}
