@@ -9,6 +9,7 @@
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkDelimitedTextReader.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
@@ -20,14 +21,20 @@
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
+#include "vtkTable.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkVariant.h"
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
-#include <memory>
-#include <fstream>
-#include <sstream>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <set>
+#include <sstream>
 
 namespace
 {
@@ -286,10 +293,56 @@ void vtkRadiosityRelight::ClearSchedule()
   }
 }
 
+namespace
+{
+std::string Trimmed(const std::string& text)
+{
+  const size_t first = text.find_first_not_of(" \t\r");
+  const size_t last = text.find_last_not_of(" \t\r");
+  return first == std::string::npos ? std::string() : text.substr(first, last - first + 1);
+}
+
+/// A whole cell as a finite number; false for anything else ("1.5x", "", "nan").
+bool ParseNumber(const std::string& text, double& value)
+{
+  char* end = nullptr;
+  const std::string cell = Trimmed(text);
+  value = std::strtod(cell.c_str(), &end);
+  return !cell.empty() && end == cell.c_str() + cell.size() && std::isfinite(value);
+}
+
+/// true/false, on/off, yes/no, 1/0 in any case.
+bool ParseEnabled(const std::string& text, bool& value)
+{
+  std::string word = Trimmed(text);
+  std::transform(word.begin(), word.end(), word.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (word == "1" || word == "true" || word == "on" || word == "yes")
+  {
+    value = true;
+    return true;
+  }
+  if (word == "0" || word == "false" || word == "off" || word == "no")
+  {
+    value = false;
+    return true;
+  }
+  return false;
+}
+
+/// When the file was last written (0 when it cannot be read): a change re-reads it.
+long long WriteStamp(const std::string& file)
+{
+  std::error_code failed;
+  const auto stamp = std::filesystem::last_write_time(file, failed);
+  return failed ? 0 : static_cast<long long>(stamp.time_since_epoch().count());
+}
+} // namespace
+
 bool vtkRadiosityRelight::LoadSchedule(std::string& error)
 {
   const std::string file = this->ScheduleFileName ? this->ScheduleFileName : "";
-  if (file == this->LoadedScheduleFile)
+  const long long stamp = file.empty() ? 0 : WriteStamp(file);
+  if (file == this->LoadedScheduleFile && stamp == this->LoadedScheduleStamp)
   {
     return true;
   }
@@ -299,38 +352,55 @@ bool vtkRadiosityRelight::LoadSchedule(std::string& error)
   {
     return true;
   }
-  std::ifstream in(file);
-  if (!in)
+  if (!std::ifstream(file))
   {
     error = "cannot open the schedule file '" + file + "'";
     return false;
   }
-  std::string line;
-  int number = 0;
-  while (std::getline(in, line))
+  // A real CSV reader: quoted names may hold commas and spaces ("Warm, White").
+  vtkNew<vtkDelimitedTextReader> reader;
+  reader->SetFileName(file.c_str());
+  reader->SetFieldDelimiterCharacters(",");
+  reader->SetUseStringDelimiter(true);
+  reader->SetStringDelimiter('"');
+  reader->SetHaveHeaders(false);
+  reader->SetDetectNumericColumns(false);
+  reader->Update();
+  vtkTable* table = reader->GetOutput();
+  const vtkIdType columns = table->GetNumberOfColumns();
+  for (vtkIdType row = 0; row < table->GetNumberOfRows(); ++row)
   {
-    ++number;
-    std::replace(line.begin(), line.end(), ',', ' ');
-    std::istringstream fields(line);
-    Keyframe k{ 0, "", { 1, 1, 1 }, 1, true };
-    int enabled = 1;
-    if (!(fields >> k.Time >> k.Light >> k.Color[0] >> k.Color[1] >> k.Color[2] >> k.Intensity))
+    std::vector<std::string> cells;
+    for (vtkIdType c = 0; c < columns; ++c)
     {
-      if (number == 1 || line.find_first_not_of(" \t\r") == std::string::npos)
-      {
-        continue; // a header or an empty line
-      }
-      error = "line " + std::to_string(number) + " of '" + file +
-        "' is not 'time, light, r, g, b, intensity[, enabled]'";
-      return false;
+      cells.push_back(table->GetValue(row, c).ToString());
     }
-    if (fields >> enabled)
+    while (!cells.empty() && Trimmed(cells.back()).empty())
     {
-      k.Enabled = enabled != 0;
+      cells.pop_back();
+    }
+    std::string first = cells.empty() ? std::string() : Trimmed(cells[0]);
+    std::transform(first.begin(), first.end(), first.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (cells.empty() || (row == 0 && first == "time"))
+    {
+      continue; // an empty line, or the header (known by its first column's name)
+    }
+    Keyframe k{ 0, Trimmed(cells.size() > 1 ? cells[1] : ""), { 1, 1, 1 }, 1, true };
+    const bool parsed = (cells.size() == 6 || cells.size() == 7) && ParseNumber(cells[0], k.Time) && !k.Light.empty() &&
+      ParseNumber(cells[2], k.Color[0]) && ParseNumber(cells[3], k.Color[1]) && ParseNumber(cells[4], k.Color[2]) &&
+      ParseNumber(cells[5], k.Intensity) && (cells.size() == 6 || ParseEnabled(cells[6], k.Enabled));
+    if (!parsed)
+    {
+      error = "row " + std::to_string(row + 1) + " of '" + file +
+        "' is not 'time, light, r, g, b, intensity[, enabled]' (numbers; enabled as true/false, on/off, "
+        "yes/no or 1/0; quote names with commas)";
+      this->FileSchedule.clear();
+      return false;
     }
     this->FileSchedule.push_back(k);
   }
   this->LoadedScheduleFile = file;
+  this->LoadedScheduleStamp = stamp;
   return true;
 }
 
@@ -768,6 +838,25 @@ int vtkRadiosityRelight::RequestData(
       {
         vtkWarningMacro(<< "No light is named '" << entry.first << "'; lights are: " << this->NamesString);
       }
+    }
+    std::set<std::string> unknown;
+    for (const auto* list : { &this->FileSchedule, &this->Schedule })
+    {
+      for (const Keyframe& key : *list)
+      {
+        const bool index = std::any_of(names.begin(), names.end(), [&, i = 0](const std::string&) mutable {
+          return key.Light == std::to_string(i++);
+        });
+        if (!index && std::find(names.begin(), names.end(), key.Light) == names.end())
+        {
+          unknown.insert(key.Light);
+        }
+      }
+    }
+    for (const std::string& light : unknown)
+    {
+      vtkWarningMacro(<< "The light schedule names '" << light << "', which is no light; lights are: "
+                      << this->NamesString);
     }
     for (const auto& entry : this->ByIndex)
     {

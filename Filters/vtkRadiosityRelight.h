@@ -74,7 +74,9 @@ public:
    * intensity are interpolated linearly, `enabled` holds from the previous keyframe. With
    * a schedule the filter reports its keyframe times as time steps, so a time slider (or
    * UpdateTimeStep) relights. Entries come from AddScheduleEntry or from a CSV file
-   * (ScheduleFileName; header line optional; columns as above, enabled optional).
+   * (ScheduleFileName: CSV, names quoted where they hold commas, an optional header whose
+   * first column is "time", columns as above, enabled optional as true/false, on/off,
+   * yes/no or 1/0; re-read when the file changes).
    * Precedence: defaults, then SetLightSetting, then the schedule, then index settings.
    */
   void AddScheduleEntry(double time, const char* light, double r, double g, double b, double intensity,
@@ -153,6 +155,7 @@ private:
   std::vector<Keyframe> Schedule;     ///< entries from AddScheduleEntry
   std::vector<Keyframe> FileSchedule; ///< entries read from ScheduleFileName
   std::string LoadedScheduleFile;
+  long long LoadedScheduleStamp = 0; ///< its last write time when read: a newer one re-reads it
   char* ScheduleFileName = nullptr;
   bool LoadSchedule(std::string& error);
   /// The schedule's settings for `name` (or `index`) at `time`; false if it has none.

@@ -195,4 +195,57 @@ for mode in (0, 1):
         results.append(float(np.abs(relight.cell_array(solver.GetOutput(), "Radiosity")).max()))
 check(results == [0.0, 0.0] and warned, f"zero-Emission light: relit {results[0]}, combined {results[1]}, warned {warned}")
 
+# relight.solve raises with the filter's own words, not VTK's file, line and object prefix.
+try:
+    relight.solve(relight.make_scene([LAMP, [(0, 0, 0), (4, 4, 0), (4, 0, 0), (0, 4, 0)]], [(0.5,) * 3] * 2, [0, -1]),
+                  1.0, 0.25)
+    check(False, "relight.solve raises on a figure 8")
+except RuntimeError as error:
+    check(str(error).startswith("Cannot mesh: cell 1 crosses itself"), f"relight.solve raises: '{error}'")
+
+# --- the light schedule file: a real CSV reader --------------------------------------------------
+two = relight.make_scene([[(0, 0, 1), (0, 0.4, 1), (0.4, 0.4, 1), (0.4, 0, 1)], [(0.6, 0, 1), (0.6, 0.4, 1), (1, 0.4, 1), (1, 0, 1)],
+                          [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)]],
+                         [(0.5,) * 3] * 3, [0, 1, -1], ["Warm, White", "Cool White"])
+lit = relight.solve(two, 0.5, 0.25, ConvergenceThreshold=1e-4).GetOutput()
+only_cool = relight.cell_array(lit, "Radiosity_Cool White").astype(float)
+schedule = os.path.join(folder, "schedule.csv")
+
+
+def scheduled(text, time=0.0):
+    with open(schedule, "w") as f:
+        f.write(text)
+    relighter = relight.vtkRadiosityRelight()
+    relighter.SetInputData(lit)
+    relighter.SetScheduleFileName(schedule)
+    catcher = relight.ErrorCatcher(relighter)
+    relighter.UpdateTimeStep(time)
+    out = relighter.GetOutput()
+    values = relight.cell_array(out, "Radiosity").astype(float) if out.GetNumberOfCells() else None
+    return relighter, values, catcher
+
+
+for word in ("false", "off", "OFF", "no", "0"):
+    _, values, catcher = scheduled(f'time,light,r,g,b,intensity,enabled\n0,"Warm, White",1,1,1,1,{word}\n')
+    check(values is not None and np.allclose(values, only_cool, atol=1e-7) and not catcher.errors,
+          f"schedule: enabled = {word} turns the quoted light 'Warm, White' off")
+_, values, _ = scheduled('0,"Warm, White",1,1,1,1,on\n0,Cool White,1,1,1,0,true\n')
+check(values is not None and np.allclose(values, relight.cell_array(lit, "Radiosity_Warm, White"), atol=1e-7),
+      "schedule without a header: 'on' keeps one light, intensity 0 darkens the other")
+_, values, catcher = scheduled("0,Warm White,1,1,1\n")
+check(values is None and "row 1" in catcher.first_error(), f"a malformed first row is an error: {catcher.first_error()}")
+_, values, catcher = scheduled('0,"Warm, White",1,1,1,1,maybe\n')
+check(values is None and "row 1" in catcher.first_error(), f"enabled = maybe is an error: {catcher.first_error()}")
+_, values, catcher = scheduled("0,Nobody,1,1,1,1\n")
+check(any("'Nobody', which is no light" in w for w in catcher.warnings), f"an unknown name warns: {catcher.warnings}")
+relighter, before, _ = scheduled('0,"Warm, White",1,1,1,1,off\n')
+with open(schedule, "w") as f:
+    f.write('0,"Warm, White",1,1,1,2,on\n')
+os.utime(schedule, (os.path.getmtime(schedule) + 5,) * 2)
+relighter.Modified()
+relighter.UpdateTimeStep(0.0)
+after = relight.cell_array(relighter.GetOutput(), "Radiosity").astype(float)
+check(np.allclose(after, only_cool + 2 * relight.cell_array(lit, "Radiosity_Warm, White"), atol=1e-6),
+      "the schedule is read again once the file changes")
+
 finish("TestRobustness")

@@ -118,9 +118,9 @@ def solve(scene, patch_size, element_size, **solver_settings):
         getattr(solver, "Set" + name)(value)
     catchers = [ErrorCatcher(mesher), ErrorCatcher(solver)]
     solver.Update()
-    errors = [e for c in catchers for e in c.errors]
-    if errors:
-        raise RuntimeError(errors[0])
+    failed = [c for c in catchers if c.errors]
+    if failed:
+        raise RuntimeError(failed[0].first_error())  # the filter's own words, not VTK's prefix
     return solver
 
 
