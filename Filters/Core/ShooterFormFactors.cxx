@@ -385,9 +385,11 @@ bool ShooterFormFactors::SeesClosedScene(int patch)
     // face) means light can leave, and then only an excess is corrected.
     const int probes = 64;
     SampleStream random(static_cast<std::uint64_t>(patch), 0, 11);
+    // The frame follows the patch's first edge, so a rotated scene probes alike.
     const Vec3& n = PatchNormal[patch];
-    const Vec3 helper = std::fabs(n.x) < 0.6 ? Vec3{ 1, 0, 0 } : Vec3{ 0, 1, 0 };
-    const Vec3 t = Normalized(Cross(helper, n)), b = Cross(n, t);
+    const int first = Geometry.patchElements[patch][0];
+    const Vec3 edge = Mesh.points[Mesh.Polygon(first)[1]] - Mesh.points[Mesh.Polygon(first)[0]];
+    const Vec3 t = Normalized(edge - n * Dot(edge, n)), b = Cross(n, t);
     bool closed = Planar(patch);
     for (int r = 0; r < probes && closed; ++r)
     {

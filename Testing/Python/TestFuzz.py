@@ -1,7 +1,10 @@
 """Fuzzing: random polygon soups and random array values through mesher + solver + relight.
 
 Never a crash, a hang or a NaN: every stage either gives a finite result or reports a
-clear error and an empty output. CI runs a bounded number of cases; for a long run:
+clear error and an empty output. Also: unshot energy never rises (reflectances up to 1,
+coarse one-element patches), and a converged analytic solve of the scene scaled by
+1e-3..1e3, rotated and moved gives the same radiosity to 1e-3 of its peak. CI runs a
+bounded number of cases; for a long run:
     RELIGHT_FUZZ_CASES=20000 RELIGHT_FUZZ_SEED=7 ./relight python Testing/Python/TestFuzz.py
 """
 
@@ -23,6 +26,8 @@ from vtkmodules.vtkCommonCore import (
     vtkStringArray,
 )
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+from vtkmodules.vtkCommonTransforms import vtkTransform
+from vtkmodules.vtkFiltersGeneral import vtkTransformPolyDataFilter
 
 import relight
 from relight import ErrorCatcher
@@ -95,7 +100,8 @@ def random_scene():
         components = 3 if not wild else pick(3, 3, 3, 1, 4)
         r.SetNumberOfComponents(components)
         for _ in range(n):
-            r.InsertNextTuple([rng.uniform(0, 0.999) if not wild or rng.random() < 0.95
+            r.InsertNextTuple([(rng.uniform(0, 0.999) if rng.random() < 0.8 else pick(0.99, 0.999, 1.0))
+                               if not wild or rng.random() < 0.95
                                else pick(math.nan, -0.1, 1.1) for _ in range(components)])
         data.GetCellData().AddArray(r)
     if not wild or rng.random() < 0.9:
@@ -159,6 +165,41 @@ def run_stage(algorithm, source, what, stats):
     return out
 
 
+def check_placement(solver, source, solved, stats):
+    """The same scene scaled, rotated and moved (in double precision) gives the same
+    radiosity, relative to its peak, when the solve is not cut short by time."""
+    if solver.GetLastSolveSeconds() > 2.0 or not solver.GetLastConverged():
+        return  # a cut-short solve depends on which of two equal shooters goes first
+    transform = vtkTransform()
+    transform.RotateWXYZ(rng.uniform(0, 360), rng.gauss(0, 1), rng.gauss(0, 1), rng.gauss(0, 1) + 1e-3)
+    transform.Translate(*[rng.uniform(-100, 100) for _ in range(3)])
+    factor = 10 ** rng.uniform(-3, 3)
+    transform.Scale(factor, factor, factor)
+    moved = vtkTransformPolyDataFilter()
+    moved.SetTransform(transform)
+    moved.SetOutputPointsPrecision(2)
+    moved.SetInputData(source)
+    moved.Update()
+    again = relight.vtkLightTaggedRadiosity()
+    for name in ("FormFactorMethod", "FormFactorSamples", "MaximumShots", "AmbientTerm", "SeparateDirect", "SolutionMode"):
+        getattr(again, "Set" + name)(getattr(solver, "Get" + name)())
+    catcher = ErrorCatcher(again)
+    again.SetInputData(moved.GetOutput())
+    again.Update()
+    if catcher.errors:
+        raise AssertionError(f"placement: the moved scene fails: {catcher.errors[0]}")
+    for i in range(solved.GetCellData().GetNumberOfArrays()):
+        name = solved.GetCellData().GetArrayName(i)
+        if name and name.startswith("Radiosity"):
+            a = vtk_to_numpy(solved.GetCellData().GetArray(name)).astype(float)
+            b = vtk_to_numpy(again.GetOutput().GetCellData().GetArray(name)).astype(float)
+            peak = max(abs(a).max(), 1e-300)
+            if a.shape != b.shape or abs(a - b).max() > 1e-3 * peak:
+                raise AssertionError(f"placement: '{name}' changes by {abs(a - b).max() / peak:.2e} of its peak "
+                                     f"(scale {factor:.3g})")
+    stats["placement checks"] = stats.get("placement checks", 0) + 1
+
+
 def on_timeout(signum, frame):
     raise TimeoutError("a case took longer than 60 s (hang?)")
 
@@ -174,7 +215,7 @@ for case in range(CASES):
     try:
         mesher = relight.vtkRadiosityMesher()
         mesher.SetPatchSize(scale * pick(0.5, 1.0, 5.0, 1e-9, 1e9))
-        mesher.SetElementSize(scale * pick(0.25, 0.5, 0.05))
+        mesher.SetElementSize(scale * pick(0.25, 0.5, 0.05, 2.0))  # 2.0: coarse, one element per patch
         if os.environ.get("RELIGHT_FUZZ_VERBOSE"):
             print(f"  mesher {mesher.GetPatchSize():.3g} {mesher.GetElementSize():.3g}", flush=True)
         meshed = run_stage(mesher, scene, "mesher", stats)
@@ -186,9 +227,16 @@ for case in range(CASES):
         solver.SetSeparateDirect(rng.random() < 0.3)
         solver.SetSolutionMode(rng.randint(0, 2))
         solver.SetTimeBudget(5.0)
-        solved = run_stage(solver, meshed if meshed is not None and rng.random() < 0.8 else scene, "solver", stats)
+        source = meshed if meshed is not None and rng.random() < 0.8 else scene
+        solved = run_stage(solver, source, "solver", stats)
         if solved is None:
             continue
+        unshot = solved.GetFieldData().GetArray("UnshotHistory")
+        history = [unshot.GetValue(i) for i in range(unshot.GetNumberOfTuples())] if unshot else []
+        if any(b > a * (1 + 1e-9) for a, b in zip(history, history[1:])):
+            raise AssertionError("unshot energy rose during the solve")
+        if solver.GetFormFactorMethod() == 0 and solver.GetTimeBudget() > 0 and rng.random() < 0.3:
+            check_placement(solver, source, solved, stats)
         rl = relight.vtkRadiosityRelight()
         for i in range(rng.randint(0, 4)):
             rl.SetLightColor(rng.randint(-1, 4), abs(number(2.0, False)), abs(number(2.0, False)), 1.0)
