@@ -297,6 +297,19 @@ int vtkLightTaggedRadiosity::RequestData(
     }
 
     output->ShallowCopy(input);
+    if (solver.SplitPatches() > 0)
+    {
+      // Patches cut by a wall were split for the solve; say so in PatchId, so that the
+      // relight filter (moving lights) groups elements as the solver did.
+      vtkNew<vtkIntArray> patchIds;
+      patchIds->SetName("PatchId");
+      patchIds->SetNumberOfTuples(static_cast<vtkIdType>(mesh.NumberOfPolygons()));
+      const std::vector<int>& patchOf = solver.Geometry().elementPatch;
+      std::copy(patchOf.begin(), patchOf.end(), patchIds->GetPointer(0));
+      output->GetCellData()->AddArray(patchIds);
+      vtkLogF(INFO, "LightTaggedRadiosity: %d patches split where a surface stands across them",
+        solver.SplitPatches());
+    }
     const bool combined = mode == radiosity::SolutionMode::StandardCombined;
     const std::vector<std::string> names = combined
       ? std::vector<std::string>{ "" }

@@ -46,6 +46,7 @@ RadiositySolver::RadiositySolver(const SceneMesh& mesh)
   Error_ = Rays_->Error();
   if (Error_.empty())
   {
+    SplitPatches_ = SplitSeparatedPatches(*Rays_, Mesh, Geometry_);
     MarkEnclosed(*Rays_, Mesh, Geometry_);
   }
 }

@@ -169,6 +169,9 @@ public:
   const std::string& Error() const;
   const SceneGeometry& Geometry() const { return Geometry_; }
   const Visibility& Rays() const { return *Rays_; }
+  /// Patches split because their parts cannot see each other (see SplitSeparatedPatches);
+  /// then Geometry().elementPatch, not the mesh's PatchId, is the patch of each element.
+  int SplitPatches() const { return SplitPatches_; }
 
   /// Solves `solutions` independent systems at once. `emission[e * solutions + m]` is the
   /// exitance of element e in solution m. Transport (form factors, links, rays) is computed
@@ -181,6 +184,7 @@ private:
   SceneGeometry Geometry_;
   std::unique_ptr<Visibility> Rays_;
   std::string Error_;
+  int SplitPatches_ = 0;
 };
 
 } // namespace radiosity

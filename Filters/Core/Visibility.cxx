@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <vector>
 
 namespace radiosity
@@ -191,6 +192,92 @@ int BlockedProbes(const Visibility& rays, const SceneMesh& mesh, const SceneGeom
   return blocked;
 }
 } // namespace
+
+namespace
+{
+int Root(std::vector<int>& parent, int i)
+{
+  while (parent[i] != i)
+  {
+    i = parent[i] = parent[parent[i]];
+  }
+  return i;
+}
+} // namespace
+
+int SplitSeparatedPatches(const Visibility& rays, const SceneMesh& mesh, SceneGeometry& g)
+{
+  const int n = mesh.NumberOfPolygons();
+  const double lift = 1e-6 * g.sceneDiagonal;
+  // Elements of one patch that share an edge are joined when they see each other just
+  // above the surface; a wall standing on the patch keeps its two sides apart.
+  // (edge, element) pairs sorted by edge: a map of a million elements' edges is slow.
+  const long long points = static_cast<long long>(mesh.points.size());
+  std::vector<std::pair<long long, int>> edges;
+  edges.reserve(mesh.connectivity.size());
+  for (int e = 0; e < n; ++e)
+  {
+    const int* ids = mesh.Polygon(e);
+    for (int v = 0; v < mesh.PolygonSize(e); ++v)
+    {
+      const long long a = ids[v], b = ids[(v + 1) % mesh.PolygonSize(e)];
+      edges.push_back({ std::min(a, b) * points + std::max(a, b), e });
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  std::vector<int> parent(n);
+  for (int e = 0; e < n; ++e)
+  {
+    parent[e] = e;
+  }
+  for (size_t i = 0; i + 1 < edges.size(); ++i)
+  {
+    const int a = edges[i].second, b = edges[i + 1].second;
+    if (edges[i].first == edges[i + 1].first && g.elementPatch[a] == g.elementPatch[b] &&
+      Root(parent, a) != Root(parent, b) &&
+      !rays.Occluded(g.centroid[a] + g.normal[a] * lift, g.centroid[b] + g.normal[b] * lift, 1e-6))
+    {
+      parent[Root(parent, a)] = Root(parent, b);
+    }
+  }
+  // The group of a patch's first element keeps the patch; any other becomes a new one.
+  int added = 0;
+  const size_t patches = g.patchElements.size();
+  for (size_t p = 0; p < patches; ++p)
+  {
+    std::map<int, std::vector<int>> groups;
+    for (int e : g.patchElements[p])
+    {
+      groups[Root(parent, e)].push_back(e);
+    }
+    if (groups.size() < 2)
+    {
+      continue;
+    }
+    const int keep = Root(parent, g.patchElements[p][0]);
+    g.patchElements[p] = groups[keep];
+    for (auto& group : groups)
+    {
+      if (group.first == keep)
+      {
+        continue;
+      }
+      g.patchElements.push_back(group.second);
+      ++added;
+    }
+  }
+  g.patchArea.assign(g.patchElements.size(), 0.0);
+  for (size_t p = 0; p < g.patchElements.size(); ++p)
+  {
+    for (int e : g.patchElements[p])
+    {
+      g.elementPatch[e] = static_cast<int>(p);
+      g.patchArea[p] += g.area[e];
+    }
+  }
+  g.patchOpenArea = g.patchArea;
+  return added;
+}
 
 void MarkEnclosed(const Visibility& rays, const SceneMesh& mesh, SceneGeometry& g)
 {

@@ -44,6 +44,12 @@ private:
   std::unique_ptr<Internals> Impl;
 };
 
+/// Splits every patch whose elements fall into parts that cannot see each other (a wall
+/// standing across a floor patch): otherwise light received on one side would be shot
+/// again from the other, through the wall. Returns the number of patches added (new ones
+/// get the next indices). Call before MarkEnclosed.
+int SplitSeparatedPatches(const Visibility& rays, const SceneMesh& mesh, SceneGeometry& geometry);
+
 /// Marks the elements that every one of 17 rays over their hemisphere (the normal, and 8
 /// each at 45 and 80 degrees from it) finds closed off: each ray hits a back face (it
 /// started inside an object) or a surface touching the element. Such an element can

@@ -203,6 +203,27 @@ try:
 except RuntimeError as error:
     check(str(error).startswith("Cannot mesh: cell 1 crosses itself"), f"relight.solve raises: '{error}'")
 
+# --- a wall across a room: light does not pass through it --------------------------------------
+# The partition stands across floor, ceiling and side-wall patches (0.5 m patches, wall at
+# x = 1.75): a patch spanning both sides had shot light received on one side from the other
+# (dark side at 1.7e-3 of the lit side). Such patches are now split where their parts cannot
+# see each other. What is left is shadow rays grazing the wall's foot (progressive, 4e-6).
+W, D, H, X = 4.0, 3.0, 2.5, 1.75
+walls = [[(0, 0, 0), (W, 0, 0), (W, D, 0), (0, D, 0)], [(0, 0, H), (0, D, H), (W, D, H), (W, 0, H)],
+         [(0, 0, 0), (0, 0, H), (W, 0, H), (W, 0, 0)], [(0, D, 0), (W, D, 0), (W, D, H), (0, D, H)],
+         [(0, 0, 0), (0, D, 0), (0, D, H), (0, 0, H)], [(W, 0, 0), (W, 0, H), (W, D, H), (W, D, 0)],
+         [(X, 0, 0), (X, 0, H), (X, D, H), (X, D, 0)], [(X, 0, 0), (X, D, 0), (X, D, H), (X, 0, H)],
+         [(1.0, 1.3, 2.4), (1.0, 1.7, 2.4), (0.6, 1.7, 2.4), (0.6, 1.3, 2.4)]]
+divided = relight.make_scene(walls, [(0.7,) * 3] * len(walls), [-1] * 8 + [0])
+for method, bound in ((2, 0.0), (1, 1e-5)):
+    out = relight.solve(divided, 0.5, 0.125, SolverMethod=method, ConvergenceThreshold=1e-6,
+                        MaximumShots=10**6).GetOutput()
+    b = relight.cell_array(out, "Radiosity_" + light_names(out)[0]).sum(axis=1)
+    x = relight.cell_centroids(out)[:, 0]
+    leak = b[x > X + 1e-6].max() / b[x < X - 1e-6].max()
+    check(leak <= bound, f"partition, {'hierarchical' if method == 2 else 'progressive'}: dark side at {leak:.1e} "
+                         f"of the lit side (at most {bound:g})")
+
 # --- the light schedule file: a real CSV reader --------------------------------------------------
 two = relight.make_scene([[(0, 0, 1), (0, 0.4, 1), (0.4, 0.4, 1), (0.4, 0, 1)], [(0.6, 0, 1), (0.6, 0.4, 1), (1, 0.4, 1), (1, 0, 1)],
                           [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)]],
