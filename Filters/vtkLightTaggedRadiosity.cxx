@@ -2,6 +2,7 @@
 #include "vtkRadiosityAdapter.h"
 
 #include "Effects.h"
+#include "LightChecks.h"
 #include "LightSolutions.h"
 #include "Memory.h"
 #include "PatchBasis.h"
@@ -241,6 +242,11 @@ int vtkLightTaggedRadiosity::RequestData(
     {
       vtkErrorMacro(<< "Cannot solve: " << solver.Error() << ".");
       return 0;
+    }
+    for (const std::string& warning : radiosity::CheckLights(
+           mesh, solver.Geometry(), solver.Rays(), vtkRadiosityAdapter::LightNames(input->GetFieldData(), lights)))
+    {
+      vtkWarningMacro(<< warning);
     }
     radiosity::SolverOptions options;
     options.Solver = static_cast<radiosity::SolverMethod>(this->SolverMethod);

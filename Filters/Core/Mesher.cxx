@@ -420,6 +420,53 @@ std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& of
 
 namespace
 {
+/// A polygon whose corners leave its plane by more than 0.1 % of its size is meshed as if
+/// flat: say so, with the worst one, so a twisted quad is not a silent surprise.
+void WarnAboutWarpedPolygons(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, const MesherOptions& options)
+{
+  int warped = 0, worst = -1;
+  double worstOffset = 0, worstRatio = 0;
+  for (size_t i = 0; i + 1 < offsets.size(); ++i)
+  {
+    std::vector<Vec3> loop;
+    for (int k = offsets[i]; k < offsets[i + 1]; ++k)
+    {
+      loop.push_back(points[connectivity[k]]);
+    }
+    if (loop.size() < 4)
+    {
+      continue;
+    }
+    const Vec3 n = Normalized(NewellVector(loop.data(), static_cast<int>(loop.size())));
+    const Vec3 c = PolygonCentroid(loop.data(), static_cast<int>(loop.size()));
+    double offset = 0, size = 0;
+    for (size_t v = 0; v < loop.size(); ++v)
+    {
+      offset = std::max(offset, std::fabs(Dot(n, loop[v] - c)));
+      size = std::max(size, Norm(loop[(v + 1) % loop.size()] - loop[v]));
+    }
+    if (offset > 1e-3 * size)
+    {
+      ++warped;
+      if (offset / size > worstRatio)
+      {
+        worst = static_cast<int>(i);
+        worstOffset = offset;
+        worstRatio = offset / size;
+      }
+    }
+  }
+  if (warped > 0 && options.Warning)
+  {
+    std::ostringstream text;
+    text << warped << " polygon(s) are not flat and are meshed as if they were; the worst, cell " << worst
+         << ", has a corner " << worstOffset << " off its plane (" << 100 * worstRatio
+         << " % of its size). Split them into triangles or flat polygons.";
+    options.Warning(text.str());
+  }
+}
+
 /// ElementSize, or the size ElementBudget calls for; says which, and warns on a huge mesh.
 double ChooseElementSize(const std::vector<Vec3>& points, const PairedPolygons& polygons, const MesherOptions& o)
 {
@@ -465,6 +512,7 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
       return "cell " + std::to_string(i) + " " + problem;
     }
   }
+  WarnAboutWarpedPolygons(points, offsets, connectivity, options);
   PairedPolygons polygons;
   if (options.MergeTriangles)
   {

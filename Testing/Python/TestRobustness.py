@@ -224,6 +224,34 @@ for method, bound in ((2, 0.0), (1, 1e-5)):
     check(leak <= bound, f"partition, {'hierarchical' if method == 2 else 'progressive'}: dark side at {leak:.1e} "
                          f"of the lit side (at most {bound:g})")
 
+# --- lamps that solve, but not as meant, are reported ------------------------------------------
+def warnings_for(polygons, ids):
+    mesher = relight.vtkRadiosityMesher()
+    mesher.SetInputData(relight.make_scene(polygons, [(0.7,) * 3] * len(polygons), ids))
+    mesher.SetPatchSize(0.5)
+    mesher.SetElementSize(0.25)
+    solver = relight.vtkLightTaggedRadiosity()
+    solver.SetInputConnection(mesher.GetOutputPort())
+    solver.SetMaximumShots(50)
+    caught = [relight.ErrorCatcher(mesher), relight.ErrorCatcher(solver)]
+    solver.Update()
+    return " | ".join(w.strip().splitlines()[-1] for c in caught for w in c.warnings)
+
+
+box = walls[:6]
+down = [(0.6, 1.3, 2.4), (0.6, 1.7, 2.4), (1.0, 1.7, 2.4), (1.0, 1.3, 2.4)]  # faces -z, 10 cm under the ceiling
+clean = warnings_for(box + [down], [-1] * 6 + [0])
+check("Light0" not in clean and "not flat" not in clean, f"a proper lamp: no warning ({clean or 'none'})")
+upside = [(x, y, H - 5e-4) for x, y, _ in reversed(down)]  # faces +z, 0.5 mm under the ceiling
+found = warnings_for(box + [upside], [-1] * 6 + [0])
+check("Light 'Light0' faces a surface closer than" in found, f"a lamp wound the wrong way: {found}")
+inside = [(x, y, H) for x, y, _ in down]  # in the ceiling's plane, facing down like it
+found = warnings_for(box + [inside], [-1] * 6 + [0])
+check("Light 'Light0' lies in the plane of a surface" in found, f"a lamp drawn in the ceiling: {found}")
+twisted = [box[0][0], box[0][1], (W, D, 0.1), box[0][3]]  # a floor corner 10 cm up
+found = warnings_for([twisted] + box[1:] + [down], [-1] * 6 + [0])
+check("are not flat" in found and "cell 0" in found, f"a twisted floor: {found}")
+
 # --- the light schedule file: a real CSV reader --------------------------------------------------
 two = relight.make_scene([[(0, 0, 1), (0, 0.4, 1), (0.4, 0.4, 1), (0.4, 0, 1)], [(0.6, 0, 1), (0.6, 0.4, 1), (1, 0.4, 1), (1, 0, 1)],
                           [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)]],
