@@ -39,7 +39,7 @@ for name in names:
     settings += [name, "1", "1", "1", "25", "1"]
 relit.LightSettings = settings
 # To animate, add keyframes (they take precedence over Light Settings for their lights):
-# relit.LightSchedule = ["0", "WarmWhite", "1", "0.8", "0.6", "5", "1",
+# relit.ScheduleEntries = ["0", "WarmWhite", "1", "0.8", "0.6", "5", "1",
 #                        "4", "WarmWhite", "1", "0.8", "0.6", "120", "1"]
 
 view = GetActiveViewOrCreate("RenderView")

@@ -84,6 +84,16 @@ def main(argv):
     mode = solver.GetProperty("SolutionMode").GetData()
     check(mode == "LightTagged", "default SolutionMode is %r, expected 'LightTagged'" % (mode,))
     relight = RadiosityRelight(registrationName="Relight", Input=solver)
+    # The README promises the same names in ParaView's Python as the C++ setters: pvbatch
+    # names properties by their labels, so each label must spell its property's name.
+    for proxy in (mesher, solver, relight):
+        iterator = proxy.SMProxy.NewPropertyIterator()
+        iterator.Begin()
+        while not iterator.IsAtEnd():
+            name = iterator.GetKey()
+            check(name in ("Input",) or hasattr(proxy, name),
+                  f"{proxy.SMProxy.GetXMLName()}.{name} is not reachable under that name from Python")
+            iterator.Next()
     # One row of the repeatable string-vector property:
     # Name, Red, Green, Blue, Intensity, Enabled (all passed as strings).
     relight.LightSettings = [LIGHT] + [repr(float(c)) for c in COLOUR] + [
@@ -104,7 +114,7 @@ def main(argv):
 
     # --- a light schedule makes the filter time-aware -------------------------
     schedule = RadiosityRelight(Input=solver)
-    schedule.LightSchedule = ["0", LIGHT, "1", "1", "1", "1", "1", "4", LIGHT, "1", "0", "0", "2", "1"]
+    schedule.ScheduleEntries = ["0", LIGHT, "1", "1", "1", "1", "1", "4", LIGHT, "1", "0", "0", "2", "1"]
     schedule.UpdatePipelineInformation()
     check(list(schedule.TimestepValues) == [0.0, 4.0],
           "schedule time steps are %r, expected [0, 4]" % (list(schedule.TimestepValues),))
