@@ -143,7 +143,9 @@ std::vector<double> PatchFormFactors(const SceneMesh& coarse, const RadiositySol
     factors.Compute(static_cast<int>(compact), options.Method, samples, 0, column);
     for (int c = 0; c < n; ++c)
     {
-      F[static_cast<size_t>(c) * P + q] = g.enclosed[c] ? 0.0 : column[c];
+      // += : the coarse solver may split a patch into pieces (SplitSeparatedPatches, its
+      // polygons share no points); the factor to the patch is the sum over its pieces.
+      F[static_cast<size_t>(c) * P + q] += g.enclosed[c] ? 0.0 : column[c];
     }
     if (options.Progress && !options.Progress(0.5 * compact / g.patchElements.size()))
     {
