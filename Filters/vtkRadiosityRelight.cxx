@@ -602,6 +602,20 @@ void vtkRadiosityRelight::PrintSelf(ostream& os, vtkIndent indent)
   }
 }
 
+/// The first item of a 3-component result that is not finite, or -1.
+vtkIdType FirstNonFinite(vtkFloatArray* values)
+{
+  const float* v = values->GetPointer(0);
+  for (vtkIdType i = 0; i < 3 * values->GetNumberOfTuples(); ++i)
+  {
+    if (!std::isfinite(v[i]))
+    {
+      return i / 3;
+    }
+  }
+  return -1;
+}
+
 namespace
 {
 /// Combines the arrays of one attribute set; false with a message on a bad array.
@@ -653,31 +667,14 @@ bool Combine(vtkFieldData* data, const std::vector<std::string>& arrays,
   {
     radiosity::CombineLights(doubles, weights, static_cast<size_t>(tuples), out->GetPointer(0), &Pool());
   }
-  const float* values = out->GetPointer(0);
-  for (vtkIdType i = 0; i < 3 * tuples; ++i)
+  const vtkIdType bad = FirstNonFinite(out);
+  if (bad >= 0)
   {
-    if (!std::isfinite(values[i]))
-    {
-      error = "the combination is not finite at item " + std::to_string(i / 3) +
-        "; a solution array or a light setting holds NaN or infinity";
-      return false;
-    }
+    error = "the combination is not finite at item " + std::to_string(bad) +
+      "; a solution array or a light setting holds NaN or infinity";
+    return false;
   }
   return true;
-}
-
-/// The first item of a 3-component result that is not finite, or -1.
-vtkIdType FirstNonFinite(vtkFloatArray* values)
-{
-  const float* v = values->GetPointer(0);
-  for (vtkIdType i = 0; i < 3 * values->GetNumberOfTuples(); ++i)
-  {
-    if (!std::isfinite(v[i]))
-    {
-      return i / 3;
-    }
-  }
-  return -1;
 }
 
 vtkSmartPointer<vtkUnsignedCharArray> Display(vtkFloatArray* linear, double exposure)
@@ -700,6 +697,12 @@ int vtkRadiosityRelight::RequestData(
     vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
     vtkPolyData* output = vtkPolyData::GetData(outputVector);
     this->Resolved.clear();
+    if (!std::isfinite(this->Exposure) || !std::isfinite(this->IndirectScale))
+    {
+      vtkErrorMacro(<< "Cannot relight: Exposure (" << this->Exposure << ") and IndirectScale ("
+                    << this->IndirectScale << ") must be finite.");
+      return 0;
+    }
     vtkInformation* outInfo = outputVector->GetInformationObject(0);
     double time = 0;
     if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
@@ -912,13 +915,15 @@ int vtkRadiosityRelight::RequestData(
     this->LastMovingSeconds = 0;
     vtkPolyData* movers = this->GetNumberOfInputConnections(1) ? vtkPolyData::GetData(inputVector[1], 0) : nullptr;
     vtkPolyData* dynamic = this->GetNumberOfInputConnections(2) ? vtkPolyData::GetData(inputVector[2], 0) : nullptr;
-    if (movers && movers->GetNumberOfPoints() > 0 &&
-      !this->AddMovingLights(input, movers, dynamic, pointResult, cellResult, error))
+    const bool moving = movers && movers->GetNumberOfPoints() > 0;
+    if (moving && !this->AddMovingLights(input, movers, dynamic, pointResult, cellResult, error))
     {
       vtkErrorMacro(<< "Cannot relight: " << error << ".");
       return 0;
     }
-    for (vtkFloatArray* result : { hasPoints ? pointResult.Get() : nullptr, hasCells ? cellResult.Get() : nullptr })
+    // Combine checked the static part; moving lights may still overflow the sum.
+    for (vtkFloatArray* result : { hasPoints && moving ? pointResult.Get() : nullptr,
+           hasCells && moving ? cellResult.Get() : nullptr })
     {
       const vtkIdType bad = result ? FirstNonFinite(result) : -1;
       if (bad >= 0)
@@ -927,12 +932,6 @@ int vtkRadiosityRelight::RequestData(
                       << " (moving lights included); a light is too strong for float.");
         return 0;
       }
-    }
-    if (!std::isfinite(this->Exposure) || !std::isfinite(this->IndirectScale))
-    {
-      vtkErrorMacro(<< "Cannot relight: Exposure (" << this->Exposure << ") and IndirectScale ("
-                    << this->IndirectScale << ") must be finite.");
-      return 0;
     }
 
     output->ShallowCopy(input);

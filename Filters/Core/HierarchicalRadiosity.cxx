@@ -351,11 +351,7 @@ void Shoot(const SceneMesh& mesh, const SceneGeometry& g, const Visibility& rays
     if (emitting)
     {
       // Direct light: every element, per-element shadow rays, nothing kept.
-      factors.resize(state.Elements);
-      stats.RayCount += estimator.Compute(shooter, FormFactorMethod::Analytic, samples, stats.Shots, factors);
-      stats.FormFactorCount += state.Elements;
-      estimator.Conserve(shooter, factors);
-      state.EndShot(shooter, DistributeToElements(state, pool, factors));
+      ShootToElements(state, pool, estimator, shooter, FormFactorMethod::Analytic, samples, stats, factors);
       continue;
     }
     if (!links[shooter].Built)

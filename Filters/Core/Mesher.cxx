@@ -147,11 +147,7 @@ double CountElements(const std::vector<Vec3>& points, const std::vector<int>& of
   double total = 0;
   for (size_t i = 0; i + 1 < offsets.size(); ++i)
   {
-    std::vector<Vec3> loop;
-    for (int k = offsets[i]; k < offsets[i + 1]; ++k)
-    {
-      loop.push_back(points[connectivity[k]]);
-    }
+    const std::vector<Vec3> loop = GatherLoop(points, offsets, connectivity, static_cast<int>(i));
     if (loop.size() < 3)
     {
       continue;
@@ -197,6 +193,11 @@ namespace
 template <typename Map, typename Key>
 typename Map::iterator FindNearbyKey(Map& map, const Key& key)
 {
+  const auto exact = map.find(key); // the usual case: stored keys differ by 2 or more
+  if (exact != map.end())
+  {
+    return exact;
+  }
   for (int a = -1; a <= 1; ++a)
   {
     for (int b = -1; b <= 1; ++b)
@@ -257,11 +258,7 @@ std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& of
   double estimate = 0;
   for (int i = 0; i < count; ++i)
   {
-    std::vector<Vec3> loop;
-    for (int k = offsets[i]; k < offsets[i + 1]; ++k)
-    {
-      loop.push_back(points[connectivity[k]]);
-    }
+    const std::vector<Vec3> loop = GatherLoop(points, offsets, connectivity, static_cast<int>(i));
     estimate += EstimateElements(loop, options);
   }
   if (!(estimate <= static_cast<double>(options.MaximumElements)))
@@ -429,11 +426,7 @@ void WarnAboutWarpedPolygons(const std::vector<Vec3>& points, const std::vector<
   double worstOffset = 0, worstRatio = 0;
   for (size_t i = 0; i + 1 < offsets.size(); ++i)
   {
-    std::vector<Vec3> loop;
-    for (int k = offsets[i]; k < offsets[i + 1]; ++k)
-    {
-      loop.push_back(points[connectivity[k]]);
-    }
+    const std::vector<Vec3> loop = GatherLoop(points, offsets, connectivity, static_cast<int>(i));
     if (loop.size() < 4)
     {
       continue;
@@ -501,11 +494,7 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
   // would be blamed on one of its elements by the solver.
   for (size_t i = 0; i + 1 < offsets.size(); ++i)
   {
-    std::vector<Vec3> loop;
-    for (int k = offsets[i]; k < offsets[i + 1]; ++k)
-    {
-      loop.push_back(points[connectivity[k]]);
-    }
+    const std::vector<Vec3> loop = GatherLoop(points, offsets, connectivity, static_cast<int>(i));
     const std::string problem = loop.size() < 3 ? std::string() : PolygonProblem(loop.data(), static_cast<int>(loop.size()));
     if (!problem.empty())
     {

@@ -75,7 +75,6 @@ long long MovingLightShader::Direct(
       Vec3 irradiance;
       for (const MovingLight& light : lights)
       {
-        const double near = NearFieldFactor(Scene, g, e, light);
         const Vec3 d = light.Position - x;
         const double r2 = Dot(d, d);
         const double cosReceiver = Dot(g.normal[e], d);
@@ -99,6 +98,7 @@ long long MovingLightShader::Direct(
         {
           continue;
         }
+        const double near = NearFieldFactor(Scene, g, e, light);
         const double scale = intensity * (near > 0 ? near : (cosReceiver / r) / r2);
         irradiance += light.Color * scale;
       }

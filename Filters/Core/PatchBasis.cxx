@@ -129,11 +129,10 @@ SceneMesh PatchLevelMesh(const SceneMesh& mesh, const SceneGeometry& g, const Pa
 /// visibility. A row summing above one (a receiver point close to a large patch, where the
 /// point rule overestimates) is scaled to one: an enclosure cannot see more than all of it.
 std::vector<double> PatchFormFactors(const SceneMesh& coarse, const RadiositySolver& solver, int P,
-  const SolverOptions& options, std::string& error)
+  const SolverOptions& options, const WorkerPool& pool, std::string& error)
 {
   const SceneGeometry& g = solver.Geometry();
   const int n = coarse.NumberOfPolygons();
-  WorkerPool pool(options.Threads);
   ShooterFormFactors factors(coarse, g, solver.Rays(), pool, options.Visibility == EffectMode::Auto);
   const int samples = options.Visibility == EffectMode::Off ? 0 : options.Samples;
   std::vector<double> F(static_cast<size_t>(n) * P, 0.0), column(n);
@@ -204,7 +203,7 @@ void InvertDominant(std::vector<double>& M, int P, const WorkerPool& pool)
 /// F(c -> q), patch radiosities are B = (I - K)^-1 E, and a unit emitter q gives column q,
 /// its own emission removed. One inversion per channel replaces P progressive solves.
 std::vector<Vec3> SolvePatchValues(const SceneMesh& coarse, int P, const SolverOptions& options,
-  SolverStatistics& stats, std::string& error)
+  const WorkerPool& pool, SolverStatistics& stats, std::string& error)
 {
   RadiositySolver solver(coarse);
   if (!solver.Error().empty())
@@ -212,7 +211,7 @@ std::vector<Vec3> SolvePatchValues(const SceneMesh& coarse, int P, const SolverO
     error = "patch-level basis: " + solver.Error();
     return {};
   }
-  const std::vector<double> F = PatchFormFactors(coarse, solver, P, options, error);
+  const std::vector<double> F = PatchFormFactors(coarse, solver, P, options, pool, error);
   if (!error.empty())
   {
     return {};
@@ -224,7 +223,6 @@ std::vector<Vec3> SolvePatchValues(const SceneMesh& coarse, int P, const SolverO
     area[coarse.patchId[c]] += g.area[c];
   }
   std::vector<Vec3> values(static_cast<size_t>(P) * P);
-  WorkerPool pool(options.Threads);
   for (int channel = 0; channel < 3; ++channel)
   {
     std::vector<double> M(static_cast<size_t>(P) * P, 0.0);
@@ -358,19 +356,25 @@ void FillElementWeights(const SceneGeometry& g, const PatchNodes& nodes, PatchBa
   }
 }
 
+/// The patch nodes; the outlines they come from are freed before the coarse solve.
+PatchNodes NodesOf(const SceneMesh& mesh, const RadiositySolver& solver, const WorkerPool& pool)
+{
+  const ShooterFormFactors outlines(mesh, solver.Geometry(), solver.Rays(), pool);
+  return PatchNodes(solver.Geometry(), outlines.PatchLoops(), outlines.Centres());
+}
+
 PatchBasis NodeBasis(const RadiositySolver& solver, const SceneMesh& mesh, const SolverOptions& options,
   SolverStatistics& stats)
 {
   const SceneGeometry& g = solver.Geometry();
-  WorkerPool pool(options.Threads);
-  const ShooterFormFactors outlines(mesh, g, solver.Rays(), pool);
-  const PatchNodes nodes(g, outlines.PatchLoops(), outlines.Centres());
+  const WorkerPool pool(options.Threads);
+  const PatchNodes nodes = NodesOf(mesh, solver, pool);
   PatchBasis basis;
   basis.Patches = static_cast<int>(g.patchElements.size());
   basis.Receivers = nodes.Count();
   std::vector<char> whole;
   const SceneMesh coarse = PatchLevelMesh(mesh, g, nodes, whole);
-  const std::vector<Vec3> values = SolvePatchValues(coarse, basis.Patches, options, stats, basis.Error);
+  const std::vector<Vec3> values = SolvePatchValues(coarse, basis.Patches, options, pool, stats, basis.Error);
   if (!basis.Error.empty())
   {
     return basis;

@@ -253,6 +253,17 @@ bool CrossesItself(const Vec3* loop, int count, const Vec3& newell, double exten
 }
 } // namespace
 
+std::vector<Vec3> GatherLoop(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, int i)
+{
+  std::vector<Vec3> loop;
+  for (int k = offsets[i]; k < offsets[i + 1]; ++k)
+  {
+    loop.push_back(points[connectivity[k]]);
+  }
+  return loop;
+}
+
 std::string PolygonProblem(const Vec3* loop, int count)
 {
   double extent = 0;

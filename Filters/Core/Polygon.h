@@ -45,6 +45,10 @@ std::vector<int> Triangulate(const Vec3* loop, int count);
 /// empty unless they form exactly one loop.
 std::vector<Vec3> ChainLoop(const std::vector<Vec3>& segments);
 
+/// Polygon i's corners, from flat offsets/connectivity arrays (as SceneMesh holds them).
+std::vector<Vec3> GatherLoop(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, int i);
+
 /// True if every corner turns the same way about the polygon's normal.
 bool IsConvex(const Vec3* loop, int count);
 

@@ -17,22 +17,17 @@ void Shoot(const SceneMesh& mesh, const SceneGeometry& g, const Visibility& rays
 {
   ShootingState<Channel> state(mesh, g, emission, L, options, start, out);
   SolverStatistics& stats = out.Statistics;
-  const int n = state.Elements;
   WorkerPool pool(options.Threads);
   const bool cull = options.Visibility == EffectMode::Auto && options.Method == FormFactorMethod::Analytic;
   ShooterFormFactors estimator(mesh, g, rays, pool, cull);
   const int samples =
     options.Visibility == EffectMode::Off && options.Method == FormFactorMethod::Analytic ? 0 : options.Samples;
-  std::vector<double> factors(n);
+  std::vector<double> factors;
   while (state.Continue())
   {
     const int shooter = state.PickShooter();
-    // The expensive part, done once per shot whatever the number of solutions.
-    stats.RayCount += estimator.Compute(shooter, options.Method, samples, stats.Shots, factors);
-    stats.FormFactorCount += n;
-    estimator.Conserve(shooter, factors);
     state.TakeShot(shooter);
-    state.EndShot(shooter, DistributeToElements(state, pool, factors));
+    ShootToElements(state, pool, estimator, shooter, options.Method, samples, stats, factors);
   }
   state.Finish(estimator);
 }

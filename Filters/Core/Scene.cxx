@@ -24,13 +24,7 @@ bool Finite(const Vec3& v)
 
 std::vector<Vec3> Loop(const SceneMesh& mesh, int i)
 {
-  std::vector<Vec3> loop;
-  const int* ids = mesh.Polygon(i);
-  for (int v = 0; v < mesh.PolygonSize(i); ++v)
-  {
-    loop.push_back(mesh.points[ids[v]]);
-  }
-  return loop;
+  return GatherLoop(mesh.points, mesh.offsets, mesh.connectivity, i);
 }
 } // namespace
 

@@ -470,6 +470,21 @@ double DistributeToElements(ShootingState<Channel>& state, const WorkerPool& poo
   return received;
 }
 
+/// One shot from `shooter` to every element (TakeShot done): factors with their rays,
+/// scaled so the shot delivers no more power than it has (exactly that in a closed scene),
+/// then distributed to all solutions and booked.
+template <typename Channel>
+void ShootToElements(ShootingState<Channel>& state, const WorkerPool& pool, ShooterFormFactors& estimator,
+  int shooter, FormFactorMethod method, int samples, SolverStatistics& stats, std::vector<double>& factors)
+{
+  factors.resize(state.Elements);
+  // The expensive part, done once per shot whatever the number of solutions.
+  stats.RayCount += estimator.Compute(shooter, method, samples, stats.Shots, factors);
+  stats.FormFactorCount += state.Elements;
+  estimator.Conserve(shooter, factors);
+  state.EndShot(shooter, DistributeToElements(state, pool, factors));
+}
+
 } // namespace radiosity
 
 #endif

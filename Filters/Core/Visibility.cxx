@@ -266,6 +266,10 @@ int SplitSeparatedPatches(const Visibility& rays, const SceneMesh& mesh, SceneGe
       ++added;
     }
   }
+  if (added == 0)
+  {
+    return 0;
+  }
   g.patchArea.assign(g.patchElements.size(), 0.0);
   for (size_t p = 0; p < g.patchElements.size(); ++p)
   {
@@ -275,8 +279,7 @@ int SplitSeparatedPatches(const Visibility& rays, const SceneMesh& mesh, SceneGe
       g.patchArea[p] += g.area[e];
     }
   }
-  g.patchOpenArea = g.patchArea;
-  return added;
+  return added; // MarkEnclosed derives patchOpenArea from these
 }
 
 void MarkEnclosed(const Visibility& rays, const SceneMesh& mesh, SceneGeometry& g)
