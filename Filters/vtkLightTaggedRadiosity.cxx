@@ -1,4 +1,5 @@
 #include "vtkLightTaggedRadiosity.h"
+#include "vtkRadiosityAbort.h"
 #include "vtkRadiosityAdapter.h"
 
 #include "Effects.h"
@@ -111,6 +112,20 @@ std::string DescribeMethod(const radiosity::SolverStatistics& stats)
   return text;
 }
 
+/// How the solve ended (field array SolverStatus); an aborted result is partial.
+std::string DescribeStatus(const radiosity::SolverStatistics& stats, bool aborted)
+{
+  if (aborted || stats.Aborted)
+  {
+    return "aborted";
+  }
+  if (stats.Converged)
+  {
+    return "converged";
+  }
+  return stats.OutOfTime ? "stopped at TimeBudget" : "stopped at MaximumShots";
+}
+
 /// Solves the moving-light basis and adds its arrays (see PatchBasisLevel); false, with
 /// the error reported, when the basis cannot be made.
 bool AddPatchBasis(vtkAlgorithm* self, int level, const radiosity::RadiositySolver& solver,
@@ -120,6 +135,12 @@ bool AddPatchBasis(vtkAlgorithm* self, int level, const radiosity::RadiositySolv
   radiosity::SolverStatistics stats;
   const radiosity::PatchBasis basis =
     radiosity::SolvePatchBasis(solver, mesh, options, static_cast<radiosity::BasisLevel>(level), stats);
+  if (stats.Aborted)
+  {
+    vtkWarningWithObjectMacro(self, << "Moving-light basis aborted: the output has the light "
+                                    << "solutions but no basis.");
+    return true;
+  }
   if (!basis.Error.empty())
   {
     vtkErrorWithObjectMacro(self, << "Cannot solve the moving-light basis: " << basis.Error);
@@ -187,7 +208,8 @@ void AddColumn(vtkTable* table, const std::string& name, const std::vector<doubl
 int vtkLightTaggedRadiosity::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  return vtkRadiosityAdapter::Guarded(this, vtkPolyData::GetData(outputVector, 0), [&]() -> int {
+  vtkTable::GetData(outputVector, 1)->Initialize();
+  return vtkRadiosityAdapter::Guarded(this, vtkPolyData::GetData(inputVector[0]), vtkPolyData::GetData(outputVector, 0), [&]() -> int {
     vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
     vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
     vtkTable* history = vtkTable::GetData(outputVector, 1);
@@ -262,9 +284,10 @@ int vtkLightTaggedRadiosity::RequestData(
     options.Interreflection = effect(this->InterreflectionEffect);
     options.Color = effect(this->ColorEffect);
     options.ConvergedSolutions = effect(this->ConvergedLightsEffect);
-    options.Progress = [this](double f) {
+    const vtkRadiosityAbortWatch abort(this);
+    options.Progress = [this, abort](double f) {
       this->UpdateProgress(f);
-      return !this->GetAbortExecute();
+      return !abort.Stop();
     };
     const auto mode = static_cast<radiosity::SolutionMode>(this->SolutionMode);
     const radiosity::Solution result =
@@ -388,6 +411,10 @@ int vtkLightTaggedRadiosity::RequestData(
     methodArray->SetName("SolverMethod");
     methodArray->InsertNextValue(method);
     fields->AddArray(methodArray);
+    vtkNew<vtkStringArray> status;
+    status->SetName("SolverStatus");
+    status->InsertNextValue(DescribeStatus(stats, abort.Stop()));
+    fields->AddArray(status);
     vtkLogF(INFO, "LightTaggedRadiosity: %s; %d shots, %.3f s; %s", method.c_str(), stats.Shots,
       this->LastSolveSeconds, radiosity::SummarizeEffects(effects).c_str());
 

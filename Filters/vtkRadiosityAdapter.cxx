@@ -5,6 +5,8 @@
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkStringArray.h"
@@ -183,12 +185,44 @@ std::vector<std::string> LightNames(vtkFieldData* fields, int count)
 }
 
 
-int Guarded(vtkAlgorithm* self, vtkPolyData* output, const std::function<int()>& work)
+bool FailedUpstream(vtkDataObject* input)
 {
+  return input && input->GetFieldData()->GetAbstractArray(FailureMarker) != nullptr;
+}
+
+namespace
+{
+/// Empties `output` and marks it, so that filters downstream stay quiet instead of
+/// repeating the error in their own words.
+void MarkFailed(vtkPolyData* output)
+{
+  if (!output)
+  {
+    return;
+  }
+  output->Initialize();
+  vtkNew<vtkIntArray> marker;
+  marker->SetName(FailureMarker);
+  marker->InsertNextValue(1);
+  output->GetFieldData()->AddArray(marker);
+}
+}
+
+int Guarded(vtkAlgorithm* self, vtkDataObject* input, vtkPolyData* output,
+  const std::function<int()>& work)
+{
+  if (FailedUpstream(input))
+  {
+    MarkFailed(output);
+    return 1;
+  }
   std::string failure;
   try
   {
-    return work();
+    if (work())
+    {
+      return 1;
+    }
   }
   catch (const std::bad_alloc&)
   {
@@ -198,12 +232,14 @@ int Guarded(vtkAlgorithm* self, vtkPolyData* output, const std::function<int()>&
   {
     failure = std::string("internal error: ") + e.what();
   }
-  vtkErrorWithObjectMacro(self, << "Failed: " << failure << ".");
-  if (output)
+  if (!failure.empty())
   {
-    output->Initialize();
+    vtkErrorWithObjectMacro(self, << "Failed: " << failure << ".");
   }
-  return 0;
+  // The filter has said what went wrong; succeeding with an empty, marked output keeps
+  // the executive from adding its own request dump to the message.
+  MarkFailed(output);
+  return 1;
 }
 
 }

@@ -11,6 +11,7 @@
 
 class vtkAlgorithm;
 class vtkDataArray;
+class vtkDataObject;
 class vtkFieldData;
 class vtkPolyData;
 
@@ -33,10 +34,18 @@ bool ReadSceneArrays(vtkPolyData* input, radiosity::SceneMesh& mesh,
 /// `count` names from the field array LightNames, or Light<i> for missing ones.
 std::vector<std::string> LightNames(vtkFieldData* fields, int count);
 
-/// Runs a filter's work so that no C++ exception reaches Python or ParaView: running out
-/// of memory, or any other exception, becomes the filter's error and an empty `output`
-/// (may be null), and the work returns 0.
-int Guarded(vtkAlgorithm* self, vtkPolyData* output, const std::function<int()>& work);
+/// Field array on the empty output of a filter that failed.
+constexpr const char* FailureMarker = "RadiosityFailed";
+
+/// True if `input` is the marked, empty output of a failed filter upstream.
+bool FailedUpstream(vtkDataObject* input);
+
+/// Runs a filter's work so that no C++ exception reaches Python or ParaView. Running out
+/// of memory or any other exception becomes the filter's error. When the work fails (it
+/// reports its own error and returns 0), `output` (may be null) is emptied and marked
+/// with FailureMarker. An input so marked skips the work silently. Always returns 1.
+int Guarded(vtkAlgorithm* self, vtkDataObject* input, vtkPolyData* output,
+  const std::function<int()>& work);
 
 }
 

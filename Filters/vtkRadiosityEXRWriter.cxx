@@ -35,6 +35,11 @@ bool vtkRadiosityEXRWriter::Render(std::vector<float>& rgb)
   vtkPolyData* input = vtkPolyData::SafeDownCast(this->GetInput());
   radiosity::SceneMesh mesh;
   std::string error;
+  if (vtkRadiosityAdapter::FailedUpstream(input))
+  {
+    vtkErrorMacro(<< "Cannot render: a filter upstream failed (see its error).");
+    return false;
+  }
   if (!vtkRadiosityAdapter::CopyPolygons(input, mesh, error))
   {
     vtkErrorMacro(<< "Cannot render: " << error << ".");

@@ -1,4 +1,5 @@
 #include "vtkRadiosityMesher.h"
+#include "vtkRadiosityAbort.h"
 #include "vtkRadiosityAdapter.h"
 
 #include "Mesher.h"
@@ -32,7 +33,7 @@ void vtkRadiosityMesher::PrintSelf(ostream& os, vtkIndent indent)
 int vtkRadiosityMesher::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  return vtkRadiosityAdapter::Guarded(this, vtkPolyData::GetData(outputVector), [&]() -> int {
+  return vtkRadiosityAdapter::Guarded(this, vtkPolyData::GetData(inputVector[0]), vtkPolyData::GetData(outputVector), [&]() -> int {
     vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
     vtkPolyData* output = vtkPolyData::GetData(outputVector);
 
@@ -64,9 +65,10 @@ int vtkRadiosityMesher::RequestData(
     options.Warning = [this](const std::string& message) { vtkWarningMacro(<< message); };
     options.MergeTriangles = this->MergeTriangles;
     options.SharePatches = this->SharePatches;
-    options.Progress = [this](double f) {
+    const vtkRadiosityAbortWatch abort(this);
+    options.Progress = [this, abort](double f) {
       this->UpdateProgress(f);
-      return !this->GetAbortExecute();
+      return !abort.Stop();
     };
     radiosity::MeshedPolygons meshed;
     error = radiosity::MeshPolygons(mesh.points, mesh.offsets, mesh.connectivity, surfaceKey, options, meshed);

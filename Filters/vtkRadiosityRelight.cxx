@@ -693,7 +693,7 @@ vtkSmartPointer<vtkUnsignedCharArray> Display(vtkFloatArray* linear, double expo
 int vtkRadiosityRelight::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  return vtkRadiosityAdapter::Guarded(this, vtkPolyData::GetData(outputVector), [&]() -> int {
+  return vtkRadiosityAdapter::Guarded(this, vtkPolyData::GetData(inputVector[0]), vtkPolyData::GetData(outputVector), [&]() -> int {
     vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
     vtkPolyData* output = vtkPolyData::GetData(outputVector);
     this->Resolved.clear();

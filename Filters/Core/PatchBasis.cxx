@@ -46,6 +46,8 @@ void Store(const Vec3& reflected, float* b)
   b[2] = static_cast<float>(reflected.z);
 }
 
+const char* const AbortedMessage = "the patch basis was aborted";
+
 PatchBasis ElementBasis(const RadiositySolver& solver, const SolverOptions& options, SolverStatistics& stats)
 {
   const SceneGeometry& g = solver.Geometry();
@@ -54,6 +56,11 @@ PatchBasis ElementBasis(const RadiositySolver& solver, const SolverOptions& opti
   const Solution s = solver.Solve(emission, P, BasisOptions(options));
   stats = s.Statistics;
   PatchBasis basis;
+  if (stats.Aborted)
+  {
+    basis.Error = AbortedMessage;
+    return basis;
+  }
   basis.Patches = P;
   basis.Receivers = n;
   basis.Values.resize(static_cast<size_t>(n) * 3 * P);
@@ -148,7 +155,7 @@ std::vector<double> PatchFormFactors(const SceneMesh& coarse, const RadiositySol
     }
     if (options.Progress && !options.Progress(0.5 * compact / g.patchElements.size()))
     {
-      error = "the patch basis was aborted";
+      error = AbortedMessage;
       return {};
     }
   }
@@ -214,6 +221,7 @@ std::vector<Vec3> SolvePatchValues(const SceneMesh& coarse, int P, const SolverO
   const std::vector<double> F = PatchFormFactors(coarse, solver, P, options, pool, error);
   if (!error.empty())
   {
+    stats.Aborted = error == AbortedMessage;
     return {};
   }
   const SceneGeometry& g = solver.Geometry();
@@ -248,7 +256,8 @@ std::vector<Vec3> SolvePatchValues(const SceneMesh& coarse, int P, const SolverO
     }
     if (options.Progress && !options.Progress(0.5 + (channel + 1) / 6.0))
     {
-      error = "the patch basis was aborted";
+      stats.Aborted = true;
+      error = AbortedMessage;
       return {};
     }
   }

@@ -1,9 +1,15 @@
-"""Starts the real ParaView GUI with TestParaViewGUI.py and compares its screenshot with a
-baseline image (the GUI's own exit code and output do not carry a script's failure).
+"""Starts the real ParaView GUI under Xvfb with one test script and judges what the script
+left behind: its result file (the GUI's own exit code and output do not carry a script's
+failure) and, where a baseline is given, its screenshot.
 
-usage: RunParaViewGUI.py PARAVIEW PLUGIN_DIR ROOT BASELINE OUTPUT
+usage: RunParaViewGUI.py PARAVIEW PLUGIN_DIR ROOT SCRIPT OUTPUT_DIR [BASELINE]
+
+The script (run with `paraview --dr --script=SCRIPT --exit`) writes OUTPUT_DIR/NAME.json
+with {"failures": [...], "notes": [...]} through guitest.finish(), and NAME.png if it
+takes a screenshot. NAME is the script's file name without .py.
 """
 
+import json
 import os
 import subprocess
 import sys
@@ -12,34 +18,60 @@ import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOImage import vtkPNGReader
 
-paraview, plugin_dir, root, baseline, output = sys.argv[1:6]
-if os.path.exists(output):
-    os.remove(output)
-env = dict(os.environ, PV_PLUGIN_PATH=plugin_dir, RELIGHT_ROOT=root, RELIGHT_OUTPUT=output)
-script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "TestParaViewGUI.py")
-subprocess.run([paraview, f"--script={script}", "--exit"], env=env, timeout=300, check=False,
-               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-if not os.path.exists(output):
-    print("FAIL: the GUI wrote no screenshot")
-    sys.exit(1)
-if not os.path.exists(baseline):
-    print(f"FAIL: no baseline {baseline}; the new image is {output} (look at it, then copy it)")
-    sys.exit(1)
-images = []
-for path in (output, baseline):
+
+def read_png(path):
     reader = vtkPNGReader()
     reader.SetFileName(path)
     reader.Update()
-    data = reader.GetOutput()
-    pixels = vtk_to_numpy(data.GetPointData().GetScalars()).astype(np.int32)
-    images.append(pixels[:, :3])
-if images[0].shape != images[1].shape:
-    print(f"FAIL: image sizes differ: {images[0].shape} vs {images[1].shape}")
-    sys.exit(1)
-difference = np.abs(images[0] - images[1]).max(axis=1)
-changed = float((difference > 8).mean())
-print(f"pixels differing by more than 8 levels: {changed:.2%} (limit 1 %), mean {difference.mean():.2f}")
-if changed > 0.01:
-    print(f"FAIL: {output} differs from {baseline}")
-    sys.exit(1)
-print("RunParaViewGUI: passed")
+    pixels = vtk_to_numpy(reader.GetOutput().GetPointData().GetScalars()).astype(np.int32)
+    return pixels[:, :3]
+
+
+def compare(output, baseline):
+    """Failures from comparing the screenshot with its baseline image."""
+    if not os.path.exists(output):
+        return ["the GUI wrote no screenshot"]
+    if not os.path.exists(baseline):
+        return [f"no baseline {baseline}; the new image is {output} (look at it, then copy it)"]
+    images = [read_png(output), read_png(baseline)]
+    if images[0].shape != images[1].shape:
+        return [f"image sizes differ: {images[0].shape} vs {images[1].shape}"]
+    difference = np.abs(images[0] - images[1]).max(axis=1)
+    changed = float((difference > 8).mean())
+    print(f"pixels differing by more than 8 levels: {changed:.2%} (limit 1 %), mean {difference.mean():.2f}")
+    return [f"{output} differs from {baseline}"] if changed > 0.01 else []
+
+
+def main():
+    paraview, plugin_dir, root, script, output_dir = sys.argv[1:6]
+    baseline = sys.argv[6] if len(sys.argv) > 6 else None
+    name = os.path.splitext(os.path.basename(script))[0]
+    result_path = os.path.join(output_dir, name + ".json")
+    image_path = os.path.join(output_dir, name + ".png")
+    for path in (result_path, image_path):
+        if os.path.exists(path):
+            os.remove(path)
+    env = dict(os.environ, PV_PLUGIN_PATH=plugin_dir, RELIGHT_ROOT=root, RELIGHT_OUTPUT_DIR=output_dir,
+               RELIGHT_TEST_NAME=name, RELIGHT_TEST_DIR=os.path.dirname(os.path.abspath(__file__)))
+    # --dr: default settings and no welcome dialog, whatever the user's ParaView remembers.
+    subprocess.run([paraview, "--dr", f"--script={script}", "--exit"], env=env, timeout=300, check=False,
+                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    if not os.path.exists(result_path):
+        print(f"FAIL: {name} left no result (the script did not finish; run it in the GUI to see why)")
+        sys.exit(1)
+    with open(result_path) as f:
+        result = json.load(f)
+    for note in result.get("notes", []):
+        print(note)
+    failures = list(result.get("failures", []))
+    if baseline:
+        failures += compare(image_path, baseline)
+    for failure in failures:
+        print("FAIL:", failure)
+    if failures:
+        sys.exit(1)
+    print(f"{name}: passed")
+
+
+if __name__ == "__main__":
+    main()

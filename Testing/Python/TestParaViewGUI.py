@@ -3,12 +3,15 @@ demo pipeline from Data/, changes a light through the proxy and saves a screensh
 """
 
 import os
+import sys
 
-from paraview.simple import FindSource, GetActiveViewOrCreate, Render, SaveScreenshot
+sys.path.insert(0, os.environ["RELIGHT_TEST_DIR"])
+import guitest  # noqa: E402
+from paraview.simple import FindSource, GetActiveViewOrCreate, Render, SaveScreenshot  # noqa: E402
 
-root = os.environ["RELIGHT_ROOT"]
-exec(open(os.path.join(root, "Data", "demo_pipeline.py")).read(), {"__name__": "demo", "__file__":
-     os.path.join(root, "Data", "demo_pipeline.py")})
+result = guitest.Result()
+demo = guitest.data_file("demo_pipeline.py")
+exec(open(demo).read(), {"__name__": "demo", "__file__": demo})
 
 relit = FindSource("Relit")
 settings = list(relit.LightSettings)
@@ -21,6 +24,5 @@ if not os.environ.get("RELIGHT_GUI_UNCHANGED"):  # set only to check the test ca
 view = GetActiveViewOrCreate("RenderView")
 view.ViewSize = [400, 300]
 Render(view)
-
-output = os.environ.get("RELIGHT_OUTPUT", "TestParaViewGUI.png")
-SaveScreenshot(output, view, ImageResolution=[400, 300])
+SaveScreenshot(guitest.image_path(), view, ImageResolution=[400, 300])
+result.finish()
