@@ -9,7 +9,7 @@ from vtkmodules.vtkCommonDataModel import vtkPolyData
 
 import relight
 from relight import ErrorCatcher, make_scene
-from vtkmodules.vtkCommonCore import vtkLogger
+from vtkmodules.vtkCommonCore import vtkLogger, vtkOutputWindow, vtkStringOutputWindow
 
 # The executive logs every failed request too; the filters' own messages are what we check.
 vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_OFF)
@@ -135,6 +135,27 @@ ErrorCatcher(f)
 f.Update()
 if not np.array_equal(before, relight.cell_array(original, "Reflectance"), equal_nan=True):
     failures.append("input modified")
+
+# A failed filter says what went wrong once: no executive request dump, and the filters
+# downstream stay quiet (their input is the marked, empty output) instead of adding
+# "no polygons" errors of their own.
+window = vtkStringOutputWindow()
+previous = vtkOutputWindow.GetInstance()
+vtkOutputWindow.SetInstance(window)
+vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_OFF)
+broken = scene(reflectance=(0.5, nan, 0.5))
+chain = [relight.vtkRadiosityMesher(), solver(), relight.vtkRadiosityRelight()]
+chain[0].SetInputData(broken)
+for upstream, downstream in zip(chain, chain[1:]):
+    downstream.SetInputConnection(upstream.GetOutputPort())
+chain[-1].Update()
+vtkOutputWindow.SetInstance(previous)
+text = window.GetOutput()
+errors = text.count("ERROR")
+print(f"{'ok  ' if errors == 1 else 'FAIL'} a broken scene through three filters: {errors} error(s)")
+if errors != 1 or "returned failure" in text or chain[-1].GetOutput().GetNumberOfCells() != 0:
+    failures.append("one clean error for a failed pipeline")
+    print(text)
 
 if failures:
     print(f"{len(failures)} check(s) failed")
