@@ -1,0 +1,180 @@
+#include "pqRadiosityDisplayStarter.h"
+
+#include "pqApplicationCore.h"
+#include "pqDataRepresentation.h"
+#include "pqOutputPort.h"
+#include "pqPipelineSource.h"
+#include "pqServerManagerModel.h"
+#include "pqView.h"
+#include "vtkDataObject.h"
+#include "vtkPVArrayInformation.h"
+#include "vtkPVDataInformation.h"
+#include "vtkPVDataSetAttributesInformation.h"
+#include "vtkSMPVRepresentationProxy.h"
+#include "vtkSMPropertyHelper.h"
+#include "vtkSMTransferFunctionManager.h"
+#include "vtkSMTransferFunctionProxy.h"
+#include "vtkNew.h"
+
+#include <QPointer>
+#include <QStringList>
+#include <QTimer>
+
+namespace
+{
+const char* const RelitArray = "DisplayColors";
+const char* const Unit = "W/m\xc2\xb2";
+
+QString SourceName(pqDataRepresentation* representation, int* port)
+{
+  pqOutputPort* output = representation->getOutputPortFromInput();
+  if (!output)
+  {
+    return QString();
+  }
+  *port = output->getPortNumber();
+  return QString::fromUtf8(output->getSource()->getProxy()->GetXMLName());
+}
+
+bool IsRadiosityArray(const QString& name)
+{
+  return name.startsWith(QLatin1String("Radiosity")) || name.startsWith(QLatin1String("Direct"));
+}
+}
+
+pqRadiosityDisplayStarter::pqRadiosityDisplayStarter(QObject* parent)
+  : QObject(parent)
+{
+}
+
+void pqRadiosityDisplayStarter::startup()
+{
+  pqServerManagerModel* model = pqApplicationCore::instance()->getServerManagerModel();
+  QObject::connect(model, &pqServerManagerModel::representationAdded, this,
+    &pqRadiosityDisplayStarter::onRepresentationAdded);
+}
+
+void pqRadiosityDisplayStarter::onRepresentationAdded(pqRepresentation* representation)
+{
+  QPointer<pqDataRepresentation> data = qobject_cast<pqDataRepresentation*>(representation);
+  if (!data)
+  {
+    return;
+  }
+  // ParaView sets its own defaults (colouring, scalar bar) after the representation is
+  // registered; ours go on top of those, once control is back in the event loop.
+  QTimer::singleShot(0, this, [this, data]() {
+    if (data)
+    {
+      this->Configure(data);
+    }
+  });
+}
+
+void pqRadiosityDisplayStarter::Configure(pqDataRepresentation* representation)
+{
+  int port = 0;
+  const QString source = SourceName(representation, &port);
+  const QString type = QString::fromUtf8(representation->getProxy()->GetXMLName());
+  if (source == QLatin1String("RadiosityRelight") && type == QLatin1String("GeometryRepresentation"))
+  {
+    ShowRelitColors(representation);
+  }
+  else if (source == QLatin1String("LightTaggedRadiosity") && port == 1 &&
+    type == QLatin1String("XYChartRepresentation"))
+  {
+    ShowConvergence(representation);
+  }
+  else if (source == QLatin1String("LightTaggedRadiosity") && port == 0)
+  {
+    StyleRadiosityColorMap(representation);
+    QObject::connect(representation, &pqDataRepresentation::colorArrayNameModified, representation,
+      [representation]() { StyleRadiosityColorMap(representation); });
+  }
+}
+
+void pqRadiosityDisplayStarter::ShowRelitColors(pqDataRepresentation* representation)
+{
+  vtkSMProxy* proxy = representation->getProxy();
+  vtkSMPVRepresentationProxy::SetScalarColoring(proxy, RelitArray, vtkDataObject::POINT);
+  vtkSMPropertyHelper(proxy, "MapScalars").Set(0);
+  vtkSMPropertyHelper(proxy, "Ambient").Set(1.0);
+  vtkSMPropertyHelper(proxy, "Diffuse").Set(0.0);
+  if (pqView* view = representation->getView())
+  {
+    vtkSMPVRepresentationProxy::SetScalarBarVisibility(proxy, view->getProxy(), false);
+  }
+  proxy->UpdateVTKObjects();
+  representation->renderViewEventually();
+}
+
+void pqRadiosityDisplayStarter::ShowConvergence(pqDataRepresentation* representation)
+{
+  vtkSMProxy* proxy = representation->getProxy();
+  vtkPVDataSetAttributesInformation* columns =
+    representation->getInputDataInformation()->GetRowDataInformation();
+  QStringList visibility;
+  bool perLight = false;
+  for (int i = 0; columns && i < columns->GetNumberOfArrays(); ++i)
+  {
+    perLight = perLight || QString(columns->GetArrayInformation(i)->GetName()).startsWith("Remaining_");
+  }
+  for (int i = 0; columns && i < columns->GetNumberOfArrays(); ++i)
+  {
+    const QString name = columns->GetArrayInformation(i)->GetName();
+    // One line per light where there are several; the total otherwise.
+    const bool shown = perLight ? name.startsWith("Remaining_") : name == QLatin1String("Remaining");
+    visibility << name << (shown ? "1" : "0");
+  }
+  vtkSMPropertyHelper(proxy, "UseIndexForXAxis").Set(0);
+  vtkSMPropertyHelper(proxy, "XArrayName").Set("Shot");
+  vtkSMPropertyHelper visible(proxy, "SeriesVisibility");
+  visible.SetNumberOfElements(static_cast<unsigned int>(visibility.size()));
+  for (int i = 0; i < visibility.size(); ++i)
+  {
+    visible.Set(static_cast<unsigned int>(i), visibility[i].toUtf8().data());
+  }
+  proxy->UpdateVTKObjects();
+  if (pqView* view = representation->getView())
+  {
+    vtkSMProxy* chart = view->getProxy();
+    vtkSMPropertyHelper(chart, "LeftAxisLogScale").Set(1);
+    vtkSMPropertyHelper(chart, "LeftAxisTitle").Set("Unshot energy (fraction of the initial)");
+    vtkSMPropertyHelper(chart, "BottomAxisTitle").Set("Shot");
+    vtkSMPropertyHelper(chart, "ChartTitle").Set("Convergence");
+    chart->UpdateVTKObjects();
+  }
+  representation->renderViewEventually();
+}
+
+void pqRadiosityDisplayStarter::StyleRadiosityColorMap(pqDataRepresentation* representation)
+{
+  vtkSMProxy* proxy = representation->getProxy();
+  vtkSMPropertyHelper colorArray(proxy, "ColorArrayName", /*quiet=*/true);
+  const QString name = QString::fromUtf8(colorArray.GetInputArrayNameToProcess());
+  vtkSMProxy* lut = representation->getLookupTableProxy();
+  pqView* view = representation->getView();
+  if (!IsRadiosityArray(name) || !lut || !view)
+  {
+    return;
+  }
+  // A colour map of one array belongs to every view of it; style it once only, so that a
+  // user's own choice is kept. The legend is made (not shown) if there is none yet.
+  vtkNew<vtkSMTransferFunctionManager> manager;
+  vtkSMProxy* bar = manager->GetScalarBarRepresentation(lut, view->getProxy());
+  const QString title = QString("%1 (%2)").arg(name, QString::fromUtf8(Unit));
+  if (bar && QString(vtkSMPropertyHelper(bar, "Title").GetAsString()) == title)
+  {
+    return;
+  }
+  vtkSMTransferFunctionProxy::ApplyPreset(lut, "Inferno (matplotlib)", /*rescale=*/false);
+  vtkSMPVRepresentationProxy::RescaleTransferFunctionToDataRange(proxy, false, false);
+  lut->UpdateVTKObjects();
+  if (bar)
+  {
+    vtkSMPropertyHelper(bar, "Title").Set(title.toUtf8().data());
+    vtkSMPropertyHelper(bar, "ComponentTitle").Set("");
+    bar->UpdateVTKObjects();
+  }
+  representation->renderViewEventually();
+}
