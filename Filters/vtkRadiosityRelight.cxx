@@ -29,6 +29,7 @@
 #include <cctype>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -568,6 +569,36 @@ const char* vtkRadiosityRelight::GetLightName(int light) const
 {
   return light >= 0 && light < this->GetNumberOfLights() ? this->Resolved[light].Name.c_str()
                                                          : nullptr;
+}
+
+vtkStringArray* vtkRadiosityRelight::GetLightNames()
+{
+  this->NamesInfo = vtkSmartPointer<vtkStringArray>::New();
+  for (const Light& light : this->Resolved)
+  {
+    this->NamesInfo->InsertNextValue(light.Name);
+  }
+  return this->NamesInfo;
+}
+
+vtkStringArray* vtkRadiosityRelight::GetLightSettingsInfo()
+{
+  this->SettingsInfo = vtkSmartPointer<vtkStringArray>::New();
+  const auto number = [](double value) {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.9g", value);
+    return std::string(text);
+  };
+  for (const Light& light : this->Resolved)
+  {
+    const Setting& s = light.Effective;
+    for (const std::string& item : { light.Name, number(s.Color[0]), number(s.Color[1]),
+           number(s.Color[2]), number(s.Intensity), std::string(s.Enabled ? "1" : "0") })
+    {
+      this->SettingsInfo->InsertNextValue(item);
+    }
+  }
+  return this->SettingsInfo;
 }
 
 void vtkRadiosityRelight::GetLightColor(int light, double rgb[3]) const

@@ -36,8 +36,10 @@
 
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkRadiosityFiltersModule.h" // for export macro
+#include "vtkSmartPointer.h"             // for the info arrays
 
 class vtkFloatArray;
+class vtkStringArray;
 
 #include <map>     // for settings
 #include <string>  // for names
@@ -109,7 +111,12 @@ public:
   /// The lights found by the last execution and their effective settings.
   int GetNumberOfLights() const { return static_cast<int>(this->Resolved.size()); }
   const char* GetLightName(int light) const;
-  const char* GetLightNamesString() const { return this->NamesString.c_str(); }
+  /// The names as a string array (ParaView's LightNamesInfo).
+  vtkStringArray* GetLightNames();
+  /// Six strings per light in the LightSettings layout (name, red, green, blue,
+  /// intensity, enabled 1/0), with the values in effect: defaults included, so that
+  /// ParaView's LightSettingsInfo reads back what the filter used.
+  vtkStringArray* GetLightSettingsInfo();
   void GetLightColor(int light, double rgb[3]) const;
   double GetLightIntensity(int light) const;
   bool GetLightEnabled(int light) const;
@@ -160,7 +167,9 @@ private:
   bool LoadSchedule(std::string& error);
   /// The schedule's settings for `name` (or `index`) at `time`; false if it has none.
   bool ScheduledSetting(const std::string& name, int index, double time, Setting& out) const;
-  std::string NamesString;
+  std::string NamesString; ///< the names joined by ';', for messages
+  vtkSmartPointer<vtkStringArray> NamesInfo;
+  vtkSmartPointer<vtkStringArray> SettingsInfo;
   struct MovingState;
   MovingState* Moving = nullptr; ///< scene and Embree shader, rebuilt only when inputs change
   bool AddMovingLights(vtkPolyData* scene, vtkPolyData* lights, vtkPolyData* dynamic,

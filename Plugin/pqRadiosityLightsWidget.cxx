@@ -1,5 +1,8 @@
 #include "pqRadiosityLightsWidget.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "vtkCommand.h"
 #include "vtkEventQtSlotConnect.h"
 #include "vtkSMPropertyHelper.h"
@@ -48,28 +51,44 @@ void pqRadiosityLightsWidget::rebuild()
 {
   vtkSMProxy* proxy = this->proxy();
   proxy->UpdatePropertyInformation();
-  const QStringList names =
-    QString(vtkSMPropertyHelper(proxy, "LightNamesInfo").GetAsString()).split(';', Qt::SkipEmptyParts);
-  // Current values: rows of the property (name, r, g, b, intensity, enabled).
+  vtkSMPropertyHelper names(proxy, "LightNamesInfo");
+  // Values in effect (defaults included), then the user's own rows of the property, both
+  // as (name, r, g, b, intensity, enabled).
+  vtkSMPropertyHelper effective(proxy, "LightSettingsInfo");
   vtkSMPropertyHelper values(this->Property);
   QVector<Light> lights;
-  for (const QString& name : names)
+  for (unsigned int n = 0; n < names.GetNumberOfElements(); ++n)
   {
     Light light;
-    light.Name = name;
-    for (unsigned int i = 0; i + 5 < values.GetNumberOfElements(); i += 6)
+    light.Name = names.GetAsString(n);
+    for (unsigned int i = 0; i + 5 < effective.GetNumberOfElements(); i += 6)
     {
-      if (name == values.GetAsString(i))
+      if (light.Name == effective.GetAsString(i))
       {
-        bool numbers = true;
         for (int c = 0; c < 3; ++c)
         {
-          const QString text = values.GetAsString(i + 1 + c);
-          light.Color[c] = text.toDouble();
-          numbers = numbers && text.toLower() != "nan";
+          light.Color[c] = QString(effective.GetAsString(i + 1 + c)).toDouble();
+        }
+        light.Intensity = QString(effective.GetAsString(i + 4)).toDouble();
+        light.Enabled = QString(effective.GetAsString(i + 5)).toInt() != 0;
+      }
+    }
+    for (unsigned int i = 0; i + 5 < values.GetNumberOfElements(); i += 6)
+    {
+      if (light.Name == values.GetAsString(i))
+      {
+        // 'nan' keeps the default, which the effective values above already hold.
+        bool numbers = true;
+        double color[3];
+        for (int c = 0; c < 3; ++c)
+        {
+          color[c] = QString(values.GetAsString(i + 1 + c)).toDouble();
+          numbers = numbers && std::isfinite(color[c]);
         }
         light.ColorEdited = numbers;
-        light.Intensity = QString(values.GetAsString(i + 4)).toDouble();
+        std::copy(color, color + (numbers ? 3 : 0), light.Color);
+        const double intensity = QString(values.GetAsString(i + 4)).toDouble();
+        light.Intensity = std::isfinite(intensity) ? intensity : light.Intensity;
         light.Enabled = QString(values.GetAsString(i + 5)).toInt() != 0;
         light.Edited = true;
       }

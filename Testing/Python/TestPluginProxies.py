@@ -105,12 +105,22 @@ def main(argv):
 
     # --- information properties -------------------------------------------
     relight.UpdatePipelineInformation()  # pulls the information_only properties
-    names_info = relight.GetProperty("LightNamesInfo").GetElement(0) or ""
-    names = [n for n in names_info.split(";") if n]
-    check(LIGHT in names, "LightNamesInfo is %r, expected it to list '%s'" % (names_info, LIGHT))
+    names = list(relight.LightNamesInfo)  # one element per light, not a joined string
+    check(LIGHT in names, "LightNamesInfo is %r, expected it to list '%s'" % (names, LIGHT))
     n_lights = relight.GetProperty("NumberOfLights").GetElement(0)
     check(n_lights == len(names),
           "NumberOfLights is %d but LightNamesInfo lists %d names" % (n_lights, len(names)))
+    # The settings in effect read back, defaults included: ours for LIGHT, the filter's
+    # (solver's default colour, intensity 1, on) for any other light.
+    effective = list(relight.LightSettingsInfo)
+    rows = {effective[i]: effective[i + 1:i + 6] for i in range(0, len(effective), 6)}
+    check(sorted(rows) == sorted(names), "LightSettingsInfo has rows for %s, expected %s" % (sorted(rows), names))
+    ours = [float(v) for v in rows.get(LIGHT, ["nan"] * 5)]
+    check(np.allclose(ours, list(COLOUR) + [INTENSITY, ENABLED]),
+          "LightSettingsInfo reads back %s for %s, expected what was set" % (ours, LIGHT))
+    relight.GetProperty("LightSettings").SMProperty.ResetToDomainDefaults()
+    check(list(relight.LightSettings) == effective,
+          "LightSettings reset to the settings in effect reads %s" % list(relight.LightSettings))
 
     # --- a light schedule makes the filter time-aware -------------------------
     schedule = RadiosityRelight(Input=solver)
