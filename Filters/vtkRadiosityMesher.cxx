@@ -30,6 +30,31 @@ void vtkRadiosityMesher::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ElementSize: " << this->ElementSize << "\n";
 }
 
+int vtkRadiosityMesher::RequestInformation(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  // The input has data here only if it executed before (a reader applied in ParaView).
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  radiosity::SceneMesh mesh;
+  std::string error;
+  radiosity::SuggestedSizes sizes;
+  if (input && input->GetNumberOfCells() > 0 && vtkRadiosityAdapter::CopyPolygons(input, mesh, error))
+  {
+    sizes = radiosity::SuggestMeshSizes(mesh.points, mesh.offsets, mesh.connectivity);
+  }
+  this->SuggestedPatchSize = sizes.PatchSize;
+  this->SuggestedElementSize = sizes.ElementSize;
+  this->InputArea = sizes.Area;
+  return 1;
+}
+
+double vtkRadiosityMesher::GetSuggestedElements() const
+{
+  radiosity::SuggestedSizes sizes;
+  sizes.Area = this->InputArea;
+  return sizes.EstimateElements(this->SuggestedElementSize);
+}
+
 int vtkRadiosityMesher::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {

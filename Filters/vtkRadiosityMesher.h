@@ -72,9 +72,23 @@ public:
   vtkGetMacro(MaximumElements, vtkIdType);
   ///@}
 
+  ///@{
+  /// Sizes that suit the input whatever its unit (a sixth of its bounding box diagonal,
+  /// rounded; the element a quarter of that), the input's polygon area, and about how
+  /// many elements the suggested element size makes (area / size^2). Known once the pipeline information
+  /// is updated with the input already executed (in ParaView: when the filter is added
+  /// to an applied source); 1, 0.25 and 0 before. ParaView starts PatchSize and
+  /// ElementSize from the suggestions.
+  vtkGetMacro(SuggestedPatchSize, double);
+  vtkGetMacro(SuggestedElementSize, double);
+  vtkGetMacro(InputArea, double);
+  double GetSuggestedElements() const;
+  ///@}
+
 protected:
   vtkRadiosityMesher();
   ~vtkRadiosityMesher() override = default;
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
 private:
@@ -86,6 +100,9 @@ private:
   vtkIdType MaximumElements = 0;
   bool MergeTriangles = true;
   bool SharePatches = true;
+  double SuggestedPatchSize = 1.0;
+  double SuggestedElementSize = 0.25;
+  double InputArea = 0.0;
 };
 
 #endif

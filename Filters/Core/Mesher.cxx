@@ -526,4 +526,45 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
   return error;
 }
 
+double SuggestedSizes::EstimateElements(double elementSize) const
+{
+  return elementSize > 0 ? Area / (elementSize * elementSize) : 0.0;
+}
+
+SuggestedSizes SuggestMeshSizes(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity)
+{
+  SuggestedSizes sizes;
+  Vec3 low{ HUGE_VAL, HUGE_VAL, HUGE_VAL }, high{ -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
+  std::vector<Vec3> loop;
+  for (size_t i = 0; i + 1 < offsets.size(); ++i)
+  {
+    loop.clear();
+    for (int k = offsets[i]; k < offsets[i + 1]; ++k)
+    {
+      const Vec3& p = points[connectivity[k]];
+      loop.push_back(p);
+      low = { std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z) };
+      high = { std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z) };
+    }
+    const double area = loop.size() >= 3 ? PolygonArea(loop.data(), static_cast<int>(loop.size())) : 0.0;
+    sizes.Area += std::isfinite(area) ? area : 0.0;
+  }
+  const double diagonal = Norm(high - low);
+  if (!(diagonal > 0) || !std::isfinite(diagonal))
+  {
+    return sizes;
+  }
+  const double target = diagonal / 6.0;
+  const double decade = std::pow(10.0, std::floor(std::log10(target)));
+  double nice = decade;
+  for (double step : { 2.0, 2.5, 5.0 })
+  {
+    nice = step * decade <= target ? step * decade : nice;
+  }
+  sizes.PatchSize = nice;
+  sizes.ElementSize = nice / 4.0;
+  return sizes;
+}
+
 } // namespace radiosity

@@ -62,6 +62,22 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
   const std::vector<int>& connectivity, const std::vector<int>& surfaceKey,
   const MesherOptions& options, MeshedPolygons& out);
 
+/// Sizes that suit a scene whatever its unit: PatchSize about a sixth of the bounding
+/// box diagonal, rounded down to 1, 2, 2.5 or 5 times a power of ten, and ElementSize a
+/// quarter of it (1 and 0.25 for a 4 x 2.5 x 4 room in metres; 1000 and 250 in mm).
+struct SuggestedSizes
+{
+  double PatchSize = 1.0;
+  double ElementSize = 0.25;
+  double Area = 0.0; ///< the polygons' total area, for the element estimate
+  /// About how many elements `elementSize` makes: the area over the element area.
+  double EstimateElements(double elementSize) const;
+};
+
+/// The suggestion for a scene; the defaults (1, 0.25) for an empty or degenerate one.
+SuggestedSizes SuggestMeshSizes(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity);
+
 } // namespace radiosity
 
 #endif

@@ -198,3 +198,34 @@ TEST(Mesher, SmallPolygonsShareAPatchInTheirCell)
   EXPECT_EQ(own.patches, 6);
   EXPECT_NEAR(TotalArea(shared), 6 * 0.04, 1e-12);
 }
+
+// The suggested sizes follow the scene's unit and size, not its placement: a 4 x 2.5 x 4
+// box in metres gets 1 and 0.25 (diagonal 6.18, a sixth rounded down to 1), in
+// millimetres 1000 and 250, moved far away the same; the area is the box's 72.
+TEST(Mesher, SuggestedSizesFollowTheScale)
+{
+  const auto box = [](double scale, Vec3 offset) {
+    std::vector<Vec3> points;
+    for (int i = 0; i < 8; ++i)
+    {
+      points.push_back(Vec3{ 4.0 * (i & 1), 2.5 * ((i >> 1) & 1), 4.0 * ((i >> 2) & 1) } * scale + offset);
+    }
+    const std::vector<int> connectivity = { 0, 1, 3, 2, 4, 6, 7, 5, 0, 4, 5, 1, 2, 3, 7, 6, 0, 2, 6, 4, 1, 5, 7, 3 };
+    return SuggestMeshSizes(points, { 0, 4, 8, 12, 16, 20, 24 }, connectivity);
+  };
+  const SuggestedSizes metres = box(1.0, Vec3{});
+  EXPECT_DOUBLE_EQ(metres.PatchSize, 1.0);
+  EXPECT_DOUBLE_EQ(metres.ElementSize, 0.25);
+  EXPECT_NEAR(metres.Area, 2 * (16 + 10 + 10), 1e-9);
+  EXPECT_NEAR(metres.EstimateElements(0.25), 72 / 0.0625, 1e-6);
+  const SuggestedSizes millimetres = box(1000.0, Vec3{});
+  EXPECT_DOUBLE_EQ(millimetres.PatchSize, 1000.0);
+  EXPECT_DOUBLE_EQ(millimetres.ElementSize, 250.0);
+  const SuggestedSizes moved = box(1.0, Vec3{ 1e5, -3e4, 7e3 });
+  EXPECT_DOUBLE_EQ(moved.PatchSize, 1.0);
+  const SuggestedSizes small = box(0.3, Vec3{}); // diagonal 1.85: a sixth is 0.309, so 0.25
+  EXPECT_DOUBLE_EQ(small.PatchSize, 0.25);
+  const SuggestedSizes empty = SuggestMeshSizes({}, { 0 }, {});
+  EXPECT_DOUBLE_EQ(empty.PatchSize, 1.0);
+  EXPECT_DOUBLE_EQ(empty.Area, 0.0);
+}

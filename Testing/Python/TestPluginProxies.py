@@ -122,6 +122,24 @@ def main(argv):
     check(list(relight.LightSettings) == effective,
           "LightSettings reset to the settings in effect reads %s" % list(relight.LightSettings))
 
+    # --- sizes that follow the scene: a mesher added to an executed input starts from
+    # them (the Cornell box is about 556 mm wide: diagonal 962, a sixth rounded to 100).
+    reader.UpdatePipeline()
+    suggested = RadiosityMesher(Input=reader)
+    check(suggested.PatchSize == 100.0 and suggested.ElementSize == 25.0,
+          "a mesher on the Cornell box (mm) starts at PatchSize %g, ElementSize %g; expected 100, 25"
+          % (suggested.PatchSize, suggested.ElementSize))
+    sizes = CellSize(Input=reader, ComputeArea=1, ComputeLength=0, ComputeVolume=0, ComputeVertexCount=0)
+    area = numpy_support.vtk_to_numpy(servermanager.Fetch(sizes).GetCellData().GetArray("Area")).sum()
+    Delete(sizes)
+    check(abs(suggested.InputArea - area) < 1e-6 * area,
+          "InputArea is %g mm², vtkCellSizeFilter sums %g" % (suggested.InputArea, area))
+    check(abs(suggested.SuggestedElements - area / 25.0**2) < 1e-6 * area,
+          "SuggestedElements is %g, expected area / 25² = %g" % (suggested.SuggestedElements, area / 625))
+    print("Cornell box suggestion: PatchSize %g, ElementSize %g, about %d elements over %.3g mm²"
+          % (suggested.PatchSize, suggested.ElementSize, suggested.SuggestedElements, suggested.InputArea))
+    Delete(suggested)
+
     # --- a light schedule makes the filter time-aware -------------------------
     schedule = RadiosityRelight(Input=solver)
     schedule.ScheduleEntries = ["0", LIGHT, "1", "1", "1", "1", "1", "4", LIGHT, "1", "0", "0", "2", "1"]
