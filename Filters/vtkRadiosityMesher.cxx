@@ -45,14 +45,8 @@ int vtkRadiosityMesher::RequestInformation(
   this->SuggestedPatchSize = sizes.PatchSize;
   this->SuggestedElementSize = sizes.ElementSize;
   this->InputArea = sizes.Area;
+  this->SuggestedElements = sizes.Elements;
   return 1;
-}
-
-double vtkRadiosityMesher::GetSuggestedElements() const
-{
-  radiosity::SuggestedSizes sizes;
-  sizes.Area = this->InputArea;
-  return sizes.EstimateElements(this->SuggestedElementSize);
 }
 
 int vtkRadiosityMesher::RequestData(

@@ -75,14 +75,15 @@ public:
   ///@{
   /// Sizes that suit the input whatever its unit (a sixth of its bounding box diagonal,
   /// rounded; the element a quarter of that), the input's polygon area, and about how
-  /// many elements the suggested element size makes (area / size^2). Known once the pipeline information
+  /// many elements the suggested element size makes (per polygon, area / size^2, at least
+  /// one). Known once the pipeline information
   /// is updated with the input already executed (in ParaView: when the filter is added
   /// to an applied source); 1, 0.25 and 0 before. ParaView starts PatchSize and
   /// ElementSize from the suggestions.
   vtkGetMacro(SuggestedPatchSize, double);
   vtkGetMacro(SuggestedElementSize, double);
   vtkGetMacro(InputArea, double);
-  double GetSuggestedElements() const;
+  vtkGetMacro(SuggestedElements, double);
   ///@}
 
 protected:
@@ -103,6 +104,7 @@ private:
   double SuggestedPatchSize = 1.0;
   double SuggestedElementSize = 0.25;
   double InputArea = 0.0;
+  double SuggestedElements = 0.0;
 };
 
 #endif

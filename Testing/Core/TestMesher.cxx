@@ -211,13 +211,18 @@ TEST(Mesher, SuggestedSizesFollowTheScale)
       points.push_back(Vec3{ 4.0 * (i & 1), 2.5 * ((i >> 1) & 1), 4.0 * ((i >> 2) & 1) } * scale + offset);
     }
     const std::vector<int> connectivity = { 0, 1, 3, 2, 4, 6, 7, 5, 0, 4, 5, 1, 2, 3, 7, 6, 0, 2, 6, 4, 1, 5, 7, 3 };
-    return SuggestMeshSizes(points, { 0, 4, 8, 12, 16, 20, 24 }, connectivity);
+    const SuggestedSizes sizes = SuggestMeshSizes(points, { 0, 4, 8, 12, 16, 20, 24 }, connectivity);
+    // The estimate against the mesher itself, at the suggested sizes.
+    MeshedPolygons meshed;
+    EXPECT_EQ(MeshPolygons(points, { 0, 4, 8, 12, 16, 20, 24 }, connectivity, { 0, 0, 0, 0, 0, 0 },
+                Sizes(sizes.PatchSize, sizes.ElementSize), meshed), "");
+    EXPECT_NEAR(sizes.Elements, static_cast<double>(meshed.offsets.size() - 1), 1e-6);
+    return sizes;
   };
   const SuggestedSizes metres = box(1.0, Vec3{});
   EXPECT_DOUBLE_EQ(metres.PatchSize, 1.0);
   EXPECT_DOUBLE_EQ(metres.ElementSize, 0.25);
   EXPECT_NEAR(metres.Area, 2 * (16 + 10 + 10), 1e-9);
-  EXPECT_NEAR(metres.EstimateElements(0.25), 72 / 0.0625, 1e-6);
   const SuggestedSizes millimetres = box(1000.0, Vec3{});
   EXPECT_DOUBLE_EQ(millimetres.PatchSize, 1000.0);
   EXPECT_DOUBLE_EQ(millimetres.ElementSize, 250.0);
