@@ -73,7 +73,7 @@ public:
   ///@}
 
   ///@{
-  /// Sizes that suit the input whatever its unit (a sixth of its bounding box diagonal,
+  /// Sizes that suit the input whatever its unit and orientation (a sixth of its extent,
   /// rounded; the element a quarter of that), the input's polygon area, and about how
   /// many elements the suggested element size makes (per polygon, area / size^2, at least
   /// one). Known once the pipeline information

@@ -570,24 +570,27 @@ SuggestedSizes SuggestMeshSizes(const std::vector<Vec3>& points, const std::vect
   const std::vector<int>& connectivity)
 {
   SuggestedSizes sizes;
-  Vec3 low{ HUGE_VAL, HUGE_VAL, HUGE_VAL }, high{ -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
-  std::vector<Vec3> loop;
   std::vector<std::vector<Vec3>> loops;
+  Vec3 mean{};
   for (size_t i = 0; i + 1 < offsets.size(); ++i)
   {
-    loop.clear();
-    for (int k = offsets[i]; k < offsets[i + 1]; ++k)
-    {
-      const Vec3& p = points[connectivity[k]];
-      loop.push_back(p);
-      low = { std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z) };
-      high = { std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z) };
-    }
+    loops.push_back(GatherLoop(points, offsets, connectivity, static_cast<int>(i)));
+    const std::vector<Vec3>& loop = loops.back();
     const double area = loop.size() >= 3 ? PolygonArea(loop.data(), static_cast<int>(loop.size())) : 0.0;
-    loops.push_back(loop);
     sizes.Area += std::isfinite(area) ? area : 0.0;
+    for (const Vec3& p : loop)
+    {
+      mean += p * (1.0 / static_cast<double>(connectivity.size()));
+    }
   }
-  const double diagonal = Norm(high - low);
+  // Twice the largest distance from the corners' mean: unlike a bounding box's diagonal,
+  // turning the scene does not change it.
+  double radius = 0;
+  for (int id : connectivity)
+  {
+    radius = std::max(radius, Norm(points[id] - mean));
+  }
+  const double diagonal = 2.0 * radius;
   if (!(diagonal > 0) || !std::isfinite(diagonal))
   {
     return sizes;

@@ -62,9 +62,11 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
   const std::vector<int>& connectivity, const std::vector<int>& surfaceKey,
   const MesherOptions& options, MeshedPolygons& out);
 
-/// Sizes that suit a scene whatever its unit: PatchSize about a sixth of the bounding
-/// box diagonal, rounded down to 1, 2, 2.5 or 5 times a power of ten, and ElementSize a
-/// quarter of it (1 and 0.25 for a 4 x 2.5 x 4 room in metres; 1000 and 250 in mm).
+/// Sizes that suit a scene whatever its unit, placement and orientation: PatchSize about
+/// a sixth of the scene's extent (twice the largest distance of a corner from the
+/// corners' mean; a box's diagonal), rounded down to 1, 2, 2.5 or 5 times a power of ten,
+/// and ElementSize a quarter of it (1 and 0.25 for a 4 x 2.5 x 4 room in metres; 1000
+/// and 250 in mm).
 struct SuggestedSizes
 {
   double PatchSize = 1.0;

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <set>
 
 using namespace radiosity;
@@ -201,14 +202,16 @@ TEST(Mesher, SmallPolygonsShareAPatchInTheirCell)
 
 // The suggested sizes follow the scene's unit and size, not its placement: a 4 x 2.5 x 4
 // box in metres gets 1 and 0.25 (diagonal 6.18, a sixth rounded down to 1), in
-// millimetres 1000 and 250, moved far away the same; the area is the box's 72.
-TEST(Mesher, SuggestedSizesFollowTheScale)
+// millimetres 1000 and 250, moved far away or turned the same; the area is the box's 72.
+TEST(Mesher, SuggestedSizesFollowTheScaleNotThePlacement)
 {
-  const auto box = [](double scale, Vec3 offset) {
+  const auto box = [](double scale, Vec3 offset, double turn = 0.0) {
     std::vector<Vec3> points;
     for (int i = 0; i < 8; ++i)
     {
-      points.push_back(Vec3{ 4.0 * (i & 1), 2.5 * ((i >> 1) & 1), 4.0 * ((i >> 2) & 1) } * scale + offset);
+      const Vec3 p = Vec3{ 4.0 * (i & 1), 2.5 * ((i >> 1) & 1), 4.0 * ((i >> 2) & 1) } * scale;
+      const Vec3 turned{ std::cos(turn) * p.x - std::sin(turn) * p.y, std::sin(turn) * p.x + std::cos(turn) * p.y, p.z };
+      points.push_back(turned + offset);
     }
     const std::vector<int> connectivity = { 0, 1, 3, 2, 4, 6, 7, 5, 0, 4, 5, 1, 2, 3, 7, 6, 0, 2, 6, 4, 1, 5, 7, 3 };
     const SuggestedSizes sizes = SuggestMeshSizes(points, { 0, 4, 8, 12, 16, 20, 24 }, connectivity);
@@ -228,6 +231,12 @@ TEST(Mesher, SuggestedSizesFollowTheScale)
   EXPECT_DOUBLE_EQ(millimetres.ElementSize, 250.0);
   const SuggestedSizes moved = box(1.0, Vec3{ 1e5, -3e4, 7e3 });
   EXPECT_DOUBLE_EQ(moved.PatchSize, 1.0);
+  // Turned 37 degrees about z, the room's axis-aligned box grows from a diagonal of 6.18
+  // to 7.55: at 1.8x scale a sixth of it would cross 2 (1.85 -> 2.27), its extent does not.
+  for (double scale : { 1.0, 1.8, 1000.0 })
+  {
+    EXPECT_DOUBLE_EQ(box(scale, Vec3{}, 37.0 * 3.14159265358979 / 180).PatchSize, box(scale, Vec3{}).PatchSize);
+  }
   const SuggestedSizes small = box(0.3, Vec3{}); // diagonal 1.85: a sixth is 0.309, so 0.25
   EXPECT_DOUBLE_EQ(small.PatchSize, 0.25);
   const SuggestedSizes empty = SuggestMeshSizes({}, { 0 }, {});
