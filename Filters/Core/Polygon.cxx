@@ -6,6 +6,12 @@
 
 namespace radiosity
 {
+namespace
+{
+/// Below this fraction of its longest edge squared, an area is zero: what PolygonProblem
+/// rejects, Triangulate must not make.
+constexpr double ZeroAreaFraction = 1e-12;
+}
 
 Bounds::Bounds(const std::vector<Vec3>& points)
 {
@@ -93,34 +99,45 @@ std::vector<int> Triangulate(const Vec3* loop, int count)
   {
     return triangles;
   }
-  if (IsConvex(loop, count))
-  {
-    for (int i = 1; i + 1 < count; ++i)
+  const Vec3 unit = Normalized(NewellVector(loop, count));
+  // Twice the signed area of corner b's triangle, positive where the loop turns left.
+  auto turn = [&](int a, int b, int c) { return Dot(unit, Cross(loop[b] - loop[a], loop[c] - loop[b])); };
+  // A corner whose triangle PolygonProblem would call zero area (three points in a line,
+  // up to rounding) makes no triangle: it would only be rejected downstream.
+  auto flat = [&](int a, int b, int c) {
+    const double longest = std::max({ Norm(loop[b] - loop[a]), Norm(loop[c] - loop[b]), Norm(loop[a] - loop[c]) });
+    return std::fabs(turn(a, b, c)) <= 2 * ZeroAreaFraction * longest * longest;
+  };
+  auto emit = [&](int a, int b, int c) {
+    if (!flat(a, b, c))
     {
-      triangles.insert(triangles.end(), { 0, i, i + 1 });
+      triangles.insert(triangles.end(), { a, b, c });
     }
-    return triangles;
-  }
-  const Vec3 normal = NewellVector(loop, count);
+  };
   std::vector<int> remaining(count);
   for (int i = 0; i < count; ++i)
   {
     remaining[i] = i;
   }
-  auto turn = [&](int a, int b, int c) { return Dot(normal, Cross(loop[b] - loop[a], loop[c] - loop[b])); };
+  const bool convex = IsConvex(loop, count);
   auto inside = [&](int p, int a, int b, int c) {
     return turn(a, b, p) >= 0 && turn(b, c, p) >= 0 && turn(c, a, p) >= 0;
   };
-  while (remaining.size() > 3)
+  while (!convex && remaining.size() > 3)
   {
     const int n = static_cast<int>(remaining.size());
-    bool clipped = false;
-    for (int i = 0; i < n && !clipped; ++i)
+    int ear = -1, straight = -1;
+    for (int i = 0; i < n && ear < 0; ++i)
     {
       const int a = remaining[(i + n - 1) % n], b = remaining[i], c = remaining[(i + 1) % n];
+      if (flat(a, b, c))
+      {
+        straight = i; // lies on its neighbours' edge: dropping it changes no area
+        continue;
+      }
       if (turn(a, b, c) <= 0)
       {
-        continue; // reflex or collinear corner: not an ear
+        continue; // reflex corner: not an ear
       }
       bool empty = true;
       for (int j = 0; j < n && empty; ++j)
@@ -128,21 +145,21 @@ std::vector<int> Triangulate(const Vec3* loop, int count)
         const int p = remaining[j];
         empty = p == a || p == b || p == c || !inside(p, a, b, c);
       }
-      if (empty)
-      {
-        triangles.insert(triangles.end(), { a, b, c });
-        remaining.erase(remaining.begin() + i);
-        clipped = true;
-      }
+      ear = empty ? i : -1;
     }
-    if (!clipped)
+    if (ear < 0 && straight < 0)
     {
       break; // self-intersecting input: fan what is left rather than loop forever
     }
+    if (ear >= 0)
+    {
+      emit(remaining[(ear + n - 1) % n], remaining[ear], remaining[(ear + 1) % n]);
+    }
+    remaining.erase(remaining.begin() + (ear >= 0 ? ear : straight));
   }
   for (size_t i = 1; i + 1 < remaining.size(); ++i)
   {
-    triangles.insert(triangles.end(), { remaining[0], remaining[i], remaining[i + 1] });
+    emit(remaining[0], remaining[i], remaining[i + 1]);
   }
   return triangles;
 }
@@ -295,7 +312,7 @@ std::string PolygonProblem(const Vec3* loop, int count)
   {
     return "crosses itself (edges intersect, like a figure 8); split it into simple polygons";
   }
-  if (!(0.5 * Norm(NewellVector(loop, count)) > 1e-12 * extent * extent))
+  if (!(0.5 * Norm(NewellVector(loop, count)) > ZeroAreaFraction * extent * extent))
   {
     return "has zero area (its points are collinear or coincident); remove degenerate cells";
   }

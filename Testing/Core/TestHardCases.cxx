@@ -272,6 +272,36 @@ TEST(HardDegenerate, NonConvexPolygonIsTriangulatedNotFanned)
   EXPECT_NEAR(c.y, 5.0 / 6.0, 1e-12);
 }
 
+// A non-convex polygon with corners in a line (a wall's outline from a real model, the
+// FZK-Haus: a long edge split by a vertex 1 mm from its end), turned and scaled so that
+// rounding leaves the straight corner a hair off the line. Ear clipping must not cut it
+// off as a triangle PolygonProblem calls zero area: the solver would reject the mesh.
+TEST(HardDegenerate, StraightCornersMakeNoZeroAreaTriangles)
+{
+  const std::vector<Vec3> flat = { { 0, 0, 0 }, { 250, 0, 0 }, { 251.3, 0, 0 }, { 251.3, 40, 0 }, { 120, 40, 0 },
+    { 120, 80, 0 }, { 0, 80, 0 } };
+  for (double degrees : { 0.0, 17.0, 37.0, 61.0 })
+  {
+    const double t = degrees * 3.14159265358979 / 180;
+    std::vector<Vec3> loop;
+    for (const Vec3& p : flat)
+    {
+      const Vec3 q = p * 1000.0 + Vec3{ -524, 2100, -8096 } * 1000.0;
+      loop.push_back({ std::cos(t) * q.x - std::sin(t) * q.z, q.y + 0.3 * std::sin(t) * q.x, std::sin(t) * q.x + std::cos(t) * q.z });
+    }
+    const std::vector<int> tri = Triangulate(loop.data(), static_cast<int>(loop.size()));
+    double area = 0;
+    for (size_t k = 0; k < tri.size(); k += 3)
+    {
+      const Vec3 corners[3] = { loop[tri[k]], loop[tri[k + 1]], loop[tri[k + 2]] };
+      EXPECT_EQ(PolygonProblem(corners, 3), "") << degrees << " degrees, triangle " << k / 3;
+      area += PolygonArea(corners, 3);
+    }
+    const double whole = PolygonArea(loop.data(), static_cast<int>(loop.size()));
+    EXPECT_NEAR(area, whole, 1e-9 * whole) << degrees << " degrees: the triangles cover the polygon";
+  }
+}
+
 TEST(HardDegenerate, SliversAndRepeatedVerticesStayFinite)
 {
   SceneMesh mesh = LampOverFloor(1.0, 4);
