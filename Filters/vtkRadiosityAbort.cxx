@@ -6,23 +6,26 @@
 
 namespace
 {
-/// Counts abort requests; a watch stops once the count moves past the one it saw.
-std::atomic<unsigned> AbortRequests{ 0 };
+std::atomic<bool> AbortRequested{ false };
 }
 
 void vtkRadiosityRequestAbort()
 {
-  ++AbortRequests;
+  AbortRequested = true;
+}
+
+void vtkRadiosityClearAbort()
+{
+  AbortRequested = false;
 }
 
 vtkRadiosityAbortWatch::vtkRadiosityAbortWatch(vtkAlgorithm* self)
   : Self(self)
-  , Generation(AbortRequests.load())
 {
   self->SetAbortExecute(0);
 }
 
 bool vtkRadiosityAbortWatch::Stop() const
 {
-  return this->Self->GetAbortExecute() || AbortRequests.load() != this->Generation;
+  return this->Self->GetAbortExecute() || AbortRequested.load();
 }

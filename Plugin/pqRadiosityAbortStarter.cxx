@@ -106,7 +106,11 @@ void pqRadiosityAbortStarter::Activate()
       this->AbortButton = main->findChild<QAbstractButton*>(QStringLiteral("AbortButton"));
     }
   }
-  pqApplicationCore::instance()->getProgressManager()->setEnableAbort(true);
+  pqProgressManager* progress = pqApplicationCore::instance()->getProgressManager();
+  progress->setEnableAbort(true);
+  // ParaView's own filter drops every press that is not aimed at the button itself, and a
+  // real click is first aimed at the window; ours judges at the widget instead.
+  this->WasUnblocked = progress->unblockEvents(true);
   QCoreApplication::instance()->installEventFilter(this);
 }
 
@@ -118,7 +122,10 @@ void pqRadiosityAbortStarter::onProgressEnd()
   }
   this->Active = false;
   QCoreApplication::instance()->removeEventFilter(this);
-  pqApplicationCore::instance()->getProgressManager()->setEnableAbort(false);
+  vtkRadiosityClearAbort(); // the abort covered this whole update, every filter in it
+  pqProgressManager* progress = pqApplicationCore::instance()->getProgressManager();
+  progress->unblockEvents(this->WasUnblocked);
+  progress->setEnableAbort(false);
 }
 
 void pqRadiosityAbortStarter::onAbort()
@@ -136,6 +143,12 @@ bool pqRadiosityAbortStarter::eventFilter(QObject* watched, QEvent* event)
     return false;
   }
   QWidget* widget = qobject_cast<QWidget*>(watched);
+  if (!widget)
+  {
+    // A real click reaches the window (a QWindow) first, which passes it to the widget
+    // under the mouse; that delivery is where it is judged.
+    return false;
+  }
   const auto within = [widget](QWidget* root) {
     return root && widget && (widget == root || root->isAncestorOf(widget));
   };

@@ -38,6 +38,7 @@ private:
   QPointer<QAbstractButton> AbortButton;
   bool Active = false;
   bool Processing = false;
+  bool WasUnblocked = false; ///< ParaView's own input blocking, restored at the end
 };
 
 #endif

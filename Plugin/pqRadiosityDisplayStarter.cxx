@@ -11,6 +11,7 @@
 #include "vtkPVDataInformation.h"
 #include "vtkPVDataSetAttributesInformation.h"
 #include "vtkSMPVRepresentationProxy.h"
+#include "vtkSMSession.h"
 #include "vtkSMPropertyHelper.h"
 #include "vtkSMTransferFunctionManager.h"
 #include "vtkSMTransferFunctionProxy.h"
@@ -73,6 +74,19 @@ void pqRadiosityDisplayStarter::onRepresentationAdded(pqRepresentation* represen
 
 void pqRadiosityDisplayStarter::Configure(pqDataRepresentation* representation)
 {
+  // Qt events run inside our filters (for the abort button): wait for the update to end,
+  // as ParaView's own renders do, rather than touch a pipeline that is executing.
+  if (representation->getProxy()->GetSession()->GetPendingProgress())
+  {
+    QPointer<pqDataRepresentation> later = representation;
+    QTimer::singleShot(100, this, [this, later]() {
+      if (later)
+      {
+        this->Configure(later);
+      }
+    });
+    return;
+  }
   int port = 0;
   const QString source = SourceName(representation, &port);
   const QString type = QString::fromUtf8(representation->getProxy()->GetXMLName());
