@@ -34,7 +34,14 @@ int vtkRadiosityMesher::RequestInformation(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
   // The input has data here only if it executed before (a reader applied in ParaView).
+  // Every property change runs this pass; the suggestion changes only with the input.
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  const vtkMTimeType inputTime = input ? input->GetMTime() : 0;
+  if (inputTime == this->SuggestedForInput)
+  {
+    return 1;
+  }
+  this->SuggestedForInput = inputTime;
   radiosity::SceneMesh mesh;
   std::string error;
   radiosity::SuggestedSizes sizes;

@@ -75,8 +75,7 @@ public:
   ///@{
   /// Sizes that suit the input whatever its unit and orientation (a sixth of its extent,
   /// rounded; the element a quarter of that), the input's polygon area, and about how
-  /// many elements the suggested element size makes (per polygon, area / size^2, at least
-  /// one). Known once the pipeline information
+  /// many elements the suggested sizes make. Known once the pipeline information
   /// is updated with the input already executed (in ParaView: when the filter is added
   /// to an applied source); 1, 0.25 and 0 before. ParaView starts PatchSize and
   /// ElementSize from the suggestions.
@@ -105,6 +104,7 @@ private:
   double SuggestedElementSize = 0.25;
   double InputArea = 0.0;
   double SuggestedElements = 0.0;
+  vtkMTimeType SuggestedForInput = 0; ///< the input's time when the suggestion was made
 };
 
 #endif

@@ -526,62 +526,20 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
   return error;
 }
 
-namespace
-{
-/// Pieces along a length: patches of at most `patch`, each cut into elements of at most
-/// `element`, as the mesher grids a surface.
-double PiecesAlong(double length, double patch, double element)
-{
-  const double patches = std::max(1.0, std::ceil(length / patch - 1e-9));
-  return patches * std::max(1.0, std::ceil(length / (patches * element) - 1e-9));
-}
-
-/// About how many elements a flat polygon makes: the grid over its extent along its
-/// longest edge and across, scaled by how much of that extent the polygon fills.
-double EstimateElements(const std::vector<Vec3>& loop, double area, double patch, double element)
-{
-  Vec3 along{};
-  for (size_t k = 0; k < loop.size(); ++k)
-  {
-    const Vec3 edge = loop[(k + 1) % loop.size()] - loop[k];
-    along = Norm(edge) > Norm(along) ? edge : along;
-  }
-  const Vec3 normal = NewellVector(loop.data(), static_cast<int>(loop.size()));
-  if (!(area > 0) || !(Norm(along) > 0))
-  {
-    return 1.0;
-  }
-  const Vec3 u = Normalized(along), v = Normalized(Cross(normal, u));
-  double lowU = HUGE_VAL, highU = -HUGE_VAL, lowV = HUGE_VAL, highV = -HUGE_VAL;
-  for (const Vec3& p : loop)
-  {
-    lowU = std::min(lowU, Dot(p, u));
-    highU = std::max(highU, Dot(p, u));
-    lowV = std::min(lowV, Dot(p, v));
-    highV = std::max(highV, Dot(p, v));
-  }
-  const double w = highU - lowU, h = highV - lowV;
-  const double fill = w * h > 0 ? std::min(1.0, area / (w * h)) : 1.0;
-  return std::max(1.0, fill * PiecesAlong(w, patch, element) * PiecesAlong(h, patch, element));
-}
-}
-
 SuggestedSizes SuggestMeshSizes(const std::vector<Vec3>& points, const std::vector<int>& offsets,
   const std::vector<int>& connectivity)
 {
   SuggestedSizes sizes;
-  std::vector<std::vector<Vec3>> loops;
   Vec3 mean{};
   for (size_t i = 0; i + 1 < offsets.size(); ++i)
   {
-    loops.push_back(GatherLoop(points, offsets, connectivity, static_cast<int>(i)));
-    const std::vector<Vec3>& loop = loops.back();
+    const std::vector<Vec3> loop = GatherLoop(points, offsets, connectivity, static_cast<int>(i));
     const double area = loop.size() >= 3 ? PolygonArea(loop.data(), static_cast<int>(loop.size())) : 0.0;
     sizes.Area += std::isfinite(area) ? area : 0.0;
-    for (const Vec3& p : loop)
-    {
-      mean += p * (1.0 / static_cast<double>(connectivity.size()));
-    }
+  }
+  for (int id : connectivity)
+  {
+    mean += points[id] * (1.0 / static_cast<double>(connectivity.size()));
   }
   // Twice the largest distance from the corners' mean: unlike a bounding box's diagonal,
   // turning the scene does not change it.
@@ -604,11 +562,7 @@ SuggestedSizes SuggestMeshSizes(const std::vector<Vec3>& points, const std::vect
   }
   sizes.PatchSize = nice;
   sizes.ElementSize = nice / 4.0;
-  for (const std::vector<Vec3>& polygon : loops)
-  {
-    const double area = polygon.size() >= 3 ? PolygonArea(polygon.data(), static_cast<int>(polygon.size())) : 0.0;
-    sizes.Elements += EstimateElements(polygon, area, sizes.PatchSize, sizes.ElementSize);
-  }
+  sizes.Elements = CountElements(points, offsets, connectivity, sizes.PatchSize, sizes.ElementSize);
   return sizes;
 }
 

@@ -72,8 +72,7 @@ struct SuggestedSizes
   double PatchSize = 1.0;
   double ElementSize = 0.25;
   double Area = 0.0;     ///< the polygons' total area
-  double Elements = 0.0; ///< about how many elements these sizes make: per polygon, the
-                         ///< patch and element grid over its extent, times its fill
+  double Elements = 0.0; ///< the elements these sizes make (CountElements)
 };
 
 /// The suggestion for a scene; the defaults (1, 0.25) for an empty or degenerate one.

@@ -54,10 +54,14 @@ def main():
     env = dict(os.environ, PV_PLUGIN_PATH=plugin_dir, RELIGHT_ROOT=root, RELIGHT_OUTPUT_DIR=output_dir,
                RELIGHT_TEST_NAME=name, RELIGHT_TEST_DIR=os.path.dirname(os.path.abspath(__file__)))
     # --dr: default settings and no welcome dialog, whatever the user's ParaView remembers.
-    run = subprocess.run([paraview, "--dr", f"--script={script}", "--exit"], env=env, timeout=300,
-                         check=False, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, errors="replace")
+    try:
+        output = subprocess.run([paraview, "--dr", f"--script={script}", "--exit"], env=env, timeout=300,
+                                check=False, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                                errors="replace").stdout
+    except subprocess.TimeoutExpired as stopped:
+        output = (stopped.output or b"").decode(errors="replace") + f"\nstopped after {stopped.timeout} s"
     if not os.path.exists(result_path):
-        print(run.stdout[-4000:])
+        print(str(output)[-4000:])
         print(f"FAIL: {name} left no result (the script did not finish; its output is above)")
         sys.exit(1)
     with open(result_path) as f:

@@ -142,7 +142,6 @@ if not np.array_equal(before, relight.cell_array(original, "Reflectance"), equal
 window = vtkStringOutputWindow()
 previous = vtkOutputWindow.GetInstance()
 vtkOutputWindow.SetInstance(window)
-vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_OFF)
 broken = scene(reflectance=(0.5, nan, 0.5))
 chain = [relight.vtkRadiosityMesher(), solver(), relight.vtkRadiosityRelight()]
 chain[0].SetInputData(broken)
