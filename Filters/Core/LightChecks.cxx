@@ -16,8 +16,8 @@ double NearHits(const SceneGeometry& g, const Visibility& rays, const std::vecto
   for (int e : elements)
   {
     const Vec3& n = g.normal[e];
-    const Vec3 helper = std::fabs(n.x) < 0.6 ? Vec3{ 1, 0, 0 } : Vec3{ 0, 1, 0 };
-    const Vec3 t = Normalized(Cross(helper, n)), b = Cross(n, t);
+    Vec3 t, b;
+    TangentFrame(n, t, b);
     for (int r = 0; r < 9; ++r)
     {
       const double polar = r == 0 ? 0.0 : (r <= 4 ? 0.5236 : 1.0472);

@@ -18,12 +18,6 @@ namespace
 {
 constexpr double kPi = 3.14159265358979323846;
 
-void Frame(const Vec3& n, Vec3& t, Vec3& b)
-{
-  const Vec3 helper = std::fabs(n.x) < 0.6 ? Vec3{ 1, 0, 0 } : Vec3{ 0, 1, 0 };
-  t = Normalized(Cross(helper, n));
-  b = Cross(n, t);
-}
 } // namespace
 
 ShooterFormFactors::ShooterFormFactors(const SceneMesh& mesh, const SceneGeometry& geometry,
@@ -637,7 +631,7 @@ long long ShooterFormFactors::Hemicube(int patch, int resolution, std::vector<do
   HitElement.resize(count);
   const Vec3 n = PatchNormal[patch];
   Vec3 t, b;
-  Frame(n, t, b);
+  TangentFrame(n, t, b);
   const Vec3 origin = PatchCentre[patch] + n * Epsilon;
   Pool.For(count, 256, [&](int begin, int end) {
     for (int i = begin; i < end; ++i)
@@ -679,7 +673,7 @@ long long ShooterFormFactors::MonteCarlo(int patch, int samples, int shot, std::
       const double u = random.Next(), phi = 2 * kPi * random.Next();
       const double radius = std::sqrt(u);
       Vec3 t, bt;
-      Frame(tri.Normal, t, bt);
+      TangentFrame(tri.Normal, t, bt);
       const Vec3 dir = t * (radius * std::cos(phi)) + bt * (radius * std::sin(phi)) +
         tri.Normal * std::sqrt(std::max(0.0, 1 - u));
       HitElement[r] = FrontHit(origin, dir);

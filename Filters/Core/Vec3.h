@@ -45,6 +45,15 @@ inline Vec3 Normalized(const Vec3& a)
   return n > 0 ? a * (1.0 / n) : Vec3{ 0, 0, 0 };
 }
 
+/// Unit tangents t, b with (t, b, n) right-handed, for a unit normal n; built from a world
+/// axis, so use it where directions only need to cover the hemisphere evenly.
+inline void TangentFrame(const Vec3& n, Vec3& t, Vec3& b)
+{
+  const Vec3 helper = std::fabs(n.x) < 0.6 ? Vec3{ 1, 0, 0 } : Vec3{ 0, 1, 0 };
+  t = Normalized(Cross(helper, n));
+  b = Cross(n, t);
+}
+
 } // namespace radiosity
 
 #endif
