@@ -26,6 +26,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <sstream>
 
 vtkStandardNewMacro(vtkLightTaggedRadiosity);
 
@@ -126,19 +127,42 @@ std::string DescribeStatus(const radiosity::SolverStatistics& stats, bool aborte
   return stats.OutOfTime ? "stopped at TimeBudget" : "stopped at MaximumShots";
 }
 
+/// Why a solve stopped short of convergence, for a warning; empty if it converged.
+std::string DescribeEarlyStop(const radiosity::SolverStatistics& stats, double budget, double threshold)
+{
+  const double remaining = stats.RemainingHistory.empty() ? 1.0 : stats.RemainingHistory.back();
+  std::ostringstream text;
+  if (stats.Aborted)
+  {
+    text << "Solve aborted after " << stats.Shots << " shots; the output holds the partial result.";
+  }
+  else if (stats.OutOfTime)
+  {
+    text << "TimeBudget of " << budget << " s reached after " << stats.Shots
+         << " shots; remaining unshot energy " << remaining << " of the initial.";
+  }
+  else if (!stats.Converged)
+  {
+    text << "Stopped at MaximumShots (" << stats.ShotCap << ") before converging: remaining unshot energy "
+         << remaining << " of the initial, threshold " << threshold
+         << ". Raise MaximumShots (or use the ambient term) for a converged result.";
+  }
+  return text.str();
+}
+
 /// Solves the moving-light basis and adds its arrays (see PatchBasisLevel); false, with
 /// the error reported, when the basis cannot be made.
 bool AddPatchBasis(vtkAlgorithm* self, int level, const radiosity::RadiositySolver& solver,
   const radiosity::SceneMesh& mesh, const radiosity::SolverOptions& options, vtkPolyData* output,
-  vtkFieldData* fields, std::vector<radiosity::EffectDecision>& effects)
+  vtkFieldData* fields, std::vector<radiosity::EffectDecision>& effects,
+  vtkRadiosityAdapter::WarningList& warnings)
 {
   radiosity::SolverStatistics stats;
   const radiosity::PatchBasis basis =
     radiosity::SolvePatchBasis(solver, mesh, options, static_cast<radiosity::BasisLevel>(level), stats);
   if (stats.Aborted)
   {
-    vtkWarningWithObjectMacro(self, << "Moving-light basis aborted: the output has the light "
-                                    << "solutions but no basis.");
+    warnings.Add(self, "Moving-light basis aborted: the output has the light solutions but no basis.");
     return true;
   }
   if (!basis.Error.empty())
@@ -184,8 +208,8 @@ bool AddPatchBasis(vtkAlgorithm* self, int level, const radiosity::RadiositySolv
   }
   if (!stats.Converged)
   {
-    vtkWarningWithObjectMacro(self, << "The patch basis stopped before converging (" << stats.Shots
-                                    << " shots); moving lights will miss some interreflection.");
+    warnings.Add(self, "The patch basis stopped before converging (" + std::to_string(stats.Shots) +
+        " shots); moving lights will miss some interreflection.");
   }
   return true;
 }
@@ -265,10 +289,11 @@ int vtkLightTaggedRadiosity::RequestData(
       vtkErrorMacro(<< "Cannot solve: " << solver.Error() << ".");
       return 0;
     }
+    vtkRadiosityAdapter::WarningList warnings;
     for (const std::string& warning : radiosity::CheckLights(
            mesh, solver.Geometry(), solver.Rays(), vtkRadiosityAdapter::LightNames(input->GetFieldData(), lights)))
     {
-      vtkWarningMacro(<< warning);
+      warnings.Add(this, warning);
     }
     radiosity::SolverOptions options;
     options.Solver = static_cast<radiosity::SolverMethod>(this->SolverMethod);
@@ -304,25 +329,10 @@ int vtkLightTaggedRadiosity::RequestData(
     this->LastShots = stats.Shots;
     this->LastConverged = stats.Converged;
     this->LastRays = stats.RayCount;
-    if (stats.Aborted)
+    const std::string stop = DescribeEarlyStop(stats, this->TimeBudget, this->ConvergenceThreshold);
+    if (!stop.empty())
     {
-      vtkWarningMacro(<< "Solve aborted after " << stats.Shots
-                      << " shots; the output holds the partial result.");
-    }
-    if (!stats.Converged && !stats.Aborted && !stats.OutOfTime)
-    {
-      vtkWarningMacro(<< "Stopped at MaximumShots (" << stats.ShotCap
-                      << ") before converging: remaining unshot energy "
-                      << (stats.RemainingHistory.empty() ? 1.0 : stats.RemainingHistory.back())
-                      << " of the initial, threshold " << this->ConvergenceThreshold
-                      << ". Raise MaximumShots (or use the ambient term) for a converged result.");
-    }
-    if (stats.OutOfTime)
-    {
-      vtkWarningMacro(<< "TimeBudget of " << this->TimeBudget << " s reached after " << stats.Shots
-                      << " shots; remaining unshot energy "
-                      << (stats.RemainingHistory.empty() ? 1.0 : stats.RemainingHistory.back())
-                      << " of the initial.");
+      warnings.Add(this, stop);
     }
 
     output->ShallowCopy(input);
@@ -380,15 +390,15 @@ int vtkLightTaggedRadiosity::RequestData(
         defaults->InsertNextTuple3(c.x, c.y, c.z);
         if (c.x + c.y + c.z <= 0)
         {
-          vtkWarningMacro(<< "Light '" << names[m] << "' has zero Emission: it stays dark when relit until it "
-                          << "is given a colour (its unit solution is there).");
+          warnings.Add(this, "Light '" + names[m] +
+              "' has zero Emission: it stays dark when relit until it is given a colour (its unit solution is there).");
         }
       }
       fields->AddArray(defaults);
     }
     std::vector<radiosity::EffectDecision> effects =
       radiosity::DescribeEffects(mesh, options, result, grouping, lights, mode);
-    if (this->PatchBasis && !stats.Aborted && !AddPatchBasis(this, this->PatchBasisLevel, solver, mesh, options, output, fields, effects))
+    if (this->PatchBasis && !stats.Aborted && !AddPatchBasis(this, this->PatchBasisLevel, solver, mesh, options, output, fields, effects, warnings))
     {
       output->Initialize();
       return 0;
@@ -425,6 +435,7 @@ int vtkLightTaggedRadiosity::RequestData(
       unshot->InsertNextValue(r);
     }
     fields->AddArray(unshot);
+    warnings.AddTo(fields);
     output->SetFieldData(fields);
 
     vtkNew<vtkIntArray> shotColumn;

@@ -242,4 +242,30 @@ int Guarded(vtkAlgorithm* self, vtkDataObject* input, vtkPolyData* output,
   return 1;
 }
 
+void WarningList::Add(vtkObject* self, const std::string& message)
+{
+  vtkWarningWithObjectMacro(self, << message);
+  this->Messages.push_back(message);
+}
+
+void WarningList::AddTo(vtkFieldData* fields) const
+{
+  vtkStringArray* upstream = vtkStringArray::SafeDownCast(fields->GetAbstractArray("Warnings"));
+  if (this->Messages.empty())
+  {
+    return;
+  }
+  vtkNew<vtkStringArray> all;
+  all->SetName("Warnings");
+  for (vtkIdType i = 0; upstream && i < upstream->GetNumberOfValues(); ++i)
+  {
+    all->InsertNextValue(upstream->GetValue(i));
+  }
+  for (const std::string& message : this->Messages)
+  {
+    all->InsertNextValue(message);
+  }
+  fields->AddArray(all);
+}
+
 }

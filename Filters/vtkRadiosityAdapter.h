@@ -13,6 +13,7 @@ class vtkAlgorithm;
 class vtkDataArray;
 class vtkDataObject;
 class vtkFieldData;
+class vtkObject;
 class vtkPolyData;
 
 namespace vtkRadiosityAdapter
@@ -46,6 +47,21 @@ bool FailedUpstream(vtkDataObject* input);
 /// with FailureMarker. An input so marked skips the work silently. Always returns 1.
 int Guarded(vtkAlgorithm* self, vtkDataObject* input, vtkPolyData* output,
   const std::function<int()>& work);
+
+/// The warnings of one filter run: each goes to the output window as usual and is kept,
+/// so that the output lists them in its field array Warnings (ParaView's Information
+/// panel shows a string array's values).
+class WarningList
+{
+public:
+  void Add(vtkObject* self, const std::string& message);
+  /// Sets Warnings on `fields` to the upstream ones it holds plus ours, in a new array so
+  /// that the input's (shared by a shallow copy) stays as it was; adds nothing if none.
+  void AddTo(vtkFieldData* fields) const;
+
+private:
+  std::vector<std::string> Messages;
+};
 
 }
 

@@ -88,7 +88,8 @@ int vtkRadiosityMesher::RequestData(
     options.PatchSize = this->PatchSize;
     options.ElementSize = this->ElementSize;
     options.ElementBudget = static_cast<double>(this->MaximumElements);
-    options.Warning = [this](const std::string& message) { vtkWarningMacro(<< message); };
+    vtkRadiosityAdapter::WarningList warnings;
+    options.Warning = [this, &warnings](const std::string& message) { warnings.Add(this, message); };
     options.MergeTriangles = this->MergeTriangles;
     options.SharePatches = this->SharePatches;
     const vtkRadiosityAbortWatch abort(this);
@@ -150,6 +151,7 @@ int vtkRadiosityMesher::RequestData(
     used->SetName("MesherElementSize");
     used->InsertNextValue(meshed.elementSize);
     output->GetFieldData()->AddArray(used);
+    warnings.AddTo(output->GetFieldData());
     return 1;
   });
 }
