@@ -1,4 +1,5 @@
 #include "vtkRadiosityEXRWriter.h"
+#include "vtkRadiosityAbort.h"
 #include "vtkRadiosityAdapter.h"
 
 #include "HdrImage.h"
@@ -77,7 +78,16 @@ bool vtkRadiosityEXRWriter::Render(std::vector<float>& rgb)
     vtkErrorMacro(<< "Cannot render: " << error << ".");
     return false;
   }
-  rgb = radiosity::RenderRadiosity(scene, pointValues, camera);
+  const vtkRadiosityAbortWatch abort(this);
+  rgb = radiosity::RenderRadiosity(scene, pointValues, camera, [this, &abort](double f) {
+    this->UpdateProgress(f);
+    return !abort.Stop();
+  });
+  if (rgb.empty())
+  {
+    vtkWarningMacro(<< "Render aborted: no image made, nothing written (a file already there is kept).");
+    return false;
+  }
   return true;
 }
 

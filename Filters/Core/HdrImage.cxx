@@ -46,8 +46,8 @@ std::string ValidateCamera(const PinholeCamera& c)
   return why.str();
 }
 
-std::vector<float> RenderRadiosity(
-  const Visibility& scene, const std::vector<Vec3>& pointValues, const PinholeCamera& camera)
+std::vector<float> RenderRadiosity(const Visibility& scene, const std::vector<Vec3>& pointValues,
+  const PinholeCamera& camera, const std::function<bool(double)>& progress)
 {
   const int w = camera.Width, h = camera.Height;
   std::vector<float> rgb(3 * static_cast<size_t>(w) * h, 0.0f);
@@ -58,6 +58,10 @@ std::vector<float> RenderRadiosity(
   const double halfWidth = halfHeight * w / h;
   for (int y = 0; y < h; ++y)
   {
+    if (progress && y % 16 == 0 && !progress(static_cast<double>(y) / h))
+    {
+      return {};
+    }
     for (int x = 0; x < w; ++x)
     {
       const double sx = (2.0 * (x + 0.5) / w - 1.0) * halfWidth;

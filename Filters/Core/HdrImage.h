@@ -4,6 +4,7 @@
 
 #include "Visibility.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -32,9 +33,11 @@ std::string ValidateCamera(const PinholeCamera& camera);
 /// Linear RGB, row 0 at the top. Each pixel shows the radiosity interpolated from the
 /// point values of the triangle hit at its centre, so no tone mapping or clamping happens.
 /// Radiosity is exitance; for a diffuse surface the radiance seen is B / pi, and the image
-/// stores B so values compare directly with the solver's arrays.
-std::vector<float> RenderRadiosity(
-  const Visibility& scene, const std::vector<Vec3>& pointValues, const PinholeCamera& camera);
+/// stores B so values compare directly with the solver's arrays. `progress` (optional)
+/// hears the fraction done every few rows; when it returns false the render stops and
+/// returns an empty image.
+std::vector<float> RenderRadiosity(const Visibility& scene, const std::vector<Vec3>& pointValues,
+  const PinholeCamera& camera, const std::function<bool(double)>& progress = {});
 
 /// Writes a half-float RGB OpenEXR file; returns an empty string or the library's error.
 /// The file is written beside `path` under a temporary name and renamed over it, so an

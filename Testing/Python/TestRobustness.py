@@ -48,6 +48,23 @@ size = os.path.getsize(good)
 os.mkdir(good + ".part")
 refused("temporary name taken", "could not write", path=good)
 check(os.path.getsize(good) == size, f"a failed write leaves the old file whole ({os.path.getsize(good)} bytes)")
+# An abort (ParaView's button, or AbortExecuteOn from a script) stops the render part-way
+# and writes nothing: the old picture stays.
+writer = relight.vtkRadiosityEXRWriter()
+writer.SetInputData(solved)
+writer.SetFileName(good)
+writer.SetArrayName(ARRAY)
+writer.SetSize(640, 480)
+writer.SetCameraPosition(*CAMERA[0])
+writer.SetFocalPoint(*CAMERA[1])
+writer.SetViewUp(*CAMERA[2])
+reports = []
+writer.AddObserver("ProgressEvent", lambda w, e: (reports.append(w.GetProgress()), reports[-1] >= 0.2 and w.AbortExecuteOn()))
+catcher = relight.ErrorCatcher(writer)
+written = writer.Write()
+rows = max(r for r in reports if r < 1)  # the executive reports 1 as the write returns
+check(written == 0 and rows < 0.5 and os.path.getsize(good) == size and "aborted" in " ".join(catcher.warnings),
+      f"an aborted render stops at {rows:.2f} of the rows and leaves the old file ({os.path.getsize(good)} bytes)")
 os.rmdir(good + ".part")
 relight.write_exr(solved, good, CAMERA, size=(32, 24), array=ARRAY)
 check(sorted(os.listdir(folder)) == ["view.exr"] and os.path.getsize(good) != size,
@@ -235,7 +252,13 @@ def warnings_for(polygons, ids):
     solver.SetMaximumShots(50)
     caught = [relight.ErrorCatcher(mesher), relight.ErrorCatcher(solver)]
     solver.Update()
-    return " | ".join(w.strip().splitlines()[-1] for c in caught for w in c.warnings)
+    printed = [w.strip().splitlines()[-1] for c in caught for w in c.warnings]
+    # The output lists the same warnings (field array Warnings, in ParaView's Information panel).
+    listed = solver.GetOutput().GetFieldData().GetAbstractArray("Warnings")
+    listed = [listed.GetValue(i) for i in range(listed.GetNumberOfValues())] if listed else []
+    check(len(listed) == len(printed) and all(p.endswith(w) for p, w in zip(printed, listed)),
+          f"the output's Warnings array lists what was printed ({len(listed)} of {len(printed)})")
+    return " | ".join(printed)
 
 
 box = walls[:6]
