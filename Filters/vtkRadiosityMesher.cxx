@@ -21,7 +21,23 @@
 
 vtkStandardNewMacro(vtkRadiosityMesher);
 
-vtkRadiosityMesher::vtkRadiosityMesher() = default;
+struct vtkRadiosityMesher::Polygons
+{
+  radiosity::SceneMesh Mesh;
+};
+
+vtkRadiosityMesher::vtkRadiosityMesher()
+  : SeenInput(new Polygons)
+{
+}
+
+vtkRadiosityMesher::~vtkRadiosityMesher() = default;
+
+double vtkRadiosityMesher::EstimateElements(double patchSize, double elementSize)
+{
+  const radiosity::SceneMesh& mesh = this->SeenInput->Mesh;
+  return radiosity::CountElements(mesh.points, mesh.offsets, mesh.connectivity, patchSize, elementSize);
+}
 
 void vtkRadiosityMesher::PrintSelf(ostream& os, vtkIndent indent)
 {
@@ -42,12 +58,17 @@ int vtkRadiosityMesher::RequestInformation(
     return 1;
   }
   this->SuggestedForInput = inputTime;
-  radiosity::SceneMesh mesh;
+  radiosity::SceneMesh& mesh = this->SeenInput->Mesh;
+  mesh = radiosity::SceneMesh();
   std::string error;
   radiosity::SuggestedSizes sizes;
   if (input && input->GetNumberOfCells() > 0 && vtkRadiosityAdapter::CopyPolygons(input, mesh, error))
   {
     sizes = radiosity::SuggestMeshSizes(mesh.points, mesh.offsets, mesh.connectivity);
+  }
+  else
+  {
+    mesh = radiosity::SceneMesh();
   }
   this->SuggestedPatchSize = sizes.PatchSize;
   this->SuggestedElementSize = sizes.ElementSize;

@@ -22,7 +22,7 @@
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkRadiosityFiltersModule.h" // for export macro
 
-
+#include <memory> // for std::unique_ptr
 
 class VTKRADIOSITYFILTERS_EXPORT vtkRadiosityMesher : public vtkPolyDataAlgorithm
 {
@@ -85,9 +85,14 @@ public:
   vtkGetMacro(SuggestedElements, double);
   ///@}
 
+  /// The number of elements these sizes would make of the input the last information
+  /// pass saw (exact, without meshing; 0 before any): the Properties panel's live
+  /// estimate while the sizes are edited, before Apply.
+  double EstimateElements(double patchSize, double elementSize);
+
 protected:
   vtkRadiosityMesher();
-  ~vtkRadiosityMesher() override = default;
+  ~vtkRadiosityMesher() override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
@@ -105,6 +110,8 @@ private:
   double InputArea = 0.0;
   double SuggestedElements = 0.0;
   vtkMTimeType SuggestedForInput = 0; ///< the input's time when the suggestion was made
+  struct Polygons;
+  std::unique_ptr<Polygons> SeenInput; ///< the polygons of that input, for estimates
 };
 
 #endif
