@@ -10,10 +10,14 @@ prints a line containing 'passed' on success.
 """
 
 import math
+import os
 import sys
 
 from paraview.simple import *  # noqa: F401,F403  (LoadPlugin, Show, Render, ...)
 from paraview import servermanager
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from readmetable import setting_rows  # noqa: E402
 
 import numpy as np
 from vtkmodules.util import numpy_support
@@ -63,6 +67,24 @@ def check_finite(dataset, label):
                       % (label, kind, array.GetName()))
 
 
+def check_readme_names(readme, proxies):
+    """Every setting the README's table lists is a property of its proxy, and every
+    settable property is in the table (TestNames.py checks the XML against C++)."""
+    table = {row[0]: row[2] for row in setting_rows(readme)}
+    check(len(table) == 3, "the README's settings table lists %d proxies, expected 3" % len(table))
+    for proxy in proxies:
+        xml_name = proxy.SMProxy.GetXMLName()
+        listed = table.get(xml_name, [])
+        for name in listed:
+            check(hasattr(proxy, name), f"README names {xml_name}.{name}, which ParaView's Python lacks")
+        iterator = proxy.SMProxy.NewPropertyIterator()
+        iterator.Begin()
+        while not iterator.IsAtEnd():
+            name, prop = iterator.GetKey(), iterator.GetProperty()
+            iterator.Next()
+            if not prop.GetInformationOnly() and not prop.IsA("vtkSMInputProperty"):
+                check(name in listed, f"{xml_name}.{name} is missing from the README's settings table")
+
 def main(argv):
     if len(argv) < 3:
         print("usage: pvbatch %s <plugin.so> <cornell_box.vtp> [screenshot.png]" % argv[0])
@@ -84,16 +106,8 @@ def main(argv):
     mode = solver.GetProperty("SolutionMode").GetData()
     check(mode == "LightTagged", "default SolutionMode is %r, expected 'LightTagged'" % (mode,))
     relight = RadiosityRelight(registrationName="Relight", Input=solver)
-    # The README promises the same names in ParaView's Python as the C++ setters: pvbatch
-    # names properties by their labels, so each label must spell its property's name.
-    for proxy in (mesher, solver, relight):
-        iterator = proxy.SMProxy.NewPropertyIterator()
-        iterator.Begin()
-        while not iterator.IsAtEnd():
-            name = iterator.GetKey()
-            check(name in ("Input",) or hasattr(proxy, name),
-                  f"{proxy.SMProxy.GetXMLName()}.{name} is not reachable under that name from Python")
-            iterator.Next()
+    check_readme_names(os.path.join(os.path.dirname(os.path.abspath(data_path)), "..", "README.md"),
+                       (mesher, solver, relight))
     # One row of the repeatable string-vector property:
     # Name, Red, Green, Blue, Intensity, Enabled (all passed as strings).
     relight.LightSettings = [LIGHT] + [repr(float(c)) for c in COLOUR] + [

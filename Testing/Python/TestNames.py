@@ -1,0 +1,51 @@
+"""One set of names: the plugin's XML and the README's settings table against the C++
+classes (as VTK's Python wraps them). ParaView.TestPluginProxies checks the same table
+against the proxies that pvbatch makes from the XML."""
+
+import os
+import xml.etree.ElementTree as ElementTree
+
+import relight
+from readmetable import setting_rows
+from testlib import check, finish
+
+ROOT = os.environ.get("RELIGHT_ROOT", ".")
+XML = os.path.join(ROOT, "Plugin", "RadiosityFilters.xml")
+README = os.path.join(ROOT, "README.md")
+
+
+def xml_commands():
+    """{class: {property: [commands]}} for every property that calls the C++ object."""
+    proxies = {}
+    for proxy in ElementTree.parse(XML).iter("SourceProxy"):
+        properties = proxies.setdefault(proxy.get("class"), {})
+        for prop in proxy:
+            commands = [prop.get(a) for a in ("command", "clean_command") if prop.get(a)]
+            if commands:
+                properties.setdefault(prop.get("name"), []).extend(commands)
+    return proxies
+
+
+commands = xml_commands()
+check(sorted(commands) == ["vtkLightTaggedRadiosity", "vtkRadiosityMesher", "vtkRadiosityRelight"],
+      f"the XML makes proxies of {sorted(commands)}")
+for cls, properties in commands.items():
+    wrapped = getattr(relight, cls)
+    missing = [f"{name}: {c}" for name, cs in properties.items() for c in cs if not hasattr(wrapped, c)]
+    check(not missing, f"{cls} has every command its XML calls ({len(properties)} properties; missing {missing})")
+
+rows = setting_rows(README)
+check(len(rows) == 3, f"the README's settings table has {len(rows)} rows, expected 3")
+for proxy, cls, settings, methods in rows:
+    wrapped = getattr(relight, cls)
+    settable = {name for name, cs in commands.get(cls, {}).items() if any(c.startswith(("Set", "Add")) for c in cs)}
+    settable -= {"Input", "MovingLights", "DynamicObjects"}
+    check(set(settings) == settable, f"{proxy}: the README lists the XML's settings "
+                                     f"(only in README {sorted(set(settings) - settable)}, "
+                                     f"only in XML {sorted(settable - set(settings))})")
+    plain = [name for name in settings if not hasattr(wrapped, "Set" + name)]
+    named = [m for m in methods if not hasattr(wrapped, m)]
+    # A setting without Set<Name> must say in its remark which C++ methods it calls.
+    check(not named and all(any(m in commands[cls][name] for m in methods) for name in plain),
+          f"{proxy}: Set<Name> in C++ for each setting, or the remark's methods ({plain}, missing {named})")
+finish("TestNames")
