@@ -26,6 +26,19 @@ def xml_commands():
     return proxies
 
 
+def undocumented():
+    """Properties of the XML without help text (the panel's tooltip and the ? button)."""
+    missing = []
+    for proxy in ElementTree.parse(XML).iter("SourceProxy"):
+        for prop in proxy:
+            text = prop.findtext("Documentation") or ""
+            # Ports and groups are not properties; time steps are ParaView's own.
+            if prop.tag.endswith("Property") and prop.get("name") != "TimestepValues" and len(text.split()) < 8:
+                missing.append(proxy.get("name") + "." + prop.get("name"))
+    return missing
+
+
+check(not undocumented(), f"every property has help text (missing: {undocumented()})")
 commands = xml_commands()
 check(sorted(commands) == ["vtkLightTaggedRadiosity", "vtkRadiosityMesher", "vtkRadiosityRelight"],
       f"the XML makes proxies of {sorted(commands)}")
