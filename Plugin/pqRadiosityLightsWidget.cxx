@@ -166,7 +166,23 @@ void pqRadiosityLightsWidget::rebuild()
       this->push();
     });
   }
+  this->fitHeight();
   this->Updating = false;
+}
+
+void pqRadiosityLightsWidget::fitHeight()
+{
+  // A table that scrolls inside the scrolling panel shows rows cut off at its own frame,
+  // where clicks land on the table or the panel and do nothing (found by TestGUI with 8
+  // lights: the last three colour buttons ignored clicks). Show every row up to 16, so
+  // only the panel scrolls; beyond that the table scrolls as a visible list.
+  constexpr int MostRowsShown = 16;
+  int height = this->Table->horizontalHeader()->sizeHint().height() + 2 * this->Table->frameWidth();
+  for (int row = 0; row < std::min(this->Table->rowCount(), MostRowsShown); ++row)
+  {
+    height += this->Table->rowHeight(row);
+  }
+  this->Table->setFixedHeight(height);
 }
 
 void pqRadiosityLightsWidget::paintColorButton(int row)

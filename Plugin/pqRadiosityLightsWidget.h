@@ -34,6 +34,8 @@ private:
     bool ColorEdited = false; ///< an unedited colour is written as NaN: keep the default
   };
   void push();
+  /// The table as tall as its rows (up to a limit), so the panel, not the table, scrolls.
+  void fitHeight();
   void paintColorButton(int row);
 
   vtkSMProperty* Property;

@@ -1,5 +1,6 @@
 """Runs inside the real ParaView GUI (started by RunParaViewGUI.py under Xvfb): opens the
-demo pipeline from Data/, changes a light through the proxy and saves a screenshot.
+demo pipeline from Data/, clicks a light's colour button in the lights panel (a colour
+dialog must open), changes a light through the proxy and saves a screenshot.
 """
 
 import os
@@ -7,13 +8,62 @@ import sys
 
 sys.path.insert(0, os.environ["RELIGHT_TEST_DIR"])
 import guitest  # noqa: E402
-from paraview.simple import FindSource, GetActiveViewOrCreate, Render, SaveScreenshot  # noqa: E402
+from paraview.simple import FindSource, GetActiveViewOrCreate, Render, SaveScreenshot, SetActiveSource  # noqa: E402
+from PyQt5.QtCore import Qt, QTimer  # noqa: E402
+from PyQt5.QtTest import QTest  # noqa: E402
+from PyQt5.QtWidgets import QApplication, QColorDialog, QPushButton, QScrollArea, QTableWidget  # noqa: E402
 
 result = guitest.Result()
 demo = guitest.data_file("demo_pipeline.py")
 exec(open(demo).read(), {"__name__": "demo", "__file__": demo})
 
 relit = FindSource("Relit")
+app = QApplication.instance()
+SetActiveSource(relit)
+for _ in range(50):
+    app.processEvents()
+
+
+def colour_buttons():
+    tables = [t for t in app.allWidgets() if isinstance(t, QTableWidget) and t.isVisible()
+              and t.horizontalHeaderItem(1) is not None and t.horizontalHeaderItem(1).text() == "Colour"]
+    return [b for t in tables for b in (t.cellWidget(r, 1) for r in range(t.rowCount())) if isinstance(b, QPushButton)]
+
+
+def close_dialog(seen):
+    dialogs = [d for d in app.topLevelWidgets() if isinstance(d, QColorDialog) and d.isVisible()]
+    seen.append(len(dialogs))
+    for d in dialogs:
+        d.reject()
+
+
+def click_opens_dialog(button):
+    """Scrolls the button into view as a user would (the panel is shorter than its
+    contents) and clicks it as a real click arrives: at the window, at its place."""
+    parent = button.parentWidget()
+    while parent is not None and not isinstance(parent, QScrollArea):
+        parent = parent.parentWidget()
+    if parent is not None:
+        parent.ensureWidgetVisible(button)
+    for _ in range(20):
+        app.processEvents()
+    seen = []
+    QTimer.singleShot(300, lambda: close_dialog(seen))
+    window = button.window()
+    QTest.mouseClick(window.windowHandle(), Qt.LeftButton, Qt.NoModifier, button.mapTo(window, button.rect().center()))
+    for _ in range(100):
+        if seen:
+            break
+        app.processEvents()
+        QTest.qWait(20)
+    return seen == [1]
+
+
+buttons = colour_buttons()
+if result.check(len(buttons) == 8, "the lights panel shows %d colour buttons, expected 8" % len(buttons)):
+    opened = [i for i, button in enumerate(buttons) if click_opens_dialog(button)]
+    result.check(len(opened) == 8, "a click on each colour button opens the colour dialog (opened for %s)" % opened)
+
 settings = list(relit.LightSettings)
 # Turn the warm light off and make the amber one strong and red.
 settings[5] = "0"
