@@ -1,0 +1,135 @@
+#include "SceneImport.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+using namespace radiosity;
+
+namespace
+{
+
+/// A unit floor quad (material 0) and a small ceiling lamp (material 1), one object each.
+RawScene FloorAndLamp()
+{
+  RawScene raw;
+  raw.points = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 0.4, 0.4, 1 }, { 0.4, 0.6, 1 },
+    { 0.6, 0.6, 1 }, { 0.6, 0.4, 1 } };
+  raw.connectivity = { 0, 1, 2, 3, 4, 5, 6, 7 };
+  raw.offsets = { 0, 4, 8 };
+  raw.material = { 0, 1 };
+  raw.object = { 0, 1 };
+  raw.objectNames = { "Floor", "Lamp" };
+  raw.materials = { ImportMaterial{ "Oak", { 0.5, 0.4, 0.3 } }, ImportMaterial{ "Bulb", { 0.8, 0.8, 0.8 }, { 2, 2, 1.5 } } };
+  return raw;
+}
+
+} // namespace
+
+TEST(SceneImport, MtlGivesDiffuseEmissiveAndTexture)
+{
+  std::vector<ImportMaterial> m;
+  const std::string text = "# comment\r\nnewmtl Kiefer, glänzend\r\nKd 0.5 0.4 0.3\r\nKs 1 1 1\r\n"
+                           "newmtl Lamp\nKe 4 4 3\nKd 0.2\nmap_Kd -s 1 1 1 wood grain.png\nnewmtl Kiefer, glänzend\nKd 0 0 0\n";
+  ASSERT_EQ(ParseMtl(text, m), "");
+  ASSERT_EQ(m.size(), 2u);
+  EXPECT_EQ(m[0].Name, "Kiefer, glänzend");
+  EXPECT_DOUBLE_EQ(m[0].Diffuse.y, 0.4);            // the first definition of a repeated name wins
+  EXPECT_DOUBLE_EQ(m[1].Emissive.z, 3);
+  EXPECT_DOUBLE_EQ(m[1].Diffuse.x, 0.2);            // one number: grey
+  EXPECT_EQ(m[1].DiffuseTexture, "grain.png");      // the last word after the options
+  EXPECT_NE(ParseMtl("newmtl a\nKd 0.5 nan 0.5\n", m).find("line 2"), std::string::npos);
+  EXPECT_NE(ParseMtl("Kd 1 1 1\n", m).find("before any newmtl"), std::string::npos);
+  EXPECT_NE(ParseMtl("newmtl a\nKd 0.5 0.5\n", m).find("one or three"), std::string::npos);
+}
+
+TEST(SceneImport, EmissiveMaterialsBecomeNamedLights)
+{
+  ImportedScene out;
+  ASSERT_EQ(BuildImportedScene(FloorAndLamp(), ImportOptions(), out), "");
+  ASSERT_EQ(out.Mesh.NumberOfPolygons(), 2);
+  EXPECT_EQ(out.LightNames, std::vector<std::string>{ "Bulb" });
+  EXPECT_EQ(out.Mesh.lightId, (std::vector<int>{ -1, 0 }));
+  EXPECT_DOUBLE_EQ(out.Emission[1].x, 2);
+  EXPECT_DOUBLE_EQ(out.Mesh.reflectance[0].z, 0.3);
+  EXPECT_EQ(out.Summary, "2 polygons, 2 materials, 1 lights, 0 degenerate cells dropped");
+  int lights = 0;
+  EXPECT_EQ(ValidateScene(out.Mesh, lights), "");
+  EXPECT_EQ(lights, 1);
+}
+
+TEST(SceneImport, LightPerObjectNamesLightsAfterObjects)
+{
+  RawScene raw = FloorAndLamp();
+  // A second lamp object with the same material: one light by material, two by object.
+  raw.points.insert(raw.points.end(), { { 0.1, 0.1, 1 }, { 0.1, 0.2, 1 }, { 0.2, 0.2, 1 } });
+  raw.connectivity.insert(raw.connectivity.end(), { 8, 9, 10 });
+  raw.offsets.push_back(11);
+  raw.material.push_back(1);
+  raw.object.push_back(2);
+  raw.objectNames.push_back("Lamp");
+  ImportedScene byMaterial, byObject;
+  ASSERT_EQ(BuildImportedScene(raw, ImportOptions(), byMaterial), "");
+  EXPECT_EQ(byMaterial.LightNames.size(), 1u);
+  ImportOptions options;
+  options.LightPerObject = true;
+  ASSERT_EQ(BuildImportedScene(raw, options, byObject), "");
+  EXPECT_EQ(byObject.LightNames, (std::vector<std::string>{ "Lamp", "Lamp (2)" }));
+  EXPECT_EQ(byObject.Mesh.lightId, (std::vector<int>{ -1, 0, 1 }));
+}
+
+TEST(SceneImport, DegenerateCellsAreDroppedAndCounted)
+{
+  RawScene raw = FloorAndLamp();
+  // Collinear corners, and a triangle with a repeated corner: both have no area.
+  raw.points.insert(raw.points.end(), { { 0, 0, 2 }, { 1, 0, 2 }, { 2, 0, 2 } });
+  raw.connectivity.insert(raw.connectivity.end(), { 8, 9, 10, 0, 1, 1 });
+  raw.offsets.insert(raw.offsets.end(), { 11, 14 });
+  raw.material.insert(raw.material.end(), { 0, 0 });
+  raw.object.insert(raw.object.end(), { 0, 0 });
+  ImportedScene out;
+  ASSERT_EQ(BuildImportedScene(raw, ImportOptions(), out), "");
+  EXPECT_EQ(out.Mesh.NumberOfPolygons(), 2);
+  EXPECT_EQ(out.Dropped, 2);
+  EXPECT_NE(out.Summary.find("2 degenerate cells dropped"), std::string::npos);
+}
+
+TEST(SceneImport, ClampsReflectanceAndScalesUnits)
+{
+  RawScene raw = FloorAndLamp();
+  raw.materials[0].Diffuse = { 1.02, 0.5, -0.1 };
+  for (Vec3& p : raw.points)
+  {
+    p = p * 1000.0; // millimetres
+  }
+  ImportOptions options;
+  options.UnitScale = 0.001;
+  ImportedScene out;
+  ASSERT_EQ(BuildImportedScene(raw, options, out), "");
+  EXPECT_DOUBLE_EQ(out.Mesh.reflectance[0].x, 1.0);
+  EXPECT_DOUBLE_EQ(out.Mesh.reflectance[0].z, 0.0);
+  EXPECT_NEAR(out.Mesh.points[2].x, 1.0, 1e-12);
+  ASSERT_FALSE(out.Warnings.empty());
+  EXPECT_NE(out.Warnings[0].find("'Oak'"), std::string::npos);
+}
+
+TEST(SceneImport, BadInputIsAnErrorNamingIt)
+{
+  ImportedScene out;
+  RawScene nan = FloorAndLamp();
+  nan.points[5].y = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_NE(BuildImportedScene(nan, ImportOptions(), out).find("point 5"), std::string::npos);
+  RawScene negative = FloorAndLamp();
+  negative.materials[1].Emissive.x = -1;
+  EXPECT_NE(BuildImportedScene(negative, ImportOptions(), out).find("'Bulb'"), std::string::npos);
+  ImportOptions zero;
+  zero.UnitScale = 0;
+  EXPECT_NE(BuildImportedScene(FloorAndLamp(), zero, out).find("unit scale"), std::string::npos);
+  EXPECT_EQ(BuildImportedScene(RawScene(), ImportOptions(), out), "no polygons");
+  RawScene dark = FloorAndLamp();
+  dark.materials[1].Emissive = Vec3();
+  ASSERT_EQ(BuildImportedScene(dark, ImportOptions(), out), "");
+  EXPECT_TRUE(out.LightNames.empty());
+  EXPECT_NE(out.Warnings.back().find("no emissive material"), std::string::npos);
+}
