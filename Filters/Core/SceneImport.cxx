@@ -13,46 +13,6 @@ namespace radiosity
 namespace
 {
 
-std::string Trim(const std::string& text)
-{
-  const size_t first = text.find_first_not_of(" \t\r\n");
-  if (first == std::string::npos)
-  {
-    return std::string();
-  }
-  const size_t last = text.find_last_not_of(" \t\r\n");
-  return text.substr(first, last - first + 1);
-}
-
-/// "Kd 0.5 0.4 0.3" or "Kd 0.5" (grey) after the keyword; false if not numbers.
-bool ReadColour(std::istringstream& words, Vec3& colour)
-{
-  std::vector<double> values;
-  std::string word;
-  while (words >> word)
-  {
-    try
-    {
-      size_t used = 0;
-      values.push_back(std::stod(word, &used));
-      if (used != word.size())
-      {
-        return false;
-      }
-    }
-    catch (const std::exception&)
-    {
-      return false;
-    }
-  }
-  if (values.size() != 1 && values.size() != 3)
-  {
-    return false;
-  }
-  colour = values.size() == 1 ? Vec3{ values[0], values[0], values[0] } : Vec3{ values[0], values[1], values[2] };
-  return true;
-}
-
 bool Finite(const Vec3& v)
 {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
@@ -107,6 +67,23 @@ std::vector<int> CornerIds(const RawScene& raw, int i)
     ids.pop_back();
   }
   return ids;
+}
+
+/// Drops points no polygon uses (files share vertex lists between meshes), renumbering.
+void KeepUsedPoints(SceneMesh& mesh)
+{
+  std::vector<int> newId(mesh.points.size(), -1);
+  std::vector<Vec3> used;
+  for (int& id : mesh.connectivity)
+  {
+    if (newId[id] < 0)
+    {
+      newId[id] = static_cast<int>(used.size());
+      used.push_back(mesh.points[id]);
+    }
+    id = newId[id];
+  }
+  mesh.points.swap(used);
 }
 
 /// A unique light name: the wanted one, or with " (2)", " (3)"... when taken.
@@ -164,70 +141,6 @@ std::string Summarize(const ImportedScene& out)
 
 } // namespace
 
-std::string ParseMtl(const std::string& text, std::vector<ImportMaterial>& materials)
-{
-  std::istringstream lines(text);
-  std::string line;
-  std::set<std::string> seen;
-  ImportMaterial* current = nullptr;
-  ImportMaterial ignored; // a repeated name's second definition lands here
-  for (int number = 1; std::getline(lines, line); ++number)
-  {
-    std::istringstream words(line);
-    std::string keyword;
-    if (!(words >> keyword) || keyword[0] == '#')
-    {
-      continue;
-    }
-    const std::string where = "line " + std::to_string(number) + ": ";
-    if (keyword == "newmtl")
-    {
-      std::string rest;
-      std::getline(words, rest);
-      const std::string name = Trim(rest);
-      if (name.empty())
-      {
-        return where + "newmtl without a name";
-      }
-      if (seen.insert(name).second)
-      {
-        materials.push_back(ImportMaterial{ name });
-        current = &materials.back();
-      }
-      else
-      {
-        ignored = ImportMaterial{ name };
-        current = &ignored;
-      }
-      continue;
-    }
-    const bool colour = keyword == "Kd" || keyword == "Ke";
-    if (!colour && keyword != "map_Kd")
-    {
-      continue;
-    }
-    if (!current)
-    {
-      return where + keyword + " before any newmtl";
-    }
-    if (keyword == "map_Kd")
-    {
-      std::string rest;
-      std::getline(words, rest);
-      // Options (-s, -o, ...) come before the file name; the name is the last word.
-      const std::string path = Trim(rest);
-      current->DiffuseTexture = path.substr(path.find_last_of(" \t") == std::string::npos ? 0 : path.find_last_of(" \t") + 1);
-      continue;
-    }
-    Vec3& target = keyword == "Kd" ? current->Diffuse : current->Emissive;
-    if (!ReadColour(words, target) || !Finite(target))
-    {
-      return where + keyword + " needs one or three finite numbers (material '" + current->Name + "')";
-    }
-  }
-  return std::string();
-}
-
 std::string BuildImportedScene(const RawScene& raw, const ImportOptions& options, ImportedScene& out)
 {
   out = ImportedScene();
@@ -241,7 +154,8 @@ std::string BuildImportedScene(const RawScene& raw, const ImportOptions& options
     return error;
   }
   const int polygons = raw.NumberOfPolygons();
-  if (raw.material.size() != static_cast<size_t>(polygons) || raw.object.size() != static_cast<size_t>(polygons))
+  if (raw.material.size() != static_cast<size_t>(polygons) || raw.object.size() != static_cast<size_t>(polygons) ||
+    (!raw.colour.empty() && raw.colour.size() != static_cast<size_t>(polygons)))
   {
     return "internal: material and object lists do not match the polygons";
   }
@@ -257,6 +171,13 @@ std::string BuildImportedScene(const RawScene& raw, const ImportOptions& options
     if (m >= static_cast<int>(raw.materials.size()))
     {
       return "internal: a polygon refers to material " + std::to_string(m) + ", which does not exist";
+    }
+  }
+  for (const Vec3& c : raw.colour)
+  {
+    if (!Finite(c))
+    {
+      return "a polygon colour is not a finite number";
     }
   }
   out.Mesh.points.reserve(raw.points.size());
@@ -289,13 +210,18 @@ std::string BuildImportedScene(const RawScene& raw, const ImportOptions& options
   {
     return raw.NumberOfPolygons() ? "every polygon is degenerate (zero area or collinear points)" : "no polygons";
   }
+  KeepUsedPoints(out.Mesh);
   // Materials in use get reflectance (clamped into [0, 1]); polygons without one get 0.8.
   std::set<std::string> clamped;
   int unassigned = 0;
   for (int i : kept)
   {
     const int m = raw.material[i];
-    const Vec3 diffuse = m >= 0 ? raw.materials[m].Diffuse : Vec3{ 0.8, 0.8, 0.8 };
+    Vec3 diffuse = m >= 0 ? raw.materials[m].Diffuse : Vec3{ 0.8, 0.8, 0.8 };
+    if (!raw.colour.empty())
+    {
+      diffuse = { diffuse.x * raw.colour[i].x, diffuse.y * raw.colour[i].y, diffuse.z * raw.colour[i].z };
+    }
     out.Mesh.reflectance.push_back(Clamped(diffuse));
     if (m >= 0 && !InUnitRange(diffuse))
     {

@@ -21,11 +21,6 @@ struct ImportMaterial
   std::string DiffuseTexture;    ///< texture file the diffuse colour is multiplied by, if any
 };
 
-/// Parses Wavefront MTL text: `newmtl`, `Kd`, `Ke` and `map_Kd` (the rest is ignored).
-/// A name defined twice keeps its first definition (assimp writes some twice). Returns
-/// an empty string, or "line N: what is wrong".
-std::string ParseMtl(const std::string& text, std::vector<ImportMaterial>& materials);
-
 /// Polygons as read from a file, before they become a radiosity scene.
 struct RawScene
 {
@@ -34,6 +29,7 @@ struct RawScene
   std::vector<int> connectivity;
   std::vector<int> material; ///< per polygon: index into materials, or -1 for none
   std::vector<int> object;   ///< per polygon: index into objectNames, or -1
+  std::vector<Vec3> colour;  ///< per polygon, multiplies its material's diffuse; empty: none
   std::vector<ImportMaterial> materials;
   std::vector<std::string> objectNames;
   int NumberOfPolygons() const { return static_cast<int>(offsets.size()) - 1; }

@@ -1,4 +1,5 @@
 #include "SceneImport.h"
+#include "Wavefront.h"
 
 #include <gtest/gtest.h>
 
@@ -132,4 +133,23 @@ TEST(SceneImport, BadInputIsAnErrorNamingIt)
   ASSERT_EQ(BuildImportedScene(dark, ImportOptions(), out), "");
   EXPECT_TRUE(out.LightNames.empty());
   EXPECT_NE(out.Warnings.back().find("no emissive material"), std::string::npos);
+}
+
+TEST(SceneImport, ObjGivesFacesMaterialsAndObjects)
+{
+  RawScene raw;
+  std::vector<std::string> libraries;
+  const std::string text = "mtllib a b.mtl\nv 0 0 0\nv 1 0 0 0.5 0.5 0.5\nv 1 1 0\nv 0 1 0\n"
+                           "f 1 2 3\nusemtl Red Brick\no Wall 1\nf -4/1 -3/2/1 -2//1 -1\ng Trim\nusemtl Oak\nf 1 3 4\n";
+  ASSERT_EQ(ParseObj(text, raw, libraries), "");
+  EXPECT_EQ(libraries, std::vector<std::string>{ "a b.mtl" });
+  ASSERT_EQ(raw.NumberOfPolygons(), 3);
+  EXPECT_EQ(raw.material, (std::vector<int>{ -1, 0, 1 }));
+  EXPECT_EQ(raw.object, (std::vector<int>{ -1, 0, 1 }));
+  EXPECT_EQ(raw.materials[0].Name, "Red Brick");
+  EXPECT_EQ(raw.objectNames, (std::vector<std::string>{ "Wall 1", "Trim" }));
+  EXPECT_EQ(std::vector<int>(raw.connectivity.begin() + 3, raw.connectivity.begin() + 7), (std::vector<int>{ 0, 1, 2, 3 }));
+  EXPECT_NE(ParseObj("v 0 0\n", raw, libraries).find("line 1"), std::string::npos);
+  EXPECT_NE(ParseObj("v 0 0 0\nf 1 0 1\n", raw, libraries).find("face corner '0'"), std::string::npos);
+  EXPECT_NE(ParseObj("v 0 0 0\nv 1 0 0\nf 1 2\n", raw, libraries).find("three corners"), std::string::npos);
 }

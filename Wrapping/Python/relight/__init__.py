@@ -15,7 +15,9 @@ from .vtkRadiosityFilters import (  # noqa: F401
     vtkRadiosityEXRWriter,
     vtkRadiosityMesher,
     vtkRadiosityRelight,
+    vtkRadiositySceneReader,
 )
+from .importing import import_scene  # noqa: F401
 from .scene import (  # noqa: F401
     ErrorCatcher,
     add_field_ints,

@@ -1,0 +1,210 @@
+#include "SceneFiles.h"
+#include "SceneFilesErrors.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkMatrix4x4.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include <vtksys/SystemTools.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+namespace SceneFiles
+{
+namespace
+{
+
+/// Adds one polygon of point ids (offset into raw.points) with its material and object.
+void AddPolygon(const vtkIdType* ids, vtkIdType count, int base, int material, int object, radiosity::RawScene& raw)
+{
+  for (vtkIdType k = 0; k < count; ++k)
+  {
+    raw.connectivity.push_back(base + static_cast<int>(ids[k]));
+  }
+  raw.offsets.push_back(static_cast<int>(raw.connectivity.size()));
+  raw.material.push_back(material);
+  raw.object.push_back(object);
+}
+
+/// A strip a b c d ... as triangles (a b c), (c b d), ... keeping one orientation.
+void AddStrip(const vtkIdType* ids, vtkIdType count, int base, int material, int object, radiosity::RawScene& raw)
+{
+  for (vtkIdType k = 0; k + 2 < count; ++k)
+  {
+    const vtkIdType even[3] = { ids[k], ids[k + 1], ids[k + 2] };
+    const vtkIdType odd[3] = { ids[k + 1], ids[k], ids[k + 2] };
+    AddPolygon(k % 2 ? odd : even, 3, base, material, object, raw);
+  }
+}
+
+double SrgbToLinear(double c)
+{
+  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
+} // namespace
+
+const std::vector<std::string>& NativeExtensions()
+{
+  static const std::vector<std::string> extensions = { "obj", "gltf", "glb", "ply" };
+  return extensions;
+}
+
+const std::vector<std::string>& AssimpExtensions()
+{
+  static const std::vector<std::string> extensions = { "ifc", "fbx", "dae", "3ds", "blend", "x3d", "lwo",
+    "ase", "ms3d", "stl", "off", "x", "ac", "md5mesh" };
+  return extensions;
+}
+
+std::string Read(const std::string& path, radiosity::RawScene& raw, std::vector<std::string>& warnings)
+{
+  if (!vtksys::SystemTools::FileExists(path, true))
+  {
+    return "'" + path + "' does not exist or is not a file";
+  }
+  std::string extension = vtksys::SystemTools::GetFilenameLastExtension(path);
+  extension = vtksys::SystemTools::LowerCase(extension.empty() ? extension : extension.substr(1));
+  if (extension == "obj")
+  {
+    return ReadObj(path, raw, warnings);
+  }
+  if (extension == "gltf" || extension == "glb")
+  {
+    return ReadGltf(path, raw, warnings);
+  }
+  if (extension == "ply")
+  {
+    return ReadPly(path, raw, warnings);
+  }
+  const auto& other = AssimpExtensions();
+  if (std::find(other.begin(), other.end(), extension) != other.end())
+  {
+    return ReadWithAssimp(path, raw, warnings);
+  }
+  return "'" + path + "': the extension '." + extension +
+    "' is not a scene format this reader knows (OBJ, glTF, GLB, PLY; IFC, FBX, DAE, 3DS and others through assimp)";
+}
+
+int AppendPolygons(vtkPolyData* data, const vtkMatrix4x4* transform, int material, int object,
+  radiosity::RawScene& raw)
+{
+  const int base = static_cast<int>(raw.points.size());
+  for (vtkIdType p = 0; p < data->GetNumberOfPoints(); ++p)
+  {
+    double x[4] = { 0, 0, 0, 1 };
+    data->GetPoint(p, x);
+    if (transform)
+    {
+      vtkMatrix4x4::MultiplyPoint(&transform->Element[0][0], x, x);
+    }
+    raw.points.push_back({ x[0], x[1], x[2] });
+  }
+  auto each = [&](vtkCellArray* cells, bool strip) {
+    auto iterator = vtk::TakeSmartPointer(cells->NewIterator());
+    for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell())
+    {
+      vtkIdType count = 0;
+      const vtkIdType* ids = nullptr;
+      iterator->GetCurrentCell(count, ids);
+      (strip ? AddStrip : AddPolygon)(ids, count, base, material, object, raw);
+    }
+  };
+  each(data->GetPolys(), false);
+  each(data->GetStrips(), true);
+  return static_cast<int>(data->GetNumberOfVerts() + data->GetNumberOfLines());
+}
+
+TemporaryFolder::TemporaryFolder()
+{
+  const char* base = vtksys::SystemTools::GetEnv("TMPDIR");
+  std::random_device random;
+  this->Path = std::string(base && *base ? base : "/tmp") + "/relight-import-" + std::to_string(random()) +
+    "-" + std::to_string(random());
+  vtksys::SystemTools::MakeDirectory(this->Path);
+}
+
+TemporaryFolder::~TemporaryFolder()
+{
+  vtksys::SystemTools::RemoveADirectory(this->Path);
+}
+
+std::string Trimmed(const std::string& text)
+{
+  const size_t first = text.find_first_not_of(" \t\r\n");
+  const size_t last = text.find_last_not_of(" \t\r\n");
+  return first == std::string::npos ? std::string() : text.substr(first, last - first + 1);
+}
+
+radiosity::Vec3 MeanColour(vtkImageData* image)
+{
+  vtkDataArray* scalars = image ? image->GetPointData()->GetScalars() : nullptr;
+  if (!scalars || scalars->GetNumberOfTuples() == 0 || scalars->GetNumberOfComponents() < 3)
+  {
+    return { 1, 1, 1 };
+  }
+  // 8-bit textures hold sRGB; light adds up in linear values, so average those.
+  const bool encoded = scalars->GetDataTypeSize() == 1;
+  double sum[3] = { 0, 0, 0 };
+  for (vtkIdType t = 0; t < scalars->GetNumberOfTuples(); ++t)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const double v = scalars->GetComponent(t, c);
+      sum[c] += encoded ? SrgbToLinear(v / 255.0) : v;
+    }
+  }
+  const double n = static_cast<double>(scalars->GetNumberOfTuples());
+  return { sum[0] / n, sum[1] / n, sum[2] / n };
+}
+
+}
+
+namespace SceneFiles
+{
+
+class ErrorCapture::Observer : public vtkCommand
+{
+public:
+  static Observer* New() { return new Observer; }
+  void Execute(vtkObject*, unsigned long event, void* data) override
+  {
+    if (event == vtkCommand::ErrorEvent && this->First.empty() && data)
+    {
+      // "ERROR: In file, line N\nclass (0x...): message" -> the message.
+      std::string text = static_cast<const char*>(data);
+      const size_t colon = text.find("): ");
+      this->First = Trimmed(colon == std::string::npos ? text : text.substr(colon + 3));
+    }
+  }
+  std::string First;
+};
+
+ErrorCapture::ErrorCapture(vtkObject* reader)
+  : Reader(reader)
+  , Command(vtkSmartPointer<Observer>::New())
+{
+  // Warnings are observed too, and dropped: a reader's complaint becomes our one message.
+  this->Tags[0] = reader->AddObserver(vtkCommand::ErrorEvent, this->Command);
+  this->Tags[1] = reader->AddObserver(vtkCommand::WarningEvent, this->Command);
+}
+
+ErrorCapture::~ErrorCapture()
+{
+  this->Reader->RemoveObserver(this->Tags[0]);
+  this->Reader->RemoveObserver(this->Tags[1]);
+}
+
+std::string ErrorCapture::Message() const
+{
+  return this->Command->First;
+}
+
+}

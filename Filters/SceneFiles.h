@@ -1,0 +1,56 @@
+// Reading scene files into the core's RawScene: VTK's readers for OBJ+MTL, glTF/GLB and
+// PLY; assimp's command-line tool for the formats VTK lacks (IFC, FBX, DAE, 3DS, ...).
+// Each returns an empty string or what is wrong, naming the file (not wrapped).
+#ifndef SceneFiles_h
+#define SceneFiles_h
+
+#include "SceneImport.h"
+
+#include <string>
+#include <vector>
+
+class vtkImageData;
+class vtkMatrix4x4;
+class vtkPolyData;
+
+namespace SceneFiles
+{
+
+/// Dispatches on the file's extension; `warnings` collects what was read but not used.
+std::string Read(const std::string& path, radiosity::RawScene& raw, std::vector<std::string>& warnings);
+
+std::string ReadObj(const std::string& path, radiosity::RawScene& raw, std::vector<std::string>& warnings);
+std::string ReadGltf(const std::string& path, radiosity::RawScene& raw, std::vector<std::string>& warnings);
+std::string ReadPly(const std::string& path, radiosity::RawScene& raw, std::vector<std::string>& warnings);
+std::string ReadWithAssimp(const std::string& path, radiosity::RawScene& raw, std::vector<std::string>& warnings);
+
+/// Extensions read natively, and those handed to assimp (lower case, without the dot).
+const std::vector<std::string>& NativeExtensions();
+const std::vector<std::string>& AssimpExtensions();
+
+/// Appends `data`'s polygons (points through `transform` if given) with one material and
+/// object; returns the number of cells that were not polygons (lines, points) and so left out.
+int AppendPolygons(vtkPolyData* data, const vtkMatrix4x4* transform, int material, int object,
+  radiosity::RawScene& raw);
+
+/// A fresh folder under the system's temporary directory, removed with its files when
+/// this goes away.
+class TemporaryFolder
+{
+public:
+  TemporaryFolder();
+  ~TemporaryFolder();
+  TemporaryFolder(const TemporaryFolder&) = delete;
+  TemporaryFolder& operator=(const TemporaryFolder&) = delete;
+  std::string Path;
+};
+
+/// `text` without leading and trailing white space.
+std::string Trimmed(const std::string& text);
+
+/// The mean linear RGB of an 8-bit sRGB image (or of a float one, as is); white if none.
+radiosity::Vec3 MeanColour(vtkImageData* image);
+
+}
+
+#endif

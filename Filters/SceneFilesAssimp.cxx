@@ -1,0 +1,75 @@
+// Formats VTK does not read (IFC, FBX, DAE, 3DS, ...): Debian's `assimp` tool converts
+// them to OBJ + MTL in a temporary folder (scene-graph transforms applied), which is then
+// read as any OBJ.
+#include "SceneFiles.h"
+
+#include <vtksys/Process.h>
+#include <vtksys/SystemTools.hxx>
+
+
+namespace SceneFiles
+{
+namespace
+{
+
+/// Runs `assimp export in out`; empty string or what went wrong.
+std::string RunAssimp(const std::string& program, const std::string& in, const std::string& out)
+{
+  const char* command[] = { program.c_str(), "export", in.c_str(), out.c_str(), nullptr };
+  vtksysProcess* process = vtksysProcess_New();
+  vtksysProcess_SetCommand(process, command);
+  vtksysProcess_SetOption(process, vtksysProcess_Option_HideWindow, 1);
+  double timeout = 600; // seconds; a huge model converts in well under that
+  vtksysProcess_SetTimeout(process, timeout);
+  vtksysProcess_Execute(process);
+  std::string output;
+  char* data = nullptr;
+  int length = 0;
+  while (vtksysProcess_WaitForData(process, &data, &length, nullptr))
+  {
+    output.append(data, length);
+  }
+  vtksysProcess_WaitForExit(process, nullptr);
+  const int state = vtksysProcess_GetState(process);
+  const int code = state == vtksysProcess_State_Exited ? vtksysProcess_GetExitValue(process) : -1;
+  vtksysProcess_Delete(process);
+  if (code == 0 && vtksys::SystemTools::FileExists(out, true))
+  {
+    return std::string();
+  }
+  // assimp's own reason is its last non-empty line.
+  std::vector<std::string> lines;
+  vtksys::SystemTools::Split(output, lines, '\n');
+  std::string reason;
+  for (const std::string& line : lines)
+  {
+    if (!Trimmed(line).empty())
+    {
+      reason = Trimmed(line);
+    }
+  }
+  return reason.empty() ? "assimp failed" : "assimp: " + reason;
+}
+
+} // namespace
+
+std::string ReadWithAssimp(const std::string& path, radiosity::RawScene& raw, std::vector<std::string>& warnings)
+{
+  const std::string program = vtksys::SystemTools::FindProgram("assimp");
+  if (program.empty())
+  {
+    return "'" + path + "' needs assimp to be read, and the 'assimp' program is not installed "
+                        "(Debian: apt-get install assimp-utils; or convert the file to glTF or OBJ)";
+  }
+  const TemporaryFolder folder;
+  const std::string converted = folder.Path + "/scene.obj";
+  const std::string error = RunAssimp(program, path, converted);
+  if (!error.empty())
+  {
+    return "'" + path + "' could not be converted (" + error + ")";
+  }
+  const std::string read = ReadObj(converted, raw, warnings);
+  return read.empty() ? read : "'" + path + "' converted by assimp: " + read;
+}
+
+}

@@ -1,0 +1,321 @@
+// glTF 2.0 (.gltf, .glb) through VTK's document loader: node transforms applied,
+// baseColorFactor (times the base colour texture's mean) as the diffuse colour, and
+// emissiveFactor times KHR_materials_emissive_strength (read from the JSON: the loader
+// skips that extension) as the emission.
+#include "SceneFiles.h"
+#include "SceneFilesErrors.h"
+
+#include "vtkGLTFDocumentLoader.h"
+#include "vtkImageData.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkPolyData.h"
+
+#include <vtk_nlohmannjson.h>
+#include VTK_NLOHMANN_JSON(json.hpp)
+
+#include <vtksys/SystemTools.hxx>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+
+namespace SceneFiles
+{
+namespace
+{
+
+using Loader = vtkGLTFDocumentLoader;
+
+/// A .gltf file's JSON, or a .glb file's JSON and binary chunks.
+struct GltfParts
+{
+  std::string Json;
+  std::string Binary;
+  bool Glb = false;
+};
+
+GltfParts Split(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  GltfParts parts;
+  if (bytes.size() < 20 || bytes.compare(0, 4, "glTF") != 0)
+  {
+    parts.Json = bytes;
+    return parts;
+  }
+  parts.Glb = true;
+  size_t at = 12;
+  while (at + 8 <= bytes.size())
+  {
+    std::uint32_t length = 0;
+    std::memcpy(&length, bytes.data() + at, 4);
+    const std::string type = bytes.substr(at + 4, 4);
+    const std::string data = bytes.substr(at + 8, std::min<size_t>(length, bytes.size() - at - 8));
+    (type == "JSON" ? parts.Json : parts.Binary) = data;
+    at += 8 + static_cast<size_t>(length);
+  }
+  return parts;
+}
+
+bool Has(const nlohmann::json& object, const char* key, bool (nlohmann::json::*kind)() const noexcept)
+{
+  return object.is_object() && object.contains(key) && (object[key].*kind)();
+}
+
+/// VTK 9.2's loader reads some keys without looking first, and a missing one ends the
+/// whole process (an assertion in its JSON library). Where glTF 2.0 makes the key
+/// optional (a material's pbrMetallicRoughness) it is added, and `patched` set; where the
+/// key is required, the answer is what is missing.
+std::string Prepare(nlohmann::json& document, bool& patched)
+{
+  using json = nlohmann::json;
+  if (!Has(document, "asset", &json::is_object))
+  {
+    return "has no asset object (not glTF 2.0)";
+  }
+  for (auto& material : document.value("materials", json::array()))
+  {
+    if (material.is_object() && !material.contains("pbrMetallicRoughness"))
+    {
+      patched = true;
+    }
+  }
+  if (patched)
+  {
+    for (auto& material : document["materials"])
+    {
+      if (material.is_object() && !material.contains("pbrMetallicRoughness"))
+      {
+        material["pbrMetallicRoughness"] = json::object();
+      }
+    }
+  }
+  size_t m = 0;
+  for (const auto& mesh : document.value("meshes", json::array()))
+  {
+    if (!Has(mesh, "primitives", &json::is_array))
+    {
+      return "mesh " + std::to_string(m) + " has no primitives";
+    }
+    for (const auto& primitive : mesh["primitives"])
+    {
+      if (!Has(primitive, "attributes", &json::is_object))
+      {
+        return "a primitive of mesh " + std::to_string(m) + " has no attributes";
+      }
+    }
+    ++m;
+  }
+  for (const auto& camera : document.value("cameras", json::array()))
+  {
+    const std::string type = camera.is_object() ? camera.value("type", "") : "";
+    if ((type == "perspective" || type == "orthographic") && !Has(camera, type.c_str(), &json::is_object))
+    {
+      return "a camera has no " + type + " object";
+    }
+  }
+  for (const auto& animation : document.value("animations", json::array()))
+  {
+    for (const auto& channel : animation.value("channels", json::array()))
+    {
+      if (!Has(channel, "target", &json::is_object))
+      {
+        return "an animation channel has no target";
+      }
+    }
+  }
+  return std::string();
+}
+
+/// Writes `document` where the loader can read it instead of `path`: URIs of files made
+/// absolute (they were relative to `path`), and for a .glb the binary chunk kept.
+std::string WritePatched(const std::string& path, const GltfParts& parts, nlohmann::json document,
+  const std::string& folder)
+{
+  const std::string base = vtksys::SystemTools::GetFilenamePath(vtksys::SystemTools::CollapseFullPath(path));
+  for (const char* list : { "buffers", "images" })
+  {
+    if (!Has(document, list, &nlohmann::json::is_array))
+    {
+      continue;
+    }
+    for (auto& entry : document[list])
+    {
+      if (entry.is_object() && entry.contains("uri") && entry["uri"].is_string())
+      {
+        const std::string uri = entry["uri"].get<std::string>();
+        if (uri.compare(0, 5, "data:") != 0)
+        {
+          entry["uri"] = vtksys::SystemTools::CollapseFullPath(uri, base);
+        }
+      }
+    }
+  }
+  std::string text = document.dump();
+  const std::string copy = folder + (parts.Glb ? "/scene.glb" : "/scene.gltf");
+  std::ofstream out(copy, std::ios::binary);
+  if (!parts.Glb)
+  {
+    out << text;
+    return copy;
+  }
+  text.append((4 - text.size() % 4) % 4, ' ');
+  const std::string binary = parts.Binary + std::string((4 - parts.Binary.size() % 4) % 4, '\0');
+  auto word = [&out](std::uint32_t value) { out.write(reinterpret_cast<const char*>(&value), 4); };
+  out << "glTF";
+  word(2);
+  word(static_cast<std::uint32_t>(12 + 8 + text.size() + (binary.empty() ? 0 : 8 + binary.size())));
+  word(static_cast<std::uint32_t>(text.size()));
+  out << "JSON" << text;
+  if (!binary.empty())
+  {
+    word(static_cast<std::uint32_t>(binary.size()));
+    out.write("BIN\0", 4);
+    out << binary;
+  }
+  return copy;
+}
+
+/// Each material's emissive strength (1 where the extension is absent).
+std::vector<double> EmissiveStrengths(const nlohmann::json& document, size_t materials)
+{
+  std::vector<double> strength(materials, 1.0);
+  if (!Has(document, "materials", &nlohmann::json::is_array))
+  {
+    return strength;
+  }
+  const auto& list = document["materials"];
+  for (size_t m = 0; m < std::min(materials, list.size()); ++m)
+  {
+    const auto* value = &list[m];
+    for (const char* key : { "extensions", "KHR_materials_emissive_strength", "emissiveStrength" })
+    {
+      value = value->is_object() && value->contains(key) ? &(*value)[key] : nullptr;
+      if (!value)
+      {
+        break;
+      }
+    }
+    if (value && value->is_number())
+    {
+      strength[m] = value->get<double>();
+    }
+  }
+  return strength;
+}
+
+radiosity::Vec3 Rgb(const std::vector<double>& factor, const radiosity::Vec3& otherwise)
+{
+  return factor.size() >= 3 ? radiosity::Vec3{ factor[0], factor[1], factor[2] } : otherwise;
+}
+
+void ReadMaterials(const nlohmann::json& document, const Loader::Model& model, radiosity::RawScene& raw)
+{
+  const std::vector<double> strength = EmissiveStrengths(document, model.Materials.size());
+  for (size_t m = 0; m < model.Materials.size(); ++m)
+  {
+    const Loader::Material& source = model.Materials[m];
+    radiosity::ImportMaterial material;
+    material.Name = source.Name.empty() ? "material " + std::to_string(m) : source.Name;
+    // glTF's default base colour is white.
+    material.Diffuse = Rgb(source.PbrMetallicRoughness.BaseColorFactor, { 1, 1, 1 });
+    const int texture = source.PbrMetallicRoughness.BaseColorTexture.Index;
+    if (texture >= 0 && texture < static_cast<int>(model.Textures.size()))
+    {
+      const int image = model.Textures[texture].Source;
+      if (image >= 0 && image < static_cast<int>(model.Images.size()))
+      {
+        const radiosity::Vec3 mean = MeanColour(model.Images[image].ImageData);
+        material.Diffuse = { material.Diffuse.x * mean.x, material.Diffuse.y * mean.y, material.Diffuse.z * mean.z };
+      }
+    }
+    material.Emissive = Rgb(source.EmissiveFactor, {}) * strength[m];
+    raw.materials.push_back(material);
+  }
+}
+
+/// Appends the meshes of node `n` and its children, placed by their global transforms.
+int AppendNode(const Loader::Model& model, int n, radiosity::RawScene& raw, int depth)
+{
+  if (n < 0 || n >= static_cast<int>(model.Nodes.size()) || depth > 256)
+  {
+    return 0;
+  }
+  const Loader::Node& node = model.Nodes[n];
+  int skipped = 0;
+  if (node.Mesh >= 0 && node.Mesh < static_cast<int>(model.Meshes.size()))
+  {
+    const Loader::Mesh& mesh = model.Meshes[node.Mesh];
+    const int object = static_cast<int>(raw.objectNames.size());
+    raw.objectNames.push_back(!node.Name.empty() ? node.Name : !mesh.Name.empty() ? mesh.Name : "node " + std::to_string(n));
+    for (const Loader::Primitive& primitive : mesh.Primitives)
+    {
+      if (primitive.Geometry)
+      {
+        skipped += AppendPolygons(primitive.Geometry, node.GlobalTransform, primitive.Material, object, raw);
+      }
+    }
+  }
+  for (int child : node.Children)
+  {
+    skipped += AppendNode(model, child, raw, depth + 1);
+  }
+  return skipped;
+}
+
+} // namespace
+
+std::string ReadGltf(const std::string& path, radiosity::RawScene& raw, std::vector<std::string>& warnings)
+{
+  const GltfParts parts = Split(path);
+  nlohmann::json document = nlohmann::json::parse(parts.Json, nullptr, false);
+  bool patched = false;
+  const std::string invalid = document.is_discarded() ? "is not JSON" : Prepare(document, patched);
+  if (!invalid.empty())
+  {
+    return "'" + path + "' could not be read as glTF: it " + invalid;
+  }
+  const TemporaryFolder folder;
+  const std::string readable = patched ? WritePatched(path, parts, document, folder.Path) : path;
+  vtkNew<Loader> loader;
+  const ErrorCapture capture(loader);
+  std::vector<char> binary;
+  if (!loader->LoadModelMetaDataFromFile(readable) || (parts.Glb && !loader->LoadFileBuffer(readable, binary)) ||
+    !loader->LoadModelData(binary) || !loader->BuildModelVTKGeometry())
+  {
+    return "'" + path + "' could not be read as glTF" +
+      (capture.Message().empty() ? std::string() : " (" + capture.Message() + ")");
+  }
+  loader->BuildGlobalTransforms();
+  const Loader::Model& model = *loader->GetInternalModel();
+  ReadMaterials(document, model, raw);
+  int skipped = 0;
+  if (model.Scenes.empty())
+  {
+    for (int n = 0; n < static_cast<int>(model.Nodes.size()); ++n)
+    {
+      skipped += AppendNode(model, n, raw, 0);
+    }
+  }
+  else
+  {
+    const int scene = model.DefaultScene >= 0 && model.DefaultScene < static_cast<int>(model.Scenes.size())
+      ? model.DefaultScene
+      : 0;
+    for (unsigned int n : model.Scenes[scene].Nodes)
+    {
+      skipped += AppendNode(model, static_cast<int>(n), raw, 0);
+    }
+  }
+  if (skipped)
+  {
+    warnings.push_back(std::to_string(skipped) + " point and line primitives are not surfaces; left out");
+  }
+  return raw.NumberOfPolygons() ? std::string() : "'" + path + "' has no triangles";
+}
+
+}

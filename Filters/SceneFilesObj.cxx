@@ -1,0 +1,115 @@
+// Wavefront OBJ + MTL: the text through the core's parsers (see Wavefront.h for why not
+// vtkOBJReader), diffuse textures through VTK's image readers.
+#include "SceneFiles.h"
+
+#include "Wavefront.h"
+
+#include "vtkImageData.h"
+#include "vtkImageReader2.h"
+#include "vtkImageReader2Factory.h"
+#include "vtkSmartPointer.h"
+
+#include <vtksys/SystemTools.hxx>
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+namespace SceneFiles
+{
+namespace
+{
+
+bool ReadText(const std::string& path, std::string& text)
+{
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+  {
+    return false;
+  }
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  text = buffer.str();
+  return true;
+}
+
+/// The definitions in every `mtllib` the OBJ names, looked up beside the OBJ.
+std::string ReadLibraries(const std::string& path, const std::vector<std::string>& libraries,
+  std::vector<radiosity::ImportMaterial>& definitions)
+{
+  const std::string folder = vtksys::SystemTools::GetFilenamePath(path);
+  for (const std::string& library : libraries)
+  {
+    const std::string file = vtksys::SystemTools::CollapseFullPath(library, folder);
+    std::string text;
+    if (!ReadText(file, text))
+    {
+      return "'" + path + "' uses the material library '" + library + "', which is missing (looked for " + file + ")";
+    }
+    const std::string error = radiosity::ParseMtl(text, definitions);
+    if (!error.empty())
+    {
+      return "'" + path + "', material library '" + library + "', " + error;
+    }
+  }
+  return std::string();
+}
+
+/// The diffuse colour times its texture's mean colour, where the texture can be read.
+void ApplyTexture(const std::string& folder, radiosity::ImportMaterial& m, std::vector<std::string>& warnings)
+{
+  const std::string file = vtksys::SystemTools::CollapseFullPath(m.DiffuseTexture, folder);
+  vtkSmartPointer<vtkImageReader2> reader =
+    vtk::TakeSmartPointer(vtkImageReader2Factory::CreateImageReader2(file.c_str()));
+  if (!reader)
+  {
+    warnings.push_back("the texture '" + m.DiffuseTexture + "' of material '" + m.Name +
+      "' could not be read; its Kd alone is used");
+    return;
+  }
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  const radiosity::Vec3 mean = MeanColour(reader->GetOutput());
+  m.Diffuse = { m.Diffuse.x * mean.x, m.Diffuse.y * mean.y, m.Diffuse.z * mean.z };
+}
+
+} // namespace
+
+std::string ReadObj(const std::string& path, radiosity::RawScene& raw, std::vector<std::string>& warnings)
+{
+  std::string text;
+  if (!ReadText(path, text))
+  {
+    return "'" + path + "' cannot be opened";
+  }
+  std::vector<std::string> libraries;
+  std::string error = radiosity::ParseObj(text, raw, libraries);
+  if (!error.empty())
+  {
+    return "'" + path + "', " + error;
+  }
+  std::vector<radiosity::ImportMaterial> definitions;
+  if (!(error = ReadLibraries(path, libraries, definitions)).empty())
+  {
+    return error;
+  }
+  const std::string folder = vtksys::SystemTools::GetFilenamePath(path);
+  for (radiosity::ImportMaterial& used : raw.materials)
+  {
+    const auto found = std::find_if(definitions.begin(), definitions.end(),
+      [&](const radiosity::ImportMaterial& m) { return m.Name == used.Name; });
+    if (found == definitions.end())
+    {
+      warnings.push_back("material '" + used.Name + "' is used but defined in no material library: reflectance 0.8");
+      continue;
+    }
+    used = *found;
+    if (!used.DiffuseTexture.empty())
+    {
+      ApplyTexture(folder, used, warnings);
+    }
+  }
+  return raw.NumberOfPolygons() ? std::string() : "'" + path + "' has no faces";
+}
+
+}

@@ -1,0 +1,227 @@
+"""Scene files in (issue 10): OBJ+MTL, glTF/GLB and PLY written here with known contents,
+the FZK-Haus IFC through assimp, and the Cornell box as OBJ+MTL solving to the same
+radiosity as Data/cornell_box.vtp. Bad files give an error naming the file and the problem."""
+
+import base64
+import json
+import os
+import struct
+import tempfile
+
+import numpy as np
+from vtkmodules.vtkCommonCore import vtkLogger
+
+import relight
+from relight import cell_array, light_names, read_polydata
+from testlib import check, finish
+
+vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_OFF)
+DATA = os.path.join(os.environ.get("RELIGHT_ROOT", "."), "Data")
+folder = tempfile.mkdtemp()
+
+
+def write(name, text):
+    path = os.path.join(folder, name)
+    with open(path, "w", encoding="utf-8") as f:
+        f.write(text)
+    return path
+
+
+def fields(scene, name):
+    array = scene.GetFieldData().GetAbstractArray(name)
+    return [array.GetValue(i) for i in range(array.GetNumberOfValues())] if array else []
+
+
+def import_error(path, **options):
+    try:
+        relight.import_scene(path, **options)
+    except (OSError, ValueError) as error:
+        return str(error)
+    return None
+
+
+# --- the Cornell box as OBJ + MTL solves to the same radiosity as the .vtp -----------------------
+def write_obj(scene, name):
+    """One material per cell (reflectance and emission as written), named after its light."""
+    names = light_names(scene)
+    rho = cell_array(scene, "Reflectance")
+    ids = cell_array(scene, "LightId").astype(int)
+    emission = cell_array(scene, "Emission")
+    lines, mtl = [f"mtllib {name}.mtl"], []
+    for p in range(scene.GetNumberOfPoints()):
+        lines.append("v %.17g %.17g %.17g" % scene.GetPoint(p))
+    for c in range(scene.GetNumberOfCells()):
+        material = names[ids[c]] if ids[c] >= 0 else f"surface{c}"
+        mtl += [f"newmtl {material}", "Kd %.17g %.17g %.17g" % tuple(rho[c])]
+        if ids[c] >= 0:
+            mtl.append("Ke %.17g %.17g %.17g" % tuple(emission[c]))
+        cell = scene.GetCell(c)
+        lines += [f"usemtl {material}", "f " + " ".join(str(cell.GetPointId(k) + 1) for k in range(cell.GetNumberOfPoints()))]
+    write(name + ".mtl", "\n".join(mtl) + "\n")
+    return write(name + ".obj", "\n".join(lines) + "\n")
+
+
+box = read_polydata(os.path.join(DATA, "cornell_box.vtp"))
+imported = relight.import_scene(write_obj(box, "cornell"))
+check(light_names(imported) == light_names(box), f"light names from the materials: {light_names(imported)}")
+check(np.allclose(cell_array(imported, "Reflectance"), cell_array(box, "Reflectance"), atol=1e-12),
+      "reflectance as written in the MTL")
+reference = relight.solve(box, 100.0, 50.0, ConvergenceThreshold=1e-4).GetOutput()
+solved = relight.solve(imported, 100.0, 50.0, ConvergenceThreshold=1e-4).GetOutput()
+for name in light_names(box):
+    a, b = (cell_array(o, "Radiosity_" + name) for o in (reference, solved))
+    check(a.shape == b.shape and np.allclose(a, b, rtol=1e-9, atol=1e-9 * a.max()),
+          f"Cornell box from OBJ+MTL solves as the .vtp for {name} (max {a.max():.4g} vs {b.max():.4g})")
+
+# --- OBJ details: objects, negative indices, degenerate faces, units --------------------------
+write("two.mtl", "newmtl Bulb\nKd 0.8\nKe 5 5 4\nnewmtl Oak\nKd 1.2 0.4 0.2\n")
+two_lamps = write("two.obj", """mtllib two.mtl
+v 0 0 0
+v 1000 0 0
+v 1000 1000 0
+v 0 1000 0
+usemtl Oak
+o Floor
+f 1 2 3 4
+v 400 400 2000
+v 400 600 2000
+v 600 600 2000
+v 600 400 2000
+o Lamp A
+usemtl Bulb
+f -4 -3 -2 -1
+o Lamp B
+f 5 6 7
+g Junk
+f 1 2 2
+v 2000 0 0
+f 1 2 9
+""")
+by_material = relight.import_scene(two_lamps, unit="mm")
+check(light_names(by_material) == ["Bulb"], f"one light per emissive material: {light_names(by_material)}")
+check(abs(by_material.GetBounds()[5] - 2.0) < 1e-12, f"millimetres to metres: top at {by_material.GetBounds()[5]} m")
+summary = fields(by_material, "ImportSummary")
+check(summary == ["two.obj: 3 polygons, 2 materials, 1 lights, 2 degenerate cells dropped"], f"summary line: {summary}")
+warnings = " | ".join(fields(by_material, "Warnings"))
+check("'Oak'" in warnings and "clamped" in warnings, f"a Kd above 1 is clamped, naming the material: {warnings}")
+check(np.allclose(cell_array(by_material, "Reflectance")[0], [1.0, 0.4, 0.2]), "Oak's reflectance clamped to 1 in red")
+check(np.allclose(cell_array(by_material, "Emission")[1], [5, 5, 4]), "Emission is the Ke colour")
+by_object = relight.import_scene(two_lamps, lights_per_object=True)
+check(light_names(by_object) == ["Lamp A", "Lamp B"], f"one light per object: {light_names(by_object)}")
+
+# --- glTF: node transforms, base colour, emissive factor x KHR_materials_emissive_strength ------
+def gltf_document(binary):
+    """A floor (two triangles, white x 0.5/0.4/0.3) and a lamp quad 2 m up under a parent
+    node scaled by 2, whose material emits (1, 0.5, 0.25) x strength 4."""
+    positions = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0],
+                          [0.2, 0.2, 1], [0.2, 0.3, 1], [0.3, 0.3, 1], [0.3, 0.2, 1]], dtype=np.float32)
+    indices = np.array([0, 1, 2, 0, 2, 3, 4, 5, 6, 4, 6, 7], dtype=np.uint16)
+    blob = positions.tobytes() + indices.tobytes()
+    buffer = {"byteLength": len(blob)}
+    if not binary:
+        buffer["uri"] = "data:application/octet-stream;base64," + base64.b64encode(blob).decode()
+    document = {
+        "asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0, 1]}],
+        "nodes": [{"name": "Floor", "mesh": 0}, {"name": "Rig", "scale": [2, 2, 2], "children": [2]},
+                  {"name": "Lamp", "mesh": 1}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "material": 0}]},
+                   {"primitives": [{"attributes": {"POSITION": 0}, "indices": 2, "material": 1}]}],
+        "materials": [{"name": "Tiles", "pbrMetallicRoughness": {"baseColorFactor": [0.5, 0.4, 0.3, 1]}},
+                      {"name": "Panel", "emissiveFactor": [1, 0.5, 0.25],
+                       "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 4}}}],
+        "extensionsUsed": ["KHR_materials_emissive_strength"],
+        "buffers": [buffer],
+        "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 96},
+                        {"buffer": 0, "byteOffset": 96, "byteLength": 24}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 8, "type": "VEC3",
+                       "min": [0, 0, 0], "max": [1, 1, 1]},
+                      {"bufferView": 1, "componentType": 5123, "count": 6, "type": "SCALAR"},
+                      {"bufferView": 1, "byteOffset": 12, "componentType": 5123, "count": 6, "type": "SCALAR"}],
+    }
+    return document, blob
+
+
+document, _ = gltf_document(binary=False)
+gltf_path = write("room.gltf", json.dumps(document))
+document, blob = gltf_document(binary=True)
+text = json.dumps(document).encode()
+text += b" " * (-len(text) % 4)
+glb = struct.pack("<4sII", b"glTF", 2, 12 + 8 + len(text) + 8 + len(blob)) + \
+    struct.pack("<I4s", len(text), b"JSON") + text + struct.pack("<I4s", len(blob), b"BIN\0") + blob
+glb_path = os.path.join(folder, "room.glb")
+with open(glb_path, "wb") as f:
+    f.write(glb)
+for path in (gltf_path, glb_path):
+    scene = relight.import_scene(path)
+    kind = os.path.splitext(path)[1]
+    ids = cell_array(scene, "LightId").astype(int)
+    check(light_names(scene) == ["Panel"] and list(ids) == [-1, -1, 0, 0], f"{kind}: the emissive material is a light")
+    check(np.allclose(cell_array(scene, "Emission")[ids == 0], [4, 2, 1]), f"{kind}: emissiveFactor x strength 4 = (4, 2, 1)")
+    check(np.allclose(cell_array(scene, "Reflectance")[0], [0.5, 0.4, 0.3]), f"{kind}: baseColorFactor as reflectance")
+    check(abs(scene.GetBounds()[5] - 2.0) < 1e-6 and abs(scene.GetBounds()[1] - 1.0) < 1e-6,
+          f"{kind}: the parent's scale puts the lamp at z = 2 (bounds {scene.GetBounds()})")
+
+# --- PLY: face colours (8-bit sRGB) as linear reflectance -------------------------------------
+ply = write("tiles.ply", """ply
+format ascii 1.0
+element vertex 4
+property float x
+property float y
+property float z
+element face 2
+property list uchar int vertex_indices
+property uchar red
+property uchar green
+property uchar blue
+end_header
+0 0 0
+1 0 0
+1 1 0
+0 1 0
+3 0 1 2 255 128 0
+3 0 2 3 10 10 10
+""")
+tiles = relight.import_scene(ply, require_lights=False)
+srgb = lambda v: v / 12.92 if v <= 0.04045 else ((v + 0.055) / 1.055) ** 2.4  # noqa: E731
+expected = [[srgb(255 / 255), srgb(128 / 255), 0], [srgb(10 / 255)] * 3]
+check(np.allclose(cell_array(tiles, "Reflectance"), expected), "PLY face colours as linear reflectance")
+
+# --- the FZK-Haus IFC (Debian's assimp-testmodels) through assimp -----------------------------
+ifc = "/usr/share/assimp/models/IFC/AC14-FZK-Haus.ifc"
+house = relight.import_scene(ifc, require_lights=False)
+materials = fields(house, "MaterialNames")
+size = [house.GetBounds()[2 * i + 1] - house.GetBounds()[2 * i] for i in range(3)]
+check(house.GetNumberOfCells() > 10000 and "Ziegel" in materials and "Glas" in materials,
+      f"FZK-Haus through assimp: {house.GetNumberOfCells()} polygons, materials {materials}")
+check(14 < max(size) < 20 and min(size) > 5, f"FZK-Haus in metres: {size}")
+
+# --- bad files: an error naming the file and the problem, nothing half-done ---------------------
+cases = [
+    ("a missing file", os.path.join(folder, "nowhere.obj"), "does not exist"),
+    ("an unknown extension", write("scene.xyz", "1 2 3\n"), "'.xyz' is not a scene format"),
+    ("a missing MTL", write("lost.obj", "mtllib lost.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), "lost.mtl', which is missing"),
+    ("a broken MTL", (write("broken.mtl", "newmtl A\nKd 0.5 abc 0.5\n"),
+                      write("broken.obj", "mtllib broken.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl A\nf 1 2 3\n"))[1],
+     "material library 'broken.mtl', line 2: Kd needs"),
+    ("NaN in the OBJ", write("nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n"), "nan.obj', line 2: a vertex coordinate is not"),
+    ("a face before its vertices", write("early.obj", "v 0 0 0\nf 1 2 3\n"), "early.obj', line 2: face corner '2'"),
+    ("a broken glTF", write("broken.gltf", "{ not json"), "broken.gltf' could not be read as glTF"),
+    ("no emitter", ply, "no emissive material"),
+    ("an IFC that is not one", write("fake.ifc", "this is no IFC\n"), "fake.ifc' could not be converted"),
+]
+for label, path, fragment in cases:
+    error = import_error(path)
+    check(error is not None and fragment in error and os.path.basename(path) in error, f"{label}: {error}")
+try:
+    relight.import_scene(two_lamps, unit="furlong")
+    check(False, "an unknown unit is refused")
+except ValueError as error:
+    check("furlong" in str(error), f"an unknown unit is refused: {error}")
+reader = relight.vtkRadiositySceneReader()
+reader.SetFileName(os.path.join(folder, "early.obj"))
+catcher = relight.ErrorCatcher(reader)
+reader.Update()
+check(reader.GetOutput().GetNumberOfCells() == 0 and len(catcher.errors) == 1,
+      f"the reader's output is empty after an error, with one message ({len(catcher.errors)})")
+
+finish("TestImport")
