@@ -40,7 +40,8 @@ def undocumented():
 
 check(not undocumented(), f"every property has help text (missing: {undocumented()})")
 commands = xml_commands()
-check(sorted(commands) == ["vtkLightTaggedRadiosity", "vtkRadiosityMesher", "vtkRadiosityRelight"],
+check(sorted(commands) == ["vtkLightTaggedRadiosity", "vtkRadiosityMesher", "vtkRadiosityRelight",
+                           "vtkRadiositySceneReader"],
       f"the XML makes proxies of {sorted(commands)}")
 for cls, properties in commands.items():
     wrapped = getattr(relight, cls)
@@ -48,7 +49,7 @@ for cls, properties in commands.items():
     check(not missing, f"{cls} has every command its XML calls ({len(properties)} properties; missing {missing})")
 
 rows = setting_rows(README)
-check(len(rows) == 3, f"the README's settings table has {len(rows)} rows, expected 3")
+check(len(rows) == 4, f"the README's settings table has {len(rows)} rows, expected 4")
 for proxy, cls, settings, methods in rows:
     wrapped = getattr(relight, cls)
     settable = {name for name, cs in commands.get(cls, {}).items() if any(c.startswith(("Set", "Add")) for c in cs)}

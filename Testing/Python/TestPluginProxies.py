@@ -12,6 +12,7 @@ prints a line containing 'passed' on success.
 import math
 import os
 import sys
+import tempfile
 
 from paraview.simple import *  # noqa: F401,F403  (LoadPlugin, Show, Render, ...)
 from paraview import servermanager
@@ -71,7 +72,7 @@ def check_readme_names(readme, proxies):
     """Every setting the README's table lists is a property of its proxy, and every
     settable property is in the table (TestNames.py checks the XML against C++)."""
     table = {row[0]: row[2] for row in setting_rows(readme)}
-    check(len(table) == 3, "the README's settings table lists %d proxies, expected 3" % len(table))
+    check(len(table) == 4, "the README's settings table lists %d proxies, expected 4" % len(table))
     for proxy in proxies:
         xml_name = proxy.SMProxy.GetXMLName()
         listed = table.get(xml_name, [])
@@ -84,6 +85,38 @@ def check_readme_names(readme, proxies):
             iterator.Next()
             if not prop.GetInformationOnly() and not prop.IsA("vtkSMInputProperty"):
                 check(name in listed, f"{xml_name}.{name} is missing from the README's settings table")
+
+def write_room_obj():
+    """A 2 x 2 x 2 m box (inward faces, Kd 0.5) with a 0.5 m ceiling lamp (Ke 10) as OBJ+MTL."""
+    folder = tempfile.mkdtemp()
+    with open(os.path.join(folder, "room.mtl"), "w") as f:
+        f.write("newmtl Wall\nKd 0.5 0.5 0.5\nnewmtl Lamp\nKd 0.8 0.8 0.8\nKe 10 10 10\n")
+    corners = [(0, 0, 0), (2, 0, 0), (2, 2, 0), (0, 2, 0), (0, 0, 2), (2, 0, 2), (2, 2, 2), (0, 2, 2),
+               (0.75, 0.75, 1.99), (0.75, 1.25, 1.99), (1.25, 1.25, 1.99), (1.25, 0.75, 1.99)]
+    walls = [(1, 2, 3, 4), (5, 8, 7, 6), (1, 5, 6, 2), (3, 7, 8, 4), (1, 4, 8, 5), (2, 6, 7, 3)]
+    lines = ["mtllib room.mtl"] + ["v %g %g %g" % c for c in corners] + ["usemtl Wall"]
+    lines += ["f %d %d %d %d" % w for w in walls] + ["usemtl Lamp", "f 9 10 11 12"]
+    path = os.path.join(folder, "room.obj")
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    return path
+
+
+def check_scene_files(scene_reader):
+    """File -> Open: an OBJ with an emissive material through the three filters, and the
+    reader factory choosing the plugin's reader for an IFC (which only it reads)."""
+    mesher = RadiosityMesher(Input=scene_reader, PatchSize=1.0, ElementSize=0.5)
+    solver = LightTaggedRadiosity(Input=mesher, ConvergenceThreshold=1e-3)
+    relit = servermanager.Fetch(RadiosityRelight(Input=solver))
+    names = relit.GetFieldData().GetAbstractArray("LightNames")
+    values = numpy_support.vtk_to_numpy(relit.GetCellData().GetArray("Radiosity"))
+    check(names is not None and names.GetValue(0) == "Lamp" and values.max() > 0,
+          "an OBJ read by the plugin's reader solves and relights (light 'Lamp')")
+    ifc = "/usr/share/assimp/models/IFC/AC14-FZK-Haus.ifc"
+    opened = OpenDataFile(ifc)
+    check(opened is not None and opened.GetXMLName() == "RadiositySceneReader",
+          "File > Open of an IFC picks the plugin's reader (%s)" % (opened.GetXMLName() if opened else None))
+
 
 def main(argv):
     if len(argv) < 3:
@@ -106,8 +139,9 @@ def main(argv):
     mode = solver.GetProperty("SolutionMode").GetData()
     check(mode == "LightTagged", "default SolutionMode is %r, expected 'LightTagged'" % (mode,))
     relight = RadiosityRelight(registrationName="Relight", Input=solver)
+    scene_reader = RadiositySceneReader(FileName=write_room_obj())
     check_readme_names(os.path.join(os.path.dirname(os.path.abspath(data_path)), "..", "README.md"),
-                       (mesher, solver, relight))
+                       (scene_reader, mesher, solver, relight))
     # One row of the repeatable string-vector property:
     # Name, Red, Green, Blue, Intensity, Enabled (all passed as strings).
     relight.LightSettings = [LIGHT] + [repr(float(c)) for c in COLOUR] + [
@@ -264,6 +298,8 @@ def main(argv):
     Delete(display)
     Delete(view)
     del display, view
+
+    check_scene_files(scene_reader)
 
     print("TestPluginProxies passed: %d elements, %d points, light(s) %s, "
           "mean relit radiosity %.6g" % (relit.GetNumberOfCells(), relit.GetNumberOfPoints(),
