@@ -9,7 +9,9 @@ import struct
 import tempfile
 
 import numpy as np
+from vtkmodules.util import numpy_support
 from vtkmodules.vtkCommonCore import vtkLogger
+from vtkmodules.vtkCommonDataModel import vtkSelection, vtkSelectionNode
 
 import relight
 from relight import cell_array, light_names, read_polydata
@@ -194,6 +196,93 @@ size = [house.GetBounds()[2 * i + 1] - house.GetBounds()[2 * i] for i in range(3
 check(house.GetNumberOfCells() > 10000 and "Ziegel" in materials and "Glas" in materials,
       f"FZK-Haus through assimp: {house.GetNumberOfCells()} polygons, materials {materials}")
 check(14 < max(size) < 20 and min(size) > 5, f"FZK-Haus in metres: {size}")
+
+# --- Mark Lights: by material pattern, cell id, selection; area lights ---------------------------
+def marked(scene, name="Light", pattern=None, ids=(), areas=(), selection=None, emission=(1, 1, 1)):
+    marker = relight.vtkRadiosityLightMarker()
+    marker.SetInputData(scene)
+    marker.SetLightName(name)
+    if pattern:
+        marker.SetMaterialPattern(pattern)
+    for i in ids:
+        marker.AddCellId(i)
+    for area in areas:
+        marker.AddAreaLight(*area)
+    if selection is not None:
+        marker.SetInputData(1, selection)
+    marker.SetEmission(*emission)
+    catcher = relight.ErrorCatcher(marker)
+    marker.Update()
+    return marker.GetOutput(), catcher
+
+
+windows, _ = marked(house, "Windows", pattern="GLAS*", emission=(2, 2, 2))
+glass = materials.index("Glas")
+is_glass = cell_array(house, "MaterialIds").astype(int) == glass
+lit = cell_array(windows, "LightId").astype(int)
+check(light_names(windows) == ["Windows"] and np.array_equal(lit >= 0, is_glass) and is_glass.sum() > 0,
+      f"FZK-Haus: the pattern 'GLAS*' makes the {is_glass.sum()} glass cells the light 'Windows'")
+check(np.allclose(cell_array(windows, "Emission")[is_glass], 2), "the marked cells emit the Emission given")
+_, catcher = marked(house, pattern="Lamp*")
+check("no cell has a material matching 'Lamp*'" in catcher.first_error() and "'Ziegel'" in catcher.first_error(),
+      f"a pattern that matches nothing is an error listing the materials: {catcher.first_error()[:90]}...")
+
+# The box read back from OBJ (2 m cube, no lamp): a disk and a rectangle under the ceiling.
+write("room.mtl", "newmtl Wall\nKd 0.5\n")
+corners = [(0, 0, 0), (2, 0, 0), (2, 2, 0), (0, 2, 0), (0, 0, 2), (2, 0, 2), (2, 2, 2), (0, 2, 2)]
+faces = ["f 1 2 3 4", "f 5 8 7 6", "f 1 5 6 2", "f 3 7 8 4", "f 1 4 8 5", "f 2 6 7 3"]
+room = relight.import_scene(write("room.obj", "\n".join(["mtllib room.mtl", "usemtl Wall"] +
+                                                        ["v %d %d %d" % c for c in corners] + faces) + "\n"),
+                            require_lights=False)
+# A point array, as readers add (normals): area lights must extend it too.
+normals = numpy_support.numpy_to_vtk(np.ones((room.GetNumberOfPoints(), 3)), deep=True)
+normals.SetName("Normals")
+room.GetPointData().AddArray(normals)
+lamps, catcher = marked(room, areas=[("Disk", 1, 0.6, 1, 1.99, 0, 0, -1, 0.4, 0, 5, 5, 5),
+                                     ("Panel", 0, 1.4, 1, 1.99, 0, 0, -1, 0.5, 0.2, 1, 2, 3)])
+areas = relight.cell_areas(lamps)
+ids = cell_array(lamps, "LightId").astype(int)
+check(light_names(lamps) == ["Disk", "Panel"] and list(ids[-2:]) == [0, 1] and all(ids[:-2] == -1),
+      f"two area lights appended, named: {light_names(lamps)}")
+check(abs(areas[-2] - np.pi * 0.04) < 1e-12 and abs(areas[-1] - 0.1) < 1e-12,
+      f"their areas: disk {areas[-2]:.6f} (pi 0.2^2), rectangle {areas[-1]:.6f} (0.5 x 0.2)")
+check(not catcher.warnings, f"lamps facing into the room raise no warning ({catcher.warnings})")
+check(lamps.GetPointData().GetArray("Normals").GetNumberOfTuples() == lamps.GetNumberOfPoints(),
+      f"point arrays grow with the lamps' corners ({lamps.GetNumberOfPoints()} points)")
+solved = relight.solve(lamps, 0.5, 0.25, ConvergenceThreshold=1e-6, MaximumShots=10**6).GetOutput()
+rho = cell_array(solved, "Reflectance")[:, 0]
+emitted = cell_array(solved, "Emission")[:, 0]
+cells = relight.cell_areas(solved)
+for light, name in enumerate(light_names(solved)):
+    b = cell_array(solved, "Radiosity_" + name)[:, 0]
+    unit = np.where(cell_array(solved, "LightId").astype(int) == light, 1.0, 0.0)  # unit-emission solution
+    absorbed = np.sum(cells * (1 - rho) * (b - unit) / rho)
+    check(abs(absorbed - np.sum(cells * unit)) < 1e-3 * np.sum(cells * unit),
+          f"{name}: the closed room absorbs what the area light emits ({absorbed:.5f} of {np.sum(cells * unit):.5f} m^2)")
+floor = relight.cell_centroids(solved)[:, 2] < 1e-9
+ceiling = (relight.cell_centroids(solved)[:, 2] > 2 - 1e-9)
+b = cell_array(solved, "Radiosity_Disk")[:, 0]
+check(b[floor].mean() > 1.5 * b[ceiling].mean(), f"the disk faces the floor ({b[floor].mean():.4f} vs ceiling {b[ceiling].mean():.4f})")
+_, catcher = marked(room, areas=[("Upside", 0, 1, 1, 1.9995, 0, 0, 1, 0.5, 0.5, 1, 1, 1)])
+check(any("faces a surface closer than" in w for w in catcher.warnings), f"a lamp facing the ceiling 0.5 mm away warns: {catcher.warnings}")
+_, catcher = marked(room, areas=[("Flat", 0, 1, 1, 1, 0, 0, 0, 0.5, 0.5, 1, 1, 1)])
+check("'Flat' needs a finite centre and a non-zero normal" in catcher.first_error(), f"a zero normal: {catcher.first_error()}")
+_, catcher = marked(room, ids=[99])
+check("cell id 99 is not in 0..5" in catcher.first_error(), f"an id out of range: {catcher.first_error()}")
+
+# Cells taken from the Cornell box's light: that light is left empty, so it goes.
+ceiling_cells = [c for c in range(box.GetNumberOfCells()) if cell_array(box, "LightId")[c] >= 0]
+moved, _ = marked(box, "Lamp", ids=ceiling_cells)
+check(light_names(moved) == ["Lamp"] and set(cell_array(moved, "LightId").astype(int)) == {-1, 0},
+      f"a light whose cells all moved is removed, ids without gaps: {light_names(moved)}")
+node = vtkSelectionNode()
+node.SetFieldType(vtkSelectionNode.CELL)
+node.SetContentType(vtkSelectionNode.INDICES)
+node.SetSelectionList(numpy_support.numpy_to_vtkIdTypeArray(np.array([2, 3], dtype=np.int64), deep=True))
+selection = vtkSelection()
+selection.AddNode(node)
+picked, _ = marked(room, "Picked", selection=selection)
+check(list(cell_array(picked, "LightId").astype(int)) == [-1, -1, 0, 0, -1, -1], "a selection's cells become the light")
 
 # --- bad files: an error naming the file and the problem, nothing half-done ---------------------
 cases = [

@@ -19,7 +19,7 @@ from PyQt5.QtWidgets import QApplication, QMenu  # noqa: E402
 
 result = guitest.Result()
 app = QApplication.instance()
-PIPELINE = ["Radiosity Mesher", "Light Tagged Radiosity", "Radiosity Relight"]
+PIPELINE = ["Mark Lights", "Radiosity Mesher", "Light Tagged Radiosity", "Radiosity Relight"]
 LIGHTS = ["Amber", "CoolWhite", "WarmWhite"]
 
 

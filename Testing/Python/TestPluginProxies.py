@@ -72,7 +72,7 @@ def check_readme_names(readme, proxies):
     """Every setting the README's table lists is a property of its proxy, and every
     settable property is in the table (TestNames.py checks the XML against C++)."""
     table = {row[0]: row[2] for row in setting_rows(readme)}
-    check(len(table) == 4, "the README's settings table lists %d proxies, expected 4" % len(table))
+    check(len(table) == 5, "the README's settings table lists %d proxies, expected 5" % len(table))
     for proxy in proxies:
         xml_name = proxy.SMProxy.GetXMLName()
         listed = table.get(xml_name, [])
@@ -141,7 +141,7 @@ def main(argv):
     relight = RadiosityRelight(registrationName="Relight", Input=solver)
     scene_reader = RadiositySceneReader(FileName=write_room_obj())
     check_readme_names(os.path.join(os.path.dirname(os.path.abspath(data_path)), "..", "README.md"),
-                       (scene_reader, mesher, solver, relight))
+                       (scene_reader, MarkLights(Input=scene_reader), mesher, solver, relight))
     # One row of the repeatable string-vector property:
     # Name, Red, Green, Blue, Intensity, Enabled (all passed as strings).
     relight.LightSettings = [LIGHT] + [repr(float(c)) for c in COLOUR] + [

@@ -13,6 +13,7 @@ plus ``vtkRadiosityEXRWriter`` for HDR images, and helpers in :mod:`relight.scen
 from .vtkRadiosityFilters import (  # noqa: F401
     vtkLightTaggedRadiosity,
     vtkRadiosityEXRWriter,
+    vtkRadiosityLightMarker,
     vtkRadiosityMesher,
     vtkRadiosityRelight,
     vtkRadiositySceneReader,

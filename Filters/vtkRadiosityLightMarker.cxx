@@ -1,0 +1,380 @@
+#include "vtkRadiosityLightMarker.h"
+#include "vtkRadiosityAdapter.h"
+
+#include "LightChecks.h"
+#include "LightMarking.h"
+#include "Polygon.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkExtractSelection.h"
+#include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkLogger.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSelection.h"
+#include "vtkStringArray.h"
+
+#include <algorithm>
+
+vtkStandardNewMacro(vtkRadiosityLightMarker);
+
+struct vtkRadiosityLightMarker::Choices
+{
+  std::vector<vtkIdType> CellIds;
+  std::vector<radiosity::AreaLight> AreaLights;
+};
+
+namespace
+{
+
+/// The light arrays as vectors (created: -1 and black where the input has none).
+struct LightArrays
+{
+  std::vector<int> Id;
+  std::vector<radiosity::Vec3> Emission;
+  std::vector<std::string> Names;
+};
+
+LightArrays ReadLights(vtkPolyData* data)
+{
+  LightArrays lights;
+  const vtkIdType cells = data->GetNumberOfCells();
+  vtkDataArray* ids = data->GetCellData()->GetArray("LightId");
+  vtkDataArray* emission = data->GetCellData()->GetArray("Emission");
+  int count = 0;
+  for (vtkIdType c = 0; c < cells; ++c)
+  {
+    lights.Id.push_back(ids ? static_cast<int>(ids->GetComponent(c, 0)) : -1);
+    count = std::max(count, lights.Id.back() + 1);
+    double e[3] = { 0, 0, 0 };
+    if (emission && emission->GetNumberOfComponents() == 3)
+    {
+      emission->GetTuple(c, e);
+    }
+    lights.Emission.push_back({ e[0], e[1], e[2] });
+  }
+  lights.Names = vtkRadiosityAdapter::LightNames(data->GetFieldData(), count);
+  return lights;
+}
+
+void WriteLights(const LightArrays& lights, vtkPolyData* data)
+{
+  vtkNew<vtkIntArray> ids;
+  ids->SetName("LightId");
+  ids->SetNumberOfValues(static_cast<vtkIdType>(lights.Id.size()));
+  std::copy(lights.Id.begin(), lights.Id.end(), ids->GetPointer(0));
+  vtkNew<vtkDoubleArray> emission;
+  emission->SetName("Emission");
+  emission->SetNumberOfComponents(3);
+  emission->SetNumberOfTuples(static_cast<vtkIdType>(lights.Emission.size()));
+  for (size_t c = 0; c < lights.Emission.size(); ++c)
+  {
+    const radiosity::Vec3& e = lights.Emission[c];
+    emission->SetTuple3(static_cast<vtkIdType>(c), e.x, e.y, e.z);
+  }
+  data->GetCellData()->AddArray(ids);
+  data->GetCellData()->AddArray(emission);
+  vtkNew<vtkStringArray> names;
+  names->SetName("LightNames");
+  for (const std::string& name : lights.Names)
+  {
+    names->InsertNextValue(name);
+  }
+  data->GetFieldData()->AddArray(names);
+}
+
+/// Index of the light called `name`, added at the end when new.
+int LightIndex(LightArrays& lights, const std::string& name)
+{
+  const auto found = std::find(lights.Names.begin(), lights.Names.end(), name);
+  if (found != lights.Names.end())
+  {
+    return static_cast<int>(found - lights.Names.begin());
+  }
+  lights.Names.push_back(name);
+  return static_cast<int>(lights.Names.size()) - 1;
+}
+
+/// Cells whose material matches `pattern`; an error if the arrays are missing or none matches.
+std::string ChooseByMaterial(vtkPolyData* data, const std::string& pattern, std::vector<char>& chosen)
+{
+  vtkDataArray* ids = data->GetCellData()->GetArray("MaterialIds");
+  auto* names = vtkStringArray::SafeDownCast(data->GetFieldData()->GetAbstractArray("MaterialNames"));
+  if (!ids || !names)
+  {
+    return "MaterialPattern needs the cell array MaterialIds and the field array MaterialNames "
+           "(as the scene reader writes them)";
+  }
+  std::vector<char> matches(names->GetNumberOfValues());
+  std::string all;
+  for (vtkIdType m = 0; m < names->GetNumberOfValues(); ++m)
+  {
+    matches[m] = radiosity::MatchesPattern(pattern, names->GetValue(m));
+    all += (m ? ", '" : "'") + names->GetValue(m) + "'";
+  }
+  int count = 0;
+  for (vtkIdType c = 0; c < data->GetNumberOfCells(); ++c)
+  {
+    const vtkIdType m = static_cast<vtkIdType>(ids->GetComponent(c, 0));
+    if (m >= 0 && m < static_cast<vtkIdType>(matches.size()) && matches[m])
+    {
+      chosen[c] = 1;
+      ++count;
+    }
+  }
+  return count ? std::string() : "no cell has a material matching '" + pattern + "'; the materials are " + all;
+}
+
+/// Cells the selection holds (their ids in `data`), through VTK's selection extraction.
+int ChooseBySelection(vtkPolyData* data, vtkSelection* selection, std::vector<char>& chosen)
+{
+  vtkNew<vtkExtractSelection> extract;
+  extract->SetInputData(0, data);
+  extract->SetInputData(1, selection);
+  extract->Update();
+  auto* picked = vtkDataSet::SafeDownCast(extract->GetOutputDataObject(0));
+  vtkDataArray* original = picked ? picked->GetCellData()->GetArray("vtkOriginalCellIds") : nullptr;
+  int count = 0;
+  for (vtkIdType i = 0; original && i < original->GetNumberOfTuples(); ++i)
+  {
+    const vtkIdType c = static_cast<vtkIdType>(original->GetComponent(i, 0));
+    if (c >= 0 && c < data->GetNumberOfCells())
+    {
+      count += !chosen[c];
+      chosen[c] = 1;
+    }
+  }
+  return count;
+}
+
+/// Grows every array of `attributes` to `count` tuples, the new ones zero (or empty).
+void GrowArrays(vtkDataSetAttributes* attributes, vtkIdType count)
+{
+  for (int a = 0; a < attributes->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* array = attributes->GetAbstractArray(a);
+    const vtkIdType old = array->GetNumberOfTuples();
+    array->Resize(count); // keeps the values; SetNumberOfTuples alone may reallocate without them
+    array->SetNumberOfTuples(count);
+    if (auto* numbers = vtkDataArray::SafeDownCast(array))
+    {
+      for (int c = 0; c < numbers->GetNumberOfComponents(); ++c)
+      {
+        for (vtkIdType t = old; t < count; ++t)
+        {
+          numbers->SetComponent(t, c, 0.0);
+        }
+      }
+    }
+  }
+}
+
+/// Appends an area light polygon with reflectance 0.8, its own material and patch.
+void AppendAreaLight(vtkPolyData* data, const std::vector<radiosity::Vec3>& loop, const std::string& name)
+{
+  vtkPoints* points = data->GetPoints();
+  const vtkIdType first = points->GetNumberOfPoints();
+  std::vector<vtkIdType> ids;
+  for (const radiosity::Vec3& p : loop)
+  {
+    ids.push_back(points->InsertNextPoint(p.x, p.y, p.z));
+  }
+  GrowArrays(data->GetPointData(), first + static_cast<vtkIdType>(loop.size()));
+  const vtkIdType cell = data->GetNumberOfCells();
+  data->GetPolys()->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+  data->BuildCells();
+  vtkCellData* cd = data->GetCellData();
+  GrowArrays(cd, cell + 1);
+  cd->GetArray("Reflectance")->SetTuple3(cell, 0.8, 0.8, 0.8);
+  vtkDataArray* materials = cd->GetArray("MaterialIds");
+  auto* names = vtkStringArray::SafeDownCast(data->GetFieldData()->GetAbstractArray("MaterialNames"));
+  if (materials && names)
+  {
+    materials->SetComponent(cell, 0, static_cast<double>(names->InsertNextValue(name)));
+  }
+  if (vtkDataArray* patches = cd->GetArray("PatchId"))
+  {
+    patches->SetComponent(cell, 0, patches->GetRange(0)[1] + 1);
+  }
+}
+
+/// The solver's checks of the lights (wrong winding, drawn in a surface's plane).
+std::vector<std::string> CheckLights(vtkPolyData* data, const std::vector<std::string>& names)
+{
+  radiosity::SceneMesh mesh;
+  std::vector<radiosity::Vec3> emission;
+  std::string error;
+  if (!vtkRadiosityAdapter::CopyPolygons(data, mesh, error) ||
+    !vtkRadiosityAdapter::ReadSceneArrays(data, mesh, emission, error))
+  {
+    return { "the lights could not be checked: " + error };
+  }
+  const radiosity::SceneGeometry geometry(mesh);
+  const radiosity::Visibility rays(mesh);
+  return rays.Error().empty() ? radiosity::CheckLights(mesh, geometry, rays, names) : std::vector<std::string>();
+}
+
+} // namespace
+
+vtkRadiosityLightMarker::vtkRadiosityLightMarker()
+  : Chosen(new Choices)
+{
+  this->SetNumberOfInputPorts(2);
+  this->SetLightName("Light");
+}
+
+vtkRadiosityLightMarker::~vtkRadiosityLightMarker()
+{
+  this->SetLightName(nullptr);
+  this->SetMaterialPattern(nullptr);
+}
+
+void vtkRadiosityLightMarker::AddCellId(vtkIdType id)
+{
+  this->Chosen->CellIds.push_back(id);
+  this->Modified();
+}
+
+void vtkRadiosityLightMarker::ClearCellIds()
+{
+  if (!this->Chosen->CellIds.empty())
+  {
+    this->Chosen->CellIds.clear();
+    this->Modified();
+  }
+}
+
+void vtkRadiosityLightMarker::AddAreaLight(const char* name, int shape, double cx, double cy, double cz, double nx,
+  double ny, double nz, double width, double height, double r, double g, double b)
+{
+  radiosity::AreaLight light;
+  light.Name = name ? name : "";
+  light.Shape = shape == 1 ? radiosity::AreaShape::Disk : radiosity::AreaShape::Rectangle;
+  light.Centre = { cx, cy, cz };
+  light.Normal = { nx, ny, nz };
+  light.Width = width;
+  light.Height = height;
+  light.Colour = { r, g, b };
+  this->Chosen->AreaLights.push_back(light);
+  this->Modified();
+}
+
+void vtkRadiosityLightMarker::ClearAreaLights()
+{
+  if (!this->Chosen->AreaLights.empty())
+  {
+    this->Chosen->AreaLights.clear();
+    this->Modified();
+  }
+}
+
+int vtkRadiosityLightMarker::FillInputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkSelection");
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+    return 1;
+  }
+  return this->Superclass::FillInputPortInformation(port, info);
+}
+
+int vtkRadiosityLightMarker::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  return vtkRadiosityAdapter::Guarded(this, input, output, [&]() -> int {
+    std::string error;
+    if (!vtkRadiosityAdapter::RequireCellArray(input, "Reflectance", 3, false, error))
+    {
+      vtkErrorMacro(<< "Cannot mark lights: " << error << ".");
+      return 0;
+    }
+    output->DeepCopy(input); // area lights grow its arrays; the input stays as it was
+    LightArrays lights = ReadLights(output);
+    std::vector<char> chosen(output->GetNumberOfCells(), 0);
+    vtkRadiosityAdapter::WarningList warnings;
+    if (this->MaterialPattern && *this->MaterialPattern &&
+      !(error = ChooseByMaterial(output, this->MaterialPattern, chosen)).empty())
+    {
+      vtkErrorMacro(<< "Cannot mark lights: " << error << ".");
+      return 0;
+    }
+    for (vtkIdType id : this->Chosen->CellIds)
+    {
+      if (id < 0 || id >= output->GetNumberOfCells())
+      {
+        vtkErrorMacro(<< "Cannot mark lights: cell id " << id << " is not in 0.." << output->GetNumberOfCells() - 1 << ".");
+        return 0;
+      }
+      chosen[id] = 1;
+    }
+    if (vtkSelection* selection = vtkSelection::GetData(inputVector[1]))
+    {
+      if (ChooseBySelection(output, selection, chosen) == 0)
+      {
+        warnings.Add(this, "The selection holds no cell of the scene.");
+      }
+    }
+    const int count = static_cast<int>(std::count(chosen.begin(), chosen.end(), 1));
+    if (count)
+    {
+      const int light = LightIndex(lights, this->LightName ? this->LightName : "Light");
+      for (size_t c = 0; c < chosen.size(); ++c)
+      {
+        if (chosen[c])
+        {
+          lights.Id[c] = light;
+          lights.Emission[c] = { this->Emission[0], this->Emission[1], this->Emission[2] };
+        }
+      }
+    }
+    for (const radiosity::AreaLight& area : this->Chosen->AreaLights)
+    {
+      std::vector<radiosity::Vec3> loop;
+      if (!(error = radiosity::AreaLightLoop(area, loop)).empty())
+      {
+        vtkErrorMacro(<< "Cannot mark lights: " << error << ".");
+        return 0;
+      }
+      AppendAreaLight(output, loop, area.Name);
+      lights.Id.push_back(LightIndex(lights, area.Name));
+      lights.Emission.push_back(area.Colour);
+    }
+    if (!count && this->Chosen->AreaLights.empty())
+    {
+      warnings.Add(this, "No cells chosen and no area lights: the scene passes unchanged.");
+    }
+    radiosity::CompactLights(lights.Id, lights.Names);
+    WriteLights(lights, output);
+    for (const std::string& warning : CheckLights(output, lights.Names))
+    {
+      warnings.Add(this, warning);
+    }
+    warnings.AddTo(output->GetFieldData());
+    vtkLogF(INFO, "Mark Lights: %d cells made light '%s', %d area lights added; %d lights in all", count,
+      this->LightName ? this->LightName : "", static_cast<int>(this->Chosen->AreaLights.size()),
+      static_cast<int>(lights.Names.size()));
+    return 1;
+  });
+}
+
+void vtkRadiosityLightMarker::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "LightName: " << (this->LightName ? this->LightName : "(none)") << "\n";
+  os << indent << "MaterialPattern: " << (this->MaterialPattern ? this->MaterialPattern : "(none)") << "\n";
+  os << indent << "CellIds: " << this->Chosen->CellIds.size() << "\n";
+  os << indent << "AreaLights: " << this->Chosen->AreaLights.size() << "\n";
+}

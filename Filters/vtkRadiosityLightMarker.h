@@ -1,0 +1,89 @@
+/**
+ * @class   vtkRadiosityLightMarker
+ * @brief   makes a named light of chosen cells, and adds area lights (rectangles, disks)
+ *
+ * For scenes whose file has no emissive materials, or the wrong ones. The cells chosen by
+ * MaterialPattern (a shell-style pattern, `*` and `?`, matched without case against the
+ * field array MaterialNames through the cell array MaterialIds, as the scene reader
+ * writes them), by cell id (AddCellId) or by a selection on the second input (in
+ * ParaView, the active selection) become the light LightName with Emission. A light of
+ * that name already there gains the cells; lights left with no cells are removed and the
+ * ids renumbered. Each AddAreaLight appends a rectangle or disk that emits towards its
+ * normal (reflectance 0.8), with the same cell and point arrays as the rest of the scene.
+ *
+ * Cell arrays LightId and Emission and the field array LightNames are created when
+ * missing; Reflectance must be there. The output lists the same warnings as the solver
+ * does about its lights (wound the wrong way, drawn in another surface's plane) in the
+ * field array Warnings. A pattern that matches no material, an id out of range or an
+ * area light without a size is an error, and the output is empty.
+ *
+ * @sa vtkRadiositySceneReader vtkRadiosityMesher
+ */
+#ifndef vtkRadiosityLightMarker_h
+#define vtkRadiosityLightMarker_h
+
+#include "vtkPolyDataAlgorithm.h"
+#include "vtkRadiosityFiltersModule.h" // for export macro
+
+#include <memory> // for std::unique_ptr
+
+class VTKRADIOSITYFILTERS_EXPORT vtkRadiosityLightMarker : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkRadiosityLightMarker* New();
+  vtkTypeMacro(vtkRadiosityLightMarker, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// The light the chosen cells become. Default "Light".
+  vtkSetStringMacro(LightName);
+  vtkGetStringMacro(LightName);
+  ///@}
+
+  ///@{
+  /// Cells whose material name matches this pattern are chosen (empty: none).
+  vtkSetStringMacro(MaterialPattern);
+  vtkGetStringMacro(MaterialPattern);
+  ///@}
+
+  ///@{
+  /// Cells chosen by id.
+  void AddCellId(vtkIdType id);
+  void ClearCellIds();
+  ///@}
+
+  ///@{
+  /// The chosen cells' Emission (the light's default colour and intensity). Default 1, 1, 1.
+  vtkSetVector3Macro(Emission, double);
+  vtkGetVector3Macro(Emission, double);
+  ///@}
+
+  ///@{
+  /// Appends an area light: shape 0 a width x height rectangle, 1 a disk of diameter
+  /// width; centre, the normal it emits towards, and its Emission colour.
+  void AddAreaLight(const char* name, int shape, double cx, double cy, double cz, double nx, double ny,
+    double nz, double width, double height, double r, double g, double b);
+  void ClearAreaLights();
+  ///@}
+
+  /// Optional second input: a vtkSelection whose cells are chosen too.
+  void SetSelectionConnection(vtkAlgorithmOutput* selection) { this->SetInputConnection(1, selection); }
+
+protected:
+  vtkRadiosityLightMarker();
+  ~vtkRadiosityLightMarker() override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+private:
+  vtkRadiosityLightMarker(const vtkRadiosityLightMarker&) = delete;
+  void operator=(const vtkRadiosityLightMarker&) = delete;
+
+  char* LightName = nullptr;
+  char* MaterialPattern = nullptr;
+  double Emission[3] = { 1, 1, 1 };
+  struct Choices;
+  std::unique_ptr<Choices> Chosen; ///< cell ids and area lights
+};
+
+#endif
