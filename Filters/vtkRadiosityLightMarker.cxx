@@ -4,6 +4,7 @@
 #include "LightChecks.h"
 #include "LightMarking.h"
 #include "Polygon.h"
+#include "SceneImport.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -208,6 +209,30 @@ void AppendAreaLight(vtkPolyData* data, const std::vector<radiosity::Vec3>& loop
   }
 }
 
+/// Drops the reader's note that the scene has no lights, now that it has some.
+void DropNoLightsWarning(vtkFieldData* fields)
+{
+  auto* upstream = vtkStringArray::SafeDownCast(fields->GetAbstractArray("Warnings"));
+  if (!upstream)
+  {
+    return;
+  }
+  vtkNew<vtkStringArray> kept;
+  kept->SetName("Warnings");
+  for (vtkIdType i = 0; i < upstream->GetNumberOfValues(); ++i)
+  {
+    if (upstream->GetValue(i).find(radiosity::NoLightsWarning) == std::string::npos)
+    {
+      kept->InsertNextValue(upstream->GetValue(i));
+    }
+  }
+  fields->RemoveArray("Warnings");
+  if (kept->GetNumberOfValues())
+  {
+    fields->AddArray(kept);
+  }
+}
+
 /// The solver's checks of the lights (wrong winding, drawn in a surface's plane).
 std::vector<std::string> CheckLights(vtkPolyData* data, const std::vector<std::string>& names)
 {
@@ -358,6 +383,10 @@ int vtkRadiosityLightMarker::RequestData(
     }
     radiosity::CompactLights(lights.Id, lights.Names);
     WriteLights(lights, output);
+    if (!lights.Names.empty())
+    {
+      DropNoLightsWarning(output->GetFieldData());
+    }
     for (const std::string& warning : CheckLights(output, lights.Names))
     {
       warnings.Add(this, warning);

@@ -256,7 +256,7 @@ std::string BuildImportedScene(const RawScene& raw, const ImportOptions& options
   AssignLights(raw, kept, options, out);
   if (out.LightNames.empty())
   {
-    out.Warnings.push_back("no emissive material: mark lights before solving");
+    out.Warnings.push_back(NoLightsWarning);
   }
   out.Summary = Summarize(out);
   return std::string();

@@ -55,6 +55,9 @@ struct ImportedScene
   std::string Summary;               ///< polygons, materials, lights, dropped cells
 };
 
+/// The warning for a scene without lights, which Mark Lights takes back once it makes one.
+constexpr const char* NoLightsWarning = "no emissive material: mark lights before solving";
+
 /// Builds the scene; returns an empty string or what makes the file unusable (a
 /// non-finite coordinate, a material colour that is not a number, nothing left).
 std::string BuildImportedScene(const RawScene& raw, const ImportOptions& options, ImportedScene& out);

@@ -1,76 +1,18 @@
-"""A real third-party building: KIT's FZK-Haus (IFC from Debian's assimp-testmodels, to OBJ by
-assimp), 6 ceiling lamps, Hierarchical solve, two pictures from inside. Run:
+"""A real third-party building: KIT's FZK-Haus (IFC from Debian's assimp-testmodels, read by
+relight.import_scene through assimp), 6 ceiling lamps, Hierarchical solve, two pictures from inside. Run:
 ./relight python Testing/Benchmark/house.py [--element 0.25] [--patch 0.5] [--out out/bench]"""
 
-import argparse, os, pathlib, resource, shutil, subprocess, sys
+import argparse, pathlib, resource, subprocess
 import numpy as np
 import relight
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkIdList, vtkPoints
 from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
 from vtkmodules.vtkFiltersGeneral import vtkOBBTree
-from vtkmodules.vtkIOGeometry import vtkOBJReader
 
 IFC = pathlib.Path("/usr/share/assimp/models/IFC/AC14-FZK-Haus.ifc")
-UP = 1  # assimp writes OBJ Y-up (checked below: the smallest extent is the height)
+UP = 1  # assimp writes the IFC Y-up (checked below: the smallest extent is the height)
 DIRS = [np.array(d, float) for d in ((1, 0, 0), (-1, 0, 0), (0, 0, 1), (0, 0, -1))]
-
-
-def convert(folder):
-    """IFC -> OBJ + MTL with assimp, cached in `folder`; both come from Debian packages."""
-    if not (IFC.exists() and shutil.which("assimp")):
-        if os.geteuid() != 0:
-            sys.exit("need Debian's assimp-utils and assimp-testmodels: sudo apt-get install assimp-utils assimp-testmodels")
-        subprocess.run(["apt-get", "install", "-y", "-q", "assimp-utils", "assimp-testmodels"], check=True,
-                       env=dict(os.environ, DEBIAN_FRONTEND="noninteractive"))
-    obj = folder / "fzk.obj"
-    if not obj.exists() or obj.stat().st_mtime < IFC.stat().st_mtime:
-        folder.mkdir(parents=True, exist_ok=True)
-        subprocess.run(["assimp", "export", str(IFC), str(obj)], check=True, stdout=subprocess.DEVNULL)
-    return obj
-
-
-def parse_mtl(path):
-    """{material: Kd}. assimp writes one `newmtl` per IFC style and styles may share a
-    name; usemtl names only one, so the first wins and differing repeats are reported."""
-    kd, name, conflicts = {}, None, set()
-    for line in path.read_text(encoding="utf-8", errors="replace").splitlines():
-        words = line.split()
-        if words[:1] == ["newmtl"]:
-            name = line.split(None, 1)[1].strip()
-        elif words[:1] == ["Kd"] and name is not None:
-            value = tuple(float(w) for w in words[1:4])
-            conflicts |= {name} if kd.setdefault(name, value) != value else set()
-    return kd, conflicts
-
-
-def load_house(obj):
-    """The OBJ as (list of point arrays in metres, reflectance per polygon)."""
-    reader = vtkOBJReader()
-    reader.SetFileName(str(obj))
-    reader.Update()
-    data = reader.GetOutput()  # cell arrays MaterialIds, GroupIds; field array MaterialNames
-    names = data.GetFieldData().GetAbstractArray("MaterialNames")
-    names = [names.GetValue(i) for i in range(names.GetNumberOfValues())]
-    kd, conflicts = parse_mtl(obj.with_suffix(".mtl"))
-    print(f"MTL: {len(kd)} material names; first Kd used for {len(conflicts)} defined with several colours: {sorted(conflicts)}")
-    rho = np.array([kd.get(n, (0.6, 0.6, 0.6)) for n in names])
-    clamped = np.clip(rho, 0.02, 0.9)
-    changed = [f"{n} {np.round(a, 3)} -> {np.round(b, 3)}" for n, a, b in zip(names, rho, clamped) if not np.allclose(a, b)]
-    print(f"Reflectance clamped to [0.02, 0.9]: {'; '.join(changed) or 'none needed'}")
-    extent = np.ptp(np.reshape(data.GetBounds(), (3, 2)), axis=1)
-    scale = 0.001 if extent.max() > 200 else 1.0  # a 12 m house in mm would be 12000
-    assert np.argmin(extent) == UP, f"expected Y-up, extents {extent}"
-    print(f"OBJ: {data.GetNumberOfPolys()} polygons, extent {np.round(extent * scale, 2)} m (scale {scale})")
-    pts = vtk_to_numpy(data.GetPoints().GetData()).astype(float) * scale
-    offsets = vtk_to_numpy(data.GetPolys().GetOffsetsArray())
-    conn = vtk_to_numpy(data.GetPolys().GetConnectivityArray())
-    ids = vtk_to_numpy(data.GetCellData().GetArray("MaterialIds"))[data.GetNumberOfVerts() + data.GetNumberOfLines():]
-    loops = [pts[conn[a:b]] for a, b in zip(offsets[:-1], offsets[1:])]
-    area = [0.5 * np.linalg.norm(np.cross(p, np.roll(p, -1, axis=0)).sum(axis=0)) for p in loops]  # Newell
-    keep = [c for c, p in enumerate(loops) if len(p) >= 3 and area[c] > 1e-10]  # not zero area nor collinear
-    print(f"dropped {len(loops) - len(keep)} degenerate polygons, kept {len(keep)}")
-    return [loops[c] for c in keep], [clamped[ids[c]] for c in keep]
 
 
 class Rays:
@@ -146,12 +88,15 @@ def find_lamps(rays, bounds, count=6, step=0.4):
     return lamps
 
 
-def lamp_quad(p, half=0.15):
-    """A square in the horizontal plane whose right-hand-rule normal points down."""
-    x, y, z = p
-    quad = np.array([(x - half, y, z - half), (x + half, y, z - half), (x + half, y, z + half), (x - half, y, z + half)])
-    assert np.cross(quad[1] - quad[0], quad[2] - quad[0])[UP] < 0
-    return quad
+def add_lamps(house, lamps, half=0.15):
+    """0.3 m square ceiling lamps facing down (Mark Lights' area lights), Lamp0, Lamp1, ..."""
+    marker = relight.vtkRadiosityLightMarker()
+    marker.SetInputData(house)
+    down = -np.eye(3)[UP]
+    for i, (_, p) in enumerate(lamps):
+        marker.AddAreaLight(f"Lamp{i}", 0, *p, *down, 2 * half, 2 * half, 1, 1, 1)
+    marker.Update()
+    return marker.GetOutput()
 
 
 def solve(scene, patch, element):
@@ -203,14 +148,15 @@ def main():
     args = parser.parse_args()
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
-    polygons, refl = load_house(convert(out / "fzk"))
-    house = relight.make_scene(polygons, refl, [-1] * len(polygons))
+    house = relight.import_scene(IFC, require_lights=False)
+    extent = np.ptp(np.reshape(house.GetBounds(), (3, 2)), axis=1)
+    assert np.argmin(extent) == UP, f"expected Y-up, extents {extent}"
+    print(house.GetFieldData().GetAbstractArray("ImportSummary").GetValue(0))
     rays = Rays(house)
     lamps = find_lamps(rays, house.GetBounds())
     print("\n".join(f"Lamp{i}: {np.round(p, 2)} (floor at {f} m)" for i, (f, p) in enumerate(lamps)))
-    k, n = len(lamps), len(polygons)
-    scene = relight.make_scene(polygons + [lamp_quad(p) for _, p in lamps], refl + [(0.8,) * 3] * k,
-                               [-1] * n + list(range(k)), [f"Lamp{i}" for i in range(k)], [(0, 0, 0)] * n + [(1, 1, 1)] * k)
+    k = len(lamps)
+    scene = add_lamps(house, lamps)
     solver, warnings = solve(scene, args.patch, args.element)
     result = solver.GetOutput()
     method = result.GetFieldData().GetAbstractArray("SolverMethod").GetValue(0)
