@@ -6,11 +6,15 @@
 
 #include "vtkDataArray.h"
 #include "vtkErrorCode.h"
+#include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkStringArray.h"
+
+#include <algorithm>
 
 vtkStandardNewMacro(vtkRadiosityEXRWriter);
 
@@ -31,7 +35,31 @@ int vtkRadiosityEXRWriter::FillInputPortInformation(int, vtkInformation* info)
   return 1;
 }
 
-bool vtkRadiosityEXRWriter::Render(std::vector<float>& rgb)
+namespace
+{
+
+std::vector<radiosity::Vec3> PointValues(vtkDataArray* values)
+{
+  std::vector<radiosity::Vec3> points(values->GetNumberOfTuples());
+  for (vtkIdType p = 0; p < values->GetNumberOfTuples(); ++p)
+  {
+    double v[3];
+    values->GetTuple(p, v);
+    points[p] = { v[0], v[1], v[2] };
+  }
+  return points;
+}
+
+/// EXR separates layer and channel with '.', so a light's name keeps none.
+std::string LayerName(std::string name)
+{
+  std::replace(name.begin(), name.end(), '.', '_');
+  return name;
+}
+
+} // namespace
+
+bool vtkRadiosityEXRWriter::Render(std::vector<std::string>& names, std::vector<std::vector<float>>& images)
 {
   vtkPolyData* input = vtkPolyData::SafeDownCast(this->GetInput());
   radiosity::SceneMesh mesh;
@@ -46,19 +74,37 @@ bool vtkRadiosityEXRWriter::Render(std::vector<float>& rgb)
     vtkErrorMacro(<< "Cannot render: " << error << ".");
     return false;
   }
+  std::vector<std::vector<radiosity::Vec3>> layers;
   vtkDataArray* values = this->ArrayName ? input->GetPointData()->GetArray(this->ArrayName) : nullptr;
-  if (!values || values->GetNumberOfComponents() != 3)
+  if (values && values->GetNumberOfComponents() == 3)
+  {
+    names.push_back(std::string());
+    layers.push_back(PointValues(values));
+  }
+  else if (!this->LightLayers)
   {
     vtkErrorMacro(<< "Cannot render: the input needs a 3-component point array '"
                   << (this->ArrayName ? this->ArrayName : "") << "'.");
     return false;
   }
-  std::vector<radiosity::Vec3> pointValues(input->GetNumberOfPoints());
-  for (vtkIdType p = 0; p < input->GetNumberOfPoints(); ++p)
+  if (this->LightLayers)
   {
-    double v[3];
-    values->GetTuple(p, v);
-    pointValues[p] = { v[0], v[1], v[2] };
+    auto* lights = vtkStringArray::SafeDownCast(input->GetFieldData()->GetAbstractArray("LightNames"));
+    for (vtkIdType l = 0; lights && l < lights->GetNumberOfValues(); ++l)
+    {
+      vtkDataArray* light = input->GetPointData()->GetArray(("Radiosity_" + lights->GetValue(l)).c_str());
+      if (light && light->GetNumberOfComponents() == 3)
+      {
+        names.push_back(LayerName(lights->GetValue(l)));
+        layers.push_back(PointValues(light));
+      }
+    }
+    if (layers.size() < 2 && (layers.empty() || !names[0].empty()))
+    {
+      vtkErrorMacro(<< "Cannot render light layers: the input has no Radiosity_<light> point arrays "
+                       "for its LightNames (the light-tagged solver's output has them).");
+      return false;
+    }
   }
   radiosity::Visibility scene(mesh);
   if (!scene.Error().empty())
@@ -78,12 +124,17 @@ bool vtkRadiosityEXRWriter::Render(std::vector<float>& rgb)
     vtkErrorMacro(<< "Cannot render: " << error << ".");
     return false;
   }
+  std::vector<const std::vector<radiosity::Vec3>*> pointers;
+  for (const auto& layer : layers)
+  {
+    pointers.push_back(&layer);
+  }
   const vtkRadiosityAbortWatch abort(this);
-  rgb = radiosity::RenderRadiosity(scene, pointValues, camera, [this, &abort](double f) {
+  images = radiosity::RenderLayers(scene, pointers, camera, [this, &abort](double f) {
     this->UpdateProgress(f);
     return !abort.Stop();
   });
-  if (rgb.empty())
+  if (images.empty() || images[0].empty())
   {
     vtkWarningMacro(<< "Render aborted: no image made, nothing written (a file already there is kept).");
     return false;
@@ -97,11 +148,13 @@ bool vtkRadiosityEXRWriter::RenderImage(vtkFloatArray* rgb)
   {
     source->Update();
   }
-  std::vector<float> pixels;
-  if (!rgb || !this->GetInput() || !this->Render(pixels))
+  std::vector<std::string> names;
+  std::vector<std::vector<float>> images;
+  if (!rgb || !this->GetInput() || !this->Render(names, images))
   {
     return false;
   }
+  const std::vector<float>& pixels = images[0];
   rgb->SetNumberOfComponents(3);
   rgb->SetNumberOfTuples(static_cast<vtkIdType>(pixels.size() / 3));
   std::copy(pixels.begin(), pixels.end(), rgb->GetPointer(0));
@@ -116,13 +169,16 @@ void vtkRadiosityEXRWriter::WriteData()
     this->SetErrorCode(vtkErrorCode::NoFileNameError);
     return;
   }
-  std::vector<float> rgb;
-  if (!this->Render(rgb))
+  std::vector<std::string> names;
+  std::vector<std::vector<float>> images;
+  if (!this->Render(names, images))
   {
     this->SetErrorCode(vtkErrorCode::UserError);
     return;
   }
-  const std::string error = radiosity::WriteExr(this->FileName, this->Size[0], this->Size[1], rgb);
+  const std::string error = this->LightLayers
+    ? radiosity::WriteExrLayers(this->FileName, this->Size[0], this->Size[1], names, images)
+    : radiosity::WriteExr(this->FileName, this->Size[0], this->Size[1], images[0]);
   if (!error.empty())
   {
     vtkErrorMacro(<< error);

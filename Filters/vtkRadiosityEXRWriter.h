@@ -8,6 +8,11 @@
  * VTK's conventions (position, focal point, view up, vertical view angle in degrees).
  * The stored value is exitance, the same units as the array.
  *
+ * With LightLayers on, the file also holds one layer per light: the solver's
+ * `Radiosity_<light>` point array (that light's unit-emission solution) as channels
+ * `<light>.R`, `.G`, `.B` (a `.` in a name becomes `_`), next to ArrayName as plain R, G, B
+ * where the input has it; all as 32-bit floats, so a compositor can relight the picture.
+ *
  * @sa vtkRadiosityRelight
  */
 #ifndef vtkRadiosityEXRWriter_h
@@ -16,6 +21,7 @@
 #include "vtkRadiosityFiltersModule.h" // for export macro
 #include "vtkWriter.h"
 
+#include <string> // for layer names
 #include <vector> // for the pixel buffer
 
 class vtkFloatArray;
@@ -46,6 +52,13 @@ public:
   vtkGetVector2Macro(Size, int);
   ///@}
 
+  ///@{
+  /// Also write one layer per light (see above). Default off: ArrayName alone, half float.
+  vtkSetMacro(LightLayers, bool);
+  vtkGetMacro(LightLayers, bool);
+  vtkBooleanMacro(LightLayers, bool);
+  ///@}
+
   /**
    * Ray-casts the current input into `rgb` (Size[0] * Size[1] tuples of 3 components, row
    * 0 at the top) without writing a file; misses are 0. Returns false with an error on bad
@@ -60,7 +73,8 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
 
 private:
-  bool Render(std::vector<float>& rgb);
+  /// The layers to write, rendered with one ray per pixel; false with an error.
+  bool Render(std::vector<std::string>& names, std::vector<std::vector<float>>& images);
   vtkRadiosityEXRWriter(const vtkRadiosityEXRWriter&) = delete;
   void operator=(const vtkRadiosityEXRWriter&) = delete;
 
@@ -71,6 +85,7 @@ private:
   double ViewUp[3] = { 0, 1, 0 };
   double ViewAngle = 30;
   int Size[2] = { 640, 480 };
+  bool LightLayers = false;
 };
 
 #endif

@@ -1,17 +1,33 @@
 #include "HdrImage.h"
 
+#include "AtomicFile.h"
+
 #include <ImfArray.h>
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <ImfOutputFile.h>
 #include <ImfRgbaFile.h>
 
-#include <cerrno>
+#include <algorithm>
+#include <cstddef>
 #include <cmath>
-#include <cstdio>
-#include <cstring>
 #include <exception>
 #include <sstream>
 
 namespace radiosity
 {
+
+namespace
+{
+
+std::string LayerChannel(const std::string& layer, const char* channel)
+{
+  return layer.empty() ? channel : layer + "." + channel;
+}
+
+} // namespace
 
 std::string ValidateCamera(const PinholeCamera& c)
 {
@@ -46,11 +62,12 @@ std::string ValidateCamera(const PinholeCamera& c)
   return why.str();
 }
 
-std::vector<float> RenderRadiosity(const Visibility& scene, const std::vector<Vec3>& pointValues,
-  const PinholeCamera& camera, const std::function<bool(double)>& progress)
+std::vector<std::vector<float>> RenderLayers(const Visibility& scene,
+  const std::vector<const std::vector<Vec3>*>& layers, const PinholeCamera& camera,
+  const std::function<bool(double)>& progress)
 {
   const int w = camera.Width, h = camera.Height;
-  std::vector<float> rgb(3 * static_cast<size_t>(w) * h, 0.0f);
+  std::vector<std::vector<float>> images(layers.size(), std::vector<float>(3 * static_cast<size_t>(w) * h, 0.0f));
   const Vec3 forward = Normalized(camera.FocalPoint - camera.Position);
   const Vec3 right = Normalized(Cross(forward, camera.ViewUp));
   const Vec3 up = Cross(right, forward);
@@ -60,7 +77,7 @@ std::vector<float> RenderRadiosity(const Visibility& scene, const std::vector<Ve
   {
     if (progress && y % 16 == 0 && !progress(static_cast<double>(y) / h))
     {
-      return {};
+      return std::vector<std::vector<float>>(layers.size());
     }
     for (int x = 0; x < w; ++x)
     {
@@ -72,15 +89,24 @@ std::vector<float> RenderRadiosity(const Visibility& scene, const std::vector<Ve
         continue;
       }
       const double w0 = 1.0 - hit.u - hit.v;
-      const Vec3 value = pointValues[hit.corner[0]] * w0 + pointValues[hit.corner[1]] * hit.u +
-        pointValues[hit.corner[2]] * hit.v;
-      float* px = &rgb[3 * (static_cast<size_t>(y) * w + x)];
-      px[0] = static_cast<float>(value.x);
-      px[1] = static_cast<float>(value.y);
-      px[2] = static_cast<float>(value.z);
+      for (size_t l = 0; l < layers.size(); ++l)
+      {
+        const std::vector<Vec3>& values = *layers[l];
+        const Vec3 value = values[hit.corner[0]] * w0 + values[hit.corner[1]] * hit.u + values[hit.corner[2]] * hit.v;
+        float* px = &images[l][3 * (static_cast<size_t>(y) * w + x)];
+        px[0] = static_cast<float>(value.x);
+        px[1] = static_cast<float>(value.y);
+        px[2] = static_cast<float>(value.z);
+      }
     }
   }
-  return rgb;
+  return images;
+}
+
+std::vector<float> RenderRadiosity(const Visibility& scene, const std::vector<Vec3>& pointValues,
+  const PinholeCamera& camera, const std::function<bool(double)>& progress)
+{
+  return RenderLayers(scene, { &pointValues }, camera, progress)[0];
 }
 
 std::string WriteExr(const std::string& path, int width, int height, const std::vector<float>& rgb)
@@ -100,28 +126,15 @@ std::string WriteExr(const std::string& path, int width, int height, const std::
         pixels[y][x] = Imf::Rgba(p[0], p[1], p[2], 1.0f);
       }
     }
-    const std::string temporary = path + ".part";
-    bool created = false; // only a file we made is ours to remove
-    try
-    {
-      Imf::RgbaOutputFile file(temporary.c_str(), width, height, Imf::WRITE_RGB);
+    const std::string error = WriteAtomically(path, [&](const char* temporary, bool& created) {
+      Imf::RgbaOutputFile file(temporary, width, height, Imf::WRITE_RGB);
       created = true;
       file.setFrameBuffer(&pixels[0][0], 1, width);
       file.writePixels(height);
-    } // closed (and flushed) before it replaces the old file
-    catch (...)
+    });
+    if (!error.empty())
     {
-      if (created)
-      {
-        std::remove(temporary.c_str());
-      }
-      throw;
-    }
-    if (std::rename(temporary.c_str(), path.c_str()) != 0)
-    {
-      const std::string reason = std::strerror(errno);
-      std::remove(temporary.c_str());
-      return "could not replace " + path + ": " + reason;
+      return error;
     }
   }
   catch (const std::exception& e)
@@ -153,6 +166,76 @@ std::string ReadExr(const std::string& path, int& width, int& height, std::vecto
         p[2] = pixels[y][x].b;
       }
     }
+  }
+  catch (const std::exception& e)
+  {
+    return std::string("OpenEXR could not read ") + path + ": " + e.what();
+  }
+  return std::string();
+}
+
+std::string WriteExrLayers(const std::string& path, int width, int height, const std::vector<std::string>& names,
+  const std::vector<std::vector<float>>& images)
+{
+  const size_t pixels = static_cast<size_t>(std::max(width, 0)) * std::max(height, 0);
+  if (width <= 0 || height <= 0 || names.size() != images.size() || names.empty() ||
+    std::any_of(images.begin(), images.end(), [&](const std::vector<float>& i) { return i.size() != 3 * pixels; }))
+  {
+    return "WriteExrLayers: image sizes do not match their pixel data";
+  }
+  try
+  {
+    Imf::Header header(width, height);
+    Imf::FrameBuffer frames;
+    const char* channels[3] = { "R", "G", "B" };
+    for (size_t l = 0; l < names.size(); ++l)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        const std::string name = LayerChannel(names[l], channels[c]);
+        header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+        frames.insert(name, Imf::Slice(Imf::FLOAT, const_cast<char*>(reinterpret_cast<const char*>(images[l].data() + c)),
+                              3 * sizeof(float), 3 * sizeof(float) * width));
+      }
+    }
+    return WriteAtomically(path, [&](const char* temporary, bool& created) {
+      Imf::OutputFile file(temporary, header);
+      created = true;
+      file.setFrameBuffer(frames);
+      file.writePixels(height);
+    });
+  }
+  catch (const std::exception& e)
+  {
+    return std::string("OpenEXR could not write ") + path + ": " + e.what();
+  }
+}
+
+std::string ReadExrLayer(const std::string& path, const std::string& name, int& width, int& height,
+  std::vector<float>& rgb)
+{
+  try
+  {
+    Imf::InputFile file(path.c_str());
+    const Imath::Box2i window = file.header().dataWindow();
+    width = window.max.x - window.min.x + 1;
+    height = window.max.y - window.min.y + 1;
+    rgb.assign(3 * static_cast<size_t>(width) * height, 0.0f);
+    Imf::FrameBuffer frames;
+    const char* channels[3] = { "R", "G", "B" };
+    for (int c = 0; c < 3; ++c)
+    {
+      const std::string channel = LayerChannel(name, channels[c]);
+      if (!file.header().channels().findChannel(channel))
+      {
+        return path + " has no channel " + channel;
+      }
+      char* origin = reinterpret_cast<char*>(rgb.data() + c) -
+        (static_cast<std::ptrdiff_t>(window.min.x) + static_cast<std::ptrdiff_t>(window.min.y) * width) * 3 * sizeof(float);
+      frames.insert(channel, Imf::Slice(Imf::FLOAT, origin, 3 * sizeof(float), 3 * sizeof(float) * width));
+    }
+    file.setFrameBuffer(frames);
+    file.readPixels(window.min.y, window.max.y);
   }
   catch (const std::exception& e)
   {

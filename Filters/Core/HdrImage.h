@@ -39,6 +39,22 @@ std::string ValidateCamera(const PinholeCamera& camera);
 std::vector<float> RenderRadiosity(const Visibility& scene, const std::vector<Vec3>& pointValues,
   const PinholeCamera& camera, const std::function<bool(double)>& progress = {});
 
+/// As RenderRadiosity for several point arrays at once (one ray per pixel for all):
+/// one image per layer; all empty when stopped.
+std::vector<std::vector<float>> RenderLayers(const Visibility& scene,
+  const std::vector<const std::vector<Vec3>*>& layers, const PinholeCamera& camera,
+  const std::function<bool(double)>& progress = {});
+
+/// Writes a 32-bit float OpenEXR file with one RGB layer per image: channels
+/// `<name>.R`, `.G`, `.B` (plain R, G, B for an empty name), as OpenEXR's tools and
+/// compositors read layers. Written under a temporary name and renamed, as WriteExr.
+std::string WriteExrLayers(const std::string& path, int width, int height, const std::vector<std::string>& names,
+  const std::vector<std::vector<float>>& images);
+
+/// Reads one layer (`name`, or the plain R, G, B for an empty name) of a layered file.
+std::string ReadExrLayer(const std::string& path, const std::string& name, int& width, int& height,
+  std::vector<float>& rgb);
+
 /// Writes a half-float RGB OpenEXR file; returns an empty string or the library's error.
 /// The file is written beside `path` under a temporary name and renamed over it, so an
 /// interrupted write never leaves a truncated file where a good one was.

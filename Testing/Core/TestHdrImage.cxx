@@ -46,3 +46,31 @@ TEST(HdrImage, RayCastAndExrRoundTripKeepLinearValues)
   EXPECT_NEAR(0.5f * (left[0] + right[0]), 2.0f, 2e-3f);
   EXPECT_LT(left[0], right[0]);
 }
+
+TEST(HdrImage, LayeredExrKeepsEveryLightInFloat)
+{
+  // Two lights' pictures and their sum, 3 x 2 pixels, with values half floats would round.
+  const int w = 3, h = 2;
+  std::vector<float> a(3 * w * h), b(3 * w * h), sum(3 * w * h);
+  for (size_t i = 0; i < a.size(); ++i)
+  {
+    a[i] = 1.0f + 1e-5f * static_cast<float>(i);
+    b[i] = 1e-4f * static_cast<float>(i * i) + 12345.678f;
+    sum[i] = a[i] + b[i];
+  }
+  const std::string path = ::testing::TempDir() + "radiosity_layers.exr";
+  ASSERT_EQ(WriteExrLayers(path, w, h, { "", "Warm White", "Lamp_2" }, { sum, a, b }), "");
+  int rw = 0, rh = 0;
+  std::vector<float> back;
+  ASSERT_EQ(ReadExrLayer(path, "Warm White", rw, rh, back), "");
+  EXPECT_EQ(rw, w);
+  EXPECT_EQ(rh, h);
+  EXPECT_EQ(back, a); // bit for bit: 32-bit float channels
+  ASSERT_EQ(ReadExrLayer(path, "Lamp_2", rw, rh, back), "");
+  EXPECT_EQ(back, b);
+  ASSERT_EQ(ReadExrLayer(path, "", rw, rh, back), "");
+  EXPECT_EQ(back, sum);
+  EXPECT_NE(ReadExrLayer(path, "Nobody", rw, rh, back).find("no channel Nobody.R"), std::string::npos);
+  std::remove(path.c_str());
+  EXPECT_NE(WriteExrLayers(path, w, h, { "x" }, { std::vector<float>(5) }).find("do not match"), std::string::npos);
+}

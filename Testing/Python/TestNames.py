@@ -17,7 +17,8 @@ README = os.path.join(ROOT, "README.md")
 def xml_commands():
     """{class: {property: [commands]}} for every property that calls the C++ object."""
     proxies = {}
-    for proxy in ElementTree.parse(XML).iter("SourceProxy"):
+    root = ElementTree.parse(XML).getroot()
+    for proxy in list(root.iter("SourceProxy")) + list(root.iter("WriterProxy")):
         properties = proxies.setdefault(proxy.get("class"), {})
         for prop in proxy:
             commands = [prop.get(a) for a in ("command", "clean_command") if prop.get(a)]
@@ -29,7 +30,8 @@ def xml_commands():
 def undocumented():
     """Properties of the XML without help text (the panel's tooltip and the ? button)."""
     missing = []
-    for proxy in ElementTree.parse(XML).iter("SourceProxy"):
+    root = ElementTree.parse(XML).getroot()
+    for proxy in list(root.iter("SourceProxy")) + list(root.iter("WriterProxy")):
         for prop in proxy:
             text = prop.findtext("Documentation") or ""
             # Ports and groups are not properties; time steps are ParaView's own.
@@ -40,8 +42,8 @@ def undocumented():
 
 check(not undocumented(), f"every property has help text (missing: {undocumented()})")
 commands = xml_commands()
-check(sorted(commands) == ["vtkLightTaggedRadiosity", "vtkRadiosityLightMarker", "vtkRadiosityMesher",
-                           "vtkRadiosityRelight", "vtkRadiositySceneReader"],
+check(sorted(commands) == ["vtkLightTaggedRadiosity", "vtkRadiosityGLTFWriter", "vtkRadiosityLightMarker",
+                           "vtkRadiosityMesher", "vtkRadiosityRelight", "vtkRadiositySceneReader"],
       f"the XML makes proxies of {sorted(commands)}")
 for cls, properties in commands.items():
     wrapped = getattr(relight, cls)
@@ -49,7 +51,7 @@ for cls, properties in commands.items():
     check(not missing, f"{cls} has every command its XML calls ({len(properties)} properties; missing {missing})")
 
 rows = setting_rows(README)
-check(len(rows) == 5, f"the README's settings table has {len(rows)} rows, expected 5")
+check(len(rows) == 6, f"the README's settings table has {len(rows)} rows, expected 6")
 for proxy, cls, settings, methods in rows:
     wrapped = getattr(relight, cls)
     settable = {name for name, cs in commands.get(cls, {}).items() if any(c.startswith(("Set", "Add")) for c in cs)}

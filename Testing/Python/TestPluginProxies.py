@@ -72,7 +72,7 @@ def check_readme_names(readme, proxies):
     """Every setting the README's table lists is a property of its proxy, and every
     settable property is in the table (TestNames.py checks the XML against C++)."""
     table = {row[0]: row[2] for row in setting_rows(readme)}
-    check(len(table) == 5, "the README's settings table lists %d proxies, expected 5" % len(table))
+    check(len(table) == 6, "the README's settings table lists %d proxies, expected 6" % len(table))
     for proxy in proxies:
         xml_name = proxy.SMProxy.GetXMLName()
         listed = table.get(xml_name, [])
@@ -112,6 +112,11 @@ def check_scene_files(scene_reader):
     values = numpy_support.vtk_to_numpy(relit.GetCellData().GetArray("Radiosity"))
     check(names is not None and names.GetValue(0) == "Lamp" and values.max() > 0,
           "an OBJ read by the plugin's reader solves and relights (light 'Lamp')")
+    glb = os.path.join(tempfile.mkdtemp(), "room.glb")
+    SaveData(glb, proxy=RadiosityRelight(Input=solver))
+    head = open(glb, "rb").read(4096) if os.path.exists(glb) else b""
+    check(head[:4] == b"glTF" and b"_RADIOSITY_LAMP" in head,
+          "File > Save Data as .glb writes the relightable glTF (a _RADIOSITY_LAMP attribute)")
     ifc = "/usr/share/assimp/models/IFC/AC14-FZK-Haus.ifc"
     opened = OpenDataFile(ifc)
     check(opened is not None and opened.GetXMLName() == "RadiositySceneReader",

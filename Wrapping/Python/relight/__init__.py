@@ -13,11 +13,13 @@ plus ``vtkRadiosityEXRWriter`` for HDR images, and helpers in :mod:`relight.scen
 from .vtkRadiosityFilters import (  # noqa: F401
     vtkLightTaggedRadiosity,
     vtkRadiosityEXRWriter,
+    vtkRadiosityGLTFWriter,
     vtkRadiosityLightMarker,
     vtkRadiosityMesher,
     vtkRadiosityRelight,
     vtkRadiositySceneReader,
 )
+from .exporting import write_gltf  # noqa: F401
 from .importing import import_scene  # noqa: F401
 from .scene import (  # noqa: F401
     ErrorCatcher,

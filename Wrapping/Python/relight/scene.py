@@ -250,9 +250,11 @@ def exr_writer(data, camera, size=(640, 480), array="Radiosity"):
     return writer
 
 
-def write_exr(data, path, camera, size=(640, 480), array="Radiosity"):
-    """Writes a linear HDR view of the point array `array` as OpenEXR."""
+def write_exr(data, path, camera, size=(640, 480), array="Radiosity", light_layers=False):
+    """Writes a linear HDR view of the point array `array` as OpenEXR; with
+    `light_layers`, also one 32-bit float layer per light (channels <light>.R/.G/.B)."""
     writer = exr_writer(data, camera, size, array)
+    writer.SetLightLayers(bool(light_layers))
     writer.SetFileName(str(path))
     catcher = ErrorCatcher(writer)
     if not writer.Write():

@@ -1,0 +1,248 @@
+#include "vtkRadiosityGLTFWriter.h"
+#include "vtkRadiosityAdapter.h"
+
+#include "AtomicFile.h"
+#include "Polygon.h"
+
+#include "vtkDataArray.h"
+#include "vtkErrorCode.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkStringArray.h"
+
+#include <vtk_nlohmannjson.h>
+#include VTK_NLOHMANN_JSON(json.hpp)
+
+#include <algorithm>
+#include <cctype>
+#include <cstdint>
+#include <fstream>
+#include <limits>
+#include <set>
+#include <stdexcept>
+
+vtkStandardNewMacro(vtkRadiosityGLTFWriter);
+
+namespace
+{
+
+using json = nlohmann::json;
+
+constexpr int Float = 5126;       // glTF componentType FLOAT
+constexpr int UnsignedInt = 5125; // glTF componentType UNSIGNED_INT
+
+/// The binary chunk and the JSON that describes it, built up one accessor at a time.
+struct GlbDocument
+{
+  std::string Binary;
+  json Views = json::array();
+  json Accessors = json::array();
+
+  /// A float VEC3 accessor of `values` (3 per vertex), with bounds when `bounded`.
+  int AddVec3(const std::vector<float>& values, bool bounded)
+  {
+    json accessor = { { "bufferView", this->AddView(values.data(), values.size() * sizeof(float), 34962) },
+      { "componentType", Float }, { "count", values.size() / 3 }, { "type", "VEC3" } };
+    if (bounded)
+    {
+      std::vector<float> lo(3, std::numeric_limits<float>::max()), hi(3, -std::numeric_limits<float>::max());
+      for (size_t i = 0; i < values.size(); ++i)
+      {
+        lo[i % 3] = std::min(lo[i % 3], values[i]);
+        hi[i % 3] = std::max(hi[i % 3], values[i]);
+      }
+      accessor["min"] = lo;
+      accessor["max"] = hi;
+    }
+    this->Accessors.push_back(accessor);
+    return static_cast<int>(this->Accessors.size()) - 1;
+  }
+
+  int AddIndices(const std::vector<std::uint32_t>& indices)
+  {
+    this->Accessors.push_back({ { "bufferView", this->AddView(indices.data(), indices.size() * 4, 34963) },
+      { "componentType", UnsignedInt }, { "count", indices.size() }, { "type", "SCALAR" } });
+    return static_cast<int>(this->Accessors.size()) - 1;
+  }
+
+  int AddView(const void* data, size_t bytes, int target)
+  {
+    this->Views.push_back({ { "buffer", 0 }, { "byteOffset", this->Binary.size() }, { "byteLength", bytes },
+      { "target", target } });
+    this->Binary.append(static_cast<const char*>(data), bytes);
+    this->Binary.append((4 - this->Binary.size() % 4) % 4, '\0'); // views start 4-aligned
+    return static_cast<int>(this->Views.size()) - 1;
+  }
+};
+
+/// Triangles of every polygon (ear clipping where one is not convex), as point indices.
+std::vector<std::uint32_t> Triangles(const radiosity::SceneMesh& mesh)
+{
+  std::vector<std::uint32_t> indices;
+  for (int i = 0; i < mesh.NumberOfPolygons(); ++i)
+  {
+    const std::vector<radiosity::Vec3> loop = radiosity::GatherLoop(mesh.points, mesh.offsets, mesh.connectivity, i);
+    for (int corner : radiosity::Triangulate(loop.data(), static_cast<int>(loop.size())))
+    {
+      indices.push_back(static_cast<std::uint32_t>(mesh.Polygon(i)[corner]));
+    }
+  }
+  return indices;
+}
+
+std::vector<float> Floats(vtkDataArray* array, double scale, bool clamp)
+{
+  std::vector<float> values(3 * static_cast<size_t>(array->GetNumberOfTuples()));
+  for (vtkIdType t = 0; t < array->GetNumberOfTuples(); ++t)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const double v = array->GetComponent(t, c) * scale;
+      values[3 * t + c] = static_cast<float>(clamp ? std::min(1.0, std::max(0.0, v)) : v);
+    }
+  }
+  return values;
+}
+
+/// `_RADIOSITY_` and the name in upper case, other characters as '_', made unique.
+std::string AttributeName(const std::string& light, std::set<std::string>& taken)
+{
+  std::string name = "_RADIOSITY_";
+  for (char c : light)
+  {
+    name += std::isalnum(static_cast<unsigned char>(c)) ? static_cast<char>(std::toupper(static_cast<unsigned char>(c))) : '_';
+  }
+  std::string unique = name;
+  for (int n = 2; taken.count(unique); ++n)
+  {
+    unique = name + "_" + std::to_string(n);
+  }
+  taken.insert(unique);
+  return unique;
+}
+
+/// The whole .glb file: header, JSON chunk (space padded), binary chunk (zero padded).
+std::string GlbBytes(const json& document, const std::string& binary)
+{
+  std::string text = document.dump();
+  text.append((4 - text.size() % 4) % 4, ' ');
+  auto word = [](std::uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+  return "glTF" + word(2) + word(static_cast<std::uint32_t>(12 + 8 + text.size() + 8 + binary.size())) +
+    word(static_cast<std::uint32_t>(text.size())) + "JSON" + text + word(static_cast<std::uint32_t>(binary.size())) +
+    std::string("BIN\0", 4) + binary;
+}
+
+} // namespace
+
+vtkRadiosityGLTFWriter::vtkRadiosityGLTFWriter() = default;
+
+vtkRadiosityGLTFWriter::~vtkRadiosityGLTFWriter()
+{
+  this->SetFileName(nullptr);
+}
+
+int vtkRadiosityGLTFWriter::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+void vtkRadiosityGLTFWriter::WriteData()
+{
+  vtkPolyData* input = vtkPolyData::SafeDownCast(this->GetInput());
+  radiosity::SceneMesh mesh;
+  std::string error;
+  if (!this->FileName || !*this->FileName)
+  {
+    vtkErrorMacro(<< "Cannot write: no FileName set.");
+    this->SetErrorCode(vtkErrorCode::NoFileNameError);
+    return;
+  }
+  if (!input || vtkRadiosityAdapter::FailedUpstream(input) || !vtkRadiosityAdapter::CopyPolygons(input, mesh, error) ||
+    mesh.NumberOfPolygons() == 0)
+  {
+    vtkErrorMacro(<< "Cannot write glTF: " << (error.empty() ? "the input has no polygons" : error) << ".");
+    this->SetErrorCode(vtkErrorCode::UserError);
+    return;
+  }
+  GlbDocument glb;
+  std::vector<float> positions;
+  for (const radiosity::Vec3& p : mesh.points)
+  {
+    positions.insert(positions.end(), { static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z) });
+  }
+  json attributes = { { "POSITION", glb.AddVec3(positions, true) } };
+  vtkDataArray* relit = input->GetPointData()->GetArray("Radiosity");
+  if (relit && relit->GetNumberOfComponents() == 3)
+  {
+    attributes["COLOR_0"] = glb.AddVec3(Floats(relit, this->Exposure, true), false);
+  }
+  auto* names = vtkStringArray::SafeDownCast(input->GetFieldData()->GetAbstractArray("LightNames"));
+  vtkDataArray* defaults = input->GetFieldData()->GetArray("LightDefaultColors");
+  json lights = json::array();
+  std::set<std::string> taken;
+  for (vtkIdType l = 0; names && l < names->GetNumberOfValues(); ++l)
+  {
+    vtkDataArray* light = input->GetPointData()->GetArray(("Radiosity_" + names->GetValue(l)).c_str());
+    if (!light || light->GetNumberOfComponents() != 3)
+    {
+      continue;
+    }
+    const std::string attribute = AttributeName(names->GetValue(l), taken);
+    attributes[attribute] = glb.AddVec3(Floats(light, 1.0, false), false);
+    double colour[3] = { 1, 1, 1 };
+    if (defaults && defaults->GetNumberOfComponents() == 3 && l < defaults->GetNumberOfTuples())
+    {
+      defaults->GetTuple(l, colour);
+    }
+    lights.push_back({ { "name", names->GetValue(l) }, { "attribute", attribute },
+      { "defaultColor", { colour[0], colour[1], colour[2] } } });
+  }
+  const json primitive = { { "attributes", attributes }, { "indices", glb.AddIndices(Triangles(mesh)) },
+    { "material", 0 }, { "mode", 4 } };
+  const json document = { { "asset", { { "version", "2.0" }, { "generator", "RadiosityRelight" } } },
+    { "extensionsUsed", { "KHR_materials_unlit" } }, { "scene", 0 }, { "scenes", { { { "nodes", { 0 } } } } },
+    { "nodes", { { { "mesh", 0 } } } },
+    { "meshes", { { { "primitives", { primitive } },
+                  { "extras", { { "relight", { { "lights", lights }, { "exposure", this->Exposure } } } } } } } },
+    { "materials", { { { "name", "radiosity" }, { "doubleSided", true },
+                     { "pbrMetallicRoughness", { { "baseColorFactor", { 1, 1, 1, 1 } } } },
+                     { "extensions", { { "KHR_materials_unlit", json::object() } } } } } },
+    { "buffers", { { { "byteLength", glb.Binary.size() } } } }, { "bufferViews", glb.Views },
+    { "accessors", glb.Accessors } };
+  try
+  {
+    error = radiosity::WriteAtomically(this->FileName, [&](const char* temporary, bool& created) {
+      std::ofstream out(temporary, std::ios::binary);
+      if (!out)
+      {
+        throw std::runtime_error(std::string("cannot open ") + temporary);
+      }
+      created = true;
+      out << GlbBytes(document, glb.Binary);
+      if (!out.flush())
+      {
+        throw std::runtime_error("the disk refused the data");
+      }
+    });
+  }
+  catch (const std::exception& e)
+  {
+    error = e.what();
+  }
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< "Cannot write " << this->FileName << ": " << error << ".");
+    this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
+  }
+}
+
+void vtkRadiosityGLTFWriter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "Exposure: " << this->Exposure << "\n";
+}

@@ -1,0 +1,57 @@
+/**
+ * @class   vtkRadiosityGLTFWriter
+ * @brief   writes a solved scene as binary glTF 2.0 (.glb) that can be relit elsewhere
+ *
+ * For game engines, web viewers and other tools that change baked light without baking
+ * again: the geometry (polygons triangulated), one float RGB vertex attribute per light
+ * holding its unit-emission solution (`_RADIOSITY_<NAME>`, from the point arrays
+ * `Radiosity_<name>`), and `COLOR_0` with the current relit picture (the point array
+ * `Radiosity` times Exposure, clamped to [0, 1]) where the input has it. The mesh's
+ * `extras.relight` lists each light's name, attribute and default colour
+ * (`LightDefaultColors`) and the exposure, so a viewer computes
+ * `sum_i colour_i * intensity_i * _RADIOSITY_i * exposure`. The material is unlit
+ * (KHR_materials_unlit): the light is in the colours. Coordinates are written as they are
+ * (glTF expects metres with +Y up).
+ *
+ * The file is written under a temporary name and renamed, so a failed write leaves an
+ * older file whole.
+ *
+ * @sa vtkLightTaggedRadiosity vtkRadiosityRelight vtkRadiosityEXRWriter
+ */
+#ifndef vtkRadiosityGLTFWriter_h
+#define vtkRadiosityGLTFWriter_h
+
+#include "vtkRadiosityFiltersModule.h" // for export macro
+#include "vtkWriter.h"
+
+class VTKRADIOSITYFILTERS_EXPORT vtkRadiosityGLTFWriter : public vtkWriter
+{
+public:
+  static vtkRadiosityGLTFWriter* New();
+  vtkTypeMacro(vtkRadiosityGLTFWriter, vtkWriter);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  vtkSetFilePathMacro(FileName);
+  vtkGetFilePathMacro(FileName);
+
+  ///@{
+  /// Scale from radiosity to COLOR_0 (as the relight filter's Exposure). Default 1.
+  vtkSetClampMacro(Exposure, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(Exposure, double);
+  ///@}
+
+protected:
+  vtkRadiosityGLTFWriter();
+  ~vtkRadiosityGLTFWriter() override;
+  void WriteData() override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+
+private:
+  vtkRadiosityGLTFWriter(const vtkRadiosityGLTFWriter&) = delete;
+  void operator=(const vtkRadiosityGLTFWriter&) = delete;
+
+  char* FileName = nullptr;
+  double Exposure = 1.0;
+};
+
+#endif

@@ -1,0 +1,127 @@
+"""Solutions out (issue 10): a light-tagged solve written as binary glTF, read back by
+parsing the file here and by VTK's glTF loader, and as a layered OpenEXR that OpenEXR's
+own exrheader lists. The relit picture must equal the sum of the light layers."""
+
+import json
+import os
+import struct
+import subprocess
+import tempfile
+
+import numpy as np
+from vtkmodules.util import numpy_support
+from vtkmodules.vtkCommonCore import vtkFloatArray, vtkLogger
+
+import relight
+from relight import cell_array, light_names, point_array, read_polydata
+from testlib import check, finish
+
+vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_OFF)
+DATA = os.path.join(os.environ.get("RELIGHT_ROOT", "."), "Data")
+folder = tempfile.mkdtemp()
+COLOURS = [(1.0, 0.8, 0.6), (0.3, 0.6, 1.0), (1.0, 0.2, 0.1)]
+INTENSITIES = [3.0, 1.5, 0.5]
+EXPOSURE = 2.5
+
+solver = relight.solve(read_polydata(os.path.join(DATA, "paper_3lights.vtp")), 1.5, 0.75, ConvergenceThreshold=1e-3)
+relit_filter = relight.vtkRadiosityRelight()
+relit_filter.SetInputConnection(solver.GetOutputPort())
+for i, (colour, intensity) in enumerate(zip(COLOURS, INTENSITIES)):
+    relit_filter.SetLightColor(i, *colour)
+    relit_filter.SetLightIntensity(i, intensity)
+relit_filter.Update()
+relit = relit_filter.GetOutput()
+names = light_names(relit)
+
+
+def read_glb(path):
+    """(JSON document, binary chunk) of a .glb file, checking its framing."""
+    data = open(path, "rb").read()
+    magic, version, length = struct.unpack_from("<4sII", data, 0)
+    json_length, json_type = struct.unpack_from("<I4s", data, 12)
+    document = json.loads(data[20:20 + json_length])
+    bin_length, bin_type = struct.unpack_from("<I4s", data, 20 + json_length)
+    check(magic == b"glTF" and version == 2 and length == len(data) and json_type == b"JSON" and bin_type == b"BIN\0"
+          and json_length % 4 == 0 and bin_length % 4 == 0, "GLB framing: magic, version 2, lengths, 4-byte chunks")
+    return document, data[28 + json_length:28 + json_length + bin_length]
+
+
+def accessor(document, binary, index):
+    a = document["accessors"][index]
+    view = document["bufferViews"][a["bufferView"]]
+    dtype, width = {5126: (np.float32, 3), 5125: (np.uint32, 1)}[a["componentType"]]
+    values = np.frombuffer(binary, dtype, a["count"] * width, view["byteOffset"])
+    return values.reshape(-1, 3) if width == 3 else values
+
+
+# --- glTF: every light's solution, the relit colours, names and default colours ---------------
+glb = os.path.join(folder, "room.glb")
+relight.write_gltf(relit, glb, exposure=EXPOSURE)
+document, binary = read_glb(glb)
+primitive = document["meshes"][0]["primitives"][0]
+lights = document["meshes"][0]["extras"]["relight"]["lights"]
+check([entry["name"] for entry in lights] == names, f"extras name every light: {[e['name'] for e in lights]}")
+for entry in lights:
+    values = accessor(document, binary, primitive["attributes"][entry["attribute"]])
+    expected = point_array(relit, "Radiosity_" + entry["name"]).astype(np.float32)
+    check(entry["attribute"].startswith("_RADIOSITY_") and np.array_equal(values, expected),
+          f"{entry['attribute']}: the unit solution of {entry['name']}, bit for bit in float")
+defaults = numpy_support.vtk_to_numpy(relit.GetFieldData().GetArray("LightDefaultColors"))
+check(np.allclose([entry["defaultColor"] for entry in lights], defaults), "extras carry the default colours")
+colour = accessor(document, binary, primitive["attributes"]["COLOR_0"])
+expected = np.clip(point_array(relit, "Radiosity") * EXPOSURE, 0, 1)
+check(np.allclose(colour, expected, atol=1e-6), "COLOR_0 is the relit radiosity x exposure, clamped")
+# The sum a viewer computes from the light attributes gives the relit picture back.
+mix = sum(np.asarray(c) * s * accessor(document, binary, primitive["attributes"][e["attribute"]])
+          for c, s, e in zip(COLOURS, INTENSITIES, lights))
+check(np.allclose(mix, point_array(relit, "Radiosity"), rtol=1e-5, atol=1e-7), "sum of colour x intensity x attribute = relit")
+indices = accessor(document, binary, primitive["indices"])
+positions = accessor(document, binary, primitive["attributes"]["POSITION"]).astype(float)
+triangles = positions[indices.reshape(-1, 3)]
+area = 0.5 * np.linalg.norm(np.cross(triangles[:, 1] - triangles[:, 0], triangles[:, 2] - triangles[:, 0]), axis=1).sum()
+check(abs(area - relight.cell_areas(relit).sum()) < 1e-6 * area, f"the triangles cover the elements' area ({area:.4f} m^2)")
+back = relight.import_scene(glb, require_lights=False)
+check(np.allclose(back.GetBounds(), relit.GetBounds(), atol=1e-6) and back.GetNumberOfCells() == len(indices) // 3,
+      f"VTK's glTF loader reads it back: {back.GetNumberOfCells()} triangles, same bounds")
+
+# --- a failed write leaves the old file; bad input is an error ------------------------------
+size = os.path.getsize(glb)
+os.mkdir(glb + ".part")
+try:
+    relight.write_gltf(relit, glb)
+    check(False, "a write that cannot finish raises")
+except OSError as error:
+    check(os.path.getsize(glb) == size, f"a failed write leaves the old file whole ({error})")
+os.rmdir(glb + ".part")
+try:
+    relight.write_gltf(relight.make_scene([], [], []), os.path.join(folder, "empty.glb"))
+    check(False, "an empty scene is refused")
+except OSError as error:
+    check("no polygons" in str(error), f"an empty scene is refused: {error}")
+
+# --- OpenEXR: one float layer per light beside the relit picture ------------------------------
+exr = os.path.join(folder, "room.exr")
+camera = ((2.0, 1.5, 0.05), (2.0, 0.9, 4.0), (0.0, 1.0, 0.0), 80.0)
+relight.write_exr(relit, exr, camera, size=(64, 48), light_layers=True)
+header = subprocess.run(["exrheader", exr], capture_output=True, text=True).stdout
+for layer in [""] + names:
+    for c in "RGB":
+        channel = f"{layer}.{c}" if layer else c
+        check(f"{channel}, 32-bit floating-point" in header, f"exrheader lists {channel} as 32-bit float")
+
+
+def picture(array):
+    writer = relight.exr_writer(relit, camera, (64, 48), array)
+    image = vtkFloatArray()
+    writer.RenderImage(image)
+    return numpy_support.vtk_to_numpy(image).astype(float)
+
+
+layers = sum(np.asarray(c) * s * picture("Radiosity_" + n) for c, s, n in zip(COLOURS, INTENSITIES, names))
+check(np.allclose(layers, picture("Radiosity"), rtol=1e-5, atol=1e-6), "the relit picture is the sum of the light layers")
+try:
+    relight.write_exr(relight.furnace_box(), os.path.join(folder, "x.exr"), camera, light_layers=True, array="None")
+    check(False, "light layers of a scene without solutions are refused")
+except OSError as error:
+    check("Radiosity_<light>" in str(error), f"light layers need solutions: {error}")
+finish("TestExport")
