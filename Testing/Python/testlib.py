@@ -6,10 +6,12 @@ failures = []
 
 
 def check(condition, message):
-    """Prints the check's outcome and keeps going, so one run lists every failure."""
+    """Prints the check's outcome and keeps going, so one run lists every failure;
+    returns the condition, for checks that later ones depend on."""
     print(("ok   " if condition else "FAIL ") + message)
     if not condition:
         failures.append(message)
+    return bool(condition)
 
 
 def finish(name):

@@ -16,3 +16,37 @@ def write_gltf(data, path, exposure=1.0):
     catcher = ErrorCatcher(writer)
     if not writer.Write():
         raise OSError(f"could not write {path!r}: {catcher.first_error()}")
+
+
+def export_viewer(data, folder, camera=None, size=(640, 480), exposure=1.0):
+    """Writes a web page into `folder` that relights `data` in the browser: index.html,
+    the bundled viewer (three.js) and scene.js (the .glb as base64, so the page opens
+    from file:// without a server). Per light: on/off, colour, intensity; exposure;
+    orbit with the mouse. `camera` = (position, focal point, view-up, view angle) as for
+    render_png. URL parameters set controls as a user would: ?intensity.<light>=4,
+    enabled.<light>=0, colour.<light>=ff8800, controls=0 (hide the panel).
+    Returns the path of index.html."""
+    import base64
+    import json
+    import os
+    import shutil
+    import tempfile
+
+    web = os.path.join(os.path.dirname(__file__), "web")
+    if not os.path.exists(os.path.join(web, "relight-viewer.js")):
+        raise RuntimeError("the web viewer was not built (it needs npm at build time: apt-get install npm)")
+    os.makedirs(folder, exist_ok=True)
+    with tempfile.TemporaryDirectory() as scratch:
+        glb = os.path.join(scratch, "scene.glb")
+        write_gltf(data, glb, exposure)
+        encoded = base64.b64encode(open(glb, "rb").read()).decode("ascii")
+    view = None
+    if camera is not None:
+        position, focal, up, angle = camera
+        view = {"position": list(position), "focalPoint": list(focal), "up": list(up), "angle": angle}
+    with open(os.path.join(folder, "scene.js"), "w") as f:
+        f.write(f"window.RELIGHT_GLB = \"{encoded}\";\nwindow.RELIGHT_CAMERA = {json.dumps(view)};\n"
+                f"window.RELIGHT_SIZE = {json.dumps(list(size))};\n")
+    for name in ("index.html", "relight-viewer.js"):
+        shutil.copy(os.path.join(web, name), os.path.join(folder, name))
+    return os.path.join(folder, "index.html")

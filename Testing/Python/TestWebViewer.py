@@ -1,0 +1,99 @@
+"""The browser viewer (issue 10): the page relight.export_viewer writes, shown by Debian's
+headless Chromium, matches VTK's render of the same light settings, and a slider moved
+(through the page's URL, which sets the slider and fires its input event as a drag does)
+changes the picture where that light dominates, and only there."""
+
+import os
+import shutil
+import subprocess
+import tempfile
+
+import numpy as np
+from vtkmodules.util import numpy_support
+from vtkmodules.vtkCommonCore import vtkLogger
+from vtkmodules.vtkIOImage import vtkPNGReader
+
+import relight
+from relight import light_names, point_array, read_polydata
+from testlib import check, finish
+
+vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_OFF)
+DATA = os.path.join(os.environ.get("RELIGHT_ROOT", "."), "Data")
+CAMERA = ((2.0, 1.5, 0.05), (2.0, 0.9, 4.0), (0.0, 1.0, 0.0), 80.0)
+SIZE = (240, 180)
+BOOST = 4.0  # the Amber slider moved to four times its default
+folder = tempfile.mkdtemp()
+
+
+def read_png(path):
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    image = reader.GetOutput()
+    width, height, _ = image.GetDimensions()
+    pixels = numpy_support.vtk_to_numpy(image.GetPointData().GetScalars())[:, :3]
+    return pixels.reshape(height, width, 3)[::-1].astype(float)  # VTK's rows run bottom up
+
+
+def browser_shot(page, query, name):
+    """A screenshot of the page by headless Chromium (software WebGL, no network)."""
+    shot = os.path.join(folder, name)
+    subprocess.run([shutil.which("chromium"), "--headless", "--no-sandbox", "--disable-gpu",
+                    "--enable-unsafe-swiftshader", "--use-angle=swiftshader", "--disable-background-networking",
+                    "--disable-component-update", "--disable-sync", "--no-first-run",
+                    f"--user-data-dir={tempfile.mkdtemp()}", f"--window-size={SIZE[0]},{SIZE[1]}",
+                    "--virtual-time-budget=10000", f"--screenshot={shot}", f"file://{page}?{query}"],
+                   capture_output=True, timeout=180)
+    return read_png(shot) if os.path.exists(shot) else None
+
+
+def vtk_shot(relit, name):
+    path = os.path.join(folder, name)
+    relit.Update()
+    relight.render_png(relit.GetOutput(), path, CAMERA, SIZE)
+    return read_png(path)
+
+
+check(shutil.which("chromium") is not None, "Debian's chromium is installed (./relight test installs it)")
+solver = relight.solve(read_polydata(os.path.join(DATA, "paper_3lights.vtp")), 1.5, 0.375, ConvergenceThreshold=1e-3)
+relit = relight.vtkRadiosityRelight()
+relit.SetInputConnection(solver.GetOutputPort())
+relit.Update()
+b = point_array(relit.GetOutput(), "Radiosity").max(axis=1)
+exposure = 0.8 / np.percentile(b[b < 0.5 * b.max()], 99)  # the walls bright, the lamps clipped
+relit.SetExposure(exposure)
+relit.Update()
+names = light_names(relit.GetOutput())
+amber = names.index("Amber")
+page = relight.export_viewer(relit.GetOutput(), os.path.join(folder, "viewer"), CAMERA, SIZE, exposure)
+
+before = browser_shot(page, "controls=0", "before.png")
+reference = vtk_shot(relit, "vtk_before.png")
+defaults = numpy_support.vtk_to_numpy(relit.GetOutput().GetFieldData().GetArray("LightDefaultColors"))
+peak = defaults[amber].max()  # the slider's default value: the default colour's largest channel
+after = browser_shot(page, f"controls=0&intensity.Amber={BOOST * peak:.9g}", "after.png")
+relit.SetLightIntensity(amber, BOOST)
+boosted = vtk_shot(relit, "vtk_after.png")
+relit.SetLightIntensity(amber, 1.0)
+for i in range(len(names)):  # Amber alone, then the others alone: where does it dominate?
+    relit.SetLightEnabled(i, i == amber)
+alone = vtk_shot(relit, "vtk_amber.png")
+for i in range(len(names)):
+    relit.SetLightEnabled(i, i != amber)
+others = vtk_shot(relit, "vtk_others.png")
+
+if check(before is not None and after is not None, "Chromium rendered the page twice"):
+    for label, browser, vtk in (("default settings", before, reference), (f"Amber x{BOOST:g}", after, boosted)):
+        error = np.abs(browser - vtk)
+        check(error.mean() < 3.0 and np.percentile(error, 95) < 12,
+              f"{label}: the browser matches VTK's render (mean {error.mean():.2f}, 95th percentile "
+              f"{np.percentile(error, 95):.1f} of 255; edges rasterise differently)")
+    # Amber's share of each pixel (in VTK's pictures of it alone and of the others alone).
+    share = alone.sum(axis=2) / np.maximum(alone.sum(axis=2) + others.sum(axis=2), 1)
+    dominant, weak = share > 0.5, share < 0.3
+    change = np.abs(after - before).sum(axis=2)
+    check(dominant.mean() > 0.05 and weak.mean() > 0.05 and change[dominant].mean() > 2 * change[weak].mean(),
+          f"moving Amber's slider changes the picture most where Amber dominates: mean change "
+          f"{change[dominant].mean():.0f} where its share is over half ({dominant.mean():.0%} of the picture), "
+          f"{change[weak].mean():.0f} where under 30 % ({weak.mean():.0%})")
+finish("TestWebViewer")

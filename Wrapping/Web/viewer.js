@@ -1,0 +1,152 @@
+// Relights a glTF written by vtkRadiosityGLTFWriter in the browser: each light's
+// unit-emission solution is a vertex attribute, and the shader sums them with the
+// colour, intensity and on/off of the controls, then applies the exposure and sRGB
+// encoding per vertex, as the relight filter's DisplayColors.
+import * as THREE from "three";
+import { GLTFLoader } from "three/examples/jsm/loaders/GLTFLoader.js";
+import { OrbitControls } from "three/examples/jsm/controls/OrbitControls.js";
+
+const MAX_LIGHTS = 14; // WebGL guarantees 16 vertex attributes: position, and one per light
+
+function decodeBase64(text) {
+  const bytes = atob(text);
+  const out = new Uint8Array(bytes.length);
+  for (let i = 0; i < bytes.length; ++i) out[i] = bytes.charCodeAt(i);
+  return out.buffer;
+}
+
+function vertexShader(k) {
+  const attributes = Array.from({ length: k }, (_, i) => `attribute vec3 light${i};`).join("\n");
+  const sum = Array.from({ length: k }, (_, i) => `b += weights[${i}] * light${i};`).join("\n  ");
+  return `${attributes}
+uniform vec3 weights[${Math.max(k, 1)}];
+uniform float exposure;
+varying vec3 shade;
+vec3 encode(vec3 c) {
+  return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(0.0031308, c));
+}
+void main() {
+  vec3 b = vec3(0.0);
+  ${sum}
+  shade = encode(clamp(b * exposure, 0.0, 1.0));
+  gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0);
+}`;
+}
+
+const fragmentShader = `varying vec3 shade;
+void main() { gl_FragColor = vec4(shade, 1.0); }`;
+
+/// A light's default colour split into a displayable colour and an intensity.
+function splitColour(rgb) {
+  const peak = Math.max(rgb[0], rgb[1], rgb[2], 1e-12);
+  const hex = rgb.map((c) => Math.round((255 * c) / peak).toString(16).padStart(2, "0")).join("");
+  return { hex: `#${hex}`, intensity: peak };
+}
+
+function hexToRgb(hex) {
+  return [1, 3, 5].map((i) => parseInt(hex.slice(i, i + 2), 16) / 255);
+}
+
+function controlRow(light, onChange) {
+  const row = document.createElement("div");
+  row.className = "light";
+  const { hex, intensity } = splitColour(light.defaultColor);
+  row.innerHTML = `<label><input type="checkbox" checked> <span></span></label>
+    <input type="color" value="${hex}">
+    <input type="range" min="0" max="${4 * intensity}" step="${intensity / 100}" value="${intensity}">`;
+  row.querySelector("span").textContent = light.name;
+  const [enabled, colour, slider] = row.querySelectorAll("input");
+  const weight = () => {
+    const rgb = hexToRgb(colour.value);
+    const on = enabled.checked ? Number(slider.value) : 0;
+    return new THREE.Vector3(rgb[0] * on, rgb[1] * on, rgb[2] * on);
+  };
+  for (const input of [enabled, colour, slider]) input.addEventListener("input", onChange);
+  return { row, weight, enabled, colour, slider };
+}
+
+/// URL settings, as a user's changes: ?intensity.Amber=4&enabled.Warm%20White=0&colour.X=ff0000
+function applyQuery(controls, lights) {
+  const query = new URLSearchParams(location.search);
+  lights.forEach((light, i) => {
+    const set = (input, key, value) => {
+      if (query.has(`${key}.${light.name}`)) {
+        input[value] = key === "enabled" ? query.get(`${key}.${light.name}`) !== "0" : query.get(`${key}.${light.name}`);
+        input.dispatchEvent(new Event("input"));
+      }
+    };
+    set(controls[i].slider, "intensity", "value");
+    set(controls[i].enabled, "enabled", "checked");
+    if (query.has(`colour.${light.name}`)) {
+      controls[i].colour.value = `#${query.get(`colour.${light.name}`)}`;
+      controls[i].colour.dispatchEvent(new Event("input"));
+    }
+  });
+  if (query.get("controls") === "0") document.getElementById("panel").style.display = "none";
+}
+
+function placeCamera(camera, view, box) {
+  if (view) {
+    camera.position.set(...view.position);
+    camera.up.set(...view.up);
+    camera.fov = view.angle;
+    camera.lookAt(new THREE.Vector3(...view.focalPoint));
+    return new THREE.Vector3(...view.focalPoint);
+  }
+  const centre = box.getCenter(new THREE.Vector3());
+  camera.position.copy(centre).add(new THREE.Vector3(0, 0, 2 * box.getSize(new THREE.Vector3()).length()));
+  camera.lookAt(centre);
+  return centre;
+}
+
+function start(gltf) {
+  let mesh = null;
+  gltf.scene.traverse((o) => { if (o.isMesh && !mesh) mesh = o; });
+  const info = (mesh.userData && mesh.userData.relight) || (mesh.parent && mesh.parent.userData.relight) || { lights: [], exposure: 1 };
+  const lights = info.lights.slice(0, MAX_LIGHTS);
+  const status = document.getElementById("status");
+  if (info.lights.length > MAX_LIGHTS) status.textContent = `showing the first ${MAX_LIGHTS} of ${info.lights.length} lights`;
+  const geometry = mesh.geometry;
+  lights.forEach((light, i) => geometry.setAttribute(`light${i}`, geometry.getAttribute(light.attribute.toLowerCase())));
+  const uniforms = { weights: { value: lights.map(() => new THREE.Vector3()) }, exposure: { value: info.exposure } };
+  mesh.material = new THREE.ShaderMaterial({ uniforms, vertexShader: vertexShader(lights.length), fragmentShader, side: THREE.DoubleSide });
+
+  const canvas = document.getElementById("view");
+  if (window.RELIGHT_SIZE) [canvas.width, canvas.height] = window.RELIGHT_SIZE;
+  const renderer = new THREE.WebGLRenderer({ canvas, antialias: false, preserveDrawingBuffer: true });
+  renderer.outputColorSpace = THREE.LinearSRGBColorSpace; // the shader encodes, as VTK's DisplayColors
+  const scene = new THREE.Scene();
+  scene.add(gltf.scene);
+  const camera = new THREE.PerspectiveCamera(30, canvas.width / canvas.height, 0.01, 1e4);
+  const box = new THREE.Box3().setFromObject(gltf.scene);
+  const target = placeCamera(camera, window.RELIGHT_CAMERA, box);
+  const size = box.getSize(new THREE.Vector3()).length();
+  camera.near = size * 1e-3;
+  camera.far = size * 10;
+  camera.updateProjectionMatrix();
+  const orbit = new OrbitControls(camera, canvas);
+  orbit.target.copy(target);
+  orbit.update();
+
+  const render = () => {
+    controls.forEach((c, i) => uniforms.weights.value[i].copy(c.weight()));
+    uniforms.exposure.value = Number(exposure.value);
+    renderer.render(scene, camera);
+  };
+  const panel = document.getElementById("lights");
+  const controls = lights.map((light) => controlRow(light, render));
+  controls.forEach((c) => panel.appendChild(c.row));
+  const exposure = document.getElementById("exposure");
+  exposure.max = 8 * info.exposure;
+  exposure.step = info.exposure / 100;
+  exposure.value = info.exposure;
+  exposure.addEventListener("input", render);
+  orbit.addEventListener("change", render);
+  applyQuery(controls, lights);
+  render();
+  document.body.dataset.ready = "1";
+}
+
+new GLTFLoader().parse(decodeBase64(window.RELIGHT_GLB), "", start, (error) => {
+  document.getElementById("status").textContent = `Cannot read the scene: ${error.message || error}`;
+});
