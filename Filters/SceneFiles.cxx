@@ -1,5 +1,6 @@
 #include "SceneFiles.h"
 #include "SceneFilesErrors.h"
+#include "Text.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -20,7 +21,6 @@ namespace SceneFiles
 {
 namespace
 {
-
 /// Adds one polygon of point ids (offset into raw.points) with its material and object.
 void AddPolygon(const vtkIdType* ids, vtkIdType count, int base, int material, int object, radiosity::RawScene& raw)
 {
@@ -136,12 +136,6 @@ TemporaryFolder::~TemporaryFolder()
   vtksys::SystemTools::RemoveADirectory(this->Path);
 }
 
-std::string Trimmed(const std::string& text)
-{
-  const size_t first = text.find_first_not_of(" \t\r\n");
-  const size_t last = text.find_last_not_of(" \t\r\n");
-  return first == std::string::npos ? std::string() : text.substr(first, last - first + 1);
-}
 
 radiosity::Vec3 MeanColour(vtkImageData* image)
 {
@@ -181,7 +175,7 @@ public:
       // "ERROR: In file, line N\nclass (0x...): message" -> the message.
       std::string text = static_cast<const char*>(data);
       const size_t colon = text.find("): ");
-      this->First = Trimmed(colon == std::string::npos ? text : text.substr(colon + 3));
+      this->First = radiosity::Trimmed(colon == std::string::npos ? text : text.substr(colon + 3));
     }
   }
   std::string First;

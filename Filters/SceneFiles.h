@@ -45,9 +45,6 @@ public:
   std::string Path;
 };
 
-/// `text` without leading and trailing white space.
-std::string Trimmed(const std::string& text);
-
 /// The mean linear RGB of an 8-bit sRGB image (or of a float one, as is); white if none.
 radiosity::Vec3 MeanColour(vtkImageData* image);
 

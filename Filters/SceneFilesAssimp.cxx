@@ -2,6 +2,7 @@
 // them to OBJ + MTL in a temporary folder (scene-graph transforms applied), which is then
 // read as any OBJ.
 #include "SceneFiles.h"
+#include "Text.h"
 
 #include <vtksys/Process.h>
 #include <vtksys/SystemTools.hxx>
@@ -43,9 +44,9 @@ std::string RunAssimp(const std::string& program, const std::string& in, const s
   std::string reason;
   for (const std::string& line : lines)
   {
-    if (!Trimmed(line).empty())
+    if (!radiosity::Trimmed(line).empty())
     {
-      reason = Trimmed(line);
+      reason = radiosity::Trimmed(line);
     }
   }
   return reason.empty() ? "assimp failed" : "assimp: " + reason;

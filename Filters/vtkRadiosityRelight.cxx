@@ -1,6 +1,8 @@
 #include "vtkRadiosityRelight.h"
 
+#include "LightRig.h"
 #include "LightSolutions.h"
+#include "Text.h"
 #include "MovingLights.h"
 #include "PatchBasis.h"
 #include "Relight.h"
@@ -50,6 +52,13 @@ const radiosity::WorkerPool& Pool()
 
 vtkStandardNewMacro(vtkRadiosityRelight);
 
+struct vtkRadiosityRelight::Internals
+{
+  radiosity::LightRig Rig;
+  std::vector<std::string> Names;                  ///< the lights the last execution found
+  std::vector<radiosity::LightSetting> Effective; ///< and their settings in effect
+};
+
 struct vtkRadiosityRelight::MovingState
 {
   vtkMTimeType SceneTime = 0, DynamicTime = 0;
@@ -58,6 +67,7 @@ struct vtkRadiosityRelight::MovingState
 };
 
 vtkRadiosityRelight::vtkRadiosityRelight()
+  : Internal(new Internals)
 {
   this->SetNumberOfInputPorts(3);
 }
@@ -81,25 +91,6 @@ int vtkRadiosityRelight::FillInputPortInformation(int port, vtkInformation* info
 namespace
 {
 /// Why a light's effective setting cannot be used (empty when it can): light is never
-/// negative, and NaN would silently blank the picture.
-std::string InvalidSetting(double intensity, const double* color)
-{
-  std::ostringstream why;
-  if (!(std::isfinite(intensity) && intensity >= 0))
-  {
-    why << "has intensity " << intensity << "; it must be a finite number >= 0";
-  }
-  for (int j = 0; j < 3 && why.str().empty(); ++j)
-  {
-    if (!(std::isfinite(color[j]) && color[j] >= 0))
-    {
-      why << "has colour component " << j << " = " << color[j] << "; colours must be finite and >= 0";
-    }
-  }
-  return why.str();
-}
-
-/// The solver's basis, per element (cell array) or per patch node (field array plus the
 /// cell arrays that interpolate it), checked against the scene's patches.
 bool ReadBasis(vtkPolyData* scene, int patches, radiosity::BasisView& basis, std::string& error)
 {
@@ -230,8 +221,7 @@ bool vtkRadiosityRelight::AddMovingLights(vtkPolyData* scene, vtkPolyData* light
       light.Normal = { v[0], v[1], v[2] };
     }
     const radiosity::Vec3& p = light.Position;
-    const double colour[3] = { light.Color.x, light.Color.y, light.Color.z };
-    const std::string invalid = InvalidSetting(light.Intensity, colour);
+    const std::string invalid = radiosity::InvalidLightValues(light.Intensity, light.Color);
     if (!std::isfinite(p.x + p.y + p.z) || !invalid.empty())
     {
       error = "moving light " + std::to_string(i) + (invalid.empty() ? " has a non-finite position" : " " + invalid);
@@ -281,55 +271,32 @@ void vtkRadiosityRelight::AddScheduleEntry(
   {
     return;
   }
-  this->Schedule.push_back({ time, light, { r, g, b }, intensity, enabled != 0 });
+  radiosity::LightKeyframe key;
+  key.Time = time;
+  key.Light = light;
+  key.Color = { r, g, b };
+  key.Intensity = intensity;
+  key.Enabled = enabled != 0;
+  this->Internal->Rig.Schedule.push_back(key);
   this->Modified();
 }
 
 void vtkRadiosityRelight::ClearSchedule()
 {
-  if (!this->Schedule.empty())
+  if (!this->Internal->Rig.Schedule.empty())
   {
-    this->Schedule.clear();
+    this->Internal->Rig.Schedule.clear();
     this->Modified();
   }
 }
 
+int vtkRadiosityRelight::GetNumberOfScheduleEntries() const
+{
+  return static_cast<int>(this->Internal->Rig.Schedule.size());
+}
+
 namespace
 {
-std::string Trimmed(const std::string& text)
-{
-  const size_t first = text.find_first_not_of(" \t\r");
-  const size_t last = text.find_last_not_of(" \t\r");
-  return first == std::string::npos ? std::string() : text.substr(first, last - first + 1);
-}
-
-/// A whole cell as a finite number; false for anything else ("1.5x", "", "nan").
-bool ParseNumber(const std::string& text, double& value)
-{
-  char* end = nullptr;
-  const std::string cell = Trimmed(text);
-  value = std::strtod(cell.c_str(), &end);
-  return !cell.empty() && end == cell.c_str() + cell.size() && std::isfinite(value);
-}
-
-/// true/false, on/off, yes/no, 1/0 in any case.
-bool ParseEnabled(const std::string& text, bool& value)
-{
-  std::string word = Trimmed(text);
-  std::transform(word.begin(), word.end(), word.begin(), [](unsigned char c) { return std::tolower(c); });
-  if (word == "1" || word == "true" || word == "on" || word == "yes")
-  {
-    value = true;
-    return true;
-  }
-  if (word == "0" || word == "false" || word == "off" || word == "no")
-  {
-    value = false;
-    return true;
-  }
-  return false;
-}
-
 /// When the file was last written (0 when it cannot be read): a change re-reads it.
 long long WriteStamp(const std::string& file)
 {
@@ -347,7 +314,8 @@ bool vtkRadiosityRelight::LoadSchedule(std::string& error)
   {
     return true;
   }
-  this->FileSchedule.clear();
+  std::vector<radiosity::LightKeyframe>& keys = this->Internal->Rig.FileSchedule;
+  keys.clear();
   this->LoadedScheduleFile.clear();
   if (file.empty())
   {
@@ -376,72 +344,29 @@ bool vtkRadiosityRelight::LoadSchedule(std::string& error)
     {
       cells.push_back(table->GetValue(row, c).ToString());
     }
-    while (!cells.empty() && Trimmed(cells.back()).empty())
+    while (!cells.empty() && radiosity::Trimmed(cells.back()).empty())
     {
       cells.pop_back();
     }
-    std::string first = cells.empty() ? std::string() : Trimmed(cells[0]);
+    std::string first = cells.empty() ? std::string() : radiosity::Trimmed(cells[0]);
     std::transform(first.begin(), first.end(), first.begin(), [](unsigned char c) { return std::tolower(c); });
     if (cells.empty() || (row == 0 && first == "time"))
     {
       continue; // an empty line, or the header (known by its first column's name)
     }
-    Keyframe k{ 0, Trimmed(cells.size() > 1 ? cells[1] : ""), { 1, 1, 1 }, 1, true };
-    const bool parsed = (cells.size() == 6 || cells.size() == 7) && ParseNumber(cells[0], k.Time) && !k.Light.empty() &&
-      ParseNumber(cells[2], k.Color[0]) && ParseNumber(cells[3], k.Color[1]) && ParseNumber(cells[4], k.Color[2]) &&
-      ParseNumber(cells[5], k.Intensity) && (cells.size() == 6 || ParseEnabled(cells[6], k.Enabled));
-    if (!parsed)
+    radiosity::LightKeyframe k;
+    if (!radiosity::ParseKeyframe(cells, k))
     {
       error = "row " + std::to_string(row + 1) + " of '" + file +
         "' is not 'time, light, r, g, b, intensity[, enabled]' (numbers; enabled as true/false, on/off, "
         "yes/no or 1/0; quote names with commas)";
-      this->FileSchedule.clear();
+      keys.clear();
       return false;
     }
-    this->FileSchedule.push_back(k);
+    keys.push_back(k);
   }
   this->LoadedScheduleFile = file;
   this->LoadedScheduleStamp = stamp;
-  return true;
-}
-
-bool vtkRadiosityRelight::ScheduledSetting(
-  const std::string& name, int index, double time, Setting& out) const
-{
-  const Keyframe* before = nullptr;
-  const Keyframe* after = nullptr;
-  for (const auto* list : { &this->FileSchedule, &this->Schedule })
-  {
-    for (const Keyframe& k : *list)
-    {
-      if (k.Light != name && k.Light != std::to_string(index))
-      {
-        continue;
-      }
-      if (k.Time <= time && (!before || k.Time >= before->Time))
-      {
-        before = &k;
-      }
-      if (k.Time >= time && (!after || k.Time < after->Time))
-      {
-        after = &k;
-      }
-    }
-  }
-  if (!before && !after)
-  {
-    return false;
-  }
-  const Keyframe& a = before ? *before : *after;
-  const Keyframe& b = after ? *after : *before;
-  const double w = b.Time > a.Time ? (time - a.Time) / (b.Time - a.Time) : 0.0;
-  out.HasColor = out.HasIntensity = out.HasEnabled = true;
-  for (int c = 0; c < 3; ++c)
-  {
-    out.Color[c] = a.Color[c] + w * (b.Color[c] - a.Color[c]);
-  }
-  out.Intensity = a.Intensity + w * (b.Intensity - a.Intensity);
-  out.Enabled = a.Enabled;
   return true;
 }
 
@@ -457,14 +382,7 @@ int vtkRadiosityRelight::RequestInformation(
   }
   // Time steps: the schedule's keyframes and those of a time-varying moving-light source.
   // Without either, the scene's own (copied by the pipeline) stay as they are.
-  std::vector<double> times;
-  for (const auto* list : { &this->FileSchedule, &this->Schedule })
-  {
-    for (const Keyframe& k : *list)
-    {
-      times.push_back(k.Time);
-    }
-  }
+  std::vector<double> times = this->Internal->Rig.KeyframeTimes();
   if (this->GetNumberOfInputConnections(1) > 0)
   {
     vtkInformation* lights = inputVector[1]->GetInformationObject(0);
@@ -486,35 +404,17 @@ int vtkRadiosityRelight::RequestInformation(
   return 1;
 }
 
-void vtkRadiosityRelight::Setting::ApplyTo(Setting& effective) const
-{
-  if (this->HasColor)
-  {
-    std::copy(this->Color, this->Color + 3, effective.Color);
-  }
-  if (this->HasIntensity)
-  {
-    effective.Intensity = this->Intensity;
-  }
-  if (this->HasEnabled)
-  {
-    effective.Enabled = this->Enabled;
-  }
-}
-
 void vtkRadiosityRelight::SetLightColor(int light, double r, double g, double b)
 {
-  Setting& s = this->ByIndex[light];
+  radiosity::LightSetting& s = this->Internal->Rig.ByIndex[light];
   s.HasColor = true;
-  s.Color[0] = r;
-  s.Color[1] = g;
-  s.Color[2] = b;
+  s.Color = { r, g, b };
   this->Modified();
 }
 
 void vtkRadiosityRelight::SetLightIntensity(int light, double intensity)
 {
-  Setting& s = this->ByIndex[light];
+  radiosity::LightSetting& s = this->Internal->Rig.ByIndex[light];
   s.HasIntensity = true;
   s.Intensity = intensity;
   this->Modified();
@@ -522,7 +422,7 @@ void vtkRadiosityRelight::SetLightIntensity(int light, double intensity)
 
 void vtkRadiosityRelight::SetLightEnabled(int light, bool enabled)
 {
-  Setting& s = this->ByIndex[light];
+  radiosity::LightSetting& s = this->Internal->Rig.ByIndex[light];
   s.HasEnabled = true;
   s.Enabled = enabled;
   this->Modified();
@@ -537,13 +437,11 @@ void vtkRadiosityRelight::SetLightSetting(
   }
   // NaN means "keep the default": a panel that changed only the intensity must not
   // replace the light's own colour with a guess.
-  Setting& s = this->ByName[name];
+  radiosity::LightSetting& s = this->Internal->Rig.ByName[name];
   s.HasColor = !(std::isnan(r) || std::isnan(g) || std::isnan(b));
   s.HasIntensity = !std::isnan(intensity);
   s.HasEnabled = true;
-  s.Color[0] = r;
-  s.Color[1] = g;
-  s.Color[2] = b;
+  s.Color = { r, g, b };
   s.Intensity = intensity;
   s.Enabled = enabled != 0;
   this->Modified();
@@ -551,32 +449,36 @@ void vtkRadiosityRelight::SetLightSetting(
 
 void vtkRadiosityRelight::ClearLightSettings()
 {
-  if (!this->ByName.empty())
+  if (!this->Internal->Rig.ByName.empty())
   {
-    this->ByName.clear();
+    this->Internal->Rig.ByName.clear();
     this->Modified();
   }
 }
 
 void vtkRadiosityRelight::ResetLights()
 {
-  this->ByName.clear();
-  this->ByIndex.clear();
+  this->Internal->Rig.ByName.clear();
+  this->Internal->Rig.ByIndex.clear();
   this->Modified();
+}
+
+int vtkRadiosityRelight::GetNumberOfLights() const
+{
+  return static_cast<int>(this->Internal->Names.size());
 }
 
 const char* vtkRadiosityRelight::GetLightName(int light) const
 {
-  return light >= 0 && light < this->GetNumberOfLights() ? this->Resolved[light].Name.c_str()
-                                                         : nullptr;
+  return light >= 0 && light < this->GetNumberOfLights() ? this->Internal->Names[light].c_str() : nullptr;
 }
 
 vtkStringArray* vtkRadiosityRelight::GetLightNames()
 {
   this->NamesInfo = vtkSmartPointer<vtkStringArray>::New();
-  for (const Light& light : this->Resolved)
+  for (const std::string& name : this->Internal->Names)
   {
-    this->NamesInfo->InsertNextValue(light.Name);
+    this->NamesInfo->InsertNextValue(name);
   }
   return this->NamesInfo;
 }
@@ -589,11 +491,11 @@ vtkStringArray* vtkRadiosityRelight::GetLightSettingsInfo()
     std::snprintf(text, sizeof(text), "%.9g", value);
     return std::string(text);
   };
-  for (const Light& light : this->Resolved)
+  for (int l = 0; l < this->GetNumberOfLights(); ++l)
   {
-    const Setting& s = light.Effective;
-    for (const std::string& item : { light.Name, number(s.Color[0]), number(s.Color[1]),
-           number(s.Color[2]), number(s.Intensity), std::string(s.Enabled ? "1" : "0") })
+    const radiosity::LightSetting& s = this->Internal->Effective[l];
+    for (const std::string& item : { this->Internal->Names[l], number(s.Color.x), number(s.Color.y),
+           number(s.Color.z), number(s.Intensity), std::string(s.Enabled ? "1" : "0") })
     {
       this->SettingsInfo->InsertNextValue(item);
     }
@@ -606,30 +508,29 @@ void vtkRadiosityRelight::GetLightColor(int light, double rgb[3]) const
   const bool valid = light >= 0 && light < this->GetNumberOfLights();
   for (int c = 0; c < 3; ++c)
   {
-    rgb[c] = valid ? this->Resolved[light].Effective.Color[c] : 0.0;
+    rgb[c] = valid ? this->Internal->Effective[light].Color[c] : 0.0;
   }
 }
 
 double vtkRadiosityRelight::GetLightIntensity(int light) const
 {
-  return light >= 0 && light < this->GetNumberOfLights() ? this->Resolved[light].Effective.Intensity
-                                                         : 0.0;
+  return light >= 0 && light < this->GetNumberOfLights() ? this->Internal->Effective[light].Intensity : 0.0;
 }
 
 bool vtkRadiosityRelight::GetLightEnabled(int light) const
 {
-  return light >= 0 && light < this->GetNumberOfLights() && this->Resolved[light].Effective.Enabled;
+  return light >= 0 && light < this->GetNumberOfLights() && this->Internal->Effective[light].Enabled;
 }
 
 void vtkRadiosityRelight::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Exposure: " << this->Exposure << "\n";
-  for (const Light& light : this->Resolved)
+  for (int l = 0; l < this->GetNumberOfLights(); ++l)
   {
-    const Setting& s = light.Effective;
-    os << indent << light.Name << ": colour (" << s.Color[0] << ", " << s.Color[1] << ", "
-       << s.Color[2] << ") intensity " << s.Intensity << (s.Enabled ? " on" : " off") << "\n";
+    const radiosity::LightSetting& s = this->Internal->Effective[l];
+    os << indent << this->Internal->Names[l] << ": colour (" << s.Color.x << ", " << s.Color.y << ", "
+       << s.Color.z << ") intensity " << s.Intensity << (s.Enabled ? " on" : " off") << "\n";
   }
 }
 
@@ -727,7 +628,8 @@ int vtkRadiosityRelight::RequestData(
   return vtkRadiosityAdapter::Guarded(this, vtkPolyData::GetData(inputVector[0]), vtkPolyData::GetData(outputVector), [&]() -> int {
     vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
     vtkPolyData* output = vtkPolyData::GetData(outputVector);
-    this->Resolved.clear();
+    this->Internal->Names.clear();
+    this->Internal->Effective.clear();
     if (!std::isfinite(this->Exposure) || !std::isfinite(this->IndirectScale))
     {
       vtkErrorMacro(<< "Cannot relight: Exposure (" << this->Exposure << ") and IndirectScale ("
@@ -818,86 +720,40 @@ int vtkRadiosityRelight::RequestData(
         }
       }
     }
-    std::vector<double> weights(3 * k, 0.0);
-    std::vector<std::string> pointArrays, cellArrays;
+    std::vector<radiosity::Vec3> defaultColours(k, { 1, 1, 1 });
     for (int i = 0; i < k; ++i)
     {
-      Light light;
-      light.Name = names[i];
-      Setting& s = light.Effective;
       if (defaults)
       {
-        defaults->GetTuple(i, s.Color);
+        defaultColours[i] = { defaults->GetComponent(i, 0), defaults->GetComponent(i, 1), defaults->GetComponent(i, 2) };
       }
       else if (emissionCount[i] > 0) // zero Emission stays zero, as in a combined solve
       {
-        for (int j = 0; j < 3; ++j)
-        {
-          s.Color[j] = emissionSum[3 * i + j] / emissionCount[i];
-        }
-      }
-      auto byName = this->ByName.find(light.Name);
-      if (byName != this->ByName.end())
-      {
-        byName->second.ApplyTo(s);
-      }
-      Setting scheduled;
-      if (this->ScheduledSetting(light.Name, i, time, scheduled))
-      {
-        scheduled.ApplyTo(s);
-      }
-      auto byIndex = this->ByIndex.find(i);
-      if (byIndex != this->ByIndex.end())
-      {
-        byIndex->second.ApplyTo(s);
-      }
-      const std::string invalid = s.Enabled ? InvalidSetting(s.Intensity, s.Color) : std::string();
-      if (!invalid.empty())
-      {
-        vtkErrorMacro(<< "Cannot relight: light '" << light.Name << "' " << invalid << ".");
-        return 0;
-      }
-      for (int j = 0; j < 3; ++j)
-      {
-        weights[3 * i + j] = s.Enabled ? s.Color[j] * s.Intensity : 0.0;
-      }
-      this->NamesString += (i ? ";" : "") + light.Name;
-      this->Resolved.push_back(light);
-      pointArrays.push_back(prefix + light.Name);
-      cellArrays.push_back(prefix + light.Name);
-    }
-    for (const auto& entry : this->ByName)
-    {
-      if (std::find(names.begin(), names.end(), entry.first) == names.end())
-      {
-        vtkWarningMacro(<< "No light is named '" << entry.first << "'; lights are: " << this->NamesString);
+        defaultColours[i] = radiosity::Vec3{ emissionSum[3 * i], emissionSum[3 * i + 1], emissionSum[3 * i + 2] } *
+          (1.0 / emissionCount[i]);
       }
     }
-    std::set<std::string> unknown;
-    for (const auto* list : { &this->FileSchedule, &this->Schedule })
+    std::vector<radiosity::LightSetting> effective;
+    std::vector<std::string> warnings;
+    const std::string invalid = this->Internal->Rig.Resolve(names, defaultColours, time, effective, warnings);
+    if (!invalid.empty())
     {
-      for (const Keyframe& key : *list)
-      {
-        const bool index = std::any_of(names.begin(), names.end(), [&, i = 0](const std::string&) mutable {
-          return key.Light == std::to_string(i++);
-        });
-        if (!index && std::find(names.begin(), names.end(), key.Light) == names.end())
-        {
-          unknown.insert(key.Light);
-        }
-      }
+      vtkErrorMacro(<< "Cannot relight: " << invalid << ".");
+      return 0;
     }
-    for (const std::string& light : unknown)
+    for (const std::string& warning : warnings)
     {
-      vtkWarningMacro(<< "The light schedule names '" << light << "', which is no light; lights are: "
-                      << this->NamesString);
+      vtkWarningMacro(<< warning);
     }
-    for (const auto& entry : this->ByIndex)
+    this->Internal->Names = names;
+    this->Internal->Effective = effective;
+    std::vector<double> weights = radiosity::LightWeights(effective, this->IndirectScale);
+    std::vector<std::string> pointArrays, cellArrays;
+    for (const std::string& name : names)
     {
-      if (entry.first < 0 || entry.first >= k)
-      {
-        vtkWarningMacro(<< "Light index " << entry.first << " is out of range; there are " << k << " lights.");
-      }
+      this->NamesString += (this->NamesString.empty() ? "" : ";") + name;
+      pointArrays.push_back(prefix + name);
+      cellArrays.push_back(prefix + name);
     }
 
     // B = s B_total + (1 - s) B_direct: the same combination over 2k arrays.
@@ -910,12 +766,6 @@ int vtkRadiosityRelight::RequestData(
         vtkErrorMacro(<< "Cannot relight: IndirectScale needs the arrays '" << direct
                       << "' etc.; turn on SeparateDirect in the solver.");
         return 0;
-      }
-      const size_t total = weights.size();
-      for (size_t w = 0; w < total; ++w)
-      {
-        weights.push_back(weights[w] * (1.0 - this->IndirectScale));
-        weights[w] *= this->IndirectScale;
       }
       for (const std::string& name : names)
       {
@@ -966,7 +816,7 @@ int vtkRadiosityRelight::RequestData(
     }
 
     output->ShallowCopy(input);
-    if (!this->Schedule.empty() || !this->FileSchedule.empty())
+    if (!this->Internal->Rig.KeyframeTimes().empty())
     {
       output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);
     }

@@ -41,9 +41,8 @@
 class vtkFloatArray;
 class vtkStringArray;
 
-#include <map>     // for settings
+#include <memory>  // for the internals
 #include <string>  // for names
-#include <vector>  // for resolved lights
 
 class VTKRADIOSITYFILTERS_EXPORT vtkRadiosityRelight : public vtkPolyDataAlgorithm
 {
@@ -86,7 +85,7 @@ public:
   void ClearSchedule();
   vtkSetStringMacro(ScheduleFileName);
   vtkGetStringMacro(ScheduleFileName);
-  int GetNumberOfScheduleEntries() const { return static_cast<int>(this->Schedule.size()); }
+  int GetNumberOfScheduleEntries() const;
   ///@}
 
   ///@{
@@ -109,7 +108,7 @@ public:
 
   ///@{
   /// The lights found by the last execution and their effective settings.
-  int GetNumberOfLights() const { return static_cast<int>(this->Resolved.size()); }
+  int GetNumberOfLights() const;
   const char* GetLightName(int light) const;
   /// The names as a string array (ParaView's LightNamesInfo).
   vtkStringArray* GetLightNames();
@@ -133,40 +132,12 @@ private:
   vtkRadiosityRelight(const vtkRadiosityRelight&) = delete;
   void operator=(const vtkRadiosityRelight&) = delete;
 
-  struct Setting
-  {
-    bool HasColor = false;
-    double Color[3] = { 1, 1, 1 };
-    bool HasIntensity = false;
-    double Intensity = 1;
-    bool HasEnabled = false;
-    bool Enabled = true;
-    void ApplyTo(Setting& effective) const;
-  };
-  std::map<int, Setting> ByIndex;
-  std::map<std::string, Setting> ByName;
-  struct Light
-  {
-    std::string Name;
-    Setting Effective;
-  };
-  std::vector<Light> Resolved;
-  struct Keyframe
-  {
-    double Time;
-    std::string Light;
-    double Color[3];
-    double Intensity;
-    bool Enabled;
-  };
-  std::vector<Keyframe> Schedule;     ///< entries from AddScheduleEntry
-  std::vector<Keyframe> FileSchedule; ///< entries read from ScheduleFileName
+  struct Internals;
+  std::unique_ptr<Internals> Internal; ///< the light rig, and the lights the last execution resolved
   std::string LoadedScheduleFile;
   long long LoadedScheduleStamp = 0; ///< its last write time when read: a newer one re-reads it
   char* ScheduleFileName = nullptr;
   bool LoadSchedule(std::string& error);
-  /// The schedule's settings for `name` (or `index`) at `time`; false if it has none.
-  bool ScheduledSetting(const std::string& name, int index, double time, Setting& out) const;
   std::string NamesString; ///< the names joined by ';', for messages
   vtkSmartPointer<vtkStringArray> NamesInfo;
   vtkSmartPointer<vtkStringArray> SettingsInfo;

@@ -1,4 +1,5 @@
 #include "Wavefront.h"
+#include "Text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,20 +11,12 @@ namespace radiosity
 {
 namespace
 {
-
-std::string Trim(const std::string& text)
-{
-  const size_t first = text.find_first_not_of(" \t\r\n");
-  const size_t last = text.find_last_not_of(" \t\r\n");
-  return first == std::string::npos ? std::string() : text.substr(first, last - first + 1);
-}
-
 /// The rest of the line after the keyword, trimmed (names may hold spaces).
 std::string Rest(std::istringstream& words)
 {
   std::string rest;
   std::getline(words, rest);
-  return Trim(rest);
+  return Trimmed(rest);
 }
 
 bool Number(const std::string& word, double& value)

@@ -1,0 +1,89 @@
+#include "LightRig.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace radiosity;
+
+namespace
+{
+
+LightSetting Intensity(double value)
+{
+  LightSetting s;
+  s.HasIntensity = true;
+  s.Intensity = value;
+  return s;
+}
+
+} // namespace
+
+TEST(LightRig, PrecedenceIsDefaultsNameScheduleIndex)
+{
+  LightRig rig;
+  const std::vector<std::string> names = { "Warm", "Cool" };
+  const std::vector<Vec3> defaults = { { 1, 0.8, 0.6 }, { 0.5, 0.6, 1 } };
+  std::vector<LightSetting> effective;
+  std::vector<std::string> warnings;
+  ASSERT_EQ(rig.Resolve(names, defaults, 0, effective, warnings), "");
+  EXPECT_DOUBLE_EQ(effective[0].Color.y, 0.8); // the default colour, intensity 1, on
+  EXPECT_DOUBLE_EQ(effective[1].Intensity, 1);
+  rig.ByName["Warm"] = Intensity(2);
+  rig.Schedule.push_back({ 0, "Warm", { 1, 1, 1 }, 3, true });
+  rig.Schedule.push_back({ 10, "Warm", { 1, 1, 1 }, 5, false });
+  ASSERT_EQ(rig.Resolve(names, defaults, 5, effective, warnings), "");
+  EXPECT_DOUBLE_EQ(effective[0].Intensity, 4);   // the schedule beats the name, interpolated
+  EXPECT_TRUE(effective[0].Enabled);             // on/off held from the keyframe before
+  EXPECT_DOUBLE_EQ(effective[0].Color.z, 1);     // the keyframe's colour
+  rig.ByIndex[0] = Intensity(7);
+  ASSERT_EQ(rig.Resolve(names, defaults, 5, effective, warnings), "");
+  EXPECT_DOUBLE_EQ(effective[0].Intensity, 7);   // the index beats the schedule
+  ASSERT_EQ(rig.Resolve(names, defaults, 12, effective, warnings), "");
+  EXPECT_FALSE(effective[0].Enabled);            // after the last keyframe: held
+  EXPECT_EQ(rig.KeyframeTimes(), (std::vector<double>{ 0, 10 }));
+}
+
+TEST(LightRig, WeightsSplitIndirectLight)
+{
+  LightSetting on, off;
+  on.Color = { 1, 0.5, 0.25 };
+  on.Intensity = 4;
+  off.Enabled = false;
+  EXPECT_EQ(LightWeights({ on, off }, 1.0), (std::vector<double>{ 4, 2, 1, 0, 0, 0 }));
+  // s B_total + (1 - s) B_direct with s = 0.25.
+  EXPECT_EQ(LightWeights({ on }, 0.25), (std::vector<double>{ 1, 0.5, 0.25, 3, 1.5, 0.75 }));
+}
+
+TEST(LightRig, BadValuesAreErrorsAndUnknownNamesWarn)
+{
+  LightRig rig;
+  rig.ByIndex[1] = Intensity(-1);
+  rig.ByName["Nobody"] = Intensity(1);
+  rig.Schedule.push_back({ 0, "7", { 1, 1, 1 }, 1, true });
+  std::vector<LightSetting> effective;
+  std::vector<std::string> warnings;
+  const std::string error = rig.Resolve({ "A", "B" }, {}, 0, effective, warnings);
+  EXPECT_NE(error.find("light 'B' has intensity -1"), std::string::npos);
+  rig.ByIndex[1].Intensity = std::nan("");
+  rig.ByIndex[1].HasEnabled = true;
+  rig.ByIndex[1].Enabled = false; // a light switched off may hold anything
+  ASSERT_EQ(rig.Resolve({ "A", "B" }, {}, 0, effective, warnings), "");
+  ASSERT_EQ(warnings.size(), 2u);
+  EXPECT_NE(warnings[0].find("No light is named 'Nobody'"), std::string::npos);
+  EXPECT_NE(warnings[1].find("names '7'"), std::string::npos);
+}
+
+TEST(LightRig, KeyframeRowsParse)
+{
+  LightKeyframe key;
+  ASSERT_TRUE(ParseKeyframe({ " 2.5", "Warm, White", "1", "0.5", "0", "3", " OFF" }, key));
+  EXPECT_EQ(key.Light, "Warm, White");
+  EXPECT_DOUBLE_EQ(key.Time, 2.5);
+  EXPECT_FALSE(key.Enabled);
+  EXPECT_TRUE(ParseKeyframe({ "0", "A", "1", "1", "1", "1" }, key)); // enabled is optional
+  EXPECT_FALSE(ParseKeyframe({ "0", "A", "1", "1", "1" }, key));
+  EXPECT_FALSE(ParseKeyframe({ "0", "A", "1", "1", "1x", "1" }, key));
+  EXPECT_FALSE(ParseKeyframe({ "0", "A", "1", "1", "1", "1", "maybe" }, key));
+  EXPECT_FALSE(ParseKeyframe({ "nan", "A", "1", "1", "1", "1" }, key));
+}
