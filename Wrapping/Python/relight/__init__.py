@@ -19,6 +19,7 @@ from .vtkRadiosityFilters import (  # noqa: F401
     vtkRadiosityRelight,
     vtkRadiositySceneReader,
 )
+from .vtkRadiosityRendering import vtkRadiosityRelightMapper  # noqa: F401
 from .exporting import export_viewer, write_gltf  # noqa: F401
 from .importing import import_scene  # noqa: F401
 from .scene import (  # noqa: F401

@@ -194,12 +194,14 @@ def render_png(data, path, camera, size=(640, 480)):
 
 class FrameRenderer:
     """An off-screen, unlit view of relit data (DisplayColors shown as they are), one window
-    reused for many frames (an animation)."""
+    reused for many frames (an animation). With `mapper` (a vtkRadiosityRelightMapper
+    given the solver's output), the frames are relit on the GPU instead."""
 
-    def __init__(self, camera, size=(640, 480)):
-        self.mapper = vtkPolyDataMapper()
-        self.mapper.SetScalarModeToUsePointData()
-        self.mapper.SetColorModeToDirectScalars()
+    def __init__(self, camera, size=(640, 480), mapper=None):
+        self.mapper = mapper or vtkPolyDataMapper()
+        if mapper is None:
+            self.mapper.SetScalarModeToUsePointData()
+            self.mapper.SetColorModeToDirectScalars()
         actor = vtkActor()
         actor.SetMapper(self.mapper)
         actor.GetProperty().SetAmbient(1.0)
@@ -222,9 +224,11 @@ class FrameRenderer:
         self.grab.SetInput(self.window)
         self.grab.ReadFrontBufferOff()
 
-    def render(self, data):
-        """Renders `data` and returns the frame as vtkImageData."""
-        self.mapper.SetInputData(data)
+    def render(self, data=None):
+        """Renders `data` (or the mapper's input as it is) and returns the frame as
+        vtkImageData."""
+        if data is not None:
+            self.mapper.SetInputData(data)
         self.renderer.ResetCameraClippingRange()
         self.window.Render()
         self.grab.Modified()

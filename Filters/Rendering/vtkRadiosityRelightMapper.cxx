@@ -1,0 +1,366 @@
+#include "vtkRadiosityRelightMapper.h"
+
+#include "LightRig.h"
+
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkStringArray.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkRadiosityRelightMapper);
+
+struct vtkRadiosityRelightMapper::Internals
+{
+  radiosity::LightRig Rig;
+  double Time = 0;
+  double Exposure = 1;
+  std::vector<std::string> Names;       ///< of the data uploaded
+  std::vector<radiosity::Vec3> Defaults; ///< their default colours
+  vtkNew<vtkOpenGLBufferObject> Buffer;
+  vtkNew<vtkTextureObject> Texture;
+  vtkPolyData* UploadedData = nullptr;
+  vtkMTimeType UploadedTime = 0;
+  int Uploads = 0;
+  int ShaderLights = -1; ///< the k the current shader was built for
+  std::string Problem;
+  std::string Reported; ///< the problem last reported, so each is said once
+};
+
+namespace
+{
+
+/// GLSL added before the vertex shader's main(): the solutions and the light uniforms.
+std::string VertexDeclarations(int k)
+{
+  return "uniform samplerBuffer relightSolutions;\nuniform vec3 relightWeights[" + std::to_string(std::max(k, 1)) +
+    "];\nuniform float relightExposure;\nout vec3 relightColor;\n";
+}
+
+/// GLSL added at the end of the vertex shader's main(): sum, exposure, clamp, sRGB.
+std::string VertexColour(int k)
+{
+  return "  vec3 relightSum = vec3(0.0);\n"
+         "  for (int i = 0; i < " + std::to_string(k) + "; ++i)\n"
+         "  {\n"
+         "    int t = 3 * (gl_VertexID * " + std::to_string(k) + " + i);\n"
+         "    relightSum += relightWeights[i] * vec3(texelFetch(relightSolutions, t).r,\n"
+         "      texelFetch(relightSolutions, t + 1).r, texelFetch(relightSolutions, t + 2).r);\n"
+         "  }\n"
+         "  vec3 relightValue = clamp(relightSum * relightExposure, 0.0, 1.0);\n"
+         "  relightColor = mix(relightValue * 12.92, 1.055 * pow(relightValue, vec3(1.0 / 2.4)) - 0.055,\n"
+         "    step(0.0031308, relightValue));\n";
+}
+
+/// Inserts `declarations` before main() and `body` before main()'s closing brace.
+void Extend(vtkShader* shader, const std::string& declarations, const std::string& body)
+{
+  std::string source = shader->GetSource();
+  const size_t main = source.find("void main()");
+  const size_t end = source.rfind('}');
+  if (main == std::string::npos || end == std::string::npos || end < main)
+  {
+    return;
+  }
+  source.insert(end, body);
+  source.insert(main, declarations);
+  shader->SetSource(source);
+}
+
+std::vector<std::string> LightNames(vtkPolyData* data)
+{
+  std::vector<std::string> names;
+  if (auto* given = vtkStringArray::SafeDownCast(data->GetFieldData()->GetAbstractArray("LightNames")))
+  {
+    for (vtkIdType i = 0; i < given->GetNumberOfValues(); ++i)
+    {
+      names.push_back(given->GetValue(i));
+    }
+  }
+  return names;
+}
+
+} // namespace
+
+vtkRadiosityRelightMapper::vtkRadiosityRelightMapper()
+  : Internal(new Internals)
+{
+  this->ScalarVisibilityOff(); // the colour comes from the shader
+}
+
+vtkRadiosityRelightMapper::~vtkRadiosityRelightMapper() = default;
+
+void vtkRadiosityRelightMapper::SetLightColor(int light, double r, double g, double b)
+{
+  radiosity::LightSetting& s = this->Internal->Rig.ByIndex[light];
+  s.HasColor = true;
+  s.Color = { r, g, b };
+}
+
+void vtkRadiosityRelightMapper::SetLightIntensity(int light, double intensity)
+{
+  radiosity::LightSetting& s = this->Internal->Rig.ByIndex[light];
+  s.HasIntensity = true;
+  s.Intensity = intensity;
+}
+
+void vtkRadiosityRelightMapper::SetLightEnabled(int light, bool enabled)
+{
+  radiosity::LightSetting& s = this->Internal->Rig.ByIndex[light];
+  s.HasEnabled = true;
+  s.Enabled = enabled;
+}
+
+void vtkRadiosityRelightMapper::SetLightSetting(
+  const char* name, double r, double g, double b, double intensity, int enabled)
+{
+  if (!name)
+  {
+    return;
+  }
+  radiosity::LightSetting& s = this->Internal->Rig.ByName[name];
+  s.HasColor = !(std::isnan(r) || std::isnan(g) || std::isnan(b));
+  s.HasIntensity = !std::isnan(intensity);
+  s.HasEnabled = true;
+  s.Color = { r, g, b };
+  s.Intensity = intensity;
+  s.Enabled = enabled != 0;
+}
+
+void vtkRadiosityRelightMapper::ClearLightSettings()
+{
+  this->Internal->Rig.ByName.clear();
+}
+
+void vtkRadiosityRelightMapper::ResetLights()
+{
+  this->Internal->Rig.ByName.clear();
+  this->Internal->Rig.ByIndex.clear();
+}
+
+void vtkRadiosityRelightMapper::AddScheduleEntry(
+  double time, const char* light, double r, double g, double b, double intensity, int enabled)
+{
+  if (light)
+  {
+    this->Internal->Rig.Schedule.push_back({ time, light, { r, g, b }, intensity, enabled != 0 });
+  }
+}
+
+void vtkRadiosityRelightMapper::ClearSchedule()
+{
+  this->Internal->Rig.Schedule.clear();
+}
+
+void vtkRadiosityRelightMapper::SetTime(double time)
+{
+  this->Internal->Time = time;
+}
+
+double vtkRadiosityRelightMapper::GetTime() const
+{
+  return this->Internal->Time;
+}
+
+void vtkRadiosityRelightMapper::SetExposure(double exposure)
+{
+  this->Internal->Exposure = exposure;
+}
+
+double vtkRadiosityRelightMapper::GetExposure() const
+{
+  return this->Internal->Exposure;
+}
+
+int vtkRadiosityRelightMapper::GetNumberOfLights() const
+{
+  return static_cast<int>(this->Internal->Names.size());
+}
+
+int vtkRadiosityRelightMapper::GetUploadCount() const
+{
+  return this->Internal->Uploads;
+}
+
+const char* vtkRadiosityRelightMapper::GetLastProblem() const
+{
+  return this->Internal->Problem.c_str();
+}
+
+void vtkRadiosityRelightMapper::UploadIfNeeded(vtkRenderer* ren)
+{
+  Internals& in = *this->Internal;
+  vtkPolyData* data = this->CurrentInput;
+  if (!data || (data == in.UploadedData && data->GetMTime() <= in.UploadedTime))
+  {
+    return;
+  }
+  in.UploadedData = data;
+  in.UploadedTime = data->GetMTime();
+  in.Names = LightNames(data);
+  in.Defaults.assign(in.Names.size(), { 1, 1, 1 });
+  in.Problem.clear();
+  const size_t points = static_cast<size_t>(data->GetNumberOfPoints());
+  const size_t k = in.Names.size();
+  std::vector<vtkDataArray*> arrays;
+  for (const std::string& name : in.Names)
+  {
+    vtkDataArray* array = data->GetPointData()->GetArray(("Radiosity_" + name).c_str());
+    if (!array || array->GetNumberOfComponents() != 3)
+    {
+      in.Problem = "the input has no 3-component point array 'Radiosity_" + name + "'";
+    }
+    arrays.push_back(array);
+  }
+  if (k == 0)
+  {
+    in.Problem = "the input has no LightNames (the light-tagged solver's output has them)";
+  }
+  GLint most = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &most);
+  if (in.Problem.empty() && static_cast<double>(points) * k * 3 > most)
+  {
+    in.Problem = std::to_string(points) + " points x " + std::to_string(k) + " lights need " +
+      std::to_string(points * k * 3) + " texels, more than this OpenGL's texture buffers hold (" +
+      std::to_string(most) + "); relight with vtkRadiosityRelight instead";
+  }
+  if (!in.Problem.empty())
+  {
+    in.Names.clear();
+    return;
+  }
+  if (vtkDataArray* defaults = data->GetFieldData()->GetArray("LightDefaultColors"))
+  {
+    for (size_t l = 0; l < k && static_cast<vtkIdType>(l) < defaults->GetNumberOfTuples(); ++l)
+    {
+      in.Defaults[l] = { defaults->GetComponent(l, 0), defaults->GetComponent(l, 1), defaults->GetComponent(l, 2) };
+    }
+  }
+  // Point-major: the k solutions of a vertex lie together, for one texel run per vertex.
+  std::vector<float> values(points * k * 3);
+  for (size_t l = 0; l < k; ++l)
+  {
+    for (size_t p = 0; p < points; ++p)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        values[(p * k + l) * 3 + c] = static_cast<float>(arrays[l]->GetComponent(static_cast<vtkIdType>(p), c));
+      }
+    }
+  }
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  in.Texture->SetContext(window);
+  in.Buffer->Upload(values, vtkOpenGLBufferObject::TextureBuffer);
+  in.Texture->CreateTextureBuffer(static_cast<unsigned int>(values.size()), 1, VTK_FLOAT, in.Buffer);
+  ++in.Uploads;
+}
+
+void vtkRadiosityRelightMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
+{
+  this->Superclass::RenderPieceStart(ren, act);
+  this->UploadIfNeeded(ren);
+  if (!this->Internal->Problem.empty() && this->Internal->Problem != this->Internal->Reported)
+  {
+    vtkErrorMacro(<< "Cannot relight: " << this->Internal->Problem << ".");
+    this->Internal->Reported = this->Internal->Problem;
+  }
+}
+
+void vtkRadiosityRelightMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
+{
+  if (this->Internal->Texture->GetHandle())
+  {
+    this->Internal->Texture->Deactivate();
+  }
+  this->Superclass::RenderPieceFinish(ren, act);
+}
+
+bool vtkRadiosityRelightMapper::GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+{
+  return this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act) ||
+    this->Internal->ShaderLights != this->GetNumberOfLights();
+}
+
+void vtkRadiosityRelightMapper::ReplaceShaderValues(
+  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
+{
+  this->Superclass::ReplaceShaderValues(shaders, ren, act);
+  const int k = this->GetNumberOfLights();
+  this->Internal->ShaderLights = k;
+  if (ren->GetSelector())
+  {
+    return; // picking draws ids, not colours
+  }
+  Extend(shaders[vtkShader::Vertex], VertexDeclarations(k), VertexColour(k));
+  Extend(shaders[vtkShader::Fragment], "in vec3 relightColor;\n", "  gl_FragData[0] = vec4(relightColor, 1.0);\n");
+}
+
+void vtkRadiosityRelightMapper::SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+{
+  this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
+  Internals& in = *this->Internal;
+  vtkShaderProgram* program = cellBO.Program;
+  if (!program || !program->IsUniformUsed("relightSolutions"))
+  {
+    return;
+  }
+  std::vector<radiosity::LightSetting> effective;
+  std::vector<std::string> warnings;
+  const std::string invalid = in.Rig.Resolve(in.Names, in.Defaults, in.Time, effective, warnings);
+  if (!invalid.empty())
+  {
+    in.Problem = invalid;
+    effective.assign(in.Names.size(), radiosity::LightSetting());
+    for (radiosity::LightSetting& s : effective)
+    {
+      s.Enabled = false;
+    }
+    if (in.Reported != invalid)
+    {
+      vtkErrorMacro(<< "Cannot relight: " << invalid << ".");
+      in.Reported = invalid;
+    }
+  }
+  std::vector<float> weights;
+  for (double w : radiosity::LightWeights(effective, 1.0))
+  {
+    weights.push_back(static_cast<float>(w));
+  }
+  weights.resize(std::max<size_t>(weights.size(), 3), 0.0f);
+  if (in.Texture->GetHandle())
+  {
+    in.Texture->Activate();
+    program->SetUniformi("relightSolutions", in.Texture->GetTextureUnit());
+  }
+  program->SetUniform3fv("relightWeights", static_cast<int>(weights.size() / 3), weights.data());
+  program->SetUniformf("relightExposure", static_cast<float>(in.Exposure));
+}
+
+void vtkRadiosityRelightMapper::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->Internal->Texture->ReleaseGraphicsResources(window);
+  this->Internal->Buffer->ReleaseGraphicsResources();
+  this->Internal->UploadedData = nullptr;
+  this->Internal->ShaderLights = -1;
+  this->Superclass::ReleaseGraphicsResources(window);
+}
+
+void vtkRadiosityRelightMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Exposure: " << this->Internal->Exposure << "\n";
+  os << indent << "Lights: " << this->GetNumberOfLights() << ", uploads: " << this->Internal->Uploads << "\n";
+}

@@ -1,0 +1,98 @@
+/**
+ * @class   vtkRadiosityRelightMapper
+ * @brief   renders the light-tagged solutions relit on the GPU: a light change costs a frame
+ *
+ * Give it the solver's output (point arrays `Radiosity_<name>`, field arrays LightNames
+ * and LightDefaultColors). The k solutions are uploaded once, as 32-bit floats in a
+ * texture buffer (any k, no quantisation); the vertex shader sums them with each light's
+ * colour x intensity (zero when off), then applies Exposure, the clamp and the sRGB curve
+ * of vtkRadiosityRelight's DisplayColors, and the surface is drawn unlit with that colour.
+ *
+ * Light settings have the relight filter's meaning and precedence (defaults, by name, the
+ * schedule at Time, by index), but changing them does not modify the mapper: no pipeline
+ * execution, no upload, only the uniforms of the next Render(). New input data is
+ * uploaded again on the next render.
+ *
+ * @sa vtkRadiosityRelight vtkLightTaggedRadiosity
+ */
+#ifndef vtkRadiosityRelightMapper_h
+#define vtkRadiosityRelightMapper_h
+
+#include "vtkOpenGLPolyDataMapper.h"
+#include "vtkRadiosityRenderingModule.h" // for export macro
+
+#include <memory> // for the internals
+
+class VTKRADIOSITYRENDERING_EXPORT vtkRadiosityRelightMapper : public vtkOpenGLPolyDataMapper
+{
+public:
+  static vtkRadiosityRelightMapper* New();
+  vtkTypeMacro(vtkRadiosityRelightMapper, vtkOpenGLPolyDataMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// Per-light settings by index (0..k-1, in LightNames order): take effect at the next
+  /// Render(), without modifying the mapper.
+  void SetLightColor(int light, double r, double g, double b);
+  void SetLightIntensity(int light, double intensity);
+  void SetLightEnabled(int light, bool enabled);
+  ///@}
+
+  ///@{
+  /// Per-light settings by name (NaN keeps a default), as vtkRadiosityRelight's.
+  void SetLightSetting(const char* name, double r, double g, double b, double intensity, int enabled);
+  void ClearLightSettings();
+  ///@}
+
+  /// Forget every setting made by index or by name (the schedule stays).
+  void ResetLights();
+
+  ///@{
+  /// Keyframes (time, light by name or index, r, g, b, intensity, enabled) evaluated at Time.
+  void AddScheduleEntry(double time, const char* light, double r, double g, double b, double intensity, int enabled);
+  void ClearSchedule();
+  void SetTime(double time);
+  double GetTime() const;
+  ///@}
+
+  ///@{
+  /// Multiplier before the clamp to display colours, as the relight filter's. Default 1.
+  void SetExposure(double exposure);
+  double GetExposure() const;
+  ///@}
+
+  /// The number of lights of the data last uploaded (0 before the first render).
+  int GetNumberOfLights() const;
+
+  /// How many times the solutions were uploaded: stays put while only lights change.
+  int GetUploadCount() const;
+
+  /// Why the last render could not relight (empty when it did): missing arrays, an
+  /// invalid light setting, too much data for a texture buffer. The surface is then drawn
+  /// black, and the reason is also reported once as an error.
+  const char* GetLastProblem() const;
+
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
+protected:
+  vtkRadiosityRelightMapper();
+  ~vtkRadiosityRelightMapper() override;
+  void RenderPieceStart(vtkRenderer* ren, vtkActor* act) override;
+  void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override;
+  bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  void ReplaceShaderValues(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+
+private:
+  vtkRadiosityRelightMapper(const vtkRadiosityRelightMapper&) = delete;
+  void operator=(const vtkRadiosityRelightMapper&) = delete;
+
+  /// Uploads the solutions when the input changed since the last upload.
+  void UploadIfNeeded(vtkRenderer* ren);
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+};
+
+#endif

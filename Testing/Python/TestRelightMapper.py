@@ -1,0 +1,127 @@
+"""Relighting on the GPU (issue 12): vtkRadiosityRelightMapper against the CPU path
+(relight filter + DisplayColors) for 3 and 40 lights, light changes without uploads or
+pipeline runs, and 64 lights with intensities 1e-4 and 1e4 (no quantisation)."""
+
+import os
+
+import numpy as np
+from vtkmodules.util import numpy_support
+from vtkmodules.vtkCommonCore import vtkLogger
+
+import relight
+from relight import FrameRenderer, read_polydata
+from testlib import check, finish
+
+vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_OFF)
+DATA = os.path.join(os.environ.get("RELIGHT_ROOT", "."), "Data")
+ROOM_CAMERA = ((2.0, 1.5, 0.05), (2.0, 0.9, 4.0), (0.0, 1.0, 0.0), 80.0)
+SIZE = (200, 150)
+
+
+def pixels(image):
+    return numpy_support.vtk_to_numpy(image.GetPointData().GetScalars()).astype(float)
+
+
+def both_paths(solved, settings, camera, exposure):
+    """The CPU and GPU pictures for `settings` = {index: (colour, intensity, enabled)}."""
+    filter_ = relight.vtkRadiosityRelight()
+    filter_.SetInputData(solved)
+    mapper = relight.vtkRadiosityRelightMapper()
+    mapper.SetInputData(solved)
+    for target in (filter_, mapper):
+        for i, (colour, intensity, enabled) in settings.items():
+            target.SetLightColor(i, *colour)
+            target.SetLightIntensity(i, intensity)
+            target.SetLightEnabled(i, enabled)
+        target.SetExposure(exposure)
+    filter_.Update()
+    cpu = FrameRenderer(camera, SIZE)
+    gpu = FrameRenderer(camera, SIZE, mapper)
+    return pixels(cpu.render(filter_.GetOutput())), pixels(gpu.render()), mapper, gpu
+
+
+# --- 3 lights: the same picture, and a light change is a frame with no upload ------------------
+solved = relight.solve(read_polydata(os.path.join(DATA, "paper_3lights.vtp")), 1.5, 0.375,
+                       ConvergenceThreshold=1e-3).GetOutput()
+settings = {0: ((1.0, 0.8, 0.6), 3.0, True), 1: ((0.3, 0.6, 1.0), 0.5, True), 2: ((1.0, 0.3, 0.1), 2.0, True)}
+cpu, gpu, mapper, view = both_paths(solved, settings, ROOM_CAMERA, 2.0)
+difference = np.abs(cpu - gpu)
+check(difference.mean() < 1.0 and not mapper.GetLastProblem(),
+      f"3 lights: GPU = CPU within {difference.mean():.3f} / 255 mean (max {difference.max():.0f})")
+time_before = mapper.GetMTime()
+mapper.SetLightEnabled(0, False)
+changed = pixels(view.render())
+check(mapper.GetUploadCount() == 1 and mapper.GetMTime() == time_before and np.abs(changed - gpu).mean() > 2,
+      f"a light change re-renders without upload or modification (uploads {mapper.GetUploadCount()}, "
+      f"mean change {np.abs(changed - gpu).mean():.1f})")
+mapper.SetLightIntensity(0, -1.0)
+mapper.SetLightEnabled(0, True)
+view.render()
+check("light 'WarmWhite' has intensity -1" in mapper.GetLastProblem(), f"a bad setting is reported: {mapper.GetLastProblem()}")
+
+# --- a room with 40 lamps (a 5 x 8 grid in the ceiling) and 64 lamps (8 x 8) ----------------------
+def lamp_room(columns, rows, size=8.0, height=3.0):
+    """A closed room with a grid of small downward ceiling lamps, one light each."""
+    s, h = size, height
+    walls = [[(0, 0, 0), (s, 0, 0), (s, s, 0), (0, s, 0)], [(0, 0, h), (0, s, h), (s, s, h), (s, 0, h)],
+             [(0, 0, 0), (0, 0, h), (s, 0, h), (s, 0, 0)], [(0, s, 0), (s, s, 0), (s, s, h), (0, s, h)],
+             [(0, 0, 0), (0, s, 0), (0, s, h), (0, 0, h)], [(s, 0, 0), (s, 0, h), (s, s, h), (s, s, 0)]]
+    lamps = []
+    for r in range(rows):
+        for c in range(columns):
+            x, y, half = (c + 0.5) * s / columns, (r + 0.5) * s / rows, 0.1
+            lamps.append([(x - half, y - half, h - 0.01), (x - half, y + half, h - 0.01),
+                          (x + half, y + half, h - 0.01), (x + half, y - half, h - 0.01)])
+    k = len(lamps)
+    scene = relight.make_scene(walls + lamps, [(0.5, 0.5, 0.5)] * 6 + [(0.8, 0.8, 0.8)] * k,
+                               [-1] * 6 + list(range(k)), [f"L{i}" for i in range(k)])
+    return relight.solve(scene, 2.0, 0.25, ConvergenceThreshold=1e-3).GetOutput()
+
+
+DOWN = ((4.0, 4.0, 2.9), (4.0, 4.0, 0.0), (0.0, 1.0, 0.0), 110.0)  # under the lamps, looking at the floor
+forty = lamp_room(8, 5)
+rng = np.random.default_rng(7)
+settings = {i: (tuple(rng.uniform(0.2, 1.0, 3)), float(rng.uniform(0.5, 4.0)), bool(rng.random() > 0.2)) for i in range(40)}
+cpu, gpu, mapper, _ = both_paths(forty, settings, DOWN, 3.0)
+difference = np.abs(cpu - gpu)
+check(mapper.GetNumberOfLights() == 40 and difference.mean() < 1.0,
+      f"40 lights: GPU = CPU within {difference.mean():.3f} / 255 mean (max {difference.max():.0f})")
+
+# Two open-topped boxes side by side, 32 lamps hanging in each: no light passes between
+# them, so the 1e-4 lamp in one box is all that lights it while the 1e4 one floods the other.
+def twin_boxes():
+    polygons, ids = [], []
+    for box, x0 in enumerate((0.0, 4.5)):
+        x1, s, h = x0 + 4.0, 4.0, 2.0
+        polygons += [[(x0, 0, 0), (x1, 0, 0), (x1, s, 0), (x0, s, 0)], [(x0, 0, 0), (x0, 0, h), (x1, 0, h), (x1, 0, 0)],
+                     [(x0, s, 0), (x1, s, 0), (x1, s, h), (x0, s, h)], [(x0, 0, 0), (x0, s, 0), (x0, s, h), (x0, 0, h)],
+                     [(x1, 0, 0), (x1, 0, h), (x1, s, h), (x1, s, 0)]]
+        ids += [-1] * 5
+        for r in range(8):
+            for c in range(4):
+                x, y, half = x0 + (c + 0.5), (r + 0.5) * 0.5, 0.08
+                polygons.append([(x - half, y - half, 1.5), (x - half, y + half, 1.5),
+                                 (x + half, y + half, 1.5), (x + half, y - half, 1.5)])
+                ids.append(32 * box + 4 * r + c)
+    scene = relight.make_scene(polygons, [(0.5, 0.5, 0.5)] * len(polygons), ids, [f"L{i}" for i in range(64)])
+    return relight.solve(scene, 2.0, 0.25, ConvergenceThreshold=1e-3).GetOutput()
+
+
+sixty_four = twin_boxes()
+weak, strong = 63, 0
+only = {i: ((1.0, 1.0, 1.0), 0.0, False) for i in range(64)}
+only[strong] = ((1.0, 1.0, 1.0), 1e4, True)
+only[weak] = ((1.0, 1.0, 1.0), 1e-4, True)
+weak_floor = numpy_support.vtk_to_numpy(sixty_four.GetPointData().GetArray("Radiosity_L63"))[:, 0]
+exposure = 0.5 / (1e-4 * np.percentile(weak_floor[weak_floor > 0], 90))  # the weak box's floor mid-grey
+ABOVE = ((4.25, 2.0, 9.0), (4.25, 2.0, 0.0), (0.0, 1.0, 0.0), 60.0)
+cpu, gpu, mapper, view = both_paths(sixty_four, only, ABOVE, exposure)
+mapper.SetLightEnabled(weak, False)
+without = pixels(view.render())
+change = np.abs(gpu - without).sum(axis=1)
+check(mapper.GetNumberOfLights() == 64 and np.abs(cpu - gpu).mean() < 1.0,
+      f"64 lights, 1e-4 next to 1e4: GPU = CPU within {np.abs(cpu - gpu).mean():.3f} / 255 "
+      f"(strong box saturated: {100 * (gpu.min(axis=1) == 255).mean():.0f} % of the picture white)")
+check((change > 30).mean() > 0.05, f"the 1e-4 light still changes {100 * (change > 30).mean():.1f} % of the picture "
+      f"(its box) when switched off")
+finish("TestRelightMapper")
