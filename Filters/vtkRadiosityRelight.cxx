@@ -406,25 +406,19 @@ int vtkRadiosityRelight::RequestInformation(
 
 void vtkRadiosityRelight::SetLightColor(int light, double r, double g, double b)
 {
-  radiosity::LightSetting& s = this->Internal->Rig.ByIndex[light];
-  s.HasColor = true;
-  s.Color = { r, g, b };
+  this->Internal->Rig.SetColor(light, { r, g, b });
   this->Modified();
 }
 
 void vtkRadiosityRelight::SetLightIntensity(int light, double intensity)
 {
-  radiosity::LightSetting& s = this->Internal->Rig.ByIndex[light];
-  s.HasIntensity = true;
-  s.Intensity = intensity;
+  this->Internal->Rig.SetIntensity(light, intensity);
   this->Modified();
 }
 
 void vtkRadiosityRelight::SetLightEnabled(int light, bool enabled)
 {
-  radiosity::LightSetting& s = this->Internal->Rig.ByIndex[light];
-  s.HasEnabled = true;
-  s.Enabled = enabled;
+  this->Internal->Rig.SetEnabled(light, enabled);
   this->Modified();
 }
 
@@ -435,15 +429,7 @@ void vtkRadiosityRelight::SetLightSetting(
   {
     return;
   }
-  // NaN means "keep the default": a panel that changed only the intensity must not
-  // replace the light's own colour with a guess.
-  radiosity::LightSetting& s = this->Internal->Rig.ByName[name];
-  s.HasColor = !(std::isnan(r) || std::isnan(g) || std::isnan(b));
-  s.HasIntensity = !std::isnan(intensity);
-  s.HasEnabled = true;
-  s.Color = { r, g, b };
-  s.Intensity = intensity;
-  s.Enabled = enabled != 0;
+  this->Internal->Rig.SetByName(name, { r, g, b }, intensity, enabled != 0);
   this->Modified();
 }
 

@@ -77,6 +77,38 @@ void LightSetting::ApplyTo(LightSetting& effective) const
   }
 }
 
+void LightRig::SetColor(int light, const Vec3& colour)
+{
+  LightSetting& s = this->ByIndex[light];
+  s.HasColor = true;
+  s.Color = colour;
+}
+
+void LightRig::SetIntensity(int light, double intensity)
+{
+  LightSetting& s = this->ByIndex[light];
+  s.HasIntensity = true;
+  s.Intensity = intensity;
+}
+
+void LightRig::SetEnabled(int light, bool enabled)
+{
+  LightSetting& s = this->ByIndex[light];
+  s.HasEnabled = true;
+  s.Enabled = enabled;
+}
+
+void LightRig::SetByName(const std::string& name, const Vec3& colour, double intensity, bool enabled)
+{
+  LightSetting& s = this->ByName[name];
+  s.HasColor = !(std::isnan(colour.x) || std::isnan(colour.y) || std::isnan(colour.z));
+  s.HasIntensity = !std::isnan(intensity);
+  s.HasEnabled = true;
+  s.Color = colour;
+  s.Intensity = intensity;
+  s.Enabled = enabled;
+}
+
 bool ParseKeyframe(const std::vector<std::string>& cells, LightKeyframe& key)
 {
   key = LightKeyframe();

@@ -53,6 +53,17 @@ struct LightRig
   std::vector<LightKeyframe> Schedule; ///< keyframes given one by one
   std::vector<LightKeyframe> FileSchedule; ///< keyframes read from a file
 
+  ///@{
+  /// Settings by index, one part at a time.
+  void SetColor(int light, const Vec3& colour);
+  void SetIntensity(int light, double intensity);
+  void SetEnabled(int light, bool enabled);
+  ///@}
+
+  /// A whole setting by name; a NaN colour component or intensity keeps that part at its
+  /// default (a panel that changed only the intensity must not replace the colour).
+  void SetByName(const std::string& name, const Vec3& colour, double intensity, bool enabled);
+
   /// The schedule's setting for light `name` (index `index`) at `time`: colour and
   /// intensity interpolated linearly between keyframes, on/off held from the one before.
   /// False if no keyframe names the light.

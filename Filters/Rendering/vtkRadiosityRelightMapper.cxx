@@ -105,23 +105,17 @@ vtkRadiosityRelightMapper::~vtkRadiosityRelightMapper() = default;
 
 void vtkRadiosityRelightMapper::SetLightColor(int light, double r, double g, double b)
 {
-  radiosity::LightSetting& s = this->Internal->Rig.ByIndex[light];
-  s.HasColor = true;
-  s.Color = { r, g, b };
+  this->Internal->Rig.SetColor(light, { r, g, b });
 }
 
 void vtkRadiosityRelightMapper::SetLightIntensity(int light, double intensity)
 {
-  radiosity::LightSetting& s = this->Internal->Rig.ByIndex[light];
-  s.HasIntensity = true;
-  s.Intensity = intensity;
+  this->Internal->Rig.SetIntensity(light, intensity);
 }
 
 void vtkRadiosityRelightMapper::SetLightEnabled(int light, bool enabled)
 {
-  radiosity::LightSetting& s = this->Internal->Rig.ByIndex[light];
-  s.HasEnabled = true;
-  s.Enabled = enabled;
+  this->Internal->Rig.SetEnabled(light, enabled);
 }
 
 void vtkRadiosityRelightMapper::SetLightSetting(
@@ -131,13 +125,7 @@ void vtkRadiosityRelightMapper::SetLightSetting(
   {
     return;
   }
-  radiosity::LightSetting& s = this->Internal->Rig.ByName[name];
-  s.HasColor = !(std::isnan(r) || std::isnan(g) || std::isnan(b));
-  s.HasIntensity = !std::isnan(intensity);
-  s.HasEnabled = true;
-  s.Color = { r, g, b };
-  s.Intensity = intensity;
-  s.Enabled = enabled != 0;
+  this->Internal->Rig.SetByName(name, { r, g, b }, intensity, enabled != 0);
 }
 
 void vtkRadiosityRelightMapper::ClearLightSettings()

@@ -2,36 +2,16 @@
 // vtkRadiosityRelightMapper, compared with the baseline of the CPU path (relight filter +
 // DisplayColors, TestRelitCornellBox). Then a light change without touching the
 // pipeline: the mapper must not upload again, and the picture must change.
-#include "vtkActor.h"
-#include "vtkCamera.h"
-#include "vtkLightTaggedRadiosity.h"
-#include "vtkNew.h"
-#include "vtkProperty.h"
-#include "vtkRadiosityMesher.h"
+#include "CornellScene.h"
+
 #include "vtkRadiosityRelightMapper.h"
 #include "vtkRegressionTestImage.h"
-#include "vtkRenderWindow.h"
-#include "vtkRenderer.h"
-#include "vtkTestUtilities.h"
-#include "vtkXMLPolyDataReader.h"
 
 #include <iostream>
 
 int TestRelightMapper(int argc, char* argv[])
 {
-  char* file = vtkTestUtilities::ExpandDataFileName(argc, argv, "cornell_box.vtp");
-  vtkNew<vtkXMLPolyDataReader> reader;
-  reader->SetFileName(file);
-  delete[] file;
-
-  vtkNew<vtkRadiosityMesher> mesher;
-  mesher->SetInputConnection(reader->GetOutputPort());
-  mesher->SetPatchSize(100.0); // millimetres
-  mesher->SetElementSize(25.0);
-  vtkNew<vtkLightTaggedRadiosity> solver;
-  solver->SetInputConnection(mesher->GetOutputPort());
-  solver->SetConvergenceThreshold(2e-3);
-  solver->Update();
+  vtkSmartPointer<vtkLightTaggedRadiosity> solver = SolvedCornellBox(argc, argv);
   if (solver->GetOutput()->GetNumberOfCells() == 0)
   {
     return EXIT_FAILURE;
@@ -40,24 +20,7 @@ int TestRelightMapper(int argc, char* argv[])
   mapper->SetInputConnection(solver->GetOutputPort());
   mapper->SetLightColor(0, 1.0, 0.85, 0.6);
   mapper->SetLightIntensity(0, 12.0);
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetAmbient(1.0);
-  actor->GetProperty()->SetDiffuse(0.0);
-  vtkNew<vtkRenderer> renderer;
-  renderer->AddActor(actor);
-  vtkNew<vtkRenderWindow> window;
-  window->AddRenderer(renderer);
-  window->SetSize(300, 300);
-  // The Cornell data's camera: 35 mm lens on 25 mm film.
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetPosition(278, 273, -800);
-  camera->SetFocalPoint(278, 273, 0);
-  camera->SetViewUp(0, 1, 0);
-  camera->SetViewAngle(39.3);
-  renderer->ResetCameraClippingRange();
-  window->Render();
-
+  vtkSmartPointer<vtkRenderWindow> window = CornellView(mapper);
   const int result = vtkRegressionTestImage(window);
   if (mapper->GetUploadCount() != 1 || *mapper->GetLastProblem())
   {
