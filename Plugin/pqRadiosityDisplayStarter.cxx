@@ -101,6 +101,7 @@ void pqRadiosityDisplayStarter::Configure(pqDataRepresentation* representation)
   }
   else if (source == QLatin1String("LightTaggedRadiosity") && port == 0)
   {
+    ShowRelitSurface(representation);
     StyleRadiosityColorMap(representation);
     QObject::connect(representation, &pqDataRepresentation::colorArrayNameModified, representation,
       [representation]() { StyleRadiosityColorMap(representation); });
@@ -120,6 +121,18 @@ void pqRadiosityDisplayStarter::ShowRelitColors(pqDataRepresentation* representa
   }
   proxy->UpdateVTKObjects();
   representation->renderViewEventually();
+}
+
+void pqRadiosityDisplayStarter::ShowRelitSurface(pqDataRepresentation* representation)
+{
+  // The solutions relit on the GPU: lights change in the display panel without Apply.
+  vtkSMProxy* proxy = representation->getProxy();
+  if (!proxy->GetProperty("RelitLightSettings"))
+  {
+    return; // a view without the Relit Surface type (a spreadsheet, say)
+  }
+  vtkSMPropertyHelper(proxy, "Representation").Set("Relit Surface");
+  proxy->UpdateVTKObjects();
 }
 
 void pqRadiosityDisplayStarter::ShowConvergence(pqDataRepresentation* representation)

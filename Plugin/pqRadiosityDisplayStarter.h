@@ -29,6 +29,7 @@ private:
   void onRepresentationAdded(pqRepresentation* representation);
   void Configure(pqDataRepresentation* representation);
   static void ShowRelitColors(pqDataRepresentation* representation);
+  static void ShowRelitSurface(pqDataRepresentation* representation);
   static void ShowConvergence(pqDataRepresentation* representation);
   static void StyleRadiosityColorMap(pqDataRepresentation* representation);
 };

@@ -33,7 +33,14 @@ pqRadiosityLightsWidget::pqRadiosityLightsWidget(vtkSMProxy* proxy, vtkSMPropert
   layout->addWidget(new QLabel("Lights (after the first Apply):", this));
   this->Table->setHorizontalHeaderLabels({ "Light", "Colour", "Intensity", "On" });
   this->Table->verticalHeader()->hide();
+  // The table fits the panel's width: names take what is left, and nothing hides past a
+  // horizontal scroll bar (the panel is often narrower than the table would like).
   this->Table->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+  for (int column = 1; column < 4; ++column)
+  {
+    this->Table->horizontalHeader()->setSectionResizeMode(column, QHeaderView::ResizeToContents);
+  }
+  this->Table->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
   this->Table->setSelectionMode(QAbstractItemView::NoSelection);
   layout->addWidget(this->Table);
   // The names are known once the filter has run: rebuild after every update of the data.
@@ -47,20 +54,31 @@ pqRadiosityLightsWidget::~pqRadiosityLightsWidget()
   this->Connection->Delete();
 }
 
+void pqRadiosityLightsWidget::apply()
+{
+  this->Superclass::apply();
+  this->proxy()->UpdateVTKObjects();
+}
+
 void pqRadiosityLightsWidget::rebuild()
 {
   vtkSMProxy* proxy = this->proxy();
   proxy->UpdatePropertyInformation();
-  vtkSMPropertyHelper names(proxy, "LightNamesInfo");
-  // Values in effect (defaults included), then the user's own rows of the property, both
-  // as (name, r, g, b, intensity, enabled).
-  vtkSMPropertyHelper effective(proxy, "LightSettingsInfo");
+  // Values in effect (defaults included; the property's information property, on the
+  // relight filter and on the Relit Surface representation alike), then the user's own
+  // rows of the property, both as (name, r, g, b, intensity, enabled).
+  vtkSMProperty* info = this->Property->GetInformationProperty();
+  if (!info)
+  {
+    return;
+  }
+  vtkSMPropertyHelper effective(info);
   vtkSMPropertyHelper values(this->Property);
   QVector<Light> lights;
-  for (unsigned int n = 0; n < names.GetNumberOfElements(); ++n)
+  for (unsigned int n = 0; n + 5 < effective.GetNumberOfElements(); n += 6)
   {
     Light light;
-    light.Name = names.GetAsString(n);
+    light.Name = effective.GetAsString(n);
     for (unsigned int i = 0; i + 5 < effective.GetNumberOfElements(); i += 6)
     {
       if (light.Name == effective.GetAsString(i))
@@ -128,6 +146,7 @@ void pqRadiosityLightsWidget::rebuild()
     this->Table->setItem(row, 0, name);
 
     auto* color = new QPushButton(this->Table);
+    color->setMaximumWidth(48);
     this->Table->setCellWidget(row, 1, color);
     QObject::connect(color, &QPushButton::clicked, this, [this, row]() {
       Light& light = this->Lights[row];
@@ -147,6 +166,7 @@ void pqRadiosityLightsWidget::rebuild()
     this->paintColorButton(row);
 
     auto* intensity = new QDoubleSpinBox(this->Table);
+    intensity->setMaximumWidth(90);
     intensity->setRange(0.0, 1e9);
     intensity->setDecimals(3);
     intensity->setValue(lights[row].Intensity);

@@ -19,6 +19,11 @@ public:
   pqRadiosityLightsWidget(vtkSMProxy* proxy, vtkSMProperty* property, QWidget* parent = nullptr);
   ~pqRadiosityLightsWidget() override;
 
+  /// Sends the rows to the VTK object. The rows are written to the property directly,
+  /// not through property links, so the links' accept alone would send nothing (and a
+  /// display panel, which applies each change at once, would show none).
+  void apply() override;
+
 private Q_SLOTS:
   /// Rows for the lights the filter found (its LightNamesInfo), values from the property.
   void rebuild();

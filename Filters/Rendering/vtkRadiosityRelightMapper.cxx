@@ -18,6 +18,7 @@
 #include "vtk_glew.h"
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -91,6 +92,27 @@ std::vector<std::string> LightNames(vtkPolyData* data)
     }
   }
   return names;
+}
+
+/// Each light's default colour: the solver's LightDefaultColors, else white.
+std::vector<radiosity::Vec3> DefaultColours(vtkPolyData* data, size_t k)
+{
+  std::vector<radiosity::Vec3> colours(k, { 1, 1, 1 });
+  vtkDataArray* defaults = data->GetFieldData()->GetArray("LightDefaultColors");
+  for (size_t l = 0; defaults && defaults->GetNumberOfComponents() == 3 && l < k &&
+       static_cast<vtkIdType>(l) < defaults->GetNumberOfTuples();
+       ++l)
+  {
+    colours[l] = { defaults->GetComponent(l, 0), defaults->GetComponent(l, 1), defaults->GetComponent(l, 2) };
+  }
+  return colours;
+}
+
+std::string Number(double value)
+{
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.9g", value);
+  return text;
 }
 
 } // namespace
@@ -230,13 +252,7 @@ void vtkRadiosityRelightMapper::UploadIfNeeded(vtkRenderer* ren)
     in.Names.clear();
     return;
   }
-  if (vtkDataArray* defaults = data->GetFieldData()->GetArray("LightDefaultColors"))
-  {
-    for (size_t l = 0; l < k && static_cast<vtkIdType>(l) < defaults->GetNumberOfTuples(); ++l)
-    {
-      in.Defaults[l] = { defaults->GetComponent(l, 0), defaults->GetComponent(l, 1), defaults->GetComponent(l, 2) };
-    }
-  }
+  in.Defaults = DefaultColours(data, k);
   // Point-major: the k solutions of a vertex lie together, for one texel run per vertex.
   std::vector<float> values(points * k * 3);
   for (size_t l = 0; l < k; ++l)
@@ -254,6 +270,34 @@ void vtkRadiosityRelightMapper::UploadIfNeeded(vtkRenderer* ren)
   in.Buffer->Upload(values, vtkOpenGLBufferObject::TextureBuffer);
   in.Texture->CreateTextureBuffer(static_cast<unsigned int>(values.size()), 1, VTK_FLOAT, in.Buffer);
   ++in.Uploads;
+}
+
+void vtkRadiosityRelightMapper::DescribeLights(vtkPolyData* data, vtkStringArray* names, vtkStringArray* settings)
+{
+  names->Initialize();
+  settings->Initialize();
+  if (!data)
+  {
+    return;
+  }
+  const std::vector<std::string> lights = LightNames(data);
+  std::vector<radiosity::LightSetting> effective;
+  std::vector<std::string> warnings;
+  if (!this->Internal->Rig.Resolve(lights, DefaultColours(data, lights.size()), this->Internal->Time, effective, warnings)
+         .empty())
+  {
+    return;
+  }
+  for (size_t l = 0; l < lights.size(); ++l)
+  {
+    const radiosity::LightSetting& s = effective[l];
+    names->InsertNextValue(lights[l]);
+    for (const std::string& item : { lights[l], Number(s.Color.x), Number(s.Color.y), Number(s.Color.z),
+           Number(s.Intensity), std::string(s.Enabled ? "1" : "0") })
+    {
+      settings->InsertNextValue(item);
+    }
+  }
 }
 
 void vtkRadiosityRelightMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)

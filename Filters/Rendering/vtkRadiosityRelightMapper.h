@@ -23,6 +23,8 @@
 
 #include <memory> // for the internals
 
+class vtkStringArray;
+
 class VTKRADIOSITYRENDERING_EXPORT vtkRadiosityRelightMapper : public vtkOpenGLPolyDataMapper
 {
 public:
@@ -60,6 +62,11 @@ public:
   void SetExposure(double exposure);
   double GetExposure() const;
   ///@}
+
+  /// The lights of `data` (the solver's output) and their settings in effect at Time:
+  /// `names` gets one name per light, `settings` six strings per light (name, r, g, b,
+  /// intensity, enabled 1/0), as vtkRadiosityRelight's LightSettingsInfo.
+  void DescribeLights(vtkPolyData* data, vtkStringArray* names, vtkStringArray* settings);
 
   /// The number of lights of the data last uploaded (0 before the first render).
   int GetNumberOfLights() const;

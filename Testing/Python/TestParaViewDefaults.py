@@ -7,7 +7,6 @@ chart with a line per light, and a Radiosity array in an HDR colour map with its
 
 import os
 import sys
-import time
 
 sys.path.insert(0, os.environ["RELIGHT_TEST_DIR"])
 import guitest  # noqa: E402
@@ -22,13 +21,6 @@ app = QApplication.instance()
 PIPELINE = ["Mark Lights", "Radiosity Mesher", "Light Tagged Radiosity", "Radiosity Relight"]
 LIGHTS = ["Amber", "CoolWhite", "WarmWhite"]
 
-
-def settle(seconds=0.3):
-    """Lets the GUI's deferred work (the plugin's display defaults) happen."""
-    end = time.time() + seconds
-    while time.time() < end:
-        app.processEvents()
-        time.sleep(0.01)
 
 
 def radiosity_menu():
@@ -45,7 +37,7 @@ def show_in_preferred_view(source, port, render_view):
     view_type = controller.GetPreferredViewType(source.SMProxy, port)
     view = CreateView(view_type) if view_type and view_type != "RenderView" else render_view
     display = Show(servermanager.OutputPort(source, port), view)
-    settle()
+    guitest.settle()
     return view_type, view, display
 
 
@@ -77,7 +69,7 @@ def check_legend(solver, view):
     display = Show(solver, view)
     ColorBy(display, ("POINTS", "Radiosity_WarmWhite"))
     display.SetScalarBarVisibility(view, True)  # as the GUI does when colouring by an array
-    settle()
+    guitest.settle()
     bar = servermanager.vtkSMTransferFunctionProxy.FindScalarBarRepresentation(display.LookupTable.SMProxy,
                                                                                view.SMProxy)
     title = servermanager._getPyProxy(bar).Title if bar else "(no scalar bar)"

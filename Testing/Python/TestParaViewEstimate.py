@@ -7,7 +7,6 @@ elements before Apply, and that Apply then makes exactly that many.
 import os
 import re
 import sys
-import time
 
 sys.path.insert(0, os.environ["RELIGHT_TEST_DIR"])
 import guitest  # noqa: E402
@@ -21,12 +20,6 @@ result = guitest.Result()
 app = QApplication.instance()
 
 
-def settle(seconds=0.3):
-    end = time.time() + seconds
-    while time.time() < end:
-        app.processEvents()
-        time.sleep(0.01)
-
 
 def panel_widget(kind, name):
     found = [w for w in app.allWidgets() if isinstance(w, kind) and w.objectName() == name and w.isVisible()]
@@ -37,7 +30,7 @@ def retype(edit, text):
     edit.setFocus()
     edit.selectAll()
     QTest.keyClicks(edit, text)
-    settle(0.2)
+    guitest.settle(0.2)
 
 
 def shown_count(label):
@@ -49,7 +42,7 @@ scene = XMLPolyDataReader(FileName=[guitest.data_file("cornell_box.vtp")])
 scene.UpdatePipeline()
 mesher = RadiosityMesher(Input=scene)
 SetActiveSource(mesher)
-settle(1.0)
+guitest.settle(1.0)
 label = panel_widget(QLabel, "ElementEstimate")
 edit = panel_widget(QLineEdit, "ElementSizeEdit")
 patch_edits = [w for w in app.allWidgets() if isinstance(w, QLineEdit) and w.isVisible()

@@ -2,6 +2,7 @@
 
 import json
 import os
+import time
 
 ROOT = os.environ.get("RELIGHT_ROOT", ".")
 OUTPUT_DIR = os.environ.get("RELIGHT_OUTPUT_DIR", ".")
@@ -34,3 +35,15 @@ def image_path():
 
 def data_file(name):
     return os.path.join(ROOT, "Data", name)
+
+
+def settle(seconds=0.3):
+    """Runs the GUI's events for a while: its deferred work (the plugin's display
+    defaults, a panel built for a new source, a render after a change) happens."""
+    from PyQt5.QtWidgets import QApplication
+
+    app = QApplication.instance()
+    end = time.time() + seconds
+    while time.time() < end:
+        app.processEvents()
+        time.sleep(0.01)

@@ -1,0 +1,68 @@
+/**
+ * @class   vtkRadiosityRelitRepresentation
+ * @brief   ParaView's "Relit Surface": the light-tagged solutions relit on the GPU
+ *
+ * Shows the solver's output through vtkRadiosityRelightMapper. The light settings and
+ * the exposure are display properties: a change renders the next frame with new
+ * uniforms, without Apply, without running the pipeline and without sending the data
+ * again.
+ */
+#ifndef vtkRadiosityRelitRepresentation_h
+#define vtkRadiosityRelitRepresentation_h
+
+#include "vtkPVDataRepresentation.h"
+#include "vtkRadiosityRepresentationModule.h" // for export macro
+#include "vtkSmartPointer.h"                    // for members
+
+class vtkActor;
+class vtkPolyData;
+class vtkRadiosityRelightMapper;
+class vtkStringArray;
+
+class VTKRADIOSITYREPRESENTATION_EXPORT vtkRadiosityRelitRepresentation : public vtkPVDataRepresentation
+{
+public:
+  static vtkRadiosityRelitRepresentation* New();
+  vtkTypeMacro(vtkRadiosityRelitRepresentation, vtkPVDataRepresentation);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// The lights, as the relight filter's LightSettings (name, r, g, b, intensity, enabled).
+  void SetLightSetting(const char* name, double r, double g, double b, double intensity, int enabled);
+  void ClearLightSettings();
+  ///@}
+
+  /// Multiplier before the clamp to display colours.
+  void SetRelightExposure(double exposure);
+
+  ///@{
+  /// The lights of the shown data, and the settings in effect (six strings per light).
+  vtkStringArray* GetLightNames();
+  vtkStringArray* GetLightSettingsInfo();
+  ///@}
+
+  vtkRadiosityRelightMapper* GetMapper();
+
+  int ProcessViewRequest(vtkInformationRequestKey* request, vtkInformation* inInfo, vtkInformation* outInfo) override;
+  void SetVisibility(bool visible) override;
+
+protected:
+  vtkRadiosityRelitRepresentation();
+  ~vtkRadiosityRelitRepresentation() override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  bool AddToView(vtkView* view) override;
+  bool RemoveFromView(vtkView* view) override;
+
+private:
+  vtkRadiosityRelitRepresentation(const vtkRadiosityRelitRepresentation&) = delete;
+  void operator=(const vtkRadiosityRelitRepresentation&) = delete;
+
+  vtkSmartPointer<vtkRadiosityRelightMapper> Mapper;
+  vtkSmartPointer<vtkActor> Actor;
+  vtkSmartPointer<vtkPolyData> Data; ///< the input as last updated, delivered to the view
+  vtkSmartPointer<vtkStringArray> NamesInfo;
+  vtkSmartPointer<vtkStringArray> SettingsInfo;
+};
+
+#endif

@@ -1,0 +1,84 @@
+"""Runs inside the real ParaView GUI (started by RunParaViewGUI.py under Xvfb): the solver's
+output is shown as "Relit Surface" by default, and a light switched off in the display
+panel's lights table (a real click on its check box) changes the picture at once: no
+Apply, no new solve, no new upload of the solutions.
+"""
+
+import os
+import sys
+
+sys.path.insert(0, os.environ["RELIGHT_TEST_DIR"])
+import guitest  # noqa: E402
+from paraview import servermanager  # noqa: E402
+from paraview.simple import (  # noqa: E402
+    GetActiveView, LightTaggedRadiosity, RadiosityMesher, Render, SaveScreenshot, SetActiveSource, Show,
+    XMLPolyDataReader)
+from PyQt5.QtCore import Qt  # noqa: E402
+from PyQt5.QtTest import QTest  # noqa: E402
+from PyQt5.QtWidgets import QApplication, QCheckBox, QScrollArea, QTableWidget  # noqa: E402
+from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
+from vtkmodules.vtkIOImage import vtkPNGReader  # noqa: E402
+
+result = guitest.Result()
+app = QApplication.instance()
+
+
+
+def picture(view, name):
+    path = os.path.join(guitest.OUTPUT_DIR, name)
+    Render(view)
+    SaveScreenshot(path, view, ImageResolution=[300, 225])
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    return vtk_to_numpy(reader.GetOutput().GetPointData().GetScalars()).astype(float)
+
+
+def light_boxes():
+    """The on/off boxes of the visible lights tables."""
+    tables = [t for t in app.allWidgets() if isinstance(t, QTableWidget) and t.isVisible()
+              and t.horizontalHeaderItem(3) is not None and t.horizontalHeaderItem(3).text() == "On"]
+    return [box for t in tables for box in (t.cellWidget(r, 3) for r in range(t.rowCount())) if isinstance(box, QCheckBox)]
+
+
+def click(widget):
+    parent = widget.parentWidget()
+    while parent is not None and not isinstance(parent, QScrollArea):
+        parent = parent.parentWidget()
+    if parent is not None:
+        parent.ensureWidgetVisible(widget)
+    guitest.settle(0.2)
+    window = widget.window()
+    QTest.mouseClick(window.windowHandle(), Qt.LeftButton, Qt.NoModifier, widget.mapTo(window, widget.rect().center()))
+    guitest.settle(0.5)
+
+
+view = GetActiveView()
+scene = XMLPolyDataReader(FileName=[guitest.data_file("paper_3lights.vtp")])
+mesher = RadiosityMesher(Input=scene, PatchSize=1.5, ElementSize=0.375)
+solver = LightTaggedRadiosity(Input=mesher, ConvergenceThreshold=0.01)
+display = Show(solver, view)
+SetActiveSource(solver)
+guitest.settle(1.0)
+result.check(display.Representation == "Relit Surface",
+             "the solver's output is shown as '%s', expected 'Relit Surface'" % display.Representation)
+display.RelitExposure = 20.0  # the 3-light room is dim at unit intensity
+view.CameraPosition = [2.0, 1.5, 0.05]
+view.CameraFocalPoint = [2.0, 0.9, 4.0]
+view.CameraViewUp = [0.0, 1.0, 0.0]
+view.CameraViewAngle = 80
+guitest.settle(0.5)
+before = picture(view, "relit_before.png")
+solves = solver.GetClientSideObject().GetOutputDataObject(0).GetMTime()
+boxes = light_boxes()
+if result.check(len(boxes) == 3, "the display panel shows %d light boxes, expected 3" % len(boxes)):
+    if not os.environ.get("RELIGHT_GUI_UNCHANGED"):  # set only to check the test can fail
+        click(boxes[0])  # WarmWhite off
+    after = picture(view, "relit_after.png")
+    change = abs(after - before).mean()
+    result.check(change > 1.0, "switching WarmWhite off in the panel changed the picture by %.2f / 255" % change)
+    result.check(solver.GetClientSideObject().GetOutputDataObject(0).GetMTime() == solves, "the light change ran the solver again")
+    settings = list(display.RelitLightSettings)
+    result.check(settings[:1] == ["WarmWhite"] and settings[5] == "0", "the property holds %s" % settings)
+    result.note("mean change %.2f / 255; property %s" % (change, settings))
+result.finish()
