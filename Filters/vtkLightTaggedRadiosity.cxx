@@ -1,6 +1,7 @@
 #include "vtkLightTaggedRadiosity.h"
 #include "vtkRadiosityAbort.h"
 #include "vtkRadiosityAdapter.h"
+#include "vtkRadiosityPieces.h"
 
 #include "Effects.h"
 #include "LightChecks.h"
@@ -17,10 +18,12 @@
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
 #include "vtkLogger.h"
+#include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 #include "vtkStringArray.h"
 #include "vtkTable.h"
 
@@ -232,12 +235,33 @@ void AddColumn(vtkTable* table, const std::string& name, const std::vector<doubl
 int vtkLightTaggedRadiosity::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkTable::GetData(outputVector, 1)->Initialize();
-  return vtkRadiosityAdapter::Guarded(this, vtkPolyData::GetData(inputVector[0]), vtkPolyData::GetData(outputVector, 0), [&]() -> int {
-    vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
-    vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-    vtkTable* history = vtkTable::GetData(outputVector, 1);
+  vtkTable* history = vtkTable::GetData(outputVector, 1);
+  history->Initialize();
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  return vtkRadiosityAdapter::Guarded(this, input, output, [&]() -> int {
+    vtkMultiProcessController* parallel = vtkRadiosityPieces::Parallel(outputVector->GetInformationObject(0));
+    if (!parallel)
+    {
+      return this->Solve(input, output, history);
+    }
+    // On ParaView's MPI server: every rank solves the whole scene (light transport needs
+    // all of it) and keeps its own piece of the result.
+    vtkRadiosityPieces::Slice slice;
+    vtkSmartPointer<vtkPolyData> whole = vtkRadiosityPieces::GatherAll(parallel, input, slice);
+    vtkNew<vtkPolyData> solved;
+    if (!this->Solve(whole, solved, history))
+    {
+      return 0;
+    }
+    vtkRadiosityPieces::CutPiece(solved, slice, input, output);
+    return 1;
+  });
+}
 
+int vtkLightTaggedRadiosity::Solve(vtkPolyData* input, vtkPolyData* output, vtkTable* history)
+{
+  {
     radiosity::SceneMesh mesh;
     std::vector<radiosity::Vec3> emission;
     std::string error;
@@ -452,5 +476,5 @@ int vtkLightTaggedRadiosity::RequestData(
       AddColumn(history, "Remaining_" + names[m], stats.RemainingPerSolution, columns, m);
     }
     return 1;
-  });
+  }
 }

@@ -40,6 +40,8 @@
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkRadiosityFiltersModule.h" // for export macro
 
+class vtkTable;
+
 class VTKRADIOSITYFILTERS_EXPORT vtkLightTaggedRadiosity : public vtkPolyDataAlgorithm
 {
 public:
@@ -245,6 +247,10 @@ protected:
 private:
   vtkLightTaggedRadiosity(const vtkLightTaggedRadiosity&) = delete;
   void operator=(const vtkLightTaggedRadiosity&) = delete;
+
+  /// Solves `input` (a whole scene) into `output` and `history`; 0 with the error
+  /// reported when the input cannot be solved.
+  int Solve(vtkPolyData* input, vtkPolyData* output, vtkTable* history);
 
   int SolutionMode = LIGHT_TAGGED;
   int SolverMethod = SOLVER_AUTO;

@@ -1,15 +1,19 @@
 #include "vtkRadiosityMesher.h"
 #include "vtkRadiosityAbort.h"
 #include "vtkRadiosityAdapter.h"
+#include "vtkRadiosityPieces.h"
 
 #include "Mesher.h"
 
 #include "vtkCellArray.h"
+#include "vtkGeometryFilter.h"
 #include "vtkDoubleArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkFieldData.h"
+#include "vtkMultiProcessController.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -20,6 +24,29 @@
 #include <tuple>
 
 vtkStandardNewMacro(vtkRadiosityMesher);
+
+namespace
+{
+
+/// The input as polygons: a vtkPolyData as it is; another data set (ParaView's
+/// RedistributeDataSet gives an unstructured grid) through VTK's geometry filter, with its
+/// cell, point and field data.
+vtkSmartPointer<vtkPolyData> AsPolyData(vtkDataSet* input)
+{
+  if (!input || vtkPolyData::SafeDownCast(input))
+  {
+    return vtkPolyData::SafeDownCast(input);
+  }
+  vtkNew<vtkGeometryFilter> surface;
+  surface->SetInputData(input);
+  surface->MergingOff();
+  surface->Update();
+  vtkSmartPointer<vtkPolyData> polygons = surface->GetOutput();
+  polygons->GetFieldData()->PassData(input->GetFieldData());
+  return polygons;
+}
+
+} // namespace
 
 struct vtkRadiosityMesher::Polygons
 {
@@ -46,13 +73,21 @@ void vtkRadiosityMesher::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ElementSize: " << this->ElementSize << "\n";
 }
 
+int vtkRadiosityMesher::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
+  return 1;
+}
+
 int vtkRadiosityMesher::RequestInformation(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
   // The input has data here only if it executed before (a reader applied in ParaView).
   // Every property change runs this pass; the suggestion changes only with the input.
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
-  const vtkMTimeType inputTime = input ? input->GetMTime() : 0;
+  vtkDataSet* given = vtkDataSet::GetData(inputVector[0]);
+  vtkSmartPointer<vtkPolyData> surface = given && given->GetMTime() != this->SuggestedForInput ? AsPolyData(given) : nullptr;
+  vtkPolyData* input = surface ? surface.Get() : vtkPolyData::SafeDownCast(given);
+  const vtkMTimeType inputTime = given ? given->GetMTime() : 0;
   if (inputTime == this->SuggestedForInput)
   {
     return 1;
@@ -77,53 +112,85 @@ int vtkRadiosityMesher::RequestInformation(
   return 1;
 }
 
+namespace
+{
+
+/// Meshes the polygons of `input` with `self`'s settings into `meshed`; an empty string
+/// or what is wrong.
+std::string MeshPiece(vtkRadiosityMesher* self, vtkPolyData* input, radiosity::MeshedPolygons& meshed,
+  vtkRadiosityAdapter::WarningList& warnings)
+{
+  radiosity::SceneMesh mesh;
+  std::vector<radiosity::Vec3> emission;
+  std::string error;
+  if (!vtkRadiosityAdapter::CopyPolygons(input, mesh, error) ||
+    !vtkRadiosityAdapter::ReadSceneArrays(input, mesh, emission, error))
+  {
+    return error;
+  }
+
+  // Cells share points only if reflectance, light and emission all agree.
+  std::map<std::tuple<double, double, double, int, double, double, double>, int> materials;
+  std::vector<int> surfaceKey(mesh.NumberOfPolygons());
+  for (int i = 0; i < mesh.NumberOfPolygons(); ++i)
+  {
+    const radiosity::Vec3& r = mesh.reflectance[i];
+    const radiosity::Vec3 e = emission.empty() ? radiosity::Vec3() : emission[i];
+    const auto key = std::make_tuple(r.x, r.y, r.z, mesh.lightId[i], e.x, e.y, e.z);
+    surfaceKey[i] = materials.emplace(key, static_cast<int>(materials.size())).first->second;
+  }
+
+  radiosity::MesherOptions options;
+  options.PatchSize = self->GetPatchSize();
+  options.ElementSize = self->GetElementSize();
+  options.ElementBudget = static_cast<double>(self->GetMaximumElements());
+  options.Warning = [self, &warnings](const std::string& message) { warnings.Add(self, message); };
+  options.MergeTriangles = self->GetMergeTriangles();
+  options.SharePatches = self->GetSharePatches();
+  const vtkRadiosityAbortWatch abort(self);
+  options.Progress = [self, abort](double f) {
+    self->UpdateProgress(f);
+    return !abort.Stop();
+  };
+  return radiosity::MeshPolygons(mesh.points, mesh.offsets, mesh.connectivity, surfaceKey, options, meshed);
+}
+
+} // namespace
+
 int vtkRadiosityMesher::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  return vtkRadiosityAdapter::Guarded(this, vtkPolyData::GetData(inputVector[0]), vtkPolyData::GetData(outputVector), [&]() -> int {
-    vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkSmartPointer<vtkPolyData> surface = AsPolyData(vtkDataSet::GetData(inputVector[0]));
+  vtkPolyData* input = surface;
+  return vtkRadiosityAdapter::Guarded(this, input, vtkPolyData::GetData(outputVector), [&]() -> int {
     vtkPolyData* output = vtkPolyData::GetData(outputVector);
 
-    radiosity::SceneMesh mesh;
-    std::vector<radiosity::Vec3> emission;
-    std::string error;
-    if (!vtkRadiosityAdapter::CopyPolygons(input, mesh, error) ||
-      !vtkRadiosityAdapter::ReadSceneArrays(input, mesh, emission, error))
-    {
-      vtkErrorMacro(<< "Cannot mesh: " << error << ".");
-      return 0;
-    }
-
-    // Cells share points only if reflectance, light and emission all agree.
-    std::map<std::tuple<double, double, double, int, double, double, double>, int> materials;
-    std::vector<int> surfaceKey(mesh.NumberOfPolygons());
-    for (int i = 0; i < mesh.NumberOfPolygons(); ++i)
-    {
-      const radiosity::Vec3& r = mesh.reflectance[i];
-      const radiosity::Vec3 e = emission.empty() ? radiosity::Vec3() : emission[i];
-      const auto key = std::make_tuple(r.x, r.y, r.z, mesh.lightId[i], e.x, e.y, e.z);
-      surfaceKey[i] = materials.emplace(key, static_cast<int>(materials.size())).first->second;
-    }
-
-    radiosity::MesherOptions options;
-    options.PatchSize = this->PatchSize;
-    options.ElementSize = this->ElementSize;
-    options.ElementBudget = static_cast<double>(this->MaximumElements);
-    vtkRadiosityAdapter::WarningList warnings;
-    options.Warning = [this, &warnings](const std::string& message) { warnings.Add(this, message); };
-    options.MergeTriangles = this->MergeTriangles;
-    options.SharePatches = this->SharePatches;
-    const vtkRadiosityAbortWatch abort(this);
-    options.Progress = [this, abort](double f) {
-      this->UpdateProgress(f);
-      return !abort.Stop();
-    };
+    // On ParaView's MPI server each rank meshes its piece, and a rank may hold none.
+    // Every rank joins the same collectives, so one that fails never leaves the others
+    // waiting; patch ids then follow those of the ranks before.
+    vtkMultiProcessController* parallel = vtkRadiosityPieces::Parallel(outputVector->GetInformationObject(0));
+    const bool empty = !input || input->GetNumberOfCells() == 0;
     radiosity::MeshedPolygons meshed;
-    error = radiosity::MeshPolygons(mesh.points, mesh.offsets, mesh.connectivity, surfaceKey, options, meshed);
+    vtkRadiosityAdapter::WarningList warnings;
+    std::string error = parallel && empty ? std::string() : MeshPiece(this, input, meshed, warnings);
+    long long firstPatch = 0;
+    if (parallel)
+    {
+      const long long failures = vtkRadiosityPieces::SumOverRanks(parallel, error.empty() ? 0 : 1);
+      const long long cells = vtkRadiosityPieces::SumOverRanks(parallel, empty ? 0 : input->GetNumberOfCells());
+      vtkRadiosityPieces::SumOverRanks(parallel, meshed.patches, &firstPatch);
+      error = !error.empty() || !failures ? error : "another rank could not mesh its piece (see its error)";
+      error = !error.empty() || cells ? error : "the input has no polygons";
+    }
     if (!error.empty())
     {
       vtkErrorMacro(<< "Cannot mesh: " << error << ".");
       return 0;
+    }
+    if (empty)
+    {
+      output->GetFieldData()->ShallowCopy(input->GetFieldData());
+      return 1;
     }
 
     vtkNew<vtkPoints> points;
@@ -160,7 +227,7 @@ int vtkRadiosityMesher::RequestData(
     patchId->SetNumberOfValues(elements);
     for (vtkIdType e = 0; e < elements; ++e)
     {
-      patchId->SetValue(e, meshed.patchId[e]);
+      patchId->SetValue(e, static_cast<int>(firstPatch + meshed.patchId[e]));
     }
     outCD->AddArray(patchId);
     output->GetFieldData()->ShallowCopy(input->GetFieldData());

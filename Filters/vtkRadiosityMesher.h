@@ -93,6 +93,7 @@ public:
 protected:
   vtkRadiosityMesher();
   ~vtkRadiosityMesher() override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 

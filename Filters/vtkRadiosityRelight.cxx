@@ -7,6 +7,7 @@
 #include "PatchBasis.h"
 #include "Relight.h"
 #include "vtkRadiosityAdapter.h"
+#include "vtkRadiosityPieces.h"
 #include "WorkerPool.h"
 
 #include "vtkCellData.h"
@@ -616,6 +617,11 @@ int vtkRadiosityRelight::RequestData(
     vtkPolyData* output = vtkPolyData::GetData(outputVector);
     this->Internal->Names.clear();
     this->Internal->Effective.clear();
+    if (input->GetNumberOfCells() == 0 && vtkRadiosityPieces::Parallel(outputVector->GetInformationObject(0)))
+    {
+      output->ShallowCopy(input); // this rank's piece of the scene is empty: nothing to relight
+      return 1;
+    }
     if (!std::isfinite(this->Exposure) || !std::isfinite(this->IndirectScale))
     {
       vtkErrorMacro(<< "Cannot relight: Exposure (" << this->Exposure << ") and IndirectScale ("

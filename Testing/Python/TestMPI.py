@@ -1,0 +1,69 @@
+"""ParaView's MPI server (issue 11): 2 ranks of pvbatch mesh, solve and relight the paper
+scene, as read (all on rank 0; rank 1 holds no cells) and spread over both ranks by
+RedistributeDataSet. Each must give the serial answer: the same mesh gives the same
+radiosity to 1e-6, a mesh cut differently by the pieces within 1 % at every element's
+centre; no rank reports an error."""
+
+import os
+import shutil
+import subprocess
+import tempfile
+
+import numpy as np
+from vtkmodules.vtkCommonCore import vtkLogger
+from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+
+import relight
+from relight import cell_array, cell_centroids, light_names, point_array, read_polydata
+from testlib import check, finish
+
+vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_OFF)
+ROOT = os.environ.get("RELIGHT_ROOT", ".")
+SCENE = os.path.join(ROOT, "Data", "paper_3lights.vtp")
+PLUGIN_DIR = os.environ["RELIGHT_PLUGIN_DIR"]
+folder = tempfile.mkdtemp()
+
+
+def parallel_run(mode, ranks=2):
+    out = os.path.join(folder, f"{mode}.vtp")
+    env = dict(os.environ, PV_PLUGIN_PATH=PLUGIN_DIR)
+    run = subprocess.run([shutil.which("mpiexec"), "--allow-run-as-root", "--oversubscribe", "-np", str(ranks),
+                          "pvbatch", "--mpi", os.path.join(ROOT, "Testing", "Python", "mpi_solve.py"), SCENE, out, mode],
+                         capture_output=True, text=True, env=env, timeout=600)
+    errors = [line for line in (run.stdout + run.stderr).splitlines() if "ERR|" in line or "Traceback" in line]
+    reader = vtkXMLPolyDataReader()
+    reader.SetFileName(out)
+    reader.Update()
+    return reader.GetOutput(), errors, run.returncode
+
+
+def by_centre(data, name):
+    """{rounded element centre: its radiosity}"""
+    centres = np.round(cell_centroids(data), 6)
+    values = cell_array(data, name)
+    return {tuple(c): v for c, v in zip(centres, values)}
+
+
+solver = relight.solve(read_polydata(SCENE), 1.0, 0.5, ConvergenceThreshold=1e-4, MaximumShots=0)
+serial = relight.vtkRadiosityRelight()
+serial.SetInputConnection(solver.GetOutputPort())
+serial.Update()
+reference = serial.GetOutput()
+names = light_names(reference)
+for mode, tolerance in (("whole", 1e-6), ("redistributed", 1e-2)):
+    result, errors, code = parallel_run(mode)
+    check(code == 0 and not errors, f"{mode}: 2 ranks finish with no error ({code}; {errors[:2]})")
+    ranks = point_array(result, "ProcessId").astype(int).ravel() if result.GetNumberOfPoints() else np.array([])
+    per_rank = [int((ranks == r).sum()) for r in range(2)]
+    spread = per_rank[1] == 0 if mode == "whole" else min(per_rank) > 0
+    check(spread, f"{mode}: points per rank {per_rank}")
+    check(light_names(result) == names if result.GetNumberOfCells() else False, f"{mode}: the lights are {names}")
+    worst = 0.0
+    for name in ["Radiosity"] + ["Radiosity_" + n for n in names]:
+        mine, theirs = by_centre(result, name), by_centre(reference, name)
+        common = [c for c in theirs if c in mine]
+        scale = max(np.abs(v).max() for v in theirs.values())
+        worst = max([worst] + [np.abs(mine[c] - theirs[c]).max() / scale for c in common])
+        check(len(common) >= 0.9 * len(theirs), f"{mode}: {len(common)} of {len(theirs)} elements found at the serial centres ({name})")
+    check(worst <= tolerance, f"{mode}: largest difference from the serial run {worst:.2e} of the peak (at most {tolerance:g})")
+finish("TestMPI")
