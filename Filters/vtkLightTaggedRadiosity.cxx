@@ -245,17 +245,15 @@ int vtkLightTaggedRadiosity::RequestData(
     {
       return this->Solve(input, output, history);
     }
-    // On ParaView's MPI server: every rank solves the whole scene (light transport needs
-    // all of it) and keeps its own piece of the result.
-    vtkRadiosityPieces::Slice slice;
-    vtkSmartPointer<vtkPolyData> whole = vtkRadiosityPieces::GatherAll(parallel, input, slice);
-    vtkNew<vtkPolyData> solved;
-    if (!this->Solve(whole, solved, history))
+    // On ParaView's MPI server: rank 0 solves the whole scene (light transport needs all
+    // of it) and every rank gets its own piece of the result.
+    const int ok = vtkRadiosityPieces::SolveOnRoot(parallel, input, output, history,
+      [this](vtkPolyData* whole, vtkPolyData* solved, vtkTable* table) { return this->Solve(whole, solved, table); });
+    if (!ok && parallel->GetLocalProcessId() != 0)
     {
-      return 0;
+      vtkErrorMacro(<< "Cannot solve: rank 0 could not solve the scene (see its error).");
     }
-    vtkRadiosityPieces::CutPiece(solved, slice, input, output);
-    return 1;
+    return ok;
   });
 }
 

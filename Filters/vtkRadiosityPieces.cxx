@@ -10,6 +10,7 @@
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkTable.h"
 
 #include <vector>
 
@@ -40,6 +41,29 @@ void CutArrays(vtkDataSetAttributes* whole, vtkIdType first, vtkIdType count, vt
   }
 }
 
+/// Where one rank's piece lies in the whole scene.
+struct Slice
+{
+  vtkIdType FirstCell = 0;
+  vtkIdType FirstPoint = 0;
+};
+
+/// A rank's piece of a result computed on the whole scene: the rank's input with every
+/// point and cell array of `whole` cut to its slice (the whole's win, e.g. PatchId
+/// renumbered by the solver), and the whole's field data.
+void CutPiece(vtkPolyData* whole, const Slice& slice, vtkPolyData* piece, vtkPolyData* output)
+{
+  output->ShallowCopy(piece);
+  if (piece->GetNumberOfCells() > 0)
+  {
+    CutArrays(whole->GetCellData(), slice.FirstCell, piece->GetNumberOfCells(), output->GetCellData());
+    CutArrays(whole->GetPointData(), slice.FirstPoint, piece->GetNumberOfPoints(), output->GetPointData());
+  }
+  vtkNew<vtkFieldData> fields;
+  fields->ShallowCopy(whole->GetFieldData());
+  output->SetFieldData(fields);
+}
+
 } // namespace
 
 vtkMultiProcessController* Parallel(vtkInformation* outputInformation)
@@ -52,56 +76,68 @@ vtkMultiProcessController* Parallel(vtkInformation* outputInformation)
   return processes > 1 && pieces == processes ? controller : nullptr;
 }
 
-vtkSmartPointer<vtkPolyData> GatherAll(vtkMultiProcessController* controller, vtkPolyData* piece, Slice& slice)
+int SolveOnRoot(vtkMultiProcessController* controller, vtkPolyData* piece, vtkPolyData* output, vtkTable* table,
+  const std::function<int(vtkPolyData* whole, vtkPolyData* result, vtkTable* table)>& work)
 {
-  std::vector<vtkSmartPointer<vtkDataObject>> pieces;
-  controller->AllGather(piece, pieces);
-  vtkNew<vtkAppendPolyData> append;
-  auto whole = vtkSmartPointer<vtkPolyData>::New();
-  vtkPolyData* first = nullptr;
+  constexpr int ResultTag = 7841, TableTag = 7842;
   const int me = controller->GetLocalProcessId();
-  for (int rank = 0; rank < static_cast<int>(pieces.size()); ++rank)
+  std::vector<vtkSmartPointer<vtkDataObject>> pieces;
+  controller->Gather(piece, pieces, 0);
+  int ok = 0;
+  if (me == 0)
   {
-    auto* data = vtkPolyData::SafeDownCast(pieces[rank]);
-    if (!data || data->GetNumberOfCells() == 0)
+    // The whole scene: the pieces with cells, appended in rank order; the field data of
+    // the first of them. Each rank's slice starts after the cells and points before it.
+    vtkNew<vtkAppendPolyData> append;
+    std::vector<Slice> slices(pieces.size());
+    Slice next;
+    vtkPolyData* first = nullptr;
+    for (size_t rank = 0; rank < pieces.size(); ++rank)
     {
-      continue;
+      auto* data = vtkPolyData::SafeDownCast(pieces[rank]);
+      slices[rank] = next;
+      if (data && data->GetNumberOfCells() > 0)
+      {
+        append->AddInputData(data);
+        first = first ? first : data;
+        next.FirstCell += data->GetNumberOfCells();
+        next.FirstPoint += data->GetNumberOfPoints();
+      }
     }
-    first = first ? first : data;
-    append->AddInputData(data);
-  }
-  // Offsets: the cells and points of the non-empty pieces before this rank's.
-  slice.FirstCell = 0;
-  slice.FirstPoint = 0;
-  for (int rank = 0; rank < me && rank < static_cast<int>(pieces.size()); ++rank)
-  {
-    if (auto* data = vtkPolyData::SafeDownCast(pieces[rank]))
+    vtkNew<vtkPolyData> whole, solved;
+    if (first)
     {
-      slice.FirstCell += data->GetNumberOfCells();
-      slice.FirstPoint += data->GetNumberOfCells() ? data->GetNumberOfPoints() : 0; // empty pieces add no points
+      append->Update();
+      whole->ShallowCopy(append->GetOutput());
+      whole->SetFieldData(first->GetFieldData());
+    }
+    ok = work(whole, solved, table);
+    for (int rank = static_cast<int>(pieces.size()) - 1; rank >= 0; --rank)
+    {
+      auto* data = vtkPolyData::SafeDownCast(pieces[rank]);
+      vtkNew<vtkPolyData> cut;
+      if (ok && data)
+      {
+        CutPiece(solved, slices[rank], data, cut);
+      }
+      if (rank == 0)
+      {
+        output->ShallowCopy(cut);
+      }
+      else
+      {
+        controller->Send(cut, rank, ResultTag);
+        controller->Send(table, rank, TableTag);
+      }
     }
   }
-  if (!first)
+  else
   {
-    return whole;
+    controller->Receive(output, 0, ResultTag);
+    controller->Receive(table, 0, TableTag);
   }
-  append->Update();
-  whole->ShallowCopy(append->GetOutput());
-  whole->SetFieldData(first->GetFieldData());
-  return whole;
-}
-
-void CutPiece(vtkPolyData* whole, const Slice& slice, vtkPolyData* piece, vtkPolyData* output)
-{
-  output->ShallowCopy(piece);
-  if (piece->GetNumberOfCells() > 0)
-  {
-    CutArrays(whole->GetCellData(), slice.FirstCell, piece->GetNumberOfCells(), output->GetCellData());
-    CutArrays(whole->GetPointData(), slice.FirstPoint, piece->GetNumberOfPoints(), output->GetPointData());
-  }
-  vtkNew<vtkFieldData> fields;
-  fields->ShallowCopy(whole->GetFieldData());
-  output->SetFieldData(fields);
+  controller->Broadcast(&ok, 1, 0);
+  return ok;
 }
 
 long long SumOverRanks(vtkMultiProcessController* controller, long long value, long long* before)

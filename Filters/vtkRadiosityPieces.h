@@ -1,5 +1,5 @@
 // The filters on ParaView's MPI server: every rank holds a piece of the scene. The solver
-// sees the whole scene (gathered on every rank) and each rank keeps its own piece of the
+// sees the whole scene (gathered on rank 0) and each rank gets its own piece of the
 // result; the mesher numbers patches across ranks. Not wrapped.
 #ifndef vtkRadiosityPieces_h
 #define vtkRadiosityPieces_h
@@ -7,9 +7,12 @@
 #include "vtkSmartPointer.h"
 #include "vtkType.h"
 
+#include <functional>
+
 class vtkInformation;
 class vtkMultiProcessController;
 class vtkPolyData;
+class vtkTable;
 
 namespace vtkRadiosityPieces
 {
@@ -20,22 +23,12 @@ namespace vtkRadiosityPieces
 /// collectives there would wait for ranks that never come.
 vtkMultiProcessController* Parallel(vtkInformation* outputInformation);
 
-/// Where this rank's piece lies in the whole scene (GatherAll's order).
-struct Slice
-{
-  vtkIdType FirstCell = 0;
-  vtkIdType FirstPoint = 0;
-};
-
-/// Every rank's piece appended in rank order, the same on every rank (empty pieces are
-/// left out; the field data is that of the first piece with cells). `slice` tells where
-/// this rank's cells and points are in it.
-vtkSmartPointer<vtkPolyData> GatherAll(vtkMultiProcessController* controller, vtkPolyData* piece, Slice& slice);
-
-/// This rank's piece of a result computed on the whole scene: `piece` (this rank's input)
-/// with every point and cell array of `whole` cut to its slice (the whole's win over the
-/// piece's, e.g. PatchId renumbered by the solver), and `whole`'s field data.
-void CutPiece(vtkPolyData* whole, const Slice& slice, vtkPolyData* piece, vtkPolyData* output);
+/// Runs `work` (whole scene in, whole result and table out; 0 on failure, reported by
+/// it) on rank 0 with every rank's piece gathered there, and gives each rank its own
+/// piece of the result in `output` and a copy of the table in `table`. One rank works, so
+/// a time budget or an abort stops all alike. Returns 0 on every rank when the work fails.
+int SolveOnRoot(vtkMultiProcessController* controller, vtkPolyData* piece, vtkPolyData* output, vtkTable* table,
+  const std::function<int(vtkPolyData* whole, vtkPolyData* result, vtkTable* table)>& work);
 
 /// The sum of `value` over the ranks, and the sum over the ranks before this one.
 long long SumOverRanks(vtkMultiProcessController* controller, long long value, long long* before = nullptr);
