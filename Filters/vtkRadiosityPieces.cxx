@@ -5,6 +5,7 @@
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
+#include "vtkLogger.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
@@ -112,6 +113,11 @@ int SolveOnRoot(vtkMultiProcessController* controller, vtkPolyData* piece, vtkPo
       whole->SetFieldData(first->GetFieldData());
     }
     ok = work(whole, solved, table);
+    unsigned long gathered = 0, sent = 0; // KiB, for the log: what a run costs in traffic
+    for (const auto& received : pieces)
+    {
+      gathered += received ? received->GetActualMemorySize() : 0;
+    }
     for (int rank = static_cast<int>(pieces.size()) - 1; rank >= 0; --rank)
     {
       auto* data = vtkPolyData::SafeDownCast(pieces[rank]);
@@ -128,8 +134,11 @@ int SolveOnRoot(vtkMultiProcessController* controller, vtkPolyData* piece, vtkPo
       {
         controller->Send(cut, rank, ResultTag);
         controller->Send(table, rank, TableTag);
+        sent += cut->GetActualMemorySize();
       }
     }
+    vtkLogF(INFO, "Radiosity on %d ranks: %.2f MB of scene gathered on rank 0, %.2f MB of results sent",
+      static_cast<int>(pieces.size()), gathered / 1024.0, sent / 1024.0);
   }
   else
   {
