@@ -239,21 +239,18 @@ int vtkLightTaggedRadiosity::RequestData(
   history->Initialize();
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  return vtkRadiosityAdapter::Guarded(this, input, output, [&]() -> int {
-    vtkMultiProcessController* parallel = vtkRadiosityPieces::Parallel(outputVector->GetInformationObject(0));
+  vtkMultiProcessController* parallel = vtkRadiosityPieces::Parallel(outputVector->GetInformationObject(0));
+  // On ParaView's MPI server every rank joins the gather even when its input failed
+  // upstream (rank 0 then fails them all), so none is left waiting.
+  return vtkRadiosityAdapter::Guarded(this, parallel ? nullptr : input, output, [&]() -> int {
     if (!parallel)
     {
       return this->Solve(input, output, history);
     }
-    // On ParaView's MPI server: rank 0 solves the whole scene (light transport needs all
-    // of it) and every rank gets its own piece of the result.
-    const int ok = vtkRadiosityPieces::SolveOnRoot(parallel, input, output, history,
+    // Rank 0 solves the whole scene (light transport needs all of it) and every rank gets
+    // its own piece of the result.
+    return vtkRadiosityPieces::SolveOnRoot(parallel, input, output, history,
       [this](vtkPolyData* whole, vtkPolyData* solved, vtkTable* table) { return this->Solve(whole, solved, table); });
-    if (!ok && parallel->GetLocalProcessId() != 0)
-    {
-      vtkErrorMacro(<< "Cannot solve: rank 0 could not solve the scene (see its error).");
-    }
-    return ok;
   });
 }
 

@@ -208,6 +208,22 @@ void MarkFailed(vtkPolyData* output)
 }
 }
 
+std::string Caught(const std::function<std::string()>& work)
+{
+  try
+  {
+    return work();
+  }
+  catch (const std::bad_alloc&)
+  {
+    return "out of memory; use a larger ElementSize (or PatchSize), fewer lights, or LightBanks";
+  }
+  catch (const std::exception& e)
+  {
+    return std::string("internal error: ") + e.what();
+  }
+}
+
 int Guarded(vtkAlgorithm* self, vtkDataObject* input, vtkPolyData* output,
   const std::function<int()>& work)
 {
@@ -216,21 +232,14 @@ int Guarded(vtkAlgorithm* self, vtkDataObject* input, vtkPolyData* output,
     MarkFailed(output);
     return 1;
   }
-  std::string failure;
-  try
+  bool done = false;
+  const std::string failure = Caught([&]() {
+    done = work() != 0;
+    return std::string();
+  });
+  if (done)
   {
-    if (work())
-    {
-      return 1;
-    }
-  }
-  catch (const std::bad_alloc&)
-  {
-    failure = "out of memory; use a larger ElementSize (or PatchSize), fewer lights, or LightBanks";
-  }
-  catch (const std::exception& e)
-  {
-    failure = std::string("internal error: ") + e.what();
+    return 1;
   }
   if (!failure.empty())
   {

@@ -41,6 +41,11 @@ constexpr const char* FailureMarker = "RadiosityFailed";
 /// True if `input` is the marked, empty output of a failed filter upstream.
 bool FailedUpstream(vtkDataObject* input);
 
+/// Runs `work` and returns its error (empty when it succeeded), an exception turned into
+/// the same words Guarded uses: for work that must reach a collective afterwards on MPI,
+/// where an exception escaping one rank would leave the others waiting.
+std::string Caught(const std::function<std::string()>& work);
+
 /// Runs a filter's work so that no C++ exception reaches Python or ParaView. Running out
 /// of memory or any other exception becomes the filter's error. When the work fails (it
 /// reports its own error and returns 0), `output` (may be null) is emptied and marked

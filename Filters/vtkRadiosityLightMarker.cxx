@@ -1,5 +1,6 @@
 #include "vtkRadiosityLightMarker.h"
 #include "vtkRadiosityAdapter.h"
+#include "vtkRadiosityPieces.h"
 
 #include "LightChecks.h"
 #include "LightMarking.h"
@@ -320,6 +321,11 @@ int vtkRadiosityLightMarker::RequestData(
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   return vtkRadiosityAdapter::Guarded(this, input, output, [&]() -> int {
+    if (input->GetNumberOfCells() == 0 && vtkRadiosityPieces::Parallel(outputVector->GetInformationObject(0)))
+    {
+      output->ShallowCopy(input); // this rank's piece of the scene is empty: nothing to mark
+      return 1;
+    }
     std::string error;
     if (!vtkRadiosityAdapter::RequireCellArray(input, "Reflectance", 3, false, error))
     {

@@ -162,29 +162,35 @@ int vtkRadiosityMesher::RequestData(
 {
   vtkSmartPointer<vtkPolyData> surface = AsPolyData(vtkDataSet::GetData(inputVector[0]));
   vtkPolyData* input = surface;
-  return vtkRadiosityAdapter::Guarded(this, input, vtkPolyData::GetData(outputVector), [&]() -> int {
+  // On ParaView's MPI server each rank meshes its piece, and a rank may hold none. Every
+  // rank joins the same collectives, whatever happened to it (an upstream failure, an
+  // exception), so one that fails never leaves the others waiting; patch ids then follow
+  // those of the ranks before.
+  vtkMultiProcessController* parallel = vtkRadiosityPieces::Parallel(outputVector->GetInformationObject(0));
+  return vtkRadiosityAdapter::Guarded(this, parallel ? nullptr : input, vtkPolyData::GetData(outputVector), [&]() -> int {
     vtkPolyData* output = vtkPolyData::GetData(outputVector);
-
-    // On ParaView's MPI server each rank meshes its piece, and a rank may hold none.
-    // Every rank joins the same collectives, so one that fails never leaves the others
-    // waiting; patch ids then follow those of the ranks before.
-    vtkMultiProcessController* parallel = vtkRadiosityPieces::Parallel(outputVector->GetInformationObject(0));
+    const bool upstream = vtkRadiosityAdapter::FailedUpstream(input);
     const bool empty = !input || input->GetNumberOfCells() == 0;
     radiosity::MeshedPolygons meshed;
     vtkRadiosityAdapter::WarningList warnings;
-    std::string error = parallel && empty ? std::string() : MeshPiece(this, input, meshed, warnings);
+    std::string error = upstream ? "a filter upstream failed"
+      : parallel && empty        ? std::string()
+                                 : vtkRadiosityAdapter::Caught([&]() { return MeshPiece(this, input, meshed, warnings); });
     long long firstPatch = 0;
     if (parallel)
     {
       const long long failures = vtkRadiosityPieces::SumOverRanks(parallel, error.empty() ? 0 : 1);
       const long long cells = vtkRadiosityPieces::SumOverRanks(parallel, empty ? 0 : input->GetNumberOfCells());
-      vtkRadiosityPieces::SumOverRanks(parallel, meshed.patches, &firstPatch);
+      vtkRadiosityPieces::SumOverRanks(parallel, error.empty() ? meshed.patches : 0, &firstPatch);
       error = !error.empty() || !failures ? error : "another rank could not mesh its piece (see its error)";
       error = !error.empty() || cells ? error : "the input has no polygons";
     }
     if (!error.empty())
     {
-      vtkErrorMacro(<< "Cannot mesh: " << error << ".");
+      if (!upstream) // that filter has said why
+      {
+        vtkErrorMacro(<< "Cannot mesh: " << error << ".");
+      }
       return 0;
     }
     if (empty)

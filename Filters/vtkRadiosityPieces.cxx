@@ -1,4 +1,5 @@
 #include "vtkRadiosityPieces.h"
+#include "vtkRadiosityAdapter.h"
 
 #include "vtkAppendPolyData.h"
 #include "vtkCellData.h"
@@ -13,6 +14,7 @@
 #include "vtkPolyData.h"
 #include "vtkTable.h"
 
+#include <string>
 #include <vector>
 
 namespace vtkRadiosityPieces
@@ -112,7 +114,24 @@ int SolveOnRoot(vtkMultiProcessController* controller, vtkPolyData* piece, vtkPo
       whole->ShallowCopy(append->GetOutput());
       whole->SetFieldData(first->GetFieldData());
     }
-    ok = work(whole, solved, table);
+    // A piece that failed upstream fails the whole solve (that filter said why); an
+    // exception on rank 0 must not skip the sends the other ranks wait for.
+    int failedRank = -1;
+    for (size_t rank = 0; rank < pieces.size() && failedRank < 0; ++rank)
+    {
+      failedRank = vtkRadiosityAdapter::FailedUpstream(pieces[rank]) ? static_cast<int>(rank) : -1;
+    }
+    bool worked = false;
+    std::string error = failedRank >= 0 ? std::string() : vtkRadiosityAdapter::Caught([&]() {
+      worked = work(whole, solved, table) != 0; // a failing work reports its own error
+      return std::string();
+    });
+    error = failedRank > 0 ? "the piece of rank " + std::to_string(failedRank) + " failed upstream" : error;
+    ok = worked;
+    if (!error.empty())
+    {
+      vtkLogF(ERROR, "Cannot solve: %s.", error.c_str());
+    }
     unsigned long gathered = 0, sent = 0; // KiB, for the log: what a run costs in traffic
     for (const auto& received : pieces)
     {

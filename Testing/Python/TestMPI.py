@@ -27,9 +27,10 @@ folder = tempfile.mkdtemp()
 def parallel_run(mode, ranks=2):
     out = os.path.join(folder, f"{mode}.vtp")
     env = dict(os.environ, PV_PLUGIN_PATH=PLUGIN_DIR)
+    # A hang (a rank left waiting in a collective) fails by the timeout.
     run = subprocess.run([shutil.which("mpiexec"), "--allow-run-as-root", "--oversubscribe", "-np", str(ranks),
                           "pvbatch", "--mpi", os.path.join(ROOT, "Testing", "Python", "mpi_solve.py"), SCENE, out, mode],
-                         capture_output=True, text=True, env=env, timeout=600)
+                         capture_output=True, text=True, env=env, timeout=300)
     errors = [line for line in (run.stdout + run.stderr).splitlines() if "ERR|" in line or "Traceback" in line]
     reader = vtkXMLPolyDataReader()
     reader.SetFileName(out)
@@ -66,4 +67,12 @@ for mode, tolerance in (("whole", 1e-6), ("redistributed", 1e-2)):
         worst = max([worst] + [np.abs(mine[c] - theirs[c]).max() / scale for c in common])
         check(len(common) >= 0.9 * len(theirs), f"{mode}: {len(common)} of {len(theirs)} elements found at the serial centres ({name})")
     check(worst <= tolerance, f"{mode}: largest difference from the serial run {worst:.2e} of the peak (at most {tolerance:g})")
+
+# Mark Lights before the mesher: an empty piece passes through, and a failure on rank 0
+# fails every rank without leaving one waiting in a collective (the run would hang).
+result, errors, code = parallel_run("marked")
+check(code == 0 and not errors and "Desk" in light_names(result), f"Mark Lights on 2 ranks: lights {light_names(result)}, errors {errors[:1]}")
+result, errors, code = parallel_run("broken")
+check(result.GetNumberOfCells() == 0 and any("MaterialPattern needs" in e for e in errors) and any("another rank could not mesh" in e for e in errors),
+      f"a Mark Lights error on rank 0 ends the run on both ranks: {[e[-90:] for e in errors][:3]}")
 finish("TestMPI")
