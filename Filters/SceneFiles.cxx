@@ -21,12 +21,14 @@ namespace SceneFiles
 {
 namespace
 {
-/// Adds one polygon of point ids (offset into raw.points) with its material and object.
-void AddPolygon(const vtkIdType* ids, vtkIdType count, int base, int material, int object, radiosity::RawScene& raw)
+/// Adds one polygon of point ids (offset into raw.points) with its material and object;
+/// `mirrored` reverses the corners (a transform with a negative determinant turns faces).
+void AddPolygon(const vtkIdType* ids, vtkIdType count, int base, int material, int object, bool mirrored,
+  radiosity::RawScene& raw)
 {
   for (vtkIdType k = 0; k < count; ++k)
   {
-    raw.connectivity.push_back(base + static_cast<int>(ids[k]));
+    raw.connectivity.push_back(base + static_cast<int>(ids[mirrored ? count - 1 - k : k]));
   }
   raw.offsets.push_back(static_cast<int>(raw.connectivity.size()));
   raw.material.push_back(material);
@@ -34,20 +36,17 @@ void AddPolygon(const vtkIdType* ids, vtkIdType count, int base, int material, i
 }
 
 /// A strip a b c d ... as triangles (a b c), (c b d), ... keeping one orientation.
-void AddStrip(const vtkIdType* ids, vtkIdType count, int base, int material, int object, radiosity::RawScene& raw)
+void AddStrip(const vtkIdType* ids, vtkIdType count, int base, int material, int object, bool mirrored,
+  radiosity::RawScene& raw)
 {
   for (vtkIdType k = 0; k + 2 < count; ++k)
   {
     const vtkIdType even[3] = { ids[k], ids[k + 1], ids[k + 2] };
     const vtkIdType odd[3] = { ids[k + 1], ids[k], ids[k + 2] };
-    AddPolygon(k % 2 ? odd : even, 3, base, material, object, raw);
+    AddPolygon(k % 2 ? odd : even, 3, base, material, object, mirrored, raw);
   }
 }
 
-double SrgbToLinear(double c)
-{
-  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
 
 } // namespace
 
@@ -97,6 +96,7 @@ int AppendPolygons(vtkPolyData* data, const vtkMatrix4x4* transform, int materia
   radiosity::RawScene& raw)
 {
   const int base = static_cast<int>(raw.points.size());
+  const bool mirrored = transform && vtkMatrix4x4::Determinant(&transform->Element[0][0]) < 0;
   for (vtkIdType p = 0; p < data->GetNumberOfPoints(); ++p)
   {
     double x[4] = { 0, 0, 0, 1 };
@@ -114,7 +114,7 @@ int AppendPolygons(vtkPolyData* data, const vtkMatrix4x4* transform, int materia
       vtkIdType count = 0;
       const vtkIdType* ids = nullptr;
       iterator->GetCurrentCell(count, ids);
-      (strip ? AddStrip : AddPolygon)(ids, count, base, material, object, raw);
+      (strip ? AddStrip : AddPolygon)(ids, count, base, material, object, mirrored, raw);
     }
   };
   each(data->GetPolys(), false);
@@ -137,22 +137,30 @@ TemporaryFolder::~TemporaryFolder()
 }
 
 
+double SrgbToLinear(double c)
+{
+  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
 radiosity::Vec3 MeanColour(vtkImageData* image)
 {
   vtkDataArray* scalars = image ? image->GetPointData()->GetScalars() : nullptr;
-  if (!scalars || scalars->GetNumberOfTuples() == 0 || scalars->GetNumberOfComponents() < 3)
+  const int components = scalars ? scalars->GetNumberOfComponents() : 0;
+  if (!scalars || scalars->GetNumberOfTuples() == 0 || components < 1)
   {
     return { 1, 1, 1 };
   }
-  // 8-bit textures hold sRGB; light adds up in linear values, so average those.
-  const bool encoded = scalars->GetDataTypeSize() == 1;
+  // Integer textures (8 or 16 bit) hold sRGB codes; light adds up in linear values, so
+  // average those. Grey (with or without alpha) counts for all three channels.
+  const bool encoded = scalars->GetDataType() != VTK_FLOAT && scalars->GetDataType() != VTK_DOUBLE;
+  const double full = encoded ? scalars->GetDataTypeMax() : 1.0;
   double sum[3] = { 0, 0, 0 };
   for (vtkIdType t = 0; t < scalars->GetNumberOfTuples(); ++t)
   {
     for (int c = 0; c < 3; ++c)
     {
-      const double v = scalars->GetComponent(t, c);
-      sum[c] += encoded ? SrgbToLinear(v / 255.0) : v;
+      const double v = scalars->GetComponent(t, components >= 3 ? c : 0) / full;
+      sum[c] += encoded ? SrgbToLinear(v) : v;
     }
   }
   const double n = static_cast<double>(scalars->GetNumberOfTuples());

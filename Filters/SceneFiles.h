@@ -45,7 +45,11 @@ public:
   std::string Path;
 };
 
-/// The mean linear RGB of an 8-bit sRGB image (or of a float one, as is); white if none.
+/// An sRGB-encoded value in [0, 1] as linear light.
+double SrgbToLinear(double encoded);
+
+/// The mean linear RGB of an image: integer (8 or 16 bit) sRGB codes made linear, float
+/// values as they are, grey counted for all channels; white if there is none.
 radiosity::Vec3 MeanColour(vtkImageData* image);
 
 }

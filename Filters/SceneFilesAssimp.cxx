@@ -34,6 +34,10 @@ std::string RunAssimp(const std::string& program, const std::string& in, const s
   const int state = vtksysProcess_GetState(process);
   const int code = state == vtksysProcess_State_Exited ? vtksysProcess_GetExitValue(process) : -1;
   vtksysProcess_Delete(process);
+  if (state == vtksysProcess_State_Expired)
+  {
+    return "assimp took more than " + std::to_string(static_cast<int>(timeout)) + " s and was stopped";
+  }
   if (code == 0 && vtksys::SystemTools::FileExists(out, true))
   {
     return std::string();

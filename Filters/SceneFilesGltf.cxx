@@ -296,9 +296,21 @@ std::string ReadGltf(const std::string& path, radiosity::RawScene& raw, std::vec
   int skipped = 0;
   if (model.Scenes.empty())
   {
+    // No scene: every node that is no other node's child is a root (children come with it).
+    std::vector<char> child(model.Nodes.size(), 0);
+    for (const Loader::Node& node : model.Nodes)
+    {
+      for (int c : node.Children)
+      {
+        if (c >= 0 && c < static_cast<int>(child.size()))
+        {
+          child[c] = 1;
+        }
+      }
+    }
     for (int n = 0; n < static_cast<int>(model.Nodes.size()); ++n)
     {
-      skipped += AppendNode(model, n, raw, 0);
+      skipped += child[n] ? 0 : AppendNode(model, n, raw, 0);
     }
   }
   else

@@ -37,10 +37,7 @@ vtkDataArray* Colours(vtkDataSetAttributes* attributes)
 
 radiosity::Vec3 Linear(vtkDataArray* colours, vtkIdType i)
 {
-  auto channel = [&](int c) {
-    const double v = colours->GetComponent(i, c) / 255.0;
-    return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
-  };
+  auto channel = [&](int c) { return SrgbToLinear(colours->GetComponent(i, c) / 255.0); };
   return { channel(0), channel(1), channel(2) };
 }
 

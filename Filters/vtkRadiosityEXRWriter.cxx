@@ -50,11 +50,17 @@ std::vector<radiosity::Vec3> PointValues(vtkDataArray* values)
   return points;
 }
 
-/// EXR separates layer and channel with '.', so a light's name keeps none.
-std::string LayerName(std::string name)
+/// EXR separates layer and channel with '.', so a light's name keeps none; a name taken
+/// already (by "Lamp.1" and "Lamp_1", say) gets a number, or one layer would be lost.
+std::string LayerName(std::string name, const std::vector<std::string>& taken)
 {
   std::replace(name.begin(), name.end(), '.', '_');
-  return name;
+  std::string unique = name;
+  for (int n = 2; std::find(taken.begin(), taken.end(), unique) != taken.end(); ++n)
+  {
+    unique = name + "_" + std::to_string(n);
+  }
+  return unique;
 }
 
 } // namespace
@@ -87,6 +93,7 @@ bool vtkRadiosityEXRWriter::Render(std::vector<std::string>& names, std::vector<
                   << (this->ArrayName ? this->ArrayName : "") << "'.");
     return false;
   }
+  int lightLayers = 0;
   if (this->LightLayers)
   {
     auto* lights = vtkStringArray::SafeDownCast(input->GetFieldData()->GetAbstractArray("LightNames"));
@@ -95,11 +102,12 @@ bool vtkRadiosityEXRWriter::Render(std::vector<std::string>& names, std::vector<
       vtkDataArray* light = input->GetPointData()->GetArray(("Radiosity_" + lights->GetValue(l)).c_str());
       if (light && light->GetNumberOfComponents() == 3)
       {
-        names.push_back(LayerName(lights->GetValue(l)));
+        names.push_back(LayerName(lights->GetValue(l), names));
         layers.push_back(PointValues(light));
+        ++lightLayers;
       }
     }
-    if (layers.size() < 2 && (layers.empty() || !names[0].empty()))
+    if (lightLayers == 0)
     {
       vtkErrorMacro(<< "Cannot render light layers: the input has no Radiosity_<light> point arrays "
                        "for its LightNames (the light-tagged solver's output has them).");
@@ -152,6 +160,12 @@ bool vtkRadiosityEXRWriter::RenderImage(vtkFloatArray* rgb)
   std::vector<std::vector<float>> images;
   if (!rgb || !this->GetInput() || !this->Render(names, images))
   {
+    return false;
+  }
+  if (!names[0].empty())
+  {
+    vtkErrorMacro(<< "Cannot render: the input has no 3-component point array '"
+                  << (this->ArrayName ? this->ArrayName : "") << "' (RenderImage shows ArrayName only).");
     return false;
   }
   const std::vector<float>& pixels = images[0];

@@ -206,7 +206,13 @@ void AppendAreaLight(vtkPolyData* data, const std::vector<radiosity::Vec3>& loop
   }
   if (vtkDataArray* patches = cd->GetArray("PatchId"))
   {
-    patches->SetComponent(cell, 0, patches->GetRange(0)[1] + 1);
+    // Its own patch: one past the largest id (scanned: GetRange's cache misses SetComponent).
+    double largest = -1;
+    for (vtkIdType c = 0; c < cell; ++c)
+    {
+      largest = std::max(largest, patches->GetComponent(c, 0));
+    }
+    patches->SetComponent(cell, 0, largest + 1);
   }
 }
 

@@ -7,6 +7,7 @@
 #include "PatchBasis.h"
 #include "Relight.h"
 #include "vtkRadiosityAdapter.h"
+#include "vtkRadiosityLightDefaults.h"
 #include "vtkRadiosityPieces.h"
 #include "WorkerPool.h"
 
@@ -91,7 +92,7 @@ int vtkRadiosityRelight::FillInputPortInformation(int port, vtkInformation* info
 
 namespace
 {
-/// Why a light's effective setting cannot be used (empty when it can): light is never
+/// The solver's basis, per element (cell array) or per patch node (field array plus the
 /// cell arrays that interpolate it), checked against the scene's patches.
 bool ReadBasis(vtkPolyData* scene, int patches, radiosity::BasisView& basis, std::string& error)
 {
@@ -687,43 +688,11 @@ int vtkRadiosityRelight::RequestData(
 
     // Default colours: the solver's, else the mean Emission of each light's cells.
     const int k = static_cast<int>(names.size());
-    vtkDataArray* defaults = input->GetFieldData()->GetArray("LightDefaultColors");
-    if (defaults && (defaults->GetNumberOfComponents() != 3 || defaults->GetNumberOfTuples() != k))
+    const std::vector<double> rgb = vtkRadiosityDefaultLightColours(input, k);
+    std::vector<radiosity::Vec3> defaultColours;
+    for (int l = 0; l < k; ++l)
     {
-      defaults = nullptr;
-    }
-    std::vector<double> emissionSum(3 * k, 0.0);
-    std::vector<int> emissionCount(k, 0);
-    vtkDataArray* lightId = input->GetCellData()->GetArray("LightId");
-    vtkDataArray* emission = input->GetCellData()->GetArray("Emission");
-    if (!defaults && lightId && emission && emission->GetNumberOfComponents() == 3)
-    {
-      for (vtkIdType c = 0; c < input->GetNumberOfCells(); ++c)
-      {
-        const double id = lightId->GetComponent(c, 0);
-        if (id >= 0 && id < k)
-        {
-          const int l = static_cast<int>(id);
-          for (int j = 0; j < 3; ++j)
-          {
-            emissionSum[3 * l + j] += emission->GetComponent(c, j);
-          }
-          ++emissionCount[l];
-        }
-      }
-    }
-    std::vector<radiosity::Vec3> defaultColours(k, { 1, 1, 1 });
-    for (int i = 0; i < k; ++i)
-    {
-      if (defaults)
-      {
-        defaultColours[i] = { defaults->GetComponent(i, 0), defaults->GetComponent(i, 1), defaults->GetComponent(i, 2) };
-      }
-      else if (emissionCount[i] > 0) // zero Emission stays zero, as in a combined solve
-      {
-        defaultColours[i] = radiosity::Vec3{ emissionSum[3 * i], emissionSum[3 * i + 1], emissionSum[3 * i + 2] } *
-          (1.0 / emissionCount[i]);
-      }
+      defaultColours.push_back({ rgb[3 * l], rgb[3 * l + 1], rgb[3 * l + 2] });
     }
     std::vector<radiosity::LightSetting> effective;
     std::vector<std::string> warnings;

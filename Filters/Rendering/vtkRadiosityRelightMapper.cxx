@@ -1,6 +1,7 @@
 #include "vtkRadiosityRelightMapper.h"
 
 #include "LightRig.h"
+#include "vtkRadiosityLightDefaults.h"
 
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
@@ -94,16 +95,14 @@ std::vector<std::string> LightNames(vtkPolyData* data)
   return names;
 }
 
-/// Each light's default colour: the solver's LightDefaultColors, else white.
+/// Each light's default colour, as the relight filter takes it.
 std::vector<radiosity::Vec3> DefaultColours(vtkPolyData* data, size_t k)
 {
-  std::vector<radiosity::Vec3> colours(k, { 1, 1, 1 });
-  vtkDataArray* defaults = data->GetFieldData()->GetArray("LightDefaultColors");
-  for (size_t l = 0; defaults && defaults->GetNumberOfComponents() == 3 && l < k &&
-       static_cast<vtkIdType>(l) < defaults->GetNumberOfTuples();
-       ++l)
+  const std::vector<double> rgb = vtkRadiosityDefaultLightColours(data, static_cast<int>(k));
+  std::vector<radiosity::Vec3> colours;
+  for (size_t l = 0; l < k; ++l)
   {
-    colours[l] = { defaults->GetComponent(l, 0), defaults->GetComponent(l, 1), defaults->GetComponent(l, 2) };
+    colours.push_back({ rgb[3 * l], rgb[3 * l + 1], rgb[3 * l + 2] });
   }
   return colours;
 }
@@ -246,6 +245,15 @@ void vtkRadiosityRelightMapper::UploadIfNeeded(vtkRenderer* ren)
     in.Problem = std::to_string(points) + " points x " + std::to_string(k) + " lights need " +
       std::to_string(points * k * 3) + " texels, more than this OpenGL's texture buffers hold (" +
       std::to_string(most) + "); relight with vtkRadiosityRelight instead";
+  }
+  GLint vectors = 0;
+  glGetIntegerv(GL_MAX_VERTEX_UNIFORM_VECTORS, &vectors);
+  constexpr int VtkOwnVectors = 64; // VTK's own vertex uniforms (matrices and the like), with room to spare
+  if (in.Problem.empty() && static_cast<GLint>(k) > vectors - VtkOwnVectors)
+  {
+    in.Problem = std::to_string(k) + " lights need " + std::to_string(k) + " uniform vectors, and this OpenGL's vertex " +
+      "shaders have " + std::to_string(vectors) + " (less what VTK uses); relight with vtkRadiosityRelight or " +
+      "group lights into LightBanks";
   }
   if (!in.Problem.empty())
   {

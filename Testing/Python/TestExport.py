@@ -119,6 +119,21 @@ def picture(array):
 
 layers = sum(np.asarray(c) * s * picture("Radiosity_" + n) for c, s, n in zip(COLOURS, INTENSITIES, names))
 check(np.allclose(layers, picture("Radiosity"), rtol=1e-5, atol=1e-6), "the relit picture is the sum of the light layers")
+# The solver's own output (no relit Radiosity) with one light, and two lights whose names
+# differ only by '.' and '_' (EXR's layer separator): every light keeps its layer.
+one = relight.solve(read_polydata(os.path.join(DATA, "paper_1lights.vtp")), 1.5, 0.75, ConvergenceThreshold=1e-2).GetOutput()
+single = os.path.join(folder, "one.exr")
+relight.write_exr(one, single, camera, size=(32, 24), light_layers=True)
+header = subprocess.run(["exrheader", single], capture_output=True, text=True).stdout
+check(f"{light_names(one)[0]}.R, 32-bit floating-point" in header, f"one light, no relit array: its layer is written")
+twins = relight.make_scene([[(0, 0, 0), (4, 0, 0), (4, 4, 0), (0, 4, 0)], [(1, 1, 2), (1, 2, 2), (2, 2, 2), (2, 1, 2)],
+                            [(2.5, 2.5, 2), (2.5, 3, 2), (3, 3, 2), (3, 2.5, 2)]],
+                           [(0.5, 0.5, 0.5)] * 3, [-1, 0, 1], ["Lamp.1", "Lamp_1"])
+twins = relight.solve(twins, 2.0, 1.0, ConvergenceThreshold=1e-2).GetOutput()
+twin_file = os.path.join(folder, "twins.exr")
+relight.write_exr(twins, twin_file, ((2, -6, 6), (2, 2, 0), (0, 0, 1), 40), size=(32, 24), light_layers=True)
+header = subprocess.run(["exrheader", twin_file], capture_output=True, text=True).stdout
+check("Lamp_1.R," in header and "Lamp_1_2.R," in header, "lights 'Lamp.1' and 'Lamp_1' get layers Lamp_1 and Lamp_1_2")
 try:
     relight.write_exr(relight.furnace_box(), os.path.join(folder, "x.exr"), camera, light_layers=True, array="None")
     check(False, "light layers of a scene without solutions are refused")

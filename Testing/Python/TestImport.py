@@ -12,6 +12,7 @@ import numpy as np
 from vtkmodules.util import numpy_support
 from vtkmodules.vtkCommonCore import vtkLogger
 from vtkmodules.vtkCommonDataModel import vtkSelection, vtkSelectionNode
+from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
 
 import relight
 from relight import cell_array, light_names, read_polydata
@@ -163,6 +164,25 @@ for path in (gltf_path, glb_path):
     check(abs(scene.GetBounds()[5] - 2.0) < 1e-6 and abs(scene.GetBounds()[1] - 1.0) < 1e-6,
           f"{kind}: the parent's scale puts the lamp at z = 2 (bounds {scene.GetBounds()})")
 
+# A file without scenes lists every node; children must come once, with their parent. A
+# mirroring scale turns faces inside out unless the corners are reversed (glTF 2.0, 3.7.4).
+document, _ = gltf_document(binary=False)
+del document["scenes"], document["scene"]
+flat = relight.import_scene(write("noscene.gltf", json.dumps(document)))
+check(flat.GetNumberOfCells() == 4, f"no scenes: each mesh once ({flat.GetNumberOfCells()} triangles, expected 4)")
+document, _ = gltf_document(binary=False)
+document["nodes"][0]["scale"] = [-1, 1, 1]
+mirrored = relight.import_scene(write("mirror.gltf", json.dumps(document)))
+normals = vtkPolyDataNormals()
+normals.SetInputData(mirrored)
+normals.ComputeCellNormalsOn()
+normals.ConsistencyOff()
+normals.AutoOrientNormalsOff()
+normals.SplittingOff()
+normals.Update()
+floor_z = numpy_support.vtk_to_numpy(normals.GetOutput().GetCellData().GetArray("Normals"))[0, 2]
+check(floor_z > 0.99, f"a floor mirrored in x still faces +z (normal z {floor_z:.2f})")
+
 # --- PLY: face colours (8-bit sRGB) as linear reflectance -------------------------------------
 ply = write("tiles.ply", """ply
 format ascii 1.0
@@ -269,6 +289,17 @@ _, catcher = marked(room, areas=[("Flat", 0, 1, 1, 1, 0, 0, 0, 0.5, 0.5, 1, 1, 1
 check("'Flat' needs a finite centre and a non-zero normal" in catcher.first_error(), f"a zero normal: {catcher.first_error()}")
 _, catcher = marked(room, ids=[99])
 check("cell id 99 is not in 0..5" in catcher.first_error(), f"an id out of range: {catcher.first_error()}")
+
+# Area lights added to a meshed scene get a patch each.
+meshed = relight.vtkRadiosityMesher()
+meshed.SetInputData(room)
+meshed.SetPatchSize(1.0)
+meshed.SetElementSize(0.5)
+meshed.Update()
+three, _ = marked(meshed.GetOutput(), areas=[(f"A{i}", 0, 0.5 + i, 1, 1.99, 0, 0, -1, 0.2, 0.2, 1, 1, 1) for i in range(3)])
+patch = cell_array(three, "PatchId").astype(int)
+check(len(set(patch[-3:])) == 3 and patch[-3:].min() > patch[:-3].max(),
+      f"three area lights on a meshed scene get three new patches ({list(patch[-3:])} after {patch[:-3].max()})")
 
 # Cells taken from the Cornell box's light: that light is left empty, so it goes.
 ceiling_cells = [c for c in range(box.GetNumberOfCells()) if cell_array(box, "LightId")[c] >= 0]

@@ -1,0 +1,33 @@
+#include "vtkRadiosityLightDefaults.h"
+
+#include "LightRig.h"
+
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkPolyData.h"
+
+std::vector<double> vtkRadiosityDefaultLightColours(vtkPolyData* data, int lights)
+{
+  std::vector<double> given;
+  vtkDataArray* defaults = data->GetFieldData()->GetArray("LightDefaultColors");
+  for (vtkIdType i = 0; defaults && defaults->GetNumberOfComponents() == 3 && i < 3 * defaults->GetNumberOfTuples(); ++i)
+  {
+    given.push_back(defaults->GetComponent(i / 3, static_cast<int>(i % 3)));
+  }
+  std::vector<int> ids;
+  std::vector<radiosity::Vec3> emission;
+  vtkDataArray* lightId = data->GetCellData()->GetArray("LightId");
+  vtkDataArray* emitted = data->GetCellData()->GetArray("Emission");
+  for (vtkIdType c = 0; lightId && emitted && emitted->GetNumberOfComponents() == 3 && c < data->GetNumberOfCells(); ++c)
+  {
+    ids.push_back(static_cast<int>(lightId->GetComponent(c, 0)));
+    emission.push_back({ emitted->GetComponent(c, 0), emitted->GetComponent(c, 1), emitted->GetComponent(c, 2) });
+  }
+  std::vector<double> rgb;
+  for (const radiosity::Vec3& c : radiosity::DefaultLightColours(lights, given, ids, emission))
+  {
+    rgb.insert(rgb.end(), { c.x, c.y, c.z });
+  }
+  return rgb;
+}
