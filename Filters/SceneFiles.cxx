@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <random>
 
 namespace SceneFiles
@@ -136,6 +137,27 @@ TemporaryFolder::~TemporaryFolder()
   vtksys::SystemTools::RemoveADirectory(this->Path);
 }
 
+
+bool GlbBytes(const std::string& json, const std::string& binary, std::string& bytes)
+{
+  std::string text = json;
+  text.append((4 - text.size() % 4) % 4, ' ');
+  std::string data = binary;
+  data.append((4 - data.size() % 4) % 4, '\0');
+  const size_t total = 12 + 8 + text.size() + (data.empty() ? 0 : 8 + data.size());
+  if (total > 0xFFFFFFFFull)
+  {
+    return false;
+  }
+  auto word = [](std::uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+  bytes = "glTF" + word(2) + word(static_cast<std::uint32_t>(total)) + word(static_cast<std::uint32_t>(text.size())) +
+    "JSON" + text;
+  if (!data.empty())
+  {
+    bytes += word(static_cast<std::uint32_t>(data.size())) + std::string("BIN\0", 4) + data;
+  }
+  return true;
+}
 
 double SrgbToLinear(double c)
 {

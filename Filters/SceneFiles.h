@@ -45,6 +45,10 @@ public:
   std::string Path;
 };
 
+/// A binary glTF file's bytes: header, the JSON chunk (space padded) and, when not
+/// empty, the binary chunk (zero padded). False when it would pass glTF's 4 GiB limit.
+bool GlbBytes(const std::string& json, const std::string& binary, std::string& bytes);
+
 /// An sRGB-encoded value in [0, 1] as linear light.
 double SrgbToLinear(double encoded);
 

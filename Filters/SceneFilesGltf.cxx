@@ -163,20 +163,9 @@ std::string WritePatched(const std::string& path, const GltfParts& parts, nlohma
     out << text;
     return copy;
   }
-  text.append((4 - text.size() % 4) % 4, ' ');
-  const std::string binary = parts.Binary + std::string((4 - parts.Binary.size() % 4) % 4, '\0');
-  auto word = [&out](std::uint32_t value) { out.write(reinterpret_cast<const char*>(&value), 4); };
-  out << "glTF";
-  word(2);
-  word(static_cast<std::uint32_t>(12 + 8 + text.size() + (binary.empty() ? 0 : 8 + binary.size())));
-  word(static_cast<std::uint32_t>(text.size()));
-  out << "JSON" << text;
-  if (!binary.empty())
-  {
-    word(static_cast<std::uint32_t>(binary.size()));
-    out.write("BIN\0", 4);
-    out << binary;
-  }
+  std::string bytes;
+  GlbBytes(text, parts.Binary, bytes); // no larger than the file it came from
+  out << bytes;
   return copy;
 }
 

@@ -2,6 +2,7 @@
 #include "vtkRadiosityAdapter.h"
 
 #include "AtomicFile.h"
+#include "SceneFiles.h"
 #include "Polygon.h"
 
 #include "vtkDataArray.h"
@@ -124,17 +125,6 @@ std::string AttributeName(const std::string& light, std::set<std::string>& taken
   return unique;
 }
 
-/// The whole .glb file: header, JSON chunk (space padded), binary chunk (zero padded).
-std::string GlbBytes(const json& document, const std::string& binary)
-{
-  std::string text = document.dump();
-  text.append((4 - text.size() % 4) % 4, ' ');
-  auto word = [](std::uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
-  return "glTF" + word(2) + word(static_cast<std::uint32_t>(12 + 8 + text.size() + 8 + binary.size())) +
-    word(static_cast<std::uint32_t>(text.size())) + "JSON" + text + word(static_cast<std::uint32_t>(binary.size())) +
-    std::string("BIN\0", 4) + binary;
-}
-
 } // namespace
 
 vtkRadiosityGLTFWriter::vtkRadiosityGLTFWriter() = default;
@@ -213,6 +203,14 @@ void vtkRadiosityGLTFWriter::WriteData()
                      { "extensions", { { "KHR_materials_unlit", json::object() } } } } } },
     { "buffers", { { { "byteLength", glb.Binary.size() } } } }, { "bufferViews", glb.Views },
     { "accessors", glb.Accessors } };
+  std::string bytes;
+  if (!SceneFiles::GlbBytes(document.dump(), glb.Binary, bytes))
+  {
+    vtkErrorMacro(<< "Cannot write " << this->FileName << ": " << glb.Binary.size() / 1073741824.0
+                  << " GiB of data is more than a .glb holds (4 GiB); write fewer lights or a coarser mesh.");
+    this->SetErrorCode(vtkErrorCode::UserError);
+    return;
+  }
   try
   {
     error = radiosity::WriteAtomically(this->FileName, [&](const char* temporary, bool& created) {
@@ -222,7 +220,7 @@ void vtkRadiosityGLTFWriter::WriteData()
         throw std::runtime_error(std::string("cannot open ") + temporary);
       }
       created = true;
-      out << GlbBytes(document, glb.Binary);
+      out << bytes;
       if (!out.flush())
       {
         throw std::runtime_error("the disk refused the data");

@@ -38,7 +38,8 @@ void main() { gl_FragColor = vec4(shade, 1.0); }`;
 
 /// A light's default colour split into a displayable colour and an intensity.
 function splitColour(rgb) {
-  const peak = Math.max(rgb[0], rgb[1], rgb[2], 1e-12);
+  const peak = Math.max(rgb[0], rgb[1], rgb[2]);
+  if (!(peak > 0)) return { hex: "#ffffff", intensity: 0 }; // a light with no default colour: white, off
   const hex = rgb.map((c) => Math.round((255 * c) / peak).toString(16).padStart(2, "0")).join("");
   return { hex: `#${hex}`, intensity: peak };
 }
@@ -53,7 +54,7 @@ function controlRow(light, onChange) {
   const { hex, intensity } = splitColour(light.defaultColor);
   row.innerHTML = `<label><input type="checkbox" checked> <span></span></label>
     <input type="color" value="${hex}">
-    <input type="range" min="0" max="${4 * intensity}" step="${intensity / 100}" value="${intensity}">`;
+    <input type="range" min="0" max="${4 * (intensity || 1)}" step="${(intensity || 1) / 100}" value="${intensity}">`;
   row.querySelector("span").textContent = light.name;
   const [enabled, colour, slider] = row.querySelectorAll("input");
   const weight = () => {
@@ -75,6 +76,8 @@ function applyQuery(controls, lights) {
         input.dispatchEvent(new Event("input"));
       }
     };
+    const wanted = Number(query.get(`intensity.${light.name}`));
+    if (wanted > Number(controls[i].slider.max)) controls[i].slider.max = String(wanted);
     set(controls[i].slider, "intensity", "value");
     set(controls[i].enabled, "enabled", "checked");
     if (query.has(`colour.${light.name}`)) {
