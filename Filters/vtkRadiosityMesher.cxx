@@ -117,8 +117,8 @@ namespace
 
 /// Meshes the polygons of `input` with `self`'s settings into `meshed`; an empty string
 /// or what is wrong.
-std::string MeshPiece(vtkRadiosityMesher* self, vtkPolyData* input, radiosity::MeshedPolygons& meshed,
-  vtkRadiosityAdapter::WarningList& warnings)
+std::string MeshPiece(vtkRadiosityMesher* self, vtkPolyData* input, double elementSize, double budget,
+  radiosity::MeshedPolygons& meshed, vtkRadiosityAdapter::WarningList& warnings)
 {
   radiosity::SceneMesh mesh;
   std::vector<radiosity::Vec3> emission;
@@ -142,8 +142,8 @@ std::string MeshPiece(vtkRadiosityMesher* self, vtkPolyData* input, radiosity::M
 
   radiosity::MesherOptions options;
   options.PatchSize = self->GetPatchSize();
-  options.ElementSize = self->GetElementSize();
-  options.ElementBudget = static_cast<double>(self->GetMaximumElements());
+  options.ElementSize = elementSize;
+  options.ElementBudget = budget;
   options.Warning = [self, &warnings](const std::string& message) { warnings.Add(self, message); };
   options.MergeTriangles = self->GetMergeTriangles();
   options.SharePatches = self->GetSharePatches();
@@ -153,6 +153,36 @@ std::string MeshPiece(vtkRadiosityMesher* self, vtkPolyData* input, radiosity::M
     return !abort.Stop();
   };
   return radiosity::MeshPolygons(mesh.points, mesh.offsets, mesh.connectivity, surfaceKey, options, meshed);
+}
+
+/// On MPI, MaximumElements bounds the whole scene: every rank searches the same element
+/// size over the sum of the ranks' counts (a rank without usable polygons counts none).
+double ElementSizeEverywhere(vtkRadiosityMesher* self, vtkMultiProcessController* parallel, vtkPolyData* input,
+  vtkRadiosityAdapter::WarningList& warnings)
+{
+  radiosity::SceneMesh mesh;
+  std::string error;
+  const bool usable = input && input->GetNumberOfCells() > 0 && !vtkRadiosityAdapter::FailedUpstream(input) &&
+    vtkRadiosityAdapter::CopyPolygons(input, mesh, error);
+  auto count = [&](double size) {
+    const double here =
+      usable ? radiosity::CountElements(mesh.points, mesh.offsets, mesh.connectivity, self->GetPatchSize(), size) : 0;
+    return static_cast<double>(vtkRadiosityPieces::SumOverRanks(parallel, static_cast<long long>(here)));
+  };
+  const double budget = static_cast<double>(self->GetMaximumElements());
+  const double wanted = count(self->GetElementSize());
+  if (wanted <= budget)
+  {
+    return self->GetElementSize();
+  }
+  const double size = radiosity::ElementSizeForBudget(count, self->GetPatchSize(), self->GetElementSize(), budget);
+  if (parallel->GetLocalProcessId() == 0)
+  {
+    warnings.Add(self, "ElementSize " + std::to_string(self->GetElementSize()) + " would make " +
+        std::to_string(static_cast<long long>(wanted)) + " elements over all ranks, more than MaximumElements (" +
+        std::to_string(static_cast<long long>(budget)) + "); using " + std::to_string(size) + ".");
+  }
+  return size;
 }
 
 } // namespace
@@ -173,9 +203,14 @@ int vtkRadiosityMesher::RequestData(
     const bool empty = !input || input->GetNumberOfCells() == 0;
     radiosity::MeshedPolygons meshed;
     vtkRadiosityAdapter::WarningList warnings;
+    const bool budget = parallel && this->MaximumElements > 0;
+    const double elementSize = budget ? ElementSizeEverywhere(this, parallel, input, warnings) : this->ElementSize;
+    const double localBudget = parallel ? 0.0 : static_cast<double>(this->MaximumElements);
     std::string error = upstream ? "a filter upstream failed"
       : parallel && empty        ? std::string()
-                                 : vtkRadiosityAdapter::Caught([&]() { return MeshPiece(this, input, meshed, warnings); });
+                                 : vtkRadiosityAdapter::Caught([&]() {
+                                     return MeshPiece(this, input, elementSize, localBudget, meshed, warnings);
+                                   });
     long long firstPatch = 0;
     if (parallel)
     {

@@ -169,7 +169,14 @@ double CountElements(const std::vector<Vec3>& points, const std::vector<int>& of
 double ElementSizeForBudget(const std::vector<Vec3>& points, const std::vector<int>& offsets,
   const std::vector<int>& connectivity, double patchSize, double elementSize, double budget)
 {
-  auto count = [&](double size) { return CountElements(points, offsets, connectivity, patchSize, size); };
+  return ElementSizeForBudget(
+    [&](double size) { return CountElements(points, offsets, connectivity, patchSize, size); }, patchSize,
+    elementSize, budget);
+}
+
+double ElementSizeForBudget(
+  const std::function<double(double)>& count, double patchSize, double elementSize, double budget)
+{
   if (count(elementSize) <= budget)
   {
     return elementSize;

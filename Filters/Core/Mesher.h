@@ -50,6 +50,11 @@ double CountElements(const std::vector<Vec3>& points, const std::vector<int>& of
 double ElementSizeForBudget(const std::vector<Vec3>& points, const std::vector<int>& offsets,
   const std::vector<int>& connectivity, double patchSize, double elementSize, double budget);
 
+/// The same search over any count of elements by size (the whole scene's, for a mesh
+/// split over several processes: every process makes the same calls in the same order).
+double ElementSizeForBudget(
+  const std::function<double(double)>& count, double patchSize, double elementSize, double budget);
+
 /// Splits each planar polygon (convex quads on a bilinear grid, others ear-clipped into
 /// triangles and split on a barycentric lattice) into patches with edges <= PatchSize (a
 /// sliver triangle, narrower than a quarter of its length, into patches of about that area), and each patch

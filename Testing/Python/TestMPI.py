@@ -68,6 +68,11 @@ for mode, tolerance in (("whole", 1e-6), ("redistributed", 1e-2)):
         check(len(common) >= 0.9 * len(theirs), f"{mode}: {len(common)} of {len(theirs)} elements found at the serial centres ({name})")
     check(worst <= tolerance, f"{mode}: largest difference from the serial run {worst:.2e} of the peak (at most {tolerance:g})")
 
+# MaximumElements bounds the whole scene, not each rank's piece: one element size for all.
+result, errors, code = parallel_run("budget")
+check(code == 0 and 150 <= result.GetNumberOfCells() <= 300,
+      f"MaximumElements 300 on 2 ranks: {result.GetNumberOfCells()} elements in all ({errors[:1]})")
+
 # Mark Lights before the mesher: an empty piece passes through, and a failure on rank 0
 # fails every rank without leaving one waiting in a collective (the run would hang).
 result, errors, code = parallel_run("marked")
