@@ -45,6 +45,7 @@ pqRadiosityLightsWidget::pqRadiosityLightsWidget(vtkSMProxy* proxy, vtkSMPropert
   layout->addWidget(this->Table);
   // The names are known once the filter has run: rebuild after every update of the data.
   this->Connection->Connect(proxy, vtkCommand::UpdateDataEvent, this, SLOT(rebuild()));
+  this->addPropertyLink(this, "rows", SIGNAL(rowsChanged()), property);
   this->rebuild();
 }
 
@@ -54,10 +55,28 @@ pqRadiosityLightsWidget::~pqRadiosityLightsWidget()
   this->Connection->Delete();
 }
 
-void pqRadiosityLightsWidget::apply()
+QList<QVariant> pqRadiosityLightsWidget::rows() const
 {
-  this->Superclass::apply();
-  this->proxy()->UpdateVTKObjects();
+  QList<QVariant> values;
+  for (const QString& item : this->Rows)
+  {
+    values.push_back(item);
+  }
+  return values;
+}
+
+void pqRadiosityLightsWidget::setRows(const QList<QVariant>& values)
+{
+  QStringList rows;
+  for (const QVariant& value : values)
+  {
+    rows.push_back(value.toString());
+  }
+  if (rows != this->Rows)
+  {
+    this->Rows = rows;
+    this->rebuild();
+  }
 }
 
 void pqRadiosityLightsWidget::rebuild()
@@ -73,7 +92,7 @@ void pqRadiosityLightsWidget::rebuild()
     return;
   }
   vtkSMPropertyHelper effective(info);
-  vtkSMPropertyHelper values(this->Property);
+  const QStringList& values = this->Rows;
   QVector<Light> lights;
   for (unsigned int n = 0; n + 5 < effective.GetNumberOfElements(); n += 6)
   {
@@ -91,23 +110,23 @@ void pqRadiosityLightsWidget::rebuild()
         light.Enabled = QString(effective.GetAsString(i + 5)).toInt() != 0;
       }
     }
-    for (unsigned int i = 0; i + 5 < values.GetNumberOfElements(); i += 6)
+    for (int i = 0; i + 5 < values.size(); i += 6)
     {
-      if (light.Name == values.GetAsString(i))
+      if (light.Name == values[i])
       {
         // 'nan' keeps the default, which the effective values above already hold.
         bool numbers = true;
         double color[3];
         for (int c = 0; c < 3; ++c)
         {
-          color[c] = QString(values.GetAsString(i + 1 + c)).toDouble();
+          color[c] = values[i + 1 + c].toDouble();
           numbers = numbers && std::isfinite(color[c]);
         }
         light.ColorEdited = numbers;
         std::copy(color, color + (numbers ? 3 : 0), light.Color);
-        const double intensity = QString(values.GetAsString(i + 4)).toDouble();
+        const double intensity = values[i + 4].toDouble();
         light.Intensity = std::isfinite(intensity) ? intensity : light.Intensity;
-        light.Enabled = QString(values.GetAsString(i + 5)).toInt() != 0;
+        light.Enabled = values[i + 5].toInt() != 0;
         light.Edited = true;
       }
     }
@@ -221,27 +240,21 @@ void pqRadiosityLightsWidget::push()
   {
     return;
   }
-  std::vector<std::string> elements;
+  QStringList rows;
   for (const Light& light : this->Lights)
   {
     if (!light.Edited)
     {
       continue;
     }
-    elements.push_back(light.Name.toStdString());
+    rows.push_back(light.Name);
     for (double c : light.Color)
     {
-      elements.push_back(light.ColorEdited ? QString::number(c, 'g', 9).toStdString() : "nan");
+      rows.push_back(light.ColorEdited ? QString::number(c, 'g', 9) : QString("nan"));
     }
-    elements.push_back(QString::number(light.Intensity, 'g', 9).toStdString());
-    elements.push_back(light.Enabled ? "1" : "0");
+    rows.push_back(QString::number(light.Intensity, 'g', 9));
+    rows.push_back(light.Enabled ? "1" : "0");
   }
-  vtkSMPropertyHelper helper(this->Property);
-  helper.SetNumberOfElements(static_cast<unsigned int>(elements.size()));
-  for (unsigned int i = 0; i < elements.size(); ++i)
-  {
-    helper.Set(i, elements[i].c_str());
-  }
-  Q_EMIT this->changeAvailable();
-  Q_EMIT this->changeFinished();
+  this->Rows = rows;
+  Q_EMIT this->rowsChanged(); // the links set the property and say a change is available
 }

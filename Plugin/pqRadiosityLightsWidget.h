@@ -5,6 +5,9 @@
 
 #include "pqPropertyWidget.h"
 
+#include <QList>
+#include <QStringList>
+#include <QVariant>
 #include <QVector>
 
 class QTableWidget;
@@ -14,15 +17,20 @@ class pqRadiosityLightsWidget : public pqPropertyWidget
 {
   Q_OBJECT
   typedef pqPropertyWidget Superclass;
+  /// The property's elements (name, r, g, b, intensity, enabled per edited light), linked
+  /// to it through ParaView's property links: Apply, Reset and undo work as for any panel
+  /// widget, and a display panel applies each change at once.
+  Q_PROPERTY(QList<QVariant> rows READ rows WRITE setRows NOTIFY rowsChanged)
 
 public:
   pqRadiosityLightsWidget(vtkSMProxy* proxy, vtkSMProperty* property, QWidget* parent = nullptr);
   ~pqRadiosityLightsWidget() override;
 
-  /// Sends the rows to the VTK object. The rows are written to the property directly,
-  /// not through property links, so the links' accept alone would send nothing (and a
-  /// display panel, which applies each change at once, would show none).
-  void apply() override;
+  QList<QVariant> rows() const;
+  void setRows(const QList<QVariant>& values);
+
+Q_SIGNALS:
+  void rowsChanged();
 
 private Q_SLOTS:
   /// Rows for the lights the filter found (its LightNamesInfo), values from the property.
@@ -44,6 +52,7 @@ private:
   void paintColorButton(int row);
 
   vtkSMProperty* Property;
+  QStringList Rows; ///< the property's elements as the links last gave or took them
   QTableWidget* Table;
   QVector<Light> Lights;
   vtkEventQtSlotConnect* Connection;

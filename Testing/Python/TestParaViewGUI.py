@@ -11,7 +11,7 @@ import guitest  # noqa: E402
 from paraview.simple import FindSource, GetActiveViewOrCreate, Render, SaveScreenshot, SetActiveSource  # noqa: E402
 from PyQt5.QtCore import Qt, QTimer  # noqa: E402
 from PyQt5.QtTest import QTest  # noqa: E402
-from PyQt5.QtWidgets import QApplication, QColorDialog, QPushButton, QScrollArea, QTableWidget  # noqa: E402
+from PyQt5.QtWidgets import QApplication, QCheckBox, QColorDialog, QPushButton, QScrollArea, QTableWidget  # noqa: E402
 
 result = guitest.Result()
 demo = guitest.data_file("demo_pipeline.py")
@@ -63,6 +63,27 @@ buttons = colour_buttons()
 if result.check(len(buttons) == 8, "the lights panel shows %d colour buttons, expected 8" % len(buttons)):
     opened = [i for i, button in enumerate(buttons) if click_opens_dialog(button)]
     result.check(len(opened) == 8, "a click on each colour button opens the colour dialog (opened for %s)" % opened)
+
+# An On box unchecked in the filter's panel is a pending change, as for any property:
+# nothing changes until Apply (the rows go through ParaView's property links).
+boxes = [b for t in app.allWidgets() if isinstance(t, QTableWidget) and t.isVisible()
+         and t.horizontalHeaderItem(3) is not None and t.horizontalHeaderItem(3).text() == "On"
+         for b in (t.cellWidget(r, 3) for r in range(t.rowCount())) if isinstance(b, QCheckBox)]
+apply_buttons = [b for b in app.allWidgets() if isinstance(b, QPushButton) and b.objectName() == "Accept" and b.isVisible()]
+if result.check(len(boxes) == 8 and len(apply_buttons) == 1, "found %d On boxes and %d Apply buttons" % (len(boxes), len(apply_buttons))):
+    before = list(relit.LightSettings)
+    boxes[1].click()
+    for _ in range(20):
+        app.processEvents()
+    pending = list(relit.LightSettings) == before and apply_buttons[0].isEnabled()
+    apply_buttons[0].click()
+    for _ in range(50):
+        app.processEvents()
+    applied = list(relit.LightSettings)
+    cool = applied.index("CoolWhite") if "CoolWhite" in applied else -6
+    result.check(pending and applied[cool + 5 : cool + 6] == ["0"],
+                 "an On box is a pending change until Apply (pending %s; after Apply %s)" % (pending, applied[cool:cool + 6]))
+    relit.LightSettings = before  # back to the demo's lights for the screenshot below
 
 settings = list(relit.LightSettings)
 # Turn the warm light off and make the amber one strong and red.
