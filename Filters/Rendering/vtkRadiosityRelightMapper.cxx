@@ -16,6 +16,8 @@
 #include "vtkShaderProgram.h"
 #include "vtkStringArray.h"
 #include "vtkTextureObject.h"
+#include "vtkUnsignedCharArray.h"
+#include "Relight.h"
 #include "vtk_glew.h"
 
 #include <cmath>
@@ -40,6 +42,14 @@ struct vtkRadiosityRelightMapper::Internals
   int ShaderLights = -1; ///< the k the current shader was built for
   std::string Problem;
   std::string Reported; ///< the problem last reported, so each is said once
+  bool UseGPU = true;
+  bool OnCPU = false;       ///< this data is relit on the CPU (asked for, or fallen back to)
+  std::string WhyCPU;       ///< the reason, said once
+  std::string ReportedCPU;
+  vtkSmartPointer<vtkPolyData> Coloured; ///< the input with CPU-summed display colours
+  std::vector<float> ColouredWeights;   ///< the weights and exposure it was made with
+  double ColouredExposure = -1;
+  vtkMTimeType ColouredFor = 0;
 };
 
 namespace
@@ -238,29 +248,29 @@ void vtkRadiosityRelightMapper::UploadIfNeeded(vtkRenderer* ren)
   {
     in.Problem = "the input has no LightNames (the light-tagged solver's output has them)";
   }
-  GLint most = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &most);
-  if (in.Problem.empty() && static_cast<double>(points) * k * 3 > most)
-  {
-    in.Problem = std::to_string(points) + " points x " + std::to_string(k) + " lights need " +
-      std::to_string(points * k * 3) + " texels, more than this OpenGL's texture buffers hold (" +
-      std::to_string(most) + "); relight with vtkRadiosityRelight instead";
-  }
-  GLint vectors = 0;
-  glGetIntegerv(GL_MAX_VERTEX_UNIFORM_VECTORS, &vectors);
-  constexpr int VtkOwnVectors = 64; // VTK's own vertex uniforms (matrices and the like), with room to spare
-  if (in.Problem.empty() && static_cast<GLint>(k) > vectors - VtkOwnVectors)
-  {
-    in.Problem = std::to_string(k) + " lights need " + std::to_string(k) + " uniform vectors, and this OpenGL's vertex " +
-      "shaders have " + std::to_string(vectors) + " (less what VTK uses); relight with vtkRadiosityRelight or " +
-      "group lights into LightBanks";
-  }
   if (!in.Problem.empty())
   {
     in.Names.clear();
     return;
   }
   in.Defaults = DefaultColours(data, k);
+  GLint most = 0, vectors = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &most);
+  glGetIntegerv(GL_MAX_VERTEX_UNIFORM_VECTORS, &vectors);
+  constexpr int VtkOwnVectors = 64; // VTK's own vertex uniforms (matrices and the like), with room to spare
+  in.WhyCPU = !in.UseGPU ? "asked for (UseGPU off)"
+    : static_cast<double>(points) * k * 3 > most
+    ? std::to_string(points) + " points x " + std::to_string(k) + " lights need " + std::to_string(points * k * 3) +
+      " texels, more than this OpenGL's texture buffers hold (" + std::to_string(most) + ")"
+    : static_cast<GLint>(k) > vectors - VtkOwnVectors
+    ? std::to_string(k) + " lights need as many uniform vectors, and this OpenGL's vertex shaders have " +
+      std::to_string(vectors) + " (less what VTK uses)"
+    : std::string();
+  in.OnCPU = !in.WhyCPU.empty();
+  if (in.OnCPU)
+  {
+    return; // the solutions stay on the CPU
+  }
   // Point-major: the k solutions of a vertex lie together, for one texel run per vertex.
   std::vector<float> values(points * k * 3);
   for (size_t l = 0; l < k; ++l)
@@ -310,53 +320,35 @@ void vtkRadiosityRelightMapper::DescribeLights(vtkPolyData* data, vtkStringArray
 
 void vtkRadiosityRelightMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
 {
-  this->Superclass::RenderPieceStart(ren, act);
-  this->UploadIfNeeded(ren);
-  if (!this->Internal->Problem.empty() && this->Internal->Problem != this->Internal->Reported)
-  {
-    vtkErrorMacro(<< "Cannot relight: " << this->Internal->Problem << ".");
-    this->Internal->Reported = this->Internal->Problem;
-  }
-}
-
-void vtkRadiosityRelightMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
-{
-  if (this->Internal->Texture->GetHandle())
-  {
-    this->Internal->Texture->Deactivate();
-  }
-  this->Superclass::RenderPieceFinish(ren, act);
-}
-
-bool vtkRadiosityRelightMapper::GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
-{
-  return this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act) ||
-    this->Internal->ShaderLights != this->GetNumberOfLights();
-}
-
-void vtkRadiosityRelightMapper::ReplaceShaderValues(
-  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
-{
-  this->Superclass::ReplaceShaderValues(shaders, ren, act);
-  const int k = this->GetNumberOfLights();
-  this->Internal->ShaderLights = k;
-  if (ren->GetSelector())
-  {
-    return; // picking draws ids, not colours
-  }
-  Extend(shaders[vtkShader::Vertex], VertexDeclarations(k), VertexColour(k));
-  Extend(shaders[vtkShader::Fragment], "in vec3 relightColor;\n", "  gl_FragData[0] = vec4(relightColor, 1.0);\n");
-}
-
-void vtkRadiosityRelightMapper::SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
-{
-  this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
   Internals& in = *this->Internal;
-  vtkShaderProgram* program = cellBO.Program;
-  if (!program || !program->IsUniformUsed("relightSolutions"))
+  this->UploadIfNeeded(ren);
+  if (!in.Problem.empty() && in.Problem != in.Reported)
   {
-    return;
+    vtkErrorMacro(<< "Cannot relight: " << in.Problem << ".");
+    in.Reported = in.Problem;
   }
+  if (in.OnCPU && in.WhyCPU != in.ReportedCPU)
+  {
+    vtkWarningMacro(<< "Relighting on the CPU: " << in.WhyCPU << "; each light change uploads new colours.");
+    in.ReportedCPU = in.WhyCPU;
+  }
+  // The CPU path draws display colours as VTK's own mapper would; the GPU path draws none.
+  const bool scalars = in.OnCPU && in.Problem.empty();
+  if (this->ScalarVisibility != (scalars ? 1 : 0))
+  {
+    this->ScalarVisibility = scalars ? 1 : 0;
+    this->ColorMode = VTK_COLOR_MODE_DIRECT_SCALARS;
+  }
+  if (scalars)
+  {
+    this->CurrentInput = this->CpuColoured();
+  }
+  this->Superclass::RenderPieceStart(ren, act);
+}
+
+std::vector<float> vtkRadiosityRelightMapper::CurrentWeights()
+{
+  Internals& in = *this->Internal;
   std::vector<radiosity::LightSetting> effective;
   std::vector<std::string> warnings;
   const std::string invalid = in.Rig.Resolve(in.Names, in.Defaults, in.Time, effective, warnings);
@@ -379,6 +371,117 @@ void vtkRadiosityRelightMapper::SetMapperShaderParameters(vtkOpenGLHelper& cellB
   {
     weights.push_back(static_cast<float>(w));
   }
+  return weights;
+}
+
+vtkPolyData* vtkRadiosityRelightMapper::CpuColoured()
+{
+  Internals& in = *this->Internal;
+  vtkPolyData* data = in.UploadedData;
+  const std::vector<float> weights = this->CurrentWeights();
+  if (in.Coloured && in.ColouredFor == data->GetMTime() && in.ColouredWeights == weights &&
+    in.ColouredExposure == in.Exposure)
+  {
+    return in.Coloured;
+  }
+  const vtkIdType points = data->GetNumberOfPoints();
+  std::vector<float> linear(3 * static_cast<size_t>(points), 0.0f);
+  for (size_t l = 0; l < in.Names.size(); ++l)
+  {
+    vtkDataArray* solution = data->GetPointData()->GetArray(("Radiosity_" + in.Names[l]).c_str());
+    for (vtkIdType p = 0; solution && p < points; ++p)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        linear[3 * p + c] += weights[3 * l + c] * static_cast<float>(solution->GetComponent(p, c));
+      }
+    }
+  }
+  vtkNew<vtkUnsignedCharArray> colours;
+  colours->SetName("RelitDisplayColors");
+  colours->SetNumberOfComponents(3);
+  colours->SetNumberOfTuples(points);
+  static const radiosity::DisplayCurve curve;
+  curve.Apply(linear.data(), linear.size(), in.Exposure, colours->GetPointer(0));
+  in.Coloured = vtkSmartPointer<vtkPolyData>::New();
+  in.Coloured->ShallowCopy(data);
+  in.Coloured->GetPointData()->SetScalars(colours);
+  in.ColouredFor = data->GetMTime();
+  in.ColouredWeights = weights;
+  in.ColouredExposure = in.Exposure;
+  return in.Coloured;
+}
+
+vtkUnsignedCharArray* vtkRadiosityRelightMapper::MapScalars(double alpha)
+{
+  int cellFlag = 0;
+  return this->MapScalars(alpha, cellFlag);
+}
+
+vtkUnsignedCharArray* vtkRadiosityRelightMapper::MapScalars(double alpha, int& cellFlag)
+{
+  vtkDataSet* drawn = this->Internal->OnCPU && this->CurrentInput ? this->CurrentInput : this->GetInput();
+  return this->Superclass::MapScalars(drawn, alpha, cellFlag);
+}
+
+void vtkRadiosityRelightMapper::SetUseGPU(bool use)
+{
+  if (use != this->Internal->UseGPU)
+  {
+    this->Internal->UseGPU = use;
+    this->Internal->UploadedData = nullptr; // decide again at the next render
+  }
+}
+
+bool vtkRadiosityRelightMapper::GetUseGPU() const
+{
+  return this->Internal->UseGPU;
+}
+
+bool vtkRadiosityRelightMapper::GetRelitOnCPU() const
+{
+  return this->Internal->OnCPU;
+}
+
+void vtkRadiosityRelightMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
+{
+  if (this->Internal->Texture->GetHandle())
+  {
+    this->Internal->Texture->Deactivate();
+  }
+  this->Superclass::RenderPieceFinish(ren, act);
+}
+
+bool vtkRadiosityRelightMapper::GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+{
+  const int lights = this->Internal->OnCPU ? -2 : this->GetNumberOfLights(); // -2: the CPU path's plain shader
+  return this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act) || this->Internal->ShaderLights != lights;
+}
+
+void vtkRadiosityRelightMapper::ReplaceShaderValues(
+  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
+{
+  this->Superclass::ReplaceShaderValues(shaders, ren, act);
+  const int k = this->GetNumberOfLights();
+  this->Internal->ShaderLights = this->Internal->OnCPU ? -2 : k;
+  if (ren->GetSelector() || this->Internal->OnCPU)
+  {
+    return; // picking draws ids, not colours; the CPU path draws its colours as scalars
+  }
+  Extend(shaders[vtkShader::Vertex], VertexDeclarations(k), VertexColour(k));
+  Extend(shaders[vtkShader::Fragment], "in vec3 relightColor;\n", "  gl_FragData[0] = vec4(relightColor, 1.0);\n");
+}
+
+void vtkRadiosityRelightMapper::SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+{
+  this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
+  Internals& in = *this->Internal;
+  vtkShaderProgram* program = cellBO.Program;
+  if (!program || !program->IsUniformUsed("relightSolutions"))
+  {
+    return;
+  }
+  std::vector<float> weights = this->CurrentWeights();
   weights.resize(std::max<size_t>(weights.size(), 3), 0.0f);
   if (in.Texture->GetHandle())
   {

@@ -22,8 +22,10 @@
 #include "vtkRadiosityRenderingModule.h" // for export macro
 
 #include <memory> // for the internals
+#include <vector> // for the weights
 
 class vtkStringArray;
+class vtkUnsignedCharArray;
 
 class VTKRADIOSITYRENDERING_EXPORT vtkRadiosityRelightMapper : public vtkOpenGLPolyDataMapper
 {
@@ -68,6 +70,17 @@ public:
   /// intensity, enabled 1/0), as vtkRadiosityRelight's LightSettingsInfo.
   void DescribeLights(vtkPolyData* data, vtkStringArray* names, vtkStringArray* settings);
 
+  ///@{
+  /// Relight on the GPU (default) or on the CPU: the CPU sums the solutions into display
+  /// colours after each change and uploads them, as the relight filter would. The mapper
+  /// also falls back to the CPU by itself, and says so once, where this OpenGL cannot hold
+  /// the solutions in a texture buffer or the weights in uniforms.
+  void SetUseGPU(bool use);
+  bool GetUseGPU() const;
+  /// True when the last render relit on the CPU (asked for, or fallen back to).
+  bool GetRelitOnCPU() const;
+  ///@}
+
   /// The number of lights of the data last uploaded (0 before the first render).
   int GetNumberOfLights() const;
 
@@ -90,13 +103,22 @@ protected:
   void ReplaceShaderValues(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  /// The CPU path's colours are on the data drawn (CurrentInput), not on the input.
+  vtkUnsignedCharArray* MapScalars(double alpha) override;
+  vtkUnsignedCharArray* MapScalars(double alpha, int& cellFlag) override;
 
 private:
   vtkRadiosityRelightMapper(const vtkRadiosityRelightMapper&) = delete;
   void operator=(const vtkRadiosityRelightMapper&) = delete;
 
-  /// Uploads the solutions when the input changed since the last upload.
+  /// Uploads the solutions when the input changed since the last upload (or decides that
+  /// the CPU must relight).
   void UploadIfNeeded(vtkRenderer* ren);
+  /// The lights' weights now (3 per light), zero with the error reported once when a
+  /// setting is invalid.
+  std::vector<float> CurrentWeights();
+  /// The input with display colours summed on the CPU, made again only after a change.
+  vtkPolyData* CpuColoured();
 
   struct Internals;
   std::unique_ptr<Internals> Internal;

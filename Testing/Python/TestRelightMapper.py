@@ -59,6 +59,25 @@ mapper.SetLightEnabled(0, True)
 view.render()
 check("light 'WarmWhite' has intensity -1" in mapper.GetLastProblem(), f"a bad setting is reported: {mapper.GetLastProblem()}")
 
+# --- the CPU path: asked for here (a weak OpenGL falls back to it by itself) ----------------------
+cpu_mapper = relight.vtkRadiosityRelightMapper()
+cpu_mapper.SetInputData(solved)
+cpu_mapper.SetUseGPU(False)
+for i, (colour, intensity, enabled) in settings.items():
+    cpu_mapper.SetLightColor(i, *colour)
+    cpu_mapper.SetLightIntensity(i, intensity)
+    cpu_mapper.SetLightEnabled(i, enabled)
+cpu_mapper.SetExposure(2.0)
+catcher = relight.ErrorCatcher(cpu_mapper)
+cpu_view = FrameRenderer(ROOM_CAMERA, SIZE, cpu_mapper)
+on_cpu = pixels(cpu_view.render())
+check(cpu_mapper.GetRelitOnCPU() and np.abs(on_cpu - cpu).mean() < 1.0 and len(catcher.warnings) == 1,
+      f"UseGPU off: relit on the CPU, = the filter's picture within {np.abs(on_cpu - cpu).mean():.3f} / 255, "
+      f"said once ({len(catcher.warnings)} warning)")
+cpu_mapper.SetLightEnabled(0, False)
+check(np.abs(pixels(cpu_view.render()) - on_cpu).mean() > 2 and len(catcher.warnings) == 1,
+      "the CPU path follows a light change too, without saying so again")
+
 # --- a room with 40 lamps (a 5 x 8 grid in the ceiling) and 64 lamps (8 x 8) ----------------------
 def lamp_room(columns, rows, size=8.0, height=3.0):
     """A closed room with a grid of small downward ceiling lamps, one light each."""
