@@ -321,7 +321,7 @@ int vtkLightTaggedRadiosity::Solve(vtkPolyData* input, vtkPolyData* output, vtkT
     options.TimeBudget = this->TimeBudget;
     options.Method = static_cast<radiosity::FormFactorMethod>(this->FormFactorMethod);
     options.Samples = this->FormFactorSamples;
-    options.Threads = this->NumberOfThreads;
+    options.Threads = vtkRadiosityAdapter::Threads(this->NumberOfThreads);
     options.AmbientTerm = this->AmbientTerm;
     options.SeparateDirect = this->SeparateDirect;
     options.Visibility = effect(this->VisibilityEffect);

@@ -225,7 +225,8 @@ public:
   ///@}
 
   ///@{
-  /// Threads for the solve; 0 (default) uses every hardware thread.
+  /// Threads for the solve; 0 (default) uses VTK's SMP thread count where its backend runs
+  /// threads (ParaView's Settings, Number of threads), else every hardware thread.
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
   vtkGetMacro(NumberOfThreads, int);
   ///@}

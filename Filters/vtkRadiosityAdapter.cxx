@@ -9,6 +9,7 @@
 #include "vtkNew.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSMPTools.h"
 #include "vtkStringArray.h"
 
 #include <cmath>
@@ -206,6 +207,16 @@ void MarkFailed(vtkPolyData* output)
   marker->InsertNextValue(1);
   output->GetFieldData()->AddArray(marker);
 }
+}
+
+int Threads(int asked)
+{
+  if (asked > 0)
+  {
+    return asked;
+  }
+  const char* backend = vtkSMPTools::GetBackend();
+  return backend && std::string(backend) != "Sequential" ? vtkSMPTools::GetEstimatedNumberOfThreads() : 0;
 }
 
 std::string Caught(const std::function<std::string()>& work)

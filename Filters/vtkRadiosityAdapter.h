@@ -35,6 +35,11 @@ bool ReadSceneArrays(vtkPolyData* input, radiosity::SceneMesh& mesh,
 /// `count` names from the field array LightNames, or Light<i> for missing ones.
 std::vector<std::string> LightNames(vtkFieldData* fields, int count);
 
+/// The threads to use: `asked` when above 0; else VTK's SMP thread count where its backend
+/// runs threads (ParaView's Settings, Number of threads), else 0: every hardware thread
+/// (the Sequential backend, Debian's, would otherwise mean one).
+int Threads(int asked);
+
 /// Field array on the empty output of a filter that failed.
 constexpr const char* FailureMarker = "RadiosityFailed";
 

@@ -46,7 +46,7 @@ namespace
 /// Shared by every relight filter: threads are started once per process, not per frame.
 const radiosity::WorkerPool& Pool()
 {
-  static const radiosity::WorkerPool pool(0);
+  static const radiosity::WorkerPool pool(vtkRadiosityAdapter::Threads(0));
   return pool;
 }
 
