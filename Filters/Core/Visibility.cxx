@@ -25,14 +25,20 @@ struct Visibility::Internals
 
 namespace
 {
-void OnEmbreeError(void* user, RTCError code, const char* message)
+/// One Embree device for the process: a device starts its own threads, and scenes (one
+/// per solve, relight or picture) share them. Made on first use, kept to the end.
+RTCDevice SharedDevice()
 {
-  auto* error = static_cast<std::string*>(user);
-  if (error->empty())
-  {
-    *error = "Embree error " + std::to_string(static_cast<int>(code)) + ": " +
-      (message ? message : "unknown");
-  }
+  static const RTCDevice device = rtcNewDevice(nullptr);
+  return device;
+}
+
+/// Embree's last error on this thread, as words; empty if none.
+std::string DeviceError(RTCDevice device)
+{
+  const RTCError code = rtcGetDeviceError(device);
+  return code == RTC_ERROR_NONE ? std::string()
+                                : "Embree error " + std::to_string(static_cast<int>(code)) + " while building the scene";
 }
 
 void InitRay(RTCRay& ray, const Vec3& origin, const Vec3& direction, float tfar)
@@ -58,13 +64,14 @@ Visibility::Visibility(const SceneMesh& mesh)
   Internals& d = *Impl;
   // Embree works in float: center the scene so large coordinates keep their precision.
   d.Origin = Bounds(mesh.points).Centre();
-  d.Device = rtcNewDevice(nullptr);
+  d.Device = SharedDevice();
   if (!d.Device)
   {
     d.Error = "Embree could not create a device";
     return;
   }
-  rtcSetDeviceErrorFunction(d.Device, OnEmbreeError, &d.Error);
+  rtcRetainDevice(d.Device);
+  DeviceError(d.Device); // clears an error left on this thread by an earlier scene
   std::vector<Vec3> loop;
   for (int i = 0; i < mesh.NumberOfPolygons(); ++i)
   {
@@ -107,6 +114,7 @@ Visibility::Visibility(const SceneMesh& mesh)
   rtcAttachGeometry(d.Scene, geom);
   rtcReleaseGeometry(geom);
   rtcCommitScene(d.Scene);
+  d.Error = DeviceError(d.Device);
 }
 
 Visibility::~Visibility()
