@@ -169,4 +169,13 @@ print(f"furnace: B in [{b.min():.6f}, {b.max():.6f}], closed form {1 / (1 - rho)
 # within 0.13 % here (point collocation alone had met 1e-5 while not conserving power).
 check(np.allclose(b, 1 / (1 - rho), rtol=2e-3), "furnace B = 1/(1-rho) within 0.2 %")
 
+# Sizes left out follow the scene: the furnace box in millimetres meshes as in metres.
+metres = relight.solve(relight.furnace_box(2.0, rho), ConvergenceThreshold=1e-3)
+millimetres = relight.solve(relight.furnace_box(2000.0, rho), ConvergenceThreshold=1e-3)
+mesher_m, mesher_mm = metres.GetInputAlgorithm(), millimetres.GetInputAlgorithm()
+check(abs(mesher_mm.GetPatchSize() - 1000 * mesher_m.GetPatchSize()) < 1e-9 and
+      metres.GetOutput().GetNumberOfCells() == millimetres.GetOutput().GetNumberOfCells(),
+      f"solve without sizes: patch {mesher_m.GetPatchSize():g} m and {mesher_mm.GetPatchSize():g} mm, "
+      f"{metres.GetOutput().GetNumberOfCells()} elements both")
+
 finish("TestPipeline")

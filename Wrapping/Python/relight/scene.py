@@ -101,17 +101,21 @@ def read_polydata(path):
     return data
 
 
-def solve(scene, patch_size, element_size, **solver_settings):
+def solve(scene, patch_size=None, element_size=None, **solver_settings):
     """Meshes and solves `scene` (vtkPolyData); returns the updated solver (its
     GetOutput() has the solutions, GetInputAlgorithm() is the mesher).
 
+    Sizes left out are the mesher's suggestion for the scene (a sixth of its extent,
+    rounded; the element a quarter of the patch), whatever its unit.
     `solver_settings` are vtkLightTaggedRadiosity properties, e.g. MaximumShots=500.
     Raises RuntimeError with the filters' message if meshing or solving fails.
     """
     mesher = vtkRadiosityMesher()
     mesher.SetInputData(scene)
-    mesher.SetPatchSize(patch_size)
-    mesher.SetElementSize(element_size)
+    if patch_size is None or element_size is None:
+        mesher.UpdateInformation()  # the suggestion comes with the information pass
+    mesher.SetPatchSize(patch_size if patch_size is not None else mesher.GetSuggestedPatchSize())
+    mesher.SetElementSize(element_size if element_size is not None else mesher.GetSuggestedElementSize())
     solver = vtkLightTaggedRadiosity()
     solver.SetInputConnection(mesher.GetOutputPort())
     for name, value in solver_settings.items():
