@@ -1,4 +1,5 @@
 #include "vtkRadiosityAdapter.h"
+#include "vtkRadiosityLightDefaults.h"
 
 #include "vtkAlgorithm.h"
 #include "vtkCellArray.h"
@@ -166,11 +167,11 @@ bool ReadSceneArrays(vtkPolyData* input, radiosity::SceneMesh& mesh,
 std::vector<std::string> LightNames(vtkFieldData* fields, int count)
 {
   std::vector<std::string> names(count);
-  auto* given = fields ? vtkStringArray::SafeDownCast(fields->GetAbstractArray("LightNames")) : nullptr;
+  const std::vector<std::string> given = vtkRadiosityLightNames(fields);
   std::set<std::string> used;
   for (int i = 0; i < count; ++i)
   {
-    std::string name = given && i < given->GetNumberOfValues() ? given->GetValue(i) : std::string();
+    std::string name = i < static_cast<int>(given.size()) ? given[i] : std::string();
     // Names become array names: keep them non-empty and unique.
     if (name.empty() || !used.insert(name).second)
     {

@@ -1,6 +1,7 @@
 #include "vtkRadiosityEXRWriter.h"
 #include "vtkRadiosityAbort.h"
 #include "vtkRadiosityAdapter.h"
+#include "vtkRadiosityLightDefaults.h"
 
 #include "HdrImage.h"
 
@@ -96,13 +97,12 @@ bool vtkRadiosityEXRWriter::Render(std::vector<std::string>& names, std::vector<
   int lightLayers = 0;
   if (this->LightLayers)
   {
-    auto* lights = vtkStringArray::SafeDownCast(input->GetFieldData()->GetAbstractArray("LightNames"));
-    for (vtkIdType l = 0; lights && l < lights->GetNumberOfValues(); ++l)
+    for (const std::string& name : vtkRadiosityLightNames(input->GetFieldData()))
     {
-      vtkDataArray* light = input->GetPointData()->GetArray(("Radiosity_" + lights->GetValue(l)).c_str());
+      vtkDataArray* light = input->GetPointData()->GetArray(("Radiosity_" + name).c_str());
       if (light && light->GetNumberOfComponents() == 3)
       {
-        names.push_back(LayerName(lights->GetValue(l), names));
+        names.push_back(LayerName(name, names));
         layers.push_back(PointValues(light));
         ++lightLayers;
       }

@@ -1,5 +1,6 @@
 #include "vtkRadiosityGLTFWriter.h"
 #include "vtkRadiosityAdapter.h"
+#include "vtkRadiosityLightDefaults.h"
 
 #include "AtomicFile.h"
 #include "SceneFiles.h"
@@ -170,25 +171,25 @@ void vtkRadiosityGLTFWriter::WriteData()
   {
     attributes["COLOR_0"] = glb.AddVec3(Floats(relit, this->Exposure, true), false);
   }
-  auto* names = vtkStringArray::SafeDownCast(input->GetFieldData()->GetAbstractArray("LightNames"));
+  const std::vector<std::string> names = vtkRadiosityLightNames(input->GetFieldData());
   vtkDataArray* defaults = input->GetFieldData()->GetArray("LightDefaultColors");
   json lights = json::array();
   std::set<std::string> taken;
-  for (vtkIdType l = 0; names && l < names->GetNumberOfValues(); ++l)
+  for (vtkIdType l = 0; l < static_cast<vtkIdType>(names.size()); ++l)
   {
-    vtkDataArray* light = input->GetPointData()->GetArray(("Radiosity_" + names->GetValue(l)).c_str());
+    vtkDataArray* light = input->GetPointData()->GetArray(("Radiosity_" + names[l]).c_str());
     if (!light || light->GetNumberOfComponents() != 3)
     {
       continue;
     }
-    const std::string attribute = AttributeName(names->GetValue(l), taken);
+    const std::string attribute = AttributeName(names[l], taken);
     attributes[attribute] = glb.AddVec3(Floats(light, 1.0, false), false);
     double colour[3] = { 1, 1, 1 };
     if (defaults && defaults->GetNumberOfComponents() == 3 && l < defaults->GetNumberOfTuples())
     {
       defaults->GetTuple(l, colour);
     }
-    lights.push_back({ { "name", names->GetValue(l) }, { "attribute", attribute },
+    lights.push_back({ { "name", names[l] }, { "attribute", attribute },
       { "defaultColor", { colour[0], colour[1], colour[2] } } });
   }
   const json primitive = { { "attributes", attributes }, { "indices", glb.AddIndices(Triangles(mesh)) },

@@ -6,6 +6,7 @@
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkPolyData.h"
+#include "vtkStringArray.h"
 
 std::vector<double> vtkRadiosityDefaultLightColours(vtkPolyData* data, int lights)
 {
@@ -30,4 +31,15 @@ std::vector<double> vtkRadiosityDefaultLightColours(vtkPolyData* data, int light
     rgb.insert(rgb.end(), { c.x, c.y, c.z });
   }
   return rgb;
+}
+
+std::vector<std::string> vtkRadiosityLightNames(vtkFieldData* fields)
+{
+  std::vector<std::string> names;
+  auto* given = fields ? vtkStringArray::SafeDownCast(fields->GetAbstractArray("LightNames")) : nullptr;
+  for (vtkIdType i = 0; given && i < given->GetNumberOfValues(); ++i)
+  {
+    names.push_back(given->GetValue(i));
+  }
+  return names;
 }

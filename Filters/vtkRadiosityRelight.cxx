@@ -642,16 +642,9 @@ int vtkRadiosityRelight::RequestData(
     this->NamesString.clear();
 
     // Lights: the solver's LightNames, else every Radiosity_* point or cell array.
-    std::vector<std::string> names;
     const std::string prefix = "Radiosity_";
-    if (auto* given = vtkStringArray::SafeDownCast(input->GetFieldData()->GetAbstractArray("LightNames")))
-    {
-      for (vtkIdType i = 0; i < given->GetNumberOfValues(); ++i)
-      {
-        names.push_back(given->GetValue(i));
-      }
-    }
-    else
+    std::vector<std::string> names = vtkRadiosityLightNames(input->GetFieldData());
+    if (!input->GetFieldData()->GetAbstractArray("LightNames"))
     {
       vtkFieldData* source = input->GetPointData()->GetNumberOfArrays() > 0
         ? static_cast<vtkFieldData*>(input->GetPointData())

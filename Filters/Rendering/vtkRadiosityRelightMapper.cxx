@@ -92,18 +92,6 @@ void Extend(vtkShader* shader, const std::string& declarations, const std::strin
   shader->SetSource(source);
 }
 
-std::vector<std::string> LightNames(vtkPolyData* data)
-{
-  std::vector<std::string> names;
-  if (auto* given = vtkStringArray::SafeDownCast(data->GetFieldData()->GetAbstractArray("LightNames")))
-  {
-    for (vtkIdType i = 0; i < given->GetNumberOfValues(); ++i)
-    {
-      names.push_back(given->GetValue(i));
-    }
-  }
-  return names;
-}
 
 /// Each light's default colour, as the relight filter takes it.
 std::vector<radiosity::Vec3> DefaultColours(vtkPolyData* data, size_t k)
@@ -229,7 +217,7 @@ void vtkRadiosityRelightMapper::UploadIfNeeded(vtkRenderer* ren)
   }
   in.UploadedData = data;
   in.UploadedTime = data->GetMTime();
-  in.Names = LightNames(data);
+  in.Names = vtkRadiosityLightNames(data->GetFieldData());
   in.Defaults.assign(in.Names.size(), { 1, 1, 1 });
   in.Problem.clear();
   const size_t points = static_cast<size_t>(data->GetNumberOfPoints());
@@ -298,7 +286,7 @@ void vtkRadiosityRelightMapper::DescribeLights(vtkPolyData* data, vtkStringArray
   {
     return;
   }
-  const std::vector<std::string> lights = LightNames(data);
+  const std::vector<std::string> lights = vtkRadiosityLightNames(data->GetFieldData());
   std::vector<radiosity::LightSetting> effective;
   std::vector<std::string> warnings;
   if (!this->Internal->Rig.Resolve(lights, DefaultColours(data, lights.size()), this->Internal->Time, effective, warnings)
