@@ -247,14 +247,17 @@ int vtkLightTaggedRadiosity::RequestData(
     {
       return this->Solve(input, output, history);
     }
-    // Rank 0 solves the whole scene (light transport needs all of it) and every rank gets
-    // its own piece of the result.
-    return vtkRadiosityPieces::SolveOnRoot(parallel, input, output, history,
-      [this](vtkPolyData* whole, vtkPolyData* solved, vtkTable* table) { return this->Solve(whole, solved, table); });
+    // Light transport needs the whole scene: every rank holds it, computes the transport
+    // to its share of the receivers, and keeps its own piece of the result.
+    return vtkRadiosityPieces::SolveTogether(parallel, input, output, history,
+      [this, parallel](vtkPolyData* whole, vtkPolyData* solved, vtkTable* table) {
+        return this->Solve(whole, solved, table, parallel);
+      });
   });
 }
 
-int vtkLightTaggedRadiosity::Solve(vtkPolyData* input, vtkPolyData* output, vtkTable* history)
+int vtkLightTaggedRadiosity::Solve(
+  vtkPolyData* input, vtkPolyData* output, vtkTable* history, vtkMultiProcessController* ranks)
 {
   {
     radiosity::SceneMesh mesh;
@@ -308,7 +311,8 @@ int vtkLightTaggedRadiosity::Solve(vtkPolyData* input, vtkPolyData* output, vtkT
       vtkErrorMacro(<< "Cannot solve: " << solver.Error() << ".");
       return 0;
     }
-    vtkRadiosityAdapter::WarningList warnings;
+    // Every rank finds the same warnings; rank 0 says them.
+    vtkRadiosityAdapter::WarningList warnings(ranks && ranks->GetLocalProcessId() != 0);
     for (const std::string& warning : radiosity::CheckLights(
            mesh, solver.Geometry(), solver.Rays(), vtkRadiosityAdapter::LightNames(input->GetFieldData(), lights)))
     {
@@ -328,6 +332,7 @@ int vtkLightTaggedRadiosity::Solve(vtkPolyData* input, vtkPolyData* output, vtkT
     options.Interreflection = effect(this->InterreflectionEffect);
     options.Color = effect(this->ColorEffect);
     options.ConvergedSolutions = effect(this->ConvergedLightsEffect);
+    options.Group = vtkRadiosityPieces::Group(ranks);
     const vtkRadiosityAbortWatch abort(this);
     options.Progress = [this, abort](double f) {
       this->UpdateProgress(f);
@@ -446,6 +451,12 @@ int vtkLightTaggedRadiosity::Solve(vtkPolyData* input, vtkPolyData* output, vtkT
     fields->AddArray(status);
     vtkLogF(INFO, "LightTaggedRadiosity: %s; %d shots, %.3f s; %s", method.c_str(), stats.Shots,
       this->LastSolveSeconds, radiosity::SummarizeEffects(effects).c_str());
+    if (stats.Ranks > 1)
+    {
+      vtkLogF(INFO, "LightTaggedRadiosity: rank %d of %d received for %d of %d elements and cast %lld rays; %lld sums over the ranks, %.3f MB sent by each",
+        ranks->GetLocalProcessId(), stats.Ranks, stats.ReceivingElements, mesh.NumberOfPolygons(), stats.OwnRays,
+        stats.Collectives, stats.CollectiveBytes / 1e6);
+    }
 
     vtkNew<vtkDoubleArray> unshot;
     unshot->SetName("UnshotHistory");

@@ -40,6 +40,7 @@
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkRadiosityFiltersModule.h" // for export macro
 
+class vtkMultiProcessController;
 class vtkTable;
 
 class VTKRADIOSITYFILTERS_EXPORT vtkLightTaggedRadiosity : public vtkPolyDataAlgorithm
@@ -250,8 +251,9 @@ private:
   void operator=(const vtkLightTaggedRadiosity&) = delete;
 
   /// Solves `input` (a whole scene) into `output` and `history`; 0 with the error
-  /// reported when the input cannot be solved.
-  int Solve(vtkPolyData* input, vtkPolyData* output, vtkTable* history);
+  /// reported when the input cannot be solved. With `ranks`, every rank of it calls this
+  /// on the same scene and each computes the transport to its share of the receivers.
+  int Solve(vtkPolyData* input, vtkPolyData* output, vtkTable* history, vtkMultiProcessController* ranks = nullptr);
 
   int SolutionMode = LIGHT_TAGGED;
   int SolverMethod = SOLVER_AUTO;

@@ -265,7 +265,10 @@ int Guarded(vtkAlgorithm* self, vtkDataObject* input, vtkPolyData* output,
 
 void WarningList::Add(vtkObject* self, const std::string& message)
 {
-  vtkWarningWithObjectMacro(self, << message);
+  if (!this->Quiet)
+  {
+    vtkWarningWithObjectMacro(self, << message);
+  }
   this->Messages.push_back(message);
 }
 

@@ -64,12 +64,18 @@ int Guarded(vtkAlgorithm* self, vtkDataObject* input, vtkPolyData* output,
 class WarningList
 {
 public:
+  /// `quiet`: keep the messages for the Warnings array without printing them.
+  explicit WarningList(bool quiet = false)
+    : Quiet(quiet)
+  {
+  }
   void Add(vtkObject* self, const std::string& message);
   /// Sets Warnings on `fields` to the upstream ones it holds plus ours, in a new array so
   /// that the input's (shared by a shallow copy) stays as it was; adds nothing if none.
   void AddTo(vtkFieldData* fields) const;
 
 private:
+  bool Quiet;
   std::vector<std::string> Messages;
 };
 

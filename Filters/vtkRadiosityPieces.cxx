@@ -6,6 +6,7 @@
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
+#include "vtkCommunicator.h"
 #include "vtkLogger.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkMultiProcessController.h"
@@ -79,93 +80,97 @@ vtkMultiProcessController* Parallel(vtkInformation* outputInformation)
   return processes > 1 && pieces == processes ? controller : nullptr;
 }
 
-int SolveOnRoot(vtkMultiProcessController* controller, vtkPolyData* piece, vtkPolyData* output, vtkTable* table,
-  const std::function<int(vtkPolyData* whole, vtkPolyData* result, vtkTable* table)>& work)
+namespace
 {
-  constexpr int ResultTag = 7841, TableTag = 7842;
-  const int me = controller->GetLocalProcessId();
+/// The whole scene on every rank: the pieces with cells appended in rank order, with the
+/// field data of the first of them. Empty where none has cells.
+void GatherWhole(vtkMultiProcessController* controller, vtkPolyData* piece, vtkPolyData* whole, int& failedRank)
+{
   std::vector<vtkSmartPointer<vtkDataObject>> pieces;
   controller->Gather(piece, pieces, 0);
-  int ok = 0;
-  if (me == 0)
+  failedRank = -1;
+  if (controller->GetLocalProcessId() == 0)
   {
-    // The whole scene: the pieces with cells, appended in rank order; the field data of
-    // the first of them. Each rank's slice starts after the cells and points before it.
     vtkNew<vtkAppendPolyData> append;
-    std::vector<Slice> slices(pieces.size());
-    Slice next;
     vtkPolyData* first = nullptr;
     for (size_t rank = 0; rank < pieces.size(); ++rank)
     {
       auto* data = vtkPolyData::SafeDownCast(pieces[rank]);
-      slices[rank] = next;
+      if (failedRank < 0 && vtkRadiosityAdapter::FailedUpstream(pieces[rank]))
+      {
+        failedRank = static_cast<int>(rank);
+      }
       if (data && data->GetNumberOfCells() > 0)
       {
         append->AddInputData(data);
         first = first ? first : data;
-        next.FirstCell += data->GetNumberOfCells();
-        next.FirstPoint += data->GetNumberOfPoints();
       }
     }
-    vtkNew<vtkPolyData> whole, solved;
     if (first)
     {
       append->Update();
       whole->ShallowCopy(append->GetOutput());
       whole->SetFieldData(first->GetFieldData());
     }
-    // A piece that failed upstream fails the whole solve (that filter said why); an
-    // exception on rank 0 must not skip the sends the other ranks wait for.
-    int failedRank = -1;
-    for (size_t rank = 0; rank < pieces.size() && failedRank < 0; ++rank)
-    {
-      failedRank = vtkRadiosityAdapter::FailedUpstream(pieces[rank]) ? static_cast<int>(rank) : -1;
-    }
-    bool worked = false;
-    std::string error = failedRank >= 0 ? std::string() : vtkRadiosityAdapter::Caught([&]() {
-      worked = work(whole, solved, table) != 0; // a failing work reports its own error
+  }
+  controller->Broadcast(&failedRank, 1, 0);
+  controller->Broadcast(whole, 0);
+}
+} // namespace
+
+int SolveTogether(vtkMultiProcessController* controller, vtkPolyData* piece, vtkPolyData* output, vtkTable* table,
+  const std::function<int(vtkPolyData* whole, vtkPolyData* result, vtkTable* table)>& work)
+{
+  const bool cells = piece->GetNumberOfCells() > 0;
+  Slice slice; // where this rank's cells and points lie in the appended whole
+  SumOverRanks(controller, cells ? piece->GetNumberOfCells() : 0, &slice.FirstCell);
+  SumOverRanks(controller, cells ? piece->GetNumberOfPoints() : 0, &slice.FirstPoint);
+  vtkNew<vtkPolyData> whole, solved;
+  int failedRank = -1;
+  GatherWhole(controller, piece, whole, failedRank);
+  // Every rank sees the same whole scene, so they all pass or fail the same checks; a piece
+  // that failed upstream fails them all (that filter said why).
+  int ok = 0;
+  std::string error = failedRank >= 0 ? "the piece of rank " + std::to_string(failedRank) + " failed upstream" : "";
+  if (error.empty())
+  {
+    error = vtkRadiosityAdapter::Caught([&]() {
+      ok = work(whole, solved, table);
       return std::string();
     });
-    error = failedRank > 0 ? "the piece of rank " + std::to_string(failedRank) + " failed upstream" : error;
-    ok = worked;
-    if (!error.empty())
-    {
-      vtkLogF(ERROR, "Cannot solve: %s.", error.c_str());
-    }
-    unsigned long gathered = 0, sent = 0; // KiB, for the log: what a run costs in traffic
-    for (const auto& received : pieces)
-    {
-      gathered += received ? received->GetActualMemorySize() : 0;
-    }
-    for (int rank = static_cast<int>(pieces.size()) - 1; rank >= 0; --rank)
-    {
-      auto* data = vtkPolyData::SafeDownCast(pieces[rank]);
-      vtkNew<vtkPolyData> cut;
-      if (ok && data)
-      {
-        CutPiece(solved, slices[rank], data, cut);
-      }
-      if (rank == 0)
-      {
-        output->ShallowCopy(cut);
-      }
-      else
-      {
-        controller->Send(cut, rank, ResultTag);
-        controller->Send(table, rank, TableTag);
-        sent += cut->GetActualMemorySize();
-      }
-    }
-    vtkLogF(INFO, "Radiosity on %d ranks: %.2f MB of scene gathered on rank 0, %.2f MB of results sent",
-      static_cast<int>(pieces.size()), gathered / 1024.0, sent / 1024.0);
   }
-  else
+  if (!error.empty() && failedRank != 0)
   {
-    controller->Receive(output, 0, ResultTag);
-    controller->Receive(table, 0, TableTag);
+    vtkLogF(ERROR, "Cannot solve: %s.", error.c_str());
   }
-  controller->Broadcast(&ok, 1, 0);
-  return ok;
+  int all = 0;
+  controller->AllReduce(&ok, &all, 1, vtkCommunicator::MIN_OP);
+  if (all)
+  {
+    CutPiece(solved, slice, piece, output);
+  }
+  if (controller->GetLocalProcessId() == 0)
+  {
+    vtkLogF(INFO, "Radiosity on %d ranks: %.2f MB of scene on every rank", controller->GetNumberOfProcesses(),
+      whole->GetActualMemorySize() / 1024.0);
+  }
+  return all;
+}
+
+radiosity::ProcessGroup Group(vtkMultiProcessController* controller)
+{
+  radiosity::ProcessGroup group;
+  if (!controller || controller->GetNumberOfProcesses() < 2)
+  {
+    return group;
+  }
+  group.Rank = controller->GetLocalProcessId();
+  group.Ranks = controller->GetNumberOfProcesses();
+  group.SumAll = [controller](double* values, std::size_t count) {
+    const std::vector<double> mine(values, values + count); // MPI sends and receives apart
+    controller->AllReduce(mine.data(), values, static_cast<vtkIdType>(count), vtkCommunicator::SUM_OP);
+  };
+  return group;
 }
 
 long long SumOverRanks(vtkMultiProcessController* controller, long long value, long long* before)

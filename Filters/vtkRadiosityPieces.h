@@ -1,8 +1,11 @@
 // The filters on ParaView's MPI server: every rank holds a piece of the scene. The solver
-// sees the whole scene (gathered on rank 0) and each rank gets its own piece of the
-// result; the mesher numbers patches across ranks. Not wrapped.
+// sees the whole scene on every rank, each rank computes the transport to its share of the
+// receivers, and each rank gets its own piece of the result; the mesher numbers patches
+// across ranks. Not wrapped.
 #ifndef vtkRadiosityPieces_h
 #define vtkRadiosityPieces_h
+
+#include "ProcessGroup.h"
 
 #include "vtkSmartPointer.h"
 #include "vtkType.h"
@@ -24,11 +27,16 @@ namespace vtkRadiosityPieces
 vtkMultiProcessController* Parallel(vtkInformation* outputInformation);
 
 /// Runs `work` (whole scene in, whole result and table out; 0 on failure, reported by
-/// it) on rank 0 with every rank's piece gathered there, and gives each rank its own
-/// piece of the result in `output` and a copy of the table in `table`. One rank works, so
-/// a time budget or an abort stops all alike. Returns 0 on every rank when the work fails.
-int SolveOnRoot(vtkMultiProcessController* controller, vtkPolyData* piece, vtkPolyData* output, vtkTable* table,
+/// it) on every rank with the whole scene (the pieces gathered and broadcast), and gives
+/// each rank its own piece of the result in `output`. The ranks must share the work through
+/// collectives inside `work` (the solver's ProcessGroup), so every rank's `work` reaches
+/// the same calls. Returns 0 on every rank when the work fails on any.
+int SolveTogether(vtkMultiProcessController* controller, vtkPolyData* piece, vtkPolyData* output, vtkTable* table,
   const std::function<int(vtkPolyData* whole, vtkPolyData* result, vtkTable* table)>& work);
+
+/// The solver's process group for the ranks of `controller` (one process where null): its
+/// sum is the controller's AllReduce.
+radiosity::ProcessGroup Group(vtkMultiProcessController* controller);
 
 /// The sum of `value` over the ranks, and the sum over the ranks before this one.
 long long SumOverRanks(vtkMultiProcessController* controller, long long value, long long* before = nullptr);

@@ -1,7 +1,9 @@
 #include "HierarchicalRadiosity.h"
 #include "ShootingState.h"
 
+#include <algorithm>
 #include <atomic>
+#include <functional>
 
 namespace radiosity
 {
@@ -44,8 +46,10 @@ constexpr double kNearRadii = 2.0;
 class LinkBuilder
 {
 public:
+  /// `owned`: the receiver patches this process links to; `sumOverRanks`: the total of a
+  /// value over the processes solving together (the value itself for one).
   LinkBuilder(const SceneGeometry& g, ShooterFormFactors& factors, const PatchNodes& nodes, const WorkerPool& pool,
-    int samples, double threshold)
+    int samples, double threshold, const std::vector<char>& owned, std::function<double(double)> sumOverRanks)
     : G(g)
     , Factors(factors)
     , Nodes(nodes)
@@ -55,6 +59,8 @@ public:
     , Patches(static_cast<int>(g.patchElements.size()))
     , Kind(Patches)
     , NodeFactor(nodes.Count())
+    , Owned(owned)
+    , SumOverRanks(std::move(sumOverRanks))
   {
   }
 
@@ -100,10 +106,11 @@ private:
   }
 
   /// Scales every link of the shooter so that it delivers no more than it shoots, and
-  /// exactly that when it sees a closed scene (ShooterFormFactors::ConservationScale).
+  /// exactly that when it sees a closed scene (ShooterFormFactors::ConservationScale), over
+  /// the links of every process.
   void Conserve(int shooter, ShooterLinks& links) const
   {
-    const double scale = Factors.ConservationScale(shooter, links.ReceivingArea);
+    const double scale = Factors.ConservationScale(shooter, SumOverRanks(links.ReceivingArea));
     if (scale == 1.0)
     {
       return;
@@ -132,12 +139,12 @@ private:
       long long chunkRays = 0;
       for (int q = begin; q < end; ++q)
       {
-        Kind[q] = q == shooter ? LinkKind::None : Decide(shooter, q, shotFraction, scratch, chunkRays);
+        Kind[q] = q == shooter || !Owned[q] ? LinkKind::None : Decide(shooter, q, shotFraction, scratch, chunkRays);
       }
       rays += chunkRays;
     });
     stats.RayCount += rays;
-    stats.FormFactorCount += Patches;
+    stats.FormFactorCount += std::count(Owned.begin(), Owned.end(), 1);
   }
 
   LinkKind Decide(int s, int q, double shotFraction, std::vector<Vec3>& scratch, long long& rays)
@@ -282,6 +289,8 @@ private:
   const int Patches;
   std::vector<LinkKind> Kind;
   std::vector<double> NodeFactor, Scratch;
+  const std::vector<char>& Owned;
+  const std::function<double(double)> SumOverRanks;
 };
 
 std::vector<Vec3> MeanReflectance(const SceneMesh& mesh, const SceneGeometry& g)
@@ -335,11 +344,15 @@ void Shoot(const SceneMesh& mesh, const SceneGeometry& g, const Visibility& rays
   SolverStatistics& stats = out.Statistics;
   WorkerPool pool(options.Threads);
   ShooterFormFactors estimator(mesh, g, rays, pool, options.Visibility == EffectMode::Auto);
+  estimator.SetReceivers(&state.OwnedPatchFlags());
   const PatchNodes nodes(g, estimator.PatchLoops(), estimator.Centres());
   state.EnablePatchGathering(nodes);
   const int samples = options.Visibility == EffectMode::Off ? 0 : options.Samples;
   const double refine = options.RefinementThreshold > 0 ? options.RefinementThreshold : 2.0; // 2: never
-  LinkBuilder builder(g, estimator, nodes, pool, samples, refine);
+  LinkBuilder builder(g, estimator, nodes, pool, samples, refine, state.OwnedPatchFlags(), [&state](double value) {
+    state.SumOverRanks(&value, 1);
+    return value;
+  });
   const std::vector<Vec3> meanReflectance = MeanReflectance(mesh, g);
   std::vector<ShooterLinks> links(state.Patches);
   std::vector<double> factors;

@@ -20,6 +20,7 @@ void Shoot(const SceneMesh& mesh, const SceneGeometry& g, const Visibility& rays
   WorkerPool pool(options.Threads);
   const bool cull = options.Visibility == EffectMode::Auto && options.Method == FormFactorMethod::Analytic;
   ShooterFormFactors estimator(mesh, g, rays, pool, cull);
+  estimator.SetReceivers(&state.OwnedPatchFlags());
   const int samples =
     options.Visibility == EffectMode::Off && options.Method == FormFactorMethod::Analytic ? 0 : options.Samples;
   std::vector<double> factors;

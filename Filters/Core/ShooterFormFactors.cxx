@@ -412,23 +412,6 @@ double ShooterFormFactors::ConservationScale(int patch, double receiving)
   return 1.0;
 }
 
-void ShooterFormFactors::Conserve(int patch, std::vector<double>& factors)
-{
-  double receiving = 0;
-  for (size_t e = 0; e < factors.size(); ++e)
-  {
-    receiving += factors[e] * Geometry.area[e];
-  }
-  const double scale = ConservationScale(patch, receiving);
-  if (scale != 1.0)
-  {
-    for (double& f : factors)
-    {
-      f *= scale;
-    }
-  }
-}
-
 long long ShooterFormFactors::Compute(
   int patch, FormFactorMethod method, int samples, int shot, std::vector<double>& factors)
 {
@@ -580,7 +563,8 @@ long long ShooterFormFactors::Analytic(int patch, int samples, std::vector<doubl
     RayCounts counts;
     for (int e = begin; e < end; ++e)
     {
-      factors[e] = g.elementPatch[e] == patch ? 0.0 : ElementFactor(patch, e, samples, scratch, counts);
+      const int q = g.elementPatch[e];
+      factors[e] = q == patch || (Receivers && !(*Receivers)[q]) ? 0.0 : ElementFactor(patch, e, samples, scratch, counts);
     }
     rays += counts.Rays;
     Count(counts, samples);

@@ -67,8 +67,11 @@ public:
   /// point rule's excess near the shooter and its deficit at corners cancel out of the
   /// total, so a closed room neither creates nor loses energy, even at rho = 0.999.
   double ConservationScale(int patch, double receiving);
-  /// Scales a full set of factors (one per element) by ConservationScale.
-  void Conserve(int patch, std::vector<double>& factors);
+  /// Restricts the analytic method to the elements of these patches (1 = receives), the
+  /// share of one process when several solve together; the others get factor 0. Null
+  /// (the default): every element. The sampling methods' cost is the shooter's, so they
+  /// compute every factor anyway.
+  void SetReceivers(const std::vector<char>* patches) { Receivers = patches; }
 
   /// Adds a thread's counts to the totals reported by RaysSkipped and PairsUnblockable.
   void Count(const RayCounts& counts, int samples);
@@ -160,6 +163,7 @@ private:
   bool MayBeBlocked(int patch, int element) const;
   bool ShaftMayBeBlocked(const Box& from, const Box& to) const;
   bool CullVisibility = false;
+  const std::vector<char>* Receivers = nullptr;
   int BlockingPlaneCount = 0;
   std::vector<Box> ElementBox, PatchBox, Blockers;
   Box AllBlockers;

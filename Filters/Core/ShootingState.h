@@ -27,6 +27,14 @@ struct Rgb
   {
     return { rho.x * u.x * f, rho.y * u.y * f, rho.z * u.z * f };
   }
+  static constexpr size_t Doubles = 3; ///< what a value takes in a sum over the ranks
+  static void Store(const Value& v, double* to)
+  {
+    to[0] = v.x;
+    to[1] = v.y;
+    to[2] = v.z;
+  }
+  static Value Load(const double* from) { return { from[0], from[1], from[2] }; }
 };
 
 struct Grey
@@ -36,6 +44,9 @@ struct Grey
   static Vec3 To(Value v) { return { v, v, v }; }
   static double Sum(Value v) { return 3.0 * v; } // powers stay comparable with RGB runs
   static Value Reflect(const Vec3& rho, Value u, double f) { return (rho.x + rho.y + rho.z) / 3.0 * u * f; }
+  static constexpr size_t Doubles = 1;
+  static void Store(Value v, double* to) { to[0] = v; }
+  static Value Load(const double* from) { return from[0]; }
 };
 
 using SolverClock = std::chrono::steady_clock;
@@ -63,9 +74,20 @@ public:
     , ShotEmission(solutions)
     , Distribute(solutions, 1)
     , Active(solutions, 0)
+    , Group(options.Group)
+    , Owned(OwnedPatches(g, Group.Rank(), Group.Ranks()))
   {
     Initialize(emission);
   }
+
+  /// True for the patches (and their elements) this process receives for; all of them
+  /// unless several processes solve together.
+  bool Owns(int patch) const { return Owned[patch] != 0; }
+  bool OwnsElement(int e) const { return Owned[G.elementPatch[e]] != 0; }
+  int OwnedElements() const { return OwnedElementCount; }
+  const std::vector<char>& OwnedPatchFlags() const { return Owned; }
+  /// Sums over the processes solving together (nothing to do for one).
+  void SumOverRanks(double* values, size_t count) { Group.Sum(values, count); }
 
   /// Checks the stopping rules in order: converged, shot cap, time, abort.
   bool Continue()
@@ -79,17 +101,16 @@ public:
     {
       return false;
     }
-    if (Options.TimeBudget > 0 && Seconds() >= Options.TimeBudget)
+    // Out of time or aborted on any rank stops every rank at the same shot.
+    double stop[2] = { Options.TimeBudget > 0 && Seconds() >= Options.TimeBudget ? 1.0 : 0.0, 0.0 };
+    if (stop[0] == 0 && Options.Progress && !Options.Progress(Fraction()))
     {
-      Stats.OutOfTime = true;
-      return false;
+      stop[1] = 1;
     }
-    if (Options.Progress && !Options.Progress(Fraction()))
-    {
-      Stats.Aborted = true;
-      return false;
-    }
-    return true;
+    Group.Sum(stop, 2);
+    Stats.OutOfTime = stop[0] > 0;
+    Stats.Aborted = !Stats.OutOfTime && stop[1] > 0;
+    return !Stats.OutOfTime && !Stats.Aborted;
   }
 
   /// The patch with the largest unshot power over the solutions still being shot.
@@ -100,10 +121,14 @@ public:
     {
       Distribute[m] = skipConverged ? Active[m] : 1;
     }
-    int shooter = 0;
+    int shooter = -1;
     double best = -1;
     for (int p = 0; p < Patches; ++p)
     {
+      if (!Owned[p])
+      {
+        continue;
+      }
       double sum = 0;
       for (int m = 0; m < L; ++m)
       {
@@ -115,7 +140,7 @@ public:
         shooter = p;
       }
     }
-    return shooter;
+    return Group.Distributed() ? AgreeOnShooter(shooter, best) : std::max(shooter, 0);
   }
 
   /// True while the patch still holds emission it has not shot (its first shot).
@@ -126,6 +151,7 @@ public:
   {
     ShotSum = 0;
     PendingEmission[shooter] = 0;
+    ShareShooter(shooter);
     for (int m = 0; m < L; ++m)
     {
       const size_t i = Index(shooter, m);
@@ -213,15 +239,21 @@ public:
   /// Ledger and history after a shot; `received` is the power that reached receivers.
   void EndShot(int shooter, double received)
   {
-    Stats.ReceivedPower += received;
-    Stats.EscapedPower += ShotSum * G.patchOpenArea[shooter] - received;
+    const double shot = ShotSum * G.patchOpenArea[shooter];
     std::fill(RemainingPer.begin(), RemainingPer.end(), 0.0);
     for (int p = 0; p < Patches; ++p)
     {
-      for (int m = 0; m < L; ++m)
+      for (int m = 0; m < L && Owned[p]; ++m)
       {
         RemainingPer[m] += Power(p, m);
       }
+    }
+    if (Group.Distributed())
+    {
+      RemainingPer.push_back(received);
+      Group.Sum(RemainingPer);
+      received = RemainingPer.back();
+      RemainingPer.pop_back();
     }
     double remaining = 0;
     for (int m = 0; m < L; ++m)
@@ -229,6 +261,8 @@ public:
       remaining += RemainingPer[m];
       Stats.RemainingPerSolution.push_back(InitialPer[m] > 0 ? RemainingPer[m] / InitialPer[m] : 0.0);
     }
+    Stats.ReceivedPower += received;
+    Stats.EscapedPower += shot - received;
     ++Stats.Shots;
     Stats.UnshotPower = remaining;
     Stats.RemainingHistory.push_back(remaining / Initial);
@@ -252,11 +286,12 @@ public:
     {
       AddAmbient();
     }
-    Out.Radiosity.resize(Radiosity.size());
+    // Each rank writes its own receivers, zero elsewhere; the sum gives every rank the whole.
+    Out.Radiosity.assign(Radiosity.size(), Vec3());
     for (int e = 0; e < Elements; ++e)
     {
       const Vec3& rho = Mesh.reflectance[e];
-      for (int m = 0; m < L; ++m)
+      for (int m = 0; m < L && OwnsElement(e); ++m)
       {
         const Vec3& a = Out.Ambient[m];
         Out.Radiosity[Index(e, m)] = Channel::To(Radiosity[Index(e, m)]) + Vec3{ rho.x * a.x, rho.y * a.y, rho.z * a.z };
@@ -264,10 +299,37 @@ public:
     }
     if (Direct)
     {
-      Out.Direct.resize(DirectPart.size());
+      Out.Direct.assign(DirectPart.size(), Vec3());
       for (size_t i = 0; i < DirectPart.size(); ++i)
       {
-        Out.Direct[i] = Channel::To(DirectPart[i]);
+        Out.Direct[i] = OwnsElement(static_cast<int>(i / L)) ? Channel::To(DirectPart[i]) : Vec3();
+      }
+    }
+    Stats.ReceivingElements = OwnedElementCount;
+    Stats.OwnRays = Stats.RayCount;
+    if (Group.Distributed())
+    {
+      GatherSolution();
+    }
+  }
+
+  /// Scales a shot's factors to every element (zero where this rank does not receive) so
+  /// that it delivers no more power than it has, exactly that in a closed scene.
+  void Conserve(ShooterFormFactors& estimator, int shooter, std::vector<double>& factors)
+  {
+    double receiving = 0;
+    for (int e = 0; e < Elements; ++e)
+    {
+      factors[e] = OwnsElement(e) ? factors[e] : 0.0;
+      receiving += factors[e] * G.area[e];
+    }
+    Group.Sum(&receiving, 1);
+    const double scale = estimator.ConservationScale(shooter, receiving);
+    if (scale != 1.0)
+    {
+      for (double& f : factors)
+      {
+        f *= scale;
       }
     }
   }
@@ -348,9 +410,86 @@ private:
     Stats.EmittedPower = Stats.UnshotPower = Initial;
     Stats.ShotCap = ShotCap(Options, Patches);
     RemainingPer = InitialPer;
+    for (int e = 0; e < Elements; ++e)
+    {
+      OwnedElementCount += OwnsElement(e) ? 1 : 0;
+    }
   }
 
   double Power(int p, int m) const { return Channel::Sum(Unshot[Index(p, m)]) * G.patchOpenArea[p]; }
+
+  /// Each rank's best candidate (its unshot power and patch) summed into a table: the
+  /// largest power wins, the lowest patch on ties, as in one process.
+  int AgreeOnShooter(int shooter, double best)
+  {
+    std::vector<double> table(2 * static_cast<size_t>(Group.Ranks()), 0.0);
+    table[2 * Group.Rank()] = best;
+    table[2 * Group.Rank() + 1] = shooter;
+    Group.Sum(table);
+    int chosen = -1;
+    double most = -1;
+    for (size_t r = 0; r < table.size(); r += 2)
+    {
+      const int p = static_cast<int>(table[r + 1]);
+      if (p >= 0 && (table[r] > most || (table[r] == most && p < chosen)))
+      {
+        most = table[r];
+        chosen = p;
+      }
+    }
+    return std::max(chosen, 0);
+  }
+
+  /// The shooter's unshot energy lives on the rank that receives for it; the others get
+  /// a copy before the shot.
+  void ShareShooter(int shooter)
+  {
+    if (!Group.Distributed())
+    {
+      return;
+    }
+    const size_t d = Channel::Doubles;
+    std::vector<double> values(L * d * (Direct ? 2 : 1), 0.0);
+    for (int m = 0; m < L && Owned[shooter]; ++m)
+    {
+      Channel::Store(Unshot[Index(shooter, m)], &values[m * d]);
+      if (Direct)
+      {
+        Channel::Store(UnshotEmission[Index(shooter, m)], &values[(L + m) * d]);
+      }
+    }
+    Group.Sum(values);
+    for (int m = 0; m < L; ++m)
+    {
+      Unshot[Index(shooter, m)] = Channel::Load(&values[m * d]);
+      if (Direct)
+      {
+        UnshotEmission[Index(shooter, m)] = Channel::Load(&values[(L + m) * d]);
+      }
+    }
+  }
+
+  /// Every rank's receivers into every rank's output, and the work counts summed.
+  void GatherSolution()
+  {
+    static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 is summed as three doubles");
+    Group.Sum(reinterpret_cast<double*>(Out.Radiosity.data()), 3 * Out.Radiosity.size());
+    Group.Sum(reinterpret_cast<double*>(Out.Direct.data()), 3 * Out.Direct.size());
+    double counts[] = { static_cast<double>(Stats.RayCount), static_cast<double>(Stats.RaysSkipped),
+      static_cast<double>(Stats.PairsUnblockable), static_cast<double>(Stats.FormFactorCount),
+      static_cast<double>(Stats.PatchLinks), static_cast<double>(Stats.ElementLinks), Stats.LinkBytes };
+    Group.Sum(counts, 7);
+    Stats.RayCount = static_cast<long long>(counts[0]);
+    Stats.RaysSkipped = static_cast<long long>(counts[1]);
+    Stats.PairsUnblockable = static_cast<long long>(counts[2]);
+    Stats.FormFactorCount = static_cast<long long>(counts[3]);
+    Stats.PatchLinks = static_cast<long long>(counts[4]);
+    Stats.ElementLinks = static_cast<long long>(counts[5]);
+    Stats.LinkBytes = counts[6];
+    Stats.Ranks = Group.Ranks();
+    Stats.Collectives = Group.Calls;
+    Stats.CollectiveBytes = Group.Bytes;
+  }
 
   /// A solution is done once its unshot power is below the threshold of its own emission:
   /// then every light is accurate on its own scale, however dim it is.
@@ -374,6 +513,10 @@ private:
     for (int e = 0; e < Elements; ++e)
     {
       const int q = G.elementPatch[e];
+      if (!Owned[q])
+      {
+        continue;
+      }
       const double* w = Nodes->Weights(e);
       for (int j = Nodes->Begin(q); j < Nodes->End(q); ++j)
       {
@@ -410,8 +553,11 @@ private:
       Vec3 unshotPower;
       for (int p = 0; p < Patches; ++p)
       {
-        unshotPower += Channel::To(Unshot[Index(p, m)]) * G.patchOpenArea[p];
+        unshotPower += Owned[p] ? Channel::To(Unshot[Index(p, m)]) * G.patchOpenArea[p] : Vec3();
       }
+      double summed[3] = { unshotPower.x, unshotPower.y, unshotPower.z };
+      Group.Sum(summed, 3);
+      unshotPower = { summed[0], summed[1], summed[2] };
       const Vec3 a = unshotPower * (1.0 / area);
       Out.Ambient[m] = { interreflection.x * a.x, interreflection.y * a.y, interreflection.z * a.z };
     }
@@ -427,6 +573,9 @@ private:
   std::vector<double> InitialPer, RemainingPer;
   double Initial = 0, ShotSum = 0;
   const PatchNodes* Nodes = nullptr;
+  Collective Group;
+  std::vector<char> Owned;
+  int OwnedElementCount = 0;
 };
 
 /// Calls body(Grey()) for a single grey channel, body(Rgb()) otherwise: the solver methods
@@ -480,8 +629,8 @@ void ShootToElements(ShootingState<Channel>& state, const WorkerPool& pool, Shoo
   factors.resize(state.Elements);
   // The expensive part, done once per shot whatever the number of solutions.
   stats.RayCount += estimator.Compute(shooter, method, samples, stats.Shots, factors);
-  stats.FormFactorCount += state.Elements;
-  estimator.Conserve(shooter, factors);
+  stats.FormFactorCount += state.OwnedElements();
+  state.Conserve(estimator, shooter, factors);
   state.EndShot(shooter, DistributeToElements(state, pool, factors));
 }
 

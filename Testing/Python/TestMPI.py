@@ -2,9 +2,11 @@
 scene, as read (all on rank 0; rank 1 holds no cells) and spread over both ranks by
 RedistributeDataSet. Each must give the serial answer: the same mesh gives the same
 radiosity to 1e-6, a mesh cut differently by the pieces within 1 % at every element's
-centre; no rank reports an error."""
+centre; no rank reports an error. The work is divided: each rank receives for about half
+of the elements, whichever rank holds them."""
 
 import os
+import re
 import shutil
 import subprocess
 import tempfile
@@ -35,7 +37,14 @@ def parallel_run(mode, ranks=2):
     reader = vtkXMLPolyDataReader()
     reader.SetFileName(out)
     reader.Update()
+    parallel_run.log = run.stdout + run.stderr
     return reader.GetOutput(), errors, run.returncode
+
+
+def shares(log):
+    """{rank: (elements it received for, elements in all)} from the solver's log lines"""
+    found = re.findall(r"rank (\d+) of \d+ received for (\d+) of (\d+) elements", log)
+    return {int(r): (int(mine), int(total)) for r, mine, total in found}
 
 
 def by_centre(data, name):
@@ -58,6 +67,11 @@ for mode, tolerance in (("whole", 1e-6), ("redistributed", 1e-2)):
     per_rank = [int((ranks == r).sum()) for r in range(2)]
     spread = per_rank[1] == 0 if mode == "whole" else min(per_rank) > 0
     check(spread, f"{mode}: points per rank {per_rank}")
+    share = shares(parallel_run.log)
+    total = result.GetNumberOfCells()
+    check(sorted(share) == [0, 1] and sum(m for m, _ in share.values()) == total
+          and all(abs(m - total / 2) <= 0.05 * total and t == total for m, t in share.values()),
+          f"{mode}: each rank received for its half of the {total} elements: {share}")
     check(light_names(result) == names if result.GetNumberOfCells() else False, f"{mode}: the lights are {names}")
     worst = 0.0
     for name in ["Radiosity"] + ["Radiosity_" + n for n in names]:

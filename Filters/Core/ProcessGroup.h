@@ -1,0 +1,67 @@
+// Processes that solve one scene together (the ranks of an MPI job), each computing the
+// transport to its own share of the receivers. The core knows no MPI: the caller gives it
+// one collective, an element-wise sum over the ranks, and the core does the rest with it.
+#ifndef RadiosityCore_ProcessGroup_h
+#define RadiosityCore_ProcessGroup_h
+
+#include <cstddef>
+#include <functional>
+#include <vector>
+
+namespace radiosity
+{
+
+struct SceneGeometry;
+
+struct ProcessGroup
+{
+  int Rank = 0;
+  int Ranks = 1;
+  /// Replaces `values[0..count)` on every rank by their sum over the ranks (MPI_Allreduce
+  /// with MPI_SUM). Every rank calls it at the same points with the same count.
+  std::function<void(double* values, std::size_t count)> SumAll;
+
+  bool Distributed() const { return Ranks > 1 && static_cast<bool>(SumAll); }
+};
+
+/// The group's collective with a count of its traffic, for the solver's statistics.
+class Collective
+{
+public:
+  explicit Collective(const ProcessGroup& group)
+    : Group(group)
+  {
+  }
+
+  bool Distributed() const { return Group.Distributed(); }
+  int Rank() const { return Distributed() ? Group.Rank : 0; }
+  int Ranks() const { return Distributed() ? Group.Ranks : 1; }
+
+  /// Sums in place over the ranks; nothing to do for one process.
+  void Sum(double* values, std::size_t count)
+  {
+    if (!Distributed() || count == 0)
+    {
+      return;
+    }
+    Group.SumAll(values, count);
+    ++Calls;
+    Bytes += static_cast<double>(count * sizeof(double));
+  }
+  void Sum(std::vector<double>& values) { Sum(values.data(), values.size()); }
+
+  long long Calls = 0; ///< sums made
+  double Bytes = 0;    ///< bytes each rank contributed to them
+
+private:
+  const ProcessGroup& Group;
+};
+
+/// Which patches `rank` of `ranks` receives for: each patch goes to the rank with the
+/// fewest elements so far, in patch order, so the shares are even in elements and spread
+/// over the whole scene (near and far receivers cost differently). 1 = this rank's.
+std::vector<char> OwnedPatches(const SceneGeometry& geometry, int rank, int ranks);
+
+} // namespace radiosity
+
+#endif

@@ -1,0 +1,259 @@
+// Several processes solving one scene together (SolverOptions::Group), played here by
+// threads with a sum over them as MPI_Allreduce would do it: every rank must get the
+// serial answer, whatever the number of ranks and the method, and stop where the others do.
+#include "FurnishedRoom.h"
+#include "LightSolutions.h"
+#include "SceneBuilders.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <condition_variable>
+#include <mutex>
+#include <thread>
+
+using namespace radiosity;
+using radiosity_test::Converged;
+
+namespace
+{
+/// An allreduce over threads: each rank's values wait in its own slot, and the last to
+/// arrive adds them in rank order, so the sums do not depend on who came first.
+class ThreadRanks
+{
+public:
+  explicit ThreadRanks(int ranks)
+    : Slots(ranks)
+  {
+  }
+
+  ProcessGroup Group(int rank)
+  {
+    ProcessGroup group;
+    group.Rank = rank;
+    group.Ranks = static_cast<int>(Slots.size());
+    group.SumAll = [this, rank](double* values, size_t count) { Sum(rank, values, count); };
+    return group;
+  }
+
+  long long Rounds() const { return Generation; }
+
+private:
+  void Sum(int rank, double* values, size_t count)
+  {
+    std::unique_lock<std::mutex> lock(Mutex);
+    Slots[rank].assign(values, values + count);
+    const long long round = Generation;
+    if (++Arrived == static_cast<int>(Slots.size()))
+    {
+      Result.assign(count, 0.0);
+      for (const std::vector<double>& slot : Slots)
+      {
+        EXPECT_EQ(slot.size(), count) << "the ranks called the sum with different counts";
+        for (size_t i = 0; i < std::min(count, slot.size()); ++i)
+        {
+          Result[i] += slot[i];
+        }
+      }
+      Arrived = 0;
+      ++Generation;
+      Changed.notify_all();
+    }
+    else
+    {
+      Changed.wait(lock, [&] { return Generation != round; });
+    }
+    std::copy(Result.begin(), Result.end(), values);
+  }
+
+  std::mutex Mutex;
+  std::condition_variable Changed;
+  std::vector<std::vector<double>> Slots;
+  std::vector<double> Result;
+  int Arrived = 0;
+  long long Generation = 0;
+};
+
+/// Solves `mesh` on `ranks` threads as ranks, each with its own solver (as each MPI rank
+/// prepares the whole scene); `tweak` may change a rank's options.
+std::vector<Solution> SolveOnRanks(const SceneMesh& mesh, int ranks, const SolverOptions& options,
+  const std::function<void(int, SolverOptions&)>& tweak = nullptr)
+{
+  ThreadRanks group(ranks);
+  std::vector<Solution> results(ranks);
+  std::vector<std::thread> threads;
+  for (int r = 0; r < ranks; ++r)
+  {
+    threads.emplace_back([&, r] {
+      SolverOptions mine = options;
+      mine.Group = group.Group(r);
+      mine.Threads = 1;
+      if (tweak)
+      {
+        tweak(r, mine);
+      }
+      const RadiositySolver solver(mesh);
+      results[r] = SolveLights(solver, mesh, LightGrouping::OnePerLight(8), {}, SolutionMode::LightTagged, mine);
+    });
+  }
+  for (std::thread& t : threads)
+  {
+    t.join();
+  }
+  return results;
+}
+
+SceneMesh Room()
+{
+  SceneMesh mesh;
+  const std::string error = radiosity_bench::MeshRoom(radiosity_bench::FurnishedRoom(), 1.0, 0.25, mesh);
+  EXPECT_TRUE(error.empty()) << error;
+  return mesh;
+}
+
+/// The largest |a - b| over every value, relative to the largest value of b.
+double LargestDifference(const std::vector<Vec3>& a, const std::vector<Vec3>& b)
+{
+  EXPECT_EQ(a.size(), b.size());
+  double most = 0, peak = 0;
+  for (size_t i = 0; i < std::min(a.size(), b.size()); ++i)
+  {
+    most = std::max({ most, std::fabs(a[i].x - b[i].x), std::fabs(a[i].y - b[i].y), std::fabs(a[i].z - b[i].z) });
+    peak = std::max({ peak, b[i].x, b[i].y, b[i].z });
+  }
+  return peak > 0 ? most / peak : most;
+}
+
+void ExpectSerialAnswer(SolverMethod method, int ranks, bool direct)
+{
+  const SceneMesh mesh = Room();
+  SolverOptions options = Converged(1e-4);
+  options.Solver = method;
+  options.SeparateDirect = direct;
+  options.AmbientTerm = direct;
+  options.Threads = 1;
+  const RadiositySolver serial(mesh);
+  const Solution one =
+    SolveLights(serial, mesh, LightGrouping::OnePerLight(8), {}, SolutionMode::LightTagged, options);
+  const std::vector<Solution> many = SolveOnRanks(mesh, ranks, options);
+  for (int r = 0; r < ranks; ++r)
+  {
+    const SolverStatistics& s = many[r].Statistics;
+    EXPECT_EQ(s.Shots, one.Statistics.Shots) << "rank " << r;
+    EXPECT_EQ(s.Converged, one.Statistics.Converged);
+    EXPECT_EQ(s.Ranks, ranks);
+    EXPECT_GT(s.CollectiveBytes, 0);
+    // Only the order of a few sums differs from one process (the conservation scale).
+    EXPECT_LT(LargestDifference(many[r].Radiosity, one.Radiosity), 1e-9) << "rank " << r;
+    EXPECT_LT(LargestDifference(many[r].Direct, one.Direct), 1e-9) << "rank " << r;
+    EXPECT_NEAR(s.RayCount, one.Statistics.RayCount, 1e-6 * one.Statistics.RayCount);
+    EXPECT_NEAR(s.ReceivedPower, one.Statistics.ReceivedPower, 1e-9 * one.Statistics.ReceivedPower);
+    for (int m = 0; m < 8; ++m)
+    {
+      EXPECT_NEAR(many[r].Ambient[m].x, one.Ambient[m].x, 1e-9 * (one.Ambient[m].x + 1e-30));
+    }
+  }
+}
+} // namespace
+
+TEST(Distributed, ProgressiveOnTwoRanksGivesTheSerialAnswer)
+{
+  ExpectSerialAnswer(SolverMethod::ProgressiveRefinement, 2, false);
+}
+
+TEST(Distributed, HierarchicalOnThreeRanksGivesTheSerialAnswerWithDirectAndAmbient)
+{
+  ExpectSerialAnswer(SolverMethod::Hierarchical, 3, true);
+}
+
+TEST(Distributed, SharesAreEvenAndCoverEveryPatchOnce)
+{
+  const SceneMesh mesh = Room();
+  const SceneGeometry g(mesh);
+  const int ranks = 3;
+  std::vector<int> owners(g.patchElements.size(), 0);
+  std::vector<size_t> elements(ranks, 0);
+  for (int r = 0; r < ranks; ++r)
+  {
+    const std::vector<char> owned = OwnedPatches(g, r, ranks);
+    for (size_t p = 0; p < owned.size(); ++p)
+    {
+      owners[p] += owned[p];
+      elements[r] += owned[p] ? g.patchElements[p].size() : 0;
+    }
+  }
+  EXPECT_TRUE(std::all_of(owners.begin(), owners.end(), [](int n) { return n == 1; }));
+  const auto [least, most] = std::minmax_element(elements.begin(), elements.end());
+  EXPECT_LT(static_cast<double>(*most - *least), 0.01 * static_cast<double>(g.normal.size()));
+}
+
+TEST(Distributed, AnAbortOnOneRankStopsEveryRankAtTheSameShot)
+{
+  const SceneMesh mesh = Room();
+  SolverOptions options = Converged(1e-6);
+  options.Solver = SolverMethod::Hierarchical;
+  std::atomic<int> calls{ 0 };
+  const std::vector<Solution> results = SolveOnRanks(mesh, 2, options, [&](int rank, SolverOptions& o) {
+    if (rank == 1)
+    {
+      o.Progress = [&](double) { return ++calls < 40; }; // rank 1 alone aborts at its 40th check
+    }
+  });
+  for (const Solution& s : results)
+  {
+    EXPECT_TRUE(s.Statistics.Aborted);
+    EXPECT_FALSE(s.Statistics.Converged);
+    EXPECT_EQ(s.Statistics.Shots, 39);
+  }
+  EXPECT_EQ(LargestDifference(results[0].Radiosity, results[1].Radiosity), 0.0);
+}
+
+TEST(Distributed, ATimeBudgetReachedOnOneRankStopsEveryRank)
+{
+  const SceneMesh mesh = Room();
+  SolverOptions options = Converged(1e-6);
+  options.Solver = SolverMethod::ProgressiveRefinement;
+  const std::vector<Solution> results = SolveOnRanks(mesh, 2, options, [](int rank, SolverOptions& o) {
+    o.TimeBudget = rank == 0 ? 1e-9 : 0; // rank 0 is out of time at once, rank 1 has none
+  });
+  for (const Solution& s : results)
+  {
+    EXPECT_TRUE(s.Statistics.OutOfTime);
+    EXPECT_EQ(s.Statistics.Shots, 0);
+  }
+}
+
+TEST(Distributed, ARankWithNoPatchesJoinsAndGetsTheWhole)
+{
+  // More ranks than patches: the last ones receive for nothing and still get the answer.
+  SceneMesh mesh = radiosity_test::Box(1.0, 1, 1, { 0.5, 0.5, 0.5 }, [](int face) { return face == 5 ? 0 : -1; });
+  SolverOptions options = Converged(1e-6);
+  options.Solver = SolverMethod::ProgressiveRefinement;
+  const RadiositySolver serial(mesh);
+  const int lights = 1;
+  const Solution one =
+    SolveLights(serial, mesh, LightGrouping::OnePerLight(lights), {}, SolutionMode::LightTagged, options);
+  ThreadRanks group(8);
+  std::vector<Solution> results(8);
+  std::vector<std::thread> threads;
+  for (int r = 0; r < 8; ++r)
+  {
+    threads.emplace_back([&, r] {
+      SolverOptions mine = options;
+      mine.Group = group.Group(r);
+      const RadiositySolver solver(mesh);
+      results[r] =
+        SolveLights(solver, mesh, LightGrouping::OnePerLight(lights), {}, SolutionMode::LightTagged, mine);
+    });
+  }
+  for (std::thread& t : threads)
+  {
+    t.join();
+  }
+  for (const Solution& s : results)
+  {
+    EXPECT_LT(LargestDifference(s.Radiosity, one.Radiosity), 1e-12);
+  }
+}
