@@ -27,6 +27,7 @@
 #include "vtkStringArray.h"
 #include "vtkTable.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <sstream>
@@ -305,7 +306,9 @@ int vtkLightTaggedRadiosity::Solve(
       return 0;
     }
     const auto start = std::chrono::steady_clock::now();
-    radiosity::RadiositySolver solver(mesh);
+    const int threads = vtkRadiosityAdapter::Threads(this->NumberOfThreads);
+    const radiosity::ProcessGroup group = vtkRadiosityPieces::Group(ranks);
+    radiosity::RadiositySolver solver(mesh, threads, group);
     if (!solver.Error().empty())
     {
       vtkErrorMacro(<< "Cannot solve: " << solver.Error() << ".");
@@ -325,14 +328,14 @@ int vtkLightTaggedRadiosity::Solve(
     options.TimeBudget = this->TimeBudget;
     options.Method = static_cast<radiosity::FormFactorMethod>(this->FormFactorMethod);
     options.Samples = this->FormFactorSamples;
-    options.Threads = vtkRadiosityAdapter::Threads(this->NumberOfThreads);
+    options.Threads = threads;
     options.AmbientTerm = this->AmbientTerm;
     options.SeparateDirect = this->SeparateDirect;
     options.Visibility = effect(this->VisibilityEffect);
     options.Interreflection = effect(this->InterreflectionEffect);
     options.Color = effect(this->ColorEffect);
     options.ConvergedSolutions = effect(this->ConvergedLightsEffect);
-    options.Group = vtkRadiosityPieces::Group(ranks);
+    options.Group = group;
     const vtkRadiosityAbortWatch abort(this);
     options.Progress = [this, abort](double f) {
       this->UpdateProgress(f);
@@ -453,9 +456,12 @@ int vtkLightTaggedRadiosity::Solve(
       this->LastSolveSeconds, radiosity::SummarizeEffects(effects).c_str());
     if (stats.Ranks > 1)
     {
-      vtkLogF(INFO, "LightTaggedRadiosity: rank %d of %d received for %d of %d elements and cast %lld rays; %lld sums over the ranks, %.3f MB sent by each",
+      vtkLogF(INFO,
+        "LightTaggedRadiosity: rank %d of %d received for %d of %d elements and cast %lld rays; %lld sums over the "
+        "ranks, %.0f bytes per shot, %.3f MB in all, %.3f s in sums",
         ranks->GetLocalProcessId(), stats.Ranks, stats.ReceivingElements, mesh.NumberOfPolygons(), stats.OwnRays,
-        stats.Collectives, stats.CollectiveBytes / 1e6);
+        stats.Collectives, stats.ShotCollectiveBytes / std::max(stats.Shots, 1), stats.CollectiveBytes / 1e6,
+        stats.CollectiveSeconds);
     }
 
     vtkNew<vtkDoubleArray> unshot;

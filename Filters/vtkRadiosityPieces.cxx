@@ -36,11 +36,7 @@ void CutArrays(vtkDataSetAttributes* whole, vtkIdType first, vtkIdType count, vt
     vtkSmartPointer<vtkAbstractArray> part = vtk::TakeSmartPointer(array->NewInstance());
     part->SetName(array->GetName());
     part->SetNumberOfComponents(array->GetNumberOfComponents());
-    part->SetNumberOfTuples(count);
-    for (vtkIdType t = 0; t < count; ++t)
-    {
-      part->SetTuple(t, first + t, array);
-    }
+    part->InsertTuples(0, count, first, array);
     target->AddArray(part);
   }
 }
@@ -83,38 +79,34 @@ vtkMultiProcessController* Parallel(vtkInformation* outputInformation)
 namespace
 {
 /// The whole scene on every rank: the pieces with cells appended in rank order, with the
-/// field data of the first of them. Empty where none has cells.
+/// field data of the first of them. Empty where none has cells. `failedRank`: the first
+/// rank whose piece failed upstream, else -1.
 void GatherWhole(vtkMultiProcessController* controller, vtkPolyData* piece, vtkPolyData* whole, int& failedRank)
 {
   std::vector<vtkSmartPointer<vtkDataObject>> pieces;
-  controller->Gather(piece, pieces, 0);
+  controller->AllGather(piece, pieces);
   failedRank = -1;
-  if (controller->GetLocalProcessId() == 0)
+  vtkNew<vtkAppendPolyData> append;
+  vtkPolyData* first = nullptr;
+  for (size_t rank = 0; rank < pieces.size(); ++rank)
   {
-    vtkNew<vtkAppendPolyData> append;
-    vtkPolyData* first = nullptr;
-    for (size_t rank = 0; rank < pieces.size(); ++rank)
+    auto* data = vtkPolyData::SafeDownCast(pieces[rank]);
+    if (failedRank < 0 && vtkRadiosityAdapter::FailedUpstream(pieces[rank]))
     {
-      auto* data = vtkPolyData::SafeDownCast(pieces[rank]);
-      if (failedRank < 0 && vtkRadiosityAdapter::FailedUpstream(pieces[rank]))
-      {
-        failedRank = static_cast<int>(rank);
-      }
-      if (data && data->GetNumberOfCells() > 0)
-      {
-        append->AddInputData(data);
-        first = first ? first : data;
-      }
+      failedRank = static_cast<int>(rank);
     }
-    if (first)
+    if (data && data->GetNumberOfCells() > 0)
     {
-      append->Update();
-      whole->ShallowCopy(append->GetOutput());
-      whole->SetFieldData(first->GetFieldData());
+      append->AddInputData(data);
+      first = first ? first : data;
     }
   }
-  controller->Broadcast(&failedRank, 1, 0);
-  controller->Broadcast(whole, 0);
+  if (first)
+  {
+    append->Update();
+    whole->ShallowCopy(append->GetOutput());
+    whole->SetFieldData(first->GetFieldData());
+  }
 }
 } // namespace
 

@@ -4,6 +4,7 @@
 #ifndef RadiosityCore_ProcessGroup_h
 #define RadiosityCore_ProcessGroup_h
 
+#include <chrono>
 #include <cstddef>
 #include <functional>
 #include <vector>
@@ -44,7 +45,9 @@ public:
     {
       return;
     }
+    const auto start = std::chrono::steady_clock::now();
     Group.SumAll(values, count);
+    Seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     ++Calls;
     Bytes += static_cast<double>(count * sizeof(double));
   }
@@ -52,6 +55,8 @@ public:
 
   long long Calls = 0; ///< sums made
   double Bytes = 0;    ///< bytes each rank contributed to them
+  /// Time spent in them: the transfers, and waiting for slower ranks.
+  double Seconds = 0;
 
 private:
   const ProcessGroup& Group;

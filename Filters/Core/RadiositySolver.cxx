@@ -38,7 +38,7 @@ int ShotCap(const SolverOptions& options, int patches)
   return static_cast<int>(std::min<long long>(std::max<long long>(2000, 25LL * patches), 1000000000LL));
 }
 
-RadiositySolver::RadiositySolver(const SceneMesh& mesh)
+RadiositySolver::RadiositySolver(const SceneMesh& mesh, int threads, const ProcessGroup& group)
   : Mesh(mesh)
   , Geometry_(mesh)
   , Rays_(new Visibility(mesh))
@@ -47,7 +47,7 @@ RadiositySolver::RadiositySolver(const SceneMesh& mesh)
   if (Error_.empty())
   {
     SplitPatches_ = SplitSeparatedPatches(*Rays_, Mesh, Geometry_);
-    MarkEnclosed(*Rays_, Mesh, Geometry_);
+    MarkEnclosed(*Rays_, Mesh, Geometry_, threads, group);
   }
 }
 

@@ -135,6 +135,8 @@ struct SolverStatistics
   int Ranks = 1;
   long long Collectives = 0;
   double CollectiveBytes = 0;
+  double ShotCollectiveBytes = 0; ///< the part of CollectiveBytes spent during the shots
+  double CollectiveSeconds = 0;   ///< this rank's time in the sums (waits for others too)
   int ReceivingElements = 0; ///< the elements this rank received for
   long long OwnRays = 0;     ///< the rays this rank cast (RayCount is the sum over ranks)
 };
@@ -174,7 +176,9 @@ int ShotCap(const SolverOptions& options, int patches);
 class RadiositySolver
 {
 public:
-  explicit RadiositySolver(const SceneMesh& mesh);
+  /// `threads` and `group` as in SolverOptions: the preparation's rays (MarkEnclosed) run
+  /// on that many threads, divided among the ranks of the group.
+  explicit RadiositySolver(const SceneMesh& mesh, int threads = 0, const ProcessGroup& group = ProcessGroup());
   ~RadiositySolver();
 
   /// Empty when the scene could be prepared.

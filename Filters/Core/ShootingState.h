@@ -89,7 +89,10 @@ public:
   /// Sums over the processes solving together (nothing to do for one).
   void SumOverRanks(double* values, size_t count) { Group.Sum(values, count); }
 
-  /// Checks the stopping rules in order: converged, shot cap, time, abort.
+  /// Checks the stopping rules in order (converged, shot cap, time, abort) and picks the
+  /// next shooter: the patch with the largest unshot power over the solutions still being
+  /// shot. Several ranks decide both with one sum: out of time or aborted on any rank
+  /// stops all at the same shot.
   bool Continue()
   {
     if (!UpdateActive())
@@ -101,47 +104,25 @@ public:
     {
       return false;
     }
-    // Out of time or aborted on any rank stops every rank at the same shot.
-    double stop[2] = { Options.TimeBudget > 0 && Seconds() >= Options.TimeBudget ? 1.0 : 0.0, 0.0 };
-    if (stop[0] == 0 && Options.Progress && !Options.Progress(Fraction()))
+    const bool outOfTime = Options.TimeBudget > 0 && Seconds() >= Options.TimeBudget;
+    const bool abort = !outOfTime && Options.Progress && !Options.Progress(Fraction());
+    double best = -1;
+    const int candidate = BestOwnedPatch(best);
+    if (Group.Distributed())
     {
-      stop[1] = 1;
+      AgreeOnShot(outOfTime, abort, candidate, best);
     }
-    Group.Sum(stop, 2);
-    Stats.OutOfTime = stop[0] > 0;
-    Stats.Aborted = !Stats.OutOfTime && stop[1] > 0;
+    else
+    {
+      Stats.OutOfTime = outOfTime;
+      Stats.Aborted = abort;
+      Next = std::max(candidate, 0);
+    }
     return !Stats.OutOfTime && !Stats.Aborted;
   }
 
-  /// The patch with the largest unshot power over the solutions still being shot.
-  int PickShooter()
-  {
-    const bool skipConverged = Options.ConvergedSolutions != EffectMode::On;
-    for (int m = 0; m < L; ++m)
-    {
-      Distribute[m] = skipConverged ? Active[m] : 1;
-    }
-    int shooter = -1;
-    double best = -1;
-    for (int p = 0; p < Patches; ++p)
-    {
-      if (!Owned[p])
-      {
-        continue;
-      }
-      double sum = 0;
-      for (int m = 0; m < L; ++m)
-      {
-        sum += Distribute[m] ? Power(p, m) : 0.0;
-      }
-      if (sum > best)
-      {
-        best = sum;
-        shooter = p;
-      }
-    }
-    return Group.Distributed() ? AgreeOnShooter(shooter, best) : std::max(shooter, 0);
-  }
+  /// The shooter Continue picked.
+  int PickShooter() const { return Next; }
 
   /// True while the patch still holds emission it has not shot (its first shot).
   bool Emitting(int patch) const { return PendingEmission[patch] != 0; }
@@ -151,7 +132,6 @@ public:
   {
     ShotSum = 0;
     PendingEmission[shooter] = 0;
-    ShareShooter(shooter);
     for (int m = 0; m < L; ++m)
     {
       const size_t i = Index(shooter, m);
@@ -241,9 +221,9 @@ public:
   {
     const double shot = ShotSum * G.patchOpenArea[shooter];
     std::fill(RemainingPer.begin(), RemainingPer.end(), 0.0);
-    for (int p = 0; p < Patches; ++p)
+    for (int p : OwnedList)
     {
-      for (int m = 0; m < L && Owned[p]; ++m)
+      for (int m = 0; m < L; ++m)
       {
         RemainingPer[m] += Power(p, m);
       }
@@ -414,57 +394,86 @@ private:
     {
       OwnedElementCount += OwnsElement(e) ? 1 : 0;
     }
+    for (int p = 0; p < Patches; ++p)
+    {
+      if (Owned[p])
+      {
+        OwnedList.push_back(p);
+      }
+    }
   }
 
   double Power(int p, int m) const { return Channel::Sum(Unshot[Index(p, m)]) * G.patchOpenArea[p]; }
 
-  /// Each rank's best candidate (its unshot power and patch) summed into a table: the
-  /// largest power wins, the lowest patch on ties, as in one process.
-  int AgreeOnShooter(int shooter, double best)
+  /// Of this rank's patches, the one with the largest unshot power over the solutions
+  /// being shot (the first on ties; -1 when it has none), and that power.
+  int BestOwnedPatch(double& best)
   {
-    std::vector<double> table(2 * static_cast<size_t>(Group.Ranks()), 0.0);
-    table[2 * Group.Rank()] = best;
-    table[2 * Group.Rank() + 1] = shooter;
-    Group.Sum(table);
-    int chosen = -1;
-    double most = -1;
-    for (size_t r = 0; r < table.size(); r += 2)
-    {
-      const int p = static_cast<int>(table[r + 1]);
-      if (p >= 0 && (table[r] > most || (table[r] == most && p < chosen)))
-      {
-        most = table[r];
-        chosen = p;
-      }
-    }
-    return std::max(chosen, 0);
-  }
-
-  /// The shooter's unshot energy lives on the rank that receives for it; the others get
-  /// a copy before the shot.
-  void ShareShooter(int shooter)
-  {
-    if (!Group.Distributed())
-    {
-      return;
-    }
-    const size_t d = Channel::Doubles;
-    std::vector<double> values(L * d * (Direct ? 2 : 1), 0.0);
-    for (int m = 0; m < L && Owned[shooter]; ++m)
-    {
-      Channel::Store(Unshot[Index(shooter, m)], &values[m * d]);
-      if (Direct)
-      {
-        Channel::Store(UnshotEmission[Index(shooter, m)], &values[(L + m) * d]);
-      }
-    }
-    Group.Sum(values);
+    const bool skipConverged = Options.ConvergedSolutions != EffectMode::On;
     for (int m = 0; m < L; ++m)
     {
-      Unshot[Index(shooter, m)] = Channel::Load(&values[m * d]);
+      Distribute[m] = skipConverged ? Active[m] : 1;
+    }
+    int shooter = -1;
+    for (int p : OwnedList)
+    {
+      double sum = 0;
+      for (int m = 0; m < L; ++m)
+      {
+        sum += Distribute[m] ? Power(p, m) : 0.0;
+      }
+      if (sum > best)
+      {
+        best = sum;
+        shooter = p;
+      }
+    }
+    return shooter;
+  }
+
+  /// One sum over a table with a row per rank (its stop flags, its best patch, that
+  /// patch's power and unshot energy): any flag stops all; the largest power wins, the
+  /// lowest patch on ties, as in one process; and every rank takes the winner's unshot
+  /// energy, which only its owner has.
+  void AgreeOnShot(bool outOfTime, bool abort, int candidate, double best)
+  {
+    const size_t d = Channel::Doubles, values = L * d * (Direct ? 2 : 1), row = 4 + values;
+    std::vector<double> table(row * Group.Ranks(), 0.0);
+    double* mine = &table[row * Group.Rank()];
+    mine[0] = outOfTime ? 1 : 0;
+    mine[1] = abort ? 1 : 0;
+    mine[2] = best;
+    mine[3] = candidate;
+    for (int m = 0; m < L && candidate >= 0; ++m)
+    {
+      Channel::Store(Unshot[Index(candidate, m)], mine + 4 + m * d);
       if (Direct)
       {
-        UnshotEmission[Index(shooter, m)] = Channel::Load(&values[(L + m) * d]);
+        Channel::Store(UnshotEmission[Index(candidate, m)], mine + 4 + (L + m) * d);
+      }
+    }
+    Group.Sum(table);
+    const double* winner = nullptr;
+    double stop[2] = { 0, 0 };
+    for (size_t r = 0; r < table.size(); r += row)
+    {
+      const double* t = &table[r];
+      stop[0] += t[0];
+      stop[1] += t[1];
+      if (t[3] >= 0 && (!winner || t[2] > winner[2] || (t[2] == winner[2] && t[3] < winner[3])))
+      {
+        winner = t;
+      }
+    }
+    Stats.OutOfTime = stop[0] > 0;
+    Stats.Aborted = !Stats.OutOfTime && stop[1] > 0;
+    Next = winner ? static_cast<int>(winner[3]) : 0;
+    for (int m = 0; m < L && winner; ++m)
+    {
+      Unshot[Index(Next, m)] = Channel::Load(winner + 4 + m * d);
+      if (Direct)
+      {
+        UnshotEmission[Index(Next, m)] = Channel::Load(winner + 4 + (L + m) * d);
       }
     }
   }
@@ -473,6 +482,7 @@ private:
   void GatherSolution()
   {
     static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 is summed as three doubles");
+    Stats.ShotCollectiveBytes = Group.Bytes;
     Group.Sum(reinterpret_cast<double*>(Out.Radiosity.data()), 3 * Out.Radiosity.size());
     Group.Sum(reinterpret_cast<double*>(Out.Direct.data()), 3 * Out.Direct.size());
     double counts[] = { static_cast<double>(Stats.RayCount), static_cast<double>(Stats.RaysSkipped),
@@ -488,6 +498,7 @@ private:
     Stats.LinkBytes = counts[6];
     Stats.Ranks = Group.Ranks();
     Stats.Collectives = Group.Calls;
+    Stats.CollectiveSeconds = Group.Seconds;
     Stats.CollectiveBytes = Group.Bytes;
   }
 
@@ -551,9 +562,9 @@ private:
     for (int m = 0; m < L; ++m)
     {
       Vec3 unshotPower;
-      for (int p = 0; p < Patches; ++p)
+      for (int p : OwnedList)
       {
-        unshotPower += Owned[p] ? Channel::To(Unshot[Index(p, m)]) * G.patchOpenArea[p] : Vec3();
+        unshotPower += Channel::To(Unshot[Index(p, m)]) * G.patchOpenArea[p];
       }
       double summed[3] = { unshotPower.x, unshotPower.y, unshotPower.z };
       Group.Sum(summed, 3);
@@ -575,7 +586,9 @@ private:
   const PatchNodes* Nodes = nullptr;
   Collective Group;
   std::vector<char> Owned;
+  std::vector<int> OwnedList;
   int OwnedElementCount = 0;
+  int Next = 0; ///< the shooter Continue picked
 };
 
 /// Calls body(Grey()) for a single grey channel, body(Rgb()) otherwise: the solver methods

@@ -290,7 +290,7 @@ int SplitSeparatedPatches(const Visibility& rays, const SceneMesh& mesh, SceneGe
   return added; // MarkEnclosed derives patchOpenArea from these
 }
 
-void MarkEnclosed(const Visibility& rays, const SceneMesh& mesh, SceneGeometry& g)
+void MarkEnclosed(const Visibility& rays, const SceneMesh& mesh, SceneGeometry& g, int threads, const ProcessGroup& group)
 {
   // Touching, relative to the scene, and never finer than float coordinates can place a
   // surface far from the origin (VTK points are floats: a leg standing on a floor 500 km
@@ -301,15 +301,23 @@ void MarkEnclosed(const Visibility& rays, const SceneMesh& mesh, SceneGeometry& 
     farthest = std::max({ farthest, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z) });
   }
   const double touching = std::max(1e-6 * g.sceneDiagonal, 1e-6 * farthest);
-  const WorkerPool pool(0);
-  pool.For(static_cast<int>(g.normal.size()), 256, [&](int begin, int end) {
-    for (int e = begin; e < end; ++e)
+  const WorkerPool pool(threads);
+  Collective ranks(group);
+  const int n = static_cast<int>(g.normal.size()), step = ranks.Ranks();
+  std::vector<double> blocked(n, 0.0); // counts, summed over the ranks that probed them
+  pool.For((n - ranks.Rank() + step - 1) / step, 256, [&](int begin, int end) {
+    for (int i = begin; i < end; ++i)
     {
-      const int blocked = BlockedProbes(rays, mesh, g, touching, e);
-      g.enclosed[e] = blocked == 17;
-      g.sheltered[e] = blocked >= 9;
+      const int e = ranks.Rank() + i * step;
+      blocked[e] = BlockedProbes(rays, mesh, g, touching, e);
     }
   });
+  ranks.Sum(blocked);
+  for (int e = 0; e < n; ++e)
+  {
+    g.enclosed[e] = blocked[e] == 17;
+    g.sheltered[e] = blocked[e] >= 9;
+  }
   // Summed, not subtracted: a wholly enclosed patch gets exactly 0.
   g.patchOpenArea.assign(g.patchArea.size(), 0.0);
   for (size_t e = 0; e < g.normal.size(); ++e)

@@ -2,6 +2,7 @@
 #ifndef RadiosityCore_Visibility_h
 #define RadiosityCore_Visibility_h
 
+#include "ProcessGroup.h"
 #include "Scene.h"
 
 #include <memory>
@@ -55,7 +56,9 @@ int SplitSeparatedPatches(const Visibility& rays, const SceneMesh& mesh, SceneGe
 /// started inside an object) or a surface touching the element. Such an element can
 /// neither receive nor send light; it leaves its patch's open area. Elements where at least
 /// 9 of them are closed off are marked sheltered (SceneGeometry::sheltered).
-void MarkEnclosed(const Visibility& rays, const SceneMesh& mesh, SceneGeometry& geometry);
+/// With `threads` (0: all) per process; a group's ranks probe every Ranks-th element each.
+void MarkEnclosed(const Visibility& rays, const SceneMesh& mesh, SceneGeometry& geometry, int threads = 0,
+  const ProcessGroup& group = ProcessGroup());
 
 } // namespace radiosity
 

@@ -94,7 +94,7 @@ std::vector<Solution> SolveOnRanks(const SceneMesh& mesh, int ranks, const Solve
       {
         tweak(r, mine);
       }
-      const RadiositySolver solver(mesh);
+      const RadiositySolver solver(mesh, mine.Threads, mine.Group); // the ranks share its probes too
       results[r] = SolveLights(solver, mesh, LightGrouping::OnePerLight(8), {}, SolutionMode::LightTagged, mine);
     });
   }
