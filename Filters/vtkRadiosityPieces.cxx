@@ -62,6 +62,20 @@ void CutPiece(vtkPolyData* whole, const Slice& slice, vtkPolyData* piece, vtkPol
   vtkNew<vtkFieldData> fields;
   fields->ShallowCopy(whole->GetFieldData());
   output->SetFieldData(fields);
+  for (int type = 0; type < vtkDataSetAttributes::NUM_ATTRIBUTES; ++type)
+  {
+    // Colouring follows the whole's active arrays (the relight filter's DisplayColors).
+    vtkAbstractArray* point = whole->GetPointData()->GetAbstractAttribute(type);
+    vtkAbstractArray* cell = whole->GetCellData()->GetAbstractAttribute(type);
+    if (point && point->GetName() && piece->GetNumberOfCells() > 0)
+    {
+      output->GetPointData()->SetActiveAttribute(point->GetName(), type);
+    }
+    if (cell && cell->GetName() && piece->GetNumberOfCells() > 0)
+    {
+      output->GetCellData()->SetActiveAttribute(cell->GetName(), type);
+    }
+  }
 }
 
 } // namespace
@@ -78,13 +92,15 @@ vtkMultiProcessController* Parallel(vtkInformation* outputInformation)
 
 namespace
 {
-/// The whole scene on every rank: the pieces with cells appended in rank order, with the
-/// field data of the first of them. Empty where none has cells. `failedRank`: the first
-/// rank whose piece failed upstream, else -1.
-void GatherWhole(vtkMultiProcessController* controller, vtkPolyData* piece, vtkPolyData* whole, int& failedRank)
+/// The whole on every rank: the pieces with cells (`byCells`) or points appended in rank
+/// order, with the field data of the first of them. Empty where none has any. `failedRank`:
+/// the first rank whose piece failed upstream, else -1.
+void GatherWhole(vtkMultiProcessController* controller, vtkPolyData* piece, vtkPolyData* whole, int& failedRank,
+  bool byCells = true)
 {
   std::vector<vtkSmartPointer<vtkDataObject>> pieces;
-  controller->AllGather(piece, pieces);
+  vtkNew<vtkPolyData> none;
+  controller->AllGather(piece ? piece : none.Get(), pieces);
   failedRank = -1;
   vtkNew<vtkAppendPolyData> append;
   vtkPolyData* first = nullptr;
@@ -95,7 +111,7 @@ void GatherWhole(vtkMultiProcessController* controller, vtkPolyData* piece, vtkP
     {
       failedRank = static_cast<int>(rank);
     }
-    if (data && data->GetNumberOfCells() > 0)
+    if (data && (byCells ? data->GetNumberOfCells() : data->GetNumberOfPoints()) > 0)
     {
       append->AddInputData(data);
       first = first ? first : data;
@@ -147,6 +163,12 @@ int SolveTogether(vtkMultiProcessController* controller, vtkPolyData* piece, vtk
       whole->GetActualMemorySize() / 1024.0);
   }
   return all;
+}
+
+void AllGather(vtkMultiProcessController* controller, vtkPolyData* piece, vtkPolyData* whole)
+{
+  int failedRank = -1;
+  GatherWhole(controller, piece, whole, failedRank, false);
 }
 
 radiosity::ProcessGroup Group(vtkMultiProcessController* controller)

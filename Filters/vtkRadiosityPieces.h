@@ -34,6 +34,10 @@ vtkMultiProcessController* Parallel(vtkInformation* outputInformation);
 int SolveTogether(vtkMultiProcessController* controller, vtkPolyData* piece, vtkPolyData* output, vtkTable* table,
   const std::function<int(vtkPolyData* whole, vtkPolyData* result, vtkTable* table)>& work);
 
+/// Every rank's `piece` (null for none) appended in rank order, on every rank, with the
+/// field data of the first piece with points.
+void AllGather(vtkMultiProcessController* controller, vtkPolyData* piece, vtkPolyData* whole);
+
 /// The solver's process group for the ranks of `controller` (one process where null): its
 /// sum is the controller's AllReduce.
 radiosity::ProcessGroup Group(vtkMultiProcessController* controller);

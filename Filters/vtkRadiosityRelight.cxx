@@ -25,6 +25,7 @@
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
+#include "vtkNew.h"
 #include "vtkTable.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkVariant.h"
@@ -613,33 +614,63 @@ vtkSmartPointer<vtkUnsignedCharArray> Display(vtkFloatArray* linear, double expo
 int vtkRadiosityRelight::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  return vtkRadiosityAdapter::Guarded(this, vtkPolyData::GetData(inputVector[0]), vtkPolyData::GetData(outputVector), [&]() -> int {
-    vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
-    vtkPolyData* output = vtkPolyData::GetData(outputVector);
-    this->Internal->Names.clear();
-    this->Internal->Effective.clear();
-    if (input->GetNumberOfCells() == 0 && vtkRadiosityPieces::Parallel(outputVector->GetInformationObject(0)))
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  double time = 0;
+  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
+  {
+    time = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+  }
+  else if (outInfo->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()))
+  {
+    time = outInfo->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS())[0];
+  }
+  vtkPolyData* movers = this->GetNumberOfInputConnections(1) ? vtkPolyData::GetData(inputVector[1], 0) : nullptr;
+  vtkPolyData* dynamic = this->GetNumberOfInputConnections(2) ? vtkPolyData::GetData(inputVector[2], 0) : nullptr;
+  this->Internal->Names.clear();
+  this->Internal->Effective.clear();
+  vtkMultiProcessController* parallel = vtkRadiosityPieces::Parallel(outInfo);
+  if (parallel && (this->GetNumberOfInputConnections(1) || this->GetNumberOfInputConnections(2)))
+  {
+    // Moving lights shoot into the whole scene past every occluder: each rank relights
+    // the whole (the pieces of all three inputs gathered) and keeps its own piece.
+    return vtkRadiosityAdapter::Guarded(this, nullptr, output, [&]() -> int {
+      vtkNew<vtkPolyData> allMovers, allDynamic;
+      vtkRadiosityPieces::AllGather(parallel, movers, allMovers);
+      vtkRadiosityPieces::AllGather(parallel, dynamic, allDynamic);
+      vtkNew<vtkTable> unused;
+      const int ok = vtkRadiosityPieces::SolveTogether(parallel, input, output, unused,
+        [&](vtkPolyData* whole, vtkPolyData* result, vtkTable*) {
+          return this->Relight(whole, movers ? allMovers.Get() : nullptr, dynamic ? allDynamic.Get() : nullptr, time, result);
+        });
+      if (ok && !this->Internal->Rig.KeyframeTimes().empty())
+      {
+        output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);
+      }
+      return ok;
+    });
+  }
+  return vtkRadiosityAdapter::Guarded(this, input, output, [&]() -> int {
+    if (input->GetNumberOfCells() == 0 && parallel)
     {
       output->ShallowCopy(input); // this rank's piece of the scene is empty: nothing to relight
       return 1;
     }
+    return this->Relight(input, movers, dynamic, time, output);
+  });
+}
+
+int vtkRadiosityRelight::Relight(
+  vtkPolyData* input, vtkPolyData* movers, vtkPolyData* dynamic, double time, vtkPolyData* output)
+{
+  {
     if (!std::isfinite(this->Exposure) || !std::isfinite(this->IndirectScale))
     {
       vtkErrorMacro(<< "Cannot relight: Exposure (" << this->Exposure << ") and IndirectScale ("
                     << this->IndirectScale << ") must be finite.");
       return 0;
     }
-    vtkInformation* outInfo = outputVector->GetInformationObject(0);
-    double time = 0;
-    if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
-    {
-      time = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
-    }
-    else if (outInfo->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()))
-    {
-      time = outInfo->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS())[0];
-    }
-    this->NamesString.clear();
 
     // Lights: the solver's LightNames, else every Radiosity_* point or cell array.
     const std::string prefix = "Radiosity_";
@@ -705,7 +736,6 @@ int vtkRadiosityRelight::RequestData(
     std::vector<std::string> pointArrays, cellArrays;
     for (const std::string& name : names)
     {
-      this->NamesString += (this->NamesString.empty() ? "" : ";") + name;
       pointArrays.push_back(prefix + name);
       cellArrays.push_back(prefix + name);
     }
@@ -748,8 +778,6 @@ int vtkRadiosityRelight::RequestData(
 
     this->LastMovingRays = 0;
     this->LastMovingSeconds = 0;
-    vtkPolyData* movers = this->GetNumberOfInputConnections(1) ? vtkPolyData::GetData(inputVector[1], 0) : nullptr;
-    vtkPolyData* dynamic = this->GetNumberOfInputConnections(2) ? vtkPolyData::GetData(inputVector[2], 0) : nullptr;
     const bool moving = movers && movers->GetNumberOfPoints() > 0;
     if (moving && !this->AddMovingLights(input, movers, dynamic, pointResult, cellResult, error))
     {
@@ -787,5 +815,5 @@ int vtkRadiosityRelight::RequestData(
       output->GetCellData()->SetScalars(Display(cellResult, this->Exposure));
     }
     return 1;
-  });
+  }
 }

@@ -138,9 +138,11 @@ private:
   long long LoadedScheduleStamp = 0; ///< its last write time when read: a newer one re-reads it
   char* ScheduleFileName = nullptr;
   bool LoadSchedule(std::string& error);
-  std::string NamesString; ///< the names joined by ';', for messages
   vtkSmartPointer<vtkStringArray> NamesInfo;
   vtkSmartPointer<vtkStringArray> SettingsInfo;
+  /// Relights `input` (with its moving lights and dynamic objects, either may be null)
+  /// into `output`; 0 with the error reported when it cannot.
+  int Relight(vtkPolyData* input, vtkPolyData* movers, vtkPolyData* dynamic, double time, vtkPolyData* output);
   struct MovingState;
   MovingState* Moving = nullptr; ///< scene and Embree shader, rebuilt only when inputs change
   bool AddMovingLights(vtkPolyData* scene, vtkPolyData* lights, vtkPolyData* dynamic,

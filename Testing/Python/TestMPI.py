@@ -13,7 +13,7 @@ import tempfile
 
 import numpy as np
 from vtkmodules.vtkCommonCore import vtkLogger
-from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter
 
 import relight
 from relight import cell_array, cell_centroids, light_names, point_array, read_polydata
@@ -26,12 +26,12 @@ PLUGIN_DIR = os.environ["RELIGHT_PLUGIN_DIR"]
 folder = tempfile.mkdtemp()
 
 
-def parallel_run(mode, ranks=2):
+def parallel_run(mode, ranks=2, extra=()):
     out = os.path.join(folder, f"{mode}.vtp")
     env = dict(os.environ, PV_PLUGIN_PATH=PLUGIN_DIR)
     # A hang (a rank left waiting in a collective) fails by the timeout.
     run = subprocess.run([shutil.which("mpiexec"), "--allow-run-as-root", "--oversubscribe", "-np", str(ranks),
-                          "pvbatch", "--mpi", os.path.join(ROOT, "Testing", "Python", "mpi_solve.py"), SCENE, out, mode],
+                          "pvbatch", "--mpi", os.path.join(ROOT, "Testing", "Python", "mpi_solve.py"), SCENE, out, mode, *extra],
                          capture_output=True, text=True, env=env, timeout=300)
     errors = [line for line in (run.stdout + run.stderr).splitlines() if "ERR|" in line or "Traceback" in line]
     reader = vtkXMLPolyDataReader()
@@ -81,6 +81,35 @@ for mode, tolerance in (("whole", 1e-6), ("redistributed", 1e-2)):
         worst = max([worst] + [np.abs(mine[c] - theirs[c]).max() / scale for c in common])
         check(len(common) >= 0.9 * len(theirs), f"{mode}: {len(common)} of {len(theirs)} elements found at the serial centres ({name})")
     check(worst <= tolerance, f"{mode}: largest difference from the serial run {worst:.2e} of the peak (at most {tolerance:g})")
+
+# Moving lights and a dynamic object on a spread scene: every rank relights its piece with
+# the whole scene's occluders and the basis of all patches, as one process does.
+movers = relight.point_lights([(1.0, 1.2, 2.0), (3.0, 1.0, 1.0)], intensity=3.0, color=(1.0, 0.8, 0.6))
+blocker = relight.make_scene([[(0.7, 0.6, 1.7), (1.3, 0.6, 1.7), (1.3, 0.6, 2.3), (0.7, 0.6, 2.3)]], [(0.5, 0.5, 0.5)], [-1])
+files = [os.path.join(folder, name) for name in ("movers.vtp", "blocker.vtp")]
+for data, path in zip((movers, blocker), files):
+    writer = vtkXMLPolyDataWriter()
+    writer.SetInputData(data)
+    writer.SetFileName(path)
+    writer.Write()
+basis = relight.solve(read_polydata(SCENE), 1.0, 0.5, ConvergenceThreshold=1e-4, MaximumShots=0, PatchBasis=True)
+moving = relight.vtkRadiosityRelight()
+moving.SetInputConnection(0, basis.GetOutputPort())
+moving.SetInputData(1, movers)
+moving.SetInputData(2, blocker)
+moving.Update()
+still = serial.GetOutput()
+for mode, tolerance in (("moving-whole", 1e-6), ("moving", 2e-2)):
+    result, errors, code = parallel_run(mode, extra=files)
+    check(code == 0 and not errors, f"{mode}: 2 ranks finish with no error ({code}; {errors[:2]})")
+    mine, theirs, without = (by_centre(d, "Radiosity") for d in (result, moving.GetOutput(), still))
+    common = [c for c in theirs if c in mine]
+    scale = max(np.abs(v).max() for v in theirs.values())
+    worst = max(np.abs(mine[c] - theirs[c]).max() / scale for c in common) if common else 1.0
+    lit = max(np.abs(theirs[c] - without[c]).max() / scale for c in common) if common else 0.0
+    check(len(common) >= 0.9 * len(theirs) and worst <= tolerance < lit,
+          f"{mode}: relit with moving lights and a blocker within {worst:.2e} of one process (at most {tolerance:g}) "
+          f"at {len(common)} elements; the moving lights change it by {lit:.2f} of the peak")
 
 # MaximumElements bounds the whole scene, not each rank's piece: one element size for all.
 result, errors, code = parallel_run("budget")

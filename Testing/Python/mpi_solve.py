@@ -1,8 +1,10 @@
 """Run by TestMPI.py as `mpiexec -np N pvbatch --mpi mpi_solve.py SCENE OUT MODE`: meshes and
 solves SCENE on ParaView's MPI server, the scene as read (all on rank 0), spread over the
 ranks (MODE redistributed; budget: the same with MaximumElements), with an area light added by Mark Lights (marked), or with a
-Mark Lights that fails on rank 0 (broken: every rank must finish, none waiting), and
-writes the relit result gathered on rank 0, with the rank of each point (ProcessId)."""
+Mark Lights that fails on rank 0 (broken: every rank must finish, none waiting), or
+spread and relit with moving lights and a dynamic object read from the files LIGHTS and
+BLOCKER (moving), and writes the relit result gathered on rank 0, with the rank of each
+point (ProcessId)."""
 
 import sys
 
@@ -13,15 +15,19 @@ from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 
 scene_path, out_path, mode = sys.argv[1], sys.argv[2], sys.argv[3]
 scene = XMLPolyDataReader(FileName=[scene_path])
-if mode in ("redistributed", "budget"):
+if mode in ("redistributed", "budget", "moving"):  # "moving-whole": the moving lights on the scene as read
     scene = RedistributeDataSet(Input=scene)
 if mode in ("marked", "broken"):
     scene = MarkLights(Input=scene, LightName="Desk", MaterialPattern="No such material" if mode == "broken" else "",
                        AreaLights=["Desk", "1", "2", "1", "2", "0", "-1", "0", "0.3", "0", "4", "4", "4"])
 mesher = RadiosityMesher(Input=scene, PatchSize=1.0, ElementSize=0.5 if mode != "budget" else 0.1, SharePatches=0,
                          MaximumElements=300 if mode == "budget" else 0)
-solver = LightTaggedRadiosity(Input=mesher, ConvergenceThreshold=1e-4)
-relit = ProcessIdScalars(Input=RadiosityRelight(Input=solver))
+solver = LightTaggedRadiosity(Input=mesher, ConvergenceThreshold=1e-4, PatchBasis=1 if mode.startswith("moving") else 0)
+relight = RadiosityRelight(Input=solver)
+if mode.startswith("moving"):
+    relight.MovingLights = XMLPolyDataReader(FileName=[sys.argv[4]])
+    relight.DynamicObjects = XMLPolyDataReader(FileName=[sys.argv[5]])
+relit = ProcessIdScalars(Input=relight)
 result = servermanager.Fetch(relit)
 writer = vtkXMLPolyDataWriter()
 writer.SetInputData(result)
