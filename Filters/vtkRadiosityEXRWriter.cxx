@@ -207,3 +207,23 @@ void vtkRadiosityEXRWriter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ArrayName: " << (this->ArrayName ? this->ArrayName : "(none)") << "\n";
   os << indent << "Size: " << this->Size[0] << " x " << this->Size[1] << "\n";
 }
+
+bool vtkRadiosityEXRWriter::ReadLayer(const char* fileName, const char* layer, vtkFloatArray* rgb, int size[2])
+{
+  if (!fileName || !rgb)
+  {
+    vtkGenericWarningMacro(<< "Cannot read an EXR layer: no file name or no output array.");
+    return false;
+  }
+  std::vector<float> values;
+  const std::string error = radiosity::ReadExrLayer(fileName, layer ? layer : "", size[0], size[1], values);
+  if (!error.empty())
+  {
+    vtkGenericWarningMacro(<< "Cannot read layer '" << (layer ? layer : "") << "' of " << fileName << ": " << error);
+    return false;
+  }
+  rgb->SetNumberOfComponents(3);
+  rgb->SetNumberOfTuples(static_cast<vtkIdType>(values.size() / 3));
+  std::copy(values.begin(), values.end(), rgb->GetPointer(0));
+  return true;
+}

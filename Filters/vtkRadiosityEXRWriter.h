@@ -66,6 +66,13 @@ public:
    */
   bool RenderImage(vtkFloatArray* rgb);
 
+  /**
+   * Reads back one layer of an OpenEXR file (`layer` a light's name as written, or empty
+   * for the plain R, G, B) into `rgb` (width * height tuples of 3, row 0 at the top) and
+   * its size into `size`. Returns false with an error naming the file and layer.
+   */
+  static bool ReadLayer(const char* fileName, const char* layer, vtkFloatArray* rgb, int size[2]);
+
 protected:
   vtkRadiosityEXRWriter();
   ~vtkRadiosityEXRWriter() override;

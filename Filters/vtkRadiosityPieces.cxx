@@ -1,7 +1,7 @@
 #include "vtkRadiosityPieces.h"
 #include "vtkRadiosityAdapter.h"
 
-#include "vtkAppendPolyData.h"
+#include "vtkRadiosityAppendPieces.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
@@ -102,8 +102,7 @@ void GatherWhole(vtkMultiProcessController* controller, vtkPolyData* piece, vtkP
   vtkNew<vtkPolyData> none;
   controller->AllGather(piece ? piece : none.Get(), pieces);
   failedRank = -1;
-  vtkNew<vtkAppendPolyData> append;
-  vtkPolyData* first = nullptr;
+  vtkNew<vtkRadiosityAppendPieces> append;
   for (size_t rank = 0; rank < pieces.size(); ++rank)
   {
     auto* data = vtkPolyData::SafeDownCast(pieces[rank]);
@@ -114,14 +113,12 @@ void GatherWhole(vtkMultiProcessController* controller, vtkPolyData* piece, vtkP
     if (data && (byCells ? data->GetNumberOfCells() : data->GetNumberOfPoints()) > 0)
     {
       append->AddInputData(data);
-      first = first ? first : data;
     }
   }
-  if (first)
+  if (append->GetNumberOfInputConnections(0) > 0)
   {
     append->Update();
     whole->ShallowCopy(append->GetOutput());
-    whole->SetFieldData(first->GetFieldData());
   }
 }
 } // namespace

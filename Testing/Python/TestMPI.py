@@ -60,6 +60,9 @@ serial.SetInputConnection(solver.GetOutputPort())
 serial.Update()
 reference = serial.GetOutput()
 names = light_names(reference)
+glb, exr = os.path.join(folder, "serial.glb"), os.path.join(folder, "serial.exr")
+relight.write_gltf(reference, glb, exposure=2.0)
+relight.write_exr(reference, exr, ((2, 1.2, 9), (2, 1.2, 2), (0, 1, 0), 40), size=(160, 120), light_layers=True)
 for mode, tolerance in (("whole", 1e-6), ("redistributed", 1e-2)):
     result, errors, code = parallel_run(mode)
     check(code == 0 and not errors, f"{mode}: 2 ranks finish with no error ({code}; {errors[:2]})")
@@ -81,6 +84,17 @@ for mode, tolerance in (("whole", 1e-6), ("redistributed", 1e-2)):
         worst = max([worst] + [np.abs(mine[c] - theirs[c]).max() / scale for c in common])
         check(len(common) >= 0.9 * len(theirs), f"{mode}: {len(common)} of {len(theirs)} elements found at the serial centres ({name})")
     check(worst <= tolerance, f"{mode}: largest difference from the serial run {worst:.2e} of the peak (at most {tolerance:g})")
+    # The writers gather every piece on rank 0: the same file as one process writes.
+    out = os.path.join(folder, f"{mode}.vtp")
+    if mode == "whole":
+        check(open(out + ".glb", "rb").read() == open(glb, "rb").read(), "whole: the .glb equals one process's, byte for byte")
+    else:
+        check(os.path.getsize(out + ".glb") > 0.9 * os.path.getsize(glb), "redistributed: the .glb holds the whole scene")
+    for layer in ["", *names]:
+        ours, theirs = relight.read_exr(out + ".exr", layer), relight.read_exr(exr, layer)
+        difference = np.abs(ours - theirs).mean() / theirs.mean()
+        check(difference <= (1e-6 if mode == "whole" else 1e-2),
+              f"{mode}: the .exr layer '{layer}' is within {difference:.1e} of one process's (mean)")
 
 # Moving lights and a dynamic object on a spread scene: every rank relights its piece with
 # the whole scene's occluders and the basis of all patches, as one process does.

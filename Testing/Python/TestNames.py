@@ -14,11 +14,19 @@ XML = os.path.join(ROOT, "Plugin", "RadiosityFilters.xml")
 README = os.path.join(ROOT, "README.md")
 
 
+def proxies_with_classes(root):
+    """The XML's proxies of the plugin's C++ classes: sources, filters, the writers wrapped by
+    ParaView's vtkParallelSerialWriter (its own properties are ParaView's) and their helper."""
+    tags = ("SourceProxy", "WriterProxy", "Proxy")
+    return [p for tag in tags for p in root.iter(tag) if (p.get("class") or "").startswith("vtkRadiosity")
+            or p.get("class") == "vtkLightTaggedRadiosity"]
+
+
 def xml_commands():
     """{class: {property: [commands]}} for every property that calls the C++ object."""
     proxies = {}
     root = ElementTree.parse(XML).getroot()
-    for proxy in list(root.iter("SourceProxy")) + list(root.iter("WriterProxy")):
+    for proxy in proxies_with_classes(root):
         properties = proxies.setdefault(proxy.get("class"), {})
         for prop in proxy:
             commands = [prop.get(a) for a in ("command", "clean_command") if prop.get(a)]
@@ -31,7 +39,7 @@ def undocumented():
     """Properties of the XML without help text (the panel's tooltip and the ? button)."""
     missing = []
     root = ElementTree.parse(XML).getroot()
-    for proxy in list(root.iter("SourceProxy")) + list(root.iter("WriterProxy")):
+    for proxy in proxies_with_classes(root):
         for prop in proxy:
             text = prop.findtext("Documentation") or ""
             # Ports and groups are not properties; time steps are ParaView's own.
@@ -42,8 +50,9 @@ def undocumented():
 
 check(not undocumented(), f"every property has help text (missing: {undocumented()})")
 commands = xml_commands()
-check(sorted(commands) == ["vtkLightTaggedRadiosity", "vtkRadiosityGLTFWriter", "vtkRadiosityLightMarker",
-                           "vtkRadiosityMesher", "vtkRadiosityRelight", "vtkRadiositySceneReader"],
+check(sorted(commands) == ["vtkLightTaggedRadiosity", "vtkRadiosityAppendPieces", "vtkRadiosityEXRWriter",
+                           "vtkRadiosityGLTFWriter", "vtkRadiosityLightMarker", "vtkRadiosityMesher",
+                           "vtkRadiosityRelight", "vtkRadiositySceneReader"],
       f"the XML makes proxies of {sorted(commands)}")
 for cls, properties in commands.items():
     wrapped = getattr(relight, cls)
@@ -51,11 +60,11 @@ for cls, properties in commands.items():
     check(not missing, f"{cls} has every command its XML calls ({len(properties)} properties; missing {missing})")
 
 rows = setting_rows(README)
-check(len(rows) == 6, f"the README's settings table has {len(rows)} rows, expected 6")
+check(len(rows) == 7, f"the README's settings table has {len(rows)} rows, expected 7")
 for proxy, cls, settings, methods in rows:
     wrapped = getattr(relight, cls)
     settable = {name for name, cs in commands.get(cls, {}).items() if any(c.startswith(("Set", "Add")) for c in cs)}
-    settable -= {"Input", "MovingLights", "DynamicObjects", "Selection"}
+    settable -= {"Input", "MovingLights", "DynamicObjects", "Selection", "DummyInput"}
     check(set(settings) == settable, f"{proxy}: the README lists the XML's settings "
                                      f"(only in README {sorted(set(settings) - settable)}, "
                                      f"only in XML {sorted(settable - set(settings))})")

@@ -72,7 +72,7 @@ def check_readme_names(readme, proxies):
     """Every setting the README's table lists is a property of its proxy, and every
     settable property is in the table (TestNames.py checks the XML against C++)."""
     table = {row[0]: row[2] for row in setting_rows(readme)}
-    check(len(table) == 6, "the README's settings table lists %d proxies, expected 6" % len(table))
+    check(len(table) == 7, "the README's settings table lists %d proxies, expected 7" % len(table))
     for proxy in proxies:
         xml_name = proxy.SMProxy.GetXMLName()
         listed = table.get(xml_name, [])

@@ -10,7 +10,7 @@ import sys
 
 from paraview import servermanager
 from paraview.simple import (LightTaggedRadiosity, MarkLights, ProcessIdScalars, RadiosityMesher,
-                             RadiosityRelight, RedistributeDataSet, XMLPolyDataReader)
+                             RadiosityRelight, RedistributeDataSet, SaveData, XMLPolyDataReader)
 from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 
 scene_path, out_path, mode = sys.argv[1], sys.argv[2], sys.argv[3]
@@ -29,6 +29,11 @@ if mode.startswith("moving"):
     relight.DynamicObjects = XMLPolyDataReader(FileName=[sys.argv[5]])
 relit = ProcessIdScalars(Input=relight)
 result = servermanager.Fetch(relit)
+if mode in ("whole", "redistributed"):
+    # ParaView's writers on the MPI server: the pieces gathered on rank 0, one file each.
+    SaveData(out_path + ".glb", proxy=relight, Exposure=2.0)
+    SaveData(out_path + ".exr", proxy=relight, CameraPosition=[2, 1.2, 9], FocalPoint=[2, 1.2, 2], ViewAngle=40,
+             Size=[160, 120], LightLayers=1)
 writer = vtkXMLPolyDataWriter()
 writer.SetInputData(result)
 writer.SetFileName(out_path)

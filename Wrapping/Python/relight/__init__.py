@@ -12,6 +12,7 @@ plus ``vtkRadiosityEXRWriter`` for HDR images, and helpers in :mod:`relight.scen
 
 from .vtkRadiosityFilters import (  # noqa: F401
     vtkLightTaggedRadiosity,
+    vtkRadiosityAppendPieces,
     vtkRadiosityEXRWriter,
     vtkRadiosityGLTFWriter,
     vtkRadiosityLightMarker,
@@ -35,6 +36,7 @@ from .scene import (  # noqa: F401
     point_array,
     point_lights,
     cell_array,
+    read_exr,
     read_polydata,
     render_png,
     solve,

@@ -269,6 +269,17 @@ def write_exr(data, path, camera, size=(640, 480), array="Radiosity", light_laye
         raise OSError(f"could not write {path!r}: {catcher.first_error()}")
 
 
+def read_exr(path, layer=""):
+    """One layer of an OpenEXR file (a light's name as written, or "" for the plain R, G,
+    B) as a (height, width, 3) float32 array, row 0 at the top. Raises OSError."""
+    from vtkmodules.vtkCommonCore import vtkFloatArray
+
+    rgb, size = vtkFloatArray(), [0, 0]
+    if not vtkRadiosityEXRWriter.ReadLayer(str(path), layer, rgb, size):
+        raise OSError(f"could not read layer {layer!r} of {path!r}")
+    return vtk_to_numpy(rgb).reshape(size[1], size[0], 3)
+
+
 def point_lights(positions, intensity=1.0, color=(1, 1, 1), normal=None):
     """Moving lights for vtkRadiosityRelight's second input: one point per light with the
     point arrays Color, Intensity and (for small Lambertian emitters) Normal."""
