@@ -95,6 +95,10 @@ public:
   /// stops all at the same shot.
   bool Continue()
   {
+    if (Group.Distributed())
+    {
+      return ContinueTogether();
+    }
     if (!UpdateActive())
     {
       Stats.Converged = true;
@@ -107,17 +111,9 @@ public:
     const bool outOfTime = Options.TimeBudget > 0 && Seconds() >= Options.TimeBudget;
     const bool abort = !outOfTime && Options.Progress && !Options.Progress(Fraction());
     double best = -1;
-    const int candidate = BestOwnedPatch(best);
-    if (Group.Distributed())
-    {
-      AgreeOnShot(outOfTime, abort, candidate, best);
-    }
-    else
-    {
-      Stats.OutOfTime = outOfTime;
-      Stats.Aborted = abort;
-      Next = std::max(candidate, 0);
-    }
+    Next = std::max(BestOwnedPatch(best), 0);
+    Stats.OutOfTime = outOfTime;
+    Stats.Aborted = abort;
     return !Stats.OutOfTime && !Stats.Aborted;
   }
 
@@ -219,34 +215,31 @@ public:
   /// Ledger and history after a shot; `received` is the power that reached receivers.
   void EndShot(int shooter, double received)
   {
-    const double shot = ShotSum * G.patchOpenArea[shooter];
-    std::fill(RemainingPer.begin(), RemainingPer.end(), 0.0);
-    for (int p : OwnedList)
+    Pending = { true, ShotSum * G.patchOpenArea[shooter], received, Seconds() };
+    ++Stats.Shots;
+    OwnedRemaining();
+    if (!Group.Distributed())
     {
-      for (int m = 0; m < L; ++m)
-      {
-        RemainingPer[m] += Power(p, m);
-      }
+      RecordShot(); // several ranks record it after the next sum, which brings their parts
     }
-    if (Group.Distributed())
-    {
-      RemainingPer.push_back(received);
-      Group.Sum(RemainingPer);
-      received = RemainingPer.back();
-      RemainingPer.pop_back();
-    }
+  }
+
+  /// The ledger and the history of the last shot, once RemainingPer and Pending.Received
+  /// hold the whole scene's.
+  void RecordShot()
+  {
+    Pending.Open = false;
     double remaining = 0;
     for (int m = 0; m < L; ++m)
     {
       remaining += RemainingPer[m];
       Stats.RemainingPerSolution.push_back(InitialPer[m] > 0 ? RemainingPer[m] / InitialPer[m] : 0.0);
     }
-    Stats.ReceivedPower += received;
-    Stats.EscapedPower += shot - received;
-    ++Stats.Shots;
+    Stats.ReceivedPower += Pending.Received;
+    Stats.EscapedPower += Pending.Shot - Pending.Received;
     Stats.UnshotPower = remaining;
     Stats.RemainingHistory.push_back(remaining / Initial);
-    Stats.TimeHistory.push_back(Seconds());
+    Stats.TimeHistory.push_back(Pending.Seconds);
   }
 
   /// Takes the estimator's culling counts, then Finish.
@@ -401,19 +394,32 @@ private:
         OwnedList.push_back(p);
       }
     }
+    if (Group.Distributed())
+    {
+      OwnedRemaining(); // each rank brings its own receivers' part to the first sum
+    }
   }
 
   double Power(int p, int m) const { return Channel::Sum(Unshot[Index(p, m)]) * G.patchOpenArea[p]; }
+
+  /// RemainingPer over this rank's patches (all of them for one process).
+  void OwnedRemaining()
+  {
+    std::fill(RemainingPer.begin(), RemainingPer.end(), 0.0);
+    for (int p : OwnedList)
+    {
+      for (int m = 0; m < L; ++m)
+      {
+        RemainingPer[m] += Power(p, m);
+      }
+    }
+  }
 
   /// Of this rank's patches, the one with the largest unshot power over the solutions
   /// being shot (the first on ties; -1 when it has none), and that power.
   int BestOwnedPatch(double& best)
   {
-    const bool skipConverged = Options.ConvergedSolutions != EffectMode::On;
-    for (int m = 0; m < L; ++m)
-    {
-      Distribute[m] = skipConverged ? Active[m] : 1;
-    }
+    Distribute = Mask();
     int shooter = -1;
     for (int p : OwnedList)
     {
@@ -431,49 +437,119 @@ private:
     return shooter;
   }
 
-  /// One sum over a table with a row per rank (its stop flags, its best patch, that
-  /// patch's power and unshot energy): any flag stops all; the largest power wins, the
-  /// lowest patch on ties, as in one process; and every rank takes the winner's unshot
-  /// energy, which only its owner has.
-  void AgreeOnShot(bool outOfTime, bool abort, int candidate, double best)
+  /// Continue for several ranks, with one sum per shot: a table with a row per rank holds
+  /// its stop flags, what the last shot delivered to its receivers and their remaining
+  /// unshot power, and its best patch for the next shot with that patch's power and unshot
+  /// energy. The rules then apply in the order of one process; the largest power wins
+  /// (the lowest patch on ties), and every rank takes the winner's unshot energy, which
+  /// only its owner has.
+  bool ContinueTogether()
   {
-    const size_t d = Channel::Doubles, values = L * d * (Direct ? 2 : 1), row = 4 + values;
-    std::vector<double> table(row * Group.Ranks(), 0.0);
-    double* mine = &table[row * Group.Rank()];
+    const bool outOfTime = Options.TimeBudget > 0 && Seconds() >= Options.TimeBudget;
+    const bool abort = !outOfTime && Options.Progress && !Options.Progress(Fraction());
+    std::vector<double> table = SumTable(outOfTime, abort);
+    double stop[2] = { 0, 0 };
+    Pending.Received = 0;
+    std::fill(RemainingPer.begin(), RemainingPer.end(), 0.0);
+    for (size_t r = 0; r < table.size(); r += Row())
+    {
+      stop[0] += table[r];
+      stop[1] += table[r + 1];
+      Pending.Received += table[r + 4];
+      for (int m = 0; m < L; ++m)
+      {
+        RemainingPer[m] += table[r + 5 + m];
+      }
+    }
+    if (Pending.Open)
+    {
+      RecordShot();
+    }
+    const std::vector<char> picked = Distribute; // the solutions the candidates were chosen for
+    if (!UpdateActive())
+    {
+      Stats.Converged = true;
+      return false;
+    }
+    if (Stats.Shots >= Stats.ShotCap)
+    {
+      return false;
+    }
+    Stats.OutOfTime = stop[0] > 0;
+    Stats.Aborted = !Stats.OutOfTime && stop[1] > 0;
+    if (Stats.OutOfTime || Stats.Aborted)
+    {
+      return false;
+    }
+    if (Mask() != picked)
+    {
+      table = SumTable(false, false); // a solution just converged: choose again without it
+    }
+    TakeWinner(table);
+    return true;
+  }
+
+  /// The solutions a shot carries: those still being shot (all with ConvergedSolutions On).
+  std::vector<char> Mask() const
+  {
+    std::vector<char> mask(L);
+    for (int m = 0; m < L; ++m)
+    {
+      mask[m] = Options.ConvergedSolutions != EffectMode::On ? Active[m] : 1;
+    }
+    return mask;
+  }
+
+  size_t Row() const { return 5 + L + L * Channel::Doubles * (Direct ? 2 : 1); }
+
+  /// This rank's row (see ContinueTogether) in a table summed over the ranks.
+  std::vector<double> SumTable(bool outOfTime, bool abort)
+  {
+    double best = -1;
+    const int candidate = BestOwnedPatch(best);
+    const size_t d = Channel::Doubles;
+    std::vector<double> table(Row() * Group.Ranks(), 0.0);
+    double* mine = &table[Row() * Group.Rank()];
     mine[0] = outOfTime ? 1 : 0;
     mine[1] = abort ? 1 : 0;
     mine[2] = best;
     mine[3] = candidate;
+    mine[4] = Pending.Open ? Pending.Received : 0.0;
+    std::copy(RemainingPer.begin(), RemainingPer.end(), mine + 5);
+    double* values = mine + 5 + L;
     for (int m = 0; m < L && candidate >= 0; ++m)
     {
-      Channel::Store(Unshot[Index(candidate, m)], mine + 4 + m * d);
+      Channel::Store(Unshot[Index(candidate, m)], values + m * d);
       if (Direct)
       {
-        Channel::Store(UnshotEmission[Index(candidate, m)], mine + 4 + (L + m) * d);
+        Channel::Store(UnshotEmission[Index(candidate, m)], values + (L + m) * d);
       }
     }
     Group.Sum(table);
+    return table;
+  }
+
+  /// The next shooter from a summed table, with its unshot energy.
+  void TakeWinner(const std::vector<double>& table)
+  {
     const double* winner = nullptr;
-    double stop[2] = { 0, 0 };
-    for (size_t r = 0; r < table.size(); r += row)
+    for (size_t r = 0; r < table.size(); r += Row())
     {
       const double* t = &table[r];
-      stop[0] += t[0];
-      stop[1] += t[1];
       if (t[3] >= 0 && (!winner || t[2] > winner[2] || (t[2] == winner[2] && t[3] < winner[3])))
       {
         winner = t;
       }
     }
-    Stats.OutOfTime = stop[0] > 0;
-    Stats.Aborted = !Stats.OutOfTime && stop[1] > 0;
     Next = winner ? static_cast<int>(winner[3]) : 0;
+    const size_t d = Channel::Doubles;
     for (int m = 0; m < L && winner; ++m)
     {
-      Unshot[Index(Next, m)] = Channel::Load(winner + 4 + m * d);
+      const double* values = winner + 5 + L;
+      Unshot[Index(Next, m)] = Channel::Load(values + m * d);
       if (Direct)
       {
-        UnshotEmission[Index(Next, m)] = Channel::Load(winner + 4 + (L + m) * d);
+        UnshotEmission[Index(Next, m)] = Channel::Load(values + (L + m) * d);
       }
     }
   }
@@ -589,6 +665,13 @@ private:
   std::vector<int> OwnedList;
   int OwnedElementCount = 0;
   int Next = 0; ///< the shooter Continue picked
+  /// The last shot until it is recorded: open, its power, what this rank's receivers (all,
+  /// for one process) received, and when it ended.
+  struct
+  {
+    bool Open = false;
+    double Shot = 0, Received = 0, Seconds = 0;
+  } Pending;
 };
 
 /// Calls body(Grey()) for a single grey channel, body(Rgb()) otherwise: the solver methods

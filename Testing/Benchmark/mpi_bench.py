@@ -52,7 +52,7 @@ def model(serial, parallel, ranks, shots, shares, elements, lights=8):
     repeated = serial - divided
     rows = []
     for n in (ranks, 16, 64):
-        per_shot_bytes = 8 * (n * (4 + 3 * lights) + lights + 1)  # AgreeOnShot's table + EndShot
+        per_shot_bytes = 8 * n * (5 + lights + 3 * lights)  # the shot's table: a row per rank
         final_bytes = 8 * 3 * lights * elements
         comm = sums * latency * math.log2(n) + (shots * per_shot_bytes + final_bytes) / 10e9 * math.log2(n)
         rows.append((n, repeated + divided / n + comm + imbalance * ranks / n, per_shot_bytes, comm))

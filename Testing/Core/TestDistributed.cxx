@@ -150,6 +150,15 @@ void ExpectSerialAnswer(SolverMethod method, int ranks, bool direct)
     EXPECT_LT(LargestDifference(many[r].Direct, one.Direct), 1e-9) << "rank " << r;
     EXPECT_NEAR(s.RayCount, one.Statistics.RayCount, 1e-6 * one.Statistics.RayCount);
     EXPECT_NEAR(s.ReceivedPower, one.Statistics.ReceivedPower, 1e-9 * one.Statistics.ReceivedPower);
+    // The convergence table, every shot, as one process has it; the lights converge at
+    // different shots, so the shooter is also chosen again after one drops out.
+    ASSERT_EQ(s.RemainingPerSolution.size(), one.Statistics.RemainingPerSolution.size());
+    ASSERT_EQ(s.TimeHistory.size(), static_cast<size_t>(s.Shots));
+    for (size_t i = 0; i < s.RemainingPerSolution.size(); ++i)
+    {
+      EXPECT_NEAR(s.RemainingPerSolution[i], one.Statistics.RemainingPerSolution[i], 1e-9) << "entry " << i;
+    }
+    EXPECT_NEAR(s.EscapedPower, one.Statistics.EscapedPower, 1e-9 * one.Statistics.EmittedPower);
     for (int m = 0; m < 8; ++m)
     {
       EXPECT_NEAR(many[r].Ambient[m].x, one.Ambient[m].x, 1e-9 * (one.Ambient[m].x + 1e-30));
