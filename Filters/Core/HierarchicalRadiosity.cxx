@@ -46,10 +46,10 @@ constexpr double kNearRadii = 2.0;
 class LinkBuilder
 {
 public:
-  /// `owned`: the receiver patches this process links to; `sumOverRanks`: the total of a
-  /// value over the processes solving together (the value itself for one).
+  /// `owned`: the receiver patches this process links to; `ranks`: the processes solving
+  /// together, which share the element factors of every shooter's near patches.
   LinkBuilder(const SceneGeometry& g, ShooterFormFactors& factors, const PatchNodes& nodes, const WorkerPool& pool,
-    int samples, double threshold, const std::vector<char>& owned, std::function<double(double)> sumOverRanks)
+    int samples, double threshold, const std::vector<char>& owned, Collective& ranks)
     : G(g)
     , Factors(factors)
     , Nodes(nodes)
@@ -60,7 +60,7 @@ public:
     , Kind(Patches)
     , NodeFactor(nodes.Count())
     , Owned(owned)
-    , SumOverRanks(std::move(sumOverRanks))
+    , Ranks(ranks)
   {
   }
 
@@ -110,7 +110,9 @@ private:
   /// the links of every process.
   void Conserve(int shooter, ShooterLinks& links) const
   {
-    const double scale = Factors.ConservationScale(shooter, SumOverRanks(links.ReceivingArea));
+    double receiving = links.ReceivingArea;
+    Ranks.Sum(&receiving, 1);
+    const double scale = Factors.ConservationScale(shooter, receiving);
     if (scale == 1.0)
     {
       return;
@@ -237,47 +239,87 @@ private:
     return false;
   }
 
-  /// Element factors for every element group, in parallel, kept in patch order.
+  /// Element factors for every element group, kept in patch order. Several ranks share
+  /// the work of all their groups element by element: a shooter's near patches are few, so
+  /// whole patches would leave one rank waiting for another at every link-building shot.
   void LinkElements(int shooter, ShooterLinks& links, SolverStatistics& stats)
   {
-    std::vector<size_t> offset(links.Groups.size() + 1, 0);
-    for (size_t i = 0; i < links.Groups.size(); ++i)
+    std::vector<int> elements;
+    for (int q : links.Groups)
     {
-      offset[i + 1] = offset[i] + G.patchElements[links.Groups[i]].size();
+      elements.insert(elements.end(), G.patchElements[q].begin(), G.patchElements[q].end());
     }
-    Scratch.assign(offset.back(), 0.0);
+    if (Ranks.Distributed())
+    {
+      ShareFactors(shooter, elements, stats);
+    }
+    else
+    {
+      Scratch.assign(elements.size(), 0.0);
+      ComputeFactors(shooter, elements, 0, 1, stats);
+    }
+    stats.FormFactorCount += static_cast<long long>(elements.size());
+    size_t k = 0;
+    for (int q : links.Groups)
+    {
+      for (size_t j = 0; j < G.patchElements[q].size(); ++j, ++k)
+      {
+        const float f = static_cast<float>(Scratch[k]);
+        if (f > 0)
+        {
+          links.Elements.push_back(elements[k]);
+          links.ElementFactors.push_back(f);
+          links.ReceivingArea += static_cast<double>(f) * G.area[elements[k]];
+        }
+      }
+      links.GroupEnd.push_back(static_cast<int>(links.Elements.size()));
+    }
+  }
+
+  /// Scratch[k] = F(elements[k] -> shooter) for every k = first + i * step, in parallel.
+  void ComputeFactors(int shooter, const std::vector<int>& elements, int first, int step, SolverStatistics& stats)
+  {
+    const int count = static_cast<int>(elements.size()) > first
+      ? (static_cast<int>(elements.size()) - first + step - 1) / step
+      : 0;
     std::atomic<long long> rays{ 0 };
-    Pool.For(static_cast<int>(links.Groups.size()), 1, [&](int begin, int end) {
+    Pool.For(count, 16, [&](int begin, int end) {
       thread_local std::vector<Vec3> scratch;
       ShooterFormFactors::RayCounts counts;
       for (int i = begin; i < end; ++i)
       {
-        const std::vector<int>& elements = G.patchElements[links.Groups[i]];
-        for (size_t j = 0; j < elements.size(); ++j)
-        {
-          Scratch[offset[i] + j] = Factors.ElementFactor(shooter, elements[j], Samples, scratch, counts);
-        }
+        const size_t k = static_cast<size_t>(first) + static_cast<size_t>(i) * step;
+        Scratch[k] = Factors.ElementFactor(shooter, elements[k], Samples, scratch, counts);
       }
       rays += counts.Rays;
       Factors.Count(counts, Samples);
     });
     stats.RayCount += rays;
-    stats.FormFactorCount += static_cast<long long>(offset.back());
-    for (size_t i = 0; i < links.Groups.size(); ++i)
+  }
+
+  /// The ranks' element lists joined in rank order; each rank computes every Ranks-th
+  /// factor of the whole list, and a sum gives every rank all of them. Scratch ends with
+  /// this rank's own elements' factors, in their order.
+  void ShareFactors(int shooter, const std::vector<int>& mine, SolverStatistics& stats)
+  {
+    std::vector<double> counts(Ranks.Ranks(), 0.0);
+    counts[Ranks.Rank()] = static_cast<double>(mine.size());
+    Ranks.Sum(counts);
+    size_t before = 0, total = 0;
+    for (int r = 0; r < Ranks.Ranks(); ++r)
     {
-      const std::vector<int>& elements = G.patchElements[links.Groups[i]];
-      for (size_t j = 0; j < elements.size(); ++j)
-      {
-        const float f = static_cast<float>(Scratch[offset[i] + j]);
-        if (f > 0)
-        {
-          links.Elements.push_back(elements[j]);
-          links.ElementFactors.push_back(f);
-          links.ReceivingArea += static_cast<double>(f) * G.area[elements[j]];
-        }
-      }
-      links.GroupEnd.push_back(static_cast<int>(links.Elements.size()));
+      before += r < Ranks.Rank() ? static_cast<size_t>(counts[r]) : 0;
+      total += static_cast<size_t>(counts[r]);
     }
+    std::vector<double> ids(total, 0.0);
+    std::copy(mine.begin(), mine.end(), ids.begin() + static_cast<std::ptrdiff_t>(before));
+    Ranks.Sum(ids);
+    const std::vector<int> all(ids.begin(), ids.end());
+    Scratch.assign(total, 0.0);
+    ComputeFactors(shooter, all, Ranks.Rank(), Ranks.Ranks(), stats);
+    Ranks.Sum(Scratch); // each factor computed by one rank, zero elsewhere: the sum is exact
+    Scratch.erase(Scratch.begin(), Scratch.begin() + static_cast<std::ptrdiff_t>(before));
+    Scratch.resize(mine.size());
   }
 
   const SceneGeometry& G;
@@ -290,7 +332,7 @@ private:
   std::vector<LinkKind> Kind;
   std::vector<double> NodeFactor, Scratch;
   const std::vector<char>& Owned;
-  const std::function<double(double)> SumOverRanks;
+  Collective& Ranks;
 };
 
 std::vector<Vec3> MeanReflectance(const SceneMesh& mesh, const SceneGeometry& g)
@@ -349,10 +391,7 @@ void Shoot(const SceneMesh& mesh, const SceneGeometry& g, const Visibility& rays
   state.EnablePatchGathering(nodes);
   const int samples = options.Visibility == EffectMode::Off ? 0 : options.Samples;
   const double refine = options.RefinementThreshold > 0 ? options.RefinementThreshold : 2.0; // 2: never
-  LinkBuilder builder(g, estimator, nodes, pool, samples, refine, state.OwnedPatchFlags(), [&state](double value) {
-    state.SumOverRanks(&value, 1);
-    return value;
-  });
+  LinkBuilder builder(g, estimator, nodes, pool, samples, refine, state.OwnedPatchFlags(), state.Ranks());
   const std::vector<Vec3> meanReflectance = MeanReflectance(mesh, g);
   std::vector<ShooterLinks> links(state.Patches);
   std::vector<double> factors;

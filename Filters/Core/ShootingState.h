@@ -86,8 +86,8 @@ public:
   bool OwnsElement(int e) const { return Owned[G.elementPatch[e]] != 0; }
   int OwnedElements() const { return OwnedElementCount; }
   const std::vector<char>& OwnedPatchFlags() const { return Owned; }
-  /// Sums over the processes solving together (nothing to do for one).
-  void SumOverRanks(double* values, size_t count) { Group.Sum(values, count); }
+  /// The processes solving together (one, where its sums do nothing).
+  Collective& Ranks() { return Group; }
 
   /// Checks the stopping rules in order (converged, shot cap, time, abort) and picks the
   /// next shooter: the patch with the largest unshot power over the solutions still being
