@@ -5,8 +5,9 @@ ranks, one thread each, and what the ranks send each other.
 
 Runs `mpiexec -np 1` and `-np R` pvbatch alternately, `repeats` times, and takes each one's
 fastest run (this machine's neighbours make single runs noisy). Prints the solve times, the
-speed-up, each rank's share of the receivers, the sums per shot and their bytes, and a model
-of 16 and 64 ranks built from these figures."""
+speed-up, each rank's share of the receivers, the sums per shot and their bytes, the time of
+one sum with every rank ready (mpi_latency.py), and a model of 16 and 64 ranks built from
+these figures."""
 
 import argparse
 import math
@@ -36,27 +37,39 @@ def run(ranks, scene, elements, threads):
     return float(found.group(1)), int(found.group(2)), sorted(shares, key=lambda s: s["rank"]), shots
 
 
-def model(serial, parallel, ranks, shots, shares, elements, lights=8):
-    """Predicted solve seconds on n ranks: D + C / n + communication + imbalance. D (work
-    every rank repeats) and C (work the ranks divide) come from the two measured runs. A sum
-    over n ranks costs latency x log2(n) (a tree reduction), the latency taken from the
-    rank that waited least (its time in sums is transfers, not waiting), plus its bytes
-    over 10 GB/s (an assumption; InfiniBand HDR moves 25 GB/s). Imbalance, the extra wait of
-    the rank that waited most, is kept at its measured share of the divided work per rank."""
-    sums = shares[0]["sums"]
-    waits = [s["sum_seconds"] for s in shares]
-    latency = min(waits) / (sums * max(math.log2(ranks), 1))
-    imbalance = max(waits) - min(waits)
-    compute = parallel - max(waits)
-    divided = (serial - compute) * ranks / (ranks - 1)
+def latency(ranks):
+    """Seconds of one sum over `ranks` ranks when all are waiting for it (mpi_latency.py)."""
+    command = [shutil.which("mpiexec"), "--allow-run-as-root", "--oversubscribe", "-np", str(ranks),
+               "pvbatch", "--mpi", "--symmetric", os.path.join(HERE, "mpi_latency.py")]
+    done = subprocess.run(command, capture_output=True, text=True, timeout=600)
+    found = re.search(r"LATENCY ([\d.]+) us", done.stdout + done.stderr)
+    if not found:
+        raise SystemExit(f"the latency run failed:\n{(done.stdout + done.stderr)[-2000:]}")
+    return float(found.group(1)) * 1e-6
+
+
+def model(serial, parallel, ranks, shots, shares, elements, sum_latency, lights=8):
+    """Predicted solve seconds on n ranks: D + C / n x (1 + u) + transfers x log2(n).
+    Each rank's work is the run's time less its time in sums; their mean and the serial
+    run give D (work every rank repeats) and C (work the ranks divide); u is how much the
+    slowest rank's work exceeds the mean (kept at its measured share). A sum costs the
+    latency measured with every rank ready, per level of a tree reduction, plus its bytes
+    over 10 GB/s (an assumption; InfiniBand HDR moves 25 GB/s): the shot's table grows
+    with n, the element factors shared at link-building shots do not."""
+    work = [parallel - s["sum_seconds"] for s in shares]
+    mean = sum(work) / len(work)
+    divided = (serial - mean) * ranks / (ranks - 1)
     repeated = serial - divided
+    imbalance = max(work) / mean - 1
+    sums = shares[0]["sums"]
+    table = lambda n: 8 * n * (5 + 4 * lights)  # noqa: E731  (a row per rank)
+    shared = shares[0]["shot_bytes"] - table(ranks)  # element factors of link-building shots
     rows = []
     for n in (ranks, 16, 64):
-        per_shot_bytes = 8 * n * (5 + lights + 3 * lights)  # the shot's table: a row per rank
-        final_bytes = 8 * 3 * lights * elements
-        comm = sums * latency * math.log2(n) + (shots * per_shot_bytes + final_bytes) / 10e9 * math.log2(n)
-        rows.append((n, repeated + divided / n + comm + imbalance * ranks / n, per_shot_bytes, comm))
-    return repeated, divided, latency, imbalance, rows
+        per_shot = table(n) + shared
+        comm = math.log2(n) * (sums * sum_latency + (shots * per_shot + 8 * 3 * lights * elements) / 10e9)
+        rows.append((n, repeated + divided / n * (1 + imbalance) + comm, per_shot, comm))
+    return repeated, divided, imbalance, rows
 
 
 def main():
@@ -82,11 +95,13 @@ def main():
         print(f"  rank {int(s['rank'])}: received for {int(s['mine'])} elements, cast {int(s['rays'])} rays, "
               f"{int(s['sums'])} sums ({s['sums'] / shots:.2f} per shot), {int(s['shot_bytes'])} bytes per shot, "
               f"{s['mb']:.1f} MB in all (the solution exchange included), {s['sum_seconds']:.2f} s in sums")
-    repeated, divided, latency, imbalance, rows = model(serial, parallel, args.ranks, shots, shares, elements)
+    sum_latency = latency(args.ranks)
+    repeated, divided, imbalance, rows = model(serial, parallel, args.ranks, shots, shares, elements, sum_latency)
     print(f"\nModel from these figures: {repeated:.2f} s every rank repeats, {divided:.2f} s the ranks divide, "
-          f"{latency * 1e6:.0f} us per sum and tree level, {imbalance:.2f} s of waiting for the slower rank")
+          f"the slowest rank does {100 * imbalance:.0f} % more than the mean, "
+          f"{sum_latency * 1e6:.1f} us per sum with every rank ready")
     for n, seconds, per_shot, comm in rows:
-        print(f"  {n:3d} ranks: {per_shot} bytes per shot, {comm:.2f} s communicating, predicted {seconds:.2f} s, "
+        print(f"  {n:3d} ranks: {per_shot / 1e3:.1f} kB per shot, {comm:.2f} s in transfers, predicted {seconds:.2f} s, "
               f"speed-up {serial / seconds:.1f}x")
 
 
