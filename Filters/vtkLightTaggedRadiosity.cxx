@@ -296,10 +296,12 @@ int vtkLightTaggedRadiosity::Solve(
     }
 
     const int solutions = this->SolutionMode == STANDARD_COMBINED ? 1 : grouping.Solutions;
-    if (!(error = radiosity::CheckMemory(radiosity::SolveMemory(mesh.NumberOfPolygons(),
-            static_cast<long long>(mesh.points.size()), solutions, this->SeparateDirect),
-            std::to_string(solutions) + " solutions on " + std::to_string(mesh.NumberOfPolygons()) + " elements"))
-           .empty())
+    const radiosity::ProcessGroup group = vtkRadiosityPieces::Group(ranks);
+    // The ranks' memory differs: all must agree before the first sum of the solve.
+    error = radiosity::CheckMemory(radiosity::SolveMemory(mesh.NumberOfPolygons(),
+              static_cast<long long>(mesh.points.size()), solutions, this->SeparateDirect),
+      std::to_string(solutions) + " solutions on " + std::to_string(mesh.NumberOfPolygons()) + " elements");
+    if (!(error = radiosity::AgreeOnFailure(group, error, "has too little memory for the solve")).empty())
     {
       vtkErrorMacro(<< "Cannot solve: " << error
                     << "; group lights into LightBanks, solve StandardCombined, or use fewer elements.");
@@ -307,7 +309,6 @@ int vtkLightTaggedRadiosity::Solve(
     }
     const auto start = std::chrono::steady_clock::now();
     const int threads = vtkRadiosityAdapter::Threads(this->NumberOfThreads);
-    const radiosity::ProcessGroup group = vtkRadiosityPieces::Group(ranks);
     radiosity::RadiositySolver solver(mesh, threads, group);
     if (!solver.Error().empty())
     {

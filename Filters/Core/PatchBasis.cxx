@@ -412,7 +412,9 @@ PatchBasis SolvePatchBasis(const RadiositySolver& solver, const SceneMesh& mesh,
   level = ResolveBasisLevel(level, n, P);
   // Nodes: a patch has its corners and centre; 8 per patch bounds the estimate.
   const double bytes = 12.0 * P * (level == BasisLevel::Elements ? n : std::min(n, 8 * P));
-  const std::string tooBig = CheckMemory(2 * bytes, "the patch basis"); // its solve holds about as much again
+  // Its solve holds about as much again; ranks solving together stop together.
+  const std::string tooBig = AgreeOnFailure(options.Group, CheckMemory(2 * bytes, "the patch basis"),
+    "has too little memory for the patch basis");
   if (!tooBig.empty())
   {
     PatchBasis none;

@@ -6,6 +6,13 @@
 namespace radiosity
 {
 
+std::string AgreeOnFailure(const ProcessGroup& group, const std::string& mine, const std::string& otherwise)
+{
+  double failed = mine.empty() ? 0.0 : 1.0;
+  Collective(group).Sum(&failed, 1);
+  return !mine.empty() || failed == 0 ? mine : "another rank " + otherwise;
+}
+
 std::vector<char> OwnedPatches(const SceneGeometry& geometry, int rank, int ranks)
 {
   const size_t patches = geometry.patchElements.size();

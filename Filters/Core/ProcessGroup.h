@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cstddef>
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace radiosity
@@ -61,6 +62,11 @@ public:
 private:
   const ProcessGroup& Group;
 };
+
+/// The ranks' verdict on a step that may fail on some ranks only (memory, say): `mine` where
+/// this rank failed, "another rank <otherwise>" where only others did, else empty. Every
+/// rank calls it, so all go on together or all stop, none left waiting in a later sum.
+std::string AgreeOnFailure(const ProcessGroup& group, const std::string& mine, const std::string& otherwise);
 
 /// Which patches `rank` of `ranks` receives for: each patch goes to the rank with the
 /// fewest elements so far, in patch order, so the shares are even in elements and spread

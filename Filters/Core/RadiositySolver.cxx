@@ -43,7 +43,7 @@ RadiositySolver::RadiositySolver(const SceneMesh& mesh, int threads, const Proce
   , Geometry_(mesh)
   , Rays_(new Visibility(mesh))
 {
-  Error_ = Rays_->Error();
+  Error_ = AgreeOnFailure(group, Rays_->Error(), "could not prepare the scene for rays");
   if (Error_.empty())
   {
     SplitPatches_ = SplitSeparatedPatches(*Rays_, Mesh, Geometry_);

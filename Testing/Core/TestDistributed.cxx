@@ -266,3 +266,28 @@ TEST(Distributed, ARankWithNoPatchesJoinsAndGetsTheWhole)
     EXPECT_LT(LargestDifference(s.Radiosity, one.Radiosity), 1e-12);
   }
 }
+
+TEST(Distributed, AFailureOnOneRankStopsEveryRank)
+{
+  // Memory differs from rank to rank: a check that fails on one must stop all before the
+  // solve's first sum, or the others would wait there for ever.
+  ThreadRanks group(3);
+  std::vector<std::string> verdicts(3), quiet(3);
+  std::vector<std::thread> threads;
+  for (int r = 0; r < 3; ++r)
+  {
+    threads.emplace_back([&, r] {
+      const ProcessGroup mine = group.Group(r);
+      verdicts[r] = AgreeOnFailure(mine, r == 1 ? "needs 9 GB" : "", "has too little memory");
+      quiet[r] = AgreeOnFailure(mine, "", "has too little memory");
+    });
+  }
+  for (std::thread& t : threads)
+  {
+    t.join();
+  }
+  EXPECT_EQ(verdicts[0], "another rank has too little memory");
+  EXPECT_EQ(verdicts[1], "needs 9 GB");
+  EXPECT_EQ(verdicts[2], "another rank has too little memory");
+  EXPECT_EQ(quiet, std::vector<std::string>(3));
+}
