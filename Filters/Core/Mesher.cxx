@@ -34,9 +34,12 @@ struct Piece
   int patchCount = 0;
 };
 
+/// Pieces of at most `size` along `length`. A length within a millionth of a whole number
+/// of sizes counts as that number: VTK stores points as floats (7 digits), so a wall 5 m
+/// long rotated or scaled comes back 5.0000003 m, and would otherwise gain a row.
 int Divisions(double length, double size)
 {
-  return std::max(1, static_cast<int>(std::ceil(length / size - 1e-9)));
+  return std::max(1, static_cast<int>(std::ceil(length / size * (1 - 1e-6))));
 }
 
 void SplitQuad(const Vec3* q, const MesherOptions& o, Piece& piece)
@@ -145,6 +148,7 @@ double CountElements(const std::vector<Vec3>& points, const std::vector<int>& of
     return 0;
   }
   double total = 0;
+  const double noise = FloatNoise(Span(points)); // as MeshList decides
   for (size_t i = 0; i + 1 < offsets.size(); ++i)
   {
     const std::vector<Vec3> loop = GatherLoop(points, offsets, connectivity, static_cast<int>(i));
@@ -152,12 +156,12 @@ double CountElements(const std::vector<Vec3>& points, const std::vector<int>& of
     {
       continue;
     }
-    if (loop.size() == 4 && IsConvex(loop.data(), 4))
+    if (loop.size() == 4 && IsConvex(loop.data(), 4, noise))
     {
       total += CountQuad(loop.data(), patchSize, elementSize);
       continue;
     }
-    const std::vector<int> corners = Triangulate(loop.data(), static_cast<int>(loop.size()));
+    const std::vector<int> corners = Triangulate(loop.data(), static_cast<int>(loop.size()), noise);
     for (size_t t = 0; t + 2 < corners.size(); t += 3)
     {
       total += CountTriangle(loop[corners[t]], loop[corners[t + 1]], loop[corners[t + 2]], patchSize, elementSize);
@@ -194,17 +198,29 @@ double ElementSizeForBudget(
 
 namespace
 {
-/// The entry whose key is `key` or one step off in any of its four quantised parts: a
-/// value on a rounding boundary lands on either side depending on round-off, so one plane
-/// could otherwise become two surfaces, and which planes split would follow placement.
-template <typename Map, typename Key>
-typename Map::iterator FindNearbyKey(Map& map, const Key& key)
+/// A surface's plane: its first polygon's unit normal and offset.
+struct Plane
 {
-  const auto exact = map.find(key); // the usual case: stored keys differ by 2 or more
-  if (exact != map.end())
-  {
-    return exact;
-  }
+  Vec3 Normal;
+  double Offset = 0;
+};
+
+/// Normals of one surface differ by at most this (as a distance between unit normals); it
+/// is also the quantisation step of normals in the surface keys, so that one step either
+/// way finds every candidate.
+constexpr double kNormalTolerance = 1e-6;
+
+/// The surface a polygon's plane belongs to: of the surfaces keyed `key` or one step off in
+/// any quantised part (a value near a rounding boundary lands on either side), the nearest
+/// whose plane is within the tolerances of the polygon's (`normalTolerance` as a distance
+/// between unit normals, `offsetTolerance` between offsets), else -1. The tolerances, not
+/// where the rounding boundaries fall, decide, so placement and rotation do not.
+template <typename Map, typename Key>
+int FindSurface(const Map& map, const Key& key, const std::vector<Plane>& planes, const Plane& plane,
+  double offsetTolerance)
+{
+  int best = -1;
+  double nearest = 1;
   for (int a = -1; a <= 1; ++a)
   {
     for (int b = -1; b <= 1; ++b)
@@ -218,16 +234,23 @@ typename Map::iterator FindNearbyKey(Map& map, const Key& key)
           std::get<2>(probe) += b;
           std::get<3>(probe) += c;
           std::get<4>(probe) += d;
-          const auto found = map.find(probe);
-          if (found != map.end())
+          const auto range = map.equal_range(probe);
+          for (auto found = range.first; found != range.second; ++found)
           {
-            return found;
+            const Plane& other = planes[found->second];
+            const double distance = std::max(Norm(other.Normal - plane.Normal) / kNormalTolerance,
+              std::fabs(other.Offset - plane.Offset) / offsetTolerance);
+            if (distance <= nearest && (best < 0 || distance < nearest || found->second < best))
+            {
+              nearest = distance;
+              best = found->second;
+            }
           }
         }
       }
     }
   }
-  return map.end();
+  return best;
 }
 
 /// MeshPolygons on polygons that came from input cells `source[i]` (for messages, keys and
@@ -245,13 +268,15 @@ std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& of
     return err.str();
   }
   const int count = static_cast<int>(offsets.size()) - 1;
-  const double diagonal = Bounds(points).Diagonal();
+  const double diagonal = Span(points); // not the bounding box's: that turns with the scene
   const Vec3 sceneCentre = Bounds(points).Centre();
   const double quantum = std::max(diagonal, 1e-300) * 1e-9;
+  const double noise = FloatNoise(diagonal);
 
   // Surfaces: same caller key and same plane, up to a tolerance relative to the scene.
   using SurfaceId = std::tuple<int, long long, long long, long long, long long>;
-  std::map<SurfaceId, int> surfaceIndex;
+  std::multimap<SurfaceId, int> surfaceIndex; // a key holds every surface whose plane rounds to it
+  std::vector<Plane> surfacePlanes;
   std::vector<SurfaceMesh> surfaces;
   std::vector<std::map<std::tuple<long long, long long, long long>, SurfaceMesh::VertexHandle>> welds;
   // Per surface face: (input polygon, global patch id), parallel to the OpenMesh faces.
@@ -311,13 +336,13 @@ std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& of
     const Vec3 newell = NewellVector(loop.data(), static_cast<int>(loop.size()));
     const Vec3 normal = Normalized(newell);
     Piece piece;
-    if (loop.size() == 4 && IsConvex(loop.data(), 4))
+    if (loop.size() == 4 && IsConvex(loop.data(), 4, noise))
     {
       SplitQuad(loop.data(), options, piece);
     }
     else
     {
-      const std::vector<int> corners = Triangulate(loop.data(), static_cast<int>(loop.size()));
+      const std::vector<int> corners = Triangulate(loop.data(), static_cast<int>(loop.size()), noise);
       for (size_t t = 0; t + 2 < corners.size(); t += 3)
       {
         SplitTriangle(loop[corners[t]], loop[corners[t + 1]], loop[corners[t + 2]], options, piece);
@@ -328,16 +353,15 @@ std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& of
     // normal's round-off times its distance, and one floor would split into many.
     const double planeOffset = Dot(normal, PolygonCentroid(loop.data(), static_cast<int>(loop.size())) - sceneCentre);
     auto q = [&](double v, double scale) { return static_cast<long long>(std::llround(v / scale)); };
-    const SurfaceId id{ surfaceKey[source[i]], q(normal.x, 1e-6), q(normal.y, 1e-6), q(normal.z, 1e-6),
-      q(planeOffset, quantum * 1000) };
-    auto found = std::make_pair(FindNearbyKey(surfaceIndex, id), false);
-    if (found.first == surfaceIndex.end())
+    const SurfaceId id{ surfaceKey[source[i]], q(normal.x, kNormalTolerance), q(normal.y, kNormalTolerance),
+      q(normal.z, kNormalTolerance), q(planeOffset, quantum * 1000) };
+    const Plane plane{ normal, planeOffset };
+    int s = FindSurface(surfaceIndex, id, surfacePlanes, plane, quantum * 1000);
+    if (s < 0)
     {
-      found = surfaceIndex.emplace(id, static_cast<int>(surfaces.size()));
-    }
-    const int s = found.first->second;
-    if (found.second)
-    {
+      s = static_cast<int>(surfaces.size());
+      surfaceIndex.emplace(id, s);
+      surfacePlanes.push_back(plane);
       surfaces.emplace_back();
       welds.emplace_back();
       faceInfo.emplace_back();
@@ -353,8 +377,10 @@ std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& of
     {
       const std::array<Vec3, 3>& frame = gridFrames[s];
       const Vec3 c = PolygonCentroid(loop.data(), static_cast<int>(loop.size())) - frame[0];
-      const auto cell = std::make_tuple(s, static_cast<long long>(std::floor(Dot(c, frame[1]) / options.PatchSize)),
-        static_cast<long long>(std::floor(Dot(c, frame[2]) / options.PatchSize)));
+      // Models space their parts in whole patch sizes, so centroids fall on cell borders:
+      // the cells start a millionth early, or float rounding would pick either side.
+      auto cellOf = [&](double along) { return static_cast<long long>(std::floor(along / options.PatchSize + 1e-6)); };
+      const auto cell = std::make_tuple(s, cellOf(Dot(c, frame[1])), cellOf(Dot(c, frame[2])));
       const auto shared = sharedPatch.emplace(cell, out.patches);
       patchBase = shared.first->second;
       ownPatches = shared.second ? 1 : 0;
@@ -537,25 +563,19 @@ SuggestedSizes SuggestMeshSizes(const std::vector<Vec3>& points, const std::vect
   const std::vector<int>& connectivity)
 {
   SuggestedSizes sizes;
-  Vec3 mean{};
   for (size_t i = 0; i + 1 < offsets.size(); ++i)
   {
     const std::vector<Vec3> loop = GatherLoop(points, offsets, connectivity, static_cast<int>(i));
     const double area = loop.size() >= 3 ? PolygonArea(loop.data(), static_cast<int>(loop.size())) : 0.0;
     sizes.Area += std::isfinite(area) ? area : 0.0;
   }
+  std::vector<Vec3> corners;
+  corners.reserve(connectivity.size());
   for (int id : connectivity)
   {
-    mean += points[id] * (1.0 / static_cast<double>(connectivity.size()));
+    corners.push_back(points[id]);
   }
-  // Twice the largest distance from the corners' mean: unlike a bounding box's diagonal,
-  // turning the scene does not change it.
-  double radius = 0;
-  for (int id : connectivity)
-  {
-    radius = std::max(radius, Norm(points[id] - mean));
-  }
-  const double diagonal = 2.0 * radius;
+  const double diagonal = Span(corners); // unlike a bounding box's diagonal, turning does not change it
   if (!(diagonal > 0) || !std::isfinite(diagonal))
   {
     return sizes;

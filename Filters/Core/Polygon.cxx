@@ -11,6 +11,16 @@ namespace
 /// Below this fraction of its longest edge squared, an area is zero: what PolygonProblem
 /// rejects, Triangulate must not make.
 constexpr double ZeroAreaFraction = 1e-12;
+
+/// Twice the area below which corner a-b-c is straight: zero area for PolygonProblem, or
+/// no more than moving its points by `noise` can make of three points in a line. So a
+/// corner that is straight stays straight when a float-stored scene is turned or scaled,
+/// and the polygon is cut into the same triangles.
+double StraightLimit(const Vec3& a, const Vec3& b, const Vec3& c, double noise)
+{
+  const double longest = std::max({ Norm(b - a), Norm(c - b), Norm(a - c) });
+  return 2 * ZeroAreaFraction * longest * longest + 4 * noise * longest;
+}
 }
 
 Bounds::Bounds(const std::vector<Vec3>& points)
@@ -76,15 +86,35 @@ Vec3 PolygonCentroid(const Vec3* loop, int count)
   return count > 0 ? mean * (1.0 / count) : mean;
 }
 
-bool IsConvex(const Vec3* loop, int count)
+double Span(const std::vector<Vec3>& points)
 {
-  const Vec3 normal = NewellVector(loop, count);
+  Vec3 mean{};
+  for (const Vec3& p : points)
+  {
+    mean += p * (1.0 / static_cast<double>(points.size()));
+  }
+  double radius = 0;
+  for (const Vec3& p : points)
+  {
+    radius = std::max(radius, Norm(p - mean));
+  }
+  return 2.0 * radius;
+}
+
+double FloatNoise(double span)
+{
+  return 2 * 1.1920929e-7 * span;
+}
+
+bool IsConvex(const Vec3* loop, int count, double noise)
+{
+  const Vec3 unit = Normalized(NewellVector(loop, count));
   for (int i = 0; i < count; ++i)
   {
     const Vec3& a = loop[(i + count - 1) % count];
     const Vec3& b = loop[i];
     const Vec3& c = loop[(i + 1) % count];
-    if (Dot(normal, Cross(b - a, c - b)) < 0)
+    if (Dot(unit, Cross(b - a, c - b)) < -StraightLimit(a, b, c, noise)) // a straight corner bends neither way
     {
       return false;
     }
@@ -92,7 +122,7 @@ bool IsConvex(const Vec3* loop, int count)
   return true;
 }
 
-std::vector<int> Triangulate(const Vec3* loop, int count)
+std::vector<int> Triangulate(const Vec3* loop, int count, double noise)
 {
   std::vector<int> triangles;
   if (count < 3)
@@ -105,8 +135,7 @@ std::vector<int> Triangulate(const Vec3* loop, int count)
   // A corner whose triangle PolygonProblem would call zero area (three points in a line,
   // up to rounding) makes no triangle: it would only be rejected downstream.
   auto flat = [&](int a, int b, int c) {
-    const double longest = std::max({ Norm(loop[b] - loop[a]), Norm(loop[c] - loop[b]), Norm(loop[a] - loop[c]) });
-    return std::fabs(turn(a, b, c)) <= 2 * ZeroAreaFraction * longest * longest;
+    return std::fabs(turn(a, b, c)) <= StraightLimit(loop[a], loop[b], loop[c], noise);
   };
   auto emit = [&](int a, int b, int c) {
     if (!flat(a, b, c))
@@ -119,7 +148,7 @@ std::vector<int> Triangulate(const Vec3* loop, int count)
   {
     remaining[i] = i;
   }
-  const bool convex = IsConvex(loop, count);
+  const bool convex = IsConvex(loop, count, noise);
   auto inside = [&](int p, int a, int b, int c) {
     return turn(a, b, p) >= 0 && turn(b, c, p) >= 0 && turn(c, a, p) >= 0;
   };

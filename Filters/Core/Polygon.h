@@ -39,7 +39,9 @@ void ClipToHalfSpace(const Vec3* loop, int count, const Vec3& origin, const Vec3
 /// Triangles covering a simple planar polygon (convex or not), as index triples into
 /// `loop`: a fan when the polygon is convex, ear clipping otherwise. A fan over a
 /// non-convex polygon would cover area outside it and miss area inside.
-std::vector<int> Triangulate(const Vec3* loop, int count);
+/// `noise`: how far the points may be off their true places (float rounding of the scene's
+/// coordinates); corners straight up to it make no triangle and bend neither way.
+std::vector<int> Triangulate(const Vec3* loop, int count, double noise = 0);
 
 /// Chains start/end segment pairs (exactly matching ends) into one closed loop of corners;
 /// empty unless they form exactly one loop.
@@ -49,8 +51,17 @@ std::vector<Vec3> ChainLoop(const std::vector<Vec3>& segments);
 std::vector<Vec3> GatherLoop(const std::vector<Vec3>& points, const std::vector<int>& offsets,
   const std::vector<int>& connectivity, int i);
 
-/// True if every corner turns the same way about the polygon's normal.
-bool IsConvex(const Vec3* loop, int count);
+/// True if every corner turns the same way about the polygon's normal (straight ones, up
+/// to `noise` as in Triangulate, turn neither way).
+bool IsConvex(const Vec3* loop, int count, double noise = 0);
+
+/// Twice the largest distance of a point from the points' mean: a scene's size that turning
+/// or moving it does not change (a bounding box's diagonal turns with the axes).
+double Span(const std::vector<Vec3>& points);
+
+/// How far float coordinates (VTK stores points as floats) can move a scene's points:
+/// a few float steps of its span.
+double FloatNoise(double span);
 
 /// Largest coordinate magnitude the ray tracer's single precision handles with room to
 /// spare (squares of lengths stay finite in float).
