@@ -16,6 +16,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <fstream>
+#include <sstream>
 #include <random>
 
 namespace SceneFiles
@@ -51,9 +53,22 @@ void AddStrip(const vtkIdType* ids, vtkIdType count, int base, int material, int
 
 } // namespace
 
+bool ReadText(const std::string& path, std::string& text)
+{
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+  {
+    return false;
+  }
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  text = buffer.str();
+  return true;
+}
+
 const std::vector<std::string>& NativeExtensions()
 {
-  static const std::vector<std::string> extensions = { "obj", "gltf", "glb", "ply" };
+  static const std::vector<std::string> extensions = { "obj", "gltf", "glb", "ply", "wrl", "vrml" };
   return extensions;
 }
 
@@ -84,13 +99,17 @@ std::string Read(const std::string& path, radiosity::RawScene& raw, std::vector<
   {
     return ReadPly(path, raw, warnings);
   }
+  if (extension == "wrl" || extension == "vrml")
+  {
+    return ReadVrml(path, raw, warnings);
+  }
   const auto& other = AssimpExtensions();
   if (std::find(other.begin(), other.end(), extension) != other.end())
   {
     return ReadWithAssimp(path, raw, warnings);
   }
   return "'" + path + "': the extension '." + extension +
-    "' is not a scene format this reader knows (OBJ, glTF, GLB, PLY; IFC, FBX, DAE, 3DS and others through assimp)";
+    "' is not a scene format this reader knows (OBJ, glTF, GLB, PLY, VRML; IFC, FBX, DAE, 3DS and others through assimp)";
 }
 
 int AppendPolygons(vtkPolyData* data, const vtkMatrix4x4* transform, int material, int object,

@@ -22,7 +22,11 @@ std::string Read(const std::string& path, radiosity::RawScene& raw, std::vector<
 std::string ReadObj(const std::string& path, radiosity::RawScene& raw, std::vector<std::string>& warnings);
 std::string ReadGltf(const std::string& path, radiosity::RawScene& raw, std::vector<std::string>& warnings);
 std::string ReadPly(const std::string& path, radiosity::RawScene& raw, std::vector<std::string>& warnings);
+std::string ReadVrml(const std::string& path, radiosity::RawScene& raw, std::vector<std::string>& warnings);
 std::string ReadWithAssimp(const std::string& path, radiosity::RawScene& raw, std::vector<std::string>& warnings);
+
+/// The whole file as bytes; false where it cannot be opened.
+bool ReadText(const std::string& path, std::string& text);
 
 /// Extensions read natively, and those handed to assimp (lower case, without the dot).
 const std::vector<std::string>& NativeExtensions();

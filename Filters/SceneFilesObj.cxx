@@ -20,19 +20,6 @@ namespace SceneFiles
 namespace
 {
 
-bool ReadText(const std::string& path, std::string& text)
-{
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-  {
-    return false;
-  }
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  text = buffer.str();
-  return true;
-}
-
 /// The definitions in every `mtllib` the OBJ names, looked up beside the OBJ.
 std::string ReadLibraries(const std::string& path, const std::vector<std::string>& libraries,
   std::vector<radiosity::ImportMaterial>& definitions)

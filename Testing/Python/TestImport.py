@@ -1,11 +1,13 @@
-"""Scene files in (issue 10): OBJ+MTL, glTF/GLB and PLY written here with known contents,
-the FZK-Haus IFC through assimp, and the Cornell box as OBJ+MTL solving to the same
-radiosity as Data/cornell_box.vtp. Bad files give an error naming the file and the problem."""
+"""Scene files in (issue 10): OBJ+MTL, glTF/GLB, PLY and VRML written here with known
+contents, the FZK-Haus IFC through assimp and two VRML models of assimp-testmodels, and the
+Cornell box as OBJ+MTL and as VRML solving to the same radiosity as Data/cornell_box.vtp. Bad files give an error naming the file and the problem."""
 
 import base64
 import json
 import os
 import struct
+import subprocess
+import sys
 import tempfile
 
 import numpy as np
@@ -15,7 +17,7 @@ from vtkmodules.vtkCommonDataModel import vtkSelection, vtkSelectionNode
 from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
 
 import relight
-from relight import cell_array, light_names, read_polydata
+from relight import cell_areas, cell_array, cell_centroids, light_names, read_polydata
 from testlib import check, finish
 
 vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_OFF)
@@ -182,6 +184,83 @@ normals.SplittingOff()
 normals.Update()
 floor_z = numpy_support.vtk_to_numpy(normals.GetOutput().GetCellData().GetArray("Normals"))[0, 2]
 check(floor_z > 0.99, f"a floor mirrored in x still faces +z (normal z {floor_z:.2f})")
+
+# --- VRML97: materials by DEF and USE, emissive colours, transforms ---------------------------
+def vtk_importer_bounds(path):
+    """The bounds of VTK's own importer's actors, in a process of their own: a second
+    vtkVRMLImporter in one Python process can crash in VTK 9.2 (not the product's reader,
+    which a test below runs twelve times)."""
+    script = ("import sys, json; from vtkmodules.vtkIOImport import vtkVRMLImporter; "
+              "import vtkmodules.vtkRenderingOpenGL2; i = vtkVRMLImporter(); i.SetFileName(sys.argv[1]); "
+              "i.Update(); print(json.dumps(i.GetRenderer().ComputeVisiblePropBounds()))")
+    done = subprocess.run([sys.executable, "-c", script, path], capture_output=True, text=True, timeout=120)
+    return json.loads(done.stdout.strip().splitlines()[-1])
+
+
+def write_vrml(scene, name):
+    """One Shape per cell; a Material DEF'd at its first cell and USEd by the next cells of
+    the same colours (VTK's importer ignores USE of a Material); lamps named after lights."""
+    names = light_names(scene)
+    rho = cell_array(scene, "Reflectance")
+    ids = cell_array(scene, "LightId").astype(int)
+    emission = cell_array(scene, "Emission")
+    defined, shapes = {}, []
+    points = ", ".join("%.17g %.17g %.17g" % scene.GetPoint(p) for p in range(scene.GetNumberOfPoints()))
+    for c in range(scene.GetNumberOfCells()):
+        key = (tuple(rho[c]), tuple(emission[c]) if ids[c] >= 0 else (0, 0, 0))
+        if key in defined:
+            material = f"USE {defined[key]}"
+        else:
+            defined[key] = names[ids[c]] if ids[c] >= 0 else f"Surface{len(defined)}"
+            emissive = " emissiveColor %.17g %.17g %.17g" % key[1] if ids[c] >= 0 else ""
+            material = f"DEF {defined[key]} Material {{ diffuseColor %.17g %.17g %.17g{emissive} }}" % key[0]
+        cell = scene.GetCell(c)
+        corners = " ".join(str(cell.GetPointId(k)) for k in range(cell.GetNumberOfPoints()))
+        coord = f"DEF Corners Coordinate {{ point [ {points} ] }}" if c == 0 else "USE Corners"
+        shapes.append(f"Shape {{ appearance Appearance {{ material {material} }} "
+                      f"geometry IndexedFaceSet {{ coord {coord} coordIndex [ {corners} -1 ] }} }}")
+    return write(name + ".wrl", "#VRML V2.0 utf8\nTransform { children [\n" + "\n".join(shapes) + "\n] }\n")
+
+
+vrml = relight.import_scene(write_vrml(box, "cornell"))
+check(light_names(vrml) == light_names(box), f"VRML: light names from the DEF'd emissive materials: {light_names(vrml)}")
+check(np.allclose(cell_array(vrml, "Reflectance"), cell_array(box, "Reflectance"), atol=1e-6),
+      "VRML: reflectance from diffuseColor, USEd materials included")
+solved = relight.solve(vrml, 100.0, 50.0, ConvergenceThreshold=1e-4).GetOutput()
+for name in light_names(box):
+    a, b = (cell_array(o, "Radiosity_" + name) for o in (reference, solved))
+    check(a.shape == b.shape and np.allclose(a, b, rtol=1e-5, atol=1e-5 * a.max()),
+          f"Cornell box from VRML solves as the .vtp for {name} (max {a.max():.4g} vs {b.max():.4g})")
+room = relight.import_scene(write("room.wrl", """#VRML V2.0 utf8
+DEF Walls Shape {
+  appearance Appearance { material DEF Plaster Material { diffuseColor 0.5 0.4 0.3 } }
+  geometry IndexedFaceSet { coord DEF C Coordinate { point [ 0 0 0, 2 0 0, 2 2 0, 0 2 0, 0 0 2, 2 0 2, 2 2 2, 0 2 2 ] }
+                            coordIndex [ 0 1 2 3 -1, 4 7 6 5 -1, 0 4 5 1 -1, 2 6 7 3 -1, 0 3 7 4 -1, 1 5 6 2 -1 ] }
+}
+DEF Lamp Transform { translation 1 1 1.99 rotation 0 0 1 0.5 children [
+  Shape { appearance Appearance { material DEF Ceiling_Lamp Material { diffuseColor 0.8 0.8 0.8 emissiveColor 10 9 8 } }
+          geometry IndexedFaceSet { coord Coordinate { point [ -0.25 -0.25 0, -0.25 0.25 0, 0.25 0.25 0, 0.25 -0.25 0 ] }
+                                    coordIndex [ 0 1 2 3 -1 ] } } ] }
+"""))
+lamp = cell_array(room, "LightId") == 0
+centre = cell_centroids(room)[lamp]
+check(light_names(room) == ["Ceiling_Lamp"] and lamp.sum() == 1 and np.allclose(cell_array(room, "Emission")[lamp], [10, 9, 8]),
+      f"VRML: one light, named after its Material, emitting its emissiveColor: {light_names(room)}")
+check(np.allclose(centre, [[1, 1, 1.99]]) and np.allclose(cell_areas(room)[lamp], 0.25),
+      f"VRML: the Transform places the lamp ({centre.tolist()})")
+check(np.allclose(cell_array(room, "Reflectance")[~lamp], [0.5, 0.4, 0.3]),
+      "VRML: a Material without emissiveColor is a surface, not a white lamp (VTK's default ambient colour)")
+for wrl, polygons in (("Wuson.wrl", 3732), ("MotionCaptureROM.WRL", 2000)):
+    path = "/usr/share/assimp/models/WRL/" + wrl
+    scene = relight.import_scene(path, require_lights=False)
+    bounds = vtk_importer_bounds(path)
+    check(scene.GetNumberOfCells() == polygons and np.allclose(scene.GetBounds(), bounds, atol=1e-6) and not light_names(scene),
+          f"{wrl} (assimp-testmodels): {scene.GetNumberOfCells()} polygons, placed as VTK's importer places its actors, no lights")
+check("VRML 1.0" in (import_error(write("old.wrl", "#VRML V1.0 ascii\nSeparator { }\n")) or ""),
+      "a VRML 1.0 file is refused by name")
+again = [relight.import_scene("/usr/share/assimp/models/WRL/" + w, require_lights=False).GetNumberOfCells()
+         for _ in range(6) for w in ("Wuson.wrl", "MotionCaptureROM.WRL")]
+check(again == [3732, 2000] * 6, "VRML files read again and again in one process give the same scenes")
 
 # --- PLY: face colours (8-bit sRGB) as linear reflectance -------------------------------------
 ply = write("tiles.ply", """ply
