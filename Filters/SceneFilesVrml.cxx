@@ -1,13 +1,15 @@
 // VRML97 through VTK's importer, which reads the geometry (IndexedFaceSet and the
 // primitives), Transform and DEF/USE of shapes and coordinates. Its materials need help:
-// - it keeps a Material's emissiveColor as the vtkProperty's ambient colour, whose default
-//   is white, so a material naming no emissive colour would read as a white lamp;
-// - it ignores USE of a Material or Appearance, leaving that shape a default property.
-// So the file is read from a copy in which every USE of a DEF'd Material or Appearance is
-// replaced by its definition, and every Material starts with VRML's own defaults
-// (`emissiveColor 0 0 0 ambientIntensity 0.2`), which the colours the file gives replace.
-// A shape with no Material keeps VTK's default property (ambient 0), and is read as an
-// unlit surface of the default reflectance.
+// - it ignores USE of a Material or Appearance, leaving that shape a default property;
+// - it starts every Material from vtkProperty's defaults (white diffuse, white ambient)
+//   rather than VRML's (0.8 diffuse, black emissive), and keeps emissiveColor as the
+//   ambient colour, so a material naming no emissive colour would read as a white lamp;
+// - it does not say which Material a shape's property came from.
+// So the file is read from a copy in which comments are gone, every USE of a DEF'd
+// Material or Appearance is replaced by that definition (the latest before it, as VRML
+// resolves names), and every Material starts with VRML's defaults and ends with a tag in
+// its specularColor (which radiosity does not use) naming the Material it was. A shape
+// with no Material has no tag, and is read as an unlit surface of the default reflectance.
 #include "SceneFiles.h"
 #include "SceneFilesErrors.h"
 
@@ -26,6 +28,7 @@
 
 #include <fstream>
 #include <map>
+#include <cmath>
 #include <regex>
 
 namespace SceneFiles
@@ -33,14 +36,36 @@ namespace SceneFiles
 namespace
 {
 
-/// Where the body `{ ... }` that starts at or after `from` ends (one past its brace).
-size_t BodyEnd(const std::string& text, size_t from)
+/// The text without its `#` comments (strings kept whole).
+std::string WithoutComments(const std::string& text)
 {
-  size_t open = text.find('{', from);
+  std::string out;
+  bool quoted = false;
+  for (size_t k = 0; k < text.size(); ++k)
+  {
+    if (!quoted && text[k] == '#')
+    {
+      k = text.find('\n', k);
+      if (k == std::string::npos)
+      {
+        break;
+      }
+    }
+    quoted = text[k] == '"' && (k == 0 || text[k - 1] != '\\') ? !quoted : quoted;
+    out += text[k];
+  }
+  return out;
+}
+
+/// One past the `}` that closes the `{` at `open` (strings skipped), or npos.
+size_t BodyEnd(const std::string& text, size_t open)
+{
   int depth = 0;
+  bool quoted = false;
   for (size_t k = open; k < text.size(); ++k)
   {
-    depth += text[k] == '{' ? 1 : text[k] == '}' ? -1 : 0;
+    quoted = text[k] == '"' && text[k - 1] != '\\' ? !quoted : quoted;
+    depth += quoted ? 0 : text[k] == '{' ? 1 : text[k] == '}' ? -1 : 0;
     if (depth == 0)
     {
       return k + 1;
@@ -49,94 +74,108 @@ size_t BodyEnd(const std::string& text, size_t from)
   return std::string::npos;
 }
 
-/// DEF'd Material and Appearance nodes: name -> "Type { ... }".
-std::map<std::string, std::string> Definitions(const std::string& text)
+/// The Materials of a file: their DEF names ("" for none), by tag.
+using MaterialTags = std::vector<std::string>;
+
+/// The specularColor that tags Material `index`: green and blue mark it as ours.
+std::string Tag(size_t index)
 {
-  std::map<std::string, std::string> found;
-  static const std::regex defined(R"(DEF\s+([^\s{}\[\]]+)\s+(Material|Appearance)\s*\{)");
-  for (std::sregex_iterator m(text.begin(), text.end(), defined), end; m != end; ++m)
+  return " specularColor " + std::to_string(index + 1) + " 0.125 0.375 ";
+}
+
+/// The copy VTK reads (see the top of this file), expanding DEFs and USEs in order.
+class Expander
+{
+public:
+  explicit Expander(MaterialTags& tags)
+    : Tags(tags)
   {
-    const size_t start = static_cast<size_t>(m->position(2));
-    const size_t stop = BodyEnd(text, start);
-    if (stop != std::string::npos)
+  }
+
+  std::string Expand(const std::string& text)
+  {
+    static const std::regex node(
+      R"(DEF\s+([^\s{}\[\]"]+)\s+(Material|Appearance)\s*\{|\b(Material)\s*\{|\bUSE\s+([^\s{}\[\]"]+))");
+    std::string out;
+    size_t at = 0;
+    std::smatch m;
+    while (std::regex_search(text.begin() + static_cast<std::ptrdiff_t>(at), text.end(), m, node))
     {
-      found.emplace((*m)[1].str(), text.substr(start, stop - start));
+      const size_t start = at + static_cast<size_t>(m.position());
+      out += text.substr(at, start - at);
+      at = start + static_cast<size_t>(m.length());
+      if (m[4].matched) // USE: the latest definition of that name, if it is one of ours
+      {
+        const auto definition = Definitions.find(m[4].str());
+        out += definition != Definitions.end() ? definition->second : m.str();
+        continue;
+      }
+      const size_t open = at - 1, close = BodyEnd(text, open);
+      if (close == std::string::npos)
+      {
+        out += text.substr(start);
+        return out; // unbalanced: VTK's parser will say where
+      }
+      const std::string name = m[1].matched ? m[1].str() : "";
+      const std::string inner = Expand(text.substr(open + 1, close - open - 2));
+      const bool material = m[2].str() == "Material" || m[3].matched;
+      std::string body = material ? "Material { emissiveColor 0 0 0 ambientIntensity 0.2 diffuseColor 0.8 0.8 0.8 " + inner +
+          Tag(Tags.size()) + "}"
+                                  : "Appearance {" + inner + "}";
+      if (material)
+      {
+        Tags.push_back(name);
+      }
+      if (!name.empty())
+      {
+        Definitions[name] = body;
+        body = "DEF " + name + " " + body;
+      }
+      out += body;
+      at = close;
     }
+    return out + text.substr(at);
   }
-  return found;
+
+private:
+  MaterialTags& Tags;
+  std::map<std::string, std::string> Definitions;
+};
+
+/// The Material a property came from (its tag), or -1 for a shape without one.
+int TagOf(vtkProperty* property, size_t count)
+{
+  const double* tag = property->GetSpecularColor();
+  const long index = std::lround(tag[0]) - 1;
+  return tag[1] == 0.125 && tag[2] == 0.375 && index >= 0 && static_cast<size_t>(index) < count
+    ? static_cast<int>(index)
+    : -1;
 }
 
-/// The copy VTK reads: USEs of materials and appearances written out, VRML's defaults first
-/// in every Material.
-std::string Prepared(const std::string& text, const std::map<std::string, std::string>& definitions)
+/// The material of an actor's property: one per Material of the file (a USEd one is the
+/// same), named after its DEF if it has one; and one for all shapes without a Material.
+int MaterialOf(vtkProperty* property, const MaterialTags& tags, std::map<int, int>& seen,
+  radiosity::RawScene& raw, int& unlit)
 {
-  static const std::regex use(R"(\bUSE\s+([^\s{}\[\]]+))");
-  std::string expanded;
-  size_t last = 0;
-  for (std::sregex_iterator m(text.begin(), text.end(), use), end; m != end; ++m)
-  {
-    const auto definition = definitions.find((*m)[1].str());
-    if (definition != definitions.end())
-    {
-      expanded += text.substr(last, static_cast<size_t>(m->position()) - last) + definition->second;
-      last = static_cast<size_t>(m->position() + m->length());
-    }
-  }
-  expanded += text.substr(last);
-  static const std::regex material(R"(\bMaterial(\s*)\{)");
-  return std::regex_replace(expanded, material, "Material$1{ emissiveColor 0 0 0 ambientIntensity 0.2 ");
-}
-
-/// The three numbers after `field` in a node's text, or `otherwise`.
-radiosity::Vec3 Colour(const std::string& node, const std::string& field, const radiosity::Vec3& otherwise)
-{
-  const std::regex value("\\b" + field + R"(\s+([-+0-9.eE]+)[\s,]+([-+0-9.eE]+)[\s,]+([-+0-9.eE]+))");
-  std::smatch m;
-  if (!std::regex_search(node, m, value))
-  {
-    return otherwise;
-  }
-  return { std::stod(m[1].str()), std::stod(m[2].str()), std::stod(m[3].str()) };
-}
-
-/// The material of an actor's property, one per distinct colour pair; named after the
-/// first DEF'd Material of those colours, if any.
-int MaterialOf(vtkProperty* property, const std::map<std::string, std::string>& definitions,
-  std::map<std::pair<std::string, std::string>, int>& seen, radiosity::RawScene& raw, int& unlit)
-{
-  radiosity::ImportMaterial material;
-  const double* diffuse = property->GetDiffuseColor();
-  const double* emissive = property->GetAmbientColor();
-  const bool none = property->GetAmbient() == 0; // VTK's default: the shape had no Material
-  unlit += none ? 1 : 0;
-  if (!none)
-  {
-    material.Diffuse = { diffuse[0], diffuse[1], diffuse[2] };
-    material.Emissive = { emissive[0], emissive[1], emissive[2] };
-  }
-  auto text = [](const radiosity::Vec3& v) {
-    return std::to_string(v.x) + " " + std::to_string(v.y) + " " + std::to_string(v.z);
-  };
-  const auto key = std::make_pair(text(material.Diffuse), text(material.Emissive));
-  const auto known = seen.find(key);
+  const int tag = TagOf(property, tags.size());
+  unlit += tag < 0 ? 1 : 0;
+  const auto known = seen.find(tag);
   if (known != seen.end())
   {
     return known->second;
   }
-  material.Name = "Material" + std::to_string(raw.materials.size() + 1);
-  for (const auto& definition : definitions)
+  radiosity::ImportMaterial material; // VRML's defaults, as for a shape with no Material
+  if (tag >= 0)
   {
-    const std::string& node = definition.second;
-    if (node.compare(0, 8, "Material") == 0 && !none &&
-      text(Colour(node, "diffuseColor", { 0.8, 0.8, 0.8 })) == key.first &&
-      text(Colour(node, "emissiveColor", { 0, 0, 0 })) == key.second)
-    {
-      material.Name = definition.first;
-      break;
-    }
+    const double* diffuse = property->GetDiffuseColor();
+    const double* emissive = property->GetAmbientColor();
+    material.Diffuse = { diffuse[0], diffuse[1], diffuse[2] };
+    material.Emissive = { emissive[0], emissive[1], emissive[2] };
   }
+  const bool named = tag >= 0 && !tags[tag].empty();
+  material.Name = named ? tags[tag] : "Material" + std::to_string(raw.materials.size() + 1);
   raw.materials.push_back(material);
-  return seen[key] = static_cast<int>(raw.materials.size()) - 1;
+  return seen[tag] = static_cast<int>(raw.materials.size()) - 1;
 }
 
 } // namespace
@@ -152,12 +191,13 @@ std::string ReadVrml(const std::string& path, radiosity::RawScene& raw, std::vec
   {
     return "'" + path + "' is not VRML97 (its first line must be '#VRML V2.0 utf8'; VRML 1.0 is not read)";
   }
-  const std::map<std::string, std::string> definitions = Definitions(text);
+  MaterialTags tags;
+  const std::string prepared = "#VRML V2.0 utf8\n" + Expander(tags).Expand(WithoutComments(text));
   TemporaryFolder folder;
   const std::string copy = folder.Path + "/scene.wrl";
   {
     std::ofstream out(copy, std::ios::binary);
-    out << Prepared(text, definitions);
+    out << prepared;
     if (!out)
     {
       return "cannot write a working copy of '" + path + "' in " + folder.Path;
@@ -173,7 +213,7 @@ std::string ReadVrml(const std::string& path, radiosity::RawScene& raw, std::vec
   {
     return "'" + path + "': " + errors.Message();
   }
-  std::map<std::pair<std::string, std::string>, int> seen;
+  std::map<int, int> seen;
   int shapes = 0, skipped = 0, unlit = 0;
   vtkRendererCollection* renderers = window->GetRenderers();
   renderers->InitTraversal();
@@ -189,7 +229,7 @@ std::string ReadVrml(const std::string& path, radiosity::RawScene& raw, std::vec
         continue;
       }
       raw.objectNames.push_back("Shape" + std::to_string(++shapes));
-      const int material = MaterialOf(actor->GetProperty(), definitions, seen, raw, unlit);
+      const int material = MaterialOf(actor->GetProperty(), tags, seen, raw, unlit);
       skipped += AppendPolygons(data, actor->GetMatrix(), material, static_cast<int>(raw.objectNames.size()) - 1, raw);
     }
   }

@@ -164,6 +164,9 @@ bool AddPatchBasis(vtkAlgorithm* self, int level, const radiosity::RadiositySolv
   radiosity::SolverStatistics stats;
   const radiosity::PatchBasis basis =
     radiosity::SolvePatchBasis(solver, mesh, options, static_cast<radiosity::BasisLevel>(level), stats);
+  // The node basis runs on every rank alone: an abort on one must drop the basis on all,
+  // or the pieces would differ in their arrays.
+  stats.Aborted = !radiosity::AgreeOnFailure(options.Group, stats.Aborted ? "aborted" : "", "aborted").empty();
   if (stats.Aborted)
   {
     warnings.Add(self, "Moving-light basis aborted: the output has the light solutions but no basis.");

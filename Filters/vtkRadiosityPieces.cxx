@@ -15,6 +15,7 @@
 #include "vtkPolyData.h"
 #include "vtkTable.h"
 
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -143,6 +144,14 @@ int SolveTogether(vtkMultiProcessController* controller, vtkPolyData* piece, vtk
       ok = work(whole, solved, table);
       return std::string();
     });
+    if (!error.empty())
+    {
+      // Thrown part-way (out of memory, say): the other ranks wait in a sum this rank will
+      // never join. Ending the job with the reason beats leaving it hanging.
+      vtkLogF(ERROR, "Rank %d failed inside the shared solve (%s); ending the MPI job.",
+        controller->GetLocalProcessId(), error.c_str());
+      std::abort();
+    }
   }
   if (!error.empty() && failedRank != 0)
   {

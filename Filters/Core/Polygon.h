@@ -59,9 +59,10 @@ bool IsConvex(const Vec3* loop, int count, double noise = 0);
 /// or moving it does not change (a bounding box's diagonal turns with the axes).
 double Span(const std::vector<Vec3>& points);
 
-/// How far float coordinates (VTK stores points as floats) can move a scene's points:
-/// a few float steps of its span.
-double FloatNoise(double span);
+/// How far float coordinates (VTK stores points as floats) can move a scene's points
+/// near the origin: a few float steps of its span. Far from the origin floats are coarser
+/// than this, and a straight corner of a long edge can come out bent.
+double FloatNoise(const std::vector<Vec3>& points);
 
 /// Largest coordinate magnitude the ray tracer's single precision handles with room to
 /// spare (squares of lengths stay finite in float).

@@ -724,7 +724,9 @@ void ShootToElements(ShootingState<Channel>& state, const WorkerPool& pool, Shoo
 {
   factors.resize(state.Elements);
   // The expensive part, done once per shot whatever the number of solutions.
-  stats.RayCount += estimator.Compute(shooter, method, samples, stats.Shots, factors);
+  const long long rays = estimator.Compute(shooter, method, samples, stats.Shots, factors);
+  // The sampling methods cast the shot's rays on every rank: counted once, on rank 0.
+  stats.RayCount += method == FormFactorMethod::Analytic || state.Ranks().Rank() == 0 ? rays : 0;
   stats.FormFactorCount += state.OwnedElements();
   state.Conserve(estimator, shooter, factors);
   state.EndShot(shooter, DistributeToElements(state, pool, factors));

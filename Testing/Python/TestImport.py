@@ -258,6 +258,26 @@ for wrl, polygons in (("Wuson.wrl", 3732), ("MotionCaptureROM.WRL", 2000)):
           f"{wrl} (assimp-testmodels): {scene.GetNumberOfCells()} polygons, placed as VTK's importer places its actors, no lights")
 check("VRML 1.0" in (import_error(write("old.wrl", "#VRML V1.0 ascii\nSeparator { }\n")) or ""),
       "a VRML 1.0 file is refused by name")
+
+
+def quad(y, appearance):
+    return (f"Shape {{ appearance {appearance} geometry IndexedFaceSet {{ coord Coordinate "
+            f"{{ point [0 {y} 0, 1 {y} 0, 1 {y} 1, 0 {y} 1] }} coordIndex [0 1 2 3 -1] }} }}\n")
+
+
+tricky = relight.import_scene(write("tricky.wrl", "#VRML V2.0 utf8\n# was: DEF Red Material { diffuseColor 0 0 1 }\n"
+    + quad(0, "DEF Glow Appearance { material DEF Red Material { # warm }\n diffuseColor 0.9 0.1 0.1 emissiveColor 1 0 0 "
+              "ambientIntensity 0 } }")
+    + quad(1, "USE Glow") + "# appearance Appearance { material USE Red }\n"
+    + quad(2, "Appearance { material DEF Zlamp Material { emissiveColor 1 1 1 } }")
+    + quad(3, "Appearance { material DEF Alamp Material { emissiveColor 1 1 1 } }")
+    + quad(4, "Appearance { material Material { shininess 0.3 } }")), require_lights=False)
+rho, ids = cell_array(tricky, "Reflectance"), cell_array(tricky, "LightId").astype(int).tolist()
+check(light_names(tricky) == ["Red", "Zlamp", "Alamp"] and ids == [0, 0, 1, 2, -1]
+      and np.allclose(rho[[0, 1]], [0.9, 0.1, 0.1]) and np.allclose(rho[[2, 3, 4]], 0.8),
+      f"VRML as VRML resolves it: comments ignored, a USEd Appearance keeps its Material, ambientIntensity 0 "
+      f"is no matter, two lamps of one colour stay two, a Material without diffuseColor reflects 0.8 "
+      f"({light_names(tricky)}, {ids})")
 again = [relight.import_scene("/usr/share/assimp/models/WRL/" + w, require_lights=False).GetNumberOfCells()
          for _ in range(6) for w in ("Wuson.wrl", "MotionCaptureROM.WRL")]
 check(again == [3732, 2000] * 6, "VRML files read again and again in one process give the same scenes")

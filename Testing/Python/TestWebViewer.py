@@ -1,7 +1,9 @@
 """The browser viewer (issue 10): the page relight.export_viewer writes, shown by Debian's
 headless Chromium, matches VTK's render of the same light settings, and a slider moved
 (through the page's URL, which sets the slider and fires its input event as a drag does)
-changes the picture where that light dominates, and only there."""
+changes the picture where that light dominates, and only there. With 20 lights (more than
+WebGL's 16 vertex attributes), every light still counts: the page matches VTK, and
+switching off the twentieth changes the page as it changes VTK's picture."""
 
 import os
 import shutil
@@ -96,4 +98,33 @@ if check(before is not None and after is not None, "Chromium rendered the page t
           f"moving Amber's slider changes the picture most where Amber dominates: mean change "
           f"{change[dominant].mean():.0f} where its share is over half ({dominant.mean():.0%} of the picture), "
           f"{change[weak].mean():.0f} where under 30 % ({weak.mean():.0%})")
+
+# --- 20 lights: the solutions travel in a texture, so none is left out ---------------------------
+marker = relight.vtkRadiosityLightMarker()
+marker.SetInputData(read_polydata(os.path.join(DATA, "paper_3lights.vtp")))
+for n in range(17):  # 17 small lamps under the ceiling, in a grid, in turning colours
+    x, z = 0.6 + 0.7 * (n % 5), 0.6 + 0.9 * (n // 5)
+    marker.AddAreaLight(f"Lamp{n + 4}", 0, x, 2.45, z, 0, -1, 0, 0.15, 0.15, 1 + n % 3, 1 + (n + 1) % 3, 1 + (n + 2) % 3)
+marker.Update()
+solver20 = relight.solve(marker.GetOutput(), 1.5, 0.375, ConvergenceThreshold=1e-3)  # kept: the port does not hold it
+many = relight.vtkRadiosityRelight()
+many.SetInputConnection(solver20.GetOutputPort())
+many.SetExposure(exposure)
+many.Update()
+lamps = light_names(many.GetOutput())
+page = relight.export_viewer(many.GetOutput(), os.path.join(folder, "viewer20"), CAMERA, SIZE, exposure)
+last = lamps[-1]
+browser = [browser_shot(page, query, f"many{i}.png") for i, query in enumerate(("controls=0", f"controls=0&enabled.{last}=0"))]
+vtk = [vtk_shot(many, "vtk_many.png")]
+many.SetLightEnabled(len(lamps) - 1, False)
+vtk.append(vtk_shot(many, "vtk_many_off.png"))
+if check(len(lamps) == 20 and all(b is not None for b in browser), f"Chromium rendered the {len(lamps)}-light page twice"):
+    error = np.abs(browser[0] - vtk[0])
+    check(error.mean() < 3.0, f"20 lights: the browser matches VTK's render (mean {error.mean():.2f} of 255)")
+    ours, theirs = (np.abs(pair[1] - pair[0]).sum(axis=2) for pair in (browser, vtk))
+    changed = theirs > 6
+    check(changed.mean() > 0.01 and np.abs(ours - theirs).mean() < 0.25 * theirs[changed].mean(),
+          f"switching off {last}, the twentieth light, changes {changed.mean():.0%} of VTK's picture by "
+          f"{theirs[changed].mean():.0f} there, and the page alike (mean difference of the changes "
+          f"{np.abs(ours - theirs).mean():.1f})")
 finish("TestWebViewer")

@@ -1,12 +1,13 @@
 // Relights a glTF written by vtkRadiosityGLTFWriter in the browser: each light's
-// unit-emission solution is a vertex attribute, and the shader sums them with the
-// colour, intensity and on/off of the controls, then applies the exposure and sRGB
-// encoding per vertex, as the relight filter's DisplayColors.
+// unit-emission solution (a vertex attribute in the file) goes into one float texture, and
+// the vertex shader sums them with the colour, intensity and on/off of the controls (a
+// second texture), then applies the exposure and sRGB encoding per vertex, as the relight
+// filter's DisplayColors. Textures, not attributes: WebGL has 16 attributes, not 16 lights.
 import * as THREE from "three";
 import { GLTFLoader } from "three/examples/jsm/loaders/GLTFLoader.js";
 import { OrbitControls } from "three/examples/jsm/controls/OrbitControls.js";
 
-const MAX_LIGHTS = 14; // WebGL guarantees 16 vertex attributes: position, and one per light
+const TEXTURE_WIDTH = 4096; // WebGL 2 guarantees textures this wide
 
 function decodeBase64(text) {
   const bytes = atob(text);
@@ -15,26 +16,54 @@ function decodeBase64(text) {
   return out.buffer;
 }
 
-function vertexShader(k) {
-  const attributes = Array.from({ length: k }, (_, i) => `attribute vec3 light${i};`).join("\n");
-  const sum = Array.from({ length: k }, (_, i) => `b += weights[${i}] * light${i};`).join("\n  ");
-  return `${attributes}
-uniform vec3 weights[${Math.max(k, 1)}];
+const vertexShader = `uniform highp sampler2D solutions;
+uniform highp sampler2D weights;
+uniform int lightCount;
 uniform float exposure;
-varying vec3 shade;
+out vec3 shade;
 vec3 encode(vec3 c) {
   return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(0.0031308, c));
 }
 void main() {
   vec3 b = vec3(0.0);
-  ${sum}
+  for (int i = 0; i < lightCount; ++i) {
+    int t = gl_VertexID * lightCount + i; // light i of this vertex
+    b += texelFetch(weights, ivec2(i, 0), 0).rgb * texelFetch(solutions, ivec2(t % ${TEXTURE_WIDTH}, t / ${TEXTURE_WIDTH}), 0).rgb;
+  }
   shade = encode(clamp(b * exposure, 0.0, 1.0));
   gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0);
 }`;
+
+/// A float RGBA texture of `texels` texels, TEXTURE_WIDTH wide, filled by `fill(data)`.
+function floatTexture(texels, width, fill) {
+  const height = Math.max(1, Math.ceil(texels / width));
+  const data = new Float32Array(width * height * 4);
+  fill(data);
+  const texture = new THREE.DataTexture(data, width, height, THREE.RGBAFormat, THREE.FloatType);
+  texture.minFilter = texture.magFilter = THREE.NearestFilter;
+  texture.needsUpdate = true;
+  return texture;
 }
 
-const fragmentShader = `varying vec3 shade;
-void main() { gl_FragColor = vec4(shade, 1.0); }`;
+/// Every light's solution at every vertex, vertex-major: texel vertex * k + light.
+function solutionTexture(geometry, lights) {
+  const attributes = lights.map((light) => geometry.getAttribute(light.attribute.toLowerCase()));
+  const vertices = geometry.getAttribute("position").count;
+  return floatTexture(vertices * lights.length, TEXTURE_WIDTH, (data) => {
+    for (let v = 0; v < vertices; ++v) {
+      attributes.forEach((a, i) => {
+        const t = 4 * (v * lights.length + i);
+        data[t] = a.getX(v);
+        data[t + 1] = a.getY(v);
+        data[t + 2] = a.getZ(v);
+      });
+    }
+  });
+}
+
+const fragmentShader = `in vec3 shade;
+out vec4 colour;
+void main() { colour = vec4(shade, 1.0); }`;
 
 /// A light's default colour split into a displayable colour and an intensity.
 function splitColour(rgb) {
@@ -106,13 +135,17 @@ function start(gltf) {
   let mesh = null;
   gltf.scene.traverse((o) => { if (o.isMesh && !mesh) mesh = o; });
   const info = (mesh.userData && mesh.userData.relight) || (mesh.parent && mesh.parent.userData.relight) || { lights: [], exposure: 1 };
-  const lights = info.lights.slice(0, MAX_LIGHTS);
-  const status = document.getElementById("status");
-  if (info.lights.length > MAX_LIGHTS) status.textContent = `showing the first ${MAX_LIGHTS} of ${info.lights.length} lights`;
-  const geometry = mesh.geometry;
-  lights.forEach((light, i) => geometry.setAttribute(`light${i}`, geometry.getAttribute(light.attribute.toLowerCase())));
-  const uniforms = { weights: { value: lights.map(() => new THREE.Vector3()) }, exposure: { value: info.exposure } };
-  mesh.material = new THREE.ShaderMaterial({ uniforms, vertexShader: vertexShader(lights.length), fragmentShader, side: THREE.DoubleSide });
+  const lights = info.lights;
+  const weights = floatTexture(Math.max(lights.length, 1), Math.max(lights.length, 1), () => {});
+  const uniforms = {
+    solutions: { value: solutionTexture(mesh.geometry, lights) },
+    weights: { value: weights },
+    lightCount: { value: lights.length },
+    exposure: { value: info.exposure },
+  };
+  mesh.material = new THREE.ShaderMaterial({
+    uniforms, vertexShader, fragmentShader, glslVersion: THREE.GLSL3, side: THREE.DoubleSide,
+  });
 
   const canvas = document.getElementById("view");
   if (window.RELIGHT_SIZE) [canvas.width, canvas.height] = window.RELIGHT_SIZE;
@@ -132,7 +165,11 @@ function start(gltf) {
   orbit.update();
 
   const render = () => {
-    controls.forEach((c, i) => uniforms.weights.value[i].copy(c.weight()));
+    controls.forEach((c, i) => {
+      const w = c.weight();
+      weights.image.data.set([w.x, w.y, w.z, 0], 4 * i);
+    });
+    weights.needsUpdate = true;
     uniforms.exposure.value = Number(exposure.value);
     renderer.render(scene, camera);
   };
