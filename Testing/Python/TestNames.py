@@ -59,6 +59,14 @@ for cls, properties in commands.items():
     missing = [f"{name}: {c}" for name, cs in properties.items() for c in cs if not hasattr(wrapped, c)]
     check(not missing, f"{cls} has every command its XML calls ({len(properties)} properties; missing {missing})")
 
+# ParaView calls an input property's command with the port first where port_index > 0
+# (vtkSIProxy::AddInput): a one-argument setter there is never called, silently.
+root = ElementTree.parse(XML).getroot()
+ported = [(p.get("name"), p.get("command")) for proxy in proxies_with_classes(root) for p in proxy.iter("InputProperty")
+          if int(p.get("port_index") or 0) > 0]
+check(ported and all(command in ("SetInputConnection", "AddInputConnection") for _, command in ported),
+      f"inputs on other ports take the port with the connection: {ported}")
+
 rows = setting_rows(README)
 check(len(rows) == 7, f"the README's settings table has {len(rows)} rows, expected 7")
 for proxy, cls, settings, methods in rows:
