@@ -4,6 +4,7 @@ own exrheader lists. The relit picture must equal the sum of the light layers.""
 
 import json
 import os
+import shutil
 import struct
 import subprocess
 import tempfile
@@ -57,6 +58,13 @@ def accessor(document, binary, index):
 # --- glTF: every light's solution, the relit colours, names and default colours ---------------
 glb = os.path.join(folder, "room.glb")
 relight.write_gltf(relit, glb, exposure=EXPOSURE)
+# Khronos' validator (npm gltf-validator, pinned with the web viewer and run by node).
+validator = os.environ.get("RELIGHT_GLTF_VALIDATOR", "")
+if check(validator and os.path.exists(validator) and shutil.which("node"), f"Khronos' glTF validator is built ({validator!r})"):
+    run = subprocess.run([shutil.which("node"), validator, glb], capture_output=True, text=True, timeout=120)
+    issues = json.loads(run.stdout) if run.returncode == 0 else {}
+    check(issues.get("numErrors") == 0 and issues.get("numWarnings") == 0,
+          f"the .glb passes Khronos' glTF validator: {issues or run.stderr[-300:]}")
 document, binary = read_glb(glb)
 primitive = document["meshes"][0]["primitives"][0]
 lights = document["meshes"][0]["extras"]["relight"]["lights"]
