@@ -67,6 +67,27 @@ ported = [(p.get("name"), p.get("command")) for proxy in proxies_with_classes(ro
 check(ported and all(command in ("SetInputConnection", "AddInputConnection") for _, command in ported),
       f"inputs on other ports take the port with the connection: {ported}")
 
+# The panel's ranges are the C++ clamps (vtkSetClampMacro makes Get<Name>Min/MaxValue):
+# a bound the XML gives equals the clamp, and an enumeration spans exactly the clamp.
+mismatched = []
+for proxy in proxies_with_classes(root):
+    wrapped = getattr(relight, proxy.get("class"))()
+    for prop in proxy:
+        name = (prop.get("command") or "")[3:]
+        low, high = (getattr(wrapped, f"Get{name}{end}Value", None) for end in ("Min", "Max"))
+        if not (low and high):
+            continue
+        for domain in prop:
+            if domain.tag in ("IntRangeDomain", "DoubleRangeDomain"):
+                given = [(bound, float(domain.get(bound)), clamp()) for bound, clamp in (("min", low), ("max", high))
+                         if domain.get(bound) is not None]
+                mismatched += [f"{name}.{b}: XML {x:g}, C++ {c:g}" for b, x, c in given if x != c]
+            if domain.tag == "EnumerationDomain":
+                values = [int(entry.get("value")) for entry in domain.iter("Entry")]
+                if (min(values), max(values)) != (low(), high()):
+                    mismatched.append(f"{name}: entries {min(values)}..{max(values)}, C++ {low()}..{high()}")
+check(not mismatched, f"the XML's ranges are the C++ clamps (differences: {mismatched})")
+
 rows = setting_rows(README)
 check(len(rows) == 7, f"the README's settings table has {len(rows)} rows, expected 7")
 for proxy, cls, settings, methods in rows:
