@@ -156,6 +156,24 @@ bool vtkRadiosityRelight::AddMovingLights(vtkPolyData* scene, vtkPolyData* light
   MovingState& state = *this->Moving;
   const vtkMTimeType sceneTime = scene->GetMTime();
   const vtkMTimeType dynamicTime = dynamic ? dynamic->GetMTime() : 0;
+  if (state.Shader && state.SceneTime == sceneTime && state.DynamicTime != dynamicTime)
+  {
+    // Only the dynamic objects moved: swap them in the ray scene, keep the rest.
+    state.Dynamic = radiosity::SceneMesh();
+    if (dynamic && dynamic->GetNumberOfPolys() > 0 && !vtkRadiosityAdapter::CopyPolygons(dynamic, state.Dynamic, error))
+    {
+      error = "dynamic objects: " + error;
+      state.DynamicTime = 0;
+      return false;
+    }
+    if (!state.Shader->SetDynamicObjects(state.Dynamic.NumberOfPolygons() > 0 ? &state.Dynamic : nullptr))
+    {
+      error = state.Shader->Error();
+      state.Shader.reset();
+      return false;
+    }
+    state.DynamicTime = dynamicTime;
+  }
   if (!state.Shader || state.SceneTime != sceneTime || state.DynamicTime != dynamicTime)
   {
     state = MovingState();

@@ -7,28 +7,6 @@
 namespace radiosity
 {
 
-namespace
-{
-SceneMesh Merge(const SceneMesh& scene, const SceneMesh* extra)
-{
-  SceneMesh all = scene;
-  if (extra)
-  {
-    const int base = static_cast<int>(all.points.size());
-    all.points.insert(all.points.end(), extra->points.begin(), extra->points.end());
-    for (int i = 0; i < extra->NumberOfPolygons(); ++i)
-    {
-      std::vector<int> ids(extra->Polygon(i), extra->Polygon(i) + extra->PolygonSize(i));
-      for (int& id : ids)
-      {
-        id += base;
-      }
-      all.AddPolygon(ids);
-    }
-  }
-  return all;
-}
-} // namespace
 
 namespace
 {
@@ -55,8 +33,14 @@ double NearFieldFactor(const SceneMesh& mesh, const SceneGeometry& g, int e, con
 MovingLightShader::MovingLightShader(const SceneMesh& scene, const SceneMesh* dynamicObjects)
   : Scene(scene)
   , Geometry_(scene)
-  , Rays(new Visibility(Merge(scene, dynamicObjects)))
+  , Rays(new Visibility(scene))
 {
+  SetDynamicObjects(dynamicObjects);
+}
+
+bool MovingLightShader::SetDynamicObjects(const SceneMesh* objects)
+{
+  return Rays->Error().empty() && Rays->SetDynamic(objects);
 }
 
 long long MovingLightShader::Direct(

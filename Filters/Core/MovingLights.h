@@ -35,6 +35,10 @@ public:
   const std::string& Error() const { return Rays->Error(); }
   const SceneGeometry& Geometry() const { return Geometry_; }
 
+  /// Replaces the dynamic objects (null: none): a second geometry in the ray scene, so a
+  /// moving object costs its own triangles, not the static scene's copy and triangulation.
+  bool SetDynamicObjects(const SceneMesh* objects);
+
   /// direct[e] = rho_e * irradiance_e. Returns the number of shadow rays cast.
   long long Direct(const std::vector<MovingLight>& lights, const WorkerPool& pool,
     std::vector<Vec3>& direct) const;

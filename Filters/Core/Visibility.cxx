@@ -21,6 +21,7 @@ struct Visibility::Internals
   std::vector<int> TrianglePolygon;        // source polygon of each triangle
   std::vector<unsigned> TriangleCorners;   // 3 point ids per triangle
   Vec3 Origin;                             // points are stored relative to this, in float
+  unsigned MeshId = RTC_INVALID_GEOMETRY_ID, DynamicId = RTC_INVALID_GEOMETRY_ID;
 };
 
 namespace
@@ -39,6 +40,49 @@ std::string DeviceError(RTCDevice device)
   const RTCError code = rtcGetDeviceError(device);
   return code == RTC_ERROR_NONE ? std::string()
                                 : "Embree error " + std::to_string(static_cast<int>(code)) + " while building the scene";
+}
+
+/// The polygons of `mesh` as an Embree triangle geometry, points relative to `origin`;
+/// `polygonOf` and `corners` (if given) receive each triangle's polygon and point ids.
+RTCGeometry TriangleGeometry(RTCDevice device, const SceneMesh& mesh, const Vec3& origin, std::vector<int>& polygonOf,
+  std::vector<unsigned>& corners)
+{
+  std::vector<Vec3> loop;
+  for (int i = 0; i < mesh.NumberOfPolygons(); ++i)
+  {
+    const int* ids = mesh.Polygon(i);
+    loop.clear();
+    for (int v = 0; v < mesh.PolygonSize(i); ++v)
+    {
+      loop.push_back(mesh.points[ids[v]]);
+    }
+    const std::vector<int> triangle = Triangulate(loop.data(), static_cast<int>(loop.size()));
+    for (size_t t = 0; t + 2 < triangle.size(); t += 3)
+    {
+      corners.insert(corners.end(), { static_cast<unsigned>(ids[triangle[t]]),
+                                      static_cast<unsigned>(ids[triangle[t + 1]]),
+                                      static_cast<unsigned>(ids[triangle[t + 2]]) });
+      polygonOf.push_back(i);
+    }
+  }
+  RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0,
+    RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.points.size()));
+  auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0,
+    RTC_FORMAT_UINT3, 3 * sizeof(unsigned), polygonOf.size()));
+  if (vertices && indices)
+  {
+    for (size_t p = 0; p < mesh.points.size(); ++p)
+    {
+      const Vec3 q = mesh.points[p] - origin;
+      vertices[3 * p + 0] = static_cast<float>(q.x);
+      vertices[3 * p + 1] = static_cast<float>(q.y);
+      vertices[3 * p + 2] = static_cast<float>(q.z);
+    }
+    std::copy(corners.begin(), corners.end(), indices);
+  }
+  rtcCommitGeometry(geom);
+  return geom;
 }
 
 void InitRay(RTCRay& ray, const Vec3& origin, const Vec3& direction, float tfar)
@@ -72,49 +116,40 @@ Visibility::Visibility(const SceneMesh& mesh)
   }
   rtcRetainDevice(d.Device);
   DeviceError(d.Device); // clears an error left on this thread by an earlier scene
-  std::vector<Vec3> loop;
-  for (int i = 0; i < mesh.NumberOfPolygons(); ++i)
-  {
-    const int* ids = mesh.Polygon(i);
-    loop.clear();
-    for (int v = 0; v < mesh.PolygonSize(i); ++v)
-    {
-      loop.push_back(mesh.points[ids[v]]);
-    }
-    const std::vector<int> corners = Triangulate(loop.data(), static_cast<int>(loop.size()));
-    for (size_t t = 0; t + 2 < corners.size(); t += 3)
-    {
-      d.TriangleCorners.insert(d.TriangleCorners.end(),
-        { static_cast<unsigned>(ids[corners[t]]), static_cast<unsigned>(ids[corners[t + 1]]),
-          static_cast<unsigned>(ids[corners[t + 2]]) });
-      d.TrianglePolygon.push_back(i);
-    }
-  }
   d.Scene = rtcNewScene(d.Device);
   // Robust mode avoids rays slipping through shared edges and vertices (light leaks).
   rtcSetSceneFlags(d.Scene, RTC_SCENE_FLAG_ROBUST);
   rtcSetSceneBuildQuality(d.Scene, RTC_BUILD_QUALITY_HIGH);
-  RTCGeometry geom = rtcNewGeometry(d.Device, RTC_GEOMETRY_TYPE_TRIANGLE);
-  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0,
-    RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.points.size()));
-  auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0,
-    RTC_FORMAT_UINT3, 3 * sizeof(unsigned), d.TrianglePolygon.size()));
-  if (vertices && indices)
-  {
-    for (size_t p = 0; p < mesh.points.size(); ++p)
-    {
-      const Vec3 q = mesh.points[p] - d.Origin;
-      vertices[3 * p + 0] = static_cast<float>(q.x);
-      vertices[3 * p + 1] = static_cast<float>(q.y);
-      vertices[3 * p + 2] = static_cast<float>(q.z);
-    }
-    std::copy(d.TriangleCorners.begin(), d.TriangleCorners.end(), indices);
-  }
-  rtcCommitGeometry(geom);
-  rtcAttachGeometry(d.Scene, geom);
+  RTCGeometry geom = TriangleGeometry(d.Device, mesh, d.Origin, d.TrianglePolygon, d.TriangleCorners);
+  d.MeshId = rtcAttachGeometry(d.Scene, geom);
   rtcReleaseGeometry(geom);
   rtcCommitScene(d.Scene);
   d.Error = DeviceError(d.Device);
+}
+
+bool Visibility::SetDynamic(const SceneMesh* objects)
+{
+  Internals& d = *Impl;
+  if (!d.Scene)
+  {
+    return false;
+  }
+  if (d.DynamicId != RTC_INVALID_GEOMETRY_ID)
+  {
+    rtcDetachGeometry(d.Scene, d.DynamicId);
+    d.DynamicId = RTC_INVALID_GEOMETRY_ID;
+  }
+  if (objects && objects->NumberOfPolygons() > 0)
+  {
+    std::vector<int> polygonOf;
+    std::vector<unsigned> corners;
+    RTCGeometry geom = TriangleGeometry(d.Device, *objects, d.Origin, polygonOf, corners);
+    d.DynamicId = rtcAttachGeometry(d.Scene, geom);
+    rtcReleaseGeometry(geom);
+  }
+  rtcCommitScene(d.Scene);
+  d.Error = DeviceError(d.Device);
+  return d.Error.empty();
 }
 
 Visibility::~Visibility()
@@ -159,6 +194,15 @@ bool Visibility::Intersect(const Vec3& origin, const Vec3& direction, Hit& hit) 
   {
     return false;
   }
+  hit.distance = rh.ray.tfar * Norm(direction);
+  if (rh.hit.geomID != Impl->MeshId) // a dynamic object: no polygon of the mesh
+  {
+    hit.polygon = -1;
+    hit.corner[0] = hit.corner[1] = hit.corner[2] = -1;
+    hit.u = rh.hit.u;
+    hit.v = rh.hit.v;
+    return true;
+  }
   const unsigned tri = rh.hit.primID;
   hit.polygon = Impl->TrianglePolygon[tri];
   for (int c = 0; c < 3; ++c)
@@ -167,7 +211,6 @@ bool Visibility::Intersect(const Vec3& origin, const Vec3& direction, Hit& hit) 
   }
   hit.u = rh.hit.u;
   hit.v = rh.hit.v;
-  hit.distance = rh.ray.tfar * Norm(direction);
   return true;
 }
 

@@ -40,6 +40,11 @@ public:
   };
   bool Intersect(const Vec3& origin, const Vec3& direction, Hit& hit) const;
 
+  /// Puts `objects` (null: none) in the scene as a second geometry beside the mesh's,
+  /// replacing the previous ones: moving objects that block rays without a rebuild of the
+  /// mesh's triangles. Their hits report polygon -1. False with Error() set on failure.
+  bool SetDynamic(const SceneMesh* objects);
+
 private:
   struct Internals;
   std::unique_ptr<Internals> Impl;

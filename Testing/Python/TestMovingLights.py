@@ -55,6 +55,20 @@ below = np.linalg.norm(c[:, :2] - np.array([0.7, 1.1]), axis=1) < 0.15
 check(np.all(shadowed[below] == 0) and np.allclose(shadowed[~below & (np.abs(c[:, 0] - 0.7) > 0.8)],
                                                    expected[~below & (np.abs(c[:, 0] - 0.7) > 0.8)], rtol=1e-5),
       "a dynamic object shadows the floor below it and nothing far away")
+# Moving the object swaps it in the ray scene (the static scene is kept): the same
+# picture as a fresh filter given the moved object.
+moved = make_scene([[(1.1, 0.9, 0.75), (1.5, 0.9, 0.75), (1.5, 1.3, 0.75), (1.1, 1.3, 0.75)]], [(0.5, 0.5, 0.5)], [-1])
+rl.SetInputData(2, moved)
+rl.Update()
+fresh = relight.vtkRadiosityRelight()
+fresh.SetInputConnection(0, solver.GetOutputPort())
+fresh.SetInputData(1, lights([(0.7, 1.1, 1.5)], intensity=2.0, color=(1.0, 0.5, 0.25)))
+fresh.SetInputData(2, moved)
+fresh.SetLightEnabled(0, False)
+fresh.Update()
+swapped, rebuilt = (cell_array(f.GetOutput(), "Radiosity")[on_floor] for f in (rl, fresh))
+check(np.array_equal(swapped, rebuilt) and not np.array_equal(swapped, shadowed),
+      "a moved dynamic object, swapped into the kept ray scene, shades as a fresh filter does")
 rl.RemoveAllInputConnections(2)
 
 # --- 4. a time-varying light source drives the animation through the pipeline's time ---------
