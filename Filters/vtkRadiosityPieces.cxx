@@ -125,15 +125,26 @@ void GatherWhole(vtkMultiProcessController* controller, vtkPolyData* piece, vtkP
 } // namespace
 
 int SolveTogether(vtkMultiProcessController* controller, vtkPolyData* piece, vtkPolyData* output, vtkTable* table,
-  const std::function<int(vtkPolyData* whole, vtkPolyData* result, vtkTable* table)>& work)
+  const std::function<int(vtkPolyData* whole, vtkPolyData* result, vtkTable* table)>& work, GatheredScene* kept)
 {
   const bool cells = piece->GetNumberOfCells() > 0;
   Slice slice; // where this rank's cells and points lie in the appended whole
   SumOverRanks(controller, cells ? piece->GetNumberOfCells() : 0, &slice.FirstCell);
   SumOverRanks(controller, cells ? piece->GetNumberOfPoints() : 0, &slice.FirstPoint);
-  vtkNew<vtkPolyData> whole, solved;
-  int failedRank = -1;
-  GatherWhole(controller, piece, whole, failedRank);
+  vtkNew<vtkPolyData> solved;
+  vtkSmartPointer<vtkPolyData> whole = kept ? kept->Whole : nullptr;
+  int failedRank = kept ? kept->FailedRank : -1;
+  int stale = !whole || kept->PieceTime != piece->GetMTime() ? 1 : 0, anyStale = 1;
+  controller->AllReduce(&stale, &anyStale, 1, vtkCommunicator::MAX_OP);
+  if (anyStale)
+  {
+    whole = vtkSmartPointer<vtkPolyData>::New();
+    GatherWhole(controller, piece, whole, failedRank);
+    if (kept)
+    {
+      *kept = GatheredScene{ whole, piece->GetMTime(), failedRank };
+    }
+  }
   // Every rank sees the same whole scene, so they all pass or fail the same checks; a piece
   // that failed upstream fails them all (that filter said why).
   int ok = 0;

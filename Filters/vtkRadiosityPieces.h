@@ -7,6 +7,7 @@
 
 #include "ProcessGroup.h"
 
+#include "vtkPolyData.h" // for the kept whole scene
 #include "vtkSmartPointer.h"
 #include "vtkType.h"
 
@@ -31,8 +32,18 @@ vtkMultiProcessController* Parallel(vtkInformation* outputInformation);
 /// each rank its own piece of the result in `output`. The ranks must share the work through
 /// collectives inside `work` (the solver's ProcessGroup), so every rank's `work` reaches
 /// the same calls. Returns 0 on every rank when the work fails on any.
+/// The whole scene a caller keeps between runs of SolveTogether: gathered again only when
+/// some rank's piece changed, so work that caches on the whole's MTime stays cached.
+struct GatheredScene
+{
+  vtkSmartPointer<vtkPolyData> Whole;
+  vtkMTimeType PieceTime = 0;
+  int FailedRank = -1;
+};
+
 int SolveTogether(vtkMultiProcessController* controller, vtkPolyData* piece, vtkPolyData* output, vtkTable* table,
-  const std::function<int(vtkPolyData* whole, vtkPolyData* result, vtkTable* table)>& work);
+  const std::function<int(vtkPolyData* whole, vtkPolyData* result, vtkTable* table)>& work,
+  GatheredScene* kept = nullptr);
 
 /// Every rank's `piece` (null for none) appended in rank order, on every rank, with the
 /// field data of the first piece with points.

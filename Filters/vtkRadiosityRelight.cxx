@@ -60,6 +60,7 @@ struct vtkRadiosityRelight::Internals
   radiosity::LightRig Rig;
   std::vector<std::string> Names;                  ///< the lights the last execution found
   std::vector<radiosity::LightSetting> Effective; ///< and their settings in effect
+  vtkRadiosityPieces::GatheredScene Gathered;      ///< the whole scene on an MPI server, kept
 };
 
 struct vtkRadiosityRelight::MovingState
@@ -658,10 +659,12 @@ int vtkRadiosityRelight::RequestData(
       vtkRadiosityPieces::AllGather(parallel, movers, allMovers);
       vtkRadiosityPieces::AllGather(parallel, dynamic, allDynamic);
       vtkNew<vtkTable> unused;
+      // The whole scene is kept between frames, so the moving-light shader is too.
       const int ok = vtkRadiosityPieces::SolveTogether(parallel, input, output, unused,
         [&](vtkPolyData* whole, vtkPolyData* result, vtkTable*) {
           return this->Relight(whole, movers ? allMovers.Get() : nullptr, dynamic ? allDynamic.Get() : nullptr, time, result);
-        });
+        },
+        &this->Internal->Gathered);
       if (ok && !this->Internal->Rig.KeyframeTimes().empty())
       {
         output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);
