@@ -148,7 +148,7 @@ double CountElements(const std::vector<Vec3>& points, const std::vector<int>& of
     return 0;
   }
   double total = 0;
-  const double noise = FloatNoise(points); // as MeshList decides
+  const double noise = FloatNoise(Span(points)); // as MeshList decides
   for (size_t i = 0; i + 1 < offsets.size(); ++i)
   {
     const std::vector<Vec3> loop = GatherLoop(points, offsets, connectivity, static_cast<int>(i));
@@ -271,7 +271,7 @@ std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& of
   const double diagonal = Span(points); // not the bounding box's: that turns with the scene
   const Vec3 sceneCentre = Bounds(points).Centre();
   const double quantum = std::max(diagonal, 1e-300) * 1e-9;
-  const double noise = FloatNoise(points);
+  const double noise = FloatNoise(diagonal);
 
   // Surfaces: same caller key and same plane, up to a tolerance relative to the scene.
   using SurfaceId = std::tuple<int, long long, long long, long long, long long>;

@@ -101,12 +101,12 @@ double Span(const std::vector<Vec3>& points)
   return 2.0 * radius;
 }
 
-double FloatNoise(const std::vector<Vec3>& points)
+double FloatNoise(double span)
 {
   // The span, not the distance from the origin: a tolerance that grew with the distance
   // would straighten real millimetre details of a building moved 1 km (measured: the
   // FZK-Haus lost 4,000 of its 31,833 elements), so the same scene would mesh otherwise.
-  return 2 * 1.1920929e-7 * Span(points);
+  return 2 * 1.1920929e-7 * span;
 }
 
 bool IsConvex(const Vec3* loop, int count, double noise)

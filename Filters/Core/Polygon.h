@@ -62,7 +62,7 @@ double Span(const std::vector<Vec3>& points);
 /// How far float coordinates (VTK stores points as floats) can move a scene's points
 /// near the origin: a few float steps of its span. Far from the origin floats are coarser
 /// than this, and a straight corner of a long edge can come out bent.
-double FloatNoise(const std::vector<Vec3>& points);
+double FloatNoise(double span);
 
 /// Largest coordinate magnitude the ray tracer's single precision handles with room to
 /// spare (squares of lengths stay finite in float).

@@ -76,10 +76,10 @@ private:
   long long Generation = 0;
 };
 
-/// Solves `mesh` on `ranks` threads as ranks, each with its own solver (as each MPI rank
-/// prepares the whole scene); `tweak` may change a rank's options.
+/// Solves `mesh` (with `lights` lights) on `ranks` threads as ranks, each with its own
+/// solver (as each MPI rank prepares the whole scene); `tweak` may change a rank's options.
 std::vector<Solution> SolveOnRanks(const SceneMesh& mesh, int ranks, const SolverOptions& options,
-  const std::function<void(int, SolverOptions&)>& tweak = nullptr)
+  const std::function<void(int, SolverOptions&)>& tweak = nullptr, int lights = 8)
 {
   ThreadRanks group(ranks);
   std::vector<Solution> results(ranks);
@@ -95,7 +95,7 @@ std::vector<Solution> SolveOnRanks(const SceneMesh& mesh, int ranks, const Solve
         tweak(r, mine);
       }
       const RadiositySolver solver(mesh, mine.Threads, mine.Group); // the ranks share its probes too
-      results[r] = SolveLights(solver, mesh, LightGrouping::OnePerLight(8), {}, SolutionMode::LightTagged, mine);
+      results[r] = SolveLights(solver, mesh, LightGrouping::OnePerLight(lights), {}, SolutionMode::LightTagged, mine);
     });
   }
   for (std::thread& t : threads)
@@ -244,23 +244,7 @@ TEST(Distributed, ARankWithNoPatchesJoinsAndGetsTheWhole)
   const int lights = 1;
   const Solution one =
     SolveLights(serial, mesh, LightGrouping::OnePerLight(lights), {}, SolutionMode::LightTagged, options);
-  ThreadRanks group(8);
-  std::vector<Solution> results(8);
-  std::vector<std::thread> threads;
-  for (int r = 0; r < 8; ++r)
-  {
-    threads.emplace_back([&, r] {
-      SolverOptions mine = options;
-      mine.Group = group.Group(r);
-      const RadiositySolver solver(mesh);
-      results[r] =
-        SolveLights(solver, mesh, LightGrouping::OnePerLight(lights), {}, SolutionMode::LightTagged, mine);
-    });
-  }
-  for (std::thread& t : threads)
-  {
-    t.join();
-  }
+  const std::vector<Solution> results = SolveOnRanks(mesh, 8, options, nullptr, lights);
   for (const Solution& s : results)
   {
     EXPECT_LT(LargestDifference(s.Radiosity, one.Radiosity), 1e-12);
