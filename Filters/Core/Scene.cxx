@@ -132,7 +132,21 @@ SceneGeometry::SceneGeometry(const SceneMesh& mesh)
   area.resize(n);
   centroid.resize(n);
   elementPatch.resize(n);
+  // Patches numbered in the order of their ids, not of their first elements: the solver's
+  // PatchId output (split patches last) then numbers them as the solver did, however the
+  // cells are ordered (ranks append their pieces in another order than one process).
   std::map<int, int> compact;
+  for (int i = 0; i < n; ++i)
+  {
+    compact.emplace(mesh.patchId.empty() ? i : mesh.patchId[i], 0);
+  }
+  int next = 0;
+  for (auto& id : compact)
+  {
+    id.second = next++;
+  }
+  patchElements.assign(compact.size(), {});
+  patchArea.assign(compact.size(), 0.0);
   for (int i = 0; i < n; ++i)
   {
     const std::vector<Vec3> loop = Loop(mesh, i);
@@ -140,14 +154,7 @@ SceneGeometry::SceneGeometry(const SceneMesh& mesh)
     normal[i] = Normalized(newell);
     area[i] = 0.5 * Norm(newell);
     centroid[i] = PolygonCentroid(loop.data(), static_cast<int>(loop.size()));
-    const int key = mesh.patchId.empty() ? i : mesh.patchId[i];
-    auto inserted = compact.emplace(key, static_cast<int>(compact.size()));
-    const int patch = inserted.first->second;
-    if (inserted.second)
-    {
-      patchElements.emplace_back();
-      patchArea.push_back(0);
-    }
+    const int patch = compact[mesh.patchId.empty() ? i : mesh.patchId[i]];
     elementPatch[i] = patch;
     patchElements[patch].push_back(i);
     patchArea[patch] += area[i];

@@ -7,6 +7,7 @@
 """
 
 import math
+import os
 import time
 
 import numpy as np
@@ -214,5 +215,54 @@ _, finer = node_basis(1.0, ELEMENT / 2)
 _, coarser = node_basis(1.0, ELEMENT)
 check(finer.GetNumberOfTuples() == coarser.GetNumberOfTuples() and finer.GetNumberOfComponents() == coarser.GetNumberOfComponents(),
       f"4x the elements, the same node basis: {coarser.GetNumberOfTuples()} -> {finer.GetNumberOfTuples()} nodes")
+
+# --- 5. the cells' order does not matter ----------------------------------------------------
+# Ranks append their pieces in another order than one process reads them. Patches split by
+# the solver were numbered by their first element, so the relight filter read another
+# patch's basis column: 11 % of the peak off on the 3-light room with its halves swapped.
+from vtkmodules.vtkCommonCore import vtkIdList
+from vtkmodules.vtkFiltersCore import vtkAppendPolyData, vtkExtractCells
+from vtkmodules.vtkFiltersGeometry import vtkGeometryFilter
+
+mesher = relight.vtkRadiosityMesher()
+mesher.SetInputData(relight.read_polydata(os.path.join(os.environ["RELIGHT_ROOT"], "Data", "paper_3lights.vtp")))
+mesher.SetPatchSize(1.0)
+mesher.SetElementSize(0.5)
+mesher.Update()
+meshed = mesher.GetOutput()
+halves = vtkAppendPolyData()
+kept = []
+for first, last in ((meshed.GetNumberOfCells() // 2, meshed.GetNumberOfCells()), (0, meshed.GetNumberOfCells() // 2)):
+    ids = vtkIdList()
+    for c in range(first, last):
+        ids.InsertNextId(c)
+    part = vtkExtractCells()
+    part.SetInputData(meshed)
+    part.SetCellList(ids)
+    surface = vtkGeometryFilter()
+    surface.SetInputConnection(part.GetOutputPort())
+    surface.Update()
+    kept.append(surface)
+    halves.AddInputData(surface.GetOutput())
+halves.Update()
+swapped = halves.GetOutput()
+swapped.GetFieldData().ShallowCopy(meshed.GetFieldData())
+relit = []
+for data in (meshed, swapped):
+    solver = relight.vtkLightTaggedRadiosity()
+    solver.SetInputData(data)
+    solver.SetConvergenceThreshold(1e-4)
+    solver.SetPatchBasis(True)
+    mover = relight.vtkRadiosityRelight()
+    mover.SetInputConnection(0, solver.GetOutputPort())
+    mover.SetInputData(1, lights([(1.0, 1.2, 2.0), (3.0, 1.0, 1.0)], intensity=3.0))
+    mover.Update()
+    kept += [solver, mover]
+    out = mover.GetOutput()
+    relit.append({tuple(x): v for x, v in zip(cell_centroids(out).round(6), cell_array(out, "Radiosity"))})
+peak = max(np.abs(v).max() for v in relit[0].values())
+worst = max(np.abs(relit[0][c] - relit[1][c]).max() for c in relit[0]) / peak
+check(relit[0].keys() == relit[1].keys() and worst < 1e-2,
+      f"the room's cells in another order relight alike: within {worst:.1e} of the peak (at most 1e-2)")
 
 finish("TestMovingLights")
