@@ -268,6 +268,8 @@ int vtkLightTaggedRadiosity::Solve(
     std::vector<radiosity::Vec3> emission;
     std::string error;
     int lights = 0;
+    // pvbatch --verbosity=TRACE (or VTK_LOGGER_VERBOSITY) times the solve and its steps.
+    vtkLogScopeF(TRACE, "solve");
     if (!vtkRadiosityAdapter::CopyPolygons(input, mesh, error) ||
       !vtkRadiosityAdapter::ReadSceneArrays(input, mesh, emission, error) ||
       !(error = radiosity::ValidateScene(mesh, lights)).empty())
@@ -312,7 +314,9 @@ int vtkLightTaggedRadiosity::Solve(
     }
     const auto start = std::chrono::steady_clock::now();
     const int threads = vtkRadiosityAdapter::Threads(this->NumberOfThreads);
+    vtkLogStartScope(TRACE, "prepare the scene");
     radiosity::RadiositySolver solver(mesh, threads, group);
+    vtkLogEndScope("prepare the scene");
     if (!solver.Error().empty())
     {
       vtkErrorMacro(<< "Cannot solve: " << solver.Error() << ".");
@@ -346,14 +350,18 @@ int vtkLightTaggedRadiosity::Solve(
       return !abort.Stop();
     };
     const auto mode = static_cast<radiosity::SolutionMode>(this->SolutionMode);
+    vtkLogStartScope(TRACE, "shoot");
     const radiosity::Solution result =
       radiosity::SolveLights(solver, mesh, grouping, emission, mode, options);
+    vtkLogEndScope("shoot");
+    vtkLogStartScope(TRACE, "average to points");
     const int columns = result.Solutions;
     const std::vector<radiosity::Vec3> pointValues =
       radiosity::AverageToPoints(mesh, solver.Geometry(), result.Radiosity, columns);
     const std::vector<radiosity::Vec3> pointDirect = result.Direct.empty()
       ? std::vector<radiosity::Vec3>()
       : radiosity::AverageToPoints(mesh, solver.Geometry(), result.Direct, columns);
+    vtkLogEndScope("average to points");
     this->LastSolveSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const radiosity::SolverStatistics& stats = result.Statistics;

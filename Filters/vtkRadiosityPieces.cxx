@@ -139,6 +139,7 @@ int SolveTogether(vtkMultiProcessController* controller, vtkPolyData* piece, vtk
   if (anyStale)
   {
     whole = vtkSmartPointer<vtkPolyData>::New();
+    vtkLogScopeF(TRACE, "gather the whole scene");
     GatherWhole(controller, piece, whole, failedRank);
     if (kept)
     {
@@ -172,6 +173,7 @@ int SolveTogether(vtkMultiProcessController* controller, vtkPolyData* piece, vtk
   controller->AllReduce(&ok, &all, 1, vtkCommunicator::MIN_OP);
   if (all)
   {
+    vtkLogScopeF(TRACE, "cut this rank's piece");
     CutPiece(solved, slice, piece, output);
   }
   if (controller->GetLocalProcessId() == 0)
