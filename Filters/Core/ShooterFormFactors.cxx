@@ -499,7 +499,7 @@ int ShooterFormFactors::VisibleRays(int patch, int element, int samples) const
   int visible = 0;
   for (int r = 0; r < samples; ++r)
   {
-    visible += Rays.Occluded(from, SamplePoint(patch, r, samples, random), 1e-6) ? 0 : 1;
+    visible += Rays.Occluded(from, SamplePoint(patch, r, samples, random), 0.0) ? 0 : 1;
   }
   return visible;
 }
@@ -511,7 +511,7 @@ int ShooterFormFactors::VisibleRaysBetweenPatches(int receiver, int shooter, int
   for (int r = 0; r < samples; ++r)
   {
     const Vec3 from = ReceiverPoint(receiver, r, samples, random);
-    visible += Rays.Occluded(from, SamplePoint(shooter, r, samples, random), 1e-6) ? 0 : 1;
+    visible += Rays.Occluded(from, SamplePoint(shooter, r, samples, random), 0.0) ? 0 : 1;
   }
   return visible;
 }
