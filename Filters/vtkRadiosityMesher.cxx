@@ -118,7 +118,8 @@ namespace
 /// Meshes the polygons of `input` with `self`'s settings into `meshed`; an empty string
 /// or what is wrong.
 std::string MeshPiece(vtkRadiosityMesher* self, vtkPolyData* input, double elementSize, double budget,
-  radiosity::MeshedPolygons& meshed, vtkRadiosityAdapter::WarningList& warnings)
+  const radiosity::PolygonArrays* wholeScene, radiosity::MeshedPolygons& meshed,
+  vtkRadiosityAdapter::WarningList& warnings)
 {
   radiosity::SceneMesh mesh;
   std::vector<radiosity::Vec3> emission;
@@ -147,6 +148,7 @@ std::string MeshPiece(vtkRadiosityMesher* self, vtkPolyData* input, double eleme
   options.Warning = [self, &warnings](const std::string& message) { warnings.Add(self, message); };
   options.MergeTriangles = self->GetMergeTriangles();
   options.SharePatches = self->GetSharePatches();
+  options.WholeScene = wholeScene;
   const vtkRadiosityAbortWatch abort(self);
   options.Progress = [self, abort](double f) {
     self->UpdateProgress(f);
@@ -158,7 +160,7 @@ std::string MeshPiece(vtkRadiosityMesher* self, vtkPolyData* input, double eleme
 /// On MPI, MaximumElements bounds the whole scene: every rank searches the same element
 /// size over the sum of the ranks' counts (a rank without usable polygons counts none).
 double ElementSizeEverywhere(vtkRadiosityMesher* self, vtkMultiProcessController* parallel, vtkPolyData* input,
-  vtkRadiosityAdapter::WarningList& warnings)
+  const radiosity::PolygonArrays* wholeScene, vtkRadiosityAdapter::WarningList& warnings)
 {
   radiosity::SceneMesh mesh;
   std::string error;
@@ -166,7 +168,9 @@ double ElementSizeEverywhere(vtkRadiosityMesher* self, vtkMultiProcessController
     vtkRadiosityAdapter::CopyPolygons(input, mesh, error);
   auto count = [&](double size) {
     const double here =
-      usable ? radiosity::CountElements(mesh.points, mesh.offsets, mesh.connectivity, self->GetPatchSize(), size) : 0;
+      usable ? radiosity::CountElements(
+                 mesh.points, mesh.offsets, mesh.connectivity, self->GetPatchSize(), size, wholeScene)
+             : 0;
     return static_cast<double>(vtkRadiosityPieces::SumOverRanks(parallel, static_cast<long long>(here)));
   };
   const double budget = static_cast<double>(self->GetMaximumElements());
@@ -203,13 +207,27 @@ int vtkRadiosityMesher::RequestData(
     const bool empty = !input || input->GetNumberOfCells() == 0;
     radiosity::MeshedPolygons meshed;
     vtkRadiosityAdapter::WarningList warnings;
+    // Surfaces of other ranks' pieces that stand on this piece's cut it (ContactCuts.h):
+    // every rank sees the whole scene's polygons, small next to their elements.
+    radiosity::SceneMesh whole;
+    if (parallel)
+    {
+      vtkNew<vtkPolyData> gathered;
+      vtkRadiosityPieces::AllGather(parallel, upstream ? nullptr : input, gathered);
+      std::string ignored; // a rank's own piece reports its problems below
+      vtkRadiosityAdapter::CopyPolygons(gathered, whole, ignored);
+    }
+    const radiosity::PolygonArrays wholeArrays{ whole.points, whole.offsets, whole.connectivity };
+    const radiosity::PolygonArrays* wholeScene = parallel ? &wholeArrays : nullptr;
     const bool budget = parallel && this->MaximumElements > 0;
-    const double elementSize = budget ? ElementSizeEverywhere(this, parallel, input, warnings) : this->ElementSize;
+    const double elementSize =
+      budget ? ElementSizeEverywhere(this, parallel, input, wholeScene, warnings) : this->ElementSize;
     const double localBudget = parallel ? 0.0 : static_cast<double>(this->MaximumElements);
     std::string error = upstream ? "a filter upstream failed"
       : parallel && empty        ? std::string()
                                  : vtkRadiosityAdapter::Caught([&]() {
-                                     return MeshPiece(this, input, elementSize, localBudget, meshed, warnings);
+                                     return MeshPiece(
+                                       this, input, elementSize, localBudget, wholeScene, meshed, warnings);
                                    });
     long long firstPatch = 0;
     if (parallel)

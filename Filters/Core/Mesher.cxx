@@ -1,4 +1,5 @@
 #include "Mesher.h"
+#include "ContactCuts.h"
 #include "Polygon.h"
 #include "TrianglePairs.h"
 
@@ -110,6 +111,28 @@ void SplitTriangle(const Vec3& a, const Vec3& b, const Vec3& c, const MesherOpti
   piece.patchCount += np * np * 2;
 }
 
+/// A polygon's patches and elements: convex quads on a bilinear grid, others ear-clipped
+/// into triangles split on a barycentric lattice.
+void MakePiece(const std::vector<Vec3>& loop, const MesherOptions& o, double noise, Piece& piece)
+{
+  if (loop.size() == 4 && IsConvex(loop.data(), 4, noise))
+  {
+    SplitQuad(loop.data(), o, piece);
+    return;
+  }
+  const std::vector<int> corners = Triangulate(loop.data(), static_cast<int>(loop.size()), noise);
+  for (size_t t = 0; t + 2 < corners.size(); t += 3)
+  {
+    SplitTriangle(loop[corners[t]], loop[corners[t + 1]], loop[corners[t + 2]], o, piece);
+  }
+}
+
+/// Surfaces closer than this stand on each other (relative, so units do not matter).
+double ContactTolerance(double span)
+{
+  return 1e-6 * span;
+}
+
 /// What SplitQuad / SplitTriangle will make, without making it.
 double CountQuad(const Vec3* q, double patch, double element)
 {
@@ -141,19 +164,36 @@ double EstimateElements(const std::vector<Vec3>& loop, const MesherOptions& o)
 } // namespace
 
 double CountElements(const std::vector<Vec3>& points, const std::vector<int>& offsets,
-  const std::vector<int>& connectivity, double patchSize, double elementSize)
+  const std::vector<int>& connectivity, double patchSize, double elementSize, const PolygonArrays* wholeScene)
 {
   if (!(patchSize > 0) || !(elementSize > 0))
   {
     return 0;
   }
   double total = 0;
-  const double noise = FloatNoise(Span(points)); // as MeshList decides
+  const double span = Span(points);
+  const double noise = FloatNoise(span); // as MeshList decides
+  const PolygonArrays polygons{ points, offsets, connectivity };
+  const PolygonArrays& whole = wholeScene ? *wholeScene : polygons;
+  const double touch = ContactTolerance(Span(whole.Points));
+  const std::vector<std::vector<ContactSegment>> contacts = FindContacts(polygons, whole, touch);
   for (size_t i = 0; i + 1 < offsets.size(); ++i)
   {
     const std::vector<Vec3> loop = GatherLoop(points, offsets, connectivity, static_cast<int>(i));
     if (loop.size() < 3)
     {
+      continue;
+    }
+    if (!contacts[i].empty())
+    {
+      MesherOptions sizes;
+      sizes.PatchSize = patchSize;
+      sizes.ElementSize = elementSize;
+      Piece piece;
+      MakePiece(loop, sizes, noise, piece);
+      const Vec3 normal = Normalized(NewellVector(loop.data(), static_cast<int>(loop.size())));
+      CutAlongContacts(contacts[i], normal, touch, piece.corners, piece.sides, piece.localPatch);
+      total += static_cast<double>(piece.sides.size());
       continue;
     }
     if (loop.size() == 4 && IsConvex(loop.data(), 4, noise))
@@ -272,6 +312,10 @@ std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& of
   const Vec3 sceneCentre = Bounds(points).Centre();
   const double quantum = std::max(diagonal, 1e-300) * 1e-9;
   const double noise = FloatNoise(diagonal);
+  const PolygonArrays polygons{ points, offsets, connectivity };
+  const PolygonArrays& whole = options.WholeScene ? *options.WholeScene : polygons;
+  const double touch = ContactTolerance(options.WholeScene ? Span(whole.Points) : diagonal);
+  const std::vector<std::vector<ContactSegment>> contacts = FindContacts(polygons, whole, touch);
 
   // Surfaces: same caller key and same plane, up to a tolerance relative to the scene.
   using SurfaceId = std::tuple<int, long long, long long, long long, long long>;
@@ -336,18 +380,8 @@ std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& of
     const Vec3 newell = NewellVector(loop.data(), static_cast<int>(loop.size()));
     const Vec3 normal = Normalized(newell);
     Piece piece;
-    if (loop.size() == 4 && IsConvex(loop.data(), 4, noise))
-    {
-      SplitQuad(loop.data(), options, piece);
-    }
-    else
-    {
-      const std::vector<int> corners = Triangulate(loop.data(), static_cast<int>(loop.size()), noise);
-      for (size_t t = 0; t + 2 < corners.size(); t += 3)
-      {
-        SplitTriangle(loop[corners[t]], loop[corners[t + 1]], loop[corners[t + 2]], options, piece);
-      }
-    }
+    MakePiece(loop, options, noise, piece);
+    CutAlongContacts(contacts[i], normal, touch, piece.corners, piece.sides, piece.localPatch);
 
     // From the scene's centre: measured from the origin, a plane far away carries its
     // normal's round-off times its distance, and one floor would split into many.
@@ -496,7 +530,8 @@ void WarnAboutWarpedPolygons(const std::vector<Vec3>& points, const std::vector<
 /// ElementSize, or the size ElementBudget calls for; says which, and warns on a huge mesh.
 double ChooseElementSize(const std::vector<Vec3>& points, const PairedPolygons& polygons, const MesherOptions& o)
 {
-  const double count = CountElements(points, polygons.offsets, polygons.connectivity, o.PatchSize, o.ElementSize);
+  const double count =
+    CountElements(points, polygons.offsets, polygons.connectivity, o.PatchSize, o.ElementSize, o.WholeScene);
   std::ostringstream message;
   double size = o.ElementSize;
   if (o.ElementBudget > 0 && count > o.ElementBudget)

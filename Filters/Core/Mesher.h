@@ -2,6 +2,7 @@
 #ifndef RadiosityCore_Mesher_h
 #define RadiosityCore_Mesher_h
 
+#include "ContactCuts.h"
 #include "Vec3.h"
 
 #include <functional>
@@ -23,6 +24,9 @@ struct MesherOptions
   bool SharePatches = true;
   /// Element budget (0: none): above it the smallest larger element size that fits is used.
   double ElementBudget = 0;
+  /// The whole scene where the polygons are one process's piece of it: surfaces of other
+  /// pieces standing on these cut them too (see ContactCuts.h). Null: the polygons are all.
+  const PolygonArrays* WholeScene = nullptr;
   std::function<bool(double)> Progress; ///< return false to abort
   /// Told, before meshing, when the budget changed the element size or the mesh is huge.
   std::function<void(const std::string&)> Warning;
@@ -42,8 +46,10 @@ struct MeshedPolygons
 
 /// The number of elements MeshPolygons makes at these sizes (exactly, for valid input),
 /// without meshing: for a warning or a budget before the work.
+/// `wholeScene`: as MesherOptions::WholeScene.
 double CountElements(const std::vector<Vec3>& points, const std::vector<int>& offsets,
-  const std::vector<int>& connectivity, double patchSize, double elementSize);
+  const std::vector<int>& connectivity, double patchSize, double elementSize,
+  const PolygonArrays* wholeScene = nullptr);
 
 /// The smallest element size, at least `elementSize`, whose mesh has at most `budget`
 /// elements (the patch size when even one element per patch is over it).
@@ -61,8 +67,10 @@ double ElementSizeForBudget(
 /// into elements with edges <= ElementSize. Points are shared between elements of input
 /// polygons that lie in one plane with the same `surfaceKey` (the caller's material id)
 /// and touch; everywhere else they are split, so smoothing over shared vertices never
-/// mixes two materials or orientations. The connectivity is held in OpenMesh meshes, one
-/// per surface. Returns an empty string or an error naming the problem.
+/// mixes two materials or orientations. Where a polygon stands on another (a wall on a
+/// floor), the elements it stands across are cut along its foot (ContactCuts.h). The
+/// connectivity is held in OpenMesh meshes, one per surface. Returns an empty string or
+/// an error naming the problem.
 std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>& offsets,
   const std::vector<int>& connectivity, const std::vector<int>& surfaceKey,
   const MesherOptions& options, MeshedPolygons& out);

@@ -1,0 +1,155 @@
+#include "ContactCuts.h"
+#include "Mesher.h"
+#include "Polygon.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace radiosity;
+
+namespace
+{
+/// A 4 x 3 floor, a wall standing on it across its width at x = `wall`, and one of the
+/// room's walls along its border at x = 0.
+struct FloorAndWalls
+{
+  std::vector<Vec3> points;
+  std::vector<int> offsets{ 0 };
+  std::vector<int> connectivity;
+
+  explicit FloorAndWalls(double wall)
+  {
+    Add({ { 0, 0, 0 }, { 4, 0, 0 }, { 4, 3, 0 }, { 0, 3, 0 } });
+    Add({ { wall, 0, 0 }, { wall, 0, 2 }, { wall, 3, 2 }, { wall, 3, 0 } });
+    Add({ { 0, 0, 0 }, { 0, 3, 0 }, { 0, 3, 2 }, { 0, 0, 2 } });
+  }
+
+  void Add(const std::vector<Vec3>& loop)
+  {
+    for (const Vec3& p : loop)
+    {
+      connectivity.push_back(static_cast<int>(points.size()));
+      points.push_back(p);
+    }
+    offsets.push_back(static_cast<int>(connectivity.size()));
+  }
+
+  PolygonArrays Arrays() const { return { points, offsets, connectivity }; }
+};
+
+double Area(const std::vector<Vec3>& corners, const std::vector<int>& sides)
+{
+  double area = 0;
+  size_t first = 0;
+  for (int n : sides)
+  {
+    area += PolygonArea(corners.data() + first, n);
+    first += n;
+  }
+  return area;
+}
+} // namespace
+
+TEST(ContactCuts, AWallStandingInsideAFloorIsItsContactAndTheFloorsBorderIsNot)
+{
+  const FloorAndWalls scene(1.8);
+  const std::vector<std::vector<ContactSegment>> contacts = FindContacts(scene.Arrays(), scene.Arrays(), 1e-6);
+  ASSERT_EQ(contacts.size(), 3u);
+  ASSERT_EQ(contacts[0].size(), 1u); // the partition's foot; the border wall's foot is on the outline
+  EXPECT_NEAR(contacts[0][0].A.x, 1.8, 1e-12);
+  EXPECT_NEAR(contacts[0][0].B.x, 1.8, 1e-12);
+  EXPECT_NEAR(std::fabs(contacts[0][0].B.y - contacts[0][0].A.y), 3.0, 1e-12);
+  EXPECT_TRUE(contacts[1].empty()); // nothing stands on the walls
+  EXPECT_TRUE(contacts[2].empty());
+}
+
+TEST(ContactCuts, AWallFloatingAboveTheFloorIsNoContact)
+{
+  FloorAndWalls scene(1.8);
+  for (int k = scene.offsets[1]; k < scene.offsets[2]; ++k)
+  {
+    scene.points[scene.connectivity[k]].z += 1e-3; // a millimetre gap: light passes under it
+  }
+  EXPECT_TRUE(FindContacts(scene.Arrays(), scene.Arrays(), 1e-6)[0].empty());
+}
+
+TEST(ContactCuts, ElementsAcrossTheContactAreSplitAndTheAreaIsKept)
+{
+  // A 4 x 1 strip of 1 x 1 elements; the contact runs across it at x = 1.3, and along the
+  // border between two elements at x = 3 (no cut there: it would leave nothing on one side).
+  std::vector<Vec3> corners;
+  std::vector<int> sides, patch;
+  for (int i = 0; i < 4; ++i)
+  {
+    const double x = i;
+    corners.insert(corners.end(), { { x, 0, 0 }, { x + 1, 0, 0 }, { x + 1, 1, 0 }, { x, 1, 0 } });
+    sides.push_back(4);
+    patch.push_back(i / 2);
+  }
+  const std::vector<ContactSegment> contacts{ { { 1.3, -1, 0 }, { 1.3, 2, 0 } }, { { 3, 0, 0 }, { 3, 1, 0 } } };
+  EXPECT_EQ(CutAlongContacts(contacts, { 0, 0, 1 }, 1e-9, corners, sides, patch), 1);
+  ASSERT_EQ(sides.size(), 5u);
+  EXPECT_NEAR(Area(corners, sides), 4.0, 1e-12);
+  size_t first = 0;
+  for (size_t e = 0; e < sides.size(); first += sides[e], ++e)
+  {
+    double lo = 1e9, hi = -1e9;
+    for (int v = 0; v < sides[e]; ++v)
+    {
+      lo = std::min(lo, corners[first + v].x);
+      hi = std::max(hi, corners[first + v].x);
+    }
+    EXPECT_FALSE(lo < 1.3 - 1e-12 && hi > 1.3 + 1e-12) << "element " << e << " still spans the contact";
+  }
+  EXPECT_EQ(std::count(patch.begin(), patch.end(), 0), 3); // the parts keep their patch
+}
+
+TEST(ContactCuts, ASegmentEndingInsideAnElementCutsOnlyTheElementsItReaches)
+{
+  std::vector<Vec3> corners;
+  std::vector<int> sides, patch;
+  for (int i = 0; i < 4; ++i)
+  {
+    const double y = i;
+    corners.insert(corners.end(), { { 0, y, 0 }, { 1, y, 0 }, { 1, y + 1, 0 }, { 0, y + 1, 0 } });
+    sides.push_back(4);
+    patch.push_back(0);
+  }
+  // A box's side 0.5 m long standing at x = 0.4 from y = 0.2: it reaches the first element only.
+  const std::vector<ContactSegment> contacts{ { { 0.4, 0.2, 0 }, { 0.4, 0.7, 0 } } };
+  EXPECT_EQ(CutAlongContacts(contacts, { 0, 0, 1 }, 1e-9, corners, sides, patch), 1);
+  EXPECT_NEAR(Area(corners, sides), 4.0, 1e-12);
+}
+
+TEST(ContactCuts, TheMesherCutsTheFloorWhereTheWallStandsOffTheElementGrid)
+{
+  for (double wall : { 1.8, 2.0 })
+  {
+    const FloorAndWalls scene(wall);
+    MesherOptions o;
+    o.PatchSize = 1.0;
+    o.ElementSize = 0.5;
+    MeshedPolygons m;
+    ASSERT_EQ(MeshPolygons(scene.points, scene.offsets, scene.connectivity, { 0, 0, 0 }, o, m), "");
+    int straddling = 0, floor = 0;
+    for (size_t e = 0; e + 1 < m.offsets.size(); ++e)
+    {
+      double lo = 1e9, hi = -1e9, z = 0;
+      for (int k = m.offsets[e]; k < m.offsets[e + 1]; ++k)
+      {
+        lo = std::min(lo, m.points[m.connectivity[k]].x);
+        hi = std::max(hi, m.points[m.connectivity[k]].x);
+        z = std::max(z, m.points[m.connectivity[k]].z);
+      }
+      floor += z == 0 ? 1 : 0;
+      straddling += z == 0 && lo < wall - 1e-9 && hi > wall + 1e-9 ? 1 : 0;
+    }
+    EXPECT_EQ(straddling, 0) << "wall at " << wall;
+    // 8 x 6 floor elements; off the grid the column the wall stands in is split in two.
+    EXPECT_EQ(floor, wall == 2.0 ? 48 : 54) << "wall at " << wall;
+    EXPECT_EQ(CountElements(scene.points, scene.offsets, scene.connectivity, 1.0, 0.5),
+      static_cast<double>(m.sourcePolygon.size()))
+      << "the count before meshing includes the cuts";
+  }
+}
