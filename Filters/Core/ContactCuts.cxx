@@ -291,39 +291,56 @@ std::vector<std::vector<ContactSegment>> FindContacts(
 int CutAlongContacts(const std::vector<ContactSegment>& segments, const Vec3& normal, double tolerance,
   std::vector<Vec3>& corners, std::vector<int>& sides, std::vector<int>& patch)
 {
-  const size_t before = sides.size();
-  std::vector<Vec3> front, back, nextCorners;
-  std::vector<int> nextSides, nextPatch;
+  if (segments.empty())
+  {
+    return 0;
+  }
+  std::vector<Bounds> reach;
   for (const ContactSegment& segment : segments)
   {
-    const Vec3 along = segment.B - segment.A;
-    const Vec3 side = Normalized(Cross(normal, along));
-    nextCorners.clear();
-    nextSides.clear();
-    nextPatch.clear();
-    size_t first = 0;
-    for (size_t e = 0; e < sides.size(); first += sides[e], ++e)
+    reach.push_back(Bounds({ segment.A, segment.B }));
+  }
+  const size_t before = sides.size();
+  std::vector<Vec3> nextCorners, front, back;
+  std::vector<int> nextSides, nextPatch;
+  std::vector<std::vector<Vec3>> parts;
+  size_t first = 0;
+  for (size_t e = 0; e < before; first += sides[e], ++e)
+  {
+    // Each element is cut by the segments near it, one after another, part by part.
+    parts.assign(1, std::vector<Vec3>(corners.begin() + first, corners.begin() + first + sides[e]));
+    const Bounds box(parts[0]);
+    for (size_t s = 0; s < segments.size(); ++s)
     {
-      const Vec3* loop = corners.data() + first;
-      if (ChordOverlaps(loop, sides[e], segment.A, segment.B, normal, tolerance) &&
-        SplitLoop(loop, sides[e], segment.A, side, tolerance, front, back))
+      if (reach[s].Lo.x > box.Hi.x + tolerance || reach[s].Hi.x < box.Lo.x - tolerance ||
+        reach[s].Lo.y > box.Hi.y + tolerance || reach[s].Hi.y < box.Lo.y - tolerance ||
+        reach[s].Lo.z > box.Hi.z + tolerance || reach[s].Hi.z < box.Lo.z - tolerance)
       {
-        for (const std::vector<Vec3>* part : { &front, &back })
-        {
-          nextCorners.insert(nextCorners.end(), part->begin(), part->end());
-          nextSides.push_back(static_cast<int>(part->size()));
-          nextPatch.push_back(patch[e]);
-        }
         continue;
       }
-      nextCorners.insert(nextCorners.end(), loop, loop + sides[e]);
-      nextSides.push_back(sides[e]);
+      const Vec3 side = Normalized(Cross(normal, segments[s].B - segments[s].A));
+      for (size_t k = 0, n = parts.size(); k < n; ++k)
+      {
+        const std::vector<Vec3>& part = parts[k];
+        const int count = static_cast<int>(part.size());
+        if (ChordOverlaps(part.data(), count, segments[s].A, segments[s].B, normal, tolerance) &&
+          SplitLoop(part.data(), count, segments[s].A, side, tolerance, front, back))
+        {
+          parts[k] = front;
+          parts.push_back(back);
+        }
+      }
+    }
+    for (const std::vector<Vec3>& part : parts)
+    {
+      nextCorners.insert(nextCorners.end(), part.begin(), part.end());
+      nextSides.push_back(static_cast<int>(part.size()));
       nextPatch.push_back(patch[e]);
     }
-    corners.swap(nextCorners);
-    sides.swap(nextSides);
-    patch.swap(nextPatch);
   }
+  corners.swap(nextCorners);
+  sides.swap(nextSides);
+  patch.swap(nextPatch);
   return static_cast<int>(sides.size() - before);
 }
 

@@ -4,6 +4,7 @@
 #include "TrianglePairs.h"
 
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+#include <OpenMesh/Core/System/omstream.hh>
 
 #include <algorithm>
 #include <array>
@@ -163,36 +164,50 @@ double EstimateElements(const std::vector<Vec3>& loop, const MesherOptions& o)
 }
 } // namespace
 
-double CountElements(const std::vector<Vec3>& points, const std::vector<int>& offsets,
-  const std::vector<int>& connectivity, double patchSize, double elementSize, const PolygonArrays* wholeScene)
+namespace
+{
+/// Where surfaces stand on the polygons, and the distance that counts as standing.
+struct Contacts
+{
+  std::vector<std::vector<ContactSegment>> Segments;
+  double Touch = 0;
+};
+
+Contacts FindSceneContacts(const PolygonArrays& polygons, const PolygonArrays* wholeScene)
+{
+  const PolygonArrays& whole = wholeScene ? *wholeScene : polygons;
+  Contacts contacts;
+  contacts.Touch = ContactTolerance(Span(whole.Points));
+  contacts.Segments = FindContacts(polygons, whole, contacts.Touch);
+  return contacts;
+}
+
+/// CountElements with the contacts found once (a budget's search counts many times).
+double CountWithContacts(const PolygonArrays& polygons, double patchSize, double elementSize, const Contacts& contacts)
 {
   if (!(patchSize > 0) || !(elementSize > 0))
   {
     return 0;
   }
   double total = 0;
-  const double span = Span(points);
-  const double noise = FloatNoise(span); // as MeshList decides
-  const PolygonArrays polygons{ points, offsets, connectivity };
-  const PolygonArrays& whole = wholeScene ? *wholeScene : polygons;
-  const double touch = ContactTolerance(Span(whole.Points));
-  const std::vector<std::vector<ContactSegment>> contacts = FindContacts(polygons, whole, touch);
-  for (size_t i = 0; i + 1 < offsets.size(); ++i)
+  const double noise = FloatNoise(Span(polygons.Points)); // as MeshList decides
+  MesherOptions sizes;
+  sizes.PatchSize = patchSize;
+  sizes.ElementSize = elementSize;
+  for (size_t i = 0; i + 1 < polygons.Offsets.size(); ++i)
   {
-    const std::vector<Vec3> loop = GatherLoop(points, offsets, connectivity, static_cast<int>(i));
+    const std::vector<Vec3> loop = GatherLoop(polygons.Points, polygons.Offsets, polygons.Connectivity, static_cast<int>(i));
     if (loop.size() < 3)
     {
       continue;
     }
-    if (!contacts[i].empty())
+    if (!contacts.Segments[i].empty())
     {
-      MesherOptions sizes;
-      sizes.PatchSize = patchSize;
-      sizes.ElementSize = elementSize;
+      // Cuts depend on where the elements fall: make them to count them.
       Piece piece;
       MakePiece(loop, sizes, noise, piece);
       const Vec3 normal = Normalized(NewellVector(loop.data(), static_cast<int>(loop.size())));
-      CutAlongContacts(contacts[i], normal, touch, piece.corners, piece.sides, piece.localPatch);
+      CutAlongContacts(contacts.Segments[i], normal, contacts.Touch, piece.corners, piece.sides, piece.localPatch);
       total += static_cast<double>(piece.sides.size());
       continue;
     }
@@ -209,13 +224,23 @@ double CountElements(const std::vector<Vec3>& points, const std::vector<int>& of
   }
   return total;
 }
+} // namespace
+
+double CountElements(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, double patchSize, double elementSize, const PolygonArrays* wholeScene)
+{
+  const PolygonArrays polygons{ points, offsets, connectivity };
+  return CountWithContacts(polygons, patchSize, elementSize, FindSceneContacts(polygons, wholeScene));
+}
 
 double ElementSizeForBudget(const std::vector<Vec3>& points, const std::vector<int>& offsets,
   const std::vector<int>& connectivity, double patchSize, double elementSize, double budget)
 {
+  const PolygonArrays polygons{ points, offsets, connectivity };
+  const Contacts contacts = FindSceneContacts(polygons, nullptr);
   return ElementSizeForBudget(
-    [&](double size) { return CountElements(points, offsets, connectivity, patchSize, size); }, patchSize,
-    elementSize, budget);
+    [&](double size) { return CountWithContacts(polygons, patchSize, size, contacts); }, patchSize, elementSize,
+    budget);
 }
 
 double ElementSizeForBudget(
@@ -294,10 +319,10 @@ int FindSurface(const Map& map, const Key& key, const std::vector<Plane>& planes
 }
 
 /// MeshPolygons on polygons that came from input cells `source[i]` (for messages, keys and
-/// the output's sourcePolygon).
+/// the output's sourcePolygon), with the surfaces standing on them.
 std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& offsets,
   const std::vector<int>& connectivity, const std::vector<int>& source, const std::vector<int>& surfaceKey,
-  const MesherOptions& options, MeshedPolygons& out)
+  const Contacts& contacts, const MesherOptions& options, MeshedPolygons& out)
 {
   out = MeshedPolygons();
   std::ostringstream err;
@@ -312,10 +337,6 @@ std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& of
   const Vec3 sceneCentre = Bounds(points).Centre();
   const double quantum = std::max(diagonal, 1e-300) * 1e-9;
   const double noise = FloatNoise(diagonal);
-  const PolygonArrays polygons{ points, offsets, connectivity };
-  const PolygonArrays& whole = options.WholeScene ? *options.WholeScene : polygons;
-  const double touch = ContactTolerance(options.WholeScene ? Span(whole.Points) : diagonal);
-  const std::vector<std::vector<ContactSegment>> contacts = FindContacts(polygons, whole, touch);
 
   // Surfaces: same caller key and same plane, up to a tolerance relative to the scene.
   using SurfaceId = std::tuple<int, long long, long long, long long, long long>;
@@ -381,7 +402,7 @@ std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& of
     const Vec3 normal = Normalized(newell);
     Piece piece;
     MakePiece(loop, options, noise, piece);
-    CutAlongContacts(contacts[i], normal, touch, piece.corners, piece.sides, piece.localPatch);
+    CutAlongContacts(contacts.Segments[i], normal, contacts.Touch, piece.corners, piece.sides, piece.localPatch);
 
     // From the scene's centre: measured from the origin, a plane far away carries its
     // normal's round-off times its distance, and one floor would split into many.
@@ -434,11 +455,15 @@ std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& of
         }
         handles.push_back(weld->second);
       }
+      // OpenMesh prints each refusal; the fallback below is the answer to it.
+      omerr().disable();
       SurfaceMesh::FaceHandle face = mesh.add_face(handles);
+      omerr().enable();
       if (!face.is_valid())
       {
         // Overlapping input (coincident faces, T-shaped junctions of three faces on one
-        // edge) is not a 2-manifold: give the element its own vertices instead.
+        // edge; a model's parts overlapping by a millimetre, cut along the same contact
+        // lines) is not a 2-manifold: give the element its own vertices instead.
         for (auto& h : handles)
         {
           const auto p = mesh.point(h);
@@ -528,23 +553,22 @@ void WarnAboutWarpedPolygons(const std::vector<Vec3>& points, const std::vector<
 }
 
 /// ElementSize, or the size ElementBudget calls for; says which, and warns on a huge mesh.
-double ChooseElementSize(const std::vector<Vec3>& points, const PairedPolygons& polygons, const MesherOptions& o)
+double ChooseElementSize(const PolygonArrays& polygons, const Contacts& contacts, const MesherOptions& o)
 {
-  const double count =
-    CountElements(points, polygons.offsets, polygons.connectivity, o.PatchSize, o.ElementSize, o.WholeScene);
+  auto count = [&](double size) { return CountWithContacts(polygons, o.PatchSize, size, contacts); };
+  const double wanted = count(o.ElementSize);
   std::ostringstream message;
   double size = o.ElementSize;
-  if (o.ElementBudget > 0 && count > o.ElementBudget)
+  if (o.ElementBudget > 0 && wanted > o.ElementBudget)
   {
-    size = ElementSizeForBudget(points, polygons.offsets, polygons.connectivity, o.PatchSize, size, o.ElementBudget);
-    message << "ElementSize " << o.ElementSize << " would make " << count << " elements, more than MaximumElements ("
-            << o.ElementBudget << "); using " << size << " ("
-            << CountElements(points, polygons.offsets, polygons.connectivity, o.PatchSize, size) << " elements).";
+    size = ElementSizeForBudget(count, o.PatchSize, size, o.ElementBudget);
+    message << "ElementSize " << o.ElementSize << " would make " << wanted << " elements, more than MaximumElements ("
+            << o.ElementBudget << "); using " << size << " (" << count(size) << " elements).";
   }
-  else if (count > 2e6)
+  else if (wanted > 2e6)
   {
-    message << "ElementSize " << size << " makes " << count << " elements: solving takes minutes and about "
-            << count * 1.6e-6 << " GB with 8 lights. Set MaximumElements (or a larger ElementSize) to bound it.";
+    message << "ElementSize " << size << " makes " << wanted << " elements: solving takes minutes and about "
+            << wanted * 1.6e-6 << " GB with 8 lights. Set MaximumElements (or a larger ElementSize) to bound it.";
   }
   if (o.Warning && !message.str().empty())
   {
@@ -585,10 +609,12 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
       polygons.source.push_back(static_cast<int>(i));
     }
   }
+  const PolygonArrays paired{ points, polygons.offsets, polygons.connectivity };
+  const Contacts contacts = FindSceneContacts(paired, options.WholeScene);
   MesherOptions sized = options;
-  sized.ElementSize = ChooseElementSize(points, polygons, options);
+  sized.ElementSize = ChooseElementSize(paired, contacts, options);
   const std::string error =
-    MeshList(points, polygons.offsets, polygons.connectivity, polygons.source, surfaceKey, sized, out);
+    MeshList(points, polygons.offsets, polygons.connectivity, polygons.source, surfaceKey, contacts, sized, out);
   out.mergedTrianglePairs = polygons.merged;
   out.elementSize = sized.ElementSize;
   return error;
