@@ -1,6 +1,6 @@
 #include "SceneFiles.h"
 #include "SceneFilesErrors.h"
-#include "Text.h"
+#include "Base/Text.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"

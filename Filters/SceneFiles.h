@@ -4,7 +4,7 @@
 #ifndef SceneFiles_h
 #define SceneFiles_h
 
-#include "SceneImport.h"
+#include "Import/SceneImport.h"
 
 #include <string>
 #include <vector>

@@ -2,7 +2,7 @@
 // them to OBJ + MTL in a temporary folder (scene-graph transforms applied), which is then
 // read as any OBJ.
 #include "SceneFiles.h"
-#include "Text.h"
+#include "Base/Text.h"
 
 #include <vtksys/Process.h>
 #include <vtksys/SystemTools.hxx>

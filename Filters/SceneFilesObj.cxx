@@ -2,7 +2,7 @@
 // vtkOBJReader), diffuse textures through VTK's image readers.
 #include "SceneFiles.h"
 
-#include "Wavefront.h"
+#include "Import/Wavefront.h"
 
 #include "vtkImageData.h"
 #include "vtkImageReader2.h"

@@ -3,11 +3,11 @@
 #include "vtkRadiosityAdapter.h"
 #include "vtkRadiosityPieces.h"
 
-#include "Effects.h"
-#include "LightChecks.h"
-#include "LightSolutions.h"
-#include "Memory.h"
-#include "PatchBasis.h"
+#include "Solve/Effects.h"
+#include "Solve/LightChecks.h"
+#include "Solve/LightSolutions.h"
+#include "Base/Memory.h"
+#include "Solve/PatchBasis.h"
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"

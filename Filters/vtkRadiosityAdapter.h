@@ -2,7 +2,7 @@
 #ifndef vtkRadiosityAdapter_h
 #define vtkRadiosityAdapter_h
 
-#include "Scene.h"
+#include "Geometry/Scene.h"
 
 #include <string>
 #include <vector>

@@ -3,7 +3,7 @@
 #include "vtkRadiosityAdapter.h"
 #include "vtkRadiosityLightDefaults.h"
 
-#include "HdrImage.h"
+#include "Image/HdrImage.h"
 
 #include "vtkDataArray.h"
 #include "vtkErrorCode.h"

@@ -2,9 +2,9 @@
 #include "vtkRadiosityAdapter.h"
 #include "vtkRadiosityLightDefaults.h"
 
-#include "AtomicFile.h"
+#include "Base/AtomicFile.h"
 #include "SceneFiles.h"
-#include "Polygon.h"
+#include "Geometry/Polygon.h"
 
 #include "vtkDataArray.h"
 #include "vtkErrorCode.h"

@@ -1,6 +1,6 @@
 #include "vtkRadiosityLightDefaults.h"
 
-#include "LightRig.h"
+#include "Relight/LightRig.h"
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"

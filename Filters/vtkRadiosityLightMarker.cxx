@@ -2,10 +2,10 @@
 #include "vtkRadiosityAdapter.h"
 #include "vtkRadiosityPieces.h"
 
-#include "LightChecks.h"
-#include "LightMarking.h"
-#include "Polygon.h"
-#include "SceneImport.h"
+#include "Solve/LightChecks.h"
+#include "Import/LightMarking.h"
+#include "Geometry/Polygon.h"
+#include "Import/SceneImport.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"

@@ -3,7 +3,7 @@
 #include "vtkRadiosityAdapter.h"
 #include "vtkRadiosityPieces.h"
 
-#include "Mesher.h"
+#include "Mesh/Mesher.h"
 
 #include "vtkCellArray.h"
 #include "vtkGeometryFilter.h"

@@ -5,7 +5,7 @@
 #ifndef vtkRadiosityPieces_h
 #define vtkRadiosityPieces_h
 
-#include "ProcessGroup.h"
+#include "Base/ProcessGroup.h"
 
 #include "vtkPolyData.h" // for the kept whole scene
 #include "vtkSmartPointer.h"

@@ -2,7 +2,7 @@
 #include "vtkRadiosityAdapter.h"
 
 #include "SceneFiles.h"
-#include "SceneImport.h"
+#include "Import/SceneImport.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"

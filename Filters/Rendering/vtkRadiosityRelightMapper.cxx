@@ -1,6 +1,6 @@
 #include "vtkRadiosityRelightMapper.h"
 
-#include "LightRig.h"
+#include "Relight/LightRig.h"
 #include "vtkRadiosityLightDefaults.h"
 
 #include "vtkDataArray.h"
@@ -17,7 +17,7 @@
 #include "vtkStringArray.h"
 #include "vtkTextureObject.h"
 #include "vtkUnsignedCharArray.h"
-#include "Relight.h"
+#include "Relight/Relight.h"
 #include "vtk_glew.h"
 
 #include <cmath>

@@ -3,8 +3,8 @@
 #ifndef RadiosityBench_FurnishedRoom_h
 #define RadiosityBench_FurnishedRoom_h
 
-#include "Mesher.h"
-#include "Scene.h"
+#include "Mesh/Mesher.h"
+#include "Geometry/Scene.h"
 
 #include <string>
 #include <vector>

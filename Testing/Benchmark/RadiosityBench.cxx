@@ -1,11 +1,11 @@
 // ./relight bench: the paper's Table 1 (sampling) and Table 2 (relighting), measured in
 // one run on this machine, with the hardware ceilings they are compared against.
 // A benchmark, not a test: it prints numbers and ratios, it never judges them.
-#include "LightSolutions.h"
-#include "MovingLights.h"
-#include "PatchBasis.h"
-#include "Relight.h"
-#include "WorkerPool.h"
+#include "Solve/LightSolutions.h"
+#include "Relight/MovingLights.h"
+#include "Solve/PatchBasis.h"
+#include "Relight/Relight.h"
+#include "Base/WorkerPool.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"

@@ -2,10 +2,10 @@
 // room grows from 10k to 1M elements, k = 8 lights. Prints ratios measured in one run and
 // writes a CSV; it never judges them.
 #include "FurnishedRoom.h"
-#include "LightSolutions.h"
-#include "MovingLights.h"
-#include "PatchBasis.h"
-#include "WorkerPool.h"
+#include "Solve/LightSolutions.h"
+#include "Relight/MovingLights.h"
+#include "Solve/PatchBasis.h"
+#include "Base/WorkerPool.h"
 
 #include <algorithm>
 #include <chrono>

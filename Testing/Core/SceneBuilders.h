@@ -2,8 +2,8 @@
 #ifndef RadiosityTest_SceneBuilders_h
 #define RadiosityTest_SceneBuilders_h
 
-#include "RadiositySolver.h"
-#include "Scene.h"
+#include "Solve/RadiositySolver.h"
+#include "Geometry/Scene.h"
 
 namespace radiosity_test
 {

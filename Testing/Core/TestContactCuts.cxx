@@ -1,6 +1,6 @@
-#include "ContactCuts.h"
-#include "Mesher.h"
-#include "Polygon.h"
+#include "Mesh/ContactCuts.h"
+#include "Mesh/Mesher.h"
+#include "Geometry/Polygon.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // threads with a sum over them as MPI_Allreduce would do it: every rank must get the
 // serial answer, whatever the number of ranks and the method, and stop where the others do.
 #include "FurnishedRoom.h"
-#include "LightSolutions.h"
+#include "Solve/LightSolutions.h"
 #include "SceneBuilders.h"
 
 #include <gtest/gtest.h>

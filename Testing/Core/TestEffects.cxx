@@ -1,7 +1,7 @@
 // Simulate only what the scene calls for: for scenes built to trigger each effect, Auto
 // gives the same answer as On and does less (counted work), and a scene that needs an
 // effect never loses it.
-#include "Effects.h"
+#include "Solve/Effects.h"
 #include "SceneBuilders.h"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // Form factors against closed forms from the radiation heat-transfer literature
 // (values in shared/REFERENCES.md: Howell's catalogue C-11, C-14; Lambert's formula).
-#include "FormFactor.h"
-#include "Polygon.h"
+#include "Geometry/FormFactor.h"
+#include "Geometry/Polygon.h"
 
 #include <gtest/gtest.h>
 

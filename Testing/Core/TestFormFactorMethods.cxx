@@ -1,7 +1,7 @@
 // The solver's three form-factor methods against closed forms (shared/REFERENCES.md).
 // Each scene is one shooting polygon and one receiving polygon split into elements;
 // summing F(element -> shooter) A_element / A_shooter gives F(shooter -> receiver).
-#include "ShooterFormFactors.h"
+#include "Solve/ShooterFormFactors.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // The hard-case suite: named failure modes of radiosity codes, each with an exact or
 // reference expectation. Listed with what goes wrong in naive code in Testing/README.md.
-#include "FormFactor.h"
-#include "LightSolutions.h"
-#include "Polygon.h"
+#include "Geometry/FormFactor.h"
+#include "Solve/LightSolutions.h"
+#include "Geometry/Polygon.h"
 #include "SceneBuilders.h"
 
 #include <gtest/gtest.h>

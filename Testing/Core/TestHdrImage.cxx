@@ -1,4 +1,4 @@
-#include "HdrImage.h"
+#include "Image/HdrImage.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-#include "LightMarking.h"
-#include "Polygon.h"
+#include "Import/LightMarking.h"
+#include "Geometry/Polygon.h"
 
 #include <gtest/gtest.h>
 

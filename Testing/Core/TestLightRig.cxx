@@ -1,4 +1,4 @@
-#include "LightRig.h"
+#include "Relight/LightRig.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-#include "Mesher.h"
-#include "Polygon.h"
+#include "Mesh/Mesher.h"
+#include "Geometry/Polygon.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "Relight.h"
+#include "Relight/Relight.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-#include "SceneImport.h"
-#include "Wavefront.h"
+#include "Import/SceneImport.h"
+#include "Import/Wavefront.h"
 
 #include <gtest/gtest.h>
 

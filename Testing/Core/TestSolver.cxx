@@ -1,5 +1,5 @@
 // The light-tagged solver against closed forms, the standard method and invariants.
-#include "LightSolutions.h"
+#include "Solve/LightSolutions.h"
 #include "SceneBuilders.h"
 
 #include <gtest/gtest.h>

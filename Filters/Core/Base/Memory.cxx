@@ -1,0 +1,39 @@
+#include "Base/Memory.h"
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace radiosity
+{
+
+double AvailableMemory()
+{
+  std::ifstream info("/proc/meminfo");
+  std::string key;
+  double kilobytes = 0;
+  while (info >> key >> kilobytes)
+  {
+    if (key == "MemAvailable:")
+    {
+      return 1024.0 * kilobytes;
+    }
+    info.ignore(256, '\n');
+  }
+  return 0;
+}
+
+std::string CheckMemory(double bytes, const std::string& what)
+{
+  const double available = AvailableMemory();
+  if (available <= 0 || bytes <= 0.9 * available)
+  {
+    return std::string();
+  }
+  char text[512];
+  std::snprintf(text, sizeof(text), "%s needs about %.1f GB, more than the %.1f GB of memory available", what.c_str(),
+    bytes / 1073741824.0, available / 1073741824.0);
+  return text;
+}
+
+} // namespace radiosity

@@ -1,0 +1,354 @@
+#include "Geometry/Polygon.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace radiosity
+{
+namespace
+{
+/// Below this fraction of its longest edge squared, an area is zero: what PolygonProblem
+/// rejects, Triangulate must not make.
+constexpr double ZeroAreaFraction = 1e-12;
+
+/// Twice the area below which corner a-b-c is straight: zero area for PolygonProblem, or
+/// no more than moving its points by `noise` can make of three points in a line. So a
+/// corner that is straight stays straight when a float-stored scene is turned or scaled,
+/// and the polygon is cut into the same triangles.
+double StraightLimit(const Vec3& a, const Vec3& b, const Vec3& c, double noise)
+{
+  const double longest = std::max({ Norm(b - a), Norm(c - b), Norm(a - c) });
+  return 2 * ZeroAreaFraction * longest * longest + 4 * noise * longest;
+}
+}
+
+Bounds::Bounds(const std::vector<Vec3>& points)
+{
+  if (points.empty())
+  {
+    return;
+  }
+  Lo = Hi = points[0];
+  for (const Vec3& p : points)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      Lo[c] = std::min(Lo[c], p[c]);
+      Hi[c] = std::max(Hi[c], p[c]);
+    }
+  }
+}
+
+Vec3 NewellVector(const Vec3* loop, int count)
+{
+  // Relative to the first point: the sums of far-away coordinates would cancel the
+  // digits that a small polygon's normal lives in.
+  Vec3 n;
+  if (count <= 0)
+  {
+    return n;
+  }
+  const Vec3 o = loop[0];
+  for (int i = 0; i < count; ++i)
+  {
+    const Vec3 a = loop[i] - o;
+    const Vec3 b = loop[(i + 1) % count] - o;
+    n.x += (a.y - b.y) * (a.z + b.z);
+    n.y += (a.z - b.z) * (a.x + b.x);
+    n.z += (a.x - b.x) * (a.y + b.y);
+  }
+  return n;
+}
+
+Vec3 PolygonCentroid(const Vec3* loop, int count)
+{
+  // Area-weighted centroid of the fan triangles with signed areas (along the polygon's
+  // normal), which is exact for non-convex polygons too.
+  const Vec3 normal = Normalized(NewellVector(loop, count));
+  Vec3 weighted;
+  double total = 0;
+  for (int i = 1; i + 1 < count; ++i)
+  {
+    const double a = 0.5 * Dot(normal, Cross(loop[i] - loop[0], loop[i + 1] - loop[0]));
+    weighted += (loop[i] - loop[0] + loop[i + 1] - loop[0]) * (a / 3.0);
+    total += a;
+  }
+  if (total > 0)
+  {
+    return loop[0] + weighted * (1.0 / total);
+  }
+  Vec3 mean;
+  for (int i = 0; i < count; ++i)
+  {
+    mean += loop[i];
+  }
+  return count > 0 ? mean * (1.0 / count) : mean;
+}
+
+double Span(const std::vector<Vec3>& points)
+{
+  Vec3 mean{};
+  for (const Vec3& p : points)
+  {
+    mean += p * (1.0 / static_cast<double>(points.size()));
+  }
+  double radius = 0;
+  for (const Vec3& p : points)
+  {
+    radius = std::max(radius, Norm(p - mean));
+  }
+  return 2.0 * radius;
+}
+
+double FloatNoise(double span)
+{
+  // The span, not the distance from the origin: a tolerance that grew with the distance
+  // would straighten real millimetre details of a building moved 1 km (measured: the
+  // FZK-Haus lost 4,000 of its 31,833 elements), so the same scene would mesh otherwise.
+  return 2 * 1.1920929e-7 * span;
+}
+
+bool IsConvex(const Vec3* loop, int count, double noise)
+{
+  const Vec3 unit = Normalized(NewellVector(loop, count));
+  for (int i = 0; i < count; ++i)
+  {
+    const Vec3& a = loop[(i + count - 1) % count];
+    const Vec3& b = loop[i];
+    const Vec3& c = loop[(i + 1) % count];
+    if (Dot(unit, Cross(b - a, c - b)) < -StraightLimit(a, b, c, noise)) // a straight corner bends neither way
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+std::vector<int> Triangulate(const Vec3* loop, int count, double noise)
+{
+  std::vector<int> triangles;
+  if (count < 3)
+  {
+    return triangles;
+  }
+  const Vec3 unit = Normalized(NewellVector(loop, count));
+  // Twice the signed area of corner b's triangle, positive where the loop turns left.
+  auto turn = [&](int a, int b, int c) { return Dot(unit, Cross(loop[b] - loop[a], loop[c] - loop[b])); };
+  // A corner whose triangle PolygonProblem would call zero area (three points in a line,
+  // up to rounding) makes no triangle: it would only be rejected downstream.
+  auto flat = [&](int a, int b, int c) {
+    return std::fabs(turn(a, b, c)) <= StraightLimit(loop[a], loop[b], loop[c], noise);
+  };
+  auto emit = [&](int a, int b, int c) {
+    if (!flat(a, b, c))
+    {
+      triangles.insert(triangles.end(), { a, b, c });
+    }
+  };
+  std::vector<int> remaining(count);
+  for (int i = 0; i < count; ++i)
+  {
+    remaining[i] = i;
+  }
+  const bool convex = IsConvex(loop, count, noise);
+  auto inside = [&](int p, int a, int b, int c) {
+    return turn(a, b, p) >= 0 && turn(b, c, p) >= 0 && turn(c, a, p) >= 0;
+  };
+  while (!convex && remaining.size() > 3)
+  {
+    const int n = static_cast<int>(remaining.size());
+    int ear = -1, straight = -1;
+    for (int i = 0; i < n && ear < 0; ++i)
+    {
+      const int a = remaining[(i + n - 1) % n], b = remaining[i], c = remaining[(i + 1) % n];
+      if (flat(a, b, c))
+      {
+        straight = i; // lies on its neighbours' edge: dropping it changes no area
+        continue;
+      }
+      if (turn(a, b, c) <= 0)
+      {
+        continue; // reflex corner: not an ear
+      }
+      bool empty = true;
+      for (int j = 0; j < n && empty; ++j)
+      {
+        const int p = remaining[j];
+        empty = p == a || p == b || p == c || !inside(p, a, b, c);
+      }
+      ear = empty ? i : -1;
+    }
+    if (ear < 0 && straight < 0)
+    {
+      break; // self-intersecting input: fan what is left rather than loop forever
+    }
+    if (ear >= 0)
+    {
+      emit(remaining[(ear + n - 1) % n], remaining[ear], remaining[(ear + 1) % n]);
+    }
+    remaining.erase(remaining.begin() + (ear >= 0 ? ear : straight));
+  }
+  for (size_t i = 1; i + 1 < remaining.size(); ++i)
+  {
+    emit(remaining[0], remaining[i], remaining[i + 1]);
+  }
+  return triangles;
+}
+
+void ClipToHalfSpace(const Vec3* loop, int count, const Vec3& origin, const Vec3& normal,
+  std::vector<Vec3>& clipped)
+{
+  clipped.clear();
+  for (int i = 0; i < count; ++i)
+  {
+    const Vec3& a = loop[i];
+    const Vec3& b = loop[(i + 1) % count];
+    const double da = Dot(normal, a - origin);
+    const double db = Dot(normal, b - origin);
+    if (da >= 0)
+    {
+      clipped.push_back(a);
+    }
+    if ((da >= 0) != (db >= 0))
+    {
+      const double t = da / (da - db);
+      clipped.push_back(a + (b - a) * t);
+    }
+  }
+}
+
+/// Chains start/end segments into one closed loop of corners; empty unless they form
+/// exactly one simple loop.
+std::vector<Vec3> ChainLoop(const std::vector<Vec3>& segments)
+{
+  const size_t count = segments.size() / 2;
+  std::vector<Vec3> loop;
+  if (count < 3)
+  {
+    return loop;
+  }
+  std::vector<char> used(count, 0);
+  size_t current = 0;
+  used[0] = 1;
+  loop.push_back(segments[0]);
+  for (size_t step = 1; step < count; ++step)
+  {
+    const Vec3& end = segments[2 * current + 1];
+    size_t next = count;
+    for (size_t s = 0; s < count && next == count; ++s)
+    {
+      if (!used[s] && Norm(segments[2 * s] - end) == 0)
+      {
+        next = s;
+      }
+    }
+    if (next == count)
+    {
+      return {};
+    }
+    used[next] = 1;
+    loop.push_back(segments[2 * next]);
+    current = next;
+  }
+  if (Norm(segments[2 * current + 1] - loop[0]) != 0)
+  {
+    return {};
+  }
+  return loop;
+}
+
+namespace
+{
+/// True when segments ab and cd (2-D) cross or touch beyond `tolerance`.
+bool SegmentsMeet(const double* a, const double* b, const double* c, const double* d, double tolerance)
+{
+  auto side = [](const double* p, const double* q, const double* r) {
+    return (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
+  };
+  const double d1 = side(c, d, a), d2 = side(c, d, b), d3 = side(a, b, c), d4 = side(a, b, d);
+  return ((d1 > tolerance && d2 < -tolerance) || (d1 < -tolerance && d2 > tolerance)) &&
+    ((d3 > tolerance && d4 < -tolerance) || (d3 < -tolerance && d4 > tolerance));
+}
+
+bool CrossesItself(const Vec3* loop, int count, const Vec3& newell, double extent)
+{
+  // Project on the plane of the largest normal component; crossings survive projection.
+  const int drop = std::fabs(newell.x) >= std::fabs(newell.y) && std::fabs(newell.x) >= std::fabs(newell.z)
+    ? 0
+    : (std::fabs(newell.y) >= std::fabs(newell.z) ? 1 : 2);
+  std::vector<double> flat(2 * count);
+  for (int i = 0; i < count; ++i)
+  {
+    flat[2 * i] = loop[i][drop == 0 ? 1 : 0];
+    flat[2 * i + 1] = loop[i][drop == 2 ? 1 : 2];
+  }
+  const double tolerance = 1e-9 * extent * extent;
+  for (int i = 0; i < count; ++i)
+  {
+    for (int j = i + 2; j < count; ++j)
+    {
+      if (i == 0 && j == count - 1)
+      {
+        continue; // neighbours through the closing edge
+      }
+      if (SegmentsMeet(&flat[2 * i], &flat[2 * ((i + 1) % count)], &flat[2 * j], &flat[2 * ((j + 1) % count)], tolerance))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+} // namespace
+
+std::vector<Vec3> GatherLoop(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, int i)
+{
+  std::vector<Vec3> loop;
+  for (int k = offsets[i]; k < offsets[i + 1]; ++k)
+  {
+    loop.push_back(points[connectivity[k]]);
+  }
+  return loop;
+}
+
+std::string PolygonProblem(const Vec3* loop, int count)
+{
+  double extent = 0;
+  for (int i = 0; i < count; ++i)
+  {
+    const Vec3& p = loop[i];
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+    {
+      return "has a non-finite point (NaN or infinite)";
+    }
+    if (std::max({ std::fabs(p.x), std::fabs(p.y), std::fabs(p.z) }) > MaximumCoordinate)
+    {
+      std::ostringstream why;
+      why << "has a coordinate of magnitude " << std::max({ std::fabs(p.x), std::fabs(p.y), std::fabs(p.z) })
+          << ", beyond " << MaximumCoordinate << " that single-precision ray tracing can hold; rescale the scene";
+      return why.str();
+    }
+    extent = std::max(extent, Norm(loop[(i + 1) % count] - p));
+  }
+  // The plane from the widest corner triangle: Newell's vector vanishes for a symmetric
+  // figure 8, whose lobes cancel.
+  Vec3 plane;
+  for (int i = 1; i + 1 < count; ++i)
+  {
+    const Vec3 c = Cross(loop[i] - loop[0], loop[i + 1] - loop[0]);
+    plane = Norm(c) > Norm(plane) ? c : plane;
+  }
+  if (count > 3 && Norm(plane) > 1e-12 * extent * extent && CrossesItself(loop, count, plane, extent))
+  {
+    return "crosses itself (edges intersect, like a figure 8); split it into simple polygons";
+  }
+  if (!(0.5 * Norm(NewellVector(loop, count)) > ZeroAreaFraction * extent * extent))
+  {
+    return "has zero area (its points are collinear or coincident); remove degenerate cells";
+  }
+  return std::string();
+}
+
+}

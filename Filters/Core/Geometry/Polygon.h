@@ -1,0 +1,79 @@
+// Planar convex polygon helpers shared by the form-factor code, the solver and the mesher.
+#ifndef RadiosityCore_Polygon_h
+#define RadiosityCore_Polygon_h
+
+#include "Base/Vec3.h"
+
+#include <string>
+#include <vector>
+
+namespace radiosity
+{
+
+/// Axis-aligned bounds of a point set (empty: both corners at the origin).
+struct Bounds
+{
+  Vec3 Lo, Hi;
+  explicit Bounds(const std::vector<Vec3>& points);
+  double Diagonal() const { return Norm(Hi - Lo); }
+  Vec3 Centre() const { return (Lo + Hi) * 0.5; }
+};
+
+/// Newell's vector: normal direction of the right-hand-rule loop, length = 2 * area.
+/// Robust for non-planar or nearly degenerate loops, unlike a single cross product.
+Vec3 NewellVector(const Vec3* loop, int count);
+
+inline double PolygonArea(const Vec3* loop, int count)
+{
+  return 0.5 * Norm(NewellVector(loop, count));
+}
+
+Vec3 PolygonCentroid(const Vec3* loop, int count);
+
+/// Keeps the part of a convex loop with dot(normal, x - origin) >= 0 (Sutherland-Hodgman).
+/// The analytic form factor integrates over the whole polygon, so parts behind the receiver
+/// must be removed first or they cancel visible parts.
+void ClipToHalfSpace(const Vec3* loop, int count, const Vec3& origin, const Vec3& normal,
+  std::vector<Vec3>& clipped);
+
+/// Triangles covering a simple planar polygon (convex or not), as index triples into
+/// `loop`: a fan when the polygon is convex, ear clipping otherwise. A fan over a
+/// non-convex polygon would cover area outside it and miss area inside.
+/// `noise`: how far the points may be off their true places (float rounding of the scene's
+/// coordinates); corners straight up to it make no triangle and bend neither way.
+std::vector<int> Triangulate(const Vec3* loop, int count, double noise = 0);
+
+/// Chains start/end segment pairs (exactly matching ends) into one closed loop of corners;
+/// empty unless they form exactly one loop.
+std::vector<Vec3> ChainLoop(const std::vector<Vec3>& segments);
+
+/// Polygon i's corners, from flat offsets/connectivity arrays (as SceneMesh holds them).
+std::vector<Vec3> GatherLoop(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, int i);
+
+/// True if every corner turns the same way about the polygon's normal (straight ones, up
+/// to `noise` as in Triangulate, turn neither way).
+bool IsConvex(const Vec3* loop, int count, double noise = 0);
+
+/// Twice the largest distance of a point from the points' mean: a scene's size that turning
+/// or moving it does not change (a bounding box's diagonal turns with the axes).
+double Span(const std::vector<Vec3>& points);
+
+/// How far float coordinates (VTK stores points as floats) can move a scene's points
+/// near the origin: a few float steps of its span. Far from the origin floats are coarser
+/// than this, and a straight corner of a long edge can come out bent.
+double FloatNoise(double span);
+
+/// Largest coordinate magnitude the ray tracer's single precision handles with room to
+/// spare (squares of lengths stay finite in float).
+constexpr double MaximumCoordinate = 1e18;
+
+/// Empty when the loop can be a radiosity polygon; otherwise what is wrong with it, to be
+/// prefixed with the cell's name: a non-finite or too large coordinate, zero area (its
+/// points collinear or coincident, judged against its own size, not the scene's), or
+/// edges that cross (a figure 8).
+std::string PolygonProblem(const Vec3* loop, int count);
+
+} // namespace radiosity
+
+#endif

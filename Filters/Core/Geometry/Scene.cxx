@@ -1,0 +1,168 @@
+#include "Geometry/Scene.h"
+#include "Geometry/Polygon.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+namespace radiosity
+{
+
+void SceneMesh::AddPolygon(const std::vector<int>& ids)
+{
+  connectivity.insert(connectivity.end(), ids.begin(), ids.end());
+  offsets.push_back(static_cast<int>(connectivity.size()));
+}
+
+namespace
+{
+bool Finite(const Vec3& v)
+{
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+std::vector<Vec3> Loop(const SceneMesh& mesh, int i)
+{
+  return GatherLoop(mesh.points, mesh.offsets, mesh.connectivity, i);
+}
+} // namespace
+
+std::string ValidateScene(const SceneMesh& mesh, int& numberOfLights)
+{
+  std::ostringstream err;
+  const int n = mesh.NumberOfPolygons();
+  if (n <= 0)
+  {
+    return "the input has no polygons";
+  }
+  if (static_cast<int>(mesh.reflectance.size()) != n || static_cast<int>(mesh.lightId.size()) != n)
+  {
+    return "Reflectance and LightId must have one tuple per polygon";
+  }
+  if (!mesh.patchId.empty() && static_cast<int>(mesh.patchId.size()) != n)
+  {
+    return "PatchId must have one tuple per polygon";
+  }
+  for (size_t p = 0; p < mesh.points.size(); ++p)
+  {
+    if (!Finite(mesh.points[p]))
+    {
+      err << "point " << p << " has a non-finite coordinate";
+      return err.str();
+    }
+  }
+  int maxLight = -1;
+  for (int i = 0; i < n; ++i)
+  {
+    const int size = mesh.PolygonSize(i);
+    if (size < 3)
+    {
+      err << "cell " << i << " has " << size << " points; polygons need at least 3";
+      return err.str();
+    }
+    for (int v = 0; v < size; ++v)
+    {
+      const int id = mesh.Polygon(i)[v];
+      if (id < 0 || id >= static_cast<int>(mesh.points.size()))
+      {
+        err << "cell " << i << " refers to missing point " << id;
+        return err.str();
+      }
+    }
+    const std::vector<Vec3> loop = Loop(mesh, i);
+    const std::string problem = PolygonProblem(loop.data(), size);
+    if (!problem.empty())
+    {
+      err << "cell " << i << " " << problem;
+      return err.str();
+    }
+    const Vec3& r = mesh.reflectance[i];
+    for (int c = 0; c < 3; ++c)
+    {
+      if (!(r[c] >= 0.0 && r[c] <= 1.0))
+      {
+        err << "Reflectance of cell " << i << " is " << r[c] << " in component " << c
+            << "; it must be a number in [0, 1]";
+        return err.str();
+      }
+    }
+    if (mesh.lightId[i] >= n)
+    {
+      err << "LightId of cell " << i << " is " << mesh.lightId[i] << "; there are only " << n
+          << " cells, so ids must be -1 or 0..k-1 with k <= " << n;
+      return err.str();
+    }
+    if (mesh.lightId[i] < -1)
+    {
+      err << "LightId of cell " << i << " is " << mesh.lightId[i] << "; use -1 or 0..k-1";
+      return err.str();
+    }
+    maxLight = std::max(maxLight, mesh.lightId[i]);
+  }
+  if (maxLight < 0)
+  {
+    return "no cell has a LightId >= 0: the scene has no lights (k = 0)";
+  }
+  std::vector<char> seen(maxLight + 1, 0);
+  for (int id : mesh.lightId)
+  {
+    if (id >= 0)
+    {
+      seen[id] = 1;
+    }
+  }
+  for (int l = 0; l <= maxLight; ++l)
+  {
+    if (!seen[l])
+    {
+      err << "LightId has a gap: no cell has id " << l << " but ids go up to " << maxLight
+          << "; ids must be 0..k-1";
+      return err.str();
+    }
+  }
+  numberOfLights = maxLight + 1;
+  return std::string();
+}
+
+SceneGeometry::SceneGeometry(const SceneMesh& mesh)
+{
+  const int n = mesh.NumberOfPolygons();
+  normal.resize(n);
+  area.resize(n);
+  centroid.resize(n);
+  elementPatch.resize(n);
+  // Patches numbered in the order of their ids, not of their first elements: the solver's
+  // PatchId output (split patches last) then numbers them as the solver did, however the
+  // cells are ordered (ranks append their pieces in another order than one process).
+  std::map<int, int> compact;
+  for (int i = 0; i < n; ++i)
+  {
+    compact.emplace(mesh.patchId.empty() ? i : mesh.patchId[i], 0);
+  }
+  int next = 0;
+  for (auto& id : compact)
+  {
+    id.second = next++;
+  }
+  patchElements.assign(compact.size(), {});
+  patchArea.assign(compact.size(), 0.0);
+  for (int i = 0; i < n; ++i)
+  {
+    const std::vector<Vec3> loop = Loop(mesh, i);
+    const Vec3 newell = NewellVector(loop.data(), static_cast<int>(loop.size()));
+    normal[i] = Normalized(newell);
+    area[i] = 0.5 * Norm(newell);
+    centroid[i] = PolygonCentroid(loop.data(), static_cast<int>(loop.size()));
+    const int patch = compact[mesh.patchId.empty() ? i : mesh.patchId[i]];
+    elementPatch[i] = patch;
+    patchElements[patch].push_back(i);
+    patchArea[patch] += area[i];
+  }
+  sceneDiagonal = Bounds(mesh.points).Diagonal();
+  enclosed.assign(n, 0);
+  sheltered.assign(n, 0);
+  patchOpenArea = patchArea;
+}
+
+} // namespace radiosity

@@ -1,0 +1,88 @@
+// The radiosity scene as the core sees it: polygons (elements) grouped into patches.
+#ifndef RadiosityCore_Scene_h
+#define RadiosityCore_Scene_h
+
+#include "Base/Vec3.h"
+
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace radiosity
+{
+
+/// Input mesh, flat arrays so a VTK adapter can fill it without VTK types leaking in.
+/// Conventions used everywhere in the core:
+/// - radiosity B and emission E are exitances (W/m^2 per channel), not radiances;
+/// - a polygon's front side is given by the right-hand rule; emitters emit only forward.
+struct SceneMesh
+{
+  std::vector<Vec3> points;
+  std::vector<int> offsets{ 0 }; ///< polygon i uses connectivity[offsets[i], offsets[i+1])
+  std::vector<int> connectivity;
+  std::vector<Vec3> reflectance; ///< per polygon, RGB in [0, 1]
+  std::vector<int> lightId;      ///< per polygon, -1 or 0..k-1
+  std::vector<int> patchId;      ///< per polygon; empty: every polygon is its own patch
+
+  int NumberOfPolygons() const { return static_cast<int>(offsets.size()) - 1; }
+  int PolygonSize(int i) const { return offsets[i + 1] - offsets[i]; }
+  const int* Polygon(int i) const { return connectivity.data() + offsets[i]; }
+  void AddPolygon(const std::vector<int>& ids);
+};
+
+/// Checks the input contract. Returns an empty string when valid, otherwise a message that
+/// names the offending array, the item and the value. On success sets `numberOfLights`.
+std::string ValidateScene(const SceneMesh& mesh, int& numberOfLights);
+
+/// Geometry derived once per solve: element normals, areas, centroids and patch groups.
+struct SceneGeometry
+{
+  std::vector<Vec3> normal; ///< unit, per element
+  std::vector<double> area;
+  std::vector<Vec3> centroid;
+  std::vector<std::vector<int>> patchElements; ///< elements of each (compacted) patch
+  std::vector<int> elementPatch;               ///< compacted patch index of each element
+  std::vector<double> patchArea;
+  /// Elements no light can reach or leave (inside a closed object, e.g. floor under a
+  /// cabinet), and each patch's area without them: a patch's unshot energy is spread over
+  /// its open area, or a patch straddling a footprint would shoot part of its power into
+  /// the object and lose it (see MarkEnclosed). All open until marked.
+  std::vector<char> enclosed;
+  std::vector<double> patchOpenArea;
+  /// Elements most of whose hemisphere is blocked at once (the ceiling just above a lamp's
+  /// back, the floor at a cabinet's foot): dark for a reason that stops at their edge, so
+  /// vertex averages leave them out where open neighbours exist, and patch links do not land
+  /// on them. Enclosed implies sheltered.
+  std::vector<char> sheltered;
+  double sceneDiagonal = 0;
+
+  explicit SceneGeometry(const SceneMesh& mesh);
+};
+
+/// The area mean of value(x) over element e, sampled at the centroids of its fan
+/// triangles (centroid, corner, next corner): for where one centroid misjudges a quantity
+/// that changes fast across the element. NaN when the element has no positive fan area.
+template <typename PointValue>
+double FanAverage(const SceneMesh& mesh, const SceneGeometry& g, int e, PointValue value)
+{
+  const Vec3& c = g.centroid[e];
+  const int* ids = mesh.Polygon(e);
+  const int count = mesh.PolygonSize(e);
+  double sum = 0, area = 0;
+  for (int i = 0; i < count; ++i)
+  {
+    const Vec3& a = mesh.points[ids[i]];
+    const Vec3& b = mesh.points[ids[(i + 1) % count]];
+    const double part = 0.5 * Dot(Cross(a - c, b - c), g.normal[e]);
+    if (part > 0)
+    {
+      sum += part * value((c + a + b) * (1.0 / 3.0));
+      area += part;
+    }
+  }
+  return area > 0 ? sum / area : std::numeric_limits<double>::quiet_NaN();
+}
+
+} // namespace radiosity
+
+#endif

@@ -1,0 +1,372 @@
+#include "Geometry/Visibility.h"
+#include "Geometry/Polygon.h"
+#include "Base/WorkerPool.h"
+
+#include <embree3/rtcore.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <vector>
+
+namespace radiosity
+{
+
+struct Visibility::Internals
+{
+  RTCDevice Device = nullptr;
+  RTCScene Scene = nullptr;
+  std::string Error;
+  std::vector<int> TrianglePolygon;        // source polygon of each triangle
+  std::vector<unsigned> TriangleCorners;   // 3 point ids per triangle
+  Vec3 Origin;                             // points are stored relative to this, in float
+  unsigned MeshId = RTC_INVALID_GEOMETRY_ID, DynamicId = RTC_INVALID_GEOMETRY_ID;
+};
+
+namespace
+{
+/// One Embree device for the process: a device starts its own threads, and scenes (one
+/// per solve, relight or picture) share them. Made on first use, kept to the end.
+RTCDevice SharedDevice()
+{
+  static const RTCDevice device = rtcNewDevice(nullptr);
+  return device;
+}
+
+/// Embree's last error on this thread, as words; empty if none.
+std::string DeviceError(RTCDevice device)
+{
+  const RTCError code = rtcGetDeviceError(device);
+  return code == RTC_ERROR_NONE ? std::string()
+                                : "Embree error " + std::to_string(static_cast<int>(code)) + " while building the scene";
+}
+
+/// The polygons of `mesh` as an Embree triangle geometry, points relative to `origin`;
+/// `polygonOf` and `corners` (if given) receive each triangle's polygon and point ids.
+RTCGeometry TriangleGeometry(RTCDevice device, const SceneMesh& mesh, const Vec3& origin, std::vector<int>& polygonOf,
+  std::vector<unsigned>& corners)
+{
+  std::vector<Vec3> loop;
+  for (int i = 0; i < mesh.NumberOfPolygons(); ++i)
+  {
+    const int* ids = mesh.Polygon(i);
+    loop.clear();
+    for (int v = 0; v < mesh.PolygonSize(i); ++v)
+    {
+      loop.push_back(mesh.points[ids[v]]);
+    }
+    const std::vector<int> triangle = Triangulate(loop.data(), static_cast<int>(loop.size()));
+    for (size_t t = 0; t + 2 < triangle.size(); t += 3)
+    {
+      corners.insert(corners.end(), { static_cast<unsigned>(ids[triangle[t]]),
+                                      static_cast<unsigned>(ids[triangle[t + 1]]),
+                                      static_cast<unsigned>(ids[triangle[t + 2]]) });
+      polygonOf.push_back(i);
+    }
+  }
+  RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0,
+    RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.points.size()));
+  auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0,
+    RTC_FORMAT_UINT3, 3 * sizeof(unsigned), polygonOf.size()));
+  if (vertices && indices)
+  {
+    for (size_t p = 0; p < mesh.points.size(); ++p)
+    {
+      const Vec3 q = mesh.points[p] - origin;
+      vertices[3 * p + 0] = static_cast<float>(q.x);
+      vertices[3 * p + 1] = static_cast<float>(q.y);
+      vertices[3 * p + 2] = static_cast<float>(q.z);
+    }
+    std::copy(corners.begin(), corners.end(), indices);
+  }
+  rtcCommitGeometry(geom);
+  return geom;
+}
+
+void InitRay(RTCRay& ray, const Vec3& origin, const Vec3& direction, float tfar)
+{
+  ray.org_x = static_cast<float>(origin.x);
+  ray.org_y = static_cast<float>(origin.y);
+  ray.org_z = static_cast<float>(origin.z);
+  ray.dir_x = static_cast<float>(direction.x);
+  ray.dir_y = static_cast<float>(direction.y);
+  ray.dir_z = static_cast<float>(direction.z);
+  ray.tnear = 0.0f;
+  ray.tfar = tfar;
+  ray.time = 0.0f;
+  ray.mask = 0xFFFFFFFFu;
+  ray.id = 0;
+  ray.flags = 0;
+}
+} // namespace
+
+Visibility::Visibility(const SceneMesh& mesh)
+  : Impl(new Internals)
+{
+  Internals& d = *Impl;
+  // Embree works in float: center the scene so large coordinates keep their precision.
+  d.Origin = Bounds(mesh.points).Centre();
+  d.Device = SharedDevice();
+  if (!d.Device)
+  {
+    d.Error = "Embree could not create a device";
+    return;
+  }
+  rtcRetainDevice(d.Device);
+  DeviceError(d.Device); // clears an error left on this thread by an earlier scene
+  d.Scene = rtcNewScene(d.Device);
+  // Robust mode avoids rays slipping through shared edges and vertices (light leaks).
+  rtcSetSceneFlags(d.Scene, RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneBuildQuality(d.Scene, RTC_BUILD_QUALITY_HIGH);
+  RTCGeometry geom = TriangleGeometry(d.Device, mesh, d.Origin, d.TrianglePolygon, d.TriangleCorners);
+  d.MeshId = rtcAttachGeometry(d.Scene, geom);
+  rtcReleaseGeometry(geom);
+  rtcCommitScene(d.Scene);
+  d.Error = DeviceError(d.Device);
+}
+
+bool Visibility::SetDynamic(const SceneMesh* objects)
+{
+  Internals& d = *Impl;
+  if (!d.Scene)
+  {
+    return false;
+  }
+  if (d.DynamicId != RTC_INVALID_GEOMETRY_ID)
+  {
+    rtcDetachGeometry(d.Scene, d.DynamicId);
+    d.DynamicId = RTC_INVALID_GEOMETRY_ID;
+  }
+  if (objects && objects->NumberOfPolygons() > 0)
+  {
+    std::vector<int> polygonOf;
+    std::vector<unsigned> corners;
+    RTCGeometry geom = TriangleGeometry(d.Device, *objects, d.Origin, polygonOf, corners);
+    d.DynamicId = rtcAttachGeometry(d.Scene, geom);
+    rtcReleaseGeometry(geom);
+  }
+  rtcCommitScene(d.Scene);
+  d.Error = DeviceError(d.Device);
+  return d.Error.empty();
+}
+
+Visibility::~Visibility()
+{
+  if (Impl->Scene)
+  {
+    rtcReleaseScene(Impl->Scene);
+  }
+  if (Impl->Device)
+  {
+    rtcReleaseDevice(Impl->Device);
+  }
+}
+
+const std::string& Visibility::Error() const
+{
+  return Impl->Error;
+}
+
+bool Visibility::Occluded(const Vec3& from, const Vec3& to, double tolerance) const
+{
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRay ray;
+  // Unnormalized direction: t runs from 0 (from) to 1 (to).
+  InitRay(ray, from - Impl->Origin, to - from, static_cast<float>(1.0 - tolerance));
+  rtcOccluded1(Impl->Scene, &context, &ray);
+  return ray.tfar < 0.0f;
+}
+
+bool Visibility::Intersect(const Vec3& origin, const Vec3& direction, Hit& hit) const
+{
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rh;
+  InitRay(rh.ray, origin - Impl->Origin, direction, std::numeric_limits<float>::infinity());
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(Impl->Scene, &context, &rh);
+  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID)
+  {
+    return false;
+  }
+  hit.distance = rh.ray.tfar * Norm(direction);
+  if (rh.hit.geomID != Impl->MeshId) // a dynamic object: no polygon of the mesh
+  {
+    hit.polygon = -1;
+    hit.corner[0] = hit.corner[1] = hit.corner[2] = -1;
+    hit.u = rh.hit.u;
+    hit.v = rh.hit.v;
+    return true;
+  }
+  const unsigned tri = rh.hit.primID;
+  hit.polygon = Impl->TrianglePolygon[tri];
+  for (int c = 0; c < 3; ++c)
+  {
+    hit.corner[c] = static_cast<int>(Impl->TriangleCorners[3 * tri + c]);
+  }
+  hit.u = rh.hit.u;
+  hit.v = rh.hit.v;
+  return true;
+}
+
+namespace
+{
+/// How many of 17 hemisphere probes from the element's centroid are blocked at once (a back
+/// face, or a surface touching it); counting stops once 9 are open, since then the
+/// element is neither enclosed (all 17) nor sheltered (most).
+int BlockedProbes(const Visibility& rays, const SceneMesh& mesh, const SceneGeometry& g, double touching, int e)
+{
+  // The frame follows the element's first edge, not the world axes, so a rotated scene
+  // probes the same directions relative to its geometry and is marked the same.
+  const Vec3& n = g.normal[e];
+  const Vec3 edge = mesh.points[mesh.Polygon(e)[1]] - mesh.points[mesh.Polygon(e)[0]];
+  const Vec3 t = Normalized(edge - n * Dot(edge, n)), b = Cross(n, t);
+  const Vec3 origin = g.centroid[e] + n * touching;
+  int blocked = 0;
+  for (int r = 0; r < 17 && r - blocked < 9; ++r)
+  {
+    const double polar = r == 0 ? 0.0 : (r <= 8 ? 0.785398 : 1.396263);
+    const double azimuth = 0.785398 * (r % 8);
+    const Vec3 direction = n * std::cos(polar) + (t * std::cos(azimuth) + b * std::sin(azimuth)) * std::sin(polar);
+    Visibility::Hit hit;
+    if (rays.Intersect(origin, direction, hit) &&
+      (Dot(g.normal[hit.polygon], direction) > 0 || hit.distance <= 2 * touching))
+    {
+      ++blocked;
+    }
+  }
+  return blocked;
+}
+} // namespace
+
+namespace
+{
+int Root(std::vector<int>& parent, int i)
+{
+  while (parent[i] != i)
+  {
+    i = parent[i] = parent[parent[i]];
+  }
+  return i;
+}
+} // namespace
+
+int SplitSeparatedPatches(const Visibility& rays, const SceneMesh& mesh, SceneGeometry& g)
+{
+  const int n = mesh.NumberOfPolygons();
+  const double lift = 1e-6 * g.sceneDiagonal;
+  // Elements of one patch that share an edge are joined when they see each other just
+  // above the surface; a wall standing on the patch keeps its two sides apart.
+  // (edge, element) pairs sorted by edge: a map of a million elements' edges is slow.
+  const long long points = static_cast<long long>(mesh.points.size());
+  std::vector<std::pair<long long, int>> edges;
+  edges.reserve(mesh.connectivity.size());
+  for (int e = 0; e < n; ++e)
+  {
+    const int* ids = mesh.Polygon(e);
+    for (int v = 0; v < mesh.PolygonSize(e); ++v)
+    {
+      const long long a = ids[v], b = ids[(v + 1) % mesh.PolygonSize(e)];
+      edges.push_back({ std::min(a, b) * points + std::max(a, b), e });
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  std::vector<int> parent(n);
+  for (int e = 0; e < n; ++e)
+  {
+    parent[e] = e;
+  }
+  for (size_t i = 0; i + 1 < edges.size(); ++i)
+  {
+    const int a = edges[i].second, b = edges[i + 1].second;
+    if (edges[i].first == edges[i + 1].first && g.elementPatch[a] == g.elementPatch[b] &&
+      Root(parent, a) != Root(parent, b) &&
+      !rays.Occluded(g.centroid[a] + g.normal[a] * lift, g.centroid[b] + g.normal[b] * lift, 1e-6))
+    {
+      parent[Root(parent, a)] = Root(parent, b);
+    }
+  }
+  // The group of a patch's first element keeps the patch; any other becomes a new one.
+  int added = 0;
+  const size_t patches = g.patchElements.size();
+  for (size_t p = 0; p < patches; ++p)
+  {
+    std::map<int, std::vector<int>> groups;
+    for (int e : g.patchElements[p])
+    {
+      groups[Root(parent, e)].push_back(e);
+    }
+    if (groups.size() < 2)
+    {
+      continue;
+    }
+    const int keep = Root(parent, g.patchElements[p][0]);
+    g.patchElements[p] = groups[keep];
+    for (auto& group : groups)
+    {
+      if (group.first == keep)
+      {
+        continue;
+      }
+      g.patchElements.push_back(group.second);
+      ++added;
+    }
+  }
+  if (added == 0)
+  {
+    return 0;
+  }
+  g.patchArea.assign(g.patchElements.size(), 0.0);
+  for (size_t p = 0; p < g.patchElements.size(); ++p)
+  {
+    for (int e : g.patchElements[p])
+    {
+      g.elementPatch[e] = static_cast<int>(p);
+      g.patchArea[p] += g.area[e];
+    }
+  }
+  return added; // MarkEnclosed derives patchOpenArea from these
+}
+
+void MarkEnclosed(const Visibility& rays, const SceneMesh& mesh, SceneGeometry& g, int threads, const ProcessGroup& group)
+{
+  // Touching, relative to the scene, and never finer than float coordinates can place a
+  // surface far from the origin (VTK points are floats: a leg standing on a floor 500 km
+  // away can float 3 cm above it).
+  double farthest = 0;
+  for (const Vec3& p : mesh.points)
+  {
+    farthest = std::max({ farthest, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z) });
+  }
+  const double touching = std::max(1e-6 * g.sceneDiagonal, 1e-6 * farthest);
+  const WorkerPool pool(threads);
+  Collective ranks(group);
+  const int n = static_cast<int>(g.normal.size()), step = ranks.Ranks();
+  std::vector<double> blocked(n, 0.0); // counts, summed over the ranks that probed them
+  pool.For((n - ranks.Rank() + step - 1) / step, 256, [&](int begin, int end) {
+    for (int i = begin; i < end; ++i)
+    {
+      const int e = ranks.Rank() + i * step;
+      blocked[e] = BlockedProbes(rays, mesh, g, touching, e);
+    }
+  });
+  ranks.Sum(blocked);
+  for (int e = 0; e < n; ++e)
+  {
+    g.enclosed[e] = blocked[e] == 17;
+    g.sheltered[e] = blocked[e] >= 9;
+  }
+  // Summed, not subtracted: a wholly enclosed patch gets exactly 0.
+  g.patchOpenArea.assign(g.patchArea.size(), 0.0);
+  for (size_t e = 0; e < g.normal.size(); ++e)
+  {
+    g.patchOpenArea[g.elementPatch[e]] += g.enclosed[e] ? 0.0 : g.area[e];
+  }
+}
+
+} // namespace radiosity

@@ -1,0 +1,70 @@
+// Segment occlusion queries against the scene's polygons with Embree.
+#ifndef RadiosityCore_Visibility_h
+#define RadiosityCore_Visibility_h
+
+#include "Base/ProcessGroup.h"
+#include "Geometry/Scene.h"
+
+#include <memory>
+#include <string>
+
+namespace radiosity
+{
+
+/// Builds one Embree scene (polygons triangulated, non-convex ones by ear clipping) and answers "is the open segment
+/// between two points blocked?" from any number of threads at once.
+class Visibility
+{
+public:
+  explicit Visibility(const SceneMesh& mesh);
+  ~Visibility();
+  Visibility(const Visibility&) = delete;
+  Visibility& operator=(const Visibility&) = delete;
+
+  /// Empty when the device and scene were built, otherwise Embree's error.
+  const std::string& Error() const;
+
+  /// True when a polygon intersects the segment strictly between `from` and `to`. The
+  /// caller offsets the endpoints off their surfaces; `tolerance` (a fraction of the
+  /// segment) keeps the far endpoint's own surface from counting as a blocker.
+  bool Occluded(const Vec3& from, const Vec3& to, double tolerance = 1e-4) const;
+
+  /// Closest hit along a ray: the triangle's source polygon and the barycentric coordinates
+  /// in that triangle; returns false on a miss. Used to render images of a solution.
+  struct Hit
+  {
+    int polygon = -1;
+    int corner[3] = { -1, -1, -1 }; ///< point ids of the hit triangle
+    double u = 0, v = 0;            ///< weights of corner[1] and corner[2]
+    double distance = 0;            ///< from the origin, in world units
+  };
+  bool Intersect(const Vec3& origin, const Vec3& direction, Hit& hit) const;
+
+  /// Puts `objects` (null: none) in the scene as a second geometry beside the mesh's,
+  /// replacing the previous ones: moving objects that block rays without a rebuild of the
+  /// mesh's triangles. Their hits report polygon -1. False with Error() set on failure.
+  bool SetDynamic(const SceneMesh* objects);
+
+private:
+  struct Internals;
+  std::unique_ptr<Internals> Impl;
+};
+
+/// Splits every patch whose elements fall into parts that cannot see each other (a wall
+/// standing across a floor patch): otherwise light received on one side would be shot
+/// again from the other, through the wall. Returns the number of patches added (new ones
+/// get the next indices). Call before MarkEnclosed.
+int SplitSeparatedPatches(const Visibility& rays, const SceneMesh& mesh, SceneGeometry& geometry);
+
+/// Marks the elements that every one of 17 rays over their hemisphere (the normal, and 8
+/// each at 45 and 80 degrees from it) finds closed off: each ray hits a back face (it
+/// started inside an object) or a surface touching the element. Such an element can
+/// neither receive nor send light; it leaves its patch's open area. Elements where at least
+/// 9 of them are closed off are marked sheltered (SceneGeometry::sheltered).
+/// With `threads` (0: all) per process; a group's ranks probe every Ranks-th element each.
+void MarkEnclosed(const Visibility& rays, const SceneMesh& mesh, SceneGeometry& geometry, int threads = 0,
+  const ProcessGroup& group = ProcessGroup());
+
+} // namespace radiosity
+
+#endif

@@ -1,0 +1,265 @@
+#include "Import/SceneImport.h"
+
+#include "Geometry/Polygon.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace radiosity
+{
+namespace
+{
+
+bool Finite(const Vec3& v)
+{
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+Vec3 Clamped(const Vec3& v)
+{
+  auto unit = [](double x) { return std::min(1.0, std::max(0.0, x)); };
+  return { unit(v.x), unit(v.y), unit(v.z) };
+}
+
+bool InUnitRange(const Vec3& v)
+{
+  return v.x >= 0 && v.x <= 1 && v.y >= 0 && v.y <= 1 && v.z >= 0 && v.z <= 1;
+}
+
+std::string CheckMaterials(const std::vector<ImportMaterial>& materials)
+{
+  for (const ImportMaterial& m : materials)
+  {
+    if (!Finite(m.Diffuse) || !Finite(m.Emissive))
+    {
+      return "material '" + m.Name + "' has a colour that is not a finite number";
+    }
+    if (m.Emissive.x < 0 || m.Emissive.y < 0 || m.Emissive.z < 0)
+    {
+      return "material '" + m.Name + "' has a negative emissive colour";
+    }
+  }
+  return std::string();
+}
+
+bool Emits(const ImportMaterial& m)
+{
+  return m.Emissive.x > 0 || m.Emissive.y > 0 || m.Emissive.z > 0;
+}
+
+/// Polygon i's point ids, a corner repeated in a row dropped (as some exporters write).
+std::vector<int> CornerIds(const RawScene& raw, int i)
+{
+  std::vector<int> ids;
+  for (int k = raw.offsets[i]; k < raw.offsets[i + 1]; ++k)
+  {
+    const int id = raw.connectivity[k];
+    if (ids.empty() || ids.back() != id)
+    {
+      ids.push_back(id);
+    }
+  }
+  while (ids.size() > 1 && ids.front() == ids.back())
+  {
+    ids.pop_back();
+  }
+  return ids;
+}
+
+/// Drops points no polygon uses (files share vertex lists between meshes), renumbering.
+void KeepUsedPoints(SceneMesh& mesh)
+{
+  std::vector<int> newId(mesh.points.size(), -1);
+  std::vector<Vec3> used;
+  for (int& id : mesh.connectivity)
+  {
+    if (newId[id] < 0)
+    {
+      newId[id] = static_cast<int>(used.size());
+      used.push_back(mesh.points[id]);
+    }
+    id = newId[id];
+  }
+  mesh.points.swap(used);
+}
+
+/// A unique light name: the wanted one, or with " (2)", " (3)"... when taken.
+std::string UniqueName(const std::string& wanted, std::set<std::string>& taken)
+{
+  std::string name = wanted.empty() ? "Light" : wanted;
+  for (int n = 2; taken.count(name); ++n)
+  {
+    name = (wanted.empty() ? "Light" : wanted) + " (" + std::to_string(n) + ")";
+  }
+  taken.insert(name);
+  return name;
+}
+
+/// Light ids per kept polygon: one light per emissive material (or per object and
+/// emissive material), in order of first use; names from the material or object.
+void AssignLights(const RawScene& raw, const std::vector<int>& kept, const ImportOptions& options,
+  ImportedScene& out)
+{
+  std::map<std::pair<int, int>, int> lightOf;
+  std::set<std::string> taken;
+  for (size_t p = 0; p < kept.size(); ++p)
+  {
+    const int i = kept[p];
+    const int m = raw.material[i];
+    if (m < 0 || !Emits(raw.materials[m]))
+    {
+      out.Mesh.lightId.push_back(-1);
+      out.Emission.push_back(Vec3());
+      continue;
+    }
+    const int object = options.LightPerObject ? raw.object[i] : -1;
+    auto found = lightOf.find({ object, m });
+    if (found == lightOf.end())
+    {
+      const std::string& material = raw.materials[m].Name;
+      const std::string wanted = object >= 0 && object < static_cast<int>(raw.objectNames.size())
+        ? raw.objectNames[object]
+        : material;
+      found = lightOf.emplace(std::make_pair(object, m), static_cast<int>(out.LightNames.size())).first;
+      out.LightNames.push_back(UniqueName(wanted, taken));
+    }
+    out.Mesh.lightId.push_back(found->second);
+    out.Emission.push_back(raw.materials[m].Emissive);
+  }
+}
+
+std::string Summarize(const ImportedScene& out)
+{
+  std::ostringstream text;
+  text << out.Mesh.NumberOfPolygons() << " polygons, " << out.MaterialNames.size() << " materials, "
+       << out.LightNames.size() << " lights, " << out.Dropped << " degenerate cells dropped";
+  return text.str();
+}
+
+} // namespace
+
+std::string BuildImportedScene(const RawScene& raw, const ImportOptions& options, ImportedScene& out)
+{
+  out = ImportedScene();
+  if (!(options.UnitScale > 0) || !std::isfinite(options.UnitScale))
+  {
+    return "the unit scale must be a positive number";
+  }
+  std::string error = CheckMaterials(raw.materials);
+  if (!error.empty())
+  {
+    return error;
+  }
+  const int polygons = raw.NumberOfPolygons();
+  if (raw.material.size() != static_cast<size_t>(polygons) || raw.object.size() != static_cast<size_t>(polygons) ||
+    (!raw.colour.empty() && raw.colour.size() != static_cast<size_t>(polygons)))
+  {
+    return "internal: material and object lists do not match the polygons";
+  }
+  for (int id : raw.connectivity)
+  {
+    if (id < 0 || id >= static_cast<int>(raw.points.size()))
+    {
+      return "a polygon refers to point " + std::to_string(id) + ", which does not exist";
+    }
+  }
+  for (int m : raw.material)
+  {
+    if (m >= static_cast<int>(raw.materials.size()))
+    {
+      return "internal: a polygon refers to material " + std::to_string(m) + ", which does not exist";
+    }
+  }
+  for (const Vec3& c : raw.colour)
+  {
+    if (!Finite(c))
+    {
+      return "a polygon colour is not a finite number";
+    }
+  }
+  out.Mesh.points.reserve(raw.points.size());
+  for (size_t p = 0; p < raw.points.size(); ++p)
+  {
+    if (!Finite(raw.points[p]))
+    {
+      return "point " + std::to_string(p) + " has a coordinate that is not a finite number";
+    }
+    out.Mesh.points.push_back(raw.points[p] * options.UnitScale);
+  }
+  std::vector<int> kept;
+  for (int i = 0; i < raw.NumberOfPolygons(); ++i)
+  {
+    const std::vector<int> ids = CornerIds(raw, i);
+    std::vector<Vec3> loop;
+    for (int id : ids)
+    {
+      loop.push_back(out.Mesh.points[id]);
+    }
+    if (ids.size() < 3 || !PolygonProblem(loop.data(), static_cast<int>(loop.size())).empty())
+    {
+      ++out.Dropped;
+      continue;
+    }
+    kept.push_back(i);
+    out.Mesh.AddPolygon(ids);
+  }
+  if (kept.empty())
+  {
+    return raw.NumberOfPolygons() ? "every polygon is degenerate (zero area or collinear points)" : "no polygons";
+  }
+  KeepUsedPoints(out.Mesh);
+  // Materials in use get reflectance (clamped into [0, 1]); polygons without one get 0.8.
+  std::set<std::string> clamped;
+  int unassigned = 0;
+  for (int i : kept)
+  {
+    const int m = raw.material[i];
+    Vec3 diffuse = m >= 0 ? raw.materials[m].Diffuse : Vec3{ 0.8, 0.8, 0.8 };
+    if (!raw.colour.empty())
+    {
+      diffuse = { diffuse.x * raw.colour[i].x, diffuse.y * raw.colour[i].y, diffuse.z * raw.colour[i].z };
+    }
+    out.Mesh.reflectance.push_back(Clamped(diffuse));
+    if (m >= 0 && !InUnitRange(diffuse))
+    {
+      clamped.insert(raw.materials[m].Name);
+    }
+    unassigned += m < 0;
+    out.Material.push_back(m < 0 ? static_cast<int>(raw.materials.size()) : m);
+  }
+  for (const ImportMaterial& m : raw.materials)
+  {
+    out.MaterialNames.push_back(m.Name);
+  }
+  if (unassigned)
+  {
+    out.MaterialNames.push_back("(none)");
+    out.Warnings.push_back(std::to_string(unassigned) + " polygons have no material: reflectance 0.8");
+  }
+  if (!clamped.empty())
+  {
+    std::string names;
+    for (const std::string& name : clamped)
+    {
+      names += (names.empty() ? "'" : ", '") + name + "'";
+    }
+    out.Warnings.push_back("diffuse colours outside [0, 1] clamped for " + std::to_string(clamped.size()) +
+      " materials: " + names);
+  }
+  if (out.Dropped)
+  {
+    out.Warnings.push_back(std::to_string(out.Dropped) + " degenerate cells dropped (zero area, collinear points or crossing edges)");
+  }
+  AssignLights(raw, kept, options, out);
+  if (out.LightNames.empty())
+  {
+    out.Warnings.push_back(NoLightsWarning);
+  }
+  out.Summary = Summarize(out);
+  return std::string();
+}
+
+} // namespace radiosity

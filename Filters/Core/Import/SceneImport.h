@@ -1,0 +1,67 @@
+// From what a scene file holds (polygons, materials, objects) to the radiosity input:
+// reflectance from diffuse colours, lights from emissive materials, degenerate cells out.
+// File formats are read elsewhere (VTK's readers, assimp); this part is format-free.
+#ifndef RadiosityCore_SceneImport_h
+#define RadiosityCore_SceneImport_h
+
+#include "Geometry/Scene.h"
+
+#include <string>
+#include <vector>
+
+namespace radiosity
+{
+
+/// A surface material as a file describes it.
+struct ImportMaterial
+{
+  std::string Name;
+  Vec3 Diffuse{ 0.8, 0.8, 0.8 }; ///< linear RGB, as written (clamped later)
+  Vec3 Emissive;                 ///< emitted colour; any positive channel makes a light
+  std::string DiffuseTexture;    ///< texture file the diffuse colour is multiplied by, if any
+};
+
+/// Polygons as read from a file, before they become a radiosity scene.
+struct RawScene
+{
+  std::vector<Vec3> points;
+  std::vector<int> offsets{ 0 };
+  std::vector<int> connectivity;
+  std::vector<int> material; ///< per polygon: index into materials, or -1 for none
+  std::vector<int> object;   ///< per polygon: index into objectNames, or -1
+  std::vector<Vec3> colour;  ///< per polygon, multiplies its material's diffuse; empty: none
+  std::vector<ImportMaterial> materials;
+  std::vector<std::string> objectNames;
+  int NumberOfPolygons() const { return static_cast<int>(offsets.size()) - 1; }
+};
+
+struct ImportOptions
+{
+  double UnitScale = 1.0;      ///< multiplies every coordinate (0.001: millimetres to metres)
+  bool LightPerObject = false; ///< one light per object's emissive material, not per material
+};
+
+/// The radiosity input: the mesh (reflectance and light ids set), each light's emission
+/// and name, and each polygon's material for choosing cells by material later.
+struct ImportedScene
+{
+  SceneMesh Mesh;
+  std::vector<Vec3> Emission; ///< per polygon
+  std::vector<std::string> LightNames;
+  std::vector<int> Material; ///< per polygon, into MaterialNames
+  std::vector<std::string> MaterialNames;
+  int Dropped = 0;                   ///< degenerate polygons left out
+  std::vector<std::string> Warnings; ///< clamped materials, dropped cells, no lights
+  std::string Summary;               ///< polygons, materials, lights, dropped cells
+};
+
+/// The warning for a scene without lights, which Mark Lights takes back once it makes one.
+constexpr const char* NoLightsWarning = "no emissive material: mark lights before solving";
+
+/// Builds the scene; returns an empty string or what makes the file unusable (a
+/// non-finite coordinate, a material colour that is not a number, nothing left).
+std::string BuildImportedScene(const RawScene& raw, const ImportOptions& options, ImportedScene& out);
+
+} // namespace radiosity
+
+#endif

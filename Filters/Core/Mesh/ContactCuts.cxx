@@ -1,0 +1,347 @@
+#include "Mesh/ContactCuts.h"
+#include "Geometry/Polygon.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace radiosity
+{
+
+namespace
+{
+/// A polygon seen in its own plane: 2D corners in a tangent frame, for inside tests.
+struct FlatPolygon
+{
+  Vec3 Normal, Origin, U, V;
+  std::vector<double> X, Y;
+  Vec3 Lo, Hi; ///< bounds in 3D
+
+  double Along(const Vec3& p) const { return Dot(Normal, p - Origin); }
+
+  /// True when `p` (in the plane) is inside, farther than `margin` from the outline.
+  bool InsideBy(const Vec3& p, double margin) const
+  {
+    const double px = Dot(U, p - Origin), py = Dot(V, p - Origin);
+    bool inside = false;
+    const size_t n = X.size();
+    for (size_t i = 0, j = n - 1; i < n; j = i++)
+    {
+      const double dx = X[i] - X[j], dy = Y[i] - Y[j], length = std::hypot(dx, dy);
+      if (length > 0)
+      {
+        const double t = std::clamp(((px - X[j]) * dx + (py - Y[j]) * dy) / (length * length), 0.0, 1.0);
+        if (std::hypot(px - X[j] - t * dx, py - Y[j] - t * dy) <= margin)
+        {
+          return false;
+        }
+      }
+      if ((Y[i] > py) != (Y[j] > py) && px < X[j] + (py - Y[j]) * dx / dy)
+      {
+        inside = !inside;
+      }
+    }
+    return inside;
+  }
+
+  /// Parameters in [0, 1] where the segment a-b crosses the outline, with 0 and 1.
+  std::vector<double> Crossings(const Vec3& a, const Vec3& b) const
+  {
+    std::vector<double> ts{ 0.0, 1.0 };
+    const double ax = Dot(U, a - Origin), ay = Dot(V, a - Origin);
+    const double bx = Dot(U, b - Origin), by = Dot(V, b - Origin);
+    const size_t n = X.size();
+    for (size_t i = 0, j = n - 1; i < n; j = i++)
+    {
+      const double ex = X[i] - X[j], ey = Y[i] - Y[j], sx = bx - ax, sy = by - ay;
+      const double denominator = sx * ey - sy * ex;
+      if (denominator == 0)
+      {
+        continue;
+      }
+      const double t = ((X[j] - ax) * ey - (Y[j] - ay) * ex) / denominator;
+      const double u = ((X[j] - ax) * sy - (Y[j] - ay) * sx) / denominator;
+      if (t > 0 && t < 1 && u >= 0 && u <= 1)
+      {
+        ts.push_back(t);
+      }
+    }
+    std::sort(ts.begin(), ts.end());
+    return ts;
+  }
+};
+
+FlatPolygon Flatten(const std::vector<Vec3>& loop)
+{
+  FlatPolygon f;
+  f.Normal = Normalized(NewellVector(loop.data(), static_cast<int>(loop.size())));
+  f.Origin = PolygonCentroid(loop.data(), static_cast<int>(loop.size()));
+  TangentFrame(f.Normal, f.U, f.V);
+  const Bounds box(loop);
+  f.Lo = box.Lo;
+  f.Hi = box.Hi;
+  for (const Vec3& p : loop)
+  {
+    f.X.push_back(Dot(f.U, p - f.Origin));
+    f.Y.push_back(Dot(f.V, p - f.Origin));
+  }
+  return f;
+}
+
+/// True when the segment (in the polygon's plane) runs through its inside somewhere.
+bool RunsInside(const FlatPolygon& f, const Vec3& a, const Vec3& b, double touch)
+{
+  const std::vector<double> ts = f.Crossings(a, b);
+  const double length = Norm(b - a);
+  for (size_t k = 0; k + 1 < ts.size(); ++k)
+  {
+    if ((ts[k + 1] - ts[k]) * length > 2 * touch && f.InsideBy(a + (b - a) * (0.5 * (ts[k] + ts[k + 1])), touch))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+/// Polygons by the cells of a uniform grid their bounds cover: candidates near an edge.
+class PolygonGrid
+{
+public:
+  PolygonGrid(const std::vector<FlatPolygon>& polygons, double touch)
+    : Touch(touch)
+  {
+    std::vector<Vec3> corners;
+    for (const FlatPolygon& f : polygons)
+    {
+      corners.push_back(f.Lo);
+      corners.push_back(f.Hi);
+    }
+    const Bounds box(corners);
+    Lo = box.Lo;
+    const double extent = std::max({ box.Hi.x - Lo.x, box.Hi.y - Lo.y, box.Hi.z - Lo.z, 1e-300 });
+    Resolution = std::clamp(static_cast<int>(2 * std::cbrt(static_cast<double>(polygons.size()))), 1, 64);
+    Cell = extent / Resolution * (1 + 1e-9);
+    Cells.resize(static_cast<size_t>(Resolution) * Resolution * Resolution);
+    for (size_t i = 0; i < polygons.size(); ++i)
+    {
+      Visit(polygons[i].Lo, polygons[i].Hi, [&](size_t cell) { Cells[cell].push_back(static_cast<int>(i)); });
+    }
+  }
+
+  /// Calls `use` once for every polygon whose cells the box a-b meets.
+  template <typename Use>
+  void Near(const Vec3& a, const Vec3& b, std::vector<int>& stamp, int mark, const Use& use) const
+  {
+    const Vec3 lo{ std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z) };
+    const Vec3 hi{ std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z) };
+    Visit(lo, hi, [&](size_t cell) {
+      for (int i : Cells[cell])
+      {
+        if (stamp[i] != mark)
+        {
+          stamp[i] = mark;
+          use(i);
+        }
+      }
+    });
+  }
+
+private:
+  int Index(double v, double lo) const
+  {
+    return std::clamp(static_cast<int>(std::floor((v - lo) / Cell)), 0, Resolution - 1);
+  }
+
+  template <typename Use>
+  void Visit(const Vec3& lo, const Vec3& hi, const Use& use) const
+  {
+    const int x0 = Index(lo.x - Touch, Lo.x), x1 = Index(hi.x + Touch, Lo.x);
+    const int y0 = Index(lo.y - Touch, Lo.y), y1 = Index(hi.y + Touch, Lo.y);
+    const int z0 = Index(lo.z - Touch, Lo.z), z1 = Index(hi.z + Touch, Lo.z);
+    for (int z = z0; z <= z1; ++z)
+    {
+      for (int y = y0; y <= y1; ++y)
+      {
+        for (int x = x0; x <= x1; ++x)
+        {
+          use((static_cast<size_t>(z) * Resolution + y) * Resolution + x);
+        }
+      }
+    }
+  }
+
+  double Touch, Cell = 1;
+  int Resolution = 1;
+  Vec3 Lo;
+  std::vector<std::vector<int>> Cells;
+};
+
+/// Splits one convex loop along the line through `origin` with in-plane normal `side`;
+/// false (nothing made) unless both parts reach farther than `tolerance` from the line.
+bool SplitLoop(const Vec3* loop, int count, const Vec3& origin, const Vec3& side, double tolerance,
+  std::vector<Vec3>& front, std::vector<Vec3>& back)
+{
+  std::vector<double> s(count);
+  double lowest = 0, highest = 0;
+  for (int v = 0; v < count; ++v)
+  {
+    s[v] = Dot(side, loop[v] - origin);
+    s[v] = std::fabs(s[v]) <= tolerance ? 0.0 : s[v]; // on the line: in both parts, no sliver
+    lowest = std::min(lowest, s[v]);
+    highest = std::max(highest, s[v]);
+  }
+  if (lowest >= 0 || highest <= 0)
+  {
+    return false;
+  }
+  front.clear();
+  back.clear();
+  for (int v = 0; v < count; ++v)
+  {
+    const int w = (v + 1) % count;
+    if (s[v] >= 0)
+    {
+      front.push_back(loop[v]);
+    }
+    if (s[v] <= 0)
+    {
+      back.push_back(loop[v]);
+    }
+    if ((s[v] > 0 && s[w] < 0) || (s[v] < 0 && s[w] > 0))
+    {
+      const Vec3 x = loop[v] + (loop[w] - loop[v]) * (s[v] / (s[v] - s[w]));
+      front.push_back(x);
+      back.push_back(x);
+    }
+  }
+  return front.size() >= 3 && back.size() >= 3;
+}
+
+/// The part of the segment's line inside the convex loop, as parameters along a-b.
+bool ChordOverlaps(const Vec3* loop, int count, const Vec3& a, const Vec3& b, const Vec3& normal, double tolerance)
+{
+  const Vec3 d = b - a;
+  const double length = Norm(d);
+  double t0 = -1e300, t1 = 1e300;
+  const double area = Dot(NewellVector(loop, count), normal) >= 0 ? 1.0 : -1.0;
+  for (int v = 0; v < count; ++v)
+  {
+    const Vec3 edge = loop[(v + 1) % count] - loop[v];
+    const Vec3 inward = Cross(normal, edge) * area;
+    const double start = Dot(inward, a - loop[v]), rate = Dot(inward, d);
+    if (rate == 0)
+    {
+      if (start < 0)
+      {
+        return false; // parallel to this edge, outside it
+      }
+      continue;
+    }
+    const double t = -start / rate;
+    (rate > 0 ? t0 : t1) = rate > 0 ? std::max(t0, t) : std::min(t1, t);
+  }
+  return (std::min(t1, 1.0) - std::max(t0, 0.0)) * length > tolerance;
+}
+} // namespace
+
+std::vector<std::vector<ContactSegment>> FindContacts(
+  const PolygonArrays& polygons, const PolygonArrays& standing, double touch)
+{
+  const int n = static_cast<int>(polygons.Offsets.size()) - 1;
+  std::vector<std::vector<ContactSegment>> contacts(std::max(n, 0));
+  std::vector<FlatPolygon> flat;
+  flat.reserve(contacts.size());
+  for (int i = 0; i < n; ++i)
+  {
+    flat.push_back(Flatten(GatherLoop(polygons.Points, polygons.Offsets, polygons.Connectivity, i)));
+  }
+  if (flat.empty())
+  {
+    return contacts;
+  }
+  const PolygonGrid grid(flat, touch);
+  std::vector<int> stamp(contacts.size(), -1);
+  int mark = 0;
+  for (size_t j = 0; j + 1 < standing.Offsets.size(); ++j)
+  {
+    const std::vector<Vec3> loop = GatherLoop(standing.Points, standing.Offsets, standing.Connectivity, static_cast<int>(j));
+    const Vec3 normal = Normalized(NewellVector(loop.data(), static_cast<int>(loop.size())));
+    for (size_t v = 0; v < loop.size(); ++v, ++mark)
+    {
+      const Vec3& a = loop[v];
+      const Vec3& b = loop[(v + 1) % loop.size()];
+      grid.Near(a, b, stamp, mark, [&](int i) {
+        // Parallel polygons (the polygon itself among them) never stand on each other.
+        const FlatPolygon& f = flat[i];
+        const double da = f.Along(a), db = f.Along(b);
+        if (std::fabs(Dot(f.Normal, normal)) > 1 - 1e-6 || std::fabs(da) > touch || std::fabs(db) > touch)
+        {
+          return;
+        }
+        const ContactSegment onPlane{ a - f.Normal * da, b - f.Normal * db };
+        if (Norm(onPlane.B - onPlane.A) > 2 * touch && RunsInside(f, onPlane.A, onPlane.B, touch))
+        {
+          contacts[i].push_back(onPlane);
+        }
+      });
+    }
+  }
+  return contacts;
+}
+
+int CutAlongContacts(const std::vector<ContactSegment>& segments, const Vec3& normal, double tolerance,
+  std::vector<Vec3>& corners, std::vector<int>& sides, std::vector<int>& patch)
+{
+  if (segments.empty())
+  {
+    return 0;
+  }
+  std::vector<Bounds> reach;
+  for (const ContactSegment& segment : segments)
+  {
+    reach.push_back(Bounds({ segment.A, segment.B }));
+  }
+  const size_t before = sides.size();
+  std::vector<Vec3> nextCorners, front, back;
+  std::vector<int> nextSides, nextPatch;
+  std::vector<std::vector<Vec3>> parts;
+  size_t first = 0;
+  for (size_t e = 0; e < before; first += sides[e], ++e)
+  {
+    // Each element is cut by the segments near it, one after another, part by part.
+    parts.assign(1, std::vector<Vec3>(corners.begin() + first, corners.begin() + first + sides[e]));
+    const Bounds box(parts[0]);
+    for (size_t s = 0; s < segments.size(); ++s)
+    {
+      if (reach[s].Lo.x > box.Hi.x + tolerance || reach[s].Hi.x < box.Lo.x - tolerance ||
+        reach[s].Lo.y > box.Hi.y + tolerance || reach[s].Hi.y < box.Lo.y - tolerance ||
+        reach[s].Lo.z > box.Hi.z + tolerance || reach[s].Hi.z < box.Lo.z - tolerance)
+      {
+        continue;
+      }
+      const Vec3 side = Normalized(Cross(normal, segments[s].B - segments[s].A));
+      for (size_t k = 0, n = parts.size(); k < n; ++k)
+      {
+        const std::vector<Vec3>& part = parts[k];
+        const int count = static_cast<int>(part.size());
+        if (ChordOverlaps(part.data(), count, segments[s].A, segments[s].B, normal, tolerance) &&
+          SplitLoop(part.data(), count, segments[s].A, side, tolerance, front, back))
+        {
+          parts[k] = front;
+          parts.push_back(back);
+        }
+      }
+    }
+    for (const std::vector<Vec3>& part : parts)
+    {
+      nextCorners.insert(nextCorners.end(), part.begin(), part.end());
+      nextSides.push_back(static_cast<int>(part.size()));
+      nextPatch.push_back(patch[e]);
+    }
+  }
+  corners.swap(nextCorners);
+  sides.swap(nextSides);
+  patch.swap(nextPatch);
+  return static_cast<int>(sides.size() - before);
+}
+
+} // namespace radiosity

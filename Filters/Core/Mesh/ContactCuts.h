@@ -1,0 +1,46 @@
+// Where one surface stands on another (a wall on a floor, a box on a table), the lower
+// surface is cut along the contact line, so that no element lies on both sides of it.
+// An element straddling a sealed wall would receive light on one side and show or shoot
+// it on the other: light behind the wall would not be exactly zero.
+#ifndef RadiosityCore_ContactCuts_h
+#define RadiosityCore_ContactCuts_h
+
+#include "Base/Vec3.h"
+
+#include <vector>
+
+namespace radiosity
+{
+
+/// An edge of another polygon lying on a polygon's plane (projected onto it).
+struct ContactSegment
+{
+  Vec3 A, B;
+};
+
+/// Polygons as flat arrays (as SceneMesh and the mesher hold them), by reference.
+struct PolygonArrays
+{
+  const std::vector<Vec3>& Points;
+  const std::vector<int>& Offsets;
+  const std::vector<int>& Connectivity;
+};
+
+/// For every polygon of `polygons`, the edges of the non-parallel polygons of `standing`
+/// whose two ends lie within `touch` of its plane and which run through its inside (not
+/// along its outline only, as where neighbouring walls meet a floor along its border).
+/// `standing` is the whole scene: the polygons themselves, or more where they are one
+/// process's piece of it.
+std::vector<std::vector<ContactSegment>> FindContacts(
+  const PolygonArrays& polygons, const PolygonArrays& standing, double touch);
+
+/// Convex elements (`corners`, `sides` per element, `patch` per element) in the plane with
+/// `normal`: each element a segment crosses inside is split along the segment's line into
+/// two, both keeping the element's patch. Cuts that would leave a part thinner than
+/// `tolerance` are not made. Returns the number of elements added.
+int CutAlongContacts(const std::vector<ContactSegment>& segments, const Vec3& normal, double tolerance,
+  std::vector<Vec3>& corners, std::vector<int>& sides, std::vector<int>& patch);
+
+} // namespace radiosity
+
+#endif

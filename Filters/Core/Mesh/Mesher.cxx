@@ -1,0 +1,657 @@
+#include "Mesh/Mesher.h"
+#include "Mesh/ContactCuts.h"
+#include "Geometry/Polygon.h"
+#include "Mesh/TrianglePairs.h"
+
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+#include <OpenMesh/Core/System/omstream.hh>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iomanip>
+#include <map>
+#include <sstream>
+#include <tuple>
+
+namespace radiosity
+{
+
+namespace
+{
+// OpenMesh stores float points by default; radiosity scenes span many orders of magnitude.
+struct DoublePrecision : OpenMesh::DefaultTraits
+{
+  typedef OpenMesh::Vec3d Point;
+  typedef OpenMesh::Vec3d Normal;
+};
+using SurfaceMesh = OpenMesh::PolyMesh_ArrayKernelT<DoublePrecision>;
+
+/// Elements of one input polygon before they are stitched into a surface.
+struct Piece
+{
+  std::vector<Vec3> corners; // flattened, `sides` per element
+  std::vector<int> sides;
+  std::vector<int> localPatch;
+  int patchCount = 0;
+};
+
+/// Pieces of at most `size` along `length`. A length within a millionth of a whole number
+/// of sizes counts as that number: VTK stores points as floats (7 digits), so a wall 5 m
+/// long rotated or scaled comes back 5.0000003 m, and would otherwise gain a row.
+int Divisions(double length, double size)
+{
+  return std::max(1, static_cast<int>(std::ceil(length / size * (1 - 1e-6))));
+}
+
+void SplitQuad(const Vec3* q, const MesherOptions& o, Piece& piece)
+{
+  const double lu = std::max(Norm(q[1] - q[0]), Norm(q[2] - q[3]));
+  const double lv = std::max(Norm(q[3] - q[0]), Norm(q[2] - q[1]));
+  const int pu = Divisions(lu, o.PatchSize), pv = Divisions(lv, o.PatchSize);
+  const int eu = Divisions(lu / pu, o.ElementSize), ev = Divisions(lv / pv, o.ElementSize);
+  const int nu = pu * eu, nv = pv * ev;
+  // Every point comes from the same bilinear formula, so neighbours share exact values.
+  auto at = [&](int i, int j) {
+    const double s = static_cast<double>(i) / nu, t = static_cast<double>(j) / nv;
+    return q[0] * ((1 - s) * (1 - t)) + q[1] * (s * (1 - t)) + q[2] * (s * t) + q[3] * ((1 - s) * t);
+  };
+  for (int j = 0; j < nv; ++j)
+  {
+    for (int i = 0; i < nu; ++i)
+    {
+      piece.corners.insert(piece.corners.end(), { at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1) });
+      piece.sides.push_back(4);
+      piece.localPatch.push_back((j / ev) * pu + i / eu);
+    }
+  }
+  piece.patchCount = pu * pv;
+}
+
+/// Patches along a triangle's longest edge. A sliver (narrower than a quarter of its length, as
+/// triangulated walls and roofs of real models are full of) is split by its area instead:
+/// cutting a 3 m x 2 cm strip into 72 patches of nothing made a house of 16k polygons 66k
+/// patches, and every patch is a shooter.
+int TrianglePatchDivisions(const Vec3& a, const Vec3& b, const Vec3& c, double longest, double patch)
+{
+  const double width = Norm(Cross(b - a, c - a)) / longest; // twice the area over the base
+  return width < 0.25 * longest ? Divisions(std::sqrt(width * longest), patch) : Divisions(longest, patch);
+}
+
+void SplitTriangle(const Vec3& a, const Vec3& b, const Vec3& c, const MesherOptions& o, Piece& piece)
+{
+  const double longest = std::max({ Norm(b - a), Norm(c - b), Norm(a - c) });
+  const int np = TrianglePatchDivisions(a, b, c, longest, o.PatchSize);
+  const int ne = Divisions(longest / np, o.ElementSize);
+  const int n = np * ne;
+  auto at = [&](int i, int j) {
+    return a + (b - a) * (static_cast<double>(i) / n) + (c - a) * (static_cast<double>(j) / n);
+  };
+  // A patch is a cell of the coarse lattice: upright (I, J) or inverted; the element's
+  // centroid in coarse coordinates tells which.
+  auto patchOf = [&](double ci, double cj) {
+    const int I = static_cast<int>(std::floor(ci / ne)), J = static_cast<int>(std::floor(cj / ne));
+    const bool inverted = (ci / ne - I) + (cj / ne - J) > 1;
+    return piece.patchCount + (I * np + J) * 2 + (inverted ? 1 : 0);
+  };
+  for (int i = 0; i < n; ++i)
+  {
+    for (int j = 0; i + j < n; ++j)
+    {
+      piece.corners.insert(piece.corners.end(), { at(i, j), at(i + 1, j), at(i, j + 1) });
+      piece.sides.push_back(3);
+      piece.localPatch.push_back(patchOf(i + 1.0 / 3, j + 1.0 / 3));
+      if (i + j + 1 < n)
+      {
+        piece.corners.insert(piece.corners.end(), { at(i + 1, j), at(i + 1, j + 1), at(i, j + 1) });
+        piece.sides.push_back(3);
+        piece.localPatch.push_back(patchOf(i + 2.0 / 3, j + 2.0 / 3));
+      }
+    }
+  }
+  piece.patchCount += np * np * 2;
+}
+
+/// A polygon's patches and elements: convex quads on a bilinear grid, others ear-clipped
+/// into triangles split on a barycentric lattice.
+void MakePiece(const std::vector<Vec3>& loop, const MesherOptions& o, double noise, Piece& piece)
+{
+  if (loop.size() == 4 && IsConvex(loop.data(), 4, noise))
+  {
+    SplitQuad(loop.data(), o, piece);
+    return;
+  }
+  const std::vector<int> corners = Triangulate(loop.data(), static_cast<int>(loop.size()), noise);
+  for (size_t t = 0; t + 2 < corners.size(); t += 3)
+  {
+    SplitTriangle(loop[corners[t]], loop[corners[t + 1]], loop[corners[t + 2]], o, piece);
+  }
+}
+
+/// Surfaces closer than this stand on each other (relative, so units do not matter).
+double ContactTolerance(double span)
+{
+  return 1e-6 * span;
+}
+
+/// What SplitQuad / SplitTriangle will make, without making it.
+double CountQuad(const Vec3* q, double patch, double element)
+{
+  const double lu = std::max(Norm(q[1] - q[0]), Norm(q[2] - q[3]));
+  const double lv = std::max(Norm(q[3] - q[0]), Norm(q[2] - q[1]));
+  const int pu = Divisions(lu, patch), pv = Divisions(lv, patch);
+  return static_cast<double>(pu * Divisions(lu / pu, element)) * (pv * Divisions(lv / pv, element));
+}
+
+double CountTriangle(const Vec3& a, const Vec3& b, const Vec3& c, double patch, double element)
+{
+  const double longest = std::max({ Norm(b - a), Norm(c - b), Norm(a - c) });
+  const int np = TrianglePatchDivisions(a, b, c, longest, patch);
+  const double n = static_cast<double>(np) * Divisions(longest / np, element);
+  return n * n;
+}
+
+double EstimateElements(const std::vector<Vec3>& loop, const MesherOptions& o)
+{
+  double longest = 0;
+  for (size_t i = 0; i < loop.size(); ++i)
+  {
+    longest = std::max(longest, Norm(loop[(i + 1) % loop.size()] - loop[i]));
+  }
+  // Elements are never larger than patches, so the smaller size decides the count.
+  const double per = std::ceil(longest / std::min(o.ElementSize, o.PatchSize)) + 1;
+  return per * per * static_cast<double>(loop.size()); // double: absurd sizes must not overflow
+}
+} // namespace
+
+namespace
+{
+/// Where surfaces stand on the polygons, and the distance that counts as standing.
+struct Contacts
+{
+  std::vector<std::vector<ContactSegment>> Segments;
+  double Touch = 0;
+};
+
+Contacts FindSceneContacts(const PolygonArrays& polygons, const PolygonArrays* wholeScene)
+{
+  const PolygonArrays& whole = wholeScene ? *wholeScene : polygons;
+  Contacts contacts;
+  contacts.Touch = ContactTolerance(Span(whole.Points));
+  contacts.Segments = FindContacts(polygons, whole, contacts.Touch);
+  return contacts;
+}
+
+/// CountElements with the contacts found once (a budget's search counts many times).
+double CountWithContacts(const PolygonArrays& polygons, double patchSize, double elementSize, const Contacts& contacts)
+{
+  if (!(patchSize > 0) || !(elementSize > 0))
+  {
+    return 0;
+  }
+  double total = 0;
+  const double noise = FloatNoise(Span(polygons.Points)); // as MeshList decides
+  MesherOptions sizes;
+  sizes.PatchSize = patchSize;
+  sizes.ElementSize = elementSize;
+  for (size_t i = 0; i + 1 < polygons.Offsets.size(); ++i)
+  {
+    const std::vector<Vec3> loop = GatherLoop(polygons.Points, polygons.Offsets, polygons.Connectivity, static_cast<int>(i));
+    if (loop.size() < 3)
+    {
+      continue;
+    }
+    if (!contacts.Segments[i].empty())
+    {
+      // Cuts depend on where the elements fall: make them to count them.
+      Piece piece;
+      MakePiece(loop, sizes, noise, piece);
+      const Vec3 normal = Normalized(NewellVector(loop.data(), static_cast<int>(loop.size())));
+      CutAlongContacts(contacts.Segments[i], normal, contacts.Touch, piece.corners, piece.sides, piece.localPatch);
+      total += static_cast<double>(piece.sides.size());
+      continue;
+    }
+    if (loop.size() == 4 && IsConvex(loop.data(), 4, noise))
+    {
+      total += CountQuad(loop.data(), patchSize, elementSize);
+      continue;
+    }
+    const std::vector<int> corners = Triangulate(loop.data(), static_cast<int>(loop.size()), noise);
+    for (size_t t = 0; t + 2 < corners.size(); t += 3)
+    {
+      total += CountTriangle(loop[corners[t]], loop[corners[t + 1]], loop[corners[t + 2]], patchSize, elementSize);
+    }
+  }
+  return total;
+}
+} // namespace
+
+double CountElements(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, double patchSize, double elementSize, const PolygonArrays* wholeScene)
+{
+  const PolygonArrays polygons{ points, offsets, connectivity };
+  return CountWithContacts(polygons, patchSize, elementSize, FindSceneContacts(polygons, wholeScene));
+}
+
+double ElementSizeForBudget(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, double patchSize, double elementSize, double budget)
+{
+  const PolygonArrays polygons{ points, offsets, connectivity };
+  const Contacts contacts = FindSceneContacts(polygons, nullptr);
+  return ElementSizeForBudget(
+    [&](double size) { return CountWithContacts(polygons, patchSize, size, contacts); }, patchSize, elementSize,
+    budget);
+}
+
+double ElementSizeForBudget(
+  const std::function<double(double)>& count, double patchSize, double elementSize, double budget)
+{
+  if (count(elementSize) <= budget)
+  {
+    return elementSize;
+  }
+  // The count falls (in steps) as the size grows; bisect on a log scale for the smallest
+  // size that fits. At the patch size every patch is one element: the floor.
+  double fits = std::max(patchSize, elementSize), tooSmall = elementSize;
+  for (int i = 0; i < 60 && fits > tooSmall * (1 + 1e-6); ++i)
+  {
+    const double middle = std::sqrt(fits * tooSmall);
+    (count(middle) <= budget ? fits : tooSmall) = middle;
+  }
+  return fits;
+}
+
+namespace
+{
+/// A surface's plane: its first polygon's unit normal and offset.
+struct Plane
+{
+  Vec3 Normal;
+  double Offset = 0;
+};
+
+/// Normals of one surface differ by at most this (as a distance between unit normals); it
+/// is also the quantisation step of normals in the surface keys, so that one step either
+/// way finds every candidate.
+constexpr double kNormalTolerance = 1e-6;
+
+/// The surface a polygon's plane belongs to: of the surfaces keyed `key` or one step off in
+/// any quantised part (a value near a rounding boundary lands on either side), the nearest
+/// whose plane is within the tolerances of the polygon's (`normalTolerance` as a distance
+/// between unit normals, `offsetTolerance` between offsets), else -1. The tolerances, not
+/// where the rounding boundaries fall, decide, so placement and rotation do not.
+template <typename Map, typename Key>
+int FindSurface(const Map& map, const Key& key, const std::vector<Plane>& planes, const Plane& plane,
+  double offsetTolerance)
+{
+  int best = -1;
+  double nearest = 1;
+  for (int a = -1; a <= 1; ++a)
+  {
+    for (int b = -1; b <= 1; ++b)
+    {
+      for (int c = -1; c <= 1; ++c)
+      {
+        for (int d = -1; d <= 1; ++d)
+        {
+          Key probe = key;
+          std::get<1>(probe) += a;
+          std::get<2>(probe) += b;
+          std::get<3>(probe) += c;
+          std::get<4>(probe) += d;
+          const auto range = map.equal_range(probe);
+          for (auto found = range.first; found != range.second; ++found)
+          {
+            const Plane& other = planes[found->second];
+            const double distance = std::max(Norm(other.Normal - plane.Normal) / kNormalTolerance,
+              std::fabs(other.Offset - plane.Offset) / offsetTolerance);
+            if (distance <= nearest && (best < 0 || distance < nearest || found->second < best))
+            {
+              nearest = distance;
+              best = found->second;
+            }
+          }
+        }
+      }
+    }
+  }
+  return best;
+}
+
+/// MeshPolygons on polygons that came from input cells `source[i]` (for messages, keys and
+/// the output's sourcePolygon), with the surfaces standing on them.
+std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, const std::vector<int>& source, const std::vector<int>& surfaceKey,
+  const Contacts& contacts, const MesherOptions& options, MeshedPolygons& out)
+{
+  out = MeshedPolygons();
+  std::ostringstream err;
+  if (!(options.PatchSize > 0) || !(options.ElementSize > 0) || !std::isfinite(options.PatchSize))
+  {
+    err << "PatchSize (" << options.PatchSize << ") and ElementSize (" << options.ElementSize
+        << ") must be positive";
+    return err.str();
+  }
+  const int count = static_cast<int>(offsets.size()) - 1;
+  const double diagonal = Span(points); // not the bounding box's: that turns with the scene
+  const Vec3 sceneCentre = Bounds(points).Centre();
+  const double quantum = std::max(diagonal, 1e-300) * 1e-9;
+  const double noise = FloatNoise(diagonal);
+
+  // Surfaces: same caller key and same plane, up to a tolerance relative to the scene.
+  using SurfaceId = std::tuple<int, long long, long long, long long, long long>;
+  std::multimap<SurfaceId, int> surfaceIndex; // a key holds every surface whose plane rounds to it
+  std::vector<Plane> surfacePlanes;
+  std::vector<SurfaceMesh> surfaces;
+  std::vector<std::map<std::tuple<long long, long long, long long>, SurfaceMesh::VertexHandle>> welds;
+  // Per surface face: (input polygon, global patch id), parallel to the OpenMesh faces.
+  std::vector<std::vector<std::pair<int, int>>> faceInfo;
+  // Polygons that fit in one patch share a patch with the others of their surface in the
+  // same PatchSize cell of the plane: a model's many small parts would otherwise each be a
+  // shooter (a house's 16k polygons made 59k patches).
+  std::map<std::tuple<int, long long, long long>, int> sharedPatch;
+  std::vector<std::array<Vec3, 3>> gridFrames; // per surface: origin and in-plane axes
+
+  double estimate = 0;
+  for (int i = 0; i < count; ++i)
+  {
+    const std::vector<Vec3> loop = GatherLoop(points, offsets, connectivity, static_cast<int>(i));
+    estimate += EstimateElements(loop, options);
+  }
+  if (!(estimate <= static_cast<double>(options.MaximumElements)))
+  {
+    err << "PatchSize " << options.PatchSize << " and ElementSize " << options.ElementSize
+        << " would make about " << std::setprecision(3) << estimate
+        << " elements, more than the limit of " << options.MaximumElements
+        << "; choose a larger ElementSize (or PatchSize)";
+    return err.str();
+  }
+
+  for (int i = 0; i < count; ++i)
+  {
+    if (options.Progress && !options.Progress(static_cast<double>(i) / std::max(count, 1)))
+    {
+      return "meshing was aborted";
+    }
+    std::vector<Vec3> loop;
+    for (int k = offsets[i]; k < offsets[i + 1]; ++k)
+    {
+      // Repeated consecutive points would make zero-area elements: drop them.
+      const Vec3& p = points[connectivity[k]];
+      if (loop.empty() || Norm(p - loop.back()) > quantum)
+      {
+        loop.push_back(p);
+      }
+    }
+    while (loop.size() > 1 && Norm(loop.front() - loop.back()) <= quantum)
+    {
+      loop.pop_back();
+    }
+    if (offsets[i + 1] - offsets[i] < 3)
+    {
+      err << "cell " << source[i] << " has " << offsets[i + 1] - offsets[i] << " points; polygons need at least 3";
+      return err.str();
+    }
+    if (loop.size() < 3)
+    {
+      err << "cell " << source[i] << " has zero area (only " << loop.size()
+          << " distinct points); remove degenerate cells";
+      return err.str();
+    }
+    const Vec3 newell = NewellVector(loop.data(), static_cast<int>(loop.size()));
+    const Vec3 normal = Normalized(newell);
+    Piece piece;
+    MakePiece(loop, options, noise, piece);
+    CutAlongContacts(contacts.Segments[i], normal, contacts.Touch, piece.corners, piece.sides, piece.localPatch);
+
+    // From the scene's centre: measured from the origin, a plane far away carries its
+    // normal's round-off times its distance, and one floor would split into many.
+    const double planeOffset = Dot(normal, PolygonCentroid(loop.data(), static_cast<int>(loop.size())) - sceneCentre);
+    auto q = [&](double v, double scale) { return static_cast<long long>(std::llround(v / scale)); };
+    const SurfaceId id{ surfaceKey[source[i]], q(normal.x, kNormalTolerance), q(normal.y, kNormalTolerance),
+      q(normal.z, kNormalTolerance), q(planeOffset, quantum * 1000) };
+    const Plane plane{ normal, planeOffset };
+    int s = FindSurface(surfaceIndex, id, surfacePlanes, plane, quantum * 1000);
+    if (s < 0)
+    {
+      s = static_cast<int>(surfaces.size());
+      surfaceIndex.emplace(id, s);
+      surfacePlanes.push_back(plane);
+      surfaces.emplace_back();
+      welds.emplace_back();
+      faceInfo.emplace_back();
+      // The sharing grid hangs from the surface's first polygon, not from world axes, so a
+      // moved or rotated scene groups its small polygons the same way.
+      const Vec3 edge = loop[1] - loop[0];
+      const Vec3 t = Normalized(edge - normal * Dot(edge, normal));
+      gridFrames.push_back({ loop[0], t, Cross(normal, t) });
+    }
+    SurfaceMesh& mesh = surfaces[s];
+    int patchBase = out.patches, ownPatches = piece.patchCount;
+    if (options.SharePatches && piece.patchCount == 1)
+    {
+      const std::array<Vec3, 3>& frame = gridFrames[s];
+      const Vec3 c = PolygonCentroid(loop.data(), static_cast<int>(loop.size())) - frame[0];
+      // Models space their parts in whole patch sizes, so centroids fall on cell borders:
+      // the cells start a millionth early, or float rounding would pick either side.
+      auto cellOf = [&](double along) { return static_cast<long long>(std::floor(along / options.PatchSize + 1e-6)); };
+      const auto cell = std::make_tuple(s, cellOf(Dot(c, frame[1])), cellOf(Dot(c, frame[2])));
+      const auto shared = sharedPatch.emplace(cell, out.patches);
+      patchBase = shared.first->second;
+      ownPatches = shared.second ? 1 : 0;
+    }
+    size_t corner = 0;
+    for (size_t e = 0; e < piece.sides.size(); ++e)
+    {
+      std::vector<SurfaceMesh::VertexHandle> handles;
+      for (int v = 0; v < piece.sides[e]; ++v, ++corner)
+      {
+        const Vec3& p = piece.corners[corner];
+        const auto key = std::make_tuple(q(p.x, quantum), q(p.y, quantum), q(p.z, quantum));
+        auto weld = welds[s].find(key);
+        if (weld == welds[s].end())
+        {
+          weld = welds[s].emplace(key, mesh.add_vertex(SurfaceMesh::Point(p.x, p.y, p.z))).first;
+        }
+        handles.push_back(weld->second);
+      }
+      // OpenMesh prints each refusal; the fallback below is the answer to it.
+      omerr().disable();
+      SurfaceMesh::FaceHandle face = mesh.add_face(handles);
+      omerr().enable();
+      if (!face.is_valid())
+      {
+        // Overlapping input (coincident faces, T-shaped junctions of three faces on one
+        // edge; a model's parts overlapping by a millimetre, cut along the same contact
+        // lines) is not a 2-manifold: give the element its own vertices instead.
+        for (auto& h : handles)
+        {
+          const auto p = mesh.point(h);
+          h = mesh.add_vertex(p);
+        }
+        face = mesh.add_face(handles);
+      }
+      faceInfo[s].emplace_back(source[i], patchBase + piece.localPatch[e]);
+    }
+    out.patches += ownPatches;
+  }
+
+  // Patch ids of empty lattice cells are never used; compact them to 0..patches-1.
+  std::map<int, int> compact;
+  for (size_t s = 0; s < surfaces.size(); ++s)
+  {
+    const SurfaceMesh& mesh = surfaces[s];
+    const int base = static_cast<int>(out.points.size());
+    for (auto v : mesh.vertices())
+    {
+      const auto p = mesh.point(v);
+      out.points.push_back({ p[0], p[1], p[2] });
+    }
+    size_t f = 0;
+    for (auto face : mesh.faces())
+    {
+      for (auto v : mesh.fv_range(face))
+      {
+        out.connectivity.push_back(base + v.idx());
+      }
+      out.offsets.push_back(static_cast<int>(out.connectivity.size()));
+      out.sourcePolygon.push_back(faceInfo[s][f].first);
+      const int patch = compact.emplace(faceInfo[s][f].second, static_cast<int>(compact.size())).first->second;
+      out.patchId.push_back(patch);
+      ++f;
+    }
+  }
+  out.patches = static_cast<int>(compact.size());
+  return std::string();
+}
+
+} // namespace
+
+namespace
+{
+/// A polygon whose corners leave its plane by more than 0.1 % of its size is meshed as if
+/// flat: say so, with the worst one, so a twisted quad is not a silent surprise.
+void WarnAboutWarpedPolygons(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, const MesherOptions& options)
+{
+  int warped = 0, worst = -1;
+  double worstOffset = 0, worstRatio = 0;
+  for (size_t i = 0; i + 1 < offsets.size(); ++i)
+  {
+    const std::vector<Vec3> loop = GatherLoop(points, offsets, connectivity, static_cast<int>(i));
+    if (loop.size() < 4)
+    {
+      continue;
+    }
+    const Vec3 n = Normalized(NewellVector(loop.data(), static_cast<int>(loop.size())));
+    const Vec3 c = PolygonCentroid(loop.data(), static_cast<int>(loop.size()));
+    double offset = 0, size = 0;
+    for (size_t v = 0; v < loop.size(); ++v)
+    {
+      offset = std::max(offset, std::fabs(Dot(n, loop[v] - c)));
+      size = std::max(size, Norm(loop[(v + 1) % loop.size()] - loop[v]));
+    }
+    if (offset > 1e-3 * size)
+    {
+      ++warped;
+      if (offset / size > worstRatio)
+      {
+        worst = static_cast<int>(i);
+        worstOffset = offset;
+        worstRatio = offset / size;
+      }
+    }
+  }
+  if (warped > 0 && options.Warning)
+  {
+    std::ostringstream text;
+    text << warped << " polygon(s) are not flat and are meshed as if they were; the worst, cell " << worst
+         << ", has a corner " << worstOffset << " off its plane (" << 100 * worstRatio
+         << " % of its size). Split them into triangles or flat polygons.";
+    options.Warning(text.str());
+  }
+}
+
+/// ElementSize, or the size ElementBudget calls for; says which, and warns on a huge mesh.
+double ChooseElementSize(const PolygonArrays& polygons, const Contacts& contacts, const MesherOptions& o)
+{
+  auto count = [&](double size) { return CountWithContacts(polygons, o.PatchSize, size, contacts); };
+  const double wanted = count(o.ElementSize);
+  std::ostringstream message;
+  double size = o.ElementSize;
+  if (o.ElementBudget > 0 && wanted > o.ElementBudget)
+  {
+    size = ElementSizeForBudget(count, o.PatchSize, size, o.ElementBudget);
+    message << "ElementSize " << o.ElementSize << " would make " << wanted << " elements, more than MaximumElements ("
+            << o.ElementBudget << "); using " << size << " (" << count(size) << " elements).";
+  }
+  else if (wanted > 2e6)
+  {
+    message << "ElementSize " << size << " makes " << wanted << " elements: solving takes minutes and about "
+            << wanted * 1.6e-6 << " GB with 8 lights. Set MaximumElements (or a larger ElementSize) to bound it.";
+  }
+  if (o.Warning && !message.str().empty())
+  {
+    o.Warning(message.str());
+  }
+  return size;
+}
+} // namespace
+
+std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, const std::vector<int>& surfaceKey,
+  const MesherOptions& options, MeshedPolygons& out)
+{
+  // Checked first: a NaN point would otherwise make the element count NaN, and a figure 8
+  // would be blamed on one of its elements by the solver.
+  for (size_t i = 0; i + 1 < offsets.size(); ++i)
+  {
+    const std::vector<Vec3> loop = GatherLoop(points, offsets, connectivity, static_cast<int>(i));
+    const std::string problem = loop.size() < 3 ? std::string() : PolygonProblem(loop.data(), static_cast<int>(loop.size()));
+    if (!problem.empty())
+    {
+      return "cell " + std::to_string(i) + " " + problem;
+    }
+  }
+  WarnAboutWarpedPolygons(points, offsets, connectivity, options);
+  PairedPolygons polygons;
+  if (options.MergeTriangles)
+  {
+    const double tolerance = 1e-7 * std::max(Bounds(points).Diagonal(), 1e-300);
+    polygons = MergeTrianglePairs(points, offsets, connectivity, surfaceKey, tolerance);
+  }
+  else
+  {
+    polygons.offsets = offsets;
+    polygons.connectivity = connectivity;
+    for (size_t i = 0; i + 1 < offsets.size(); ++i)
+    {
+      polygons.source.push_back(static_cast<int>(i));
+    }
+  }
+  const PolygonArrays paired{ points, polygons.offsets, polygons.connectivity };
+  const Contacts contacts = FindSceneContacts(paired, options.WholeScene);
+  MesherOptions sized = options;
+  sized.ElementSize = ChooseElementSize(paired, contacts, options);
+  const std::string error =
+    MeshList(points, polygons.offsets, polygons.connectivity, polygons.source, surfaceKey, contacts, sized, out);
+  out.mergedTrianglePairs = polygons.merged;
+  out.elementSize = sized.ElementSize;
+  return error;
+}
+
+SuggestedSizes SuggestMeshSizes(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity)
+{
+  SuggestedSizes sizes;
+  for (size_t i = 0; i + 1 < offsets.size(); ++i)
+  {
+    const std::vector<Vec3> loop = GatherLoop(points, offsets, connectivity, static_cast<int>(i));
+    const double area = loop.size() >= 3 ? PolygonArea(loop.data(), static_cast<int>(loop.size())) : 0.0;
+    sizes.Area += std::isfinite(area) ? area : 0.0;
+  }
+  std::vector<Vec3> corners;
+  corners.reserve(connectivity.size());
+  for (int id : connectivity)
+  {
+    corners.push_back(points[id]);
+  }
+  const double diagonal = Span(corners); // unlike a bounding box's diagonal, turning does not change it
+  if (!(diagonal > 0) || !std::isfinite(diagonal))
+  {
+    return sizes;
+  }
+  const double target = diagonal / 6.0;
+  const double decade = std::pow(10.0, std::floor(std::log10(target)));
+  double nice = decade;
+  for (double step : { 2.0, 2.5, 5.0 })
+  {
+    nice = step * decade <= target ? step * decade : nice;
+  }
+  sizes.PatchSize = nice;
+  sizes.ElementSize = nice / 4.0;
+  sizes.Elements = CountElements(points, offsets, connectivity, sizes.PatchSize, sizes.ElementSize);
+  return sizes;
+}
+
+} // namespace radiosity

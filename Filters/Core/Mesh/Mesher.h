@@ -1,0 +1,97 @@
+// Two-level uniform meshing for substructured radiosity: polygons -> patches -> elements.
+#ifndef RadiosityCore_Mesher_h
+#define RadiosityCore_Mesher_h
+
+#include "Mesh/ContactCuts.h"
+#include "Base/Vec3.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace radiosity
+{
+
+struct MesherOptions
+{
+  double PatchSize = 1.0;   ///< longest patch edge, world units (slivers: by area)
+  double ElementSize = 0.25; ///< longest element edge, world units
+  long long MaximumElements = 20000000; ///< refuse settings that would exhaust memory
+  /// Join adjacent flat same-material triangle pairs into quads first (see TrianglePairs.h).
+  bool MergeTriangles = true;
+  /// Polygons that fit in one patch share it with the other such polygons of their flat,
+  /// same-material surface in the same PatchSize cell of the plane.
+  bool SharePatches = true;
+  /// Element budget (0: none): above it the smallest larger element size that fits is used.
+  double ElementBudget = 0;
+  /// The whole scene where the polygons are one process's piece of it: surfaces of other
+  /// pieces standing on these cut them too (see ContactCuts.h). Null: the polygons are all.
+  const PolygonArrays* WholeScene = nullptr;
+  std::function<bool(double)> Progress; ///< return false to abort
+  /// Told, before meshing, when the budget changed the element size or the mesh is huge.
+  std::function<void(const std::string&)> Warning;
+};
+
+struct MeshedPolygons
+{
+  std::vector<Vec3> points;
+  std::vector<int> offsets{ 0 };
+  std::vector<int> connectivity;
+  std::vector<int> sourcePolygon; ///< input polygon each element came from
+  std::vector<int> patchId;       ///< 0..patches-1
+  int patches = 0;
+  int mergedTrianglePairs = 0; ///< triangle pairs meshed as one quad
+  double elementSize = 0;      ///< the element size used (see ElementBudget)
+};
+
+/// The number of elements MeshPolygons makes at these sizes (exactly, for valid input),
+/// without meshing: for a warning or a budget before the work.
+/// `wholeScene`: as MesherOptions::WholeScene.
+double CountElements(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, double patchSize, double elementSize,
+  const PolygonArrays* wholeScene = nullptr);
+
+/// The smallest element size, at least `elementSize`, whose mesh has at most `budget`
+/// elements (the patch size when even one element per patch is over it).
+double ElementSizeForBudget(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, double patchSize, double elementSize, double budget);
+
+/// The same search over any count of elements by size (the whole scene's, for a mesh
+/// split over several processes: every process makes the same calls in the same order).
+double ElementSizeForBudget(
+  const std::function<double(double)>& count, double patchSize, double elementSize, double budget);
+
+/// Splits each planar polygon (convex quads on a bilinear grid, others ear-clipped into
+/// triangles and split on a barycentric lattice) into patches with edges <= PatchSize (a
+/// sliver triangle, narrower than a quarter of its length, into patches of about that area), and each patch
+/// into elements with edges <= ElementSize. Points are shared between elements of input
+/// polygons that lie in one plane with the same `surfaceKey` (the caller's material id)
+/// and touch; everywhere else they are split, so smoothing over shared vertices never
+/// mixes two materials or orientations. Where a polygon stands on another (a wall on a
+/// floor), the elements it stands across are cut along its foot (ContactCuts.h). The
+/// connectivity is held in OpenMesh meshes, one per surface. Returns an empty string or
+/// an error naming the problem.
+std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, const std::vector<int>& surfaceKey,
+  const MesherOptions& options, MeshedPolygons& out);
+
+/// Sizes that suit a scene whatever its unit, placement and orientation: PatchSize about
+/// a sixth of the scene's extent (twice the largest distance of a corner from the
+/// corners' mean; a box's diagonal), rounded down to 1, 2, 2.5 or 5 times a power of ten,
+/// and ElementSize a quarter of it (1 and 0.25 for a 4 x 2.5 x 4 room in metres; 1000
+/// and 250 in mm).
+struct SuggestedSizes
+{
+  double PatchSize = 1.0;
+  double ElementSize = 0.25;
+  double Area = 0.0;     ///< the polygons' total area
+  double Elements = 0.0; ///< the elements these sizes make (CountElements)
+};
+
+/// The suggestion for a scene; the defaults (1, 0.25) for an empty or degenerate one.
+SuggestedSizes SuggestMeshSizes(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity);
+
+} // namespace radiosity
+
+#endif

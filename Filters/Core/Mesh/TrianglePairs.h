@@ -1,0 +1,30 @@
+// Undoing a triangulating exporter: two triangles of one material that together form a flat
+// convex quad become that quad again, which the mesher grids with a quarter of the elements.
+#ifndef RadiosityCore_TrianglePairs_h
+#define RadiosityCore_TrianglePairs_h
+
+#include "Base/Vec3.h"
+
+#include <vector>
+
+namespace radiosity
+{
+
+struct PairedPolygons
+{
+  std::vector<int> offsets{ 0 };
+  std::vector<int> connectivity;
+  std::vector<int> source; ///< the input polygon each output polygon came from (the first)
+  int merged = 0;          ///< triangle pairs joined into quads
+};
+
+/// Joins triangles that share an edge (by position, so split vertices count), have the same
+/// `surfaceKey`, lie in one plane (within `tolerance`, a length) and form a convex quad;
+/// each triangle joins its neighbour across its longest edge first (the diagonal a quad
+/// was split along). Every other polygon passes through unchanged.
+PairedPolygons MergeTrianglePairs(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, const std::vector<int>& surfaceKey, double tolerance);
+
+} // namespace radiosity
+
+#endif

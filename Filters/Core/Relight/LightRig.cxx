@@ -1,0 +1,291 @@
+#include "Relight/LightRig.h"
+#include "Base/Text.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <set>
+#include <sstream>
+
+namespace radiosity
+{
+namespace
+{
+/// A whole cell as a finite number; false for anything else ("1.5x", "", "nan").
+bool ParseNumber(const std::string& text, double& value)
+{
+  char* end = nullptr;
+  const std::string cell = Trimmed(text);
+  value = std::strtod(cell.c_str(), &end);
+  return !cell.empty() && end == cell.c_str() + cell.size() && std::isfinite(value);
+}
+
+/// true/false, on/off, yes/no, 1/0 in any case.
+bool ParseEnabled(const std::string& text, bool& value)
+{
+  std::string word = Trimmed(text);
+  std::transform(word.begin(), word.end(), word.begin(), [](unsigned char c) { return std::tolower(c); });
+  const bool on = word == "1" || word == "true" || word == "on" || word == "yes";
+  const bool off = word == "0" || word == "false" || word == "off" || word == "no";
+  value = on;
+  return on || off;
+}
+
+std::string Joined(const std::vector<std::string>& names)
+{
+  std::string all;
+  for (const std::string& name : names)
+  {
+    all += (all.empty() ? "" : ";") + name;
+  }
+  return all;
+}
+
+} // namespace
+
+std::string InvalidLightValues(double intensity, const Vec3& colour)
+{
+  std::ostringstream why;
+  if (!(std::isfinite(intensity) && intensity >= 0))
+  {
+    why << "has intensity " << intensity << "; it must be a finite number >= 0";
+  }
+  for (int c = 0; c < 3 && why.str().empty(); ++c)
+  {
+    if (!(std::isfinite(colour[c]) && colour[c] >= 0))
+    {
+      why << "has colour component " << c << " = " << colour[c] << "; colours must be finite and >= 0";
+    }
+  }
+  return why.str();
+}
+
+void LightSetting::ApplyTo(LightSetting& effective) const
+{
+  if (this->HasColor)
+  {
+    effective.Color = this->Color;
+  }
+  if (this->HasIntensity)
+  {
+    effective.Intensity = this->Intensity;
+  }
+  if (this->HasEnabled)
+  {
+    effective.Enabled = this->Enabled;
+  }
+}
+
+void LightRig::SetColor(int light, const Vec3& colour)
+{
+  LightSetting& s = this->ByIndex[light];
+  s.HasColor = true;
+  s.Color = colour;
+}
+
+void LightRig::SetIntensity(int light, double intensity)
+{
+  LightSetting& s = this->ByIndex[light];
+  s.HasIntensity = true;
+  s.Intensity = intensity;
+}
+
+void LightRig::SetEnabled(int light, bool enabled)
+{
+  LightSetting& s = this->ByIndex[light];
+  s.HasEnabled = true;
+  s.Enabled = enabled;
+}
+
+void LightRig::SetByName(const std::string& name, const Vec3& colour, double intensity, bool enabled)
+{
+  LightSetting& s = this->ByName[name];
+  s.HasColor = !(std::isnan(colour.x) || std::isnan(colour.y) || std::isnan(colour.z));
+  s.HasIntensity = !std::isnan(intensity);
+  s.HasEnabled = true;
+  s.Color = colour;
+  s.Intensity = intensity;
+  s.Enabled = enabled;
+}
+
+bool ParseKeyframe(const std::vector<std::string>& cells, LightKeyframe& key)
+{
+  key = LightKeyframe();
+  key.Light = Trimmed(cells.size() > 1 ? cells[1] : "");
+  return (cells.size() == 6 || cells.size() == 7) && ParseNumber(cells[0], key.Time) && !key.Light.empty() &&
+    ParseNumber(cells[2], key.Color.x) && ParseNumber(cells[3], key.Color.y) && ParseNumber(cells[4], key.Color.z) &&
+    ParseNumber(cells[5], key.Intensity) && (cells.size() == 6 || ParseEnabled(cells[6], key.Enabled));
+}
+
+bool LightRig::Scheduled(const std::string& name, int index, double time, LightSetting& out) const
+{
+  const LightKeyframe* before = nullptr;
+  const LightKeyframe* after = nullptr;
+  for (const auto* list : { &this->FileSchedule, &this->Schedule })
+  {
+    for (const LightKeyframe& k : *list)
+    {
+      if (k.Light != name && k.Light != std::to_string(index))
+      {
+        continue;
+      }
+      if (k.Time <= time && (!before || k.Time >= before->Time))
+      {
+        before = &k;
+      }
+      if (k.Time >= time && (!after || k.Time < after->Time))
+      {
+        after = &k;
+      }
+    }
+  }
+  if (!before && !after)
+  {
+    return false;
+  }
+  const LightKeyframe& a = before ? *before : *after;
+  const LightKeyframe& b = after ? *after : *before;
+  const double w = b.Time > a.Time ? (time - a.Time) / (b.Time - a.Time) : 0.0;
+  out.HasColor = out.HasIntensity = out.HasEnabled = true;
+  out.Color = a.Color + (b.Color - a.Color) * w;
+  out.Intensity = a.Intensity + w * (b.Intensity - a.Intensity);
+  out.Enabled = a.Enabled;
+  return true;
+}
+
+std::vector<double> LightRig::KeyframeTimes() const
+{
+  std::vector<double> times;
+  for (const auto* list : { &this->FileSchedule, &this->Schedule })
+  {
+    for (const LightKeyframe& k : *list)
+    {
+      times.push_back(k.Time);
+    }
+  }
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  return times;
+}
+
+std::string LightRig::Resolve(const std::vector<std::string>& names, const std::vector<Vec3>& defaults, double time,
+  std::vector<LightSetting>& effective, std::vector<std::string>& warnings) const
+{
+  effective.clear();
+  const int k = static_cast<int>(names.size());
+  for (int i = 0; i < k; ++i)
+  {
+    LightSetting s;
+    s.Color = i < static_cast<int>(defaults.size()) ? defaults[i] : Vec3{ 1, 1, 1 };
+    const auto byName = this->ByName.find(names[i]);
+    if (byName != this->ByName.end())
+    {
+      byName->second.ApplyTo(s);
+    }
+    LightSetting scheduled;
+    if (this->Scheduled(names[i], i, time, scheduled))
+    {
+      scheduled.ApplyTo(s);
+    }
+    const auto byIndex = this->ByIndex.find(i);
+    if (byIndex != this->ByIndex.end())
+    {
+      byIndex->second.ApplyTo(s);
+    }
+    const std::string invalid = s.Enabled ? InvalidLightValues(s.Intensity, s.Color) : std::string();
+    if (!invalid.empty())
+    {
+      return "light '" + names[i] + "' " + invalid;
+    }
+    effective.push_back(s);
+  }
+  const auto known = [&](const std::string& light) { return std::find(names.begin(), names.end(), light) != names.end(); };
+  for (const auto& entry : this->ByName)
+  {
+    if (!known(entry.first))
+    {
+      warnings.push_back("No light is named '" + entry.first + "'; lights are: " + Joined(names));
+    }
+  }
+  std::set<std::string> unknown;
+  for (const auto* list : { &this->FileSchedule, &this->Schedule })
+  {
+    for (const LightKeyframe& key : *list)
+    {
+      bool index = false;
+      for (int i = 0; i < k && !index; ++i)
+      {
+        index = key.Light == std::to_string(i);
+      }
+      if (!index && !known(key.Light))
+      {
+        unknown.insert(key.Light);
+      }
+    }
+  }
+  for (const std::string& light : unknown)
+  {
+    warnings.push_back("The light schedule names '" + light + "', which is no light; lights are: " + Joined(names));
+  }
+  for (const auto& entry : this->ByIndex)
+  {
+    if (entry.first < 0 || entry.first >= k)
+    {
+      warnings.push_back("Light index " + std::to_string(entry.first) + " is out of range; there are " +
+        std::to_string(k) + " lights.");
+    }
+  }
+  return std::string();
+}
+
+std::vector<Vec3> DefaultLightColours(int lights, const std::vector<double>& given, const std::vector<int>& lightId,
+  const std::vector<Vec3>& emission)
+{
+  std::vector<Vec3> colours(lights, { 1, 1, 1 });
+  if (given.size() == 3 * static_cast<size_t>(lights))
+  {
+    for (int l = 0; l < lights; ++l)
+    {
+      colours[l] = { given[3 * l], given[3 * l + 1], given[3 * l + 2] };
+    }
+    return colours;
+  }
+  std::vector<Vec3> sum(lights);
+  std::vector<int> count(lights, 0);
+  for (size_t c = 0; c < lightId.size() && c < emission.size(); ++c)
+  {
+    if (lightId[c] >= 0 && lightId[c] < lights)
+    {
+      sum[lightId[c]] += emission[c];
+      ++count[lightId[c]];
+    }
+  }
+  for (int l = 0; l < lights; ++l)
+  {
+    colours[l] = count[l] ? sum[l] * (1.0 / count[l]) : colours[l];
+  }
+  return colours;
+}
+
+std::vector<double> LightWeights(const std::vector<LightSetting>& effective, double indirectScale)
+{
+  std::vector<double> weights;
+  for (const LightSetting& s : effective)
+  {
+    const Vec3 w = s.Weight();
+    weights.insert(weights.end(), { w.x, w.y, w.z });
+  }
+  if (indirectScale != 1.0)
+  {
+    const size_t total = weights.size();
+    for (size_t w = 0; w < total; ++w)
+    {
+      weights.push_back(weights[w] * (1.0 - indirectScale));
+      weights[w] *= indirectScale;
+    }
+  }
+  return weights;
+}
+
+} // namespace radiosity

@@ -1,0 +1,97 @@
+// The lights' settings and what decides them: defaults, settings by name, a schedule of
+// keyframes over time, settings by index. One place for the precedence, so the relight
+// filter, a renderer that relights on the GPU and Python give the same colours.
+#ifndef RadiosityCore_LightRig_h
+#define RadiosityCore_LightRig_h
+
+#include "Base/Vec3.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace radiosity
+{
+
+/// A light's colour, intensity and on/off; a part without its Has flag leaves what lies
+/// below it (a default, or a setting of lower precedence) as it is.
+struct LightSetting
+{
+  bool HasColor = false;
+  Vec3 Color{ 1, 1, 1 };
+  bool HasIntensity = false;
+  double Intensity = 1;
+  bool HasEnabled = false;
+  bool Enabled = true;
+  void ApplyTo(LightSetting& effective) const;
+  /// Its contribution weight per channel: colour x intensity, or zero when off.
+  Vec3 Weight() const { return Enabled ? Color * Intensity : Vec3(); }
+};
+
+/// Why a light's values cannot be used (empty when they can): light is never negative,
+/// and NaN would silently blank the picture.
+std::string InvalidLightValues(double intensity, const Vec3& colour);
+
+/// A keyframe of the schedule: the light by name, or by index written as a number.
+struct LightKeyframe
+{
+  double Time = 0;
+  std::string Light;
+  Vec3 Color{ 1, 1, 1 };
+  double Intensity = 1;
+  bool Enabled = true;
+};
+
+/// Parses one schedule row (time, light, r, g, b, intensity[, enabled]) whose cells are
+/// already split; `enabled` as true/false, on/off, yes/no or 1/0. False if malformed.
+bool ParseKeyframe(const std::vector<std::string>& cells, LightKeyframe& key);
+
+struct LightRig
+{
+  std::map<int, LightSetting> ByIndex;
+  std::map<std::string, LightSetting> ByName;
+  std::vector<LightKeyframe> Schedule; ///< keyframes given one by one
+  std::vector<LightKeyframe> FileSchedule; ///< keyframes read from a file
+
+  ///@{
+  /// Settings by index, one part at a time.
+  void SetColor(int light, const Vec3& colour);
+  void SetIntensity(int light, double intensity);
+  void SetEnabled(int light, bool enabled);
+  ///@}
+
+  /// A whole setting by name; a NaN colour component or intensity keeps that part at its
+  /// default (a panel that changed only the intensity must not replace the colour).
+  void SetByName(const std::string& name, const Vec3& colour, double intensity, bool enabled);
+
+  /// The schedule's setting for light `name` (index `index`) at `time`: colour and
+  /// intensity interpolated linearly between keyframes, on/off held from the one before.
+  /// False if no keyframe names the light.
+  bool Scheduled(const std::string& name, int index, double time, LightSetting& out) const;
+
+  /// Every keyframe time, sorted, each once.
+  std::vector<double> KeyframeTimes() const;
+
+  /// The settings in effect for lights `names` with `defaults` (their default colours),
+  /// at `time`: defaults, then by name, then the schedule, then by index. Returns an empty
+  /// string, or the error for a light switched on with a negative, infinite or NaN value.
+  /// `warnings` gets settings that name no light.
+  std::string Resolve(const std::vector<std::string>& names, const std::vector<Vec3>& defaults, double time,
+    std::vector<LightSetting>& effective, std::vector<std::string>& warnings) const;
+};
+
+/// The lights' default colours: `given` (the solver's LightDefaultColors, 3 values per
+/// light) when it holds one per light, else each light's mean Emission over its cells
+/// (`lightId`, `emission` per cell; zero Emission stays zero, a light without cells or
+/// without an Emission array is white).
+std::vector<Vec3> DefaultLightColours(int lights, const std::vector<double>& given, const std::vector<int>& lightId,
+  const std::vector<Vec3>& emission);
+
+/// The 3k weights (colour x intensity, zero for lights off) of resolved settings; with an
+/// indirect scale other than 1, 6k: s times the totals, then (1 - s) times the direct
+/// parts, for B = s B_total + (1 - s) B_direct.
+std::vector<double> LightWeights(const std::vector<LightSetting>& effective, double indirectScale);
+
+} // namespace radiosity
+
+#endif

@@ -1,0 +1,54 @@
+// Moving lights (paper 2.4): the direct part shot per frame; the patch basis
+// (PatchBasis.h) carries its interreflection.
+#ifndef RadiosityCore_MovingLights_h
+#define RadiosityCore_MovingLights_h
+
+#include "Geometry/Scene.h"
+#include "Geometry/Visibility.h"
+#include "Base/WorkerPool.h"
+
+#include <memory>
+#include <vector>
+
+namespace radiosity
+{
+
+/// A light that moves between frames. Isotropic when Normal is zero: radiant intensity
+/// Intensity * Color in every direction, so a surface at distance r receives irradiance
+/// Intensity * Color * cos(theta) / r^2. With a Normal it is a small Lambertian emitter:
+/// intensity Intensity * Color * cos(angle to Normal), nothing behind it.
+struct MovingLight
+{
+  Vec3 Position;
+  Vec3 Color{ 1, 1, 1 };
+  double Intensity = 1;
+  Vec3 Normal;
+};
+
+/// The direct part, computed every frame: each element's radiosity rho * irradiance from
+/// the moving lights, with Embree shadow rays against the static scene and, optionally,
+/// dynamic objects (which cast direct shadows only, as in the paper).
+class MovingLightShader
+{
+public:
+  MovingLightShader(const SceneMesh& scene, const SceneMesh* dynamicObjects);
+  const std::string& Error() const { return Rays->Error(); }
+  const SceneGeometry& Geometry() const { return Geometry_; }
+
+  /// Replaces the dynamic objects (null: none): a second geometry in the ray scene, so a
+  /// moving object costs its own triangles, not the static scene's copy and triangulation.
+  bool SetDynamicObjects(const SceneMesh* objects);
+
+  /// direct[e] = rho_e * irradiance_e. Returns the number of shadow rays cast.
+  long long Direct(const std::vector<MovingLight>& lights, const WorkerPool& pool,
+    std::vector<Vec3>& direct) const;
+
+private:
+  const SceneMesh& Scene;
+  SceneGeometry Geometry_;
+  std::unique_ptr<Visibility> Rays;
+};
+
+} // namespace radiosity
+
+#endif

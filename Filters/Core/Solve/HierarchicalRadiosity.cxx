@@ -1,0 +1,429 @@
+#include "Solve/HierarchicalRadiosity.h"
+#include "Solve/ShootingState.h"
+
+#include <algorithm>
+#include <atomic>
+#include <functional>
+
+namespace radiosity
+{
+
+namespace
+{
+/// One shooter's links: receiver patches taken whole, and receiver patches taken element by
+/// element, grouped by patch so that one thread owns each patch's unshot sum.
+struct ShooterLinks
+{
+  std::vector<int> Patches;
+  std::vector<int> NodeFactorBegin; ///< where each patch link's node factors start
+  std::vector<float> NodeFactors;   ///< F(node -> shooter) at each node of each linked patch
+  std::vector<double> MeanFactors;  ///< their integral over the patch per unit of its open area
+  std::vector<int> Groups;   ///< receiver patch of each element group
+  std::vector<int> GroupEnd; ///< end of each group in Elements
+  std::vector<int> Elements;
+  std::vector<float> ElementFactors;
+  /// Sum of factor x receiver area: the power received per unit of shot radiosity.
+  double ReceivingArea = 0;
+  bool Built = false;
+
+  double Bytes() const
+  {
+    return static_cast<double>(Patches.size() * 4 + NodeFactors.size() + Groups.size() * 2 + Elements.size() * 2) * 4;
+  }
+};
+
+enum class LinkKind : char
+{
+  None,
+  Patch,
+  Elements
+};
+
+/// Centres closer than this many times the sum of two patches' radii are linked element by
+/// element: there the form factor varies too much across the receiver for one value.
+constexpr double kNearRadii = 2.0;
+
+class LinkBuilder
+{
+public:
+  /// `owned`: the receiver patches this process links to; `ranks`: the processes solving
+  /// together, which share the element factors of every shooter's near patches.
+  LinkBuilder(const SceneGeometry& g, ShooterFormFactors& factors, const PatchNodes& nodes, const WorkerPool& pool,
+    int samples, double threshold, const std::vector<char>& owned, Collective& ranks)
+    : G(g)
+    , Factors(factors)
+    , Nodes(nodes)
+    , Pool(pool)
+    , Samples(samples)
+    , Threshold(threshold)
+    , Patches(static_cast<int>(g.patchElements.size()))
+    , Kind(Patches)
+    , NodeFactor(nodes.Count())
+    , Owned(owned)
+    , Ranks(ranks)
+  {
+  }
+
+  /// `shotFraction`: the largest fraction of a solution's emitted power this shot carries.
+  ShooterLinks Build(int shooter, double shotFraction, SolverStatistics& stats)
+  {
+    Classify(shooter, shotFraction, stats);
+    ShooterLinks links;
+    links.Built = true;
+    for (int q = 0; q < Patches; ++q)
+    {
+      if (Kind[q] == LinkKind::Patch)
+      {
+        AddPatchLink(q, links);
+      }
+      else if (Kind[q] == LinkKind::Elements)
+      {
+        links.Groups.push_back(q);
+      }
+    }
+    LinkElements(shooter, links, stats);
+    Conserve(shooter, links);
+    stats.PatchLinks += static_cast<long long>(links.Patches.size());
+    stats.ElementLinks += static_cast<long long>(links.Elements.size());
+    stats.LinkBytes += links.Bytes();
+    return links;
+  }
+
+private:
+  void AddPatchLink(int q, ShooterLinks& links) const
+  {
+    links.Patches.push_back(q);
+    links.NodeFactorBegin.push_back(static_cast<int>(links.NodeFactors.size()));
+    double covered = 0;
+    for (int j = Nodes.Begin(q); j < Nodes.End(q); ++j)
+    {
+      const float f = static_cast<float>(NodeFactor[j]);
+      links.NodeFactors.push_back(f);
+      covered += f * Nodes.CoveredArea(j);
+    }
+    links.MeanFactors.push_back(covered / G.patchOpenArea[q]); // unshot spreads over the open area
+    links.ReceivingArea += covered;
+  }
+
+  /// Scales every link of the shooter so that it delivers no more than it shoots, and
+  /// exactly that when it sees a closed scene (ShooterFormFactors::ConservationScale), over
+  /// the links of every process.
+  void Conserve(int shooter, ShooterLinks& links) const
+  {
+    double receiving = links.ReceivingArea;
+    Ranks.Sum(&receiving, 1);
+    const double scale = Factors.ConservationScale(shooter, receiving);
+    if (scale == 1.0)
+    {
+      return;
+    }
+    for (float& f : links.NodeFactors)
+    {
+      f = static_cast<float>(f * scale);
+    }
+    for (double& f : links.MeanFactors)
+    {
+      f *= scale;
+    }
+    for (float& f : links.ElementFactors)
+    {
+      f = static_cast<float>(f * scale);
+    }
+    links.ReceivingArea *= scale;
+  }
+
+  /// Decides per receiver patch: no link, one patch link, or element links.
+  void Classify(int shooter, double shotFraction, SolverStatistics& stats)
+  {
+    std::atomic<long long> rays{ 0 };
+    Pool.For(Patches, 16, [&](int begin, int end) {
+      thread_local std::vector<Vec3> scratch;
+      long long chunkRays = 0;
+      for (int q = begin; q < end; ++q)
+      {
+        Kind[q] = q == shooter || !Owned[q] ? LinkKind::None : Decide(shooter, q, shotFraction, scratch, chunkRays);
+      }
+      rays += chunkRays;
+    });
+    stats.RayCount += rays;
+    stats.FormFactorCount += std::count(Owned.begin(), Owned.end(), 1);
+  }
+
+  LinkKind Decide(int s, int q, double shotFraction, std::vector<Vec3>& scratch, long long& rays)
+  {
+    if (!Factors.Planar(s) || !Factors.Planar(q))
+    {
+      return LinkKind::Elements;
+    }
+    const Vec3 d = Factors.Centre(q) - Factors.Centre(s);
+    const double ahead = Dot(Factors.Normal(s), d), facing = -Dot(Factors.Normal(q), d);
+    const double rs = Factors.Radius(s), rq = Factors.Radius(q);
+    if (ahead + rq <= 0 || facing + rs <= 0)
+    {
+      return LinkKind::None; // one wholly behind the other's plane: nothing passes
+    }
+    if (Norm(d) < kNearRadii * (rs + rq) || Straddles(q, s) || Straddles(s, q))
+    {
+      return LinkKind::Elements; // near, or partly behind a plane: resolve per element
+    }
+    const double covered = NodeFactors(s, q, scratch);
+    if (covered <= 0 || G.patchOpenArea[q] <= 0)
+    {
+      return LinkKind::None;
+    }
+    // Power fraction reaching q: F(s -> q) = F(q -> s) A_q / A_s.
+    if (shotFraction * covered / G.patchArea[s] >= Threshold)
+    {
+      return LinkKind::Elements; // strong transfer: worth element resolution
+    }
+    double visible = 1;
+    if (Samples > 0 && Factors.MayBeBlockedBetweenPatches(q, s))
+    {
+      visible = static_cast<double>(Factors.VisibleRaysBetweenPatches(q, s, Samples)) / Samples;
+      rays += Samples;
+    }
+    for (int j = Nodes.Begin(q); j < Nodes.End(q); ++j)
+    {
+      NodeFactor[j] *= visible;
+    }
+    return visible > 0 ? LinkKind::Patch : LinkKind::None;
+  }
+
+  /// F(node -> s) at q's nodes, scaled so that their interpolant integrates over q like a
+  /// rule exact for quadratics: 3/4 of the fan triangles' centroid rule plus 1/4 of their
+  /// vertex rule (the interpolant's own integral). The vertex rule alone overestimates a
+  /// convex factor and underestimates a concave one, and the shooters linked per element
+  /// cannot make up for it: a closed box lost 0.1 % of every shot. Returns the integral.
+  double NodeFactors(int s, int q, std::vector<Vec3>& scratch)
+  {
+    const Vec3& normal = Factors.Normal(q);
+    double vertexRule = 0;
+    for (int j = Nodes.Begin(q); j < Nodes.End(q); ++j)
+    {
+      NodeFactor[j] = Factors.PointFactor(s, Nodes.Node(j), normal, scratch);
+      vertexRule += NodeFactor[j] * Nodes.CoveredArea(j);
+    }
+    if (Nodes.FanEnd(q) <= Nodes.FanBegin(q) || vertexRule <= 0)
+    {
+      return vertexRule;
+    }
+    double centroidRule = 0;
+    for (int t = Nodes.FanBegin(q); t < Nodes.FanEnd(q); ++t)
+    {
+      centroidRule += Factors.PointFactor(s, Nodes.FanCentroid(t), normal, scratch) * Nodes.FanArea(t);
+    }
+    const double integral = 0.75 * centroidRule + 0.25 * vertexRule;
+    for (int j = Nodes.Begin(q); j < Nodes.End(q); ++j)
+    {
+      NodeFactor[j] *= integral / vertexRule;
+    }
+    return integral;
+  }
+
+  /// True when part of patch `a` lies behind the plane of patch `b` (where the form factor
+  /// is cut off inside `a`, which one value per node cannot represent).
+  bool Straddles(int a, int b) const
+  {
+    const double tolerance = 1e-9 * G.sceneDiagonal;
+    if (Nodes.End(a) - Nodes.Begin(a) < 3)
+    {
+      return Dot(Factors.Normal(b), Factors.Centre(a) - Factors.Centre(b)) - Factors.Radius(a) <= 0;
+    }
+    for (int j = Nodes.Begin(a); j < Nodes.End(a); ++j)
+    {
+      if (Dot(Factors.Normal(b), Nodes.Node(j) - Factors.Centre(b)) < -tolerance)
+      {
+        return true;
+      }
+    }
+    return false;
+  }
+
+  /// Element factors for every element group, kept in patch order. Several ranks share
+  /// the work of all their groups element by element: a shooter's near patches are few, so
+  /// whole patches would leave one rank waiting for another at every link-building shot.
+  void LinkElements(int shooter, ShooterLinks& links, SolverStatistics& stats)
+  {
+    std::vector<int> elements;
+    for (int q : links.Groups)
+    {
+      elements.insert(elements.end(), G.patchElements[q].begin(), G.patchElements[q].end());
+    }
+    if (Ranks.Distributed())
+    {
+      ShareFactors(shooter, elements, stats);
+    }
+    else
+    {
+      Scratch.assign(elements.size(), 0.0);
+      ComputeFactors(shooter, elements, 0, 1, stats);
+    }
+    stats.FormFactorCount += static_cast<long long>(elements.size());
+    size_t k = 0;
+    for (int q : links.Groups)
+    {
+      for (size_t j = 0; j < G.patchElements[q].size(); ++j, ++k)
+      {
+        const float f = static_cast<float>(Scratch[k]);
+        if (f > 0)
+        {
+          links.Elements.push_back(elements[k]);
+          links.ElementFactors.push_back(f);
+          links.ReceivingArea += static_cast<double>(f) * G.area[elements[k]];
+        }
+      }
+      links.GroupEnd.push_back(static_cast<int>(links.Elements.size()));
+    }
+  }
+
+  /// Scratch[k] = F(elements[k] -> shooter) for every k = first + i * step, in parallel.
+  void ComputeFactors(int shooter, const std::vector<int>& elements, int first, int step, SolverStatistics& stats)
+  {
+    const int count = static_cast<int>(elements.size()) > first
+      ? (static_cast<int>(elements.size()) - first + step - 1) / step
+      : 0;
+    std::atomic<long long> rays{ 0 };
+    Pool.For(count, 16, [&](int begin, int end) {
+      thread_local std::vector<Vec3> scratch;
+      ShooterFormFactors::RayCounts counts;
+      for (int i = begin; i < end; ++i)
+      {
+        const size_t k = static_cast<size_t>(first) + static_cast<size_t>(i) * step;
+        Scratch[k] = Factors.ElementFactor(shooter, elements[k], Samples, scratch, counts);
+      }
+      rays += counts.Rays;
+      Factors.Count(counts, Samples);
+    });
+    stats.RayCount += rays;
+  }
+
+  /// The ranks' element lists joined in rank order; each rank computes every Ranks-th
+  /// factor of the whole list, and a sum gives every rank all of them. Scratch ends with
+  /// this rank's own elements' factors, in their order.
+  void ShareFactors(int shooter, const std::vector<int>& mine, SolverStatistics& stats)
+  {
+    std::vector<double> counts(Ranks.Ranks(), 0.0);
+    counts[Ranks.Rank()] = static_cast<double>(mine.size());
+    Ranks.Sum(counts);
+    size_t before = 0, total = 0;
+    for (int r = 0; r < Ranks.Ranks(); ++r)
+    {
+      before += r < Ranks.Rank() ? static_cast<size_t>(counts[r]) : 0;
+      total += static_cast<size_t>(counts[r]);
+    }
+    std::vector<double> ids(total, 0.0);
+    std::copy(mine.begin(), mine.end(), ids.begin() + static_cast<std::ptrdiff_t>(before));
+    Ranks.Sum(ids);
+    const std::vector<int> all(ids.begin(), ids.end());
+    Scratch.assign(total, 0.0);
+    ComputeFactors(shooter, all, Ranks.Rank(), Ranks.Ranks(), stats);
+    Ranks.Sum(Scratch); // each factor computed by one rank, zero elsewhere: the sum is exact
+    Scratch.erase(Scratch.begin(), Scratch.begin() + static_cast<std::ptrdiff_t>(before));
+    Scratch.resize(mine.size());
+  }
+
+  const SceneGeometry& G;
+  ShooterFormFactors& Factors;
+  const PatchNodes& Nodes;
+  const WorkerPool& Pool;
+  const int Samples;
+  const double Threshold;
+  const int Patches;
+  std::vector<LinkKind> Kind;
+  std::vector<double> NodeFactor, Scratch;
+  const std::vector<char>& Owned;
+  Collective& Ranks;
+};
+
+std::vector<Vec3> MeanReflectance(const SceneMesh& mesh, const SceneGeometry& g)
+{
+  std::vector<Vec3> mean(g.patchElements.size());
+  for (size_t p = 0; p < mean.size(); ++p)
+  {
+    for (int e : g.patchElements[p])
+    {
+      mean[p] += mesh.reflectance[e] * (g.area[e] / g.patchArea[p]);
+    }
+  }
+  return mean;
+}
+
+/// Sends the current shot along a shooter's links; returns the power received.
+template <typename Channel>
+double DistributeAlongLinks(ShootingState<Channel>& state, const WorkerPool& pool, const ShooterLinks& links,
+  const std::vector<Vec3>& meanReflectance)
+{
+  const int patchLinks = static_cast<int>(links.Patches.size());
+  const int items = patchLinks + static_cast<int>(links.Groups.size());
+  // Every item touches one receiver patch only, so the items run in parallel safely.
+  pool.For(items, 8, [&](int begin, int end) {
+    for (int i = begin; i < end; ++i)
+    {
+      if (i < patchLinks)
+      {
+        const int q = links.Patches[i];
+        state.GatherPatch(q, links.NodeFactors.data() + links.NodeFactorBegin[i], links.MeanFactors[i], meanReflectance[q]);
+        continue;
+      }
+      const int group = i - patchLinks;
+      const int first = group == 0 ? 0 : links.GroupEnd[group - 1];
+      for (int j = first; j < links.GroupEnd[group]; ++j)
+      {
+        state.Gather(links.Elements[j], links.ElementFactors[j]);
+        state.Deposit(links.Elements[j], links.ElementFactors[j]);
+      }
+    }
+  });
+  return state.ShotTotal() * links.ReceivingArea;
+}
+
+template <typename Channel>
+void Shoot(const SceneMesh& mesh, const SceneGeometry& g, const Visibility& rays,
+  const std::vector<Vec3>& emission, int L, const SolverOptions& options, SolverClock::time_point start,
+  Solution& out)
+{
+  ShootingState<Channel> state(mesh, g, emission, L, options, start, out);
+  SolverStatistics& stats = out.Statistics;
+  WorkerPool pool(options.Threads);
+  ShooterFormFactors estimator(mesh, g, rays, pool, options.Visibility == EffectMode::Auto);
+  estimator.SetReceivers(&state.OwnedPatchFlags());
+  const PatchNodes nodes(g, estimator.PatchLoops(), estimator.Centres());
+  state.EnablePatchGathering(nodes);
+  const int samples = options.Visibility == EffectMode::Off ? 0 : options.Samples;
+  const double refine = options.RefinementThreshold > 0 ? options.RefinementThreshold : 2.0; // 2: never
+  LinkBuilder builder(g, estimator, nodes, pool, samples, refine, state.OwnedPatchFlags(), state.Ranks());
+  const std::vector<Vec3> meanReflectance = MeanReflectance(mesh, g);
+  std::vector<ShooterLinks> links(state.Patches);
+  std::vector<double> factors;
+  while (state.Continue())
+  {
+    const int shooter = state.PickShooter();
+    const bool emitting = options.DirectToElements && state.Emitting(shooter);
+    state.TakeShot(shooter);
+    if (emitting)
+    {
+      // Direct light: every element, per-element shadow rays, nothing kept.
+      ShootToElements(state, pool, estimator, shooter, FormFactorMethod::Analytic, samples, stats, factors);
+      continue;
+    }
+    if (!links[shooter].Built)
+    {
+      links[shooter] = builder.Build(shooter, state.ShotFraction(shooter), stats);
+    }
+    state.EndShot(shooter, DistributeAlongLinks(state, pool, links[shooter], meanReflectance));
+  }
+  state.Finish(estimator);
+}
+} // namespace
+
+void SolveHierarchical(const SceneMesh& mesh, const SceneGeometry& geometry, const Visibility& rays,
+  const std::vector<Vec3>& emission, int solutions, bool grey, const SolverOptions& options,
+  SolverClock::time_point start, Solution& out)
+{
+  out.Statistics.Method = SolverMethod::Hierarchical;
+  WithChannel(grey, [&](auto channel) {
+    Shoot<decltype(channel)>(mesh, geometry, rays, emission, solutions, options, start, out);
+  });
+}
+
+} // namespace radiosity

@@ -1,0 +1,32 @@
+// Two-level hierarchical shooting: progressive refinement whose per-shot cost follows the
+// number of patches, not elements, because far and weakly lit receivers take a shot as
+// whole patches (Hanrahan, Salzman & Aupperle 1991, links refined by an energy oracle).
+#ifndef RadiosityCore_HierarchicalRadiosity_h
+#define RadiosityCore_HierarchicalRadiosity_h
+
+#include "Solve/RadiositySolver.h"
+
+#include <chrono>
+
+namespace radiosity
+{
+
+/// The SolveFunction for SolverMethod::Hierarchical.
+/// - An emitter patch's first shot (direct light) reaches every element, with shadow rays
+///   per element, exactly as in progressive refinement: shadows stay sharp.
+/// - Every other shooter links once, at its first shot, to each receiver patch: to the
+///   patch as a whole (form factors at its corners, visibility from rays between the
+///   patches) when it is far (centres more than 2 x the sum of their radii apart) and wholly in
+///   front (and, with `RefinementThreshold`, carries less than that fraction of any
+///   solution's emitted power); element by element otherwise. Later shots reuse the links:
+///   no rays, no form factors.
+/// - Patch-level energy reaches the elements at the end, interpolated from the corners
+///   (mean value coordinates), times each element's reflectance.
+/// Each link carries the k-vector of every solution: transport is computed once for all k.
+void SolveHierarchical(const SceneMesh& mesh, const SceneGeometry& geometry, const Visibility& rays,
+  const std::vector<Vec3>& emission, int solutions, bool grey, const SolverOptions& options,
+  std::chrono::steady_clock::time_point start, Solution& out);
+
+} // namespace radiosity
+
+#endif

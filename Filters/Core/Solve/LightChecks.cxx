@@ -1,0 +1,120 @@
+#include "Solve/LightChecks.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace radiosity
+{
+
+namespace
+{
+/// Fraction of rays from the light's element centroids (normal, and rings at 30 and 60
+/// degrees) that hit something closer than `near`.
+double NearHits(const SceneGeometry& g, const Visibility& rays, const std::vector<int>& elements, double near)
+{
+  int hits = 0, cast = 0;
+  for (int e : elements)
+  {
+    const Vec3& n = g.normal[e];
+    Vec3 t, b;
+    TangentFrame(n, t, b);
+    for (int r = 0; r < 9; ++r)
+    {
+      const double polar = r == 0 ? 0.0 : (r <= 4 ? 0.5236 : 1.0472);
+      const double azimuth = 1.5708 * (r % 4) + (r > 4 ? 0.7854 : 0.0);
+      const Vec3 d = n * std::cos(polar) + (t * std::cos(azimuth) + b * std::sin(azimuth)) * std::sin(polar);
+      Visibility::Hit hit;
+      ++cast;
+      hits += rays.Intersect(g.centroid[e] + n * (1e-6 * g.sceneDiagonal), d, hit) && hit.distance < near;
+    }
+  }
+  return cast ? static_cast<double>(hits) / cast : 0.0;
+}
+/// True when x lies inside convex element e (in its plane, within `tolerance` of it).
+bool InsideElement(const SceneMesh& mesh, const SceneGeometry& g, int e, const Vec3& x, double tolerance)
+{
+  const Vec3& n = g.normal[e];
+  if (std::fabs(Dot(n, x - g.centroid[e])) > tolerance)
+  {
+    return false;
+  }
+  const int* ids = mesh.Polygon(e);
+  for (int v = 0; v < mesh.PolygonSize(e); ++v)
+  {
+    const Vec3& a = mesh.points[ids[v]];
+    const Vec3& b = mesh.points[ids[(v + 1) % mesh.PolygonSize(e)]];
+    if (Dot(Cross(b - a, x - a), n) < 0)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// An element of another surface whose face the light's element lies on (same plane,
+/// parallel, centroid inside it), or -1.
+int CoplanarCover(const SceneMesh& mesh, const SceneGeometry& g, int lamp, double tolerance)
+{
+  for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
+  {
+    if (mesh.lightId[e] < 0 && std::fabs(Dot(g.normal[e], g.normal[lamp])) > 1 - 1e-9 &&
+      InsideElement(mesh, g, e, g.centroid[lamp], tolerance))
+    {
+      return e;
+    }
+  }
+  return -1;
+}
+} // namespace
+
+std::vector<std::string> CheckLights(const SceneMesh& mesh, const SceneGeometry& g, const Visibility& rays,
+  const std::vector<std::string>& names)
+{
+  std::vector<std::vector<int>> elements(names.size());
+  for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
+  {
+    if (mesh.lightId[e] >= 0 && mesh.lightId[e] < static_cast<int>(names.size()))
+    {
+      elements[mesh.lightId[e]].push_back(e);
+    }
+  }
+  std::vector<std::string> messages;
+  char text[512];
+  for (size_t l = 0; l < names.size(); ++l)
+  {
+    double area = 0;
+    bool closed = !elements[l].empty();
+    for (int e : elements[l])
+    {
+      area += g.area[e];
+      closed = closed && g.enclosed[e];
+    }
+    if (closed)
+    {
+      std::snprintf(text, sizeof(text),
+        "Light '%s' cannot emit: every element of it is closed off (inside an object, or lying in another "
+        "surface's plane, such as a lamp drawn in the ceiling).", names[l].c_str());
+      messages.push_back(text);
+      continue;
+    }
+    const int cover = elements[l].empty() ? -1 : CoplanarCover(mesh, g, elements[l][0], 1e-9 * g.sceneDiagonal);
+    if (cover >= 0)
+    {
+      std::snprintf(text, sizeof(text),
+        "Light '%s' lies in the plane of a surface it overlaps (element %d): both show in the same place and "
+        "the surface under the lamp still takes light. Move the lamp a little in front of it.", names[l].c_str(), cover);
+      messages.push_back(text);
+    }
+    const double near = 0.05 * std::sqrt(area);
+    if (!elements[l].empty() && NearHits(g, rays, elements[l], near) > 0.5)
+    {
+      std::snprintf(text, sizeof(text),
+        "Light '%s' faces a surface closer than %.3g (5 %% of its size): most of its light lands there. Is it "
+        "wound the wrong way (its front is the right-hand side of its points' order)?", names[l].c_str(), near);
+      messages.push_back(text);
+    }
+  }
+  return messages;
+}
+
+} // namespace radiosity

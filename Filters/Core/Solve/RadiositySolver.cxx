@@ -1,0 +1,106 @@
+#include "Solve/RadiositySolver.h"
+#include "Solve/HierarchicalRadiosity.h"
+#include "Solve/ProgressiveRadiosity.h"
+
+#include <algorithm>
+
+namespace radiosity
+{
+
+namespace
+{
+/// Auto: hierarchical links pay once the scene is large (even with small patches, a link
+/// made once is cheaper than a form factor per shot); the hemicube and Monte Carlo
+/// estimators exist only in progressive refinement.
+SolverMethod ResolveMethod(const SolverOptions& options, int elements)
+{
+  if (options.Solver != SolverMethod::Auto)
+  {
+    return options.Solver;
+  }
+  const bool large = elements >= 20000;
+  return large && options.Method == FormFactorMethod::Analytic ? SolverMethod::Hierarchical
+                                                               : SolverMethod::ProgressiveRefinement;
+}
+
+bool Grey3(const Vec3& v)
+{
+  return v.x == v.y && v.y == v.z;
+}
+} // namespace
+
+int ShotCap(const SolverOptions& options, int patches)
+{
+  if (options.MaximumShots > 0)
+  {
+    return options.MaximumShots;
+  }
+  return static_cast<int>(std::min<long long>(std::max<long long>(2000, 25LL * patches), 1000000000LL));
+}
+
+RadiositySolver::RadiositySolver(const SceneMesh& mesh, int threads, const ProcessGroup& group)
+  : Mesh(mesh)
+  , Geometry_(mesh)
+  , Rays_(new Visibility(mesh))
+{
+  Error_ = AgreeOnFailure(group, Rays_->Error(), "could not prepare the scene for rays");
+  if (Error_.empty())
+  {
+    SplitPatches_ = SplitSeparatedPatches(*Rays_, Mesh, Geometry_);
+    MarkEnclosed(*Rays_, Mesh, Geometry_, threads, group);
+  }
+}
+
+RadiositySolver::~RadiositySolver() = default;
+
+const std::string& RadiositySolver::Error() const
+{
+  return Error_;
+}
+
+Solution RadiositySolver::Solve(
+  const std::vector<Vec3>& emission, int solutions, const SolverOptions& options) const
+{
+  const auto start = std::chrono::steady_clock::now();
+  Solution out;
+  const int n = static_cast<int>(Geometry_.normal.size());
+  out.Solutions = solutions;
+  out.Ambient.assign(std::max(solutions, 0), Vec3());
+  if (solutions <= 0 || n == 0)
+  {
+    out.Radiosity = emission;
+    out.Statistics.Converged = true;
+    return out;
+  }
+  bool grey = options.Color == EffectMode::Off;
+  if (options.Color == EffectMode::Auto)
+  {
+    grey = std::all_of(Mesh.reflectance.begin(), Mesh.reflectance.end(), Grey3) &&
+      std::all_of(emission.begin(), emission.end(), Grey3);
+  }
+  out.Statistics.SingleChannel = grey;
+  const SolverMethod method = ResolveMethod(options, n);
+  const SolveFunction solve = method == SolverMethod::Hierarchical ? SolveHierarchical : SolveProgressive;
+  solve(Mesh, Geometry_, *Rays_, emission, solutions, grey, options, start, out);
+  return out;
+}
+
+std::vector<char> OwnedPatches(const SceneGeometry& geometry, int rank, int ranks)
+{
+  const size_t patches = geometry.patchElements.size();
+  if (ranks <= 1)
+  {
+    return std::vector<char>(patches, 1);
+  }
+  std::vector<char> owned(patches, 0);
+  std::vector<size_t> load(ranks, 0);
+  for (size_t p = 0; p < patches; ++p)
+  {
+    const auto least = std::min_element(load.begin(), load.end()); // the first on ties
+    owned[p] = least - load.begin() == rank ? 1 : 0;
+    *least += std::max<size_t>(geometry.patchElements[p].size(), 1);
+  }
+  return owned;
+}
+
+} // namespace radiosity

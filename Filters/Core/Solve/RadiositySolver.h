@@ -1,0 +1,213 @@
+// The light-tagged radiosity solver (Nielsen & Christensen, "Real-time dynamic radiosity
+// relighting", Fig. 2): options, statistics and the solution, and the one interface every
+// solver method implements (scene and options in, a Solution out).
+#ifndef RadiosityCore_RadiositySolver_h
+#define RadiosityCore_RadiositySolver_h
+
+#include "Base/ProcessGroup.h"
+#include "Geometry/Scene.h"
+#include "Solve/ShooterFormFactors.h"
+#include "Geometry/Visibility.h"
+
+#include <chrono>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace radiosity
+{
+
+/// How an optional piece of simulation is chosen. Auto simulates it only where it can
+/// change the result (decided conservatively); On always simulates it; Off never does.
+enum class EffectMode
+{
+  Auto = 0,
+  On = 1,
+  Off = 2
+};
+
+/// How the transport is organised. Both shoot from patches in order of unshot power and
+/// carry every solution along each evaluation (light tagging).
+enum class SolverMethod
+{
+  /// Hierarchical where the scene is large enough for it to pay, otherwise progressive.
+  Auto = 0,
+  /// Every shot evaluates a form factor to every element: cost shots x elements.
+  ProgressiveRefinement = 1,
+  /// Two-level links (Hanrahan et al. 1991, in shooting order): a shooter links to a far,
+  /// weakly lit receiver patch as a whole and to near or partly hidden ones element by
+  /// element. Links are made at a patch's first shot and reused by its later shots.
+  Hierarchical = 2
+};
+
+struct SolverOptions
+{
+  SolverMethod Solver = SolverMethod::Auto;
+  /// Shot cap; 0 (the default) picks it from the scene: 25 shots per patch, at least
+  /// 2000, so a scene converges at the default threshold instead of hitting the cap
+  /// (measured: 5-6 shots per patch reach 1e-3 in a furnished room).
+  int MaximumShots = 0;
+  /// Stop when every solution's remaining unshot power is below this fraction of its own
+  /// emitted power.
+  double ConvergenceThreshold = 1e-3;
+  /// Stop after this many seconds of shooting (0: no limit); the result stays valid.
+  double TimeBudget = 0;
+  FormFactorMethod Method = FormFactorMethod::Analytic;
+  /// Analytic: shadow rays per receiver and shot (0: ignore occlusion); Hemicube: the
+  /// resolution of its top face; MonteCarlo: rays per shot.
+  int Samples = 4;
+  int Threads = 0; ///< 0: all hardware threads
+  /// Add the ambient term of Cohen et al. 1988 per solution: the unshot energy, spread
+  /// evenly and interreflected in closed form, so unconverged results look plausible.
+  bool AmbientTerm = false;
+  /// Also keep each solution's direct part: emission plus the first bounce of it.
+  bool SeparateDirect = false;
+  /// Shadow rays. Auto skips them for pairs no surface can block: only a polygon with
+  /// scene geometry behind its plane can come between two surfaces that see each other,
+  /// so pairs whose bounding box meets no such polygon are unoccluded (a convex room has
+  /// none at all). Off treats every pair as unoccluded. Analytic method only: the
+  /// hemicube's and Monte Carlo's rays are the form factors themselves.
+  EffectMode Visibility = EffectMode::Auto;
+  /// Reflected light. Off keeps direct light only (emission and its first bounce).
+  EffectMode Interreflection = EffectMode::Auto;
+  /// RGB channels. Auto solves one channel when every reflectance and emission is grey
+  /// (exact, a third of the work and memory); Off always does (using the mean).
+  EffectMode Color = EffectMode::Auto;
+  /// Shooting a solution whose remaining unshot power is already below the threshold of
+  /// its own emitted power. Auto and Off stop shooting it; On keeps it going until every
+  /// solution has converged.
+  EffectMode ConvergedSolutions = EffectMode::Auto;
+  /// Called between shots with the fraction done; returning false aborts the solve, which
+  /// then keeps the valid partial result of the shots made so far.
+  std::function<bool(double)> Progress;
+  /// Hierarchical only: an emitter's first shot (its direct light) reaches every element
+  /// with its own shadow rays, as in progressive refinement. Off: it links like any other
+  /// shooter, which is much cheaper when many patches emit (the moving-light basis).
+  bool DirectToElements = true;
+  /// Hierarchical only: a far link that would carry at least this fraction of a
+  /// solution's emitted power at its first shot is resolved element by element. 0 (the
+  /// default) refines by geometry alone, so the links, and the light-tagged and combined
+  /// results, do not depend on which light shoots; measured, energy refinement gained
+  /// little (0.83 % -> 0.81 % against progressive refinement at 1e-4).
+  double RefinementThreshold = 0;
+  /// Several processes solving together: each computes the transport to its own share of
+  /// the receivers (OwnedPatches), and they agree on each shot through Group.SumAll. Every
+  /// rank passes the whole scene and gets the whole solution. Default: one process.
+  ProcessGroup Group;
+};
+
+struct SolverStatistics
+{
+  int Shots = 0;
+  int ShotCap = 0; ///< the cap in force (MaximumShots, or the one picked from the scene)
+  bool Converged = false;
+  bool Aborted = false;
+  bool OutOfTime = false;
+  /// Per shot: seconds since the start, remaining unshot power / initial (all solutions),
+  /// and the same per solution ([shot * solutions + m]).
+  std::vector<double> TimeHistory;
+  std::vector<double> RemainingHistory;
+  std::vector<double> RemainingPerSolution;
+  long long RayCount = 0;
+  long long RaysSkipped = 0;      ///< shadow rays Visibility=Auto proved unnecessary
+  long long PairsUnblockable = 0; ///< receiver-shooter pairs no surface can block
+  long long DistributionsSkipped = 0; ///< (shot, solution) pairs not distributed
+  bool SingleChannel = false;     ///< solved one grey channel instead of RGB
+  int BlockingSurfaces = -1;      ///< planes with geometry behind them (-1: not examined)
+  long long FormFactorCount = 0; ///< receiver-shooter pairs evaluated
+  SolverMethod Method = SolverMethod::ProgressiveRefinement; ///< the method that ran
+  long long PatchLinks = 0;   ///< hierarchical: shooter-to-patch links made
+  long long ElementLinks = 0; ///< hierarchical: shooter-to-element links made
+  double LinkBytes = 0;       ///< hierarchical: memory the links held
+  /// Channel-summed power shot by patches and power arriving at receivers (irradiance
+  /// times area, before reflection); equal up to discretization in a closed scene.
+  double ShotPower = 0;
+  double ReceivedPower = 0;
+  /// Energy ledger (channel-summed): what the emitters put in, what left the scene
+  /// (shot but received by no element: openings, back faces), and what is still unshot.
+  /// Emitted = absorbed + escaped + unshot, where absorbed follows from the radiosity.
+  double EmittedPower = 0;
+  double EscapedPower = 0;
+  double UnshotPower = 0;
+  /// Processes that solved together, their sums over the ranks, and the bytes each rank
+  /// put into those sums (the final exchange of the solution included).
+  int Ranks = 1;
+  long long Collectives = 0;
+  double CollectiveBytes = 0;
+  double ShotCollectiveBytes = 0; ///< the part of CollectiveBytes spent during the shots
+  double CollectiveSeconds = 0;   ///< this rank's time in the sums (waits for others too)
+  int ReceivingElements = 0; ///< the elements this rank received for
+  long long OwnRays = 0;     ///< the rays this rank cast (RayCount is the sum over ranks)
+};
+
+/// One line of the solver's account of what it simulated and what it skipped.
+struct EffectDecision
+{
+  std::string Effect;
+  bool Simulated = true;
+  std::string Reason; ///< why, and what skipping saved
+};
+
+struct Solution
+{
+  int Solutions = 0;
+  std::vector<EffectDecision> Effects;
+  std::vector<Vec3> Radiosity; ///< [element * Solutions + m], with the ambient term if asked
+  std::vector<Vec3> Direct;    ///< same layout, only with SeparateDirect
+  std::vector<Vec3> Ambient;   ///< per solution, the ambient radiosity (0 without it)
+  SolverStatistics Statistics;
+};
+
+/// What every solver method is: the prepared scene, k emissions and the options in; the
+/// solution and its statistics out (`out` arrives with Solutions and Ambient sized, and
+/// the statistics' SingleChannel decided as `grey`). A new method (a distributed or GPU
+/// one) is one more function of this shape, chosen in RadiositySolver::Solve.
+using SolveFunction = void (*)(const SceneMesh& mesh, const SceneGeometry& geometry, const Visibility& rays,
+  const std::vector<Vec3>& emission, int solutions, bool grey, const SolverOptions& options,
+  std::chrono::steady_clock::time_point start, Solution& out);
+
+/// The shot cap in force for `patches` patches (see SolverOptions::MaximumShots).
+int ShotCap(const SolverOptions& options, int patches);
+
+/// The prepared scene (geometry and the Embree scene) and the entry point: several solves
+/// (k separate solutions, or a re-solve with other emissions) reuse the preparation, and
+/// Solve runs the method the options choose.
+class RadiositySolver
+{
+public:
+  /// `threads` and `group` as in SolverOptions: the preparation's rays (MarkEnclosed) run
+  /// on that many threads, divided among the ranks of the group.
+  explicit RadiositySolver(const SceneMesh& mesh, int threads = 0, const ProcessGroup& group = ProcessGroup());
+  ~RadiositySolver();
+
+  /// Empty when the scene could be prepared.
+  const std::string& Error() const;
+  const SceneGeometry& Geometry() const { return Geometry_; }
+  const Visibility& Rays() const { return *Rays_; }
+  /// Patches split because their parts cannot see each other (see SplitSeparatedPatches);
+  /// then Geometry().elementPatch, not the mesh's PatchId, is the patch of each element.
+  int SplitPatches() const { return SplitPatches_; }
+
+  /// Solves `solutions` independent systems at once. `emission[e * solutions + m]` is the
+  /// exitance of element e in solution m. Transport (form factors, links, rays) is computed
+  /// once and the energy of every solution travels with it: this is the light tagging.
+  /// The shooter is the patch with the largest unshot power summed over solutions.
+  Solution Solve(const std::vector<Vec3>& emission, int solutions, const SolverOptions& options) const;
+
+private:
+  const SceneMesh& Mesh;
+  SceneGeometry Geometry_;
+  std::unique_ptr<Visibility> Rays_;
+  std::string Error_;
+  int SplitPatches_ = 0;
+};
+
+/// Which patches `rank` of `ranks` receives for: each patch goes to the rank with the
+/// fewest elements so far, in patch order, so the shares are even in elements and spread
+/// over the whole scene (near and far receivers cost differently). 1 = this rank's.
+std::vector<char> OwnedPatches(const SceneGeometry& geometry, int rank, int ranks);
+
+} // namespace radiosity
+
+#endif

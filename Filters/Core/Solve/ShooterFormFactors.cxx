@@ -1,0 +1,687 @@
+#include "Solve/ShooterFormFactors.h"
+#include "Geometry/FormFactor.h"
+#include "Geometry/Polygon.h"
+#include "Base/SampleStream.h"
+
+#include <algorithm>
+#include <iterator>
+#include <atomic>
+#include <cmath>
+#include <cstdint>
+#include <array>
+#include <map>
+
+namespace radiosity
+{
+
+namespace
+{
+constexpr double kPi = 3.14159265358979323846;
+
+} // namespace
+
+ShooterFormFactors::ShooterFormFactors(const SceneMesh& mesh, const SceneGeometry& geometry,
+  const Visibility& rays, const WorkerPool& pool, bool cullVisibility)
+  : Mesh(mesh)
+  , Geometry(geometry)
+  , Rays(rays)
+  , Pool(pool)
+  , CullVisibility(cullVisibility)
+{
+  // Offsets keep rays from starting or ending inside their own surfaces; relative to the
+  // scene so the result does not depend on its units.
+  Epsilon = 1e-6 * geometry.sceneDiagonal;
+  Loops.reserve(mesh.connectivity.size());
+  for (int id : mesh.connectivity)
+  {
+    Loops.push_back(mesh.points[id]);
+  }
+  const size_t patches = geometry.patchElements.size();
+  PatchTriangles.resize(patches);
+  PatchCentre.resize(patches);
+  PatchNormal.resize(patches);
+  for (size_t p = 0; p < patches; ++p)
+  {
+    double total = 0;
+    Vec3 centre, normal;
+    for (int e : geometry.patchElements[p])
+    {
+      const Vec3* loop = Loops.data() + mesh.offsets[e];
+      const std::vector<int> corners = Triangulate(loop, mesh.PolygonSize(e));
+      for (size_t t = 0; t + 2 < corners.size(); t += 3)
+      {
+        const Vec3 &a = loop[corners[t]], &b = loop[corners[t + 1]], &c = loop[corners[t + 2]];
+        const Vec3 cross = Cross(b - a, c - a);
+        total += 0.5 * Norm(cross);
+        PatchTriangles[p].push_back({ a, b, c, Normalized(cross), total });
+      }
+      centre += geometry.centroid[e] * geometry.area[e];
+      normal += geometry.normal[e] * geometry.area[e];
+    }
+    for (SampleTriangle& tri : PatchTriangles[p])
+    {
+      tri.Cdf = total > 0 ? tri.Cdf / total : 1.0;
+    }
+    PatchCentre[p] = centre * (1.0 / geometry.patchArea[p]);
+    PatchNormal[p] = Normalized(normal);
+  }
+  PatchRadius.assign(patches, 0.0);
+  for (size_t p = 0; p < patches; ++p)
+  {
+    for (const SampleTriangle& tri : PatchTriangles[p])
+    {
+      for (const Vec3* corner : { &tri.A, &tri.B, &tri.C })
+      {
+        PatchRadius[p] = std::max(PatchRadius[p], Norm(*corner - PatchCentre[p]));
+      }
+    }
+  }
+  OpenElements.assign(patches, {});
+  for (size_t p = 0; p < patches; ++p)
+  {
+    const std::vector<int>& elements = geometry.patchElements[p];
+    if (std::any_of(elements.begin(), elements.end(), [&](int e) { return geometry.sheltered[e] != 0; }))
+    {
+      std::copy_if(elements.begin(), elements.end(), std::back_inserter(OpenElements[p]),
+        [&](int e) { return geometry.sheltered[e] == 0; });
+    }
+  }
+  BuildOutlines();
+  if (CullVisibility)
+  {
+    FindBlockers();
+  }
+}
+
+void ShooterFormFactors::Box::Add(const Vec3& p)
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    Lo[c] = std::min(Lo[c], p[c]);
+    Hi[c] = std::max(Hi[c], p[c]);
+  }
+}
+
+void ShooterFormFactors::Box::Add(const Box& b)
+{
+  Add(b.Lo);
+  Add(b.Hi);
+}
+
+bool ShooterFormFactors::Box::Overlaps(const Box& b, double tolerance) const
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    if (b.Lo[c] > Hi[c] + tolerance || Lo[c] > b.Hi[c] + tolerance)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+void ShooterFormFactors::FindBlockers()
+{
+  const int n = Mesh.NumberOfPolygons();
+  ElementBox.assign(n, Box());
+  PatchBox.assign(Geometry.patchElements.size(), Box());
+  Box scene;
+  for (int e = 0; e < n; ++e)
+  {
+    for (int v = 0; v < Mesh.PolygonSize(e); ++v)
+    {
+      ElementBox[e].Add(Mesh.points[Mesh.Polygon(e)[v]]);
+    }
+    PatchBox[Geometry.elementPatch[e]].Add(ElementBox[e]);
+    scene.Add(ElementBox[e]);
+  }
+  // A segment between two points in front of (or on) a plane never crosses it. So a
+  // polygon with no scene point strictly behind its plane cannot block any pair; only
+  // the others ("blockers") can. Elements are grouped by plane: one test per plane.
+  const double eps = 1e-9 * Geometry.sceneDiagonal;
+  std::map<std::array<long long, 4>, Box> planes;
+  std::map<std::array<long long, 4>, bool> blocking;
+  std::map<int, Box> patches; // blocking elements' boxes per patch: tighter than per plane
+  for (int e = 0; e < n; ++e)
+  {
+    const Vec3& normal = Geometry.normal[e];
+    const double offset = Dot(normal, Geometry.centroid[e]);
+    const std::array<long long, 4> key = { std::llround(normal.x * 1e6), std::llround(normal.y * 1e6),
+      std::llround(normal.z * 1e6), std::llround(offset / (eps * 1e3)) };
+    auto known = blocking.find(key);
+    if (known == blocking.end())
+    {
+      bool behind = false;
+      // The scene box's corners bound every point: if none is behind, nothing is.
+      for (int corner = 0; corner < 8 && !behind; ++corner)
+      {
+        const Vec3 p{ corner & 1 ? scene.Hi.x : scene.Lo.x, corner & 2 ? scene.Hi.y : scene.Lo.y,
+          corner & 4 ? scene.Hi.z : scene.Lo.z };
+        behind = Dot(normal, p) < offset - eps;
+      }
+      if (behind)
+      {
+        behind = false;
+        for (size_t p = 0; p < Mesh.points.size() && !behind; ++p)
+        {
+          behind = Dot(normal, Mesh.points[p]) < offset - eps;
+        }
+      }
+      known = blocking.emplace(key, behind).first;
+    }
+    if (known->second)
+    {
+      planes[key].Add(ElementBox[e]);
+      patches[Geometry.elementPatch[e]].Add(ElementBox[e]);
+    }
+  }
+  BlockingPlaneCount = static_cast<int>(planes.size());
+  const auto& boxes = patches.size() <= 256 ? patches : std::map<int, Box>();
+  for (const auto& patch : boxes)
+  {
+    Blockers.push_back(patch.second);
+  }
+  for (const auto& plane : planes)
+  {
+    if (boxes.empty())
+    {
+      Blockers.push_back(plane.second);
+    }
+    AllBlockers.Add(plane.second);
+  }
+}
+
+bool ShooterFormFactors::MayBeBlocked(int patch, int element) const
+{
+  return ShaftMayBeBlocked(PatchBox[patch], ElementBox[element]);
+}
+
+bool ShooterFormFactors::MayBeBlockedBetweenPatches(int receiver, int shooter) const
+{
+  return !CullVisibility || ShaftMayBeBlocked(PatchBox[shooter], PatchBox[receiver]);
+}
+
+bool ShooterFormFactors::ShaftMayBeBlocked(const Box& from, const Box& to) const
+{
+  if (Blockers.empty())
+  {
+    return false;
+  }
+  Box shaft = from;
+  shaft.Add(to);
+  const double tolerance = 1e-9 * Geometry.sceneDiagonal;
+  if (!shaft.Overlaps(AllBlockers, tolerance))
+  {
+    return false;
+  }
+  if (Blockers.size() > 256)
+  {
+    return true; // too many to check one by one: be conservative
+  }
+  for (const Box& blocker : Blockers)
+  {
+    if (shaft.Overlaps(blocker, tolerance))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+void ShooterFormFactors::BuildOutlines()
+{
+  const size_t patches = Geometry.patchElements.size();
+  PatchOutline.assign(patches, {});
+  for (size_t p = 0; p < patches; ++p)
+  {
+    const std::vector<int>& elements = Geometry.patchElements[p];
+    const Vec3& n = PatchNormal[p];
+    bool planar = true;
+    for (int e : elements)
+    {
+      // Coplanar within a tolerance relative to the scene: then one front test and one
+      // outline serve the whole patch.
+      planar = planar && Dot(Geometry.normal[e], n) > 1 - 1e-9 &&
+        std::fabs(Dot(n, Geometry.centroid[e] - PatchCentre[p])) <= 1e-9 * Geometry.sceneDiagonal;
+    }
+    if (!planar || elements.size() < 2)
+    {
+      continue;
+    }
+    // Directed edges by point id; an edge and its reverse are interior and cancel.
+    std::map<std::pair<int, int>, int> edges;
+    for (int e : elements)
+    {
+      const int* ids = Mesh.Polygon(e);
+      const int count = Mesh.PolygonSize(e);
+      for (int v = 0; v < count; ++v)
+      {
+        const std::pair<int, int> edge(ids[v], ids[(v + 1) % count]);
+        auto reverse = edges.find({ edge.second, edge.first });
+        if (reverse != edges.end() && --reverse->second == 0)
+        {
+          edges.erase(reverse);
+        }
+        else if (reverse == edges.end())
+        {
+          ++edges[edge];
+        }
+      }
+    }
+    PatchOutline[p] = MergeCollinear(edges);
+  }
+  BuildLoops();
+}
+
+void ShooterFormFactors::BuildLoops()
+{
+  const size_t patches = Geometry.patchElements.size();
+  PatchLoop.assign(patches, {});
+  ConvexLoop.assign(patches, 0);
+  for (size_t p = 0; p < patches; ++p)
+  {
+    const std::vector<int>& elements = Geometry.patchElements[p];
+    if (elements.size() == 1)
+    {
+      for (int v = 0; v < Mesh.PolygonSize(elements[0]); ++v)
+      {
+        PatchLoop[p].push_back(Mesh.points[Mesh.Polygon(elements[0])[v]]);
+      }
+    }
+    else if (!PatchOutline[p].empty())
+    {
+      PatchLoop[p] = ChainLoop(PatchOutline[p]);
+    }
+    ConvexLoop[p] = PatchLoop[p].size() >= 3 && IsConvex(PatchLoop[p].data(), static_cast<int>(PatchLoop[p].size()));
+  }
+}
+
+std::vector<Vec3> ShooterFormFactors::MergeCollinear(const std::map<std::pair<int, int>, int>& edges) const
+{
+  // Elements put points along the patch border; without merging, the outline (and the
+  // cost of every form factor to the patch) would grow with the number of elements.
+  std::map<int, std::vector<int>> next, previous;
+  for (const auto& edge : edges)
+  {
+    if (edge.second == 1)
+    {
+      next[edge.first.first].push_back(edge.first.second);
+      previous[edge.first.second].push_back(edge.first.first);
+    }
+  }
+  auto passThrough = [&](int b) {
+    const auto in = previous.find(b), out = next.find(b);
+    if (in == previous.end() || out == next.end() || in->second.size() != 1 || out->second.size() != 1)
+    {
+      return false;
+    }
+    const Vec3& a = Mesh.points[in->second[0]];
+    const Vec3& c = Mesh.points[out->second[0]];
+    const Vec3 ab = Mesh.points[b] - a, bc = c - Mesh.points[b];
+    return Dot(ab, bc) > 0 && Norm(Cross(ab, bc)) <= 1e-9 * Norm(ab) * Norm(bc);
+  };
+  std::vector<Vec3> outline;
+  for (const auto& edge : edges)
+  {
+    const int start = edge.first.first;
+    if (edge.second != 1)
+    {
+      for (int c = 0; c < edge.second; ++c)
+      {
+        outline.push_back(Mesh.points[start]);
+        outline.push_back(Mesh.points[edge.first.second]);
+      }
+      continue;
+    }
+    if (passThrough(start))
+    {
+      continue; // inside a straight run that another edge starts
+    }
+    int end = edge.first.second;
+    for (size_t guard = 0; passThrough(end) && guard < edges.size(); ++guard)
+    {
+      end = next[end][0];
+    }
+    outline.push_back(Mesh.points[start]);
+    outline.push_back(Mesh.points[end]);
+  }
+  return outline;
+}
+
+const ShooterFormFactors::SampleTriangle& ShooterFormFactors::PickTriangle(int patch, double u) const
+{
+  const std::vector<SampleTriangle>& triangles = PatchTriangles[patch];
+  const auto it = std::lower_bound(triangles.begin(), triangles.end(), u,
+    [](const SampleTriangle& t, double value) { return t.Cdf < value; });
+  return it == triangles.end() ? triangles.back() : *it;
+}
+
+int ShooterFormFactors::FrontHit(const Vec3& origin, const Vec3& direction) const
+{
+  Visibility::Hit hit;
+  if (!Rays.Intersect(origin, direction, hit))
+  {
+    return -1;
+  }
+  // A ray reaching a polygon's back is absorbed there: back faces do not receive.
+  return Dot(Geometry.normal[hit.polygon], direction) < 0 ? hit.polygon : -1;
+}
+
+bool ShooterFormFactors::SeesClosedScene(int patch)
+{
+  if (ClosedView.empty())
+  {
+    ClosedView.assign(Geometry.patchElements.size(), -1);
+  }
+  if (ClosedView[patch] < 0)
+  {
+    // Cosine-distributed rays from stratified points: one escaping (or meeting a back
+    // face) means light can leave, and then only an excess is corrected.
+    const int probes = 64;
+    SampleStream random(static_cast<std::uint64_t>(patch), 0, 11);
+    // The frame follows the patch's first edge, so a rotated scene probes alike.
+    const Vec3& n = PatchNormal[patch];
+    const int first = Geometry.patchElements[patch][0];
+    const Vec3 edge = Mesh.points[Mesh.Polygon(first)[1]] - Mesh.points[Mesh.Polygon(first)[0]];
+    const Vec3 t = Normalized(edge - n * Dot(edge, n)), b = Cross(n, t);
+    bool closed = Planar(patch);
+    for (int r = 0; r < probes && closed; ++r)
+    {
+      const Vec3 from = SamplePoint(patch, r, probes, random);
+      const double u = (r % 8 + random.Next()) / 8, phi = 2 * 3.14159265358979323846 * (r / 8 + random.Next()) / 8;
+      const double radius = std::sqrt(u);
+      const Vec3 direction = t * (radius * std::cos(phi)) + b * (radius * std::sin(phi)) + n * std::sqrt(1 - u);
+      closed = FrontHit(from, direction) >= 0;
+    }
+    ClosedView[patch] = closed ? 1 : 0;
+  }
+  return ClosedView[patch] == 1;
+}
+
+double ShooterFormFactors::ConservationScale(int patch, double receiving)
+{
+  const double shooting = Geometry.patchOpenArea[patch];
+  if (!(receiving > 0) || !(shooting > 0))
+  {
+    return 1.0;
+  }
+  if (receiving > shooting || SeesClosedScene(patch))
+  {
+    return shooting / receiving;
+  }
+  return 1.0;
+}
+
+long long ShooterFormFactors::Compute(
+  int patch, FormFactorMethod method, int samples, int shot, std::vector<double>& factors)
+{
+  switch (method)
+  {
+    case FormFactorMethod::Hemicube:
+      return Hemicube(patch, samples, factors);
+    case FormFactorMethod::MonteCarlo:
+      return MonteCarlo(patch, samples, shot, factors);
+    case FormFactorMethod::Analytic:
+    default:
+      return Analytic(patch, samples, factors);
+  }
+}
+
+double ShooterFormFactors::PointFactor(int patch, const Vec3& x, const Vec3& normal, std::vector<Vec3>& scratch) const
+{
+  const std::vector<Vec3>& outline = PatchOutline[patch];
+  bool outlineInFront = !outline.empty();
+  for (size_t v = 0; v < outline.size() && outlineInFront; ++v)
+  {
+    outlineInFront = Dot(normal, outline[v] - x) >= 0;
+  }
+  if (outlineInFront)
+  {
+    // Planar patch wholly in front of the receiver: one outline instead of every
+    // element, and one front test (emitters radiate only from their front side).
+    if (Dot(PatchNormal[patch], x - PatchCentre[patch]) <= 0)
+    {
+      return 0;
+    }
+    return EdgeSetFormFactor(x, normal, outline.data(), static_cast<int>(outline.size() / 2));
+  }
+  if (ConvexLoop[patch] && !outline.empty())
+  {
+    // Cut by the receiver's plane: clip the patch's corner loop once, not every element.
+    if (Dot(PatchNormal[patch], x - PatchCentre[patch]) <= 0)
+    {
+      return 0;
+    }
+    const std::vector<Vec3>& loop = PatchLoop[patch];
+    return PointToPolygonFormFactor(x, normal, loop.data(), static_cast<int>(loop.size()), scratch);
+  }
+  double f = 0;
+  for (int s : Geometry.patchElements[patch])
+  {
+    if (Dot(Geometry.normal[s], x - Geometry.centroid[s]) <= 0)
+    {
+      continue;
+    }
+    f += PointToPolygonFormFactor(x, normal, Loops.data() + Mesh.offsets[s], Mesh.PolygonSize(s), scratch);
+  }
+  return f;
+}
+
+Vec3 ShooterFormFactors::SamplePoint(int patch, int r, int samples, SampleStream& random) const
+{
+  // Stratified in the area CDF, so the samples cover the whole patch.
+  const SampleTriangle& tri = PickTriangle(patch, (r + random.Next()) / samples);
+  double a = random.Next(), b = random.Next();
+  if (a + b > 1)
+  {
+    a = 1 - a;
+    b = 1 - b;
+  }
+  return tri.A + (tri.B - tri.A) * a + (tri.C - tri.A) * b + tri.Normal * Epsilon;
+}
+
+Vec3 ShooterFormFactors::ReceiverPoint(int patch, int r, int samples, SampleStream& random) const
+{
+  const std::vector<int>& open = OpenElements[patch];
+  if (open.empty())
+  {
+    return SamplePoint(patch, r, samples, random);
+  }
+  const size_t pick = std::min(open.size() - 1, static_cast<size_t>((r + random.Next()) / samples * open.size()));
+  const int e = open[pick];
+  return Geometry.centroid[e] + Geometry.normal[e] * Epsilon;
+}
+
+int ShooterFormFactors::VisibleRays(int patch, int element, int samples) const
+{
+  SampleStream random(static_cast<std::uint64_t>(patch), static_cast<std::uint64_t>(element));
+  const Vec3 from = Geometry.centroid[element] + Geometry.normal[element] * Epsilon;
+  int visible = 0;
+  for (int r = 0; r < samples; ++r)
+  {
+    visible += Rays.Occluded(from, SamplePoint(patch, r, samples, random), 0.0) ? 0 : 1;
+  }
+  return visible;
+}
+
+int ShooterFormFactors::VisibleRaysBetweenPatches(int receiver, int shooter, int samples) const
+{
+  SampleStream random(static_cast<std::uint64_t>(shooter), static_cast<std::uint64_t>(receiver), 7);
+  int visible = 0;
+  for (int r = 0; r < samples; ++r)
+  {
+    const Vec3 from = ReceiverPoint(receiver, r, samples, random);
+    visible += Rays.Occluded(from, SamplePoint(shooter, r, samples, random), 0.0) ? 0 : 1;
+  }
+  return visible;
+}
+
+double ShooterFormFactors::ReceiverFactor(int patch, int e, std::vector<Vec3>& scratch) const
+{
+  const Vec3& c = Geometry.centroid[e];
+  const double size = std::sqrt(Geometry.area[e]);
+  if (Norm(c - PatchCentre[patch]) - PatchRadius[patch] > 2 * size)
+  {
+    return PointFactor(patch, c, Geometry.normal[e], scratch);
+  }
+  // Near the shooter the factor changes across the element faster than one point can
+  // tell (a point beside a lamp sees far more of it than the element's far edge).
+  const double mean =
+    FanAverage(Mesh, Geometry, e, [&](const Vec3& x) { return PointFactor(patch, x, Geometry.normal[e], scratch); });
+  return std::isnan(mean) ? PointFactor(patch, c, Geometry.normal[e], scratch) : mean;
+}
+
+double ShooterFormFactors::ElementFactor(int patch, int e, int samples, std::vector<Vec3>& scratch, RayCounts& counts) const
+{
+  const double f = ReceiverFactor(patch, e, scratch);
+  if (f <= 0 || samples <= 0)
+  {
+    return f;
+  }
+  if (CullVisibility && !MayBeBlocked(patch, e))
+  {
+    ++counts.Unblockable;
+    return f;
+  }
+  counts.Rays += samples;
+  return f * VisibleRays(patch, e, samples) / samples;
+}
+
+void ShooterFormFactors::Count(const RayCounts& counts, int samples)
+{
+  Unblockable += counts.Unblockable;
+  Skipped += counts.Unblockable * samples;
+}
+
+long long ShooterFormFactors::Analytic(int patch, int samples, std::vector<double>& factors)
+{
+  const SceneGeometry& g = Geometry;
+  const int n = static_cast<int>(g.normal.size());
+  std::atomic<long long> rays{ 0 };
+  Pool.For(n, 64, [&](int begin, int end) {
+    thread_local std::vector<Vec3> scratch; // clipping buffer, allocated once per thread
+    RayCounts counts;
+    for (int e = begin; e < end; ++e)
+    {
+      const int q = g.elementPatch[e];
+      factors[e] = q == patch || (Receivers && !(*Receivers)[q]) ? 0.0 : ElementFactor(patch, e, samples, scratch, counts);
+    }
+    rays += counts.Rays;
+    Count(counts, samples);
+  });
+  return rays;
+}
+
+long long ShooterFormFactors::Hemicube(int patch, int resolution, std::vector<double>& factors)
+{
+  resolution = std::max(2, resolution + (resolution & 1)); // side faces need R/2 rows
+  if (resolution != CubeResolution)
+  {
+    // Delta form factors of the unit hemicube (Cohen & Greenberg 1985): top face z = 1,
+    // dF = dA / (pi (x^2 + y^2 + 1)^2); side face x = 1, dF = z dA / (pi (y^2 + z^2 + 1)^2).
+    CubeResolution = resolution;
+    CubeDirections.clear();
+    CubeWeights.clear();
+    const double d = 2.0 / resolution, dA = d * d;
+    for (int i = 0; i < resolution; ++i)
+    {
+      for (int j = 0; j < resolution; ++j)
+      {
+        const double x = -1 + (i + 0.5) * d, y = -1 + (j + 0.5) * d;
+        const double r = x * x + y * y + 1;
+        CubeDirections.push_back({ x, y, 1 });
+        CubeWeights.push_back(dA / (kPi * r * r));
+      }
+    }
+    for (int side = 0; side < 4; ++side)
+    {
+      for (int i = 0; i < resolution; ++i)
+      {
+        for (int k = 0; k < resolution / 2; ++k)
+        {
+          const double u = -1 + (i + 0.5) * d, z = (k + 0.5) * d;
+          const double r = u * u + z * z + 1;
+          const Vec3 dir = side == 0 ? Vec3{ 1, u, z }
+            : side == 1              ? Vec3{ -1, u, z }
+            : side == 2              ? Vec3{ u, 1, z }
+                                     : Vec3{ u, -1, z };
+          CubeDirections.push_back(dir);
+          CubeWeights.push_back(z * dA / (kPi * r * r));
+        }
+      }
+    }
+  }
+  const int count = static_cast<int>(CubeDirections.size());
+  HitElement.resize(count);
+  const Vec3 n = PatchNormal[patch];
+  Vec3 t, b;
+  TangentFrame(n, t, b);
+  const Vec3 origin = PatchCentre[patch] + n * Epsilon;
+  Pool.For(count, 256, [&](int begin, int end) {
+    for (int i = begin; i < end; ++i)
+    {
+      const Vec3& l = CubeDirections[i];
+      HitElement[i] = FrontHit(origin, t * l.x + b * l.y + n * l.z);
+    }
+  });
+  std::fill(factors.begin(), factors.end(), 0.0);
+  for (int i = 0; i < count; ++i) // in pixel order: deterministic sums
+  {
+    if (HitElement[i] >= 0 && Geometry.elementPatch[HitElement[i]] != patch)
+    {
+      factors[HitElement[i]] += CubeWeights[i];
+    }
+  }
+  Reciprocal(patch, Geometry.patchOpenArea[patch], factors); // the centre sees for the open part
+  return count;
+}
+
+long long ShooterFormFactors::MonteCarlo(int patch, int samples, int shot, std::vector<double>& factors)
+{
+  samples = std::max(1, samples);
+  HitElement.resize(samples);
+  Pool.For(samples, 256, [&](int begin, int end) {
+    for (int r = begin; r < end; ++r)
+    {
+      SampleStream random(static_cast<std::uint64_t>(patch), static_cast<std::uint64_t>(shot),
+        static_cast<std::uint64_t>(r) + 1);
+      const SampleTriangle& tri = PickTriangle(patch, (r + random.Next()) / samples);
+      double a = random.Next(), b = random.Next();
+      if (a + b > 1)
+      {
+        a = 1 - a;
+        b = 1 - b;
+      }
+      const Vec3 origin = tri.A + (tri.B - tri.A) * a + (tri.C - tri.A) * b + tri.Normal * Epsilon;
+      // Cosine-distributed direction (Malley): uniform on the disk, lifted to the hemisphere.
+      const double u = random.Next(), phi = 2 * kPi * random.Next();
+      const double radius = std::sqrt(u);
+      Vec3 t, bt;
+      TangentFrame(tri.Normal, t, bt);
+      const Vec3 dir = t * (radius * std::cos(phi)) + bt * (radius * std::sin(phi)) +
+        tri.Normal * std::sqrt(std::max(0.0, 1 - u));
+      HitElement[r] = FrontHit(origin, dir);
+    }
+  });
+  std::fill(factors.begin(), factors.end(), 0.0);
+  const double w = 1.0 / samples;
+  for (int r = 0; r < samples; ++r)
+  {
+    if (HitElement[r] >= 0 && Geometry.elementPatch[HitElement[r]] != patch)
+    {
+      factors[HitElement[r]] += w;
+    }
+  }
+  Reciprocal(patch, Geometry.patchArea[patch], factors); // rays from enclosed points are lost
+  return samples;
+}
+
+void ShooterFormFactors::Reciprocal(int patch, double shooterArea, std::vector<double>& factors) const
+{
+  for (size_t e = 0; e < factors.size(); ++e)
+  {
+    factors[e] = factors[e] > 0 ? factors[e] * shooterArea / Geometry.area[e] : 0.0;
+  }
+}
+
+} // namespace radiosity

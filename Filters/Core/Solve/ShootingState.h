@@ -1,0 +1,737 @@
+// The bookkeeping every shooting solver shares: radiosity and unshot energy per solution,
+// shooter choice, stopping rules, the energy ledger, the ambient term and the output.
+// The solvers differ only in how a shot's energy reaches the receivers.
+#ifndef RadiosityCore_ShootingState_h
+#define RadiosityCore_ShootingState_h
+
+#include "Geometry/PatchNodes.h"
+#include "Solve/RadiositySolver.h"
+#include "Base/WorkerPool.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace radiosity
+{
+
+/// The solver's arithmetic for an RGB value (Vec3) or a single grey channel (double).
+/// A grey scene solved as one channel gives the same numbers with a third of the work.
+struct Rgb
+{
+  using Value = Vec3;
+  static Value From(const Vec3& v) { return v; }
+  static Vec3 To(const Value& v) { return v; }
+  static double Sum(const Value& v) { return v.x + v.y + v.z; }
+  static Value Reflect(const Vec3& rho, const Value& u, double f)
+  {
+    return { rho.x * u.x * f, rho.y * u.y * f, rho.z * u.z * f };
+  }
+  static constexpr size_t Doubles = 3; ///< what a value takes in a sum over the ranks
+  static void Store(const Value& v, double* to)
+  {
+    to[0] = v.x;
+    to[1] = v.y;
+    to[2] = v.z;
+  }
+  static Value Load(const double* from) { return { from[0], from[1], from[2] }; }
+};
+
+struct Grey
+{
+  using Value = double;
+  static Value From(const Vec3& v) { return (v.x + v.y + v.z) / 3.0; }
+  static Vec3 To(Value v) { return { v, v, v }; }
+  static double Sum(Value v) { return 3.0 * v; } // powers stay comparable with RGB runs
+  static Value Reflect(const Vec3& rho, Value u, double f) { return (rho.x + rho.y + rho.z) / 3.0 * u * f; }
+  static constexpr size_t Doubles = 1;
+  static void Store(Value v, double* to) { to[0] = v; }
+  static Value Load(const double* from) { return from[0]; }
+};
+
+using SolverClock = std::chrono::steady_clock;
+
+template <typename Channel>
+class ShootingState
+{
+public:
+  using Value = typename Channel::Value;
+
+  ShootingState(const SceneMesh& mesh, const SceneGeometry& g, const std::vector<Vec3>& emission,
+    int solutions, const SolverOptions& options, SolverClock::time_point start, Solution& out)
+    : Mesh(mesh)
+    , G(g)
+    , L(solutions)
+    , Elements(static_cast<int>(g.normal.size()))
+    , Patches(static_cast<int>(g.patchElements.size()))
+    , Options(options)
+    , Start(start)
+    , Out(out)
+    , Stats(out.Statistics)
+    , Direct(options.SeparateDirect)
+    , Reflect(options.Interreflection != EffectMode::Off)
+    , Shot(solutions)
+    , ShotEmission(solutions)
+    , Distribute(solutions, 1)
+    , Active(solutions, 0)
+    , Group(options.Group)
+    , Owned(OwnedPatches(g, Group.Rank(), Group.Ranks()))
+  {
+    Initialize(emission);
+  }
+
+  /// True for the patches (and their elements) this process receives for; all of them
+  /// unless several processes solve together.
+  bool Owns(int patch) const { return Owned[patch] != 0; }
+  bool OwnsElement(int e) const { return Owned[G.elementPatch[e]] != 0; }
+  int OwnedElements() const { return OwnedElementCount; }
+  const std::vector<char>& OwnedPatchFlags() const { return Owned; }
+  /// The processes solving together (one, where its sums do nothing).
+  Collective& Ranks() { return Group; }
+
+  /// Checks the stopping rules in order (converged, shot cap, time, abort) and picks the
+  /// next shooter: the patch with the largest unshot power over the solutions still being
+  /// shot. Several ranks decide both with one sum: out of time or aborted on any rank
+  /// stops all at the same shot.
+  bool Continue()
+  {
+    if (Group.Distributed())
+    {
+      return ContinueTogether();
+    }
+    if (!UpdateActive())
+    {
+      Stats.Converged = true;
+      return false;
+    }
+    if (Stats.Shots >= Stats.ShotCap)
+    {
+      return false;
+    }
+    const bool outOfTime = Options.TimeBudget > 0 && Seconds() >= Options.TimeBudget;
+    const bool abort = !outOfTime && Options.Progress && !Options.Progress(Fraction());
+    double best = -1;
+    Next = std::max(BestOwnedPatch(best), 0);
+    Stats.OutOfTime = outOfTime;
+    Stats.Aborted = abort;
+    return !Stats.OutOfTime && !Stats.Aborted;
+  }
+
+  /// The shooter Continue picked.
+  int PickShooter() const { return Next; }
+
+  /// True while the patch still holds emission it has not shot (its first shot).
+  bool Emitting(int patch) const { return PendingEmission[patch] != 0; }
+
+  /// Moves the shooter's unshot energy into Shot[] (ShotEmission[] for the direct part).
+  void TakeShot(int shooter)
+  {
+    ShotSum = 0;
+    PendingEmission[shooter] = 0;
+    for (int m = 0; m < L; ++m)
+    {
+      const size_t i = Index(shooter, m);
+      if (!Distribute[m])
+      {
+        Shot[m] = Value();
+        ShotEmission[m] = Value();
+        ++Stats.DistributionsSkipped;
+        continue;
+      }
+      Shot[m] = Unshot[i];
+      Unshot[i] = Value();
+      ShotSum += Channel::Sum(Shot[m]);
+      if (Direct)
+      {
+        ShotEmission[m] = UnshotEmission[i];
+        UnshotEmission[i] = Value();
+      }
+    }
+    Stats.ShotPower += ShotSum * G.patchOpenArea[shooter];
+  }
+
+  /// Element e receives the shot through F(e -> shooter) = f. Thread-safe per element.
+  void Gather(int e, double f)
+  {
+    const Vec3& rho = Mesh.reflectance[e];
+    for (int m = 0; m < L; ++m)
+    {
+      Radiosity[Index(e, m)] += Channel::Reflect(rho, Shot[m], f);
+      if (Direct)
+      {
+        DirectPart[Index(e, m)] += Channel::Reflect(rho, ShotEmission[m], f);
+      }
+    }
+  }
+
+  /// What element e reflects of the shot joins its patch's unshot energy. Callers keep
+  /// one patch's deposits in one thread, in a fixed order.
+  void Deposit(int e, double f)
+  {
+    if (!Reflect)
+    {
+      return; // direct light only: what is received is not shot again
+    }
+    const int p = G.elementPatch[e];
+    if (G.patchOpenArea[p] <= 0)
+    {
+      return;
+    }
+    const double w = f * G.area[e] / G.patchOpenArea[p];
+    for (int m = 0; m < L; ++m)
+    {
+      Unshot[Index(p, m)] += Channel::Reflect(Mesh.reflectance[e], Shot[m], w);
+    }
+  }
+
+  /// A whole patch receives the shot: `nodeFactors` are F(node -> shooter) at its nodes,
+  /// interpolated over its elements in Finish; `meanFactor` is their area-weighted mean.
+  void GatherPatch(int q, const float* nodeFactors, double meanFactor, const Vec3& meanReflectance)
+  {
+    for (int j = Nodes->Begin(q); j < Nodes->End(q); ++j)
+    {
+      const double f = nodeFactors[j - Nodes->Begin(q)];
+      for (int m = 0; m < L; ++m)
+      {
+        Gathered[Index(j, m)] += Shot[m] * f;
+      }
+    }
+    if (Reflect)
+    {
+      for (int m = 0; m < L; ++m)
+      {
+        Unshot[Index(q, m)] += Channel::Reflect(meanReflectance, Shot[m], meanFactor);
+      }
+    }
+  }
+
+  /// Patch-level gathering needs a buffer per patch node; only the hierarchical solver asks.
+  void EnablePatchGathering(const PatchNodes& nodes)
+  {
+    Nodes = &nodes;
+    Gathered.assign(static_cast<size_t>(nodes.Count()) * L, Value());
+  }
+
+  /// Ledger and history after a shot; `received` is the power that reached receivers.
+  void EndShot(int shooter, double received)
+  {
+    Pending = { true, ShotSum * G.patchOpenArea[shooter], received, Seconds() };
+    ++Stats.Shots;
+    OwnedRemaining();
+    if (!Group.Distributed())
+    {
+      RecordShot(); // several ranks record it after the next sum, which brings their parts
+    }
+  }
+
+  /// The ledger and the history of the last shot, once RemainingPer and Pending.Received
+  /// hold the whole scene's.
+  void RecordShot()
+  {
+    Pending.Open = false;
+    double remaining = 0;
+    for (int m = 0; m < L; ++m)
+    {
+      remaining += RemainingPer[m];
+      Stats.RemainingPerSolution.push_back(InitialPer[m] > 0 ? RemainingPer[m] / InitialPer[m] : 0.0);
+    }
+    Stats.ReceivedPower += Pending.Received;
+    Stats.EscapedPower += Pending.Shot - Pending.Received;
+    Stats.UnshotPower = remaining;
+    Stats.RemainingHistory.push_back(remaining / Initial);
+    Stats.TimeHistory.push_back(Pending.Seconds);
+  }
+
+  /// Takes the estimator's culling counts, then Finish.
+  void Finish(const ShooterFormFactors& estimator)
+  {
+    Stats.RaysSkipped = estimator.RaysSkipped();
+    Stats.PairsUnblockable = estimator.PairsUnblockable();
+    Stats.BlockingSurfaces = estimator.BlockingPlanes();
+    Finish();
+  }
+
+  /// Adds the patch-gathered irradiance, the ambient term, and writes the output.
+  void Finish()
+  {
+    FinishGathered();
+    if (Options.AmbientTerm && Reflect)
+    {
+      AddAmbient();
+    }
+    // Each rank writes its own receivers, zero elsewhere; the sum gives every rank the whole.
+    Out.Radiosity.assign(Radiosity.size(), Vec3());
+    for (int e = 0; e < Elements; ++e)
+    {
+      const Vec3& rho = Mesh.reflectance[e];
+      for (int m = 0; m < L && OwnsElement(e); ++m)
+      {
+        const Vec3& a = Out.Ambient[m];
+        Out.Radiosity[Index(e, m)] = Channel::To(Radiosity[Index(e, m)]) + Vec3{ rho.x * a.x, rho.y * a.y, rho.z * a.z };
+      }
+    }
+    if (Direct)
+    {
+      Out.Direct.assign(DirectPart.size(), Vec3());
+      for (size_t i = 0; i < DirectPart.size(); ++i)
+      {
+        Out.Direct[i] = OwnsElement(static_cast<int>(i / L)) ? Channel::To(DirectPart[i]) : Vec3();
+      }
+    }
+    Stats.ReceivingElements = OwnedElementCount;
+    Stats.OwnRays = Stats.RayCount;
+    if (Group.Distributed())
+    {
+      GatherSolution();
+    }
+  }
+
+  /// Scales a shot's factors to every element (zero where this rank does not receive) so
+  /// that it delivers no more power than it has, exactly that in a closed scene.
+  void Conserve(ShooterFormFactors& estimator, int shooter, std::vector<double>& factors)
+  {
+    double receiving = 0;
+    for (int e = 0; e < Elements; ++e)
+    {
+      factors[e] = OwnsElement(e) ? factors[e] : 0.0;
+      receiving += factors[e] * G.area[e];
+    }
+    Group.Sum(&receiving, 1);
+    const double scale = estimator.ConservationScale(shooter, receiving);
+    if (scale != 1.0)
+    {
+      for (double& f : factors)
+      {
+        f *= scale;
+      }
+    }
+  }
+
+  /// How far the solve is: the larger of the shots against the cap and the unshot energy's
+  /// way down to the threshold on a log scale (a converging solve ends far below its cap).
+  double Fraction() const
+  {
+    double done = static_cast<double>(Stats.Shots) / std::max(Stats.ShotCap, 1);
+    const double threshold = Options.ConvergenceThreshold;
+    if (!Stats.RemainingHistory.empty() && threshold > 0 && threshold < 1 && Stats.RemainingHistory.back() > 0)
+    {
+      done = std::max(done, std::log(Stats.RemainingHistory.back()) / std::log(threshold));
+    }
+    return std::min(1.0, std::max(0.0, done));
+  }
+
+  double Seconds() const { return std::chrono::duration<double>(SolverClock::now() - Start).count(); }
+  size_t Index(int item, int m) const { return static_cast<size_t>(item) * L + m; }
+  double ShotTotal() const { return ShotSum; }
+  /// The largest fraction of its own emitted power that any solution's shot carries.
+  double ShotFraction(int shooter) const
+  {
+    double most = 0;
+    for (int m = 0; m < L; ++m)
+    {
+      if (InitialPer[m] > 0)
+      {
+        most = std::max(most, Channel::Sum(Shot[m]) * G.patchOpenArea[shooter] / InitialPer[m]);
+      }
+    }
+    return most;
+  }
+
+  const SceneMesh& Mesh;
+  const SceneGeometry& G;
+  const int L, Elements, Patches;
+  const SolverOptions& Options;
+
+private:
+  void Initialize(const std::vector<Vec3>& emission)
+  {
+    Radiosity.assign(static_cast<size_t>(Elements) * L, Value());
+    Unshot.assign(static_cast<size_t>(Patches) * L, Value());
+    PendingEmission.assign(Patches, 0);
+    for (int e = 0; e < Elements; ++e)
+    {
+      const int p = G.elementPatch[e];
+      for (int m = 0; m < L; ++m)
+      {
+        const Value v = Channel::From(emission[Index(e, m)]);
+        Radiosity[Index(e, m)] = v;
+        // Unshot radiosity of a patch: its elements' emission spread over its open area.
+        if (G.patchOpenArea[p] > 0 && !G.enclosed[e]) // enclosed emission never gets out
+        {
+          Unshot[Index(p, m)] += v * (G.area[e] / G.patchOpenArea[p]);
+        }
+        PendingEmission[p] = PendingEmission[p] || Channel::Sum(v) != 0;
+      }
+    }
+    if (Direct)
+    {
+      DirectPart = Radiosity;
+      UnshotEmission = Unshot; // the part of the unshot energy that is still emission
+    }
+    InitialPer.assign(L, 0.0);
+    for (int p = 0; p < Patches; ++p)
+    {
+      for (int m = 0; m < L; ++m)
+      {
+        InitialPer[m] += Power(p, m);
+      }
+    }
+    for (double v : InitialPer)
+    {
+      Initial += v;
+    }
+    Stats.EmittedPower = Stats.UnshotPower = Initial;
+    Stats.ShotCap = ShotCap(Options, Patches);
+    RemainingPer = InitialPer;
+    for (int e = 0; e < Elements; ++e)
+    {
+      OwnedElementCount += OwnsElement(e) ? 1 : 0;
+    }
+    for (int p = 0; p < Patches; ++p)
+    {
+      if (Owned[p])
+      {
+        OwnedList.push_back(p);
+      }
+    }
+    if (Group.Distributed())
+    {
+      OwnedRemaining(); // each rank brings its own receivers' part to the first sum
+    }
+  }
+
+  double Power(int p, int m) const { return Channel::Sum(Unshot[Index(p, m)]) * G.patchOpenArea[p]; }
+
+  /// RemainingPer over this rank's patches (all of them for one process).
+  void OwnedRemaining()
+  {
+    std::fill(RemainingPer.begin(), RemainingPer.end(), 0.0);
+    for (int p : OwnedList)
+    {
+      for (int m = 0; m < L; ++m)
+      {
+        RemainingPer[m] += Power(p, m);
+      }
+    }
+  }
+
+  /// Of this rank's patches, the one with the largest unshot power over the solutions
+  /// being shot (the first on ties; -1 when it has none), and that power.
+  int BestOwnedPatch(double& best)
+  {
+    Distribute = Mask();
+    int shooter = -1;
+    for (int p : OwnedList)
+    {
+      double sum = 0;
+      for (int m = 0; m < L; ++m)
+      {
+        sum += Distribute[m] ? Power(p, m) : 0.0;
+      }
+      if (sum > best)
+      {
+        best = sum;
+        shooter = p;
+      }
+    }
+    return shooter;
+  }
+
+  /// Continue for several ranks, with one sum per shot: a table with a row per rank holds
+  /// its stop flags, what the last shot delivered to its receivers and their remaining
+  /// unshot power, and its best patch for the next shot with that patch's power and unshot
+  /// energy. The rules then apply in the order of one process; the largest power wins
+  /// (the lowest patch on ties), and every rank takes the winner's unshot energy, which
+  /// only its owner has.
+  bool ContinueTogether()
+  {
+    const bool outOfTime = Options.TimeBudget > 0 && Seconds() >= Options.TimeBudget;
+    const bool abort = !outOfTime && Options.Progress && !Options.Progress(Fraction());
+    std::vector<double> table = SumTable(outOfTime, abort);
+    double stop[2] = { 0, 0 };
+    Pending.Received = 0;
+    std::fill(RemainingPer.begin(), RemainingPer.end(), 0.0);
+    for (size_t r = 0; r < table.size(); r += Row())
+    {
+      stop[0] += table[r];
+      stop[1] += table[r + 1];
+      Pending.Received += table[r + 4];
+      for (int m = 0; m < L; ++m)
+      {
+        RemainingPer[m] += table[r + 5 + m];
+      }
+    }
+    if (Pending.Open)
+    {
+      RecordShot();
+    }
+    const std::vector<char> picked = Distribute; // the solutions the candidates were chosen for
+    if (!UpdateActive())
+    {
+      Stats.Converged = true;
+      return false;
+    }
+    if (Stats.Shots >= Stats.ShotCap)
+    {
+      return false;
+    }
+    Stats.OutOfTime = stop[0] > 0;
+    Stats.Aborted = !Stats.OutOfTime && stop[1] > 0;
+    if (Stats.OutOfTime || Stats.Aborted)
+    {
+      return false;
+    }
+    if (Mask() != picked)
+    {
+      table = SumTable(false, false); // a solution just converged: choose again without it
+    }
+    TakeWinner(table);
+    return true;
+  }
+
+  /// The solutions a shot carries: those still being shot (all with ConvergedSolutions On).
+  std::vector<char> Mask() const
+  {
+    std::vector<char> mask(L);
+    for (int m = 0; m < L; ++m)
+    {
+      mask[m] = Options.ConvergedSolutions != EffectMode::On ? Active[m] : 1;
+    }
+    return mask;
+  }
+
+  size_t Row() const { return 5 + L + L * Channel::Doubles * (Direct ? 2 : 1); }
+
+  /// This rank's row (see ContinueTogether) in a table summed over the ranks.
+  std::vector<double> SumTable(bool outOfTime, bool abort)
+  {
+    double best = -1;
+    const int candidate = BestOwnedPatch(best);
+    const size_t d = Channel::Doubles;
+    std::vector<double> table(Row() * Group.Ranks(), 0.0);
+    double* mine = &table[Row() * Group.Rank()];
+    mine[0] = outOfTime ? 1 : 0;
+    mine[1] = abort ? 1 : 0;
+    mine[2] = best;
+    mine[3] = candidate;
+    mine[4] = Pending.Open ? Pending.Received : 0.0;
+    std::copy(RemainingPer.begin(), RemainingPer.end(), mine + 5);
+    double* values = mine + 5 + L;
+    for (int m = 0; m < L && candidate >= 0; ++m)
+    {
+      Channel::Store(Unshot[Index(candidate, m)], values + m * d);
+      if (Direct)
+      {
+        Channel::Store(UnshotEmission[Index(candidate, m)], values + (L + m) * d);
+      }
+    }
+    Group.Sum(table);
+    return table;
+  }
+
+  /// The next shooter from a summed table, with its unshot energy.
+  void TakeWinner(const std::vector<double>& table)
+  {
+    const double* winner = nullptr;
+    for (size_t r = 0; r < table.size(); r += Row())
+    {
+      const double* t = &table[r];
+      if (t[3] >= 0 && (!winner || t[2] > winner[2] || (t[2] == winner[2] && t[3] < winner[3])))
+      {
+        winner = t;
+      }
+    }
+    Next = winner ? static_cast<int>(winner[3]) : 0;
+    const size_t d = Channel::Doubles;
+    for (int m = 0; m < L && winner; ++m)
+    {
+      const double* values = winner + 5 + L;
+      Unshot[Index(Next, m)] = Channel::Load(values + m * d);
+      if (Direct)
+      {
+        UnshotEmission[Index(Next, m)] = Channel::Load(values + (L + m) * d);
+      }
+    }
+  }
+
+  /// Every rank's receivers into every rank's output, and the work counts summed.
+  void GatherSolution()
+  {
+    static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 is summed as three doubles");
+    Stats.ShotCollectiveBytes = Group.Bytes;
+    Group.Sum(reinterpret_cast<double*>(Out.Radiosity.data()), 3 * Out.Radiosity.size());
+    Group.Sum(reinterpret_cast<double*>(Out.Direct.data()), 3 * Out.Direct.size());
+    double counts[] = { static_cast<double>(Stats.RayCount), static_cast<double>(Stats.RaysSkipped),
+      static_cast<double>(Stats.PairsUnblockable), static_cast<double>(Stats.FormFactorCount),
+      static_cast<double>(Stats.PatchLinks), static_cast<double>(Stats.ElementLinks), Stats.LinkBytes };
+    Group.Sum(counts, 7);
+    Stats.RayCount = static_cast<long long>(counts[0]);
+    Stats.RaysSkipped = static_cast<long long>(counts[1]);
+    Stats.PairsUnblockable = static_cast<long long>(counts[2]);
+    Stats.FormFactorCount = static_cast<long long>(counts[3]);
+    Stats.PatchLinks = static_cast<long long>(counts[4]);
+    Stats.ElementLinks = static_cast<long long>(counts[5]);
+    Stats.LinkBytes = counts[6];
+    Stats.Ranks = Group.Ranks();
+    Stats.Collectives = Group.Calls;
+    Stats.CollectiveSeconds = Group.Seconds;
+    Stats.CollectiveBytes = Group.Bytes;
+  }
+
+  /// A solution is done once its unshot power is below the threshold of its own emission:
+  /// then every light is accurate on its own scale, however dim it is.
+  bool UpdateActive()
+  {
+    bool any = false;
+    for (int m = 0; m < L; ++m)
+    {
+      Active[m] = InitialPer[m] > 0 && RemainingPer[m] >= Options.ConvergenceThreshold * InitialPer[m];
+      any = any || Active[m];
+    }
+    return any;
+  }
+
+  void FinishGathered()
+  {
+    if (Gathered.empty())
+    {
+      return;
+    }
+    for (int e = 0; e < Elements; ++e)
+    {
+      const int q = G.elementPatch[e];
+      if (!Owned[q])
+      {
+        continue;
+      }
+      const double* w = Nodes->Weights(e);
+      for (int j = Nodes->Begin(q); j < Nodes->End(q); ++j)
+      {
+        const double weight = w[j - Nodes->Begin(q)];
+        for (int m = 0; m < L; ++m)
+        {
+          Radiosity[Index(e, m)] += Channel::Reflect(Mesh.reflectance[e], Gathered[Index(j, m)], weight);
+        }
+      }
+    }
+  }
+
+  /// Cohen et al. 1988: ambient = R * (sum_p U_p A_p) / (sum_p A_p), with the
+  /// interreflection factor R = 1 / (1 - mean reflectance) per channel; each element
+  /// shows rho * ambient on top of what it received.
+  void AddAmbient()
+  {
+    Vec3 meanRho;
+    double area = 0;
+    for (int e = 0; e < Elements; ++e)
+    {
+      meanRho += Mesh.reflectance[e] * G.area[e];
+      area += G.area[e];
+    }
+    meanRho = meanRho * (1.0 / area);
+    Vec3 interreflection;
+    for (int c = 0; c < 3; ++c)
+    {
+      // Capped: a closed scene of perfect reflectors has no finite ambient.
+      interreflection[c] = 1.0 / std::max(1.0 - meanRho[c], 1e-6);
+    }
+    for (int m = 0; m < L; ++m)
+    {
+      Vec3 unshotPower;
+      for (int p : OwnedList)
+      {
+        unshotPower += Channel::To(Unshot[Index(p, m)]) * G.patchOpenArea[p];
+      }
+      double summed[3] = { unshotPower.x, unshotPower.y, unshotPower.z };
+      Group.Sum(summed, 3);
+      unshotPower = { summed[0], summed[1], summed[2] };
+      const Vec3 a = unshotPower * (1.0 / area);
+      Out.Ambient[m] = { interreflection.x * a.x, interreflection.y * a.y, interreflection.z * a.z };
+    }
+  }
+
+  SolverClock::time_point Start;
+  Solution& Out;
+  SolverStatistics& Stats;
+  const bool Direct, Reflect;
+  std::vector<Value> Radiosity, DirectPart, Unshot, UnshotEmission, Gathered;
+  std::vector<Value> Shot, ShotEmission;
+  std::vector<char> Distribute, Active, PendingEmission;
+  std::vector<double> InitialPer, RemainingPer;
+  double Initial = 0, ShotSum = 0;
+  const PatchNodes* Nodes = nullptr;
+  Collective Group;
+  std::vector<char> Owned;
+  std::vector<int> OwnedList;
+  int OwnedElementCount = 0;
+  int Next = 0; ///< the shooter Continue picked
+  /// The last shot until it is recorded: open, its power, what this rank's receivers (all,
+  /// for one process) received, and when it ended.
+  struct
+  {
+    bool Open = false;
+    double Shot = 0, Received = 0, Seconds = 0;
+  } Pending;
+};
+
+/// Calls body(Grey()) for a single grey channel, body(Rgb()) otherwise: the solver methods
+/// are templates on the channel type.
+template <typename Body>
+void WithChannel(bool grey, const Body& body)
+{
+  if (grey)
+  {
+    body(Grey());
+  }
+  else
+  {
+    body(Rgb());
+  }
+}
+
+/// Every element receives the shot through factors[e] = F(e -> shooter); returns the
+/// power that arrived. Radiosity is updated in parallel, patch sums in element order.
+template <typename Channel>
+double DistributeToElements(ShootingState<Channel>& state, const WorkerPool& pool, const std::vector<double>& factors)
+{
+  pool.For(state.Elements, 512, [&](int begin, int end) {
+    for (int e = begin; e < end; ++e)
+    {
+      if (factors[e] > 0)
+      {
+        state.Gather(e, factors[e]);
+      }
+    }
+  });
+  double received = 0;
+  for (int e = 0; e < state.Elements; ++e)
+  {
+    if (factors[e] > 0)
+    {
+      received += state.ShotTotal() * factors[e] * state.G.area[e];
+      state.Deposit(e, factors[e]);
+    }
+  }
+  return received;
+}
+
+/// One shot from `shooter` to every element (TakeShot done): factors with their rays,
+/// scaled so the shot delivers no more power than it has (exactly that in a closed scene),
+/// then distributed to all solutions and booked.
+template <typename Channel>
+void ShootToElements(ShootingState<Channel>& state, const WorkerPool& pool, ShooterFormFactors& estimator,
+  int shooter, FormFactorMethod method, int samples, SolverStatistics& stats, std::vector<double>& factors)
+{
+  factors.resize(state.Elements);
+  // The expensive part, done once per shot whatever the number of solutions.
+  const long long rays = estimator.Compute(shooter, method, samples, stats.Shots, factors);
+  // The sampling methods cast the shot's rays on every rank: counted once, on rank 0.
+  stats.RayCount += method == FormFactorMethod::Analytic || state.Ranks().Rank() == 0 ? rays : 0;
+  stats.FormFactorCount += state.OwnedElements();
+  state.Conserve(estimator, shooter, factors);
+  state.EndShot(shooter, DistributeToElements(state, pool, factors));
+}
+
+} // namespace radiosity
+
+#endif
