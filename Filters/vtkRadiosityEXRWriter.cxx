@@ -2,6 +2,7 @@
 #include "vtkRadiosityAbort.h"
 #include "vtkRadiosityAdapter.h"
 #include "vtkRadiosityLightDefaults.h"
+#include "vtkRadiosityPreparedRays.h"
 
 #include "Image/HdrImage.h"
 
@@ -114,10 +115,10 @@ bool vtkRadiosityEXRWriter::Render(std::vector<std::string>& names, std::vector<
       return false;
     }
   }
-  radiosity::Visibility scene(mesh);
-  if (!scene.Error().empty())
+  const std::shared_ptr<const radiosity::Visibility> scene = vtkRadiosityPreparedRays::For(input, mesh, error);
+  if (!scene)
   {
-    vtkErrorMacro(<< "Cannot render: " << scene.Error() << ".");
+    vtkErrorMacro(<< "Cannot render: " << error << ".");
     return false;
   }
   radiosity::PinholeCamera camera;
@@ -138,7 +139,7 @@ bool vtkRadiosityEXRWriter::Render(std::vector<std::string>& names, std::vector<
     pointers.push_back(&layer);
   }
   const vtkRadiosityAbortWatch abort(this);
-  images = radiosity::RenderLayers(scene, pointers, camera, [this, &abort](double f) {
+  images = radiosity::RenderLayers(*scene, pointers, camera, [this, &abort](double f) {
     this->UpdateProgress(f);
     return !abort.Stop();
   });

@@ -127,6 +127,35 @@ def picture(array):
 
 layers = sum(np.asarray(c) * s * picture("Radiosity_" + n) for c, s, n in zip(COLOURS, INTENSITIES, names))
 check(np.allclose(layers, picture("Radiosity"), rtol=1e-5, atol=1e-6), "the relit picture is the sum of the light layers")
+# The ray scene is kept between renders of the same points and polygons (an animation's
+# frames), and built again when they change: a moved copy is drawn where it now is, and
+# the original again as it was.
+from vtkmodules.vtkCommonDataModel import vtkPolyData
+from vtkmodules.vtkCommonCore import vtkPoints
+
+before = picture("Radiosity")
+moved = vtkPolyData()
+moved.ShallowCopy(relit)
+shifted = vtkPoints()
+shifted.DeepCopy(relit.GetPoints())
+for p in range(shifted.GetNumberOfPoints()):
+    x, y, z = shifted.GetPoint(p)
+    shifted.SetPoint(p, x + 0.5, y, z)
+moved.SetPoints(shifted)
+writer = relight.exr_writer(moved, camera, (64, 48), "Radiosity")
+image = vtkFloatArray()
+writer.RenderImage(image)
+after = numpy_support.vtk_to_numpy(image).astype(float)
+check(np.array_equal(picture("Radiosity"), before) and not np.allclose(after, before),
+      "a render after another mesh's is the same picture; the moved mesh is drawn moved")
+for p in range(shifted.GetNumberOfPoints()):
+    x, y, z = shifted.GetPoint(p)
+    shifted.SetPoint(p, x - 0.5, y, z)  # the same points object, changed in place
+shifted.Modified()
+writer.RenderImage(image)
+back = numpy_support.vtk_to_numpy(image).astype(float)
+check(np.abs(back - before).max() < 1e-3 * before.max() and not np.allclose(back, after),
+      "points changed in place are drawn where they now are (the kept ray scene is rebuilt)")
 # The solver's own output (no relit Radiosity) with one light, and two lights whose names
 # differ only by '.' and '_' (EXR's layer separator): every light keeps its layer.
 one = relight.solve(read_polydata(os.path.join(DATA, "paper_1lights.vtp")), 1.5, 0.75, ConvergenceThreshold=1e-2).GetOutput()
