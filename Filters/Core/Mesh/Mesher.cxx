@@ -24,6 +24,12 @@ struct DoublePrecision : OpenMesh::DefaultTraits
 {
   typedef OpenMesh::Vec3d Point;
   typedef OpenMesh::Vec3d Normal;
+  /// Each element remembers its input polygon and its patch.
+  FaceTraits
+  {
+    int Source = -1;
+    int Patch = -1;
+  };
 };
 using SurfaceMesh = OpenMesh::PolyMesh_ArrayKernelT<DoublePrecision>;
 
@@ -344,8 +350,6 @@ std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& of
   std::vector<Plane> surfacePlanes;
   std::vector<SurfaceMesh> surfaces;
   std::vector<std::map<std::tuple<long long, long long, long long>, SurfaceMesh::VertexHandle>> welds;
-  // Per surface face: (input polygon, global patch id), parallel to the OpenMesh faces.
-  std::vector<std::vector<std::pair<int, int>>> faceInfo;
   // Polygons that fit in one patch share a patch with the others of their surface in the
   // same PatchSize cell of the plane: a model's many small parts would otherwise each be a
   // shooter (a house's 16k polygons made 59k patches).
@@ -419,7 +423,6 @@ std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& of
       surfacePlanes.push_back(plane);
       surfaces.emplace_back();
       welds.emplace_back();
-      faceInfo.emplace_back();
       // The sharing grid hangs from the surface's first polygon, not from world axes, so a
       // moved or rotated scene groups its small polygons the same way.
       const Vec3 edge = loop[1] - loop[0];
@@ -471,7 +474,8 @@ std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& of
         }
         face = mesh.add_face(handles);
       }
-      faceInfo[s].emplace_back(source[i], patchBase + piece.localPatch[e]);
+      mesh.data(face).Source = source[i];
+      mesh.data(face).Patch = patchBase + piece.localPatch[e];
     }
     out.patches += ownPatches;
   }
@@ -487,7 +491,6 @@ std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& of
       const auto p = mesh.point(v);
       out.points.push_back({ p[0], p[1], p[2] });
     }
-    size_t f = 0;
     for (auto face : mesh.faces())
     {
       for (auto v : mesh.fv_range(face))
@@ -495,10 +498,8 @@ std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& of
         out.connectivity.push_back(base + v.idx());
       }
       out.offsets.push_back(static_cast<int>(out.connectivity.size()));
-      out.sourcePolygon.push_back(faceInfo[s][f].first);
-      const int patch = compact.emplace(faceInfo[s][f].second, static_cast<int>(compact.size())).first->second;
-      out.patchId.push_back(patch);
-      ++f;
+      out.sourcePolygon.push_back(mesh.data(face).Source);
+      out.patchId.push_back(compact.emplace(mesh.data(face).Patch, static_cast<int>(compact.size())).first->second);
     }
   }
   out.patches = static_cast<int>(compact.size());
