@@ -256,21 +256,72 @@ void ShooterFormFactors::BuildOutlines()
       const int count = Mesh.PolygonSize(e);
       for (int v = 0; v < count; ++v)
       {
-        const std::pair<int, int> edge(ids[v], ids[(v + 1) % count]);
-        auto reverse = edges.find({ edge.second, edge.first });
-        if (reverse != edges.end() && --reverse->second == 0)
-        {
-          edges.erase(reverse);
-        }
-        else if (reverse == edges.end())
-        {
-          ++edges[edge];
-        }
+        AddEdge(edges, ids[v], ids[(v + 1) % count], 1);
       }
     }
-    PatchOutline[p] = MergeCollinear(edges);
+    PatchOutline[p] = MergeCollinear(SplitAtJunctions(edges));
   }
   BuildLoops();
+}
+
+void ShooterFormFactors::AddEdge(std::map<std::pair<int, int>, int>& edges, int from, int to, int count)
+{
+  auto reverse = edges.find({ to, from });
+  for (; count > 0 && reverse != edges.end() && reverse->second > 0; --count)
+  {
+    --reverse->second;
+  }
+  if (reverse != edges.end() && reverse->second == 0)
+  {
+    edges.erase(reverse);
+  }
+  if (count > 0)
+  {
+    edges[{ from, to }] += count;
+  }
+}
+
+std::map<std::pair<int, int>, int> ShooterFormFactors::SplitAtJunctions(const std::map<std::pair<int, int>, int>& edges) const
+{
+  // An element cut beside an uncut one (the mesher's contact cuts, or polygons meshed apart
+  // on one patch) leaves an edge whose reverse runs in two parts through a point on it (a
+  // T-junction): nothing cancels, and the outline would not close. Split what is left at
+  // the points that lie on it, then cancel again. Only the few edges left are searched.
+  std::vector<int> ends;
+  for (const auto& edge : edges)
+  {
+    ends.push_back(edge.first.first);
+    ends.push_back(edge.first.second);
+  }
+  std::sort(ends.begin(), ends.end());
+  ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+  std::map<std::pair<int, int>, int> split;
+  std::vector<std::pair<double, int>> inside;
+  for (const auto& edge : edges)
+  {
+    const Vec3& a = Mesh.points[edge.first.first];
+    const Vec3 ab = Mesh.points[edge.first.second] - a;
+    const double length2 = Dot(ab, ab);
+    inside.clear();
+    for (int w : ends)
+    {
+      const Vec3 aw = Mesh.points[w] - a;
+      const double t = length2 > 0 ? Dot(aw, ab) / length2 : 0.0;
+      if (t > 1e-9 && t < 1 - 1e-9 && Norm(Cross(ab, aw)) <= 1e-9 * length2)
+      {
+        inside.push_back({ t, w });
+      }
+    }
+    std::sort(inside.begin(), inside.end());
+    int from = edge.first.first;
+    for (const auto& stop : inside)
+    {
+      AddEdge(split, from, stop.second, edge.second);
+      from = stop.second;
+    }
+    AddEdge(split, from, edge.first.second, edge.second);
+  }
+  return split;
 }
 
 void ShooterFormFactors::BuildLoops()
