@@ -1,6 +1,8 @@
 // The solver's three form-factor methods against closed forms (shared/REFERENCES.md).
 // Each scene is one shooting polygon and one receiving polygon split into elements;
 // summing F(element -> shooter) A_element / A_shooter gives F(shooter -> receiver).
+#include "Geometry/FormFactor.h"
+#include "Geometry/Polygon.h"
 #include "Solve/ShooterFormFactors.h"
 
 #include <gtest/gtest.h>
@@ -152,4 +154,38 @@ TEST(FormFactorMethods, PointApproachingWallEdgeStaysBounded)
       0.01 * k.expected)
       << "x = " << k.x;
   }
+}
+
+TEST(PatchOutline, ClosesAcrossATJunction)
+{
+  // One 2 x 1 patch: an uncut left element beside a right half cut in two at y = 0.5, as
+  // the mesher's contact cuts leave it. The left element's edge x = 1 meets two edges.
+  SceneMesh mesh;
+  mesh.points = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 2, 0, 0 }, { 2, 1, 0 }, { 1, 0.5, 0 },
+    { 2, 0.5, 0 } };
+  mesh.AddPolygon({ 0, 1, 2, 3 });
+  mesh.AddPolygon({ 1, 4, 7, 6 });
+  mesh.AddPolygon({ 6, 7, 5, 2 });
+  for (int e = 0; e < 3; ++e)
+  {
+    mesh.reflectance.push_back({ 0.5, 0.5, 0.5 });
+    mesh.lightId.push_back(-1);
+    mesh.patchId.push_back(0);
+  }
+  const SceneGeometry geometry(mesh);
+  const Visibility rays(mesh);
+  const WorkerPool pool(1);
+  const ShooterFormFactors estimator(mesh, geometry, rays, pool);
+  const std::vector<Vec3>& loop = estimator.PatchLoops()[0];
+  ASSERT_EQ(loop.size(), 4u) << "the outline is the patch's four corners";
+  EXPECT_NEAR(PolygonArea(loop.data(), 4), 2.0, 1e-12);
+  // The outline's form factor equals the sum over the elements (a point above the middle).
+  std::vector<Vec3> scratch;
+  double sum = 0;
+  for (int e = 0; e < 3; ++e)
+  {
+    const std::vector<Vec3> element = GatherLoop(mesh.points, mesh.offsets, mesh.connectivity, e);
+    sum += PointToPolygonFormFactor({ 1, 0.5, 1 }, { 0, 0, -1 }, element.data(), mesh.PolygonSize(e), scratch);
+  }
+  EXPECT_NEAR(estimator.PointFactor(0, { 1, 0.5, 1 }, { 0, 0, -1 }, scratch), sum, 1e-12);
 }
