@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 using namespace radiosity;
@@ -73,4 +75,65 @@ TEST(HdrImage, LayeredExrKeepsEveryLightInFloat)
   EXPECT_NE(ReadExrLayer(path, "Nobody", rw, rh, back).find("no channel Nobody.R"), std::string::npos);
   std::remove(path.c_str());
   EXPECT_NE(WriteExrLayers(path, w, h, { "x" }, { std::vector<float>(5) }).find("do not match"), std::string::npos);
+}
+
+TEST(HdrImage, PacketsOfRaysHitWhatSingleRaysHit)
+{
+  // A box of 6 x 6 x 6 quads seen from inside at grazing and edge-on angles: every ray of a
+  // packet (with a last, partial packet) reports the ray's own single-ray hit.
+  SceneMesh mesh;
+  const int n = 6;
+  auto face = [&](const Vec3& o, const Vec3& u, const Vec3& v) {
+    const int base = static_cast<int>(mesh.points.size());
+    for (int j = 0; j <= n; ++j)
+    {
+      for (int i = 0; i <= n; ++i)
+      {
+        mesh.points.push_back(o + u * (double(i) / n) + v * (double(j) / n));
+      }
+    }
+    for (int j = 0; j < n; ++j)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        const int a = base + j * (n + 1) + i;
+        mesh.AddPolygon({ a, a + 1, a + n + 2, a + n + 1 });
+      }
+    }
+  };
+  face({ 0, 0, 0 }, { 0, 1, 0 }, { 1, 0, 0 });
+  face({ 0, 0, 1 }, { 1, 0, 0 }, { 0, 1, 0 });
+  face({ 0, 0, 0 }, { 1, 0, 0 }, { 0, 0, 1 });
+  face({ 0, 1, 0 }, { 0, 0, 1 }, { 1, 0, 0 });
+  face({ 0, 0, 0 }, { 0, 0, 1 }, { 0, 1, 0 });
+  face({ 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 });
+  const Visibility scene(mesh);
+  ASSERT_EQ(scene.Error(), "");
+  const Vec3 origin{ 0.3, 0.6, 0.45 };
+  std::vector<Vec3> directions;
+  for (int k = 0; k < 301; ++k)
+  {
+    const double a = 0.37 * k, b = 0.011 * k - 1.5;
+    directions.push_back({ std::cos(a) * std::cos(b), std::sin(a) * std::cos(b), std::sin(b) });
+  }
+  int compared = 0;
+  for (size_t first = 0; first < directions.size(); first += Visibility::PacketSize)
+  {
+    const int count = static_cast<int>(std::min<size_t>(Visibility::PacketSize, directions.size() - first));
+    Visibility::Hit hits[Visibility::PacketSize];
+    bool found[Visibility::PacketSize];
+    scene.IntersectPacket(origin, &directions[first], count, hits, found);
+    for (int i = 0; i < count; ++i)
+    {
+      Visibility::Hit single;
+      ASSERT_EQ(found[i], scene.Intersect(origin, directions[first + i], single));
+      ASSERT_TRUE(found[i]) << "a ray from inside a closed box escaped";
+      EXPECT_EQ(hits[i].polygon, single.polygon);
+      EXPECT_EQ(hits[i].u, single.u);
+      EXPECT_EQ(hits[i].v, single.v);
+      EXPECT_EQ(hits[i].distance, single.distance);
+      ++compared;
+    }
+  }
+  EXPECT_EQ(compared, 301);
 }

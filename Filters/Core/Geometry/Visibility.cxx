@@ -190,27 +190,74 @@ bool Visibility::Intersect(const Vec3& origin, const Vec3& direction, Hit& hit) 
   rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(Impl->Scene, &context, &rh);
-  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID)
+  return Decode(rh.hit.geomID, rh.hit.primID, rh.hit.u, rh.hit.v, rh.ray.tfar * Norm(direction), hit);
+}
+
+void Visibility::IntersectPacket(const Vec3& origin, const Vec3* directions, int count, Hit* hits, bool* found) const
+{
+  static const bool packets = Impl->Device && rtcGetDeviceProperty(Impl->Device, RTC_DEVICE_PROPERTY_NATIVE_RAY8_SUPPORTED);
+  if (!packets || count > PacketSize)
+  {
+    for (int i = 0; i < count; ++i)
+    {
+      found[i] = Intersect(origin, directions[i], hits[i]);
+    }
+    return;
+  }
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT; // one origin, neighbouring directions
+  alignas(32) RTCRayHit8 rh;
+  alignas(32) int valid[PacketSize];
+  const Vec3 o = origin - Impl->Origin;
+  for (int i = 0; i < PacketSize; ++i)
+  {
+    const Vec3& d = directions[std::min(i, count - 1)];
+    valid[i] = i < count ? -1 : 0;
+    rh.ray.org_x[i] = static_cast<float>(o.x);
+    rh.ray.org_y[i] = static_cast<float>(o.y);
+    rh.ray.org_z[i] = static_cast<float>(o.z);
+    rh.ray.dir_x[i] = static_cast<float>(d.x);
+    rh.ray.dir_y[i] = static_cast<float>(d.y);
+    rh.ray.dir_z[i] = static_cast<float>(d.z);
+    rh.ray.tnear[i] = 0.0f;
+    rh.ray.tfar[i] = std::numeric_limits<float>::infinity();
+    rh.ray.time[i] = 0.0f;
+    rh.ray.mask[i] = 0xFFFFFFFFu;
+    rh.ray.id[i] = static_cast<unsigned>(i);
+    rh.ray.flags[i] = 0;
+    rh.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.primID[i] = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+  }
+  rtcIntersect8(valid, Impl->Scene, &context, &rh);
+  for (int i = 0; i < count; ++i)
+  {
+    found[i] = Decode(rh.hit.geomID[i], rh.hit.primID[i], rh.hit.u[i], rh.hit.v[i],
+      rh.ray.tfar[i] * Norm(directions[i]), hits[i]);
+  }
+}
+
+bool Visibility::Decode(unsigned geometry, unsigned triangle, float u, float v, double distance, Hit& hit) const
+{
+  if (geometry == RTC_INVALID_GEOMETRY_ID)
   {
     return false;
   }
-  hit.distance = rh.ray.tfar * Norm(direction);
-  if (rh.hit.geomID != Impl->MeshId) // a dynamic object: no polygon of the mesh
+  hit.distance = distance;
+  hit.u = u;
+  hit.v = v;
+  if (geometry != Impl->MeshId) // a dynamic object: no polygon of the mesh
   {
     hit.polygon = -1;
     hit.corner[0] = hit.corner[1] = hit.corner[2] = -1;
-    hit.u = rh.hit.u;
-    hit.v = rh.hit.v;
     return true;
   }
-  const unsigned tri = rh.hit.primID;
-  hit.polygon = Impl->TrianglePolygon[tri];
+  hit.polygon = Impl->TrianglePolygon[triangle];
   for (int c = 0; c < 3; ++c)
   {
-    hit.corner[c] = static_cast<int>(Impl->TriangleCorners[3 * tri + c]);
+    hit.corner[c] = static_cast<int>(Impl->TriangleCorners[3 * triangle + c]);
   }
-  hit.u = rh.hit.u;
-  hit.v = rh.hit.v;
   return true;
 }
 

@@ -1,4 +1,5 @@
 #include "Image/HdrImage.h"
+#include "Base/WorkerPool.h"
 
 #include "Base/AtomicFile.h"
 
@@ -62,6 +63,25 @@ std::string ValidateCamera(const PinholeCamera& c)
   return why.str();
 }
 
+namespace
+{
+/// Writes the layers' values at a hit, interpolated over its triangle, into pixel `at`.
+void Shade(const Visibility::Hit& hit, const std::vector<const std::vector<Vec3>*>& layers,
+  std::vector<std::vector<float>>& images, size_t at)
+{
+  const double w0 = 1.0 - hit.u - hit.v;
+  for (size_t l = 0; l < layers.size(); ++l)
+  {
+    const std::vector<Vec3>& values = *layers[l];
+    const Vec3 value = values[hit.corner[0]] * w0 + values[hit.corner[1]] * hit.u + values[hit.corner[2]] * hit.v;
+    float* px = &images[l][at];
+    px[0] = static_cast<float>(value.x);
+    px[1] = static_cast<float>(value.y);
+    px[2] = static_cast<float>(value.z);
+  }
+}
+} // namespace
+
 std::vector<std::vector<float>> RenderLayers(const Visibility& scene,
   const std::vector<const std::vector<Vec3>*>& layers, const PinholeCamera& camera,
   const std::function<bool(double)>& progress)
@@ -73,32 +93,45 @@ std::vector<std::vector<float>> RenderLayers(const Visibility& scene,
   const Vec3 up = Cross(right, forward);
   const double halfHeight = std::tan(0.5 * camera.ViewAngle * 3.14159265358979323846 / 180.0);
   const double halfWidth = halfHeight * w / h;
-  for (int y = 0; y < h; ++y)
+  // One packet of rays per run of pixels along a row; rows in parallel, a band of 16 rows
+  // at a time so that progress and abort are heard from this thread.
+  const int run = Visibility::PacketSize;
+  const WorkerPool pool(0);
+  auto renderRow = [&](int y) {
+    Vec3 directions[Visibility::PacketSize];
+    Visibility::Hit hits[Visibility::PacketSize];
+    bool found[Visibility::PacketSize];
+    const double sy = (1.0 - 2.0 * (y + 0.5) / h) * halfHeight;
+    for (int x0 = 0; x0 < w; x0 += run)
+    {
+      const int count = std::min(run, w - x0);
+      for (int i = 0; i < count; ++i)
+      {
+        const double sx = (2.0 * (x0 + i + 0.5) / w - 1.0) * halfWidth;
+        directions[i] = forward + right * sx + up * sy;
+      }
+      scene.IntersectPacket(camera.Position, directions, count, hits, found);
+      for (int i = 0; i < count; ++i)
+      {
+        if (found[i] && hits[i].polygon >= 0) // a miss, or a dynamic object: no values there
+        {
+          Shade(hits[i], layers, images, 3 * (static_cast<size_t>(y) * w + x0 + i));
+        }
+      }
+    }
+  };
+  for (int band = 0; band < h; band += 16)
   {
-    if (progress && y % 16 == 0 && !progress(static_cast<double>(y) / h))
+    if (progress && !progress(static_cast<double>(band) / h))
     {
       return std::vector<std::vector<float>>(layers.size());
     }
-    for (int x = 0; x < w; ++x)
-    {
-      const double sx = (2.0 * (x + 0.5) / w - 1.0) * halfWidth;
-      const double sy = (1.0 - 2.0 * (y + 0.5) / h) * halfHeight;
-      Visibility::Hit hit;
-      if (!scene.Intersect(camera.Position, forward + right * sx + up * sy, hit))
+    pool.For(std::min(16, h - band), 1, [&](int begin, int end) {
+      for (int y = band + begin; y < band + end; ++y)
       {
-        continue;
+        renderRow(y);
       }
-      const double w0 = 1.0 - hit.u - hit.v;
-      for (size_t l = 0; l < layers.size(); ++l)
-      {
-        const std::vector<Vec3>& values = *layers[l];
-        const Vec3 value = values[hit.corner[0]] * w0 + values[hit.corner[1]] * hit.u + values[hit.corner[2]] * hit.v;
-        float* px = &images[l][3 * (static_cast<size_t>(y) * w + x)];
-        px[0] = static_cast<float>(value.x);
-        px[1] = static_cast<float>(value.y);
-        px[2] = static_cast<float>(value.z);
-      }
-    }
+    });
   }
   return images;
 }
