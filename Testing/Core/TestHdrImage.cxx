@@ -136,4 +136,31 @@ TEST(HdrImage, PacketsOfRaysHitWhatSingleRaysHit)
     }
   }
   EXPECT_EQ(compared, 301);
+  // Shadow rays in packets: segments from points on the floor to one light above a wall
+  // standing inside the box, as the moving-light shader casts them.
+  SceneMesh walled = mesh;
+  const int base = static_cast<int>(walled.points.size());
+  walled.points.insert(walled.points.end(), { { 0.5, 0, 0 }, { 0.5, 1, 0 }, { 0.5, 1, 0.6 }, { 0.5, 0, 0.6 } });
+  walled.AddPolygon({ base, base + 1, base + 2, base + 3 });
+  const Visibility withWall(walled);
+  const Vec3 light{ 0.2, 0.5, 0.9 };
+  std::vector<Vec3> floor;
+  for (int k = 0; k < 203; ++k)
+  {
+    floor.push_back({ 0.005 * k, 0.3 + 0.002 * k, 1e-6 });
+  }
+  int blockedCount = 0;
+  for (size_t first = 0; first < floor.size(); first += Visibility::PacketSize)
+  {
+    const int count = static_cast<int>(std::min<size_t>(Visibility::PacketSize, floor.size() - first));
+    bool blocked[Visibility::PacketSize];
+    withWall.OccludedPacket(&floor[first], light, count, 1e-6, blocked);
+    for (int i = 0; i < count; ++i)
+    {
+      EXPECT_EQ(blocked[i], withWall.Occluded(floor[first + i], light, 1e-6)) << "point " << first + i;
+      blockedCount += blocked[i] ? 1 : 0;
+    }
+  }
+  EXPECT_GT(blockedCount, 50); // behind the wall, seen from the light
+  EXPECT_LT(blockedCount, 203);
 }

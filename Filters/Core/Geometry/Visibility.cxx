@@ -193,10 +193,63 @@ bool Visibility::Intersect(const Vec3& origin, const Vec3& direction, Hit& hit) 
   return Decode(rh.hit.geomID, rh.hit.primID, rh.hit.u, rh.hit.v, rh.ray.tfar * Norm(direction), hit);
 }
 
+namespace
+{
+/// True where the device traces packets of 8 natively (else packets would be emulated).
+bool PacketsOf8(RTCDevice device)
+{
+  static const bool native = device && rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_NATIVE_RAY8_SUPPORTED);
+  return native;
+}
+
+/// Ray i of a packet: from `origin` along `direction` up to `tfar` (in direction lengths).
+void SetPacketRay(RTCRay8& ray, int i, const Vec3& origin, const Vec3& direction, float tfar)
+{
+  ray.org_x[i] = static_cast<float>(origin.x);
+  ray.org_y[i] = static_cast<float>(origin.y);
+  ray.org_z[i] = static_cast<float>(origin.z);
+  ray.dir_x[i] = static_cast<float>(direction.x);
+  ray.dir_y[i] = static_cast<float>(direction.y);
+  ray.dir_z[i] = static_cast<float>(direction.z);
+  ray.tnear[i] = 0.0f;
+  ray.tfar[i] = tfar;
+  ray.time[i] = 0.0f;
+  ray.mask[i] = 0xFFFFFFFFu;
+  ray.id[i] = static_cast<unsigned>(i);
+  ray.flags[i] = 0;
+}
+} // namespace
+
+void Visibility::OccludedPacket(const Vec3* from, const Vec3& to, int count, double tolerance, bool* blocked) const
+{
+  if (!PacketsOf8(Impl->Device) || count > PacketSize)
+  {
+    for (int i = 0; i < count; ++i)
+    {
+      blocked[i] = Occluded(from[i], to, tolerance);
+    }
+    return;
+  }
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  alignas(32) RTCRay8 ray;
+  alignas(32) int valid[PacketSize];
+  for (int i = 0; i < PacketSize; ++i)
+  {
+    const Vec3& start = from[std::min(i, count - 1)];
+    valid[i] = i < count ? -1 : 0;
+    SetPacketRay(ray, i, start - Impl->Origin, to - start, static_cast<float>(1.0 - tolerance));
+  }
+  rtcOccluded8(valid, Impl->Scene, &context, &ray);
+  for (int i = 0; i < count; ++i)
+  {
+    blocked[i] = ray.tfar[i] < 0.0f;
+  }
+}
+
 void Visibility::IntersectPacket(const Vec3& origin, const Vec3* directions, int count, Hit* hits, bool* found) const
 {
-  static const bool packets = Impl->Device && rtcGetDeviceProperty(Impl->Device, RTC_DEVICE_PROPERTY_NATIVE_RAY8_SUPPORTED);
-  if (!packets || count > PacketSize)
+  if (!PacketsOf8(Impl->Device) || count > PacketSize)
   {
     for (int i = 0; i < count; ++i)
     {
@@ -212,20 +265,8 @@ void Visibility::IntersectPacket(const Vec3& origin, const Vec3* directions, int
   const Vec3 o = origin - Impl->Origin;
   for (int i = 0; i < PacketSize; ++i)
   {
-    const Vec3& d = directions[std::min(i, count - 1)];
     valid[i] = i < count ? -1 : 0;
-    rh.ray.org_x[i] = static_cast<float>(o.x);
-    rh.ray.org_y[i] = static_cast<float>(o.y);
-    rh.ray.org_z[i] = static_cast<float>(o.z);
-    rh.ray.dir_x[i] = static_cast<float>(d.x);
-    rh.ray.dir_y[i] = static_cast<float>(d.y);
-    rh.ray.dir_z[i] = static_cast<float>(d.z);
-    rh.ray.tnear[i] = 0.0f;
-    rh.ray.tfar[i] = std::numeric_limits<float>::infinity();
-    rh.ray.time[i] = 0.0f;
-    rh.ray.mask[i] = 0xFFFFFFFFu;
-    rh.ray.id[i] = static_cast<unsigned>(i);
-    rh.ray.flags[i] = 0;
+    SetPacketRay(rh.ray, i, o, directions[std::min(i, count - 1)], std::numeric_limits<float>::infinity());
     rh.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
     rh.hit.primID[i] = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;

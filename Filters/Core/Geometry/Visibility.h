@@ -46,6 +46,10 @@ public:
   static constexpr int PacketSize = 8;
   void IntersectPacket(const Vec3& origin, const Vec3* directions, int count, Hit* hits, bool* found) const;
 
+  /// Occluded for up to 8 segments that end at one point (shadow rays to a light): one
+  /// packet where the device takes them; `blocked[i]` as Occluded(from[i], to, tolerance).
+  void OccludedPacket(const Vec3* from, const Vec3& to, int count, double tolerance, bool* blocked) const;
+
   /// Puts `objects` (null: none) in the scene as a second geometry beside the mesh's,
   /// replacing the previous ones: moving objects that block rays without a rebuild of the
   /// mesh's triangles. Their hits report polygon -1. False with Error() set on failure.

@@ -49,49 +49,90 @@ long long MovingLightShader::Direct(
   const SceneGeometry& g = Geometry_;
   const int n = static_cast<int>(g.normal.size());
   direct.assign(n, Vec3());
-  const double eps = 1e-6 * g.sceneDiagonal;
   std::atomic<long long> rays{ 0 };
   pool.For(n, 128, [&](int begin, int end) {
+    std::vector<Vec3> irradiance(end - begin);
     long long cast = 0;
+    // Light by light, the chunk's shadow rays go in packets (they all end at the light);
+    // each element still sums its lights in their order, so the result is as one by one.
+    for (const MovingLight& light : lights)
+    {
+      cast += ShadeChunk(light, begin, end, irradiance);
+    }
     for (int e = begin; e < end; ++e)
     {
-      const Vec3& x = g.centroid[e];
-      Vec3 irradiance;
-      for (const MovingLight& light : lights)
-      {
-        const Vec3 d = light.Position - x;
-        const double r2 = Dot(d, d);
-        const double cosReceiver = Dot(g.normal[e], d);
-        if (!(r2 > 0) || cosReceiver <= 0)
-        {
-          continue;
-        }
-        const double r = std::sqrt(r2);
-        double intensity = light.Intensity;
-        if (Dot(light.Normal, light.Normal) > 0)
-        {
-          intensity *= std::max(0.0, -Dot(Normalized(light.Normal), d) / r);
-        }
-        if (intensity <= 0)
-        {
-          continue;
-        }
-        ++cast;
-        // The segment stops short of the light, so a light touching a surface still shines.
-        if (Rays->Occluded(x + g.normal[e] * eps, light.Position, 1e-6))
-        {
-          continue;
-        }
-        const double near = NearFieldFactor(Scene, g, e, light);
-        const double scale = intensity * (near > 0 ? near : (cosReceiver / r) / r2);
-        irradiance += light.Color * scale;
-      }
       const Vec3& rho = Scene.reflectance[e];
-      direct[e] = { rho.x * irradiance.x, rho.y * irradiance.y, rho.z * irradiance.z };
+      const Vec3& in = irradiance[e - begin];
+      direct[e] = { rho.x * in.x, rho.y * in.y, rho.z * in.z };
     }
     rays += cast;
   });
   return rays;
+}
+
+long long MovingLightShader::ShadeChunk(const MovingLight& light, int begin, int end, std::vector<Vec3>& irradiance) const
+{
+  const SceneGeometry& g = Geometry_;
+  const double eps = 1e-6 * g.sceneDiagonal;
+  int waiting[Visibility::PacketSize];
+  double intensity[Visibility::PacketSize];
+  Vec3 from[Visibility::PacketSize];
+  int count = 0;
+  long long cast = 0;
+  auto flush = [&]() {
+    bool blocked[Visibility::PacketSize];
+    // The segments stop short of the light, so a light touching a surface still shines.
+    Rays->OccludedPacket(from, light.Position, count, 1e-6, blocked);
+    for (int i = 0; i < count; ++i)
+    {
+      if (!blocked[i])
+      {
+        irradiance[waiting[i] - begin] += light.Color * Unoccluded(light, waiting[i], intensity[i]);
+      }
+    }
+    count = 0;
+  };
+  for (int e = begin; e < end; ++e)
+  {
+    const Vec3 d = light.Position - g.centroid[e];
+    const double r2 = Dot(d, d);
+    if (!(r2 > 0) || Dot(g.normal[e], d) <= 0)
+    {
+      continue;
+    }
+    double strength = light.Intensity;
+    if (Dot(light.Normal, light.Normal) > 0)
+    {
+      strength *= std::max(0.0, -Dot(Normalized(light.Normal), d) / std::sqrt(r2));
+    }
+    if (strength <= 0)
+    {
+      continue;
+    }
+    ++cast;
+    waiting[count] = e;
+    intensity[count] = strength;
+    from[count] = g.centroid[e] + g.normal[e] * eps;
+    if (++count == Visibility::PacketSize)
+    {
+      flush();
+    }
+  }
+  if (count > 0)
+  {
+    flush();
+  }
+  return cast;
+}
+
+double MovingLightShader::Unoccluded(const MovingLight& light, int e, double intensity) const
+{
+  const SceneGeometry& g = Geometry_;
+  const Vec3 d = light.Position - g.centroid[e];
+  const double r2 = Dot(d, d);
+  const double r = std::sqrt(r2);
+  const double near = NearFieldFactor(Scene, g, e, light);
+  return intensity * (near > 0 ? near : (Dot(g.normal[e], d) / r) / r2);
 }
 
 } // namespace radiosity

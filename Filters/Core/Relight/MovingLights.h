@@ -44,6 +44,12 @@ public:
     std::vector<Vec3>& direct) const;
 
 private:
+  /// Adds the light's direct irradiance to elements [begin, end) (irradiance[e - begin]);
+  /// returns the shadow rays cast.
+  long long ShadeChunk(const MovingLight& light, int begin, int end, std::vector<Vec3>& irradiance) const;
+  /// What the light gives element e where nothing blocks it, at `intensity` toward e.
+  double Unoccluded(const MovingLight& light, int e, double intensity) const;
+
   const SceneMesh& Scene;
   SceneGeometry Geometry_;
   std::unique_ptr<Visibility> Rays;
