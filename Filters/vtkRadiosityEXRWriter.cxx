@@ -21,6 +21,7 @@
 vtkStandardNewMacro(vtkRadiosityEXRWriter);
 
 vtkRadiosityEXRWriter::vtkRadiosityEXRWriter()
+  : Prepared(new vtkRadiosityPreparedRays)
 {
   this->SetArrayName("Radiosity");
 }
@@ -29,6 +30,12 @@ vtkRadiosityEXRWriter::~vtkRadiosityEXRWriter()
 {
   this->SetFileName(nullptr);
   this->SetArrayName(nullptr);
+  delete this->Prepared;
+}
+
+int vtkRadiosityEXRWriter::GetRaySceneBuilds() const
+{
+  return this->Prepared->Builds();
 }
 
 int vtkRadiosityEXRWriter::FillInputPortInformation(int, vtkInformation* info)
@@ -115,7 +122,7 @@ bool vtkRadiosityEXRWriter::Render(std::vector<std::string>& names, std::vector<
       return false;
     }
   }
-  const std::shared_ptr<const radiosity::Visibility> scene = vtkRadiosityPreparedRays::For(input, mesh, error);
+  const std::shared_ptr<const radiosity::Visibility> scene = this->Prepared->For(input, mesh, error);
   if (!scene)
   {
     vtkErrorMacro(<< "Cannot render: " << error << ".");

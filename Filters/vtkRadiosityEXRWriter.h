@@ -25,6 +25,7 @@
 #include <vector> // for the pixel buffer
 
 class vtkFloatArray;
+class vtkRadiosityPreparedRays;
 
 class VTKRADIOSITYFILTERS_EXPORT vtkRadiosityEXRWriter : public vtkWriter
 {
@@ -73,6 +74,13 @@ public:
    */
   static bool ReadLayer(const char* fileName, const char* layer, vtkFloatArray* rgb, int size[2]);
 
+  /**
+   * How many ray scenes this writer has built. It keeps the last one and reuses it while
+   * the input's points and polygons are unchanged (an animation's frames), so writing
+   * frame after frame builds one.
+   */
+  int GetRaySceneBuilds() const;
+
 protected:
   vtkRadiosityEXRWriter();
   ~vtkRadiosityEXRWriter() override;
@@ -93,6 +101,7 @@ private:
   double ViewAngle = 30;
   int Size[2] = { 640, 480 };
   bool LightLayers = false;
+  vtkRadiosityPreparedRays* Prepared;
 };
 
 #endif

@@ -166,11 +166,9 @@ double ElementSizeEverywhere(vtkRadiosityMesher* self, vtkMultiProcessController
   std::string error;
   const bool usable = input && input->GetNumberOfCells() > 0 && !vtkRadiosityAdapter::FailedUpstream(input) &&
     vtkRadiosityAdapter::CopyPolygons(input, mesh, error);
+  const radiosity::ElementCounter counter(mesh.points, mesh.offsets, mesh.connectivity, wholeScene);
   auto count = [&](double size) {
-    const double here =
-      usable ? radiosity::CountElements(
-                 mesh.points, mesh.offsets, mesh.connectivity, self->GetPatchSize(), size, wholeScene)
-             : 0;
+    const double here = usable ? counter(self->GetPatchSize(), size) : 0;
     return static_cast<double>(vtkRadiosityPieces::SumOverRanks(parallel, static_cast<long long>(here)));
   };
   const double budget = static_cast<double>(self->GetMaximumElements());
@@ -212,8 +210,14 @@ int vtkRadiosityMesher::RequestData(
     radiosity::SceneMesh whole;
     if (parallel)
     {
+      vtkNew<vtkPolyData> shape; // the polygons only: the other ranks need no arrays
+      if (!upstream && input)
+      {
+        shape->SetPoints(input->GetPoints());
+        shape->SetPolys(input->GetPolys());
+      }
       vtkNew<vtkPolyData> gathered;
-      vtkRadiosityPieces::AllGather(parallel, upstream ? nullptr : input, gathered);
+      vtkRadiosityPieces::AllGather(parallel, shape, gathered);
       std::string ignored; // a rank's own piece reports its problems below
       vtkRadiosityAdapter::CopyPolygons(gathered, whole, ignored);
     }

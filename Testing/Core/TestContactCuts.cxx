@@ -64,12 +64,27 @@ TEST(ContactCuts, AWallStandingInsideAFloorIsItsContactAndTheFloorsBorderIsNot)
   EXPECT_TRUE(contacts[2].empty());
 }
 
-TEST(ContactCuts, AWallFloatingAboveTheFloorIsNoContact)
+TEST(ContactCuts, AWallWithinTheToleranceStandsOnTheFloorAndOneAboveItDoesNot)
 {
+  for (double gap : { 0.5e-6, 2e-6, 1e-3 })
+  {
+    FloorAndWalls scene(1.8);
+    for (int k = scene.offsets[1]; k < scene.offsets[2]; ++k)
+    {
+      scene.points[scene.connectivity[k]].z += gap; // light passes under a wall that floats
+    }
+    EXPECT_EQ(FindContacts(scene.Arrays(), scene.Arrays(), 1e-6)[0].size(), gap < 1e-6 ? 1u : 0u) << "gap " << gap;
+  }
+}
+
+TEST(ContactCuts, OnlySurfacesInFrontStand)
+{
+  // The same wall hanging below the floor (the storey beneath a slab drawn as one face)
+  // touches the floor's plane from behind: no contact.
   FloorAndWalls scene(1.8);
   for (int k = scene.offsets[1]; k < scene.offsets[2]; ++k)
   {
-    scene.points[scene.connectivity[k]].z += 1e-3; // a millimetre gap: light passes under it
+    scene.points[scene.connectivity[k]].z *= -1;
   }
   EXPECT_TRUE(FindContacts(scene.Arrays(), scene.Arrays(), 1e-6)[0].empty());
 }
@@ -120,6 +135,16 @@ TEST(ContactCuts, ASegmentEndingInsideAnElementCutsOnlyTheElementsItReaches)
   const std::vector<ContactSegment> contacts{ { { 0.4, 0.2, 0 }, { 0.4, 0.7, 0 } } };
   EXPECT_EQ(CutAlongContacts(contacts, { 0, 0, 1 }, 1e-9, corners, sides, patch), 1);
   EXPECT_NEAR(Area(corners, sides), 4.0, 1e-12);
+  // The first element's two parts come first, 0.4 and 0.6 wide; the others are as they were.
+  ASSERT_EQ(sides.size(), 5u);
+  EXPECT_NEAR(PolygonArea(corners.data(), sides[0]), 0.4, 1e-12);
+  EXPECT_NEAR(PolygonArea(corners.data() + sides[0], sides[1]), 0.6, 1e-12);
+  size_t first = static_cast<size_t>(sides[0] + sides[1]);
+  for (size_t e = 2; e < sides.size(); first += sides[e], ++e)
+  {
+    EXPECT_EQ(sides[e], 4);
+    EXPECT_NEAR(corners[first].y, static_cast<double>(e - 1), 1e-12) << "element " << e;
+  }
 }
 
 TEST(ContactCuts, TheMesherCutsTheFloorWhereTheWallStandsOffTheElementGrid)
@@ -152,4 +177,109 @@ TEST(ContactCuts, TheMesherCutsTheFloorWhereTheWallStandsOffTheElementGrid)
       static_cast<double>(m.sourcePolygon.size()))
       << "the count before meshing includes the cuts";
   }
+}
+
+namespace
+{
+/// Elements of `m` on the plane z = 0 along the segment from `a` for `length` along `d`
+/// (in that plane) whose corners lie on both sides of it, farther than `tolerance`.
+int Straddling(const MeshedPolygons& m, const Vec3& a, const Vec3& d, double length, double tolerance)
+{
+  const Vec3 side = Normalized(Cross({ 0, 0, 1 }, d));
+  int count = 0;
+  for (size_t e = 0; e + 1 < m.offsets.size(); ++e)
+  {
+    double lo = 1e300, hi = -1e300, first = 1e300, last = -1e300, z = 0;
+    for (int k = m.offsets[e]; k < m.offsets[e + 1]; ++k)
+    {
+      const Vec3& p = m.points[m.connectivity[k]];
+      lo = std::min(lo, Dot(side, p - a));
+      hi = std::max(hi, Dot(side, p - a));
+      first = std::min(first, Dot(d, p - a));
+      last = std::max(last, Dot(d, p - a));
+      z = std::max(z, std::fabs(p.z));
+    }
+    const bool along = first > tolerance && last < length - tolerance; // beside the wall's foot
+    count += z < 1e-9 && along && lo < -tolerance && hi > tolerance ? 1 : 0;
+  }
+  return count;
+}
+} // namespace
+
+TEST(ContactCuts, ASlantedWallOnATriangularFloorCutsItsTriangles)
+{
+  // A triangle floor (barycentric lattice of triangle elements) with a wall standing at 30
+  // degrees across it; then the whole scene turned, scaled and moved: the same count.
+  FloorAndWalls scene(1.8);
+  scene.points.clear(); // our own floor and wall instead
+
+  scene.offsets = { 0 };
+  scene.connectivity.clear();
+  const Vec3 a{ 0.3, 0.2, 0 }, d = Normalized(Vec3{ std::cos(0.5236), std::sin(0.5236), 0 });
+  scene.Add({ { 0, 0, 0 }, { 4, 0, 0 }, { 0, 3, 0 } });
+  scene.Add({ a, a + Vec3{ 0, 0, 2 }, a + d * 2.5 + Vec3{ 0, 0, 2 }, a + d * 2.5 });
+  MesherOptions o;
+  o.PatchSize = 1.0;
+  o.ElementSize = 0.25;
+  MeshedPolygons m;
+  ASSERT_EQ(MeshPolygons(scene.points, scene.offsets, scene.connectivity, { 0, 0 }, o, m), "");
+  EXPECT_EQ(Straddling(m, a, d, 2.5, 1e-9), 0);
+  FloorAndWalls lifted = scene;
+  for (int k = lifted.offsets[1]; k < lifted.offsets[2]; ++k)
+  {
+    lifted.points[lifted.connectivity[k]].z += 1e-3;
+  }
+  EXPECT_GT(static_cast<double>(m.sourcePolygon.size()),
+    CountElements(lifted.points, lifted.offsets, lifted.connectivity, 1.0, 0.25))
+    << "cut, the floor has more elements than under a floating wall";
+  const double count = static_cast<double>(m.sourcePolygon.size());
+  EXPECT_EQ(CountElements(scene.points, scene.offsets, scene.connectivity, 1.0, 0.25), count);
+  FloorAndWalls moved = scene;
+  const double c = std::cos(0.7), s = std::sin(0.7);
+  for (Vec3& p : moved.points)
+  {
+    const Vec3 r{ c * p.x - s * p.z, p.y, s * p.x + c * p.z };
+    p = r * 1000.0 + Vec3{ 1e4, -2e3, 5e2 };
+  }
+  MeshedPolygons turned;
+  o.PatchSize = 1000.0;
+  o.ElementSize = 250.0;
+  ASSERT_EQ(MeshPolygons(moved.points, moved.offsets, moved.connectivity, { 0, 0 }, o, turned), "");
+  EXPECT_EQ(static_cast<double>(turned.sourcePolygon.size()), count) << "turned, scaled by 1000 and moved";
+}
+
+TEST(ContactCuts, APieceIsCutByTheWallsOfOtherPieces)
+{
+  // MPI: a rank holding the floor alone cuts it as one process does, given the whole scene.
+  const FloorAndWalls whole(1.8);
+  FloorAndWalls floor(1.8);
+  floor.offsets.resize(2);
+  floor.connectivity.resize(4);
+  MesherOptions o;
+  o.PatchSize = 1.0;
+  o.ElementSize = 0.5;
+  MeshedPolygons alone, together;
+  ASSERT_EQ(MeshPolygons(floor.points, floor.offsets, floor.connectivity, { 0 }, o, alone), "");
+  const PolygonArrays arrays = whole.Arrays();
+  o.WholeScene = &arrays;
+  ASSERT_EQ(MeshPolygons(floor.points, floor.offsets, floor.connectivity, { 0 }, o, together), "");
+  EXPECT_EQ(alone.sourcePolygon.size(), 48u);    // 8 x 6, nothing stands on it
+  EXPECT_EQ(together.sourcePolygon.size(), 54u); // the wall's column split, as in one process
+  EXPECT_EQ(CountElements(floor.points, floor.offsets, floor.connectivity, 1.0, 0.5, &arrays), 54.0);
+}
+
+TEST(ContactCuts, CountingAbsurdlySmallElementsBesideAWallNeitherMakesThemNorFails)
+{
+  // 2e-4 m elements on the 4 x 3 floor: 3e8 of them. The count says so (for the size
+  // limit's error) instead of making and cutting them all, which took gigabytes.
+  const FloorAndWalls scene(1.8);
+  const double count = CountElements(scene.points, scene.offsets, scene.connectivity, 1.0, 2e-4);
+  EXPECT_GE(count, 3e8);
+  MesherOptions o;
+  o.PatchSize = 1.0;
+  o.ElementSize = 2e-4;
+  o.MaximumElements = 20000000;
+  MeshedPolygons m;
+  EXPECT_NE(MeshPolygons(scene.points, scene.offsets, scene.connectivity, { 0, 0, 0 }, o, m).find("more than the limit"),
+    std::string::npos);
 }

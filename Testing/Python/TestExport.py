@@ -146,16 +146,22 @@ writer = relight.exr_writer(moved, camera, (64, 48), "Radiosity")
 image = vtkFloatArray()
 writer.RenderImage(image)
 after = numpy_support.vtk_to_numpy(image).astype(float)
+writer.SetArrayName("Radiosity_" + names[0])  # another array of the same geometry: an animation's next frame
+writer.RenderImage(image)
+check(writer.GetRaySceneBuilds() == 1, f"a second render of the same geometry reuses the ray scene "
+                                       f"({writer.GetRaySceneBuilds()} built)")
 check(np.array_equal(picture("Radiosity"), before) and not np.allclose(after, before),
       "a render after another mesh's is the same picture; the moved mesh is drawn moved")
 for p in range(shifted.GetNumberOfPoints()):
     x, y, z = shifted.GetPoint(p)
     shifted.SetPoint(p, x - 0.5, y, z)  # the same points object, changed in place
 shifted.Modified()
+writer.SetArrayName("Radiosity")
 writer.RenderImage(image)
 back = numpy_support.vtk_to_numpy(image).astype(float)
 check(np.abs(back - before).max() < 1e-3 * before.max() and not np.allclose(back, after),
       "points changed in place are drawn where they now are (the kept ray scene is rebuilt)")
+check(writer.GetRaySceneBuilds() == 2, f"...and rebuilt once ({writer.GetRaySceneBuilds()} built)")
 # The solver's own output (no relit Radiosity) with one light, and two lights whose names
 # differ only by '.' and '_' (EXR's layer separator): every light keeps its layer.
 one = relight.solve(read_polydata(os.path.join(DATA, "paper_1lights.vtp")), 1.5, 0.75, ConvergenceThreshold=1e-2).GetOutput()

@@ -264,7 +264,13 @@ std::vector<std::vector<ContactSegment>> FindContacts(
   for (size_t j = 0; j + 1 < standing.Offsets.size(); ++j)
   {
     const std::vector<Vec3> loop = GatherLoop(standing.Points, standing.Offsets, standing.Connectivity, static_cast<int>(j));
-    const Vec3 normal = Normalized(NewellVector(loop.data(), static_cast<int>(loop.size())));
+    const Vec3 newell = NewellVector(loop.data(), static_cast<int>(loop.size()));
+    if (loop.size() < 3 || !(Norm(newell) > 0))
+    {
+      continue; // no plane, nothing that stands
+    }
+    const Vec3 normal = Normalized(newell);
+    const Vec3 centre = PolygonCentroid(loop.data(), static_cast<int>(loop.size()));
     for (size_t v = 0; v < loop.size(); ++v, ++mark)
     {
       const Vec3& a = loop[v];
@@ -273,7 +279,10 @@ std::vector<std::vector<ContactSegment>> FindContacts(
         // Parallel polygons (the polygon itself among them) never stand on each other.
         const FlatPolygon& f = flat[i];
         const double da = f.Along(a), db = f.Along(b);
-        if (std::fabs(Dot(f.Normal, normal)) > 1 - 1e-6 || std::fabs(da) > touch || std::fabs(db) > touch)
+        // It stands on the front (a wall on a floor, a lamp hung from a ceiling); a wall
+        // of the storey below a slab drawn as one face is no contact of the floor above.
+        if (std::fabs(Dot(f.Normal, normal)) > 1 - 1e-6 || std::fabs(da) > touch || std::fabs(db) > touch ||
+          f.Along(centre) <= touch)
         {
           return;
         }
@@ -288,49 +297,122 @@ std::vector<std::vector<ContactSegment>> FindContacts(
   return contacts;
 }
 
-int CutAlongContacts(const std::vector<ContactSegment>& segments, const Vec3& normal, double tolerance,
-  std::vector<Vec3>& corners, std::vector<int>& sides, std::vector<int>& patch)
+ContactCutter::ContactCutter(const std::vector<ContactSegment>& segments, const Vec3& normal, double tolerance)
+  : Segments(segments)
+  , Normal(normal)
+  , Tolerance(tolerance)
 {
   if (segments.empty())
   {
-    return 0;
+    return;
   }
-  std::vector<Bounds> reach;
+  TangentFrame(normal, U, V);
+  Origin = segments[0].A;
+  double hi[2] = { -1e300, -1e300 };
+  Lo[0] = Lo[1] = 1e300;
   for (const ContactSegment& segment : segments)
   {
-    reach.push_back(Bounds({ segment.A, segment.B }));
+    for (const Vec3* p : { &segment.A, &segment.B })
+    {
+      const double c[2] = { Dot(U, *p - Origin), Dot(V, *p - Origin) };
+      for (int k = 0; k < 2; ++k)
+      {
+        Lo[k] = std::min(Lo[k], c[k]);
+        hi[k] = std::max(hi[k], c[k]);
+      }
+    }
   }
+  Resolution = std::clamp(static_cast<int>(2 * std::sqrt(static_cast<double>(segments.size()))), 1, 256);
+  Cell = std::max({ hi[0] - Lo[0], hi[1] - Lo[1], 1e-300 }) / Resolution * (1 + 1e-9);
+  Grid.resize(static_cast<size_t>(Resolution) * Resolution);
+  for (size_t s = 0; s < segments.size(); ++s)
+  {
+    int x0, y0, x1, y1;
+    const Vec3 ends[2] = { segments[s].A, segments[s].B };
+    Cells(ends, 2, x0, y0, x1, y1);
+    for (int y = y0; y <= y1; ++y)
+    {
+      for (int x = x0; x <= x1; ++x)
+      {
+        Grid[static_cast<size_t>(y) * Resolution + x].push_back(static_cast<int>(s));
+      }
+    }
+  }
+}
+
+void ContactCutter::Cells(const Vec3* points, int count, int& x0, int& y0, int& x1, int& y1) const
+{
+  double lo[2] = { 1e300, 1e300 }, hi[2] = { -1e300, -1e300 };
+  for (int i = 0; i < count; ++i)
+  {
+    const double c[2] = { Dot(U, points[i] - Origin), Dot(V, points[i] - Origin) };
+    for (int k = 0; k < 2; ++k)
+    {
+      lo[k] = std::min(lo[k], c[k] - Tolerance);
+      hi[k] = std::max(hi[k], c[k] + Tolerance);
+    }
+  }
+  auto index = [&](double v, int k) {
+    const double at = std::floor((v - Lo[k]) / Cell);
+    return static_cast<int>(std::clamp(at, 0.0, static_cast<double>(Resolution - 1)));
+  };
+  x0 = index(lo[0], 0);
+  x1 = index(hi[0], 0);
+  y0 = index(lo[1], 1);
+  y1 = index(hi[1], 1);
+}
+
+int ContactCutter::Cut(const Vec3* loop, int count, std::vector<std::vector<Vec3>>& parts) const
+{
+  parts.assign(1, std::vector<Vec3>(loop, loop + count));
+  if (Segments.empty())
+  {
+    return 1;
+  }
+  int x0, y0, x1, y1;
+  Cells(loop, count, x0, y0, x1, y1);
+  std::vector<int> near;
+  for (int y = y0; y <= y1; ++y)
+  {
+    for (int x = x0; x <= x1; ++x)
+    {
+      const std::vector<int>& cell = Grid[static_cast<size_t>(y) * Resolution + x];
+      near.insert(near.end(), cell.begin(), cell.end());
+    }
+  }
+  std::sort(near.begin(), near.end()); // the segments' own order, each once: the same cuts every time
+  near.erase(std::unique(near.begin(), near.end()), near.end());
+  std::vector<Vec3> front, back;
+  for (int s : near)
+  {
+    const ContactSegment& segment = Segments[s];
+    const Vec3 side = Normalized(Cross(Normal, segment.B - segment.A));
+    for (size_t k = 0, n = parts.size(); k < n; ++k)
+    {
+      const int corners = static_cast<int>(parts[k].size());
+      if (ChordOverlaps(parts[k].data(), corners, segment.A, segment.B, Normal, Tolerance) &&
+        SplitLoop(parts[k].data(), corners, segment.A, side, Tolerance, front, back))
+      {
+        parts[k] = front;
+        parts.push_back(back);
+      }
+    }
+  }
+  return static_cast<int>(parts.size());
+}
+
+int CutAlongContacts(const std::vector<ContactSegment>& segments, const Vec3& normal, double tolerance,
+  std::vector<Vec3>& corners, std::vector<int>& sides, std::vector<int>& patch)
+{
+  const ContactCutter cutter(segments, normal, tolerance);
   const size_t before = sides.size();
-  std::vector<Vec3> nextCorners, front, back;
+  std::vector<Vec3> nextCorners;
   std::vector<int> nextSides, nextPatch;
   std::vector<std::vector<Vec3>> parts;
   size_t first = 0;
   for (size_t e = 0; e < before; first += sides[e], ++e)
   {
-    // Each element is cut by the segments near it, one after another, part by part.
-    parts.assign(1, std::vector<Vec3>(corners.begin() + first, corners.begin() + first + sides[e]));
-    const Bounds box(parts[0]);
-    for (size_t s = 0; s < segments.size(); ++s)
-    {
-      if (reach[s].Lo.x > box.Hi.x + tolerance || reach[s].Hi.x < box.Lo.x - tolerance ||
-        reach[s].Lo.y > box.Hi.y + tolerance || reach[s].Hi.y < box.Lo.y - tolerance ||
-        reach[s].Lo.z > box.Hi.z + tolerance || reach[s].Hi.z < box.Lo.z - tolerance)
-      {
-        continue;
-      }
-      const Vec3 side = Normalized(Cross(normal, segments[s].B - segments[s].A));
-      for (size_t k = 0, n = parts.size(); k < n; ++k)
-      {
-        const std::vector<Vec3>& part = parts[k];
-        const int count = static_cast<int>(part.size());
-        if (ChordOverlaps(part.data(), count, segments[s].A, segments[s].B, normal, tolerance) &&
-          SplitLoop(part.data(), count, segments[s].A, side, tolerance, front, back))
-        {
-          parts[k] = front;
-          parts.push_back(back);
-        }
-      }
-    }
+    cutter.Cut(corners.data() + first, sides[e], parts);
     for (const std::vector<Vec3>& part : parts)
     {
       nextCorners.insert(nextCorners.end(), part.begin(), part.end());

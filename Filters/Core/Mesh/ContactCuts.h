@@ -34,6 +34,30 @@ struct PolygonArrays
 std::vector<std::vector<ContactSegment>> FindContacts(
   const PolygonArrays& polygons, const PolygonArrays& standing, double touch);
 
+/// Cuts the convex elements of one polygon along its contact segments. The segments are
+/// binned on a grid in the plane, so an element meets only those near it (a floor with
+/// thousands of boxes on it costs elements plus segments, not their product).
+class ContactCutter
+{
+public:
+  /// `normal`: the polygon's; parts thinner than `tolerance` are not made.
+  ContactCutter(const std::vector<ContactSegment>& segments, const Vec3& normal, double tolerance);
+
+  /// The parts of one convex element, cut by every segment that crosses its inside along
+  /// the segment's line (the element itself where none does); returns their number.
+  int Cut(const Vec3* loop, int count, std::vector<std::vector<Vec3>>& parts) const;
+
+private:
+  void Cells(const Vec3* points, int count, int& x0, int& y0, int& x1, int& y1) const;
+
+  const std::vector<ContactSegment>& Segments;
+  Vec3 Normal, U, V, Origin;
+  double Tolerance;
+  double Lo[2] = { 0, 0 }, Cell = 1;
+  int Resolution = 1;
+  std::vector<std::vector<int>> Grid;
+};
+
 /// Convex elements (`corners`, `sides` per element, `patch` per element) in the plane with
 /// `normal`: each element a segment crosses inside is split along the segment's line into
 /// two, both keeping the element's patch. Cuts that would leave a part thinner than

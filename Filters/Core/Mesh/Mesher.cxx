@@ -50,7 +50,10 @@ int Divisions(double length, double size)
   return std::max(1, static_cast<int>(std::ceil(length / size * (1 - 1e-6))));
 }
 
-void SplitQuad(const Vec3* q, const MesherOptions& o, Piece& piece)
+/// Emits the elements of a convex quad on a bilinear grid: emit(corners, 4, local patch).
+/// Returns the number of patches.
+template <typename Emit>
+int SplitQuad(const Vec3* q, const MesherOptions& o, const Emit& emit)
 {
   const double lu = std::max(Norm(q[1] - q[0]), Norm(q[2] - q[3]));
   const double lv = std::max(Norm(q[3] - q[0]), Norm(q[2] - q[1]));
@@ -66,12 +69,11 @@ void SplitQuad(const Vec3* q, const MesherOptions& o, Piece& piece)
   {
     for (int i = 0; i < nu; ++i)
     {
-      piece.corners.insert(piece.corners.end(), { at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1) });
-      piece.sides.push_back(4);
-      piece.localPatch.push_back((j / ev) * pu + i / eu);
+      const Vec3 corners[4] = { at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1) };
+      emit(corners, 4, (j / ev) * pu + i / eu);
     }
   }
-  piece.patchCount = pu * pv;
+  return pu * pv;
 }
 
 /// Patches along a triangle's longest edge. A sliver (narrower than a quarter of its length, as
@@ -84,7 +86,10 @@ int TrianglePatchDivisions(const Vec3& a, const Vec3& b, const Vec3& c, double l
   return width < 0.25 * longest ? Divisions(std::sqrt(width * longest), patch) : Divisions(longest, patch);
 }
 
-void SplitTriangle(const Vec3& a, const Vec3& b, const Vec3& c, const MesherOptions& o, Piece& piece)
+/// Emits the elements of a triangle on a barycentric lattice, local patches counted from
+/// `firstPatch`. Returns the number of patches.
+template <typename Emit>
+int SplitTriangle(const Vec3& a, const Vec3& b, const Vec3& c, const MesherOptions& o, int firstPatch, const Emit& emit)
 {
   const double longest = std::max({ Norm(b - a), Norm(c - b), Norm(a - c) });
   const int np = TrianglePatchDivisions(a, b, c, longest, o.PatchSize);
@@ -98,40 +103,56 @@ void SplitTriangle(const Vec3& a, const Vec3& b, const Vec3& c, const MesherOpti
   auto patchOf = [&](double ci, double cj) {
     const int I = static_cast<int>(std::floor(ci / ne)), J = static_cast<int>(std::floor(cj / ne));
     const bool inverted = (ci / ne - I) + (cj / ne - J) > 1;
-    return piece.patchCount + (I * np + J) * 2 + (inverted ? 1 : 0);
+    return firstPatch + (I * np + J) * 2 + (inverted ? 1 : 0);
   };
   for (int i = 0; i < n; ++i)
   {
     for (int j = 0; i + j < n; ++j)
     {
-      piece.corners.insert(piece.corners.end(), { at(i, j), at(i + 1, j), at(i, j + 1) });
-      piece.sides.push_back(3);
-      piece.localPatch.push_back(patchOf(i + 1.0 / 3, j + 1.0 / 3));
+      const Vec3 upright[3] = { at(i, j), at(i + 1, j), at(i, j + 1) };
+      emit(upright, 3, patchOf(i + 1.0 / 3, j + 1.0 / 3));
       if (i + j + 1 < n)
       {
-        piece.corners.insert(piece.corners.end(), { at(i + 1, j), at(i + 1, j + 1), at(i, j + 1) });
-        piece.sides.push_back(3);
-        piece.localPatch.push_back(patchOf(i + 2.0 / 3, j + 2.0 / 3));
+        const Vec3 inverted[3] = { at(i + 1, j), at(i + 1, j + 1), at(i, j + 1) };
+        emit(inverted, 3, patchOf(i + 2.0 / 3, j + 2.0 / 3));
       }
     }
   }
-  piece.patchCount += np * np * 2;
+  return np * np * 2;
 }
 
-/// A polygon's patches and elements: convex quads on a bilinear grid, others ear-clipped
-/// into triangles split on a barycentric lattice.
-void MakePiece(const std::vector<Vec3>& loop, const MesherOptions& o, double noise, Piece& piece)
+/// Emits a polygon's elements: convex quads on a bilinear grid, others ear-clipped into
+/// triangles split on a barycentric lattice. Returns the number of patches.
+template <typename Emit>
+int SplitPolygon(const std::vector<Vec3>& loop, const MesherOptions& o, double noise, const Emit& emit)
 {
   if (loop.size() == 4 && IsConvex(loop.data(), 4, noise))
   {
-    SplitQuad(loop.data(), o, piece);
-    return;
+    return SplitQuad(loop.data(), o, emit);
   }
   const std::vector<int> corners = Triangulate(loop.data(), static_cast<int>(loop.size()), noise);
+  int patches = 0;
   for (size_t t = 0; t + 2 < corners.size(); t += 3)
   {
-    SplitTriangle(loop[corners[t]], loop[corners[t + 1]], loop[corners[t + 2]], o, piece);
+    patches += SplitTriangle(loop[corners[t]], loop[corners[t + 1]], loop[corners[t + 2]], o, patches, emit);
   }
+  return patches;
+}
+
+/// A polygon's elements, each cut along the contact lines that cross it.
+void MakePiece(const std::vector<Vec3>& loop, const MesherOptions& o, double noise, const ContactCutter& cutter,
+  Piece& piece)
+{
+  std::vector<std::vector<Vec3>> parts;
+  piece.patchCount = SplitPolygon(loop, o, noise, [&](const Vec3* corners, int count, int patch) {
+    cutter.Cut(corners, count, parts);
+    for (const std::vector<Vec3>& part : parts)
+    {
+      piece.corners.insert(piece.corners.end(), part.begin(), part.end());
+      piece.sides.push_back(static_cast<int>(part.size()));
+      piece.localPatch.push_back(patch);
+    }
+  });
 }
 
 /// Surfaces closer than this stand on each other (relative, so units do not matter).
@@ -188,6 +209,27 @@ Contacts FindSceneContacts(const PolygonArrays& polygons, const PolygonArrays* w
   return contacts;
 }
 
+/// Polygons with contacts are counted by making their elements and cutting them, one at a
+/// time. Above this many elements a polygon is counted without its cuts: it is over any
+/// memory budget anyway, and making its elements would take minutes.
+constexpr double kMostElementsCutToCount = 2e6;
+
+/// The elements SplitPolygon makes of `loop`, without making them.
+double CountPlain(const std::vector<Vec3>& loop, double patchSize, double elementSize, double noise)
+{
+  if (loop.size() == 4 && IsConvex(loop.data(), 4, noise))
+  {
+    return CountQuad(loop.data(), patchSize, elementSize);
+  }
+  double total = 0;
+  const std::vector<int> corners = Triangulate(loop.data(), static_cast<int>(loop.size()), noise);
+  for (size_t t = 0; t + 2 < corners.size(); t += 3)
+  {
+    total += CountTriangle(loop[corners[t]], loop[corners[t + 1]], loop[corners[t + 2]], patchSize, elementSize);
+  }
+  return total;
+}
+
 /// CountElements with the contacts found once (a budget's search counts many times).
 double CountWithContacts(const PolygonArrays& polygons, double patchSize, double elementSize, const Contacts& contacts)
 {
@@ -200,6 +242,7 @@ double CountWithContacts(const PolygonArrays& polygons, double patchSize, double
   MesherOptions sizes;
   sizes.PatchSize = patchSize;
   sizes.ElementSize = elementSize;
+  std::vector<std::vector<Vec3>> parts;
   for (size_t i = 0; i + 1 < polygons.Offsets.size(); ++i)
   {
     const std::vector<Vec3> loop = GatherLoop(polygons.Points, polygons.Offsets, polygons.Connectivity, static_cast<int>(i));
@@ -207,46 +250,54 @@ double CountWithContacts(const PolygonArrays& polygons, double patchSize, double
     {
       continue;
     }
-    if (!contacts.Segments[i].empty())
+    const double plain = CountPlain(loop, patchSize, elementSize, noise);
+    if (contacts.Segments[i].empty() || !(plain <= kMostElementsCutToCount))
     {
-      // Cuts depend on where the elements fall: make them to count them.
-      Piece piece;
-      MakePiece(loop, sizes, noise, piece);
-      const Vec3 normal = Normalized(NewellVector(loop.data(), static_cast<int>(loop.size())));
-      CutAlongContacts(contacts.Segments[i], normal, contacts.Touch, piece.corners, piece.sides, piece.localPatch);
-      total += static_cast<double>(piece.sides.size());
+      total += plain;
       continue;
     }
-    if (loop.size() == 4 && IsConvex(loop.data(), 4, noise))
-    {
-      total += CountQuad(loop.data(), patchSize, elementSize);
-      continue;
-    }
-    const std::vector<int> corners = Triangulate(loop.data(), static_cast<int>(loop.size()), noise);
-    for (size_t t = 0; t + 2 < corners.size(); t += 3)
-    {
-      total += CountTriangle(loop[corners[t]], loop[corners[t + 1]], loop[corners[t + 2]], patchSize, elementSize);
-    }
+    // Cuts depend on where the elements fall: make them, one at a time, to count them.
+    const Vec3 normal = Normalized(NewellVector(loop.data(), static_cast<int>(loop.size())));
+    const ContactCutter cutter(contacts.Segments[i], normal, contacts.Touch);
+    SplitPolygon(loop, sizes, noise, [&](const Vec3* corners, int count, int) {
+      total += cutter.Cut(corners, count, parts);
+    });
   }
   return total;
 }
 } // namespace
 
+struct ElementCounter::Internals
+{
+  PolygonArrays Polygons;
+  Contacts Found;
+};
+
+ElementCounter::ElementCounter(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, const PolygonArrays* wholeScene)
+  : Impl(new Internals{ { points, offsets, connectivity }, Contacts() })
+{
+  Impl->Found = FindSceneContacts(Impl->Polygons, wholeScene);
+}
+
+ElementCounter::~ElementCounter() = default;
+
+double ElementCounter::operator()(double patchSize, double elementSize) const
+{
+  return CountWithContacts(Impl->Polygons, patchSize, elementSize, Impl->Found);
+}
+
 double CountElements(const std::vector<Vec3>& points, const std::vector<int>& offsets,
   const std::vector<int>& connectivity, double patchSize, double elementSize, const PolygonArrays* wholeScene)
 {
-  const PolygonArrays polygons{ points, offsets, connectivity };
-  return CountWithContacts(polygons, patchSize, elementSize, FindSceneContacts(polygons, wholeScene));
+  return ElementCounter(points, offsets, connectivity, wholeScene)(patchSize, elementSize);
 }
 
 double ElementSizeForBudget(const std::vector<Vec3>& points, const std::vector<int>& offsets,
   const std::vector<int>& connectivity, double patchSize, double elementSize, double budget)
 {
-  const PolygonArrays polygons{ points, offsets, connectivity };
-  const Contacts contacts = FindSceneContacts(polygons, nullptr);
-  return ElementSizeForBudget(
-    [&](double size) { return CountWithContacts(polygons, patchSize, size, contacts); }, patchSize, elementSize,
-    budget);
+  const ElementCounter count(points, offsets, connectivity);
+  return ElementSizeForBudget([&](double size) { return count(patchSize, size); }, patchSize, elementSize, budget);
 }
 
 double ElementSizeForBudget(
@@ -405,8 +456,7 @@ std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& of
     const Vec3 newell = NewellVector(loop.data(), static_cast<int>(loop.size()));
     const Vec3 normal = Normalized(newell);
     Piece piece;
-    MakePiece(loop, options, noise, piece);
-    CutAlongContacts(contacts.Segments[i], normal, contacts.Touch, piece.corners, piece.sides, piece.localPatch);
+    MakePiece(loop, options, noise, ContactCutter(contacts.Segments[i], normal, contacts.Touch), piece);
 
     // From the scene's centre: measured from the origin, a plane far away carries its
     // normal's round-off times its distance, and one floor would split into many.

@@ -6,6 +6,7 @@
 #include "Base/Vec3.h"
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,21 @@ struct MeshedPolygons
 double CountElements(const std::vector<Vec3>& points, const std::vector<int>& offsets,
   const std::vector<int>& connectivity, double patchSize, double elementSize,
   const PolygonArrays* wholeScene = nullptr);
+
+/// CountElements for many sizes (a budget's search, a panel's estimate as it is typed):
+/// the contacts are found once. Holds references to the arrays.
+class ElementCounter
+{
+public:
+  ElementCounter(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+    const std::vector<int>& connectivity, const PolygonArrays* wholeScene = nullptr);
+  ~ElementCounter();
+  double operator()(double patchSize, double elementSize) const;
+
+private:
+  struct Internals;
+  std::unique_ptr<Internals> Impl;
+};
 
 /// The smallest element size, at least `elementSize`, whose mesh has at most `budget`
 /// elements (the patch size when even one element per patch is over it).
