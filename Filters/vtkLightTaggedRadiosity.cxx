@@ -162,8 +162,9 @@ bool AddPatchBasis(vtkAlgorithm* self, int level, const radiosity::RadiositySolv
   vtkRadiosityAdapter::WarningList& warnings)
 {
   radiosity::SolverStatistics stats;
-  const radiosity::PatchBasis basis =
-    radiosity::SolvePatchBasis(solver, mesh, options, static_cast<radiosity::BasisLevel>(level), stats);
+  radiosity::PatchBasis basis;
+  const std::string error =
+    radiosity::SolvePatchBasis(solver, mesh, options, static_cast<radiosity::BasisLevel>(level), stats, basis);
   // The node basis runs on every rank alone: an abort on one must drop the basis on all,
   // or the pieces would differ in their arrays.
   stats.Aborted = !radiosity::AgreeOnFailure(options.Group, stats.Aborted ? "aborted" : "", "aborted").empty();
@@ -172,9 +173,9 @@ bool AddPatchBasis(vtkAlgorithm* self, int level, const radiosity::RadiositySolv
     warnings.Add(self, "Moving-light basis aborted: the output has the light solutions but no basis.");
     return true;
   }
-  if (!basis.Error.empty())
+  if (!error.empty())
   {
-    vtkErrorWithObjectMacro(self, << "Cannot solve the moving-light basis: " << basis.Error);
+    vtkErrorWithObjectMacro(self, << "Cannot solve the moving-light basis: " << error);
     return false;
   }
   vtkNew<vtkFloatArray> values;

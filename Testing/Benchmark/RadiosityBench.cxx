@@ -315,7 +315,13 @@ int main(int argc, char* argv[])
     SolverOptions options;
     SolverStatistics stats;
     const double t0 = Now();
-    const PatchBasis basis = SolvePatchBasis(solver, scene.Mesh, options, level, stats);
+    PatchBasis basis;
+    const std::string error = SolvePatchBasis(solver, scene.Mesh, options, level, stats, basis);
+    if (!error.empty())
+    {
+      std::printf("  moving-light basis: %s\n", error.c_str());
+      return 1;
+    }
     const double basisSeconds = Now() - t0;
     MovingLightShader shader(scene.Mesh, nullptr);
     std::vector<MovingLight> lights(1);

@@ -237,11 +237,12 @@ void MeasureBasis(const RadiositySolver& solver, const SceneMesh& mesh)
   ResetPeakMemory();
   const double t0 = Now();
   SolverStatistics stats;
-  const PatchBasis basis = SolvePatchBasis(solver, mesh, SolverOptions(), BasisLevel::Auto, stats);
+  PatchBasis basis;
+  const std::string error = SolvePatchBasis(solver, mesh, SolverOptions(), BasisLevel::Auto, stats, basis);
   const double solve = Now() - t0;
-  if (!basis.Error.empty())
+  if (!error.empty())
   {
-    std::printf("  moving-light basis: %s\n", basis.Error.c_str());
+    std::printf("  moving-light basis: %s\n", error.c_str());
     return;
   }
   const double peak = PeakMemoryMB();

@@ -48,18 +48,17 @@ void Store(const Vec3& reflected, float* b)
 
 const char* const AbortedMessage = "the patch basis was aborted";
 
-PatchBasis ElementBasis(const RadiositySolver& solver, const SolverOptions& options, SolverStatistics& stats)
+std::string ElementBasis(const RadiositySolver& solver, const SolverOptions& options, SolverStatistics& stats,
+  PatchBasis& basis)
 {
   const SceneGeometry& g = solver.Geometry();
   const int n = static_cast<int>(g.normal.size()), P = static_cast<int>(g.patchElements.size());
   const std::vector<Vec3> emission = UnitPatchEmission(g);
   const Solution s = solver.Solve(emission, P, BasisOptions(options));
   stats = s.Statistics;
-  PatchBasis basis;
   if (stats.Aborted)
   {
-    basis.Error = AbortedMessage;
-    return basis;
+    return AbortedMessage;
   }
   basis.Patches = P;
   basis.Receivers = n;
@@ -68,7 +67,7 @@ PatchBasis ElementBasis(const RadiositySolver& solver, const SolverOptions& opti
   {
     Store(s.Radiosity[i] - emission[i], &basis.Values[3 * i]);
   }
-  return basis;
+  return std::string();
 }
 
 /// A patch this much hidden (under furniture) still becomes one polygon: it shoots that
@@ -372,26 +371,27 @@ PatchNodes NodesOf(const SceneMesh& mesh, const RadiositySolver& solver, const W
   return PatchNodes(solver.Geometry(), outlines.PatchLoops(), outlines.Centres());
 }
 
-PatchBasis NodeBasis(const RadiositySolver& solver, const SceneMesh& mesh, const SolverOptions& options,
-  SolverStatistics& stats)
+std::string NodeBasis(const RadiositySolver& solver, const SceneMesh& mesh, const SolverOptions& options,
+  SolverStatistics& stats, PatchBasis& basis)
 {
   const SceneGeometry& g = solver.Geometry();
   const WorkerPool pool(options.Threads);
   const PatchNodes nodes = NodesOf(mesh, solver, pool);
-  PatchBasis basis;
   basis.Patches = static_cast<int>(g.patchElements.size());
   basis.Receivers = nodes.Count();
   std::vector<char> whole;
   const SceneMesh coarse = PatchLevelMesh(mesh, g, nodes, whole);
-  const std::vector<Vec3> values = SolvePatchValues(coarse, basis.Patches, options, pool, stats, basis.Error);
-  if (!basis.Error.empty())
+  std::string error;
+  const std::vector<Vec3> values = SolvePatchValues(coarse, basis.Patches, options, pool, stats, error);
+  if (!error.empty())
   {
-    return basis;
+    basis = PatchBasis();
+    return error;
   }
   basis.Values.resize(static_cast<size_t>(basis.Receivers) * 3 * basis.Patches);
   FillNodeValues(g, nodes, whole, values, basis);
   FillElementWeights(g, nodes, basis);
-  return basis;
+  return std::string();
 }
 } // namespace
 
@@ -404,9 +404,10 @@ BasisLevel ResolveBasisLevel(BasisLevel level, long long elements, long long pat
   return 12.0 * elements * patches <= ElementBasisBudget ? BasisLevel::Elements : BasisLevel::Patches;
 }
 
-PatchBasis SolvePatchBasis(const RadiositySolver& solver, const SceneMesh& mesh, const SolverOptions& options,
-  BasisLevel level, SolverStatistics& stats)
+std::string SolvePatchBasis(const RadiositySolver& solver, const SceneMesh& mesh, const SolverOptions& options,
+  BasisLevel level, SolverStatistics& stats, PatchBasis& basis)
 {
+  basis = PatchBasis();
   const SceneGeometry& g = solver.Geometry();
   const long long n = static_cast<long long>(g.normal.size()), P = static_cast<long long>(g.patchElements.size());
   level = ResolveBasisLevel(level, n, P);
@@ -417,21 +418,18 @@ PatchBasis SolvePatchBasis(const RadiositySolver& solver, const SceneMesh& mesh,
     "has too little memory for the patch basis");
   if (!tooBig.empty())
   {
-    PatchBasis none;
-    none.Error = tooBig + "; use a larger patch size";
-    return none;
+    return tooBig + "; use a larger patch size";
   }
   if (bytes > MaximumBasisBytes)
   {
-    PatchBasis none;
     char text[256];
     std::snprintf(text, sizeof(text),
       "the patch basis would need about %.1f GB (%lld patches x %lld receivers); use a larger patch size",
       bytes / 1073741824.0, P, level == BasisLevel::Elements ? n : 8 * P);
-    none.Error = text;
-    return none;
+    return text;
   }
-  return level == BasisLevel::Elements ? ElementBasis(solver, options, stats) : NodeBasis(solver, mesh, options, stats);
+  return level == BasisLevel::Elements ? ElementBasis(solver, options, stats, basis)
+                                       : NodeBasis(solver, mesh, options, stats, basis);
 }
 
 void AddBasisInterreflection(const SceneGeometry& g, const std::vector<Vec3>& direct, const BasisView& basis,

@@ -43,7 +43,6 @@ struct PatchBasis
   std::vector<float> Values;
   std::vector<int> Node;
   std::vector<float> Weight;
-  std::string Error; ///< why there is no basis
   double Bytes() const { return 4.0 * (Values.size() + Node.size() + Weight.size()); }
 };
 
@@ -66,11 +65,12 @@ inline BasisView View(const PatchBasis& b)
 /// The level Auto picks for `elements` and `patches`.
 BasisLevel ResolveBasisLevel(BasisLevel level, long long elements, long long patches);
 
-/// Solves the basis: every patch a unit emitter (all P solutions in one light-tagged pass),
-/// its own emission then removed. Error is set (and nothing solved) when the basis would
-/// pass MaximumBasisBytes.
-PatchBasis SolvePatchBasis(const RadiositySolver& solver, const SceneMesh& mesh, const SolverOptions& options,
-  BasisLevel level, SolverStatistics& stats);
+/// Solves the basis into `basis`: every patch a unit emitter (all P solutions in one
+/// light-tagged pass), its own emission then removed. Returns an empty string, or why
+/// there is no basis (it would pass MaximumBasisBytes or the memory there is, or the
+/// solve was aborted); then `basis` is empty.
+std::string SolvePatchBasis(const RadiositySolver& solver, const SceneMesh& mesh, const SolverOptions& options,
+  BasisLevel level, SolverStatistics& stats, PatchBasis& basis);
 
 /// The frame's result: B_e = D_e + sum_q E_q * basis_q(e), E_q = area mean of D over patch
 /// q, where D (the direct part) already contains each patch's first reflection.
