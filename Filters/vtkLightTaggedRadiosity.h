@@ -227,7 +227,8 @@ public:
 
   ///@{
   /// Threads for the solve; 0 (default) uses VTK's SMP thread count where its backend runs
-  /// threads (ParaView's Settings, Number of threads), else every hardware thread.
+  /// threads (ParaView's Settings, Number of threads), else every hardware thread. Embree's
+  /// build of the ray scene keeps to it too (ranks x threads on a node do not oversubscribe).
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
   vtkGetMacro(NumberOfThreads, int);
   ///@}

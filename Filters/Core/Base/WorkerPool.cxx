@@ -20,10 +20,7 @@ WorkerPool::WorkerPool(int threads)
 {
   const int available = tbb::this_task_arena::max_concurrency();
   Impl->Threads = threads > 0 ? threads : std::max(1, available);
-  if (Impl->Threads > 1)
-  {
-    Impl->Arena.reset(new tbb::task_arena(Impl->Threads));
-  }
+  Impl->Arena.reset(new tbb::task_arena(Impl->Threads)); // made on first use, not here
 }
 
 WorkerPool::~WorkerPool() = default;
@@ -40,7 +37,7 @@ void WorkerPool::Run(int count, int grain, void (*call)(const void*, int, int), 
     return;
   }
   grain = std::max(1, grain);
-  if (!Impl->Arena || count <= grain)
+  if (Impl->Threads == 1 || count <= grain)
   {
     call(context, 0, count);
     return;
@@ -49,6 +46,11 @@ void WorkerPool::Run(int count, int grain, void (*call)(const void*, int, int), 
     tbb::parallel_for(tbb::blocked_range<int>(0, count, grain),
       [&](const tbb::blocked_range<int>& r) { call(context, r.begin(), r.end()); });
   });
+}
+
+void WorkerPool::RunWithin(void (*call)(const void*), const void* context) const
+{
+  Impl->Arena->execute([&] { call(context); });
 }
 
 } // namespace radiosity

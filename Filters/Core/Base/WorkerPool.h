@@ -30,8 +30,17 @@ public:
       &body);
   }
 
+  /// Calls body() with the libraries' own parallel work (Embree's BVH build) held to
+  /// this pool's threads: one thread per rank means one, not every core of the node.
+  template <typename Body>
+  void Within(const Body& body) const
+  {
+    this->RunWithin([](const void* context) { (*static_cast<const Body*>(context))(); }, &body);
+  }
+
 private:
   void Run(int count, int grain, void (*call)(const void*, int, int), const void* context) const;
+  void RunWithin(void (*call)(const void*), const void* context) const;
   struct Internals;
   std::unique_ptr<Internals> Impl;
 };

@@ -1,4 +1,5 @@
 #include "Solve/RadiositySolver.h"
+#include "Base/WorkerPool.h"
 #include "Solve/HierarchicalRadiosity.h"
 #include "Solve/ProgressiveRadiosity.h"
 
@@ -41,8 +42,8 @@ int ShotCap(const SolverOptions& options, int patches)
 RadiositySolver::RadiositySolver(const SceneMesh& mesh, int threads, const ProcessGroup& group)
   : Mesh(mesh)
   , Geometry_(mesh)
-  , Rays_(new Visibility(mesh))
 {
+  WorkerPool(threads).Within([&] { Rays_.reset(new Visibility(mesh)); });
   Error_ = AgreeOnFailure(group, Rays_->Error(), "could not prepare the scene for rays");
   if (Error_.empty())
   {
