@@ -364,28 +364,41 @@ void ContactCutter::Cells(const Vec3* points, int count, int& x0, int& y0, int& 
 
 int ContactCutter::Cut(const Vec3* loop, int count, std::vector<std::vector<Vec3>>& parts) const
 {
-  parts.assign(1, std::vector<Vec3>(loop, loop + count));
   if (Segments.empty())
   {
-    return 1;
+    return 0;
   }
   int x0, y0, x1, y1;
   Cells(loop, count, x0, y0, x1, y1);
-  std::vector<int> near;
+  Near.clear();
   for (int y = y0; y <= y1; ++y)
   {
     for (int x = x0; x <= x1; ++x)
     {
       const std::vector<int>& cell = Grid[static_cast<size_t>(y) * Resolution + x];
-      near.insert(near.end(), cell.begin(), cell.end());
+      Near.insert(Near.end(), cell.begin(), cell.end());
     }
   }
-  std::sort(near.begin(), near.end()); // the segments' own order, each once: the same cuts every time
-  near.erase(std::unique(near.begin(), near.end()), near.end());
+  if (Near.empty())
+  {
+    return 0;
+  }
+  std::sort(Near.begin(), Near.end()); // the segments' own order, each once: the same cuts every time
+  Near.erase(std::unique(Near.begin(), Near.end()), Near.end());
+  bool cut = false;
   std::vector<Vec3> front, back;
-  for (int s : near)
+  for (int s : Near)
   {
     const ContactSegment& segment = Segments[s];
+    if (!cut && !ChordOverlaps(loop, count, segment.A, segment.B, Normal, Tolerance))
+    {
+      continue; // the common case: a segment near the element that misses it
+    }
+    if (!cut)
+    {
+      parts.assign(1, std::vector<Vec3>(loop, loop + count));
+      cut = true;
+    }
     const Vec3 side = Normalized(Cross(Normal, segment.B - segment.A));
     for (size_t k = 0, n = parts.size(); k < n; ++k)
     {
@@ -398,7 +411,7 @@ int ContactCutter::Cut(const Vec3* loop, int count, std::vector<std::vector<Vec3
       }
     }
   }
-  return static_cast<int>(parts.size());
+  return cut ? static_cast<int>(parts.size()) : 0;
 }
 
 int CutAlongContacts(const std::vector<ContactSegment>& segments, const Vec3& normal, double tolerance,
@@ -412,7 +425,10 @@ int CutAlongContacts(const std::vector<ContactSegment>& segments, const Vec3& no
   size_t first = 0;
   for (size_t e = 0; e < before; first += sides[e], ++e)
   {
-    cutter.Cut(corners.data() + first, sides[e], parts);
+    if (cutter.Cut(corners.data() + first, sides[e], parts) == 0)
+    {
+      parts.assign(1, std::vector<Vec3>(corners.begin() + first, corners.begin() + first + sides[e]));
+    }
     for (const std::vector<Vec3>& part : parts)
     {
       nextCorners.insert(nextCorners.end(), part.begin(), part.end());

@@ -44,7 +44,8 @@ public:
   ContactCutter(const std::vector<ContactSegment>& segments, const Vec3& normal, double tolerance);
 
   /// The parts of one convex element, cut by every segment that crosses its inside along
-  /// the segment's line (the element itself where none does); returns their number.
+  /// the segment's line; returns their number, or 0 (and `parts` untouched) where no
+  /// segment cuts it: most elements, which then cost no copy.
   int Cut(const Vec3* loop, int count, std::vector<std::vector<Vec3>>& parts) const;
 
 private:
@@ -56,6 +57,7 @@ private:
   double Lo[2] = { 0, 0 }, Cell = 1;
   int Resolution = 1;
   std::vector<std::vector<int>> Grid;
+  mutable std::vector<int> Near; ///< scratch: one cutter serves one thread
 };
 
 /// Convex elements (`corners`, `sides` per element, `patch` per element) in the plane with

@@ -145,7 +145,13 @@ void MakePiece(const std::vector<Vec3>& loop, const MesherOptions& o, double noi
 {
   std::vector<std::vector<Vec3>> parts;
   piece.patchCount = SplitPolygon(loop, o, noise, [&](const Vec3* corners, int count, int patch) {
-    cutter.Cut(corners, count, parts);
+    if (cutter.Cut(corners, count, parts) == 0)
+    {
+      piece.corners.insert(piece.corners.end(), corners, corners + count);
+      piece.sides.push_back(count);
+      piece.localPatch.push_back(patch);
+      return;
+    }
     for (const std::vector<Vec3>& part : parts)
     {
       piece.corners.insert(piece.corners.end(), part.begin(), part.end());
@@ -260,7 +266,7 @@ double CountWithContacts(const PolygonArrays& polygons, double patchSize, double
     const Vec3 normal = Normalized(NewellVector(loop.data(), static_cast<int>(loop.size())));
     const ContactCutter cutter(contacts.Segments[i], normal, contacts.Touch);
     SplitPolygon(loop, sizes, noise, [&](const Vec3* corners, int count, int) {
-      total += cutter.Cut(corners, count, parts);
+      total += std::max(1, cutter.Cut(corners, count, parts));
     });
   }
   return total;
