@@ -222,6 +222,30 @@ try:
 except RuntimeError as error:
     check(str(error).startswith("Cannot mesh: cell 1 crosses itself"), f"relight.solve raises: '{error}'")
 
+# --- the Python helpers say what went wrong (found in a new user's trial) -------------------
+import warnings
+
+try:
+    relight.solve(None)
+    check(False, "relight.solve(None) raises")
+except TypeError as error:
+    check("needs a vtkPolyData scene" in str(error), f"relight.solve(None) raises TypeError: {error}")
+with warnings.catch_warnings(record=True) as caught:
+    warnings.simplefilter("always")
+    drawn_in = relight.solve(relight.make_scene([[(0, 0, 0), (4, 0, 0), (4, 4, 0), (0, 4, 0)],
+                                                 [(0, 0, 2.5), (0, 4, 2.5), (4, 4, 2.5), (4, 0, 2.5)],
+                                                 [(1, 1, 2.5), (1, 2, 2.5), (2, 2, 2.5), (2, 1, 2.5)]],
+                                                [(0.5,) * 3] * 3, [-1, -1, 0]), 1.0, 0.5, MaximumShots=5)
+said = [str(w.message) for w in caught if issubclass(w.category, RuntimeWarning)]
+check(any("lies in the plane of a surface" in m for m in said) and any("Stopped at MaximumShots" in m for m in said),
+      f"relight.solve passes the filters' warnings on as RuntimeWarnings ({len(said)})")
+try:
+    relight.render_png(drawn_in.GetOutput(), os.path.join(tempfile.gettempdir(), "never.png"),
+                       ((2, 2, 1), (2, 2, 0), (0, 1, 0), 60))
+    check(False, "render_png of the solver's output raises")
+except ValueError as error:
+    check("DisplayColors" in str(error), f"render_png of the solver's output (no colours) raises: {error}")
+
 # --- a wall across a room: light does not pass through it --------------------------------------
 # The partition stands across floor, ceiling and side-wall patches (0.5 m patches): a patch
 # spanning both sides had shot light received on one side from the other (dark side at

@@ -1,9 +1,11 @@
 """Helpers around the filters: reading scenes, running the pipeline, pictures."""
 
 import re
+import warnings
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (registers the OpenGL backend)
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkCommand
+from vtkmodules.vtkCommonDataModel import vtkDataSet
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 from vtkmodules.vtkRenderingCore import (
     vtkActor,
@@ -47,10 +49,13 @@ class ErrorCatcher:
 
     def first_error(self):
         """The first error's own words, without VTK's file, line and object prefix."""
-        if not self.errors:
-            return "unknown error"
-        line = self.errors[0].strip().splitlines()[-1]
-        return re.sub(r"^\w+ \(0x[0-9a-fA-F]+\): ", "", line)
+        return own_words(self.errors[0]) if self.errors else "unknown error"
+
+
+def own_words(message):
+    """A VTK message without its file, line and object prefix."""
+    line = message.strip().splitlines()[-1] if message.strip() else message
+    return re.sub(r"^\w+ \(0x[0-9a-fA-F]+\): ", "", line)
 
 
 def make_scene(polygons, reflectance, light_ids, light_names=None, emission=None):
@@ -108,8 +113,12 @@ def solve(scene, patch_size=None, element_size=None, **solver_settings):
     Sizes left out are the mesher's suggestion for the scene (a sixth of its extent,
     rounded; the element a quarter of the patch), whatever its unit.
     `solver_settings` are vtkLightTaggedRadiosity properties, e.g. MaximumShots=500.
-    Raises RuntimeError with the filters' message if meshing or solving fails.
+    Raises RuntimeError with the filters' message if meshing or solving fails; their
+    warnings (a lamp drawn in a surface, an early stop) come as Python RuntimeWarnings.
     """
+    if not isinstance(scene, vtkDataSet):
+        raise TypeError(f"relight.solve needs a vtkPolyData scene (or another vtkDataSet of polygons), "
+                        f"not {type(scene).__name__}")
     mesher = vtkRadiosityMesher()
     mesher.SetInputData(scene)
     if patch_size is None or element_size is None:
@@ -125,6 +134,9 @@ def solve(scene, patch_size=None, element_size=None, **solver_settings):
     failed = [c for c in catchers if c.errors]
     if failed:
         raise RuntimeError(failed[0].first_error())  # the filter's own words, not VTK's prefix
+    for catcher in catchers:
+        for message in catcher.warnings:
+            warnings.warn(own_words(message), RuntimeWarning, stacklevel=2)
     return solver
 
 
@@ -188,6 +200,9 @@ def render_png(data, path, camera, size=(640, 480)):
     (ambient 1, diffuse 0): what you see is the solution.
     `camera` = (position, focal_point, view_up, view_angle_degrees).
     """
+    if data.GetPointData().GetArray("DisplayColors") is None:
+        raise ValueError("render_png shows the relight filter's DisplayColors: give it vtkRadiosityRelight's "
+                         "output (the solver's output holds radiosity, not colours)")
     renderer = FrameRenderer(camera, size)
     writer = vtkPNGWriter()
     writer.SetFileName(str(path))
