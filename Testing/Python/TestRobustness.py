@@ -309,6 +309,13 @@ check("Light 'Light0' faces a surface closer than" in found, f"a lamp wound the 
 inside = [(x, y, H) for x, y, _ in down]  # in the ceiling's plane, facing down like it
 found = warnings_for(box + [inside], [-1] * 6 + [0])
 check("Light 'Light0' lies in the plane of a surface" in found, f"a lamp drawn in the ceiling: {found}")
+floor = box[0]
+lamp_up = [(1.0, 1.0, 0.3), (2.0, 1.0, 0.3), (2.0, 2.0, 0.3), (1.0, 2.0, 0.3)]  # faces +z, nothing above it
+found = warnings_for([floor, lamp_up], [-1, 0])
+check("Light 'Light0' faces away from every surface" in found, f"a lamp facing out of an open scene: {found}")
+lamp_down = list(reversed(lamp_up))  # the same lamp facing the floor
+found = warnings_for([floor, lamp_down], [-1, 0])
+check("faces away" not in found, f"...and facing the floor, no such warning ({found or 'none'})")
 twisted = [box[0][0], box[0][1], (W, D, 0.1), box[0][3]]  # a floor corner 10 cm up
 found = warnings_for([twisted] + box[1:] + [down], [-1] * 6 + [0])
 check("are not flat" in found and "cell 0" in found, f"a twisted floor: {found}")

@@ -8,11 +8,16 @@ namespace radiosity
 
 namespace
 {
-/// Fraction of rays from the light's element centroids (normal, and rings at 30 and 60
-/// degrees) that hit something closer than `near`.
-double NearHits(const SceneGeometry& g, const Visibility& rays, const std::vector<int>& elements, double near)
+/// Of the rays from the light's element centroids (normal, and rings at 30 and 60
+/// degrees): the fractions that hit something closer than `near`, and anything at all.
+struct ProbeHits
 {
-  int hits = 0, cast = 0;
+  double Near = 0, Any = 0;
+};
+
+ProbeHits Probe(const SceneGeometry& g, const Visibility& rays, const std::vector<int>& elements, double near)
+{
+  int hits = 0, any = 0, cast = 0;
   for (int e : elements)
   {
     const Vec3& n = g.normal[e];
@@ -25,10 +30,12 @@ double NearHits(const SceneGeometry& g, const Visibility& rays, const std::vecto
       const Vec3 d = n * std::cos(polar) + (t * std::cos(azimuth) + b * std::sin(azimuth)) * std::sin(polar);
       Visibility::Hit hit;
       ++cast;
-      hits += rays.Intersect(g.centroid[e] + n * (1e-6 * g.sceneDiagonal), d, hit) && hit.distance < near;
+      const bool met = rays.Intersect(g.centroid[e] + n * (1e-6 * g.sceneDiagonal), d, hit);
+      any += met ? 1 : 0;
+      hits += met && hit.distance < near ? 1 : 0;
     }
   }
-  return cast ? static_cast<double>(hits) / cast : 0.0;
+  return cast ? ProbeHits{ static_cast<double>(hits) / cast, static_cast<double>(any) / cast } : ProbeHits();
 }
 /// True when x lies inside convex element e (in its plane, within `tolerance` of it).
 bool InsideElement(const SceneMesh& mesh, const SceneGeometry& g, int e, const Vec3& x, double tolerance)
@@ -106,7 +113,15 @@ std::vector<std::string> CheckLights(const SceneMesh& mesh, const SceneGeometry&
       messages.push_back(text);
     }
     const double near = 0.05 * std::sqrt(area);
-    if (!elements[l].empty() && NearHits(g, rays, elements[l], near) > 0.5)
+    const ProbeHits probe = elements[l].empty() ? ProbeHits{ 0, 1 } : Probe(g, rays, elements[l], near);
+    if (probe.Any == 0)
+    {
+      std::snprintf(text, sizeof(text),
+        "Light '%s' faces away from every surface: none of its probe rays meets the scene, so its light leaves "
+        "it. Is it wound the wrong way (its front is the right-hand side of its points' order)?", names[l].c_str());
+      messages.push_back(text);
+    }
+    if (probe.Near > 0.5)
     {
       std::snprintf(text, sizeof(text),
         "Light '%s' faces a surface closer than %.3g (5 %% of its size): most of its light lands there. Is it "

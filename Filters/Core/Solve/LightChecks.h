@@ -16,7 +16,9 @@ namespace radiosity
 /// - every element closed off (SceneGeometry::enclosed): it cannot emit at all;
 /// - it lies on another surface, in the same plane (a lamp drawn in the ceiling);
 /// - most of its probe rays land within 5 % of its own size: it faces a surface right in
-///   front of it (a ceiling lamp wound the wrong way), so nearly all its light stays there.
+///   front of it (a ceiling lamp wound the wrong way), so nearly all its light stays there;
+/// - none of its probe rays meets anything: it faces out of the scene (a floor lamp wound
+///   the wrong way in an open model), so its light leaves it.
 std::vector<std::string> CheckLights(const SceneMesh& mesh, const SceneGeometry& geometry, const Visibility& rays,
   const std::vector<std::string>& names);
 
