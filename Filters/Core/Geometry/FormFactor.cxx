@@ -8,7 +8,6 @@ namespace radiosity
 
 namespace
 {
-constexpr double kPi = 3.14159265358979323846;
 
 /// One edge's term of Lambert's contour integral, seen from the origin.
 inline double EdgeTerm(const Vec3& normal, const Vec3& a, const Vec3& b)
@@ -32,7 +31,7 @@ double LambertContour(const Vec3& point, const Vec3& normal, const Vec3* loop, i
   {
     sum += EdgeTerm(normal, loop[i] - point, loop[(i + 1) % count] - point);
   }
-  return std::fabs(sum) / (2.0 * kPi);
+  return std::fabs(sum) / (2.0 * Pi);
 }
 } // namespace
 
@@ -77,7 +76,7 @@ double EdgeSetFormFactor(
   {
     sum += EdgeTerm(normal, edges[2 * i] - point, edges[2 * i + 1] - point);
   }
-  return std::fabs(sum) / (2.0 * kPi);
+  return std::fabs(sum) / (2.0 * Pi);
 }
 
 double PolygonToPolygonFormFactor(const Vec3* from, int fromCount, const Vec3* to, int toCount,

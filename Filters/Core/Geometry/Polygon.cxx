@@ -27,17 +27,43 @@ Bounds::Bounds(const std::vector<Vec3>& points)
 {
   if (points.empty())
   {
+    Lo = Hi = Vec3();
     return;
   }
-  Lo = Hi = points[0];
   for (const Vec3& p : points)
   {
-    for (int c = 0; c < 3; ++c)
+    Add(p);
+  }
+}
+
+void Bounds::Add(const Vec3& p)
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    Lo[c] = std::min(Lo[c], p[c]);
+    Hi[c] = std::max(Hi[c], p[c]);
+  }
+}
+
+void Bounds::Add(const Bounds& b)
+{
+  if (b.Lo.x <= b.Hi.x)
+  {
+    Add(b.Lo);
+    Add(b.Hi);
+  }
+}
+
+bool Bounds::Overlaps(const Bounds& b, double tolerance) const
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    if (b.Lo[c] > Hi[c] + tolerance || Lo[c] > b.Hi[c] + tolerance)
     {
-      Lo[c] = std::min(Lo[c], p[c]);
-      Hi[c] = std::max(Hi[c], p[c]);
+      return false;
     }
   }
+  return true;
 }
 
 Vec3 NewellVector(const Vec3* loop, int count)

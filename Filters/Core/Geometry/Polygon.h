@@ -10,11 +10,17 @@
 namespace radiosity
 {
 
-/// Axis-aligned bounds of a point set (empty: both corners at the origin).
+/// Axis-aligned bounds: of a point set, or grown point by point from empty.
 struct Bounds
 {
-  Vec3 Lo, Hi;
+  Vec3 Lo{ 1e300, 1e300, 1e300 }, Hi{ -1e300, -1e300, -1e300 }; ///< empty: Lo above Hi
+  Bounds() = default;
+  /// Of `points` (none: both corners at the origin).
   explicit Bounds(const std::vector<Vec3>& points);
+  void Add(const Vec3& p);
+  void Add(const Bounds& b); ///< an empty `b` adds nothing
+  /// True when the boxes overlap or lie within `tolerance` of each other.
+  bool Overlaps(const Bounds& b, double tolerance) const;
   double Diagonal() const { return Norm(Hi - Lo); }
   Vec3 Centre() const { return (Lo + Hi) * 0.5; }
 };

@@ -91,7 +91,7 @@ std::vector<std::vector<float>> RenderLayers(const Visibility& scene,
   const Vec3 forward = Normalized(camera.FocalPoint - camera.Position);
   const Vec3 right = Normalized(Cross(forward, camera.ViewUp));
   const Vec3 up = Cross(right, forward);
-  const double halfHeight = std::tan(0.5 * camera.ViewAngle * 3.14159265358979323846 / 180.0);
+  const double halfHeight = std::tan(0.5 * camera.ViewAngle * Pi / 180.0);
   const double halfWidth = halfHeight * w / h;
   // One packet of rays per run of pixels along a row; rows in parallel, a band of 16 rows
   // at a time so that progress and abort are heard from this thread.

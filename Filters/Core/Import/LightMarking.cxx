@@ -68,11 +68,10 @@ std::string AreaLightLoop(const AreaLight& light, std::vector<Vec3>& loop)
   }
   // A regular n-gon of the disk's area: circumradius r with n/2 r^2 sin(2 pi/n) = pi R^2.
   constexpr int corners = 32;
-  const double pi = 3.14159265358979323846;
-  const double radius = 0.5 * light.Width * std::sqrt(2 * pi / (corners * std::sin(2 * pi / corners)));
+  const double radius = 0.5 * light.Width * std::sqrt(2 * Pi / (corners * std::sin(2 * Pi / corners)));
   for (int k = 0; k < corners; ++k)
   {
-    const double angle = 2 * pi * k / corners;
+    const double angle = 2 * Pi * k / corners;
     loop.push_back(light.Centre + t * (radius * std::cos(angle)) + b * (radius * std::sin(angle)));
   }
   return std::string();

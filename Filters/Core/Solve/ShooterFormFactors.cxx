@@ -16,7 +16,6 @@ namespace radiosity
 
 namespace
 {
-constexpr double kPi = 3.14159265358979323846;
 
 } // namespace
 
@@ -93,39 +92,12 @@ ShooterFormFactors::ShooterFormFactors(const SceneMesh& mesh, const SceneGeometr
   }
 }
 
-void ShooterFormFactors::Box::Add(const Vec3& p)
-{
-  for (int c = 0; c < 3; ++c)
-  {
-    Lo[c] = std::min(Lo[c], p[c]);
-    Hi[c] = std::max(Hi[c], p[c]);
-  }
-}
-
-void ShooterFormFactors::Box::Add(const Box& b)
-{
-  Add(b.Lo);
-  Add(b.Hi);
-}
-
-bool ShooterFormFactors::Box::Overlaps(const Box& b, double tolerance) const
-{
-  for (int c = 0; c < 3; ++c)
-  {
-    if (b.Lo[c] > Hi[c] + tolerance || Lo[c] > b.Hi[c] + tolerance)
-    {
-      return false;
-    }
-  }
-  return true;
-}
-
 void ShooterFormFactors::FindBlockers()
 {
   const int n = Mesh.NumberOfPolygons();
-  ElementBox.assign(n, Box());
-  PatchBox.assign(Geometry.patchElements.size(), Box());
-  Box scene;
+  ElementBox.assign(n, Bounds());
+  PatchBox.assign(Geometry.patchElements.size(), Bounds());
+  Bounds scene;
   for (int e = 0; e < n; ++e)
   {
     for (int v = 0; v < Mesh.PolygonSize(e); ++v)
@@ -139,9 +111,9 @@ void ShooterFormFactors::FindBlockers()
   // polygon with no scene point strictly behind its plane cannot block any pair; only
   // the others ("blockers") can. Elements are grouped by plane: one test per plane.
   const double eps = 1e-9 * Geometry.sceneDiagonal;
-  std::map<std::array<long long, 4>, Box> planes;
+  std::map<std::array<long long, 4>, Bounds> planes;
   std::map<std::array<long long, 4>, bool> blocking;
-  std::map<int, Box> patches; // blocking elements' boxes per patch: tighter than per plane
+  std::map<int, Bounds> patches; // blocking elements' boxes per patch: tighter than per plane
   for (int e = 0; e < n; ++e)
   {
     const Vec3& normal = Geometry.normal[e];
@@ -176,7 +148,7 @@ void ShooterFormFactors::FindBlockers()
     }
   }
   BlockingPlaneCount = static_cast<int>(planes.size());
-  const auto& boxes = patches.size() <= 256 ? patches : std::map<int, Box>();
+  const auto& boxes = patches.size() <= 256 ? patches : std::map<int, Bounds>();
   for (const auto& patch : boxes)
   {
     Blockers.push_back(patch.second);
@@ -201,13 +173,13 @@ bool ShooterFormFactors::MayBeBlockedBetweenPatches(int receiver, int shooter) c
   return !CullVisibility || ShaftMayBeBlocked(PatchBox[shooter], PatchBox[receiver]);
 }
 
-bool ShooterFormFactors::ShaftMayBeBlocked(const Box& from, const Box& to) const
+bool ShooterFormFactors::ShaftMayBeBlocked(const Bounds& from, const Bounds& to) const
 {
   if (Blockers.empty())
   {
     return false;
   }
-  Box shaft = from;
+  Bounds shaft = from;
   shaft.Add(to);
   const double tolerance = 1e-9 * Geometry.sceneDiagonal;
   if (!shaft.Overlaps(AllBlockers, tolerance))
@@ -218,7 +190,7 @@ bool ShooterFormFactors::ShaftMayBeBlocked(const Box& from, const Box& to) const
   {
     return true; // too many to check one by one: be conservative
   }
-  for (const Box& blocker : Blockers)
+  for (const Bounds& blocker : Blockers)
   {
     if (shaft.Overlaps(blocker, tolerance))
     {
@@ -439,7 +411,7 @@ bool ShooterFormFactors::SeesClosedScene(int patch)
     for (int r = 0; r < probes && closed; ++r)
     {
       const Vec3 from = SamplePoint(patch, r, probes, random);
-      const double u = (r % 8 + random.Next()) / 8, phi = 2 * 3.14159265358979323846 * (r / 8 + random.Next()) / 8;
+      const double u = (r % 8 + random.Next()) / 8, phi = 2 * Pi * (r / 8 + random.Next()) / 8;
       const double radius = std::sqrt(u);
       const Vec3 direction = t * (radius * std::cos(phi)) + b * (radius * std::sin(phi)) + n * std::sqrt(1 - u);
       closed = FrontHit(from, direction) >= 0;
@@ -641,7 +613,7 @@ long long ShooterFormFactors::Hemicube(int patch, int resolution, std::vector<do
         const double x = -1 + (i + 0.5) * d, y = -1 + (j + 0.5) * d;
         const double r = x * x + y * y + 1;
         CubeDirections.push_back({ x, y, 1 });
-        CubeWeights.push_back(dA / (kPi * r * r));
+        CubeWeights.push_back(dA / (Pi * r * r));
       }
     }
     for (int side = 0; side < 4; ++side)
@@ -657,7 +629,7 @@ long long ShooterFormFactors::Hemicube(int patch, int resolution, std::vector<do
             : side == 2              ? Vec3{ u, 1, z }
                                      : Vec3{ u, -1, z };
           CubeDirections.push_back(dir);
-          CubeWeights.push_back(z * dA / (kPi * r * r));
+          CubeWeights.push_back(z * dA / (Pi * r * r));
         }
       }
     }
@@ -705,7 +677,7 @@ long long ShooterFormFactors::MonteCarlo(int patch, int samples, int shot, std::
       }
       const Vec3 origin = tri.A + (tri.B - tri.A) * a + (tri.C - tri.A) * b + tri.Normal * Epsilon;
       // Cosine-distributed direction (Malley): uniform on the disk, lifted to the hemisphere.
-      const double u = random.Next(), phi = 2 * kPi * random.Next();
+      const double u = random.Next(), phi = 2 * Pi * random.Next();
       const double radius = std::sqrt(u);
       Vec3 t, bt;
       TangentFrame(tri.Normal, t, bt);

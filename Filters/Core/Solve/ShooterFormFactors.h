@@ -3,6 +3,7 @@
 #define RadiosityCore_ShooterFormFactors_h
 
 #include "Base/SampleStream.h"
+#include "Geometry/Polygon.h"
 #include "Geometry/Scene.h"
 #include "Geometry/Visibility.h"
 #include "Base/WorkerPool.h"
@@ -155,21 +156,14 @@ private:
   Vec3 ReceiverPoint(int patch, int r, int samples, SampleStream& random) const;
   int VisibleRays(int patch, int element, int samples) const;
 
-  struct Box
-  {
-    Vec3 Lo{ 1e300, 1e300, 1e300 }, Hi{ -1e300, -1e300, -1e300 };
-    void Add(const Vec3& p);
-    void Add(const Box& b);
-    bool Overlaps(const Box& b, double tolerance) const;
-  };
   void FindBlockers();
   bool MayBeBlocked(int patch, int element) const;
-  bool ShaftMayBeBlocked(const Box& from, const Box& to) const;
+  bool ShaftMayBeBlocked(const Bounds& from, const Bounds& to) const;
   bool CullVisibility = false;
   const std::vector<char>* Receivers = nullptr;
   int BlockingPlaneCount = 0;
-  std::vector<Box> ElementBox, PatchBox, Blockers;
-  Box AllBlockers;
+  std::vector<Bounds> ElementBox, PatchBox, Blockers;
+  Bounds AllBlockers;
   std::atomic<long long> Unblockable{ 0 }, Skipped{ 0 };
 };
 
