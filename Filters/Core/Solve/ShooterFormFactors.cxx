@@ -490,10 +490,14 @@ double ShooterFormFactors::PointFactor(int patch, const Vec3& x, const Vec3& nor
   return f;
 }
 
-Vec3 ShooterFormFactors::SamplePoint(int patch, int r, int samples, SampleStream& random) const
+Vec3 ShooterFormFactors::SamplePoint(int patch, int r, int samples, SampleStream& random, const SampleTriangle** picked) const
 {
   // Stratified in the area CDF, so the samples cover the whole patch.
   const SampleTriangle& tri = PickTriangle(patch, (r + random.Next()) / samples);
+  if (picked)
+  {
+    *picked = &tri;
+  }
   double a = random.Next(), b = random.Next();
   if (a + b > 1)
   {
@@ -668,14 +672,9 @@ long long ShooterFormFactors::MonteCarlo(int patch, int samples, int shot, std::
     {
       SampleStream random(static_cast<std::uint64_t>(patch), static_cast<std::uint64_t>(shot),
         static_cast<std::uint64_t>(r) + 1);
-      const SampleTriangle& tri = PickTriangle(patch, (r + random.Next()) / samples);
-      double a = random.Next(), b = random.Next();
-      if (a + b > 1)
-      {
-        a = 1 - a;
-        b = 1 - b;
-      }
-      const Vec3 origin = tri.A + (tri.B - tri.A) * a + (tri.C - tri.A) * b + tri.Normal * Epsilon;
+      const SampleTriangle* picked = nullptr;
+      const Vec3 origin = SamplePoint(patch, r, samples, random, &picked);
+      const SampleTriangle& tri = *picked;
       // Cosine-distributed direction (Malley): uniform on the disk, lifted to the hemisphere.
       const double u = random.Next(), phi = 2 * Pi * random.Next();
       const double radius = std::sqrt(u);

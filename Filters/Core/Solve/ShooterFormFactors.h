@@ -150,8 +150,9 @@ private:
   double Epsilon = 0;
 
   const SampleTriangle& PickTriangle(int patch, double u) const;
-  /// The r-th of `samples` points stratified over the patch, just off its front.
-  Vec3 SamplePoint(int patch, int r, int samples, SampleStream& random) const;
+  /// The r-th of `samples` points stratified over the patch, just off its front;
+  /// `picked` (if given) receives the triangle it lies on.
+  Vec3 SamplePoint(int patch, int r, int samples, SampleStream& random, const SampleTriangle** picked = nullptr) const;
   /// The same, as a receiver: over the patch's unsheltered elements (their centroids).
   Vec3 ReceiverPoint(int patch, int r, int samples, SampleStream& random) const;
   int VisibleRays(int patch, int element, int samples) const;
