@@ -46,11 +46,29 @@ vtkSmartPointer<vtkPolyData> AsPolyData(vtkDataSet* input)
   return polygons;
 }
 
+/// Cells share points (and triangles pair into quads) only if reflectance, light and
+/// emission all agree: one key per such material.
+std::vector<int> SurfaceKeys(const radiosity::SceneMesh& mesh, const std::vector<radiosity::Vec3>& emission)
+{
+  std::map<std::tuple<double, double, double, int, double, double, double>, int> materials;
+  std::vector<int> surfaceKey(mesh.NumberOfPolygons(), 0);
+  for (int i = 0; i < mesh.NumberOfPolygons() && i < static_cast<int>(mesh.reflectance.size()); ++i)
+  {
+    const radiosity::Vec3& r = mesh.reflectance[i];
+    const radiosity::Vec3 e = emission.empty() ? radiosity::Vec3() : emission[i];
+    const int light = i < static_cast<int>(mesh.lightId.size()) ? mesh.lightId[i] : -1;
+    const auto key = std::make_tuple(r.x, r.y, r.z, light, e.x, e.y, e.z);
+    surfaceKey[i] = materials.emplace(key, static_cast<int>(materials.size())).first->second;
+  }
+  return surfaceKey;
+}
+
 } // namespace
 
 struct vtkRadiosityMesher::Polygons
 {
   radiosity::SceneMesh Mesh;
+  std::vector<int> SurfaceKey; ///< as meshing keys them (triangle pairs join within one)
 };
 
 vtkRadiosityMesher::vtkRadiosityMesher()
@@ -63,7 +81,11 @@ vtkRadiosityMesher::~vtkRadiosityMesher() = default;
 double vtkRadiosityMesher::EstimateElements(double patchSize, double elementSize)
 {
   const radiosity::SceneMesh& mesh = this->SeenInput->Mesh;
-  return radiosity::CountElements(mesh.points, mesh.offsets, mesh.connectivity, patchSize, elementSize);
+  radiosity::MesherOptions options;
+  options.PatchSize = patchSize;
+  options.ElementSize = elementSize;
+  options.MergeTriangles = this->MergeTriangles;
+  return radiosity::CountMeshElements(mesh.points, mesh.offsets, mesh.connectivity, this->SeenInput->SurfaceKey, options);
 }
 
 void vtkRadiosityMesher::PrintSelf(ostream& os, vtkIndent indent)
@@ -100,10 +122,15 @@ int vtkRadiosityMesher::RequestInformation(
   if (input && input->GetNumberOfCells() > 0 && vtkRadiosityAdapter::CopyPolygons(input, mesh, error))
   {
     sizes = radiosity::SuggestMeshSizes(mesh.points, mesh.offsets, mesh.connectivity);
+    std::vector<radiosity::Vec3> emission;
+    // Without valid arrays the mesher will refuse the input; the estimate then pairs all.
+    vtkRadiosityAdapter::ReadSceneArrays(input, mesh, emission, error);
+    this->SeenInput->SurfaceKey = SurfaceKeys(mesh, emission);
   }
   else
   {
     mesh = radiosity::SceneMesh();
+    this->SeenInput->SurfaceKey.clear();
   }
   this->SuggestedPatchSize = sizes.PatchSize;
   this->SuggestedElementSize = sizes.ElementSize;
@@ -130,16 +157,7 @@ std::string MeshPiece(vtkRadiosityMesher* self, vtkPolyData* input, double eleme
     return error;
   }
 
-  // Cells share points only if reflectance, light and emission all agree.
-  std::map<std::tuple<double, double, double, int, double, double, double>, int> materials;
-  std::vector<int> surfaceKey(mesh.NumberOfPolygons());
-  for (int i = 0; i < mesh.NumberOfPolygons(); ++i)
-  {
-    const radiosity::Vec3& r = mesh.reflectance[i];
-    const radiosity::Vec3 e = emission.empty() ? radiosity::Vec3() : emission[i];
-    const auto key = std::make_tuple(r.x, r.y, r.z, mesh.lightId[i], e.x, e.y, e.z);
-    surfaceKey[i] = materials.emplace(key, static_cast<int>(materials.size())).first->second;
-  }
+  const std::vector<int> surfaceKey = SurfaceKeys(mesh, emission);
 
   radiosity::MesherOptions options;
   options.PatchSize = self->GetPatchSize();

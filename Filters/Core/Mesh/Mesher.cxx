@@ -633,7 +633,33 @@ double ChooseElementSize(const PolygonArrays& polygons, const Contacts& contacts
   }
   return size;
 }
+/// The polygons the mesher meshes: triangle pairs joined into quads where MergeTriangles.
+PairedPolygons Paired(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, const std::vector<int>& surfaceKey, const MesherOptions& options)
+{
+  if (options.MergeTriangles)
+  {
+    const double tolerance = 1e-7 * std::max(Bounds(points).Diagonal(), 1e-300);
+    return MergeTrianglePairs(points, offsets, connectivity, surfaceKey, tolerance);
+  }
+  PairedPolygons polygons;
+  polygons.offsets = offsets;
+  polygons.connectivity = connectivity;
+  for (size_t i = 0; i + 1 < offsets.size(); ++i)
+  {
+    polygons.source.push_back(static_cast<int>(i));
+  }
+  return polygons;
+}
 } // namespace
+
+double CountMeshElements(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, const std::vector<int>& surfaceKey, const MesherOptions& options)
+{
+  const PairedPolygons polygons = Paired(points, offsets, connectivity, surfaceKey, options);
+  return CountElements(
+    points, polygons.offsets, polygons.connectivity, options.PatchSize, options.ElementSize, options.WholeScene);
+}
 
 std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>& offsets,
   const std::vector<int>& connectivity, const std::vector<int>& surfaceKey,
@@ -651,21 +677,7 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
     }
   }
   WarnAboutWarpedPolygons(points, offsets, connectivity, options);
-  PairedPolygons polygons;
-  if (options.MergeTriangles)
-  {
-    const double tolerance = 1e-7 * std::max(Bounds(points).Diagonal(), 1e-300);
-    polygons = MergeTrianglePairs(points, offsets, connectivity, surfaceKey, tolerance);
-  }
-  else
-  {
-    polygons.offsets = offsets;
-    polygons.connectivity = connectivity;
-    for (size_t i = 0; i + 1 < offsets.size(); ++i)
-    {
-      polygons.source.push_back(static_cast<int>(i));
-    }
-  }
+  const PairedPolygons polygons = Paired(points, offsets, connectivity, surfaceKey, options);
   const PolygonArrays paired{ points, polygons.offsets, polygons.connectivity };
   const Contacts contacts = FindSceneContacts(paired, options.WholeScene);
   MesherOptions sized = options;

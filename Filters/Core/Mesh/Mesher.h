@@ -52,6 +52,12 @@ double CountElements(const std::vector<Vec3>& points, const std::vector<int>& of
   const std::vector<int>& connectivity, double patchSize, double elementSize,
   const PolygonArrays* wholeScene = nullptr);
 
+/// The elements MeshPolygons makes of these polygons with `options` (triangle pairs
+/// merged as it merges them, MergeTriangles; contacts cut; options.WholeScene), at
+/// PatchSize and ElementSize as given: exact, without meshing.
+double CountMeshElements(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, const std::vector<int>& surfaceKey, const MesherOptions& options);
+
 /// CountElements for many sizes (a budget's search, a panel's estimate as it is typed):
 /// the contacts are found once. Holds references to the arrays.
 class ElementCounter
