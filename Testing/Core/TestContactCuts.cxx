@@ -38,6 +38,37 @@ struct FloorAndWalls
   PolygonArrays Arrays() const { return { points, offsets, connectivity }; }
 };
 
+/// The mesher's cutting over a list of elements (corners flattened, `sides` and `patch`
+/// per element): each element's parts replace it, keeping its patch. Returns the number
+/// of elements added.
+int CutAlongContacts(const std::vector<ContactSegment>& segments, const Vec3& normal, double tolerance,
+  std::vector<Vec3>& corners, std::vector<int>& sides, std::vector<int>& patch)
+{
+  const ContactCutter cutter(segments, normal, tolerance);
+  const size_t before = sides.size();
+  std::vector<Vec3> nextCorners;
+  std::vector<int> nextSides, nextPatch;
+  std::vector<std::vector<Vec3>> parts;
+  size_t first = 0;
+  for (size_t e = 0; e < before; first += sides[e], ++e)
+  {
+    if (cutter.Cut(corners.data() + first, sides[e], parts) == 0)
+    {
+      parts.assign(1, std::vector<Vec3>(corners.begin() + first, corners.begin() + first + sides[e]));
+    }
+    for (const std::vector<Vec3>& part : parts)
+    {
+      nextCorners.insert(nextCorners.end(), part.begin(), part.end());
+      nextSides.push_back(static_cast<int>(part.size()));
+      nextPatch.push_back(patch[e]);
+    }
+  }
+  corners.swap(nextCorners);
+  sides.swap(nextSides);
+  patch.swap(nextPatch);
+  return static_cast<int>(sides.size() - before);
+}
+
 double Area(const std::vector<Vec3>& corners, const std::vector<int>& sides)
 {
   double area = 0;

@@ -60,13 +60,6 @@ private:
   mutable std::vector<int> Near; ///< scratch: one cutter serves one thread
 };
 
-/// Convex elements (`corners`, `sides` per element, `patch` per element) in the plane with
-/// `normal`: each element a segment crosses inside is split along the segment's line into
-/// two, both keeping the element's patch. Cuts that would leave a part thinner than
-/// `tolerance` are not made. Returns the number of elements added.
-int CutAlongContacts(const std::vector<ContactSegment>& segments, const Vec3& normal, double tolerance,
-  std::vector<Vec3>& corners, std::vector<int>& sides, std::vector<int>& patch);
-
 } // namespace radiosity
 
 #endif
