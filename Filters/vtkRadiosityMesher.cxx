@@ -82,10 +82,9 @@ double vtkRadiosityMesher::EstimateElements(double patchSize, double elementSize
 {
   const radiosity::SceneMesh& mesh = this->SeenInput->Mesh;
   radiosity::MesherOptions options;
-  options.PatchSize = patchSize;
-  options.ElementSize = elementSize;
   options.MergeTriangles = this->MergeTriangles;
-  return radiosity::CountMeshElements(mesh.points, mesh.offsets, mesh.connectivity, this->SeenInput->SurfaceKey, options);
+  const radiosity::ElementCounter count(mesh.points, mesh.offsets, mesh.connectivity, this->SeenInput->SurfaceKey, options);
+  return count(patchSize, elementSize);
 }
 
 void vtkRadiosityMesher::PrintSelf(ostream& os, vtkIndent indent)
@@ -182,9 +181,16 @@ double ElementSizeEverywhere(vtkRadiosityMesher* self, vtkMultiProcessController
 {
   radiosity::SceneMesh mesh;
   std::string error;
+  std::vector<radiosity::Vec3> emission;
   const bool usable = input && input->GetNumberOfCells() > 0 && !vtkRadiosityAdapter::FailedUpstream(input) &&
-    vtkRadiosityAdapter::CopyPolygons(input, mesh, error);
-  const radiosity::ElementCounter counter(mesh.points, mesh.offsets, mesh.connectivity, wholeScene);
+    vtkRadiosityAdapter::CopyPolygons(input, mesh, error) &&
+    vtkRadiosityAdapter::ReadSceneArrays(input, mesh, emission, error);
+  // Counted as the rank will mesh its piece: triangle pairs merged, contacts cut.
+  radiosity::MesherOptions options;
+  options.MergeTriangles = self->GetMergeTriangles();
+  options.WholeScene = wholeScene;
+  const std::vector<int> keys = usable ? SurfaceKeys(mesh, emission) : std::vector<int>();
+  const radiosity::ElementCounter counter(mesh.points, mesh.offsets, mesh.connectivity, keys, options);
   auto count = [&](double size) {
     const double here = usable ? counter(self->GetPatchSize(), size) : 0;
     return static_cast<double>(vtkRadiosityPieces::SumOverRanks(parallel, static_cast<long long>(here)));

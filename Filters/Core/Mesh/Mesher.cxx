@@ -13,6 +13,7 @@
 #include <map>
 #include <sstream>
 #include <tuple>
+#include <utility>
 
 namespace radiosity
 {
@@ -273,17 +274,57 @@ double CountWithContacts(const PolygonArrays& polygons, double patchSize, double
 }
 } // namespace
 
+namespace
+{
+/// The polygons the mesher meshes: triangle pairs joined into quads where MergeTriangles.
+PairedPolygons Paired(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, const std::vector<int>& surfaceKey, const MesherOptions& options)
+{
+  if (options.MergeTriangles)
+  {
+    const double tolerance = 1e-7 * std::max(Bounds(points).Diagonal(), 1e-300);
+    return MergeTrianglePairs(points, offsets, connectivity, surfaceKey, tolerance);
+  }
+  PairedPolygons polygons;
+  polygons.offsets = offsets;
+  polygons.connectivity = connectivity;
+  for (size_t i = 0; i + 1 < offsets.size(); ++i)
+  {
+    polygons.source.push_back(static_cast<int>(i));
+  }
+  return polygons;
+}
+} // namespace
+
 struct ElementCounter::Internals
 {
+  PairedPolygons Pairs; ///< the polygons as the mesher pairs them (when the counter pairs)
   PolygonArrays Polygons;
   Contacts Found;
+
+  Internals(const std::vector<Vec3>& points, const std::vector<int>& offsets, const std::vector<int>& connectivity)
+    : Polygons{ points, offsets, connectivity }
+  {
+  }
+  Internals(const std::vector<Vec3>& points, PairedPolygons pairs)
+    : Pairs(std::move(pairs))
+    , Polygons{ points, Pairs.offsets, Pairs.connectivity }
+  {
+  }
 };
 
 ElementCounter::ElementCounter(const std::vector<Vec3>& points, const std::vector<int>& offsets,
   const std::vector<int>& connectivity, const PolygonArrays* wholeScene)
-  : Impl(new Internals{ { points, offsets, connectivity }, Contacts() })
+  : Impl(new Internals(points, offsets, connectivity))
 {
   Impl->Found = FindSceneContacts(Impl->Polygons, wholeScene);
+}
+
+ElementCounter::ElementCounter(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, const std::vector<int>& surfaceKey, const MesherOptions& options)
+  : Impl(new Internals(points, Paired(points, offsets, connectivity, surfaceKey, options)))
+{
+  Impl->Found = FindSceneContacts(Impl->Polygons, options.WholeScene);
 }
 
 ElementCounter::~ElementCounter() = default;
@@ -633,33 +674,7 @@ double ChooseElementSize(const PolygonArrays& polygons, const Contacts& contacts
   }
   return size;
 }
-/// The polygons the mesher meshes: triangle pairs joined into quads where MergeTriangles.
-PairedPolygons Paired(const std::vector<Vec3>& points, const std::vector<int>& offsets,
-  const std::vector<int>& connectivity, const std::vector<int>& surfaceKey, const MesherOptions& options)
-{
-  if (options.MergeTriangles)
-  {
-    const double tolerance = 1e-7 * std::max(Bounds(points).Diagonal(), 1e-300);
-    return MergeTrianglePairs(points, offsets, connectivity, surfaceKey, tolerance);
-  }
-  PairedPolygons polygons;
-  polygons.offsets = offsets;
-  polygons.connectivity = connectivity;
-  for (size_t i = 0; i + 1 < offsets.size(); ++i)
-  {
-    polygons.source.push_back(static_cast<int>(i));
-  }
-  return polygons;
-}
 } // namespace
-
-double CountMeshElements(const std::vector<Vec3>& points, const std::vector<int>& offsets,
-  const std::vector<int>& connectivity, const std::vector<int>& surfaceKey, const MesherOptions& options)
-{
-  const PairedPolygons polygons = Paired(points, offsets, connectivity, surfaceKey, options);
-  return CountElements(
-    points, polygons.offsets, polygons.connectivity, options.PatchSize, options.ElementSize, options.WholeScene);
-}
 
 std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>& offsets,
   const std::vector<int>& connectivity, const std::vector<int>& surfaceKey,

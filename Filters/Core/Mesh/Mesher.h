@@ -52,12 +52,6 @@ double CountElements(const std::vector<Vec3>& points, const std::vector<int>& of
   const std::vector<int>& connectivity, double patchSize, double elementSize,
   const PolygonArrays* wholeScene = nullptr);
 
-/// The elements MeshPolygons makes of these polygons with `options` (triangle pairs
-/// merged as it merges them, MergeTriangles; contacts cut; options.WholeScene), at
-/// PatchSize and ElementSize as given: exact, without meshing.
-double CountMeshElements(const std::vector<Vec3>& points, const std::vector<int>& offsets,
-  const std::vector<int>& connectivity, const std::vector<int>& surfaceKey, const MesherOptions& options);
-
 /// CountElements for many sizes (a budget's search, a panel's estimate as it is typed):
 /// the contacts are found once. Holds references to the arrays.
 class ElementCounter
@@ -65,6 +59,11 @@ class ElementCounter
 public:
   ElementCounter(const std::vector<Vec3>& points, const std::vector<int>& offsets,
     const std::vector<int>& connectivity, const PolygonArrays* wholeScene = nullptr);
+  /// Counts what MeshPolygons makes of these polygons with `options`: triangle pairs
+  /// merged as it merges them (MergeTriangles, with the same surface keys), contacts cut
+  /// (options.WholeScene), exactly, without meshing. Sizes are the call's, not options'.
+  ElementCounter(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+    const std::vector<int>& connectivity, const std::vector<int>& surfaceKey, const MesherOptions& options);
   ~ElementCounter();
   double operator()(double patchSize, double elementSize) const;
 
