@@ -14,7 +14,7 @@ struct FlatPolygon
 {
   Vec3 Normal, Origin, U, V;
   std::vector<double> X, Y;
-  Vec3 Lo, Hi; ///< bounds in 3D
+  Bounds Box; ///< in 3D
 
   double Along(const Vec3& p) const { return Dot(Normal, p - Origin); }
 
@@ -76,9 +76,7 @@ FlatPolygon Flatten(const std::vector<Vec3>& loop)
   f.Normal = Normalized(NewellVector(loop.data(), static_cast<int>(loop.size())));
   f.Origin = PolygonCentroid(loop.data(), static_cast<int>(loop.size()));
   TangentFrame(f.Normal, f.U, f.V);
-  const Bounds box(loop);
-  f.Lo = box.Lo;
-  f.Hi = box.Hi;
+  f.Box = Bounds(loop);
   for (const Vec3& p : loop)
   {
     f.X.push_back(Dot(f.U, p - f.Origin));
@@ -109,13 +107,11 @@ public:
   PolygonGrid(const std::vector<FlatPolygon>& polygons, double touch)
     : Touch(touch)
   {
-    std::vector<Vec3> corners;
+    Bounds box;
     for (const FlatPolygon& f : polygons)
     {
-      corners.push_back(f.Lo);
-      corners.push_back(f.Hi);
+      box.Add(f.Box);
     }
-    const Bounds box(corners);
     Lo = box.Lo;
     const double extent = std::max({ box.Hi.x - Lo.x, box.Hi.y - Lo.y, box.Hi.z - Lo.z, 1e-300 });
     Resolution = std::clamp(static_cast<int>(2 * std::cbrt(static_cast<double>(polygons.size()))), 1, 64);
@@ -123,7 +119,7 @@ public:
     Cells.resize(static_cast<size_t>(Resolution) * Resolution * Resolution);
     for (size_t i = 0; i < polygons.size(); ++i)
     {
-      Visit(polygons[i].Lo, polygons[i].Hi, [&](size_t cell) { Cells[cell].push_back(static_cast<int>(i)); });
+      Visit(polygons[i].Box, [&](size_t cell) { Cells[cell].push_back(static_cast<int>(i)); });
     }
   }
 
@@ -131,9 +127,10 @@ public:
   template <typename Use>
   void Near(const Vec3& a, const Vec3& b, std::vector<int>& stamp, int mark, const Use& use) const
   {
-    const Vec3 lo{ std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z) };
-    const Vec3 hi{ std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z) };
-    Visit(lo, hi, [&](size_t cell) {
+    Bounds reach;
+    reach.Add(a);
+    reach.Add(b);
+    Visit(reach, [&](size_t cell) {
       for (int i : Cells[cell])
       {
         if (stamp[i] != mark)
@@ -152,8 +149,9 @@ private:
   }
 
   template <typename Use>
-  void Visit(const Vec3& lo, const Vec3& hi, const Use& use) const
+  void Visit(const Bounds& box, const Use& use) const
   {
+    const Vec3 &lo = box.Lo, &hi = box.Hi;
     const int x0 = Index(lo.x - Touch, Lo.x), x1 = Index(hi.x + Touch, Lo.x);
     const int y0 = Index(lo.y - Touch, Lo.y), y1 = Index(hi.y + Touch, Lo.y);
     const int z0 = Index(lo.z - Touch, Lo.z), z1 = Index(hi.z + Touch, Lo.z);
