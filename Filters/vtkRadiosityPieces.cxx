@@ -2,6 +2,7 @@
 #include "vtkRadiosityAdapter.h"
 
 #include "vtkRadiosityAppendPieces.h"
+#include "vtkRadiosityGather.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
@@ -99,14 +100,13 @@ namespace
 void GatherWhole(vtkMultiProcessController* controller, vtkPolyData* piece, vtkPolyData* whole, int& failedRank,
   bool byCells = true)
 {
-  std::vector<vtkSmartPointer<vtkDataObject>> pieces;
-  vtkNew<vtkPolyData> none;
-  controller->AllGather(piece ? piece : none.Get(), pieces);
+  std::vector<vtkSmartPointer<vtkPolyData>> pieces;
+  vtkRadiosityGather::AllGatherPieces(controller, piece, pieces);
   failedRank = -1;
   vtkNew<vtkRadiosityAppendPieces> append;
   for (size_t rank = 0; rank < pieces.size(); ++rank)
   {
-    auto* data = vtkPolyData::SafeDownCast(pieces[rank]);
+    vtkPolyData* data = pieces[rank];
     if (failedRank < 0 && vtkRadiosityAdapter::FailedUpstream(pieces[rank]))
     {
       failedRank = static_cast<int>(rank);

@@ -1,0 +1,216 @@
+// Run as `mpiexec -np 3 RadiosityParallelTests TestGatherPieces`: every rank builds a
+// different piece (rank 2 none at all), gathers them raw, and checks each against the piece
+// that rank built, array by array: type, name, values, active attributes, the four cell
+// arrays in 32- and 64-bit storage, the field data. Then once more with a string array in
+// one rank's cell data, which sends everything the general way.
+#include "vtkRadiosityGather.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkIdList.h"
+#include "vtkIntArray.h"
+#include "vtkMPIController.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkStringArray.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <cstdio>
+#include <string>
+
+namespace
+{
+
+/// The piece rank `rank` holds: null for rank 2, otherwise points and cells whose values
+/// say which rank made them.
+vtkSmartPointer<vtkPolyData> MakePiece(int rank, bool withStrings)
+{
+  if (rank == 2)
+  {
+    return nullptr;
+  }
+  auto piece = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataType(rank == 0 ? VTK_DOUBLE : VTK_FLOAT);
+  const int n = 5 + rank;
+  for (int i = 0; i < n; ++i)
+  {
+    points->InsertNextPoint(i + 0.25 * rank, 0.5 * i * i, -1.0 * rank);
+  }
+  piece->SetPoints(points);
+  vtkNew<vtkCellArray> polys, verts, lines;
+  if (rank == 1)
+  {
+    polys->Use32BitStorage();
+  }
+  polys->InsertNextCell({ 0, 1, 2, 3 });
+  polys->InsertNextCell({ 1, 2, 4 });
+  verts->InsertNextCell({ n - 1 });
+  piece->SetPolys(polys);
+  piece->SetVerts(verts);
+  if (rank == 0)
+  {
+    lines->InsertNextCell({ 0, 4 });
+    piece->SetLines(lines);
+  }
+  vtkNew<vtkDoubleArray> radiosity;
+  radiosity->SetName("Radiosity of light 0");
+  radiosity->SetNumberOfComponents(3);
+  for (int i = 0; i < n; ++i)
+  {
+    radiosity->InsertNextTuple3(i, 10.0 * rank, 1e-300 * i);
+  }
+  piece->GetPointData()->SetScalars(radiosity);
+  vtkNew<vtkIntArray> patch;
+  patch->SetName("PatchId");
+  vtkNew<vtkUnsignedCharArray> unnamed; // the append drops unnamed arrays: so does the gather
+  for (vtkIdType c = 0; c < piece->GetNumberOfCells(); ++c)
+  {
+    patch->InsertNextValue(100 * rank + static_cast<int>(c));
+    unnamed->InsertNextValue(7);
+  }
+  piece->GetCellData()->AddArray(patch);
+  piece->GetCellData()->AddArray(unnamed);
+  vtkNew<vtkStringArray> names;
+  names->SetName("LightNames");
+  names->InsertNextValue("lamp of rank " + std::to_string(rank));
+  piece->GetFieldData()->AddArray(names);
+  if (withStrings && rank == 1)
+  {
+    vtkNew<vtkStringArray> labels;
+    labels->SetName("Label");
+    for (vtkIdType c = 0; c < piece->GetNumberOfCells(); ++c)
+    {
+      labels->InsertNextValue("cell " + std::to_string(c));
+    }
+    piece->GetCellData()->AddArray(labels);
+  }
+  return piece;
+}
+
+int failures = 0;
+
+void Expect(bool ok, int rank, int from, const char* what)
+{
+  if (!ok)
+  {
+    std::fprintf(stderr, "rank %d, piece of rank %d: %s\n", rank, from, what);
+    ++failures;
+  }
+}
+
+bool SameCells(vtkCellArray* a, vtkCellArray* b)
+{
+  if (a->GetNumberOfCells() != b->GetNumberOfCells())
+  {
+    return false;
+  }
+  vtkNew<vtkIdList> x, y;
+  for (vtkIdType c = 0; c < a->GetNumberOfCells(); ++c)
+  {
+    a->GetCellAtId(c, x);
+    b->GetCellAtId(c, y);
+    if (x->GetNumberOfIds() != y->GetNumberOfIds())
+    {
+      return false;
+    }
+    for (vtkIdType i = 0; i < x->GetNumberOfIds(); ++i)
+    {
+      if (x->GetId(i) != y->GetId(i))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+bool SameArray(vtkDataArray* a, vtkDataArray* b)
+{
+  if (!a || !b || a->GetDataType() != b->GetDataType() || a->GetNumberOfTuples() != b->GetNumberOfTuples() ||
+    a->GetNumberOfComponents() != b->GetNumberOfComponents())
+  {
+    return false;
+  }
+  for (vtkIdType i = 0; i < a->GetNumberOfValues(); ++i)
+  {
+    if (a->GetComponent(i / a->GetNumberOfComponents(), static_cast<int>(i % a->GetNumberOfComponents())) !=
+      b->GetComponent(i / a->GetNumberOfComponents(), static_cast<int>(i % a->GetNumberOfComponents())))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+void Compare(vtkPolyData* got, vtkPolyData* want, int rank, int from, bool raw)
+{
+  if (!want)
+  {
+    Expect(!got || got->GetNumberOfPoints() == 0, rank, from, "an empty piece arrived with points");
+    return;
+  }
+  Expect(got != nullptr, rank, from, "no piece");
+  if (!got)
+  {
+    return;
+  }
+  Expect(SameArray(got->GetPoints()->GetData(), want->GetPoints()->GetData()), rank, from, "points differ");
+  Expect(SameCells(got->GetPolys(), want->GetPolys()), rank, from, "polygons differ");
+  Expect(SameCells(got->GetVerts(), want->GetVerts()), rank, from, "vertices differ");
+  Expect(SameCells(got->GetLines(), want->GetLines()), rank, from, "lines differ");
+  Expect(got->GetStrips()->GetNumberOfCells() == 0, rank, from, "strips appeared");
+  Expect(SameArray(got->GetPointData()->GetScalars(), want->GetPointData()->GetScalars()), rank, from,
+    "the active scalars differ");
+  Expect(SameArray(got->GetCellData()->GetArray("PatchId"), want->GetCellData()->GetArray("PatchId")), rank, from,
+    "PatchId differs");
+  if (raw && from != rank) // a rank's own entry is its piece itself
+  {
+    Expect(got->GetCellData()->GetNumberOfArrays() == 1, rank, from, "unexpected cell arrays");
+  }
+  auto* names = vtkStringArray::SafeDownCast(got->GetFieldData()->GetAbstractArray("LightNames"));
+  Expect(names && names->GetValue(0) == "lamp of rank " + std::to_string(from), rank, from, "LightNames differ");
+  if (!raw && from == 1)
+  {
+    Expect(got->GetCellData()->GetAbstractArray("Label") != nullptr, rank, from, "the string array was lost");
+  }
+}
+
+void Round(vtkMPIController* controller, bool withStrings)
+{
+  const int rank = controller->GetLocalProcessId();
+  vtkSmartPointer<vtkPolyData> mine = MakePiece(rank, withStrings);
+  std::vector<vtkSmartPointer<vtkPolyData>> pieces;
+  vtkRadiosityGather::AllGatherPieces(controller, mine, pieces);
+  Expect(static_cast<int>(pieces.size()) == controller->GetNumberOfProcesses(), rank, rank, "wrong count");
+  for (int from = 0; from < static_cast<int>(pieces.size()); ++from)
+  {
+    vtkSmartPointer<vtkPolyData> want = MakePiece(from, withStrings);
+    Compare(pieces[from], want, rank, from, !withStrings);
+  }
+}
+
+} // namespace
+
+int TestGatherPieces(int argc, char* argv[])
+{
+  vtkNew<vtkMPIController> controller;
+  controller->Initialize(&argc, &argv);
+  if (controller->GetNumberOfProcesses() != 3)
+  {
+    std::fprintf(stderr, "run on 3 ranks\n");
+    controller->Finalize();
+    return 1;
+  }
+  Round(controller, false);
+  Round(controller, true);
+  int mine = failures, all = 0;
+  controller->AllReduce(&mine, &all, 1, vtkCommunicator::SUM_OP);
+  controller->Finalize();
+  return all == 0 ? 0 : 1;
+}
