@@ -204,16 +204,7 @@ bool AddPatchBasis(vtkAlgorithm* self, int level, const radiosity::RadiositySolv
     output->GetCellData()->AddArray(nodes);
     output->GetCellData()->AddArray(weights);
   }
-  char reason[256];
-  std::snprintf(reason, sizeof(reason), "simulated: asked for (PatchBasis), %d patches x %d %s, %.1f MB, %d shots",
-    basis.Patches, basis.Receivers, perElement ? "elements" : "patch nodes", basis.Bytes() / 1048576.0, stats.Shots);
-  for (radiosity::EffectDecision& row : effects)
-  {
-    if (row.Effect == "MovingLightBasis")
-    {
-      row = { "MovingLightBasis", true, reason };
-    }
-  }
+  radiosity::RecordBasisEffect(basis, stats, effects);
   if (!stats.Converged)
   {
     warnings.Add(self, "The patch basis stopped before converging (" + std::to_string(stats.Shots) +
@@ -436,8 +427,7 @@ int vtkLightTaggedRadiosity::Solve(
       }
       fields->AddArray(defaults);
     }
-    std::vector<radiosity::EffectDecision> effects =
-      radiosity::DescribeEffects(mesh, options, result, grouping, lights, mode);
+    std::vector<radiosity::EffectDecision> effects = result.Effects;
     if (this->PatchBasis && !stats.Aborted && !AddPatchBasis(this, this->PatchBasisLevel, solver, mesh, options, output, fields, effects, warnings))
     {
       output->Initialize();

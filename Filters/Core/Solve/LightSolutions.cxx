@@ -1,4 +1,5 @@
 #include "Solve/LightSolutions.h"
+#include "Solve/Effects.h"
 
 #include <algorithm>
 #include <set>
@@ -97,9 +98,10 @@ std::vector<Vec3> DefaultColors(
   return colors;
 }
 
-Solution SolveLights(const RadiositySolver& solver, const SceneMesh& mesh,
-  const LightGrouping& grouping, const std::vector<Vec3>& emissionColor, SolutionMode mode,
-  const SolverOptions& options)
+namespace
+{
+Solution SolveInMode(const RadiositySolver& solver, const SceneMesh& mesh, const LightGrouping& grouping,
+  const std::vector<Vec3>& emissionColor, SolutionMode mode, const SolverOptions& options)
 {
   const int n = mesh.NumberOfPolygons();
   if (mode == SolutionMode::StandardCombined)
@@ -212,6 +214,17 @@ Solution SolveLights(const RadiositySolver& solver, const SceneMesh& mesh,
       break;
     }
   }
+  return out;
+}
+} // namespace
+
+Solution SolveLights(const RadiositySolver& solver, const SceneMesh& mesh,
+  const LightGrouping& grouping, const std::vector<Vec3>& emissionColor, SolutionMode mode,
+  const SolverOptions& options)
+{
+  Solution out = SolveInMode(solver, mesh, grouping, emissionColor, mode, options);
+  out.Effects = DescribeEffects(
+    mesh, options, out, grouping, static_cast<int>(grouping.SolutionOfLight.size()), mode);
   return out;
 }
 

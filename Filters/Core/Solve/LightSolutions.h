@@ -37,6 +37,8 @@ std::vector<Vec3> DefaultColors(const SceneMesh& mesh, const LightGrouping& grou
   const std::vector<Vec3>& emissionColor);
 
 /// `emissionColor` (per element, may be empty) is used by StandardCombined and by banks.
+/// The solution carries the solver's account of its effects (DescribeEffects); the
+/// moving-light basis row says "skipped" until SolvePatchBasis records a basis in it.
 Solution SolveLights(const RadiositySolver& solver, const SceneMesh& mesh,
   const LightGrouping& grouping, const std::vector<Vec3>& emissionColor, SolutionMode mode,
   const SolverOptions& options);

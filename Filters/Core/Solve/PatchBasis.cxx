@@ -475,4 +475,21 @@ void AddBasisInterreflection(const SceneGeometry& g, const std::vector<Vec3>& di
   }
 }
 
+void RecordBasisEffect(const PatchBasis& basis, const SolverStatistics& stats, std::vector<EffectDecision>& effects)
+{
+  char reason[256];
+  std::snprintf(reason, sizeof(reason), "simulated: asked for (PatchBasis), %d patches x %d %s, %.1f MB, %d shots",
+    basis.Patches, basis.Receivers, basis.Node.empty() ? "elements" : "patch nodes", basis.Bytes() / 1048576.0,
+    stats.Shots);
+  const EffectDecision row{ "MovingLightBasis", true, reason };
+  if (!effects.empty() && effects.back().Effect == row.Effect)
+  {
+    effects.back() = row;
+  }
+  else
+  {
+    effects.push_back(row);
+  }
+}
+
 } // namespace radiosity

@@ -72,6 +72,10 @@ BasisLevel ResolveBasisLevel(BasisLevel level, long long elements, long long pat
 std::string SolvePatchBasis(const RadiositySolver& solver, const SceneMesh& mesh, const SolverOptions& options,
   BasisLevel level, SolverStatistics& stats, PatchBasis& basis);
 
+/// Records a solved basis in the effect rows of the solution it was built beside (the
+/// MovingLightBasis row DescribeEffects leaves last): its size and the shots it took.
+void RecordBasisEffect(const PatchBasis& basis, const SolverStatistics& stats, std::vector<EffectDecision>& effects);
+
 /// The frame's result: B_e = D_e + sum_q E_q * basis_q(e), E_q = area mean of D over patch
 /// q, where D (the direct part) already contains each patch's first reflection.
 void AddBasisInterreflection(const SceneGeometry& geometry, const std::vector<Vec3>& direct,
