@@ -134,16 +134,11 @@ bool ReadSceneArrays(vtkPolyData* input, radiosity::SceneMesh& mesh,
   {
     double r[3];
     reflectance->GetTuple(i, r);
-    for (int c = 0; c < 3; ++c)
-    {
-      if (!(r[c] >= 0.0 && r[c] <= 1.0))
-      {
-        error = "Reflectance of cell " + std::to_string(i) + " is " + std::to_string(r[c]) +
-          " in component " + std::to_string(c) + "; it must be a number in [0, 1]";
-        return false;
-      }
-    }
     mesh.reflectance[i] = { r[0], r[1], r[2] };
+    if (!(error = radiosity::ReflectanceProblem(mesh.reflectance[i], i)).empty())
+    {
+      return false;
+    }
     mesh.lightId[i] = static_cast<int>(lightId->GetComponent(i, 0));
     if (patch)
     {

@@ -28,6 +28,21 @@ std::vector<Vec3> Loop(const SceneMesh& mesh, int i)
 }
 } // namespace
 
+std::string ReflectanceProblem(const Vec3& r, long long cell)
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    if (!(r[c] >= 0.0 && r[c] <= 1.0))
+    {
+      std::ostringstream err;
+      err << "Reflectance of cell " << cell << " is " << r[c] << " in component " << c
+          << "; it must be a number in [0, 1]";
+      return err.str();
+    }
+  }
+  return "";
+}
+
 std::string ValidateScene(const SceneMesh& mesh, int& numberOfLights)
 {
   std::ostringstream err;
@@ -77,15 +92,10 @@ std::string ValidateScene(const SceneMesh& mesh, int& numberOfLights)
       err << "cell " << i << " " << problem;
       return err.str();
     }
-    const Vec3& r = mesh.reflectance[i];
-    for (int c = 0; c < 3; ++c)
+    const std::string reflectance = ReflectanceProblem(mesh.reflectance[i], i);
+    if (!reflectance.empty())
     {
-      if (!(r[c] >= 0.0 && r[c] <= 1.0))
-      {
-        err << "Reflectance of cell " << i << " is " << r[c] << " in component " << c
-            << "; it must be a number in [0, 1]";
-        return err.str();
-      }
+      return reflectance;
     }
     if (mesh.lightId[i] >= n)
     {

@@ -30,6 +30,10 @@ struct SceneMesh
   void AddPolygon(const std::vector<int>& ids);
 };
 
+/// Empty, or why a cell's reflectance is not three numbers in [0, 1] (the one check, used
+/// wherever reflectance is read).
+std::string ReflectanceProblem(const Vec3& reflectance, long long cell);
+
 /// Checks the input contract. Returns an empty string when valid, otherwise a message that
 /// names the offending array, the item and the value. On success sets `numberOfLights`.
 std::string ValidateScene(const SceneMesh& mesh, int& numberOfLights);
