@@ -20,6 +20,24 @@
 
 vtkStandardNewMacro(vtkRadiosityEXRWriter);
 
+int vtkRadiosityEXRWriter::GetSizeMaxValue()
+{
+  return radiosity::MaximumImageSide;
+}
+
+void vtkRadiosityEXRWriter::SetSize(int width, int height)
+{
+  const int low = GetSizeMinValue(), high = GetSizeMaxValue();
+  width = std::min(std::max(width, low), high);
+  height = std::min(std::max(height, low), high);
+  if (this->Size[0] != width || this->Size[1] != height)
+  {
+    this->Size[0] = width;
+    this->Size[1] = height;
+    this->Modified();
+  }
+}
+
 vtkRadiosityEXRWriter::vtkRadiosityEXRWriter()
   : Prepared(new vtkRadiosityPreparedRays)
 {

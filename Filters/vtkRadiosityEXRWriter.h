@@ -49,8 +49,13 @@ public:
   vtkGetVector3Macro(ViewUp, double);
   vtkSetClampMacro(ViewAngle, double, 1e-3, 179.0);
   vtkGetMacro(ViewAngle, double);
-  vtkSetVector2Macro(Size, int);
+  /// Width and height in pixels, each clamped to [1, GetSizeMaxValue()] (the side the
+  /// image core accepts).
+  void SetSize(int width, int height);
+  void SetSize(const int size[2]) { this->SetSize(size[0], size[1]); }
   vtkGetVector2Macro(Size, int);
+  static int GetSizeMinValue() { return 1; }
+  static int GetSizeMaxValue();
   ///@}
 
   ///@{

@@ -30,6 +30,16 @@
 
 vtkStandardNewMacro(vtkRadiosityLightMarker);
 
+void vtkRadiosityLightMarker::SetEmission(double red, double green, double blue)
+{
+  const double clamped[3] = { red < 0 ? 0.0 : red, green < 0 ? 0.0 : green, blue < 0 ? 0.0 : blue };
+  if (!std::equal(clamped, clamped + 3, this->Emission))
+  {
+    std::copy(clamped, clamped + 3, this->Emission);
+    this->Modified();
+  }
+}
+
 struct vtkRadiosityLightMarker::Choices
 {
   std::vector<vtkIdType> CellIds;

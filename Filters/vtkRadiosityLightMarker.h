@@ -54,8 +54,12 @@ public:
 
   ///@{
   /// The chosen cells' Emission (the light's default colour and intensity). Default 1, 1, 1.
-  vtkSetVector3Macro(Emission, double);
+  /// A negative component is clamped to 0, as ParaView's panel bounds it.
+  void SetEmission(double red, double green, double blue);
+  void SetEmission(const double emission[3]) { this->SetEmission(emission[0], emission[1], emission[2]); }
   vtkGetVector3Macro(Emission, double);
+  static double GetEmissionMinValue() { return 0.0; }
+  static double GetEmissionMaxValue() { return VTK_DOUBLE_MAX; }
   ///@}
 
   ///@{

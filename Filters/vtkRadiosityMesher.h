@@ -2,7 +2,8 @@
  * @class   vtkRadiosityMesher
  * @brief   splits polygons into radiosity patches and elements
  *
- * Each input polygon (triangle, quad or planar convex polygon) is split into patches with
+ * Each input polygon (triangle, quad or any simple planar polygon: a concave one is
+ * ear-clipped into triangles first) is split into patches with
  * edges at most PatchSize and each patch into elements with edges at most ElementSize
  * (world units). The output polygons are the elements; cell array `PatchId` tells which
  * patch each belongs to, and every input cell array (`Reflectance`, `LightId`, `Emission`,

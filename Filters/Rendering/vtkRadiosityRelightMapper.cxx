@@ -184,7 +184,7 @@ double vtkRadiosityRelightMapper::GetTime() const
 
 void vtkRadiosityRelightMapper::SetExposure(double exposure)
 {
-  this->Internal->Exposure = exposure;
+  this->Internal->Exposure = exposure < 0 ? 0.0 : exposure; // as the relight filter clamps it
 }
 
 double vtkRadiosityRelightMapper::GetExposure() const

@@ -75,12 +75,19 @@ for proxy in proxies_with_classes(root):
     for prop in proxy:
         name = (prop.get("command") or "")[3:]
         low, high = (getattr(wrapped, f"Get{name}{end}Value", None) for end in ("Min", "Max"))
+        ranges = [d for d in prop if d.tag in ("IntRangeDomain", "DoubleRangeDomain")]
         if not (low and high):
+            # A bounded panel over an unbounded setter lets Python set what the GUI cannot.
+            mismatched += [f"{name}: XML range, no C++ clamp" for _ in ranges[:1]]
             continue
+        for domain in ranges:
+            # A finite clamp the XML leaves out: the panel would offer values C++ changes.
+            mismatched += [f"{name}.{bound}: C++ {c():g}, not in the XML" for bound, c in (("min", low), ("max", high))
+                           if domain.get(bound) is None and abs(c()) < 2 ** 31 - 1]
         for domain in prop:
             if domain.tag in ("IntRangeDomain", "DoubleRangeDomain"):
-                given = [(bound, float(domain.get(bound)), clamp()) for bound, clamp in (("min", low), ("max", high))
-                         if domain.get(bound) is not None]
+                given = [(bound, float(domain.get(bound).split()[0]), clamp())
+                         for bound, clamp in (("min", low), ("max", high)) if domain.get(bound) is not None]
                 mismatched += [f"{name}.{b}: XML {x:g}, C++ {c:g}" for b, x, c in given if x != c]
             if domain.tag == "EnumerationDomain":
                 values = [int(entry.get("value")) for entry in domain.iter("Entry")]
