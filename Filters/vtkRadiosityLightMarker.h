@@ -54,9 +54,9 @@ public:
 
   ///@{
   /// The chosen cells' Emission (the light's default colour and intensity). Default 1, 1, 1.
-  /// A negative component is clamped to 0, as ParaView's panel bounds it.
-  void SetEmission(double red, double green, double blue);
-  void SetEmission(const double emission[3]) { this->SetEmission(emission[0], emission[1], emission[2]); }
+  /// Each component finite and at least GetEmissionMinValue(); marking with another is an
+  /// error that names it.
+  vtkSetVector3Macro(Emission, double);
   vtkGetVector3Macro(Emission, double);
   static double GetEmissionMinValue() { return 0.0; }
   static double GetEmissionMaxValue() { return VTK_DOUBLE_MAX; }

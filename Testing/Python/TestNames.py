@@ -67,8 +67,9 @@ ported = [(p.get("name"), p.get("command")) for proxy in proxies_with_classes(ro
 check(ported and all(command in ("SetInputConnection", "AddInputConnection") for _, command in ported),
       f"inputs on other ports take the port with the connection: {ported}")
 
-# The panel's ranges are the C++ clamps (vtkSetClampMacro makes Get<Name>Min/MaxValue):
-# a bound the XML gives equals the clamp, and an enumeration spans exactly the clamp.
+# The panel's ranges are the C++ ones: Get<Name>Min/MaxValue, the clamp vtkSetClampMacro
+# makes or the range a filter checks with an error (EXR Size, the marker's Emission). A
+# bound the XML gives equals it, and an enumeration spans exactly the clamp.
 mismatched = []
 for proxy in proxies_with_classes(root):
     wrapped = getattr(relight, proxy.get("class"))()
@@ -78,7 +79,7 @@ for proxy in proxies_with_classes(root):
         ranges = [d for d in prop if d.tag in ("IntRangeDomain", "DoubleRangeDomain")]
         if not (low and high):
             # A bounded panel over an unbounded setter lets Python set what the GUI cannot.
-            mismatched += [f"{name}: XML range, no C++ clamp" for _ in ranges[:1]]
+            mismatched += [f"{name}: XML range, no C++ range" for _ in ranges[:1]]
             continue
         for domain in ranges:
             # A finite clamp the XML leaves out: the panel would offer values C++ changes.
