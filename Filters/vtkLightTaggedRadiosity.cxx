@@ -2,6 +2,7 @@
 #include "vtkRadiosityAbort.h"
 #include "vtkRadiosityAdapter.h"
 #include "vtkRadiosityPieces.h"
+#include "vtkRadiosityPreparedScenes.h"
 
 #include "Solve/Effects.h"
 #include "Solve/LightChecks.h"
@@ -33,6 +34,11 @@
 #include <sstream>
 
 vtkStandardNewMacro(vtkLightTaggedRadiosity);
+
+int vtkLightTaggedRadiosity::GetPreparedScenesHeld()
+{
+  return vtkRadiosityPreparedScenes::Held();
+}
 
 vtkLightTaggedRadiosity::vtkLightTaggedRadiosity()
 {
@@ -132,6 +138,30 @@ std::string DescribeStatus(const radiosity::SolverStatistics& stats, bool aborte
 }
 
 /// Why a solve stopped short of convergence, for a warning; empty if it converged.
+/// The preparation kept for `input`'s mesh where every rank has one (MarkEnclosed is
+/// collective: the ranks must all prepare or all reuse), else a new one, kept for the next
+/// solve, the relight and the pictures of this mesh.
+std::string PrepareOrReuse(vtkPolyData* input, const radiosity::SceneMesh& mesh, int threads,
+  const radiosity::ProcessGroup& group, radiosity::PreparedScene& prepared, bool& reused)
+{
+  prepared = vtkRadiosityPreparedScenes::Find(input, true);
+  reused = radiosity::AgreeOnFailure(group, prepared.Geometry ? "" : "not kept", "not kept").empty();
+  if (reused)
+  {
+    return "";
+  }
+  if (prepared.Geometry)
+  {
+    prepared = radiosity::PreparedScene(); // kept here but not on every rank: prepare again
+  }
+  const std::string error = radiosity::PrepareTransport(mesh, threads, group, prepared);
+  if (error.empty())
+  {
+    vtkRadiosityPreparedScenes::Keep(input, prepared);
+  }
+  return error;
+}
+
 std::string DescribeEarlyStop(const radiosity::SolverStatistics& stats, double budget, double threshold)
 {
   const double remaining = stats.RemainingHistory.empty() ? 1.0 : stats.RemainingHistory.back();
@@ -307,8 +337,17 @@ int vtkLightTaggedRadiosity::Solve(
     const auto start = std::chrono::steady_clock::now();
     const int threads = vtkRadiosityAdapter::Threads(this->NumberOfThreads);
     vtkLogStartScope(TRACE, "prepare the scene");
-    radiosity::RadiositySolver solver(mesh, threads, group);
+    radiosity::PreparedScene prepared;
+    bool reused = false;
+    error = PrepareOrReuse(input, mesh, threads, group, prepared, reused);
     vtkLogEndScope("prepare the scene");
+    if (!error.empty())
+    {
+      vtkErrorMacro(<< "Cannot solve: " << error << ".");
+      return 0;
+    }
+    this->LastPreparationReused = reused;
+    const radiosity::RadiositySolver solver(mesh, prepared);
     if (!solver.Error().empty())
     {
       vtkErrorMacro(<< "Cannot solve: " << solver.Error() << ".");
@@ -380,6 +419,9 @@ int vtkLightTaggedRadiosity::Solve(
       vtkLogF(INFO, "LightTaggedRadiosity: %d patches split where a surface stands across them",
         solver.SplitPatches());
     }
+    // The output shares the input's points and polygons: the relight's moving lights and
+    // the EXR writer find the solver's preparation under it, patches in the basis's order.
+    vtkRadiosityPreparedScenes::Keep(output, solver.Prepared());
     const bool combined = mode == radiosity::SolutionMode::StandardCombined;
     const std::vector<std::string> names = combined
       ? std::vector<std::string>{ "" }

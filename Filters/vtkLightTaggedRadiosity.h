@@ -239,6 +239,12 @@ public:
   vtkGetMacro(LastConverged, bool);
   vtkGetMacro(LastRays, long long);
   vtkGetMacro(LastSolveSeconds, double);
+  /// True when the last solve reused a preparation kept for its mesh (a re-solve with other
+  /// settings, or after the relight or the EXR writer prepared the same mesh): no BVH,
+  /// patch splitting or hemisphere probes (vtkRadiosityPreparedScenes).
+  vtkGetMacro(LastPreparationReused, bool);
+  /// How many preparations the process holds for meshes still alive (at most four).
+  static int GetPreparedScenesHeld();
   ///@}
 
 protected:
@@ -278,6 +284,7 @@ private:
   bool LastConverged = false;
   long long LastRays = 0;
   double LastSolveSeconds = 0;
+  bool LastPreparationReused = false;
 };
 
 #endif

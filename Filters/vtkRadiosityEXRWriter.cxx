@@ -2,7 +2,7 @@
 #include "vtkRadiosityAbort.h"
 #include "vtkRadiosityAdapter.h"
 #include "vtkRadiosityLightDefaults.h"
-#include "vtkRadiosityPreparedRays.h"
+#include "vtkRadiosityPreparedScenes.h"
 
 #include "Image/HdrImage.h"
 
@@ -25,21 +25,7 @@ int vtkRadiosityEXRWriter::GetSizeMaxValue()
   return radiosity::MaximumImageSide;
 }
 
-void vtkRadiosityEXRWriter::SetSize(int width, int height)
-{
-  const int low = GetSizeMinValue(), high = GetSizeMaxValue();
-  width = std::min(std::max(width, low), high);
-  height = std::min(std::max(height, low), high);
-  if (this->Size[0] != width || this->Size[1] != height)
-  {
-    this->Size[0] = width;
-    this->Size[1] = height;
-    this->Modified();
-  }
-}
-
 vtkRadiosityEXRWriter::vtkRadiosityEXRWriter()
-  : Prepared(new vtkRadiosityPreparedRays)
 {
   this->SetArrayName("Radiosity");
 }
@@ -48,12 +34,11 @@ vtkRadiosityEXRWriter::~vtkRadiosityEXRWriter()
 {
   this->SetFileName(nullptr);
   this->SetArrayName(nullptr);
-  delete this->Prepared;
 }
 
 int vtkRadiosityEXRWriter::GetRaySceneBuilds() const
 {
-  return this->Prepared->Builds();
+  return this->RaySceneBuilds;
 }
 
 int vtkRadiosityEXRWriter::FillInputPortInformation(int, vtkInformation* info)
@@ -140,12 +125,18 @@ bool vtkRadiosityEXRWriter::Render(std::vector<std::string>& names, std::vector<
       return false;
     }
   }
-  const std::shared_ptr<const radiosity::Visibility> scene = this->Prepared->For(input, mesh, error);
-  if (!scene)
+  radiosity::PreparedScene prepared = vtkRadiosityPreparedScenes::Find(input, false);
+  if (!prepared.Rays)
   {
-    vtkErrorMacro(<< "Cannot render: " << error << ".");
-    return false;
+    ++this->RaySceneBuilds;
+    if (!(error = radiosity::PrepareRays(mesh, vtkRadiosityAdapter::Threads(0), prepared)).empty())
+    {
+      vtkErrorMacro(<< "Cannot render: " << error << ".");
+      return false;
+    }
+    vtkRadiosityPreparedScenes::Keep(input, prepared);
   }
+  const std::shared_ptr<const radiosity::Visibility> scene = prepared.Rays;
   radiosity::PinholeCamera camera;
   camera.Position = { this->CameraPosition[0], this->CameraPosition[1], this->CameraPosition[2] };
   camera.FocalPoint = { this->FocalPoint[0], this->FocalPoint[1], this->FocalPoint[2] };
@@ -164,10 +155,13 @@ bool vtkRadiosityEXRWriter::Render(std::vector<std::string>& names, std::vector<
     pointers.push_back(&layer);
   }
   const vtkRadiosityAbortWatch abort(this);
-  images = radiosity::RenderLayers(*scene, pointers, camera, [this, &abort](double f) {
-    this->UpdateProgress(f);
-    return !abort.Stop();
-  });
+  images = radiosity::RenderLayers(
+    *scene, pointers, camera,
+    [this, &abort](double f) {
+      this->UpdateProgress(f);
+      return !abort.Stop();
+    },
+    vtkRadiosityAdapter::Threads(0));
   if (images.empty() || images[0].empty())
   {
     vtkWarningMacro(<< "Render aborted: no image made, nothing written (a file already there is kept).");

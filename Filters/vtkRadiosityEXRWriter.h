@@ -25,7 +25,6 @@
 #include <vector> // for the pixel buffer
 
 class vtkFloatArray;
-class vtkRadiosityPreparedRays;
 
 class VTKRADIOSITYFILTERS_EXPORT vtkRadiosityEXRWriter : public vtkWriter
 {
@@ -49,10 +48,9 @@ public:
   vtkGetVector3Macro(ViewUp, double);
   vtkSetClampMacro(ViewAngle, double, 1e-3, 179.0);
   vtkGetMacro(ViewAngle, double);
-  /// Width and height in pixels, each clamped to [1, GetSizeMaxValue()] (the side the
-  /// image core accepts).
-  void SetSize(int width, int height);
-  void SetSize(const int size[2]) { this->SetSize(size[0], size[1]); }
+  /// Width and height in pixels, each in [GetSizeMinValue(), GetSizeMaxValue()] (the side
+  /// the image core accepts); writing with another size is an error that names it.
+  vtkSetVector2Macro(Size, int);
   vtkGetVector2Macro(Size, int);
   static int GetSizeMinValue() { return 1; }
   static int GetSizeMaxValue();
@@ -80,9 +78,10 @@ public:
   static bool ReadLayer(const char* fileName, const char* layer, vtkFloatArray* rgb, int size[2]);
 
   /**
-   * How many ray scenes this writer has built. It keeps the last one and reuses it while
-   * the input's points and polygons are unchanged (an animation's frames), so writing
-   * frame after frame builds one.
+   * How many ray scenes this writer has built. Scenes are kept for the process
+   * (vtkRadiosityPreparedScenes) and reused while the input's points and polygons are
+   * unchanged: an animation's frames build one, and the solver's output builds none where
+   * the solver's preparation is still kept.
    */
   int GetRaySceneBuilds() const;
 
@@ -106,7 +105,7 @@ private:
   double ViewAngle = 30;
   int Size[2] = { 640, 480 };
   bool LightLayers = false;
-  vtkRadiosityPreparedRays* Prepared;
+  int RaySceneBuilds = 0;
 };
 
 #endif

@@ -5,7 +5,9 @@
 #include "Solve/LightChecks.h"
 #include "Import/LightMarking.h"
 #include "Geometry/Polygon.h"
+#include "Geometry/PreparedScene.h"
 #include "Import/SceneImport.h"
+#include "Relight/LightRig.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -29,16 +31,6 @@
 #include <algorithm>
 
 vtkStandardNewMacro(vtkRadiosityLightMarker);
-
-void vtkRadiosityLightMarker::SetEmission(double red, double green, double blue)
-{
-  const double clamped[3] = { red < 0 ? 0.0 : red, green < 0 ? 0.0 : green, blue < 0 ? 0.0 : blue };
-  if (!std::equal(clamped, clamped + 3, this->Emission))
-  {
-    std::copy(clamped, clamped + 3, this->Emission);
-    this->Modified();
-  }
-}
 
 struct vtkRadiosityLightMarker::Choices
 {
@@ -262,8 +254,10 @@ std::vector<std::string> CheckLights(vtkPolyData* data, const std::vector<std::s
     return { "the lights could not be checked: " + error };
   }
   const radiosity::SceneGeometry geometry(mesh);
-  const radiosity::Visibility rays(mesh);
-  return rays.Error().empty() ? radiosity::CheckLights(mesh, geometry, rays, names) : std::vector<std::string>();
+  radiosity::PreparedScene prepared; // rays only: the checks need no split patches
+  return radiosity::PrepareRays(mesh, vtkRadiosityAdapter::Threads(0), prepared).empty()
+    ? radiosity::CheckLights(mesh, geometry, *prepared.Rays, names)
+    : std::vector<std::string>();
 }
 
 } // namespace
@@ -346,6 +340,13 @@ int vtkRadiosityLightMarker::RequestData(
     if (!vtkRadiosityAdapter::RequireCellArray(input, "Reflectance", 3, false, error))
     {
       vtkErrorMacro(<< "Cannot mark lights: " << error << ".");
+      return 0;
+    }
+    const std::string invalid =
+      radiosity::InvalidLightValues(1.0, { this->Emission[0], this->Emission[1], this->Emission[2] });
+    if (!invalid.empty())
+    {
+      vtkErrorMacro(<< "Cannot mark lights: Emission " << invalid.substr(invalid.find("colour")) << ".");
       return 0;
     }
     output->DeepCopy(input); // area lights grow its arrays; the input stays as it was

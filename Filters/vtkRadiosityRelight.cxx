@@ -9,6 +9,7 @@
 #include "vtkRadiosityAdapter.h"
 #include "vtkRadiosityLightDefaults.h"
 #include "vtkRadiosityPieces.h"
+#include "vtkRadiosityPreparedScenes.h"
 #include "Base/WorkerPool.h"
 
 #include "vtkCellData.h"
@@ -44,11 +45,19 @@
 
 namespace
 {
-/// Shared by every relight filter: threads are started once per process, not per frame.
+/// Shared by every relight filter: threads are started once, not per frame, and again
+/// only when ParaView's thread setting changes.
 const radiosity::WorkerPool& Pool()
 {
-  static const radiosity::WorkerPool pool(vtkRadiosityAdapter::Threads(0));
-  return pool;
+  static std::unique_ptr<radiosity::WorkerPool> pool;
+  static int threads = -1;
+  const int now = vtkRadiosityAdapter::Threads(0);
+  if (!pool || now != threads)
+  {
+    pool.reset(new radiosity::WorkerPool(now));
+    threads = now;
+  }
+  return *pool;
 }
 
 }
@@ -192,8 +201,18 @@ bool vtkRadiosityRelight::AddMovingLights(vtkPolyData* scene, vtkPolyData* light
       error = "dynamic objects: " + error;
       return false;
     }
+    // The solver's preparation where it is kept (its patches are the basis's), else one
+    // made here the same way and kept for the EXR writer.
+    radiosity::PreparedScene prepared = vtkRadiosityPreparedScenes::Find(scene, true);
+    this->LastMovingSceneReused = prepared.Geometry != nullptr;
+    if (!prepared.Geometry &&
+      !(error = radiosity::PrepareTransport(state.Scene, vtkRadiosityAdapter::Threads(0), {}, prepared)).empty())
+    {
+      return false;
+    }
+    vtkRadiosityPreparedScenes::Keep(scene, prepared);
     state.Shader.reset(new radiosity::MovingLightShader(
-      state.Scene, state.Dynamic.NumberOfPolygons() > 0 ? &state.Dynamic : nullptr));
+      state.Scene, prepared, state.Dynamic.NumberOfPolygons() > 0 ? &state.Dynamic : nullptr));
     if (!state.Shader->Error().empty())
     {
       error = state.Shader->Error();

@@ -104,6 +104,9 @@ public:
   /// Work of the last execution for the moving lights: shadow rays and seconds (0 without).
   vtkGetMacro(LastMovingRays, long long);
   vtkGetMacro(LastMovingSeconds, double);
+  /// True when the moving lights' ray scene and geometry were the solver's, kept for its
+  /// output (vtkRadiosityPreparedScenes), rather than prepared again here.
+  vtkGetMacro(LastMovingSceneReused, bool);
   ///@}
 
   ///@{
@@ -149,6 +152,7 @@ private:
     vtkFloatArray* pointResult, vtkFloatArray* cellResult, std::string& error);
   long long LastMovingRays = 0;
   double LastMovingSeconds = 0;
+  bool LastMovingSceneReused = false;
   double Exposure = 1.0;
   double IndirectScale = 1.0;
 };

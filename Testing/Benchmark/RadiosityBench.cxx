@@ -323,7 +323,7 @@ int main(int argc, char* argv[])
       return 1;
     }
     const double basisSeconds = Now() - t0;
-    MovingLightShader shader(scene.Mesh, nullptr);
+    MovingLightShader shader(scene.Mesh, solver.Prepared(), nullptr);
     std::vector<MovingLight> lights(1);
     std::vector<Vec3> direct, result;
     int frame = 0;

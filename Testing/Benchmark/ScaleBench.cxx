@@ -246,7 +246,7 @@ void MeasureBasis(const RadiositySolver& solver, const SceneMesh& mesh)
     return;
   }
   const double peak = PeakMemoryMB();
-  MovingLightShader shader(mesh, nullptr);
+  MovingLightShader shader(mesh, solver.Prepared(), nullptr);
   std::vector<MovingLight> light(1);
   light[0].Position = { 2.0, 2.0, 2.2 };
   light[0].Intensity = 50;

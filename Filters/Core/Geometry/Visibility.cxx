@@ -21,7 +21,8 @@ struct Visibility::Internals
   std::vector<int> TrianglePolygon;        // source polygon of each triangle
   std::vector<unsigned> TriangleCorners;   // 3 point ids per triangle
   Vec3 Origin;                             // points are stored relative to this, in float
-  unsigned MeshId = RTC_INVALID_GEOMETRY_ID, DynamicId = RTC_INVALID_GEOMETRY_ID;
+  unsigned MeshId = RTC_INVALID_GEOMETRY_ID;
+  std::shared_ptr<const Visibility> Fixed; // the instanced scene of a layered one
 };
 
 namespace
@@ -127,29 +128,41 @@ Visibility::Visibility(const SceneMesh& mesh)
   d.Error = DeviceError(d.Device);
 }
 
-bool Visibility::SetDynamic(const SceneMesh* objects)
+Visibility::Visibility(std::shared_ptr<const Visibility> fixed, const SceneMesh& objects)
+  : Impl(new Internals)
 {
   Internals& d = *Impl;
-  if (!d.Scene)
+  const Internals& base = *fixed->Impl;
+  d.Device = base.Device;
+  d.Origin = base.Origin; // the same frame, so the instance needs no transform
+  d.Error = base.Error;
+  if (!d.Device || !base.Scene || !d.Error.empty())
   {
-    return false;
+    d.Error = d.Error.empty() ? "the fixed scene was not built" : d.Error;
+    return;
   }
-  if (d.DynamicId != RTC_INVALID_GEOMETRY_ID)
-  {
-    rtcDetachGeometry(d.Scene, d.DynamicId);
-    d.DynamicId = RTC_INVALID_GEOMETRY_ID;
-  }
-  if (objects && objects->NumberOfPolygons() > 0)
+  rtcRetainDevice(d.Device);
+  DeviceError(d.Device);
+  d.Scene = rtcNewScene(d.Device);
+  rtcSetSceneFlags(d.Scene, RTC_SCENE_FLAG_ROBUST);
+  RTCGeometry instance = rtcNewGeometry(d.Device, RTC_GEOMETRY_TYPE_INSTANCE);
+  rtcSetGeometryInstancedScene(instance, base.Scene);
+  const float identity[12] = { 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0 };
+  rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, identity);
+  rtcCommitGeometry(instance);
+  rtcAttachGeometry(d.Scene, instance);
+  rtcReleaseGeometry(instance);
+  if (objects.NumberOfPolygons() > 0)
   {
     std::vector<int> polygonOf;
     std::vector<unsigned> corners;
-    RTCGeometry geom = TriangleGeometry(d.Device, *objects, d.Origin, polygonOf, corners);
-    d.DynamicId = rtcAttachGeometry(d.Scene, geom);
+    RTCGeometry geom = TriangleGeometry(d.Device, objects, d.Origin, polygonOf, corners);
+    rtcAttachGeometry(d.Scene, geom);
     rtcReleaseGeometry(geom);
   }
   rtcCommitScene(d.Scene);
   d.Error = DeviceError(d.Device);
-  return d.Error.empty();
+  d.Fixed = std::move(fixed);
 }
 
 Visibility::~Visibility()
@@ -190,7 +203,8 @@ bool Visibility::Intersect(const Vec3& origin, const Vec3& direction, Hit& hit) 
   rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(Impl->Scene, &context, &rh);
-  return Decode(rh.hit.geomID, rh.hit.primID, rh.hit.u, rh.hit.v, rh.ray.tfar * Norm(direction), hit);
+  return Decode(
+    rh.hit.instID[0], rh.hit.geomID, rh.hit.primID, rh.hit.u, rh.hit.v, rh.ray.tfar * Norm(direction), hit);
 }
 
 namespace
@@ -274,16 +288,21 @@ void Visibility::IntersectPacket(const Vec3& origin, const Vec3* directions, int
   rtcIntersect8(valid, Impl->Scene, &context, &rh);
   for (int i = 0; i < count; ++i)
   {
-    found[i] = Decode(rh.hit.geomID[i], rh.hit.primID[i], rh.hit.u[i], rh.hit.v[i],
+    found[i] = Decode(rh.hit.instID[0][i], rh.hit.geomID[i], rh.hit.primID[i], rh.hit.u[i], rh.hit.v[i],
       rh.ray.tfar[i] * Norm(directions[i]), hits[i]);
   }
 }
 
-bool Visibility::Decode(unsigned geometry, unsigned triangle, float u, float v, double distance, Hit& hit) const
+bool Visibility::Decode(
+  unsigned instance, unsigned geometry, unsigned triangle, float u, float v, double distance, Hit& hit) const
 {
   if (geometry == RTC_INVALID_GEOMETRY_ID)
   {
     return false;
+  }
+  if (instance != RTC_INVALID_GEOMETRY_ID && Impl->Fixed)
+  {
+    return Impl->Fixed->Decode(RTC_INVALID_GEOMETRY_ID, geometry, triangle, u, v, distance, hit);
   }
   hit.distance = distance;
   hit.u = u;

@@ -17,6 +17,10 @@ class Visibility
 {
 public:
   explicit Visibility(const SceneMesh& mesh);
+  /// `fixed`'s scene, shared as it is (an Embree instance, not a copy), with `objects`
+  /// beside it: moving objects that block rays at the cost of their own triangles. Hits on
+  /// the objects report polygon -1; hits on `fixed` read as `fixed` reports them.
+  Visibility(std::shared_ptr<const Visibility> fixed, const SceneMesh& objects);
   ~Visibility();
   Visibility(const Visibility&) = delete;
   Visibility& operator=(const Visibility&) = delete;
@@ -50,14 +54,10 @@ public:
   /// packet where the device takes them; `blocked[i]` as Occluded(from[i], to, tolerance).
   void OccludedPacket(const Vec3* from, const Vec3& to, int count, double tolerance, bool* blocked) const;
 
-  /// Puts `objects` (null: none) in the scene as a second geometry beside the mesh's,
-  /// replacing the previous ones: moving objects that block rays without a rebuild of the
-  /// mesh's triangles. Their hits report polygon -1. False with Error() set on failure.
-  bool SetDynamic(const SceneMesh* objects);
-
 private:
   /// A hit as Embree reports it, in the mesh's terms; false for a miss.
-  bool Decode(unsigned geometry, unsigned triangle, float u, float v, double distance, Hit& hit) const;
+  bool Decode(unsigned instance, unsigned geometry, unsigned triangle, float u, float v, double distance,
+    Hit& hit) const;
   struct Internals;
   std::unique_ptr<Internals> Impl;
 };

@@ -84,7 +84,7 @@ void Shade(const Visibility::Hit& hit, const std::vector<const std::vector<Vec3>
 
 std::vector<std::vector<float>> RenderLayers(const Visibility& scene,
   const std::vector<const std::vector<Vec3>*>& layers, const PinholeCamera& camera,
-  const std::function<bool(double)>& progress)
+  const std::function<bool(double)>& progress, int threads)
 {
   const int w = camera.Width, h = camera.Height;
   std::vector<std::vector<float>> images(layers.size(), std::vector<float>(3 * static_cast<size_t>(w) * h, 0.0f));
@@ -96,7 +96,7 @@ std::vector<std::vector<float>> RenderLayers(const Visibility& scene,
   // One packet of rays per run of pixels along a row; rows in parallel, a band of 16 rows
   // at a time so that progress and abort are heard from this thread.
   const int run = Visibility::PacketSize;
-  const WorkerPool pool(0);
+  const WorkerPool pool(threads);
   auto renderRow = [&](int y) {
     Vec3 directions[Visibility::PacketSize];
     Visibility::Hit hits[Visibility::PacketSize];

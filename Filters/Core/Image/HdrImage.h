@@ -40,10 +40,10 @@ std::vector<float> RenderRadiosity(const Visibility& scene, const std::vector<Ve
   const PinholeCamera& camera, const std::function<bool(double)>& progress = {});
 
 /// As RenderRadiosity for several point arrays at once (one ray per pixel for all):
-/// one image per layer; all empty when stopped.
+/// one image per layer; all empty when stopped. Rows are cast on `threads` threads (0: all).
 std::vector<std::vector<float>> RenderLayers(const Visibility& scene,
   const std::vector<const std::vector<Vec3>*>& layers, const PinholeCamera& camera,
-  const std::function<bool(double)>& progress = {});
+  const std::function<bool(double)>& progress = {}, int threads = 0);
 
 /// Writes a 32-bit float OpenEXR file with one RGB layer per image: channels
 /// `<name>.R`, `.G`, `.B` (plain R, G, B for an empty name), as OpenEXR's tools and

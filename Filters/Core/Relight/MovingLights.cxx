@@ -30,23 +30,35 @@ double NearFieldFactor(const SceneMesh& mesh, const SceneGeometry& g, int e, con
 }
 } // namespace
 
-MovingLightShader::MovingLightShader(const SceneMesh& scene, const SceneMesh* dynamicObjects)
+MovingLightShader::MovingLightShader(const SceneMesh& scene, const PreparedScene& prepared, const SceneMesh* dynamicObjects)
   : Scene(scene)
-  , Geometry_(scene)
-  , Rays(new Visibility(scene))
+  , Prepared(prepared)
 {
+  if (!Prepared.Rays || !Prepared.Geometry ||
+    Prepared.Geometry->normal.size() != static_cast<size_t>(scene.NumberOfPolygons()))
+  {
+    Error_ = "the prepared scene is not this mesh's";
+    return;
+  }
   SetDynamicObjects(dynamicObjects);
 }
 
 bool MovingLightShader::SetDynamicObjects(const SceneMesh* objects)
 {
-  return Rays->Error().empty() && Rays->SetDynamic(objects);
+  WithObjects.reset();
+  if (!Error_.empty() || !objects || objects->NumberOfPolygons() == 0)
+  {
+    return Error_.empty();
+  }
+  WithObjects.reset(new Visibility(Prepared.Rays, *objects));
+  Error_ = WithObjects->Error();
+  return Error_.empty();
 }
 
 long long MovingLightShader::Direct(
   const std::vector<MovingLight>& lights, const WorkerPool& pool, std::vector<Vec3>& direct) const
 {
-  const SceneGeometry& g = Geometry_;
+  const SceneGeometry& g = Geometry();
   const int n = static_cast<int>(g.normal.size());
   direct.assign(n, Vec3());
   std::atomic<long long> rays{ 0 };
@@ -72,7 +84,7 @@ long long MovingLightShader::Direct(
 
 long long MovingLightShader::ShadeChunk(const MovingLight& light, int begin, int end, std::vector<Vec3>& irradiance) const
 {
-  const SceneGeometry& g = Geometry_;
+  const SceneGeometry& g = Geometry();
   const double eps = 1e-6 * g.sceneDiagonal;
   int waiting[Visibility::PacketSize];
   double intensity[Visibility::PacketSize];
@@ -82,7 +94,7 @@ long long MovingLightShader::ShadeChunk(const MovingLight& light, int begin, int
   auto flush = [&]() {
     bool blocked[Visibility::PacketSize];
     // The segments stop short of the light, so a light touching a surface still shines.
-    Rays->OccludedPacket(from, light.Position, count, 1e-6, blocked);
+    Rays().OccludedPacket(from, light.Position, count, 1e-6, blocked);
     for (int i = 0; i < count; ++i)
     {
       if (!blocked[i])
@@ -127,7 +139,7 @@ long long MovingLightShader::ShadeChunk(const MovingLight& light, int begin, int
 
 double MovingLightShader::Unoccluded(const MovingLight& light, int e, double intensity) const
 {
-  const SceneGeometry& g = Geometry_;
+  const SceneGeometry& g = Geometry();
   const Vec3 d = light.Position - g.centroid[e];
   const double r2 = Dot(d, d);
   const double r = std::sqrt(r2);

@@ -4,6 +4,7 @@
 #define RadiosityCore_MovingLights_h
 
 #include "Geometry/Scene.h"
+#include "Geometry/PreparedScene.h"
 #include "Geometry/Visibility.h"
 #include "Base/WorkerPool.h"
 
@@ -31,12 +32,14 @@ struct MovingLight
 class MovingLightShader
 {
 public:
-  MovingLightShader(const SceneMesh& scene, const SceneMesh* dynamicObjects);
-  const std::string& Error() const { return Rays->Error(); }
-  const SceneGeometry& Geometry() const { return Geometry_; }
+  /// Shades `scene` on its prepared scene (PrepareTransport: the solver's, where the caller
+  /// kept it, so the shader's patches are the basis's), shared, not copied.
+  MovingLightShader(const SceneMesh& scene, const PreparedScene& prepared, const SceneMesh* dynamicObjects);
+  const std::string& Error() const { return Error_; }
+  const SceneGeometry& Geometry() const { return *Prepared.Geometry; }
 
-  /// Replaces the dynamic objects (null: none): a second geometry in the ray scene, so a
-  /// moving object costs its own triangles, not the static scene's copy and triangulation.
+  /// Replaces the dynamic objects (null: none): the static scene is instanced as it is and
+  /// the objects go beside it, so a moving object costs its own triangles only.
   bool SetDynamicObjects(const SceneMesh* objects);
 
   /// direct[e] = rho_e * irradiance_e. Returns the number of shadow rays cast.
@@ -49,10 +52,13 @@ private:
   long long ShadeChunk(const MovingLight& light, int begin, int end, std::vector<Vec3>& irradiance) const;
   /// What the light gives element e where nothing blocks it, at `intensity` toward e.
   double Unoccluded(const MovingLight& light, int e, double intensity) const;
+  /// The rays shadows are cast against: the static scene, with the objects where any.
+  const Visibility& Rays() const { return WithObjects ? *WithObjects : *Prepared.Rays; }
 
   const SceneMesh& Scene;
-  SceneGeometry Geometry_;
-  std::unique_ptr<Visibility> Rays;
+  PreparedScene Prepared;
+  std::unique_ptr<Visibility> WithObjects;
+  std::string Error_;
 };
 
 } // namespace radiosity

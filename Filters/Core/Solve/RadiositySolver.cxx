@@ -41,14 +41,18 @@ int ShotCap(const SolverOptions& options, int patches)
 
 RadiositySolver::RadiositySolver(const SceneMesh& mesh, int threads, const ProcessGroup& group)
   : Mesh(mesh)
-  , Geometry_(mesh)
 {
-  WorkerPool(threads).Within([&] { Rays_.reset(new Visibility(mesh)); });
-  Error_ = AgreeOnFailure(group, Rays_->Error(), "could not prepare the scene for rays");
-  if (Error_.empty())
+  Error_ = PrepareTransport(mesh, threads, group, Prepared_);
+}
+
+RadiositySolver::RadiositySolver(const SceneMesh& mesh, const PreparedScene& prepared)
+  : Mesh(mesh)
+  , Prepared_(prepared)
+{
+  if (!Prepared_.Rays || !Prepared_.Geometry ||
+    Prepared_.Geometry->normal.size() != static_cast<size_t>(mesh.NumberOfPolygons()))
   {
-    SplitPatches_ = SplitSeparatedPatches(*Rays_, Mesh, Geometry_);
-    MarkEnclosed(*Rays_, Mesh, Geometry_, threads, group);
+    Error_ = "the prepared scene is not this mesh's";
   }
 }
 
@@ -64,7 +68,7 @@ Solution RadiositySolver::Solve(
 {
   const auto start = std::chrono::steady_clock::now();
   Solution out;
-  const int n = static_cast<int>(Geometry_.normal.size());
+  const int n = Error_.empty() ? static_cast<int>(Geometry().normal.size()) : 0;
   out.Solutions = solutions;
   out.Ambient.assign(std::max(solutions, 0), Vec3());
   if (solutions <= 0 || n == 0)
@@ -82,7 +86,7 @@ Solution RadiositySolver::Solve(
   out.Statistics.SingleChannel = grey;
   const SolverMethod method = ResolveMethod(options, n);
   const SolveFunction solve = method == SolverMethod::Hierarchical ? SolveHierarchical : SolveProgressive;
-  solve(Mesh, Geometry_, *Rays_, emission, solutions, grey, options, start, out);
+  solve(Mesh, Geometry(), Rays(), emission, solutions, grey, options, start, out);
   return out;
 }
 

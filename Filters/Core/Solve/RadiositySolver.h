@@ -7,6 +7,7 @@
 #include "Base/ProcessGroup.h"
 #include "Geometry/Scene.h"
 #include "Solve/ShooterFormFactors.h"
+#include "Geometry/PreparedScene.h"
 #include "Geometry/Visibility.h"
 
 #include <chrono>
@@ -170,24 +171,28 @@ using SolveFunction = void (*)(const SceneMesh& mesh, const SceneGeometry& geome
 /// The shot cap in force for `patches` patches (see SolverOptions::MaximumShots).
 int ShotCap(const SolverOptions& options, int patches);
 
-/// The prepared scene (geometry and the Embree scene) and the entry point: several solves
-/// (k separate solutions, or a re-solve with other emissions) reuse the preparation, and
-/// Solve runs the method the options choose.
+/// The entry point: a mesh and its prepared scene (PreparedScene.h); several solves (k
+/// separate solutions, or a re-solve with other emissions) reuse the preparation, and Solve
+/// runs the method the options choose.
 class RadiositySolver
 {
 public:
-  /// `threads` and `group` as in SolverOptions: the preparation's rays (MarkEnclosed) run
-  /// on that many threads, divided among the ranks of the group.
+  /// Prepares `mesh` itself. `threads` and `group` as in SolverOptions: the preparation's
+  /// rays (MarkEnclosed) run on that many threads, divided among the ranks of the group.
   explicit RadiositySolver(const SceneMesh& mesh, int threads = 0, const ProcessGroup& group = ProcessGroup());
+  /// Solves `mesh` on a preparation made before (PrepareTransport on the same points,
+  /// polygons and patch ids), shared, not copied.
+  RadiositySolver(const SceneMesh& mesh, const PreparedScene& prepared);
   ~RadiositySolver();
 
   /// Empty when the scene could be prepared.
   const std::string& Error() const;
-  const SceneGeometry& Geometry() const { return Geometry_; }
-  const Visibility& Rays() const { return *Rays_; }
+  const SceneGeometry& Geometry() const { return *Prepared_.Geometry; }
+  const Visibility& Rays() const { return *Prepared_.Rays; }
+  const PreparedScene& Prepared() const { return Prepared_; }
   /// Patches split because their parts cannot see each other (see SplitSeparatedPatches);
   /// then Geometry().elementPatch, not the mesh's PatchId, is the patch of each element.
-  int SplitPatches() const { return SplitPatches_; }
+  int SplitPatches() const { return Prepared_.SplitPatches; }
 
   /// Solves `solutions` independent systems at once. `emission[e * solutions + m]` is the
   /// exitance of element e in solution m. Transport (form factors, links, rays) is computed
@@ -197,10 +202,8 @@ public:
 
 private:
   const SceneMesh& Mesh;
-  SceneGeometry Geometry_;
-  std::unique_ptr<Visibility> Rays_;
+  PreparedScene Prepared_;
   std::string Error_;
-  int SplitPatches_ = 0;
 };
 
 /// Which patches `rank` of `ranks` receives for: each patch goes to the rank with the
