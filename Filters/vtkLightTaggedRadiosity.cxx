@@ -6,6 +6,7 @@
 
 #include "Solve/Effects.h"
 #include "Solve/LightChecks.h"
+#include "Geometry/PointAverages.h"
 #include "Solve/LightSolutions.h"
 #include "Base/Memory.h"
 #include "Solve/PatchBasis.h"

@@ -1,7 +1,7 @@
 #include "vtkRadiosityRelight.h"
 
 #include "Relight/LightRig.h"
-#include "Solve/LightSolutions.h"
+#include "Geometry/PointAverages.h"
 #include "Base/Text.h"
 #include "Relight/MovingLights.h"
 #include "Solve/PatchBasis.h"

@@ -2,6 +2,7 @@
 // room grows from 10k to 1M elements, k = 8 lights. Prints ratios measured in one run and
 // writes a CSV; it never judges them.
 #include "FurnishedRoom.h"
+#include "Geometry/PointAverages.h"
 #include "Solve/LightSolutions.h"
 #include "Relight/MovingLights.h"
 #include "Solve/PatchBasis.h"

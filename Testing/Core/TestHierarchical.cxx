@@ -1,6 +1,7 @@
 // The hierarchical solver method against closed forms, against progressive refinement on
 // the same mesh, and against its own invariants (light tagging, the ledger, threads).
 #include "FurnishedRoom.h"
+#include "Geometry/PointAverages.h"
 #include "Solve/LightSolutions.h"
 #include "SceneBuilders.h"
 

@@ -49,11 +49,6 @@ Solution SolveLights(const RadiositySolver& solver, const SceneMesh& mesh,
 /// with the direct part kept).
 double SolveMemory(long long elements, long long points, int solutions, bool separateDirect);
 
-/// Vertex values as the area-weighted mean of the cells around each vertex. Vertices are
-/// shared only within a flat surface of one material, so nothing bleeds across corners.
-std::vector<Vec3> AverageToPoints(
-  const SceneMesh& mesh, const SceneGeometry& geometry, const std::vector<Vec3>& cells, int columns);
-
 } // namespace radiosity
 
 #endif
