@@ -1,4 +1,6 @@
 #include "vtkRadiosityAdapter.h"
+
+#include "Base/WorkerPool.h"
 #include "vtkRadiosityLightDefaults.h"
 
 #include "vtkAlgorithm.h"
@@ -285,6 +287,19 @@ void WarningList::AddTo(vtkFieldData* fields) const
     all->InsertNextValue(message);
   }
   fields->AddArray(all);
+}
+
+const radiosity::WorkerPool& SharedPool()
+{
+  static std::unique_ptr<radiosity::WorkerPool> pool;
+  static int threads = -1;
+  const int now = Threads(0);
+  if (!pool || now != threads)
+  {
+    pool.reset(new radiosity::WorkerPool(now));
+    threads = now;
+  }
+  return *pool;
 }
 
 }

@@ -9,6 +9,11 @@
 
 #include <functional>
 
+namespace radiosity
+{
+class WorkerPool;
+}
+
 class vtkAlgorithm;
 class vtkDataArray;
 class vtkDataObject;
@@ -39,6 +44,10 @@ std::vector<std::string> LightNames(vtkFieldData* fields, int count);
 /// runs threads (ParaView's Settings, Number of threads), else 0: every hardware thread
 /// (the Sequential backend, Debian's, would otherwise mean one).
 int Threads(int asked);
+
+/// One worker pool for the relight filter's per-frame work (combining lights, moving
+/// lights): threads start once, not per frame, and again only when Threads(0) changes.
+const radiosity::WorkerPool& SharedPool();
 
 /// Field array on the empty output of a filter that failed.
 constexpr const char* FailureMarker = "RadiosityFailed";

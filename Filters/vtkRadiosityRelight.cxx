@@ -8,6 +8,7 @@
 #include "Relight/Relight.h"
 #include "vtkRadiosityAdapter.h"
 #include "vtkRadiosityLightDefaults.h"
+#include "vtkRadiosityCombine.h"
 #include "vtkRadiosityPieces.h"
 #include "vtkRadiosityPreparedScenes.h"
 #include "Base/WorkerPool.h"
@@ -42,25 +43,6 @@
 #include <memory>
 #include <set>
 #include <sstream>
-
-namespace
-{
-/// Shared by every relight filter: threads are started once, not per frame, and again
-/// only when ParaView's thread setting changes.
-const radiosity::WorkerPool& Pool()
-{
-  static std::unique_ptr<radiosity::WorkerPool> pool;
-  static int threads = -1;
-  const int now = vtkRadiosityAdapter::Threads(0);
-  if (!pool || now != threads)
-  {
-    pool.reset(new radiosity::WorkerPool(now));
-    threads = now;
-  }
-  return *pool;
-}
-
-}
 
 vtkStandardNewMacro(vtkRadiosityRelight);
 
@@ -277,8 +259,8 @@ bool vtkRadiosityRelight::AddMovingLights(vtkPolyData* scene, vtkPolyData* light
     }
   }
   std::vector<radiosity::Vec3> direct, cells;
-  this->LastMovingRays = state.Shader->Direct(movers, Pool(), direct);
-  radiosity::AddBasisInterreflection(g, direct, basis, Pool(), cells);
+  this->LastMovingRays = state.Shader->Direct(movers, vtkRadiosityAdapter::SharedPool(), direct);
+  radiosity::AddBasisInterreflection(g, direct, basis, vtkRadiosityAdapter::SharedPool(), cells);
   if (cellResult->GetNumberOfTuples() == static_cast<vtkIdType>(cells.size()))
   {
     float* out = cellResult->GetPointer(0);
@@ -561,80 +543,9 @@ void vtkRadiosityRelight::PrintSelf(ostream& os, vtkIndent indent)
   }
 }
 
-/// The first item of a 3-component result that is not finite, or -1.
-vtkIdType FirstNonFinite(vtkFloatArray* values)
-{
-  const float* v = values->GetPointer(0);
-  for (vtkIdType i = 0; i < 3 * values->GetNumberOfTuples(); ++i)
-  {
-    if (!std::isfinite(v[i]))
-    {
-      return i / 3;
-    }
-  }
-  return -1;
-}
 
 namespace
 {
-/// Combines the arrays of one attribute set; false with a message on a bad array.
-bool Combine(vtkFieldData* data, const std::vector<std::string>& arrays,
-  const std::vector<double>& weights, vtkIdType tuples, vtkFloatArray* out, std::string& error)
-{
-  std::vector<const float*> floats;
-  std::vector<const double*> doubles;
-  for (const std::string& name : arrays)
-  {
-    vtkAbstractArray* array = data->GetAbstractArray(name.c_str());
-    if (!array)
-    {
-      error = "array '" + name + "' is missing";
-      return false;
-    }
-    if (array->GetNumberOfComponents() != 3 || array->GetNumberOfTuples() != tuples)
-    {
-      error = "array '" + name + "' must have 3 components and one tuple per item";
-      return false;
-    }
-    if (auto* f = vtkFloatArray::FastDownCast(array))
-    {
-      floats.push_back(f->GetPointer(0));
-    }
-    else if (auto* d = vtkDoubleArray::FastDownCast(array))
-    {
-      doubles.push_back(d->GetPointer(0));
-    }
-    else
-    {
-      error = "array '" + name + "' is a " + array->GetClassName() +
-        "; solutions must be float or double";
-      return false;
-    }
-  }
-  if (!floats.empty() && !doubles.empty())
-  {
-    error = "the solution arrays mix float and double; use one type";
-    return false;
-  }
-  out->SetNumberOfComponents(3);
-  out->SetNumberOfTuples(tuples);
-  if (!floats.empty())
-  {
-    radiosity::CombineLights(floats, weights, static_cast<size_t>(tuples), out->GetPointer(0), &Pool());
-  }
-  else
-  {
-    radiosity::CombineLights(doubles, weights, static_cast<size_t>(tuples), out->GetPointer(0), &Pool());
-  }
-  const vtkIdType bad = FirstNonFinite(out);
-  if (bad >= 0)
-  {
-    error = "the combination is not finite at item " + std::to_string(bad) +
-      "; a solution array or a light setting holds NaN or infinity";
-    return false;
-  }
-  return true;
-}
 
 vtkSmartPointer<vtkUnsignedCharArray> Display(vtkFloatArray* linear, double exposure)
 {
@@ -807,9 +718,9 @@ int vtkRadiosityRelight::Relight(
     }
     vtkNew<vtkFloatArray> pointResult, cellResult;
     std::string error;
-    if ((hasPoints && !Combine(input->GetPointData(), pointArrays, weights,
+    if ((hasPoints && !vtkRadiosityCombineSolutions(input->GetPointData(), pointArrays, weights,
                         input->GetNumberOfPoints(), pointResult, error)) ||
-      (hasCells && !Combine(input->GetCellData(), cellArrays, weights, input->GetNumberOfCells(),
+      (hasCells && !vtkRadiosityCombineSolutions(input->GetCellData(), cellArrays, weights, input->GetNumberOfCells(),
                      cellResult, error)))
     {
       vtkErrorMacro(<< "Cannot relight: " << error << ".");
@@ -828,7 +739,7 @@ int vtkRadiosityRelight::Relight(
     for (vtkFloatArray* result : { hasPoints && moving ? pointResult.Get() : nullptr,
            hasCells && moving ? cellResult.Get() : nullptr })
     {
-      const vtkIdType bad = result ? FirstNonFinite(result) : -1;
+      const vtkIdType bad = result ? vtkRadiosityFirstNonFinite(result) : -1;
       if (bad >= 0)
       {
         vtkErrorMacro(<< "Cannot relight: the result is not finite at item " << bad

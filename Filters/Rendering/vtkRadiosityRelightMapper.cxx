@@ -1,10 +1,12 @@
 #include "vtkRadiosityRelightMapper.h"
 
 #include "Relight/LightRig.h"
+#include "vtkRadiosityCombine.h"
 #include "vtkRadiosityLightDefaults.h"
 
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
+#include "vtkFloatArray.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLBufferObject.h"
@@ -263,11 +265,16 @@ void vtkRadiosityRelightMapper::UploadIfNeeded(vtkRenderer* ren)
   std::vector<float> values(points * k * 3);
   for (size_t l = 0; l < k; ++l)
   {
+    // The solver writes float: read its memory directly, other types through the API.
+    auto* floats = vtkFloatArray::FastDownCast(arrays[l]);
+    const float* direct = floats ? floats->GetPointer(0) : nullptr;
     for (size_t p = 0; p < points; ++p)
     {
       for (int c = 0; c < 3; ++c)
       {
-        values[(p * k + l) * 3 + c] = static_cast<float>(arrays[l]->GetComponent(static_cast<vtkIdType>(p), c));
+        values[(p * k + l) * 3 + c] = direct
+          ? direct[3 * p + c]
+          : static_cast<float>(arrays[l]->GetComponent(static_cast<vtkIdType>(p), c));
       }
     }
   }
@@ -373,24 +380,28 @@ vtkPolyData* vtkRadiosityRelightMapper::CpuColoured()
     return in.Coloured;
   }
   const vtkIdType points = data->GetNumberOfPoints();
-  std::vector<float> linear(3 * static_cast<size_t>(points), 0.0f);
-  for (size_t l = 0; l < in.Names.size(); ++l)
+  // The relight filter's sum (in parallel, on the arrays' own memory), as the shader's.
+  std::vector<std::string> arrays;
+  for (const std::string& name : in.Names)
   {
-    vtkDataArray* solution = data->GetPointData()->GetArray(("Radiosity_" + in.Names[l]).c_str());
-    for (vtkIdType p = 0; solution && p < points; ++p)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        linear[3 * p + c] += weights[3 * l + c] * static_cast<float>(solution->GetComponent(p, c));
-      }
-    }
+    arrays.push_back("Radiosity_" + name);
+  }
+  vtkNew<vtkFloatArray> linear;
+  std::string error;
+  if (!vtkRadiosityCombineSolutions(data->GetPointData(), arrays,
+        std::vector<double>(weights.begin(), weights.end()), points, linear, error))
+  {
+    vtkErrorMacro(<< "Cannot relight on the CPU: " << error << ".");
+    linear->SetNumberOfComponents(3);
+    linear->SetNumberOfTuples(points);
+    linear->FillValue(0.0f);
   }
   vtkNew<vtkUnsignedCharArray> colours;
   colours->SetName("RelitDisplayColors");
   colours->SetNumberOfComponents(3);
   colours->SetNumberOfTuples(points);
   static const radiosity::DisplayCurve curve;
-  curve.Apply(linear.data(), linear.size(), in.Exposure, colours->GetPointer(0));
+  curve.Apply(linear->GetPointer(0), 3 * static_cast<size_t>(points), in.Exposure, colours->GetPointer(0));
   in.Coloured = vtkSmartPointer<vtkPolyData>::New();
   in.Coloured->ShallowCopy(data);
   in.Coloured->GetPointData()->SetScalars(colours);

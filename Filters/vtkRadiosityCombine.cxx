@@ -1,0 +1,81 @@
+#include "vtkRadiosityCombine.h"
+#include "vtkRadiosityAdapter.h"
+
+#include "Relight/Relight.h"
+
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+
+#include <cmath>
+
+bool vtkRadiosityCombineSolutions(vtkFieldData* data, const std::vector<std::string>& arrays,
+  const std::vector<double>& weights, vtkIdType tuples, vtkFloatArray* out, std::string& error)
+{
+  std::vector<const float*> floats;
+  std::vector<const double*> doubles;
+  for (const std::string& name : arrays)
+  {
+    vtkAbstractArray* array = data->GetAbstractArray(name.c_str());
+    if (!array)
+    {
+      error = "array '" + name + "' is missing";
+      return false;
+    }
+    if (array->GetNumberOfComponents() != 3 || array->GetNumberOfTuples() != tuples)
+    {
+      error = "array '" + name + "' must have 3 components and one tuple per item";
+      return false;
+    }
+    if (auto* f = vtkFloatArray::FastDownCast(array))
+    {
+      floats.push_back(f->GetPointer(0));
+    }
+    else if (auto* d = vtkDoubleArray::FastDownCast(array))
+    {
+      doubles.push_back(d->GetPointer(0));
+    }
+    else
+    {
+      error = "array '" + name + "' is a " + array->GetClassName() +
+        "; solutions must be float or double";
+      return false;
+    }
+  }
+  if (!floats.empty() && !doubles.empty())
+  {
+    error = "the solution arrays mix float and double; use one type";
+    return false;
+  }
+  out->SetNumberOfComponents(3);
+  out->SetNumberOfTuples(tuples);
+  if (!floats.empty())
+  {
+    radiosity::CombineLights(floats, weights, static_cast<size_t>(tuples), out->GetPointer(0), &vtkRadiosityAdapter::SharedPool());
+  }
+  else
+  {
+    radiosity::CombineLights(doubles, weights, static_cast<size_t>(tuples), out->GetPointer(0), &vtkRadiosityAdapter::SharedPool());
+  }
+  const vtkIdType bad = vtkRadiosityFirstNonFinite(out);
+  if (bad >= 0)
+  {
+    error = "the combination is not finite at item " + std::to_string(bad) +
+      "; a solution array or a light setting holds NaN or infinity";
+    return false;
+  }
+  return true;
+}
+
+vtkIdType vtkRadiosityFirstNonFinite(vtkFloatArray* values)
+{
+  const float* v = values->GetPointer(0);
+  for (vtkIdType i = 0; i < 3 * values->GetNumberOfTuples(); ++i)
+  {
+    if (!std::isfinite(v[i]))
+    {
+      return i / 3;
+    }
+  }
+  return -1;
+}
