@@ -13,6 +13,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkSMPTools.h"
 #include "vtkStringArray.h"
 
 #include <vtk_nlohmannjson.h>
@@ -98,14 +99,16 @@ std::vector<std::uint32_t> Triangles(const radiosity::SceneMesh& mesh)
 std::vector<float> Floats(vtkDataArray* array, double scale, bool clamp)
 {
   std::vector<float> values(3 * static_cast<size_t>(array->GetNumberOfTuples()));
-  for (vtkIdType t = 0; t < array->GetNumberOfTuples(); ++t)
-  {
-    for (int c = 0; c < 3; ++c)
+  vtkSMPTools::For(0, array->GetNumberOfTuples(), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType t = begin; t < end; ++t)
     {
-      const double v = array->GetComponent(t, c) * scale;
-      values[3 * t + c] = static_cast<float>(clamp ? std::min(1.0, std::max(0.0, v)) : v);
+      for (int c = 0; c < 3; ++c)
+      {
+        const double v = array->GetComponent(t, c) * scale;
+        values[3 * t + c] = static_cast<float>(clamp ? std::min(1.0, std::max(0.0, v)) : v);
+      }
     }
-  }
+  });
   return values;
 }
 

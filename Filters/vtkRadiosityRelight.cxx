@@ -25,6 +25,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
 #include "vtkNew.h"
@@ -85,6 +86,20 @@ int vtkRadiosityRelight::FillInputPortInformation(int port, vtkInformation* info
 
 namespace
 {
+/// result += values, tuple by tuple, as VTK's SMP tools split it (ParaView's threads).
+void AddTo(vtkFloatArray* result, const std::vector<radiosity::Vec3>& values)
+{
+  float* out = result->GetPointer(0);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(values.size()), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      out[3 * i + 0] += static_cast<float>(values[i].x);
+      out[3 * i + 1] += static_cast<float>(values[i].y);
+      out[3 * i + 2] += static_cast<float>(values[i].z);
+    }
+  });
+}
+
 /// The solver's basis, per element (cell array) or per patch node (field array plus the
 /// cell arrays that interpolate it), checked against the scene's patches.
 bool ReadBasis(vtkPolyData* scene, int patches, radiosity::BasisView& basis, std::string& error)
@@ -263,24 +278,12 @@ bool vtkRadiosityRelight::AddMovingLights(vtkPolyData* scene, vtkPolyData* light
   radiosity::AddBasisInterreflection(g, direct, basis, vtkRadiosityAdapter::SharedPool(), cells);
   if (cellResult->GetNumberOfTuples() == static_cast<vtkIdType>(cells.size()))
   {
-    float* out = cellResult->GetPointer(0);
-    for (size_t e = 0; e < cells.size(); ++e)
-    {
-      out[3 * e + 0] += static_cast<float>(cells[e].x);
-      out[3 * e + 1] += static_cast<float>(cells[e].y);
-      out[3 * e + 2] += static_cast<float>(cells[e].z);
-    }
+    AddTo(cellResult, cells);
   }
   if (pointResult->GetNumberOfTuples() == scene->GetNumberOfPoints())
   {
     const std::vector<radiosity::Vec3> points = radiosity::AverageToPoints(state.Scene, g, cells, 1);
-    float* out = pointResult->GetPointer(0);
-    for (size_t p = 0; p < points.size(); ++p)
-    {
-      out[3 * p + 0] += static_cast<float>(points[p].x);
-      out[3 * p + 1] += static_cast<float>(points[p].y);
-      out[3 * p + 2] += static_cast<float>(points[p].z);
-    }
+    AddTo(pointResult, points);
   }
   this->LastMovingSeconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
