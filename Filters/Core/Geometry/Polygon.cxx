@@ -66,6 +66,19 @@ bool Bounds::Overlaps(const Bounds& b, double tolerance) const
   return true;
 }
 
+std::array<long long, 4> PlaneKey(
+  const Vec3& unitNormal, const Vec3& pointOnPlane, const Vec3& centre, double normalStep, double offsetStep)
+{
+  const double offset = Dot(unitNormal, pointOnPlane - centre);
+  return { std::llround(unitNormal.x / normalStep), std::llround(unitNormal.y / normalStep),
+    std::llround(unitNormal.z / normalStep), std::llround(offset / offsetStep) };
+}
+
+std::array<long long, 3> QuantizedPoint(const Vec3& p, double step)
+{
+  return { std::llround(p.x / step), std::llround(p.y / step), std::llround(p.z / step) };
+}
+
 Vec3 NewellVector(const Vec3* loop, int count)
 {
   // Relative to the first point: the sums of far-away coordinates would cancel the

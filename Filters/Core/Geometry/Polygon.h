@@ -4,6 +4,7 @@
 
 #include "Base/Vec3.h"
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,18 @@ struct Bounds
   double Diagonal() const { return Norm(Hi - Lo); }
   Vec3 Centre() const { return (Lo + Hi) * 0.5; }
 };
+
+/// A plane as a hash key: the unit normal in steps of `normalStep` and the offset from
+/// `centre` (the plane's distance past it along the normal) in steps of `offsetStep`. The
+/// offset is taken from the scene's centre, not the origin: far from the origin the
+/// normal's round-off times the distance would split one floor into many keys. Planes
+/// closer than a step can still round apart: a caller that must join them probes the
+/// neighbouring keys (the mesher's surfaces do; the shooters' blocker groups need not).
+std::array<long long, 4> PlaneKey(
+  const Vec3& unitNormal, const Vec3& pointOnPlane, const Vec3& centre, double normalStep, double offsetStep);
+
+/// A point as a hash key: each coordinate in steps of `step` (welding equal points).
+std::array<long long, 3> QuantizedPoint(const Vec3& p, double step);
 
 /// Newell's vector: normal direction of the right-hand-rule loop, length = 2 * area.
 /// Robust for non-planar or nearly degenerate loops, unlike a single cross product.

@@ -447,7 +447,7 @@ std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& of
   std::multimap<SurfaceId, int> surfaceIndex; // a key holds every surface whose plane rounds to it
   std::vector<Plane> surfacePlanes;
   std::vector<SurfaceMesh> surfaces;
-  std::vector<std::map<std::tuple<long long, long long, long long>, SurfaceMesh::VertexHandle>> welds;
+  std::vector<std::map<std::array<long long, 3>, SurfaceMesh::VertexHandle>> welds;
   // Polygons that fit in one patch share a patch with the others of their surface in the
   // same PatchSize cell of the plane: a model's many small parts would otherwise each be a
   // shooter (a house's 16k polygons made 59k patches).
@@ -505,12 +505,10 @@ std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& of
     Piece piece;
     MakePiece(loop, options, noise, ContactCutter(contacts.Segments[i], normal, contacts.Touch), piece);
 
-    // From the scene's centre: measured from the origin, a plane far away carries its
-    // normal's round-off times its distance, and one floor would split into many.
-    const double planeOffset = Dot(normal, PolygonCentroid(loop.data(), static_cast<int>(loop.size())) - sceneCentre);
-    auto q = [&](double v, double scale) { return static_cast<long long>(std::llround(v / scale)); };
-    const SurfaceId id{ surfaceKey[source[i]], q(normal.x, kNormalTolerance), q(normal.y, kNormalTolerance),
-      q(normal.z, kNormalTolerance), q(planeOffset, quantum * 1000) };
+    const Vec3 centroid = PolygonCentroid(loop.data(), static_cast<int>(loop.size()));
+    const double planeOffset = Dot(normal, centroid - sceneCentre);
+    const std::array<long long, 4> key = PlaneKey(normal, centroid, sceneCentre, kNormalTolerance, quantum * 1000);
+    const SurfaceId id{ surfaceKey[source[i]], key[0], key[1], key[2], key[3] };
     const Plane plane{ normal, planeOffset };
     int s = FindSurface(surfaceIndex, id, surfacePlanes, plane, quantum * 1000);
     if (s < 0)
@@ -547,7 +545,7 @@ std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& of
       for (int v = 0; v < piece.sides[e]; ++v, ++corner)
       {
         const Vec3& p = piece.corners[corner];
-        const auto key = std::make_tuple(q(p.x, quantum), q(p.y, quantum), q(p.z, quantum));
+        const auto key = QuantizedPoint(p, quantum);
         auto weld = welds[s].find(key);
         if (weld == welds[s].end())
         {

@@ -21,11 +21,7 @@ struct TriangleEdges
   double Quantum;
   std::map<std::pair<PointKey, PointKey>, std::vector<int>> Triangles; ///< by undirected edge
 
-  PointKey Key(int id) const
-  {
-    const Vec3& p = Points[id];
-    return { std::llround(p.x / Quantum), std::llround(p.y / Quantum), std::llround(p.z / Quantum) };
-  }
+  PointKey Key(int id) const { return QuantizedPoint(Points[id], Quantum); }
   std::pair<PointKey, PointKey> Edge(int a, int b) const
   {
     const PointKey x = Key(a), y = Key(b);

@@ -111,15 +111,15 @@ void ShooterFormFactors::FindBlockers()
   // polygon with no scene point strictly behind its plane cannot block any pair; only
   // the others ("blockers") can. Elements are grouped by plane: one test per plane.
   const double eps = 1e-9 * Geometry.sceneDiagonal;
+  const Vec3 centre = scene.Centre();
   std::map<std::array<long long, 4>, Bounds> planes;
   std::map<std::array<long long, 4>, bool> blocking;
   std::map<int, Bounds> patches; // blocking elements' boxes per patch: tighter than per plane
   for (int e = 0; e < n; ++e)
   {
     const Vec3& normal = Geometry.normal[e];
-    const double offset = Dot(normal, Geometry.centroid[e]);
-    const std::array<long long, 4> key = { std::llround(normal.x * 1e6), std::llround(normal.y * 1e6),
-      std::llround(normal.z * 1e6), std::llround(offset / (eps * 1e3)) };
+    const double offset = Dot(normal, Geometry.centroid[e] - centre);
+    const std::array<long long, 4> key = PlaneKey(normal, Geometry.centroid[e], centre, 1e-6, eps * 1e3);
     auto known = blocking.find(key);
     if (known == blocking.end())
     {
@@ -129,14 +129,14 @@ void ShooterFormFactors::FindBlockers()
       {
         const Vec3 p{ corner & 1 ? scene.Hi.x : scene.Lo.x, corner & 2 ? scene.Hi.y : scene.Lo.y,
           corner & 4 ? scene.Hi.z : scene.Lo.z };
-        behind = Dot(normal, p) < offset - eps;
+        behind = Dot(normal, p - centre) < offset - eps;
       }
       if (behind)
       {
         behind = false;
         for (size_t p = 0; p < Mesh.points.size() && !behind; ++p)
         {
-          behind = Dot(normal, Mesh.points[p]) < offset - eps;
+          behind = Dot(normal, Mesh.points[p] - centre) < offset - eps;
         }
       }
       known = blocking.emplace(key, behind).first;
