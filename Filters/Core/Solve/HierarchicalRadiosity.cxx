@@ -1,5 +1,5 @@
 #include "Solve/HierarchicalRadiosity.h"
-#include "Solve/ShootingState.h"
+#include "Solve/ShootToElements.h"
 
 #include <algorithm>
 #include <atomic>

@@ -1,5 +1,5 @@
 #include "Solve/ProgressiveRadiosity.h"
-#include "Solve/ShootingState.h"
+#include "Solve/ShootToElements.h"
 #include "Base/WorkerPool.h"
 
 #include <algorithm>

@@ -6,6 +6,8 @@
 
 #include "Geometry/PatchNodes.h"
 #include "Solve/RadiositySolver.h"
+#include "Solve/Channels.h"
+#include "Solve/RankTable.h"
 #include "Base/WorkerPool.h"
 
 #include <algorithm>
@@ -14,40 +16,6 @@
 
 namespace radiosity
 {
-
-/// The solver's arithmetic for an RGB value (Vec3) or a single grey channel (double).
-/// A grey scene solved as one channel gives the same numbers with a third of the work.
-struct Rgb
-{
-  using Value = Vec3;
-  static Value From(const Vec3& v) { return v; }
-  static Vec3 To(const Value& v) { return v; }
-  static double Sum(const Value& v) { return v.x + v.y + v.z; }
-  static Value Reflect(const Vec3& rho, const Value& u, double f)
-  {
-    return { rho.x * u.x * f, rho.y * u.y * f, rho.z * u.z * f };
-  }
-  static constexpr size_t Doubles = 3; ///< what a value takes in a sum over the ranks
-  static void Store(const Value& v, double* to)
-  {
-    to[0] = v.x;
-    to[1] = v.y;
-    to[2] = v.z;
-  }
-  static Value Load(const double* from) { return { from[0], from[1], from[2] }; }
-};
-
-struct Grey
-{
-  using Value = double;
-  static Value From(const Vec3& v) { return (v.x + v.y + v.z) / 3.0; }
-  static Vec3 To(Value v) { return { v, v, v }; }
-  static double Sum(Value v) { return 3.0 * v; } // powers stay comparable with RGB runs
-  static Value Reflect(const Vec3& rho, Value u, double f) { return (rho.x + rho.y + rho.z) / 3.0 * u * f; }
-  static constexpr size_t Doubles = 1;
-  static void Store(Value v, double* to) { to[0] = v; }
-  static Value Load(const double* from) { return from[0]; }
-};
 
 using SolverClock = std::chrono::steady_clock;
 
@@ -282,7 +250,7 @@ public:
     Stats.OwnRays = Stats.RayCount;
     if (Group.Distributed())
     {
-      GatherSolution();
+      GatherOverRanks(Group, Out);
     }
   }
 
@@ -437,29 +405,19 @@ private:
     return shooter;
   }
 
-  /// Continue for several ranks, with one sum per shot: a table with a row per rank holds
-  /// its stop flags, what the last shot delivered to its receivers and their remaining
-  /// unshot power, and its best patch for the next shot with that patch's power and unshot
-  /// energy. The rules then apply in the order of one process; the largest power wins
-  /// (the lowest patch on ties), and every rank takes the winner's unshot energy, which
-  /// only its owner has.
+  /// Continue for several ranks, with one sum per shot (RankTable). The rules then apply in
+  /// the order of one process, and every rank takes the winner's unshot energy, which only
+  /// its owner has.
   bool ContinueTogether()
   {
     const bool outOfTime = Options.TimeBudget > 0 && Seconds() >= Options.TimeBudget;
     const bool abort = !outOfTime && Options.Progress && !Options.Progress(Fraction());
-    std::vector<double> table = SumTable(outOfTime, abort);
-    double stop[2] = { 0, 0 };
-    Pending.Received = 0;
-    std::fill(RemainingPer.begin(), RemainingPer.end(), 0.0);
-    for (size_t r = 0; r < table.size(); r += Row())
+    RankTable<Channel> table(L, Direct);
+    table.Exchange(Group, MyRow(outOfTime, abort));
+    Pending.Received = table.Received();
+    for (int m = 0; m < L; ++m)
     {
-      stop[0] += table[r];
-      stop[1] += table[r + 1];
-      Pending.Received += table[r + 4];
-      for (int m = 0; m < L; ++m)
-      {
-        RemainingPer[m] += table[r + 5 + m];
-      }
+      RemainingPer[m] = table.Remaining(m);
     }
     if (Pending.Open)
     {
@@ -475,15 +433,15 @@ private:
     {
       return false;
     }
-    Stats.OutOfTime = stop[0] > 0;
-    Stats.Aborted = !Stats.OutOfTime && stop[1] > 0;
+    Stats.OutOfTime = table.AnyOutOfTime();
+    Stats.Aborted = !Stats.OutOfTime && table.AnyAborted();
     if (Stats.OutOfTime || Stats.Aborted)
     {
       return false;
     }
     if (Mask() != picked)
     {
-      table = SumTable(false, false); // a solution just converged: choose again without it
+      table.Exchange(Group, MyRow(false, false)); // a solution just converged: choose again without it
     }
     TakeWinner(table);
     return true;
@@ -500,82 +458,43 @@ private:
     return mask;
   }
 
-  size_t Row() const { return 5 + L + L * Channel::Doubles * (Direct ? 2 : 1); }
-
-  /// This rank's row (see ContinueTogether) in a table summed over the ranks.
-  std::vector<double> SumTable(bool outOfTime, bool abort)
+  /// This rank's row of the shot's table.
+  RankRow<Channel> MyRow(bool outOfTime, bool abort)
   {
-    double best = -1;
-    const int candidate = BestOwnedPatch(best);
-    const size_t d = Channel::Doubles;
-    std::vector<double> table(Row() * Group.Ranks(), 0.0);
-    double* mine = &table[Row() * Group.Rank()];
-    mine[0] = outOfTime ? 1 : 0;
-    mine[1] = abort ? 1 : 0;
-    mine[2] = best;
-    mine[3] = candidate;
-    mine[4] = Pending.Open ? Pending.Received : 0.0;
-    std::copy(RemainingPer.begin(), RemainingPer.end(), mine + 5);
-    double* values = mine + 5 + L;
-    for (int m = 0; m < L && candidate >= 0; ++m)
+    RankRow<Channel> row;
+    row.OutOfTime = outOfTime;
+    row.Aborted = abort;
+    row.Candidate = BestOwnedPatch(row.BestPower);
+    row.Received = Pending.Open ? Pending.Received : 0.0;
+    row.Remaining = RemainingPer;
+    for (int m = 0; m < L && row.Candidate >= 0; ++m)
     {
-      Channel::Store(Unshot[Index(candidate, m)], values + m * d);
+      row.Unshot.push_back(Unshot[Index(row.Candidate, m)]);
       if (Direct)
       {
-        Channel::Store(UnshotEmission[Index(candidate, m)], values + (L + m) * d);
+        row.UnshotEmission.push_back(UnshotEmission[Index(row.Candidate, m)]);
       }
     }
-    Group.Sum(table);
-    return table;
+    return row;
   }
 
-  /// The next shooter from a summed table, with its unshot energy.
-  void TakeWinner(const std::vector<double>& table)
+  /// The next shooter from the summed table, with its unshot energy.
+  void TakeWinner(const RankTable<Channel>& table)
   {
-    const double* winner = nullptr;
-    for (size_t r = 0; r < table.size(); r += Row())
+    std::vector<Value> unshot, emission;
+    Next = 0;
+    if (!table.Winner(Next, unshot, emission))
     {
-      const double* t = &table[r];
-      if (t[3] >= 0 && (!winner || t[2] > winner[2] || (t[2] == winner[2] && t[3] < winner[3])))
-      {
-        winner = t;
-      }
+      return;
     }
-    Next = winner ? static_cast<int>(winner[3]) : 0;
-    const size_t d = Channel::Doubles;
-    for (int m = 0; m < L && winner; ++m)
+    for (int m = 0; m < L; ++m)
     {
-      const double* values = winner + 5 + L;
-      Unshot[Index(Next, m)] = Channel::Load(values + m * d);
+      Unshot[Index(Next, m)] = unshot[m];
       if (Direct)
       {
-        UnshotEmission[Index(Next, m)] = Channel::Load(values + (L + m) * d);
+        UnshotEmission[Index(Next, m)] = emission[m];
       }
     }
-  }
-
-  /// Every rank's receivers into every rank's output, and the work counts summed.
-  void GatherSolution()
-  {
-    static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 is summed as three doubles");
-    Stats.ShotCollectiveBytes = Group.Bytes;
-    Group.Sum(reinterpret_cast<double*>(Out.Radiosity.data()), 3 * Out.Radiosity.size());
-    Group.Sum(reinterpret_cast<double*>(Out.Direct.data()), 3 * Out.Direct.size());
-    double counts[] = { static_cast<double>(Stats.RayCount), static_cast<double>(Stats.RaysSkipped),
-      static_cast<double>(Stats.PairsUnblockable), static_cast<double>(Stats.FormFactorCount),
-      static_cast<double>(Stats.PatchLinks), static_cast<double>(Stats.ElementLinks), Stats.LinkBytes };
-    Group.Sum(counts, 7);
-    Stats.RayCount = static_cast<long long>(counts[0]);
-    Stats.RaysSkipped = static_cast<long long>(counts[1]);
-    Stats.PairsUnblockable = static_cast<long long>(counts[2]);
-    Stats.FormFactorCount = static_cast<long long>(counts[3]);
-    Stats.PatchLinks = static_cast<long long>(counts[4]);
-    Stats.ElementLinks = static_cast<long long>(counts[5]);
-    Stats.LinkBytes = counts[6];
-    Stats.Ranks = Group.Ranks();
-    Stats.Collectives = Group.Calls;
-    Stats.CollectiveSeconds = Group.Seconds;
-    Stats.CollectiveBytes = Group.Bytes;
   }
 
   /// A solution is done once its unshot power is below the threshold of its own emission:
@@ -673,64 +592,6 @@ private:
     double Shot = 0, Received = 0, Seconds = 0;
   } Pending;
 };
-
-/// Calls body(Grey()) for a single grey channel, body(Rgb()) otherwise: the solver methods
-/// are templates on the channel type.
-template <typename Body>
-void WithChannel(bool grey, const Body& body)
-{
-  if (grey)
-  {
-    body(Grey());
-  }
-  else
-  {
-    body(Rgb());
-  }
-}
-
-/// Every element receives the shot through factors[e] = F(e -> shooter); returns the
-/// power that arrived. Radiosity is updated in parallel, patch sums in element order.
-template <typename Channel>
-double DistributeToElements(ShootingState<Channel>& state, const WorkerPool& pool, const std::vector<double>& factors)
-{
-  pool.For(state.Elements, 512, [&](int begin, int end) {
-    for (int e = begin; e < end; ++e)
-    {
-      if (factors[e] > 0)
-      {
-        state.Gather(e, factors[e]);
-      }
-    }
-  });
-  double received = 0;
-  for (int e = 0; e < state.Elements; ++e)
-  {
-    if (factors[e] > 0)
-    {
-      received += state.ShotTotal() * factors[e] * state.G.area[e];
-      state.Deposit(e, factors[e]);
-    }
-  }
-  return received;
-}
-
-/// One shot from `shooter` to every element (TakeShot done): factors with their rays,
-/// scaled so the shot delivers no more power than it has (exactly that in a closed scene),
-/// then distributed to all solutions and booked.
-template <typename Channel>
-void ShootToElements(ShootingState<Channel>& state, const WorkerPool& pool, ShooterFormFactors& estimator,
-  int shooter, FormFactorMethod method, int samples, SolverStatistics& stats, std::vector<double>& factors)
-{
-  factors.resize(state.Elements);
-  // The expensive part, done once per shot whatever the number of solutions.
-  const long long rays = estimator.Compute(shooter, method, samples, stats.Shots, factors);
-  // The sampling methods cast the shot's rays on every rank: counted once, on rank 0.
-  stats.RayCount += method == FormFactorMethod::Analytic || state.Ranks().Rank() == 0 ? rays : 0;
-  stats.FormFactorCount += state.OwnedElements();
-  state.Conserve(estimator, shooter, factors);
-  state.EndShot(shooter, DistributeToElements(state, pool, factors));
-}
 
 } // namespace radiosity
 
