@@ -41,6 +41,11 @@ int vtkLightTaggedRadiosity::GetPreparedScenesHeld()
   return vtkRadiosityPreparedScenes::Held();
 }
 
+void vtkLightTaggedRadiosity::ReleasePreparedScenes()
+{
+  vtkRadiosityPreparedScenes::Clear();
+}
+
 vtkLightTaggedRadiosity::vtkLightTaggedRadiosity()
 {
   this->SetNumberOfOutputPorts(2);
@@ -138,7 +143,6 @@ std::string DescribeStatus(const radiosity::SolverStatistics& stats, bool aborte
   return stats.OutOfTime ? "stopped at TimeBudget" : "stopped at MaximumShots";
 }
 
-/// Why a solve stopped short of convergence, for a warning; empty if it converged.
 /// The preparation kept for `input`'s mesh where every rank has one (MarkEnclosed is
 /// collective: the ranks must all prepare or all reuse), else a new one, kept for the next
 /// solve, the relight and the pictures of this mesh.
@@ -151,10 +155,9 @@ std::string PrepareOrReuse(vtkPolyData* input, const radiosity::SceneMesh& mesh,
   {
     return "";
   }
-  if (prepared.Geometry)
-  {
-    prepared = radiosity::PreparedScene(); // kept here but not on every rank: prepare again
-  }
+  // Kept here but not on every rank: all prepare again (rays kept here are reused).
+  prepared.Geometry.reset();
+  prepared.SplitPatches = 0;
   const std::string error = radiosity::PrepareTransport(mesh, threads, group, prepared);
   if (error.empty())
   {
@@ -163,6 +166,7 @@ std::string PrepareOrReuse(vtkPolyData* input, const radiosity::SceneMesh& mesh,
   return error;
 }
 
+/// Why a solve stopped short of convergence, for a warning; empty if it converged.
 std::string DescribeEarlyStop(const radiosity::SolverStatistics& stats, double budget, double threshold)
 {
   const double remaining = stats.RemainingHistory.empty() ? 1.0 : stats.RemainingHistory.back();

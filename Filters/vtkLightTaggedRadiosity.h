@@ -243,8 +243,10 @@ public:
   /// settings, or after the relight or the EXR writer prepared the same mesh): no BVH,
   /// patch splitting or hemisphere probes (vtkRadiosityPreparedScenes).
   vtkGetMacro(LastPreparationReused, bool);
-  /// How many preparations the process holds for meshes still alive (at most four).
+  /// How many preparations the process holds (at most four; each goes when its mesh's
+  /// points are deleted or edited), and a way to drop them all now.
   static int GetPreparedScenesHeld();
+  static void ReleasePreparedScenes();
   ///@}
 
 protected:

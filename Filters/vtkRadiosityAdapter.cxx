@@ -289,17 +289,19 @@ void WarningList::AddTo(vtkFieldData* fields) const
   fields->AddArray(all);
 }
 
-const radiosity::WorkerPool& SharedPool()
+std::shared_ptr<const radiosity::WorkerPool> SharedPool()
 {
-  static std::unique_ptr<radiosity::WorkerPool> pool;
+  static std::mutex lock;
+  static std::shared_ptr<const radiosity::WorkerPool> pool;
   static int threads = -1;
   const int now = Threads(0);
+  std::lock_guard<std::mutex> hold(lock);
   if (!pool || now != threads)
   {
-    pool.reset(new radiosity::WorkerPool(now));
+    pool = std::make_shared<const radiosity::WorkerPool>(now); // a caller still holds the old one
     threads = now;
   }
-  return *pool;
+  return pool;
 }
 
 }

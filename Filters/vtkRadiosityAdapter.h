@@ -4,6 +4,7 @@
 
 #include "Geometry/Scene.h"
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -47,7 +48,8 @@ int Threads(int asked);
 
 /// One worker pool for the relight filter's per-frame work (combining lights, moving
 /// lights): threads start once, not per frame, and again only when Threads(0) changes.
-const radiosity::WorkerPool& SharedPool();
+/// Hold the pointer while using the pool: a change of setting replaces it.
+std::shared_ptr<const radiosity::WorkerPool> SharedPool();
 
 /// Field array on the empty output of a filter that failed.
 constexpr const char* FailureMarker = "RadiosityFailed";

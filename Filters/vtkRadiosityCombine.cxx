@@ -49,13 +49,14 @@ bool vtkRadiosityCombineSolutions(vtkFieldData* data, const std::vector<std::str
   }
   out->SetNumberOfComponents(3);
   out->SetNumberOfTuples(tuples);
+  const auto pool = vtkRadiosityAdapter::SharedPool();
   if (!floats.empty())
   {
-    radiosity::CombineLights(floats, weights, static_cast<size_t>(tuples), out->GetPointer(0), &vtkRadiosityAdapter::SharedPool());
+    radiosity::CombineLights(floats, weights, static_cast<size_t>(tuples), out->GetPointer(0), pool.get());
   }
   else
   {
-    radiosity::CombineLights(doubles, weights, static_cast<size_t>(tuples), out->GetPointer(0), &vtkRadiosityAdapter::SharedPool());
+    radiosity::CombineLights(doubles, weights, static_cast<size_t>(tuples), out->GetPointer(0), pool.get());
   }
   const vtkIdType bad = vtkRadiosityFirstNonFinite(out);
   if (bad >= 0)

@@ -13,7 +13,6 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkSMPTools.h"
 #include "vtkStringArray.h"
 
 #include <vtk_nlohmannjson.h>
@@ -99,16 +98,16 @@ std::vector<std::uint32_t> Triangles(const radiosity::SceneMesh& mesh)
 std::vector<float> Floats(vtkDataArray* array, double scale, bool clamp)
 {
   std::vector<float> values(3 * static_cast<size_t>(array->GetNumberOfTuples()));
-  vtkSMPTools::For(0, array->GetNumberOfTuples(), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType t = begin; t < end; ++t)
+  // Serial: GetComponent is not promised thread-safe for every array type (an implicit
+  // array may cache a tuple), and this runs once per export.
+  for (vtkIdType t = 0; t < array->GetNumberOfTuples(); ++t)
+  {
+    for (int c = 0; c < 3; ++c)
     {
-      for (int c = 0; c < 3; ++c)
-      {
-        const double v = array->GetComponent(t, c) * scale;
-        values[3 * t + c] = static_cast<float>(clamp ? std::min(1.0, std::max(0.0, v)) : v);
-      }
+      const double v = array->GetComponent(t, c) * scale;
+      values[3 * t + c] = static_cast<float>(clamp ? std::min(1.0, std::max(0.0, v)) : v);
     }
-  });
+  }
   return values;
 }
 

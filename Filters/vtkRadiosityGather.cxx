@@ -4,12 +4,14 @@
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
+#include "vtkLogger.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
+#include <cstdlib>
 #include <sstream>
 #include <string>
 
@@ -28,6 +30,14 @@ struct ArrayEntry
   int Active = 0; ///< bit t: the active attribute of type t (scalars, normals...)
   std::string Name;
 };
+
+/// A collective that failed on one rank leaves the others waiting in the next: ending the
+/// job with the reason beats a hang.
+[[noreturn]] void Fail(const std::string& why)
+{
+  vtkLogF(ERROR, "Gathering the scene's pieces failed: %s; ending the MPI job.", why.c_str());
+  std::abort();
+}
 
 vtkCellArray* CellArray(vtkPolyData* data, int slot)
 {
@@ -63,10 +73,13 @@ void SetCellArray(vtkPolyData* data, int slot, vtkCellArray* cells)
 }
 
 /// The arrays of `piece` in the order they are sent, or false where one cannot be sent raw
-/// (a string array among the point or cell data, a name with a line break).
+/// (a string array among the point or cell data, a bit array or one not laid out as one
+/// block, a name with a line break).
 bool ListArrays(vtkPolyData* piece, std::vector<vtkDataArray*>& arrays, std::vector<ArrayEntry>& entries)
 {
+  bool plain = true; // every array one block of memory of a type MPI can send
   auto add = [&](vtkDataArray* array, char kind, int slot, int active = 0) {
+    plain = plain && array->HasStandardMemoryLayout() && array->GetDataType() != VTK_BIT;
     arrays.push_back(array);
     entries.push_back({ kind, slot, array->GetDataType(), array->GetNumberOfComponents(), active,
       array->GetName() ? array->GetName() : "" });
@@ -109,7 +122,7 @@ bool ListArrays(vtkPolyData* piece, std::vector<vtkDataArray*>& arrays, std::vec
       add(array, kind, 0, active);
     }
   }
-  return true;
+  return plain;
 }
 
 std::string Describe(const std::vector<ArrayEntry>& entries)
@@ -177,8 +190,15 @@ vtkSmartPointer<vtkPolyData> Receive(
   for (const ArrayEntry& e : entries)
   {
     vtkSmartPointer<vtkDataArray> array = vtk::TakeSmartPointer(vtkDataArray::CreateDataArray(e.Type));
+    if (!array)
+    {
+      Fail("rank " + std::to_string(source) + " sent an array of unknown type " + std::to_string(e.Type));
+    }
     array->SetNumberOfComponents(e.Components);
-    controller->Broadcast(array, source);
+    if (!controller->Broadcast(array, source))
+    {
+      Fail("the array '" + e.Name + "' of rank " + std::to_string(source) + " did not arrive");
+    }
     array->SetName(e.Name.empty() ? nullptr : e.Name.c_str());
     if (e.Kind == 'P')
     {
@@ -193,7 +213,10 @@ vtkSmartPointer<vtkPolyData> Receive(
     else if (e.Kind == 'C')
     {
       vtkNew<vtkCellArray> cells;
-      cells->SetData(offsets, array);
+      if (!offsets || !cells->SetData(offsets, array))
+      {
+        Fail("the cells of rank " + std::to_string(source) + " could not be rebuilt");
+      }
       SetCellArray(piece, e.Slot, cells);
     }
     else
@@ -215,7 +238,7 @@ vtkSmartPointer<vtkPolyData> Receive(
 
 } // namespace
 
-void AllGatherPieces(
+bool AllGatherPieces(
   vtkMultiProcessController* controller, vtkPolyData* piece, std::vector<vtkSmartPointer<vtkPolyData>>& pieces)
 {
   std::vector<vtkDataArray*> arrays;
@@ -250,7 +273,10 @@ void AllGatherPieces(
     {
       for (vtkDataArray* array : arrays)
       {
-        controller->Broadcast(array, me);
+        if (!controller->Broadcast(array, me))
+        {
+          Fail("could not send the array '" + std::string(array->GetName() ? array->GetName() : "") + "'");
+        }
       }
       pieces[r] = piece ? piece : gathered;
     }
@@ -259,6 +285,7 @@ void AllGatherPieces(
       pieces[r] = Receive(controller, r, Parse(descriptions[r]), gathered);
     }
   }
+  return allRaw;
 }
 
 }

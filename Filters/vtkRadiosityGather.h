@@ -17,8 +17,10 @@ namespace vtkRadiosityGather
 
 /// Rank r's `piece` (null for an empty one) as `pieces[r]` on every rank: points, the four
 /// cell arrays, every named point and cell array and the field data. A rank's own entry
-/// is its piece itself, not a copy. Every rank must call it.
-void AllGatherPieces(
+/// is its piece itself, not a copy. Returns true where the arrays
+/// went raw, false where some piece needed VTK's general gather (string, bit or non-AOS
+/// arrays). A failed transfer ends the job with the reason (the ranks would be out of step).
+bool AllGatherPieces(
   vtkMultiProcessController* controller, vtkPolyData* piece, std::vector<vtkSmartPointer<vtkPolyData>>& pieces);
 
 }

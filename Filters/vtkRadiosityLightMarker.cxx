@@ -7,7 +7,6 @@
 #include "Geometry/Polygon.h"
 #include "Geometry/PreparedScene.h"
 #include "Import/SceneImport.h"
-#include "Relight/LightRig.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -29,6 +28,7 @@
 #include "vtkStringArray.h"
 
 #include <algorithm>
+#include <cmath>
 
 vtkStandardNewMacro(vtkRadiosityLightMarker);
 
@@ -342,12 +342,14 @@ int vtkRadiosityLightMarker::RequestData(
       vtkErrorMacro(<< "Cannot mark lights: " << error << ".");
       return 0;
     }
-    const std::string invalid =
-      radiosity::InvalidLightValues(1.0, { this->Emission[0], this->Emission[1], this->Emission[2] });
-    if (!invalid.empty())
+    for (int c = 0; c < 3; ++c)
     {
-      vtkErrorMacro(<< "Cannot mark lights: Emission " << invalid.substr(invalid.find("colour")) << ".");
-      return 0;
+      if (!(std::isfinite(this->Emission[c]) && this->Emission[c] >= GetEmissionMinValue()))
+      {
+        vtkErrorMacro(<< "Cannot mark lights: Emission colour component " << c << " = " << this->Emission[c]
+                      << "; colours must be finite and >= 0.");
+        return 0;
+      }
     }
     output->DeepCopy(input); // area lights grow its arrays; the input stays as it was
     LightArrays lights = ReadLights(output);

@@ -11,6 +11,8 @@
 #include "vtkWeakPointer.h"
 
 #include <algorithm>
+#include <cstdint>
+#include <cstring>
 #include <mutex>
 #include <set>
 #include <vector>
@@ -22,45 +24,77 @@ namespace
 
 constexpr size_t MaximumKeys = 4;
 
-/// What a preparation was made from, by identity and modification time: a freed object
-/// reads null, so a new one at its address is never taken for it.
-struct Key
+/// 64-bit hash of raw bytes, eight at a time (splitmix64's mixer per word).
+std::uint64_t HashBytes(const void* data, size_t bytes, std::uint64_t h)
 {
-  vtkWeakPointer<vtkPoints> Points;
-  vtkWeakPointer<vtkCellArray> Polygons;
-  vtkWeakPointer<vtkDataArray> PatchIds;
-  bool HasPatchIds = false;
-  vtkMTimeType PointsTime = 0, PolygonsTime = 0, PatchIdsTime = 0;
+  auto mix = [](std::uint64_t x) {
+    x ^= x >> 30;
+    x *= 0xbf58476d1ce4e5b9ULL;
+    x ^= x >> 27;
+    x *= 0x94d049bb133111ebULL;
+    return x ^ (x >> 31);
+  };
+  const auto* p = static_cast<const unsigned char*>(data);
+  size_t i = 0;
+  for (; i + 8 <= bytes; i += 8)
+  {
+    std::uint64_t word;
+    std::memcpy(&word, p + i, 8);
+    h = mix(h ^ word) + 0x9e3779b97f4a7c15ULL;
+  }
+  std::uint64_t last = bytes;
+  std::memcpy(&last, p + i, bytes - i);
+  return mix(h ^ last);
+}
 
-  static Key Of(vtkPolyData* data)
+/// An array's values hashed with its type and shape; through its tuples where its memory
+/// is not one plain block.
+std::uint64_t HashArray(vtkDataArray* array, std::uint64_t h)
+{
+  if (!array)
   {
-    Key key;
-    key.Points = data->GetPoints();
-    key.Polygons = data->GetPolys();
-    vtkDataArray* ids = data->GetCellData()->GetArray("PatchId");
-    key.PatchIds = ids;
-    key.HasPatchIds = ids != nullptr;
-    key.PointsTime = data->GetPoints() ? data->GetPoints()->GetMTime() : 0;
-    key.PolygonsTime = data->GetPolys() ? data->GetPolys()->GetMTime() : 0;
-    key.PatchIdsTime = ids ? ids->GetMTime() : 0;
-    return key;
+    return HashBytes("none", 4, h);
   }
-  bool Alive() const { return this->Points && this->Polygons && (!this->HasPatchIds || this->PatchIds); }
-  bool SameMesh(const Key& other) const
+  const long long shape[3] = { array->GetDataType(), array->GetNumberOfComponents(), array->GetNumberOfTuples() };
+  h = HashBytes(shape, sizeof(shape), h);
+  if (array->HasStandardMemoryLayout() && array->GetDataType() != VTK_BIT)
   {
-    return this->Points && this->Points == other.Points && this->Polygons == other.Polygons &&
-      this->PointsTime == other.PointsTime && this->PolygonsTime == other.PolygonsTime;
+    return HashBytes(array->GetVoidPointer(0),
+      static_cast<size_t>(array->GetNumberOfValues()) * static_cast<size_t>(array->GetDataTypeSize()), h);
   }
-  bool SamePatches(const Key& other) const
+  std::vector<double> tuple(array->GetNumberOfComponents());
+  for (vtkIdType t = 0; t < array->GetNumberOfTuples(); ++t)
   {
-    return this->HasPatchIds == other.HasPatchIds && this->PatchIds == other.PatchIds &&
-      this->PatchIdsTime == other.PatchIdsTime;
+    array->GetTuple(t, tuple.data());
+    h = HashBytes(tuple.data(), tuple.size() * sizeof(double), h);
+  }
+  return h;
+}
+
+/// What a preparation was made from, by content: the points, the polygons and the patch
+/// ids hashed. Modification times would miss edits in place (numpy writes, InsertNextCell,
+/// a cell array's own arrays), and hashing the 10 MB of a 217,800-element mesh costs a few
+/// milliseconds against a second of preparation.
+struct Fingerprint
+{
+  std::uint64_t Mesh = 0, Patches = 0;
+
+  static Fingerprint Of(vtkPolyData* data)
+  {
+    Fingerprint f;
+    vtkCellArray* polygons = data->GetPolys();
+    f.Mesh = HashArray(data->GetPoints() ? data->GetPoints()->GetData() : nullptr, 1);
+    f.Mesh = HashArray(polygons ? polygons->GetOffsetsArray() : nullptr, f.Mesh);
+    f.Mesh = HashArray(polygons ? polygons->GetConnectivityArray() : nullptr, f.Mesh);
+    f.Patches = HashArray(data->GetCellData()->GetArray("PatchId"), 2);
+    return f;
   }
 };
 
 struct Entry
 {
-  Key From;
+  vtkWeakPointer<vtkPoints> Owner; ///< the points it was kept for: it goes with them
+  Fingerprint From;
   radiosity::PreparedScene Scene;
 };
 
@@ -79,9 +113,16 @@ Store& Kept()
   return *store;
 }
 
-void DropDead(std::vector<Entry>& entries)
+/// Drops the entries whose points are gone or are `points` (being deleted), and those kept
+/// for `points` whose mesh is no longer `now` (edited since: they would never match again,
+/// and a new preparation is about to be built beside them).
+void Drop(std::vector<Entry>& entries, vtkObject* points, const Fingerprint* now = nullptr)
 {
-  entries.erase(std::remove_if(entries.begin(), entries.end(), [](const Entry& e) { return !e.From.Alive(); }),
+  entries.erase(std::remove_if(entries.begin(), entries.end(),
+                  [&](const Entry& e) {
+                    const bool mine = e.Owner.GetPointer() == points;
+                    return !e.Owner || (mine && (!now || e.From.Mesh != now->Mesh));
+                  }),
     entries.end());
 }
 
@@ -91,28 +132,37 @@ void PointsDeleted(vtkObject* points, unsigned long, void*, void*)
 {
   Store& store = Kept();
   std::lock_guard<std::mutex> hold(store.Lock);
-  store.Entries.erase(std::remove_if(store.Entries.begin(), store.Entries.end(),
-                        [&](const Entry& e) { return !e.From.Alive() || e.From.Points.GetPointer() == points; }),
-    store.Entries.end());
+  Drop(store.Entries, points);
 }
 
 } // namespace
 
 radiosity::PreparedScene Find(vtkPolyData* data, bool transport)
 {
+  const Fingerprint now = Fingerprint::Of(data);
   Store& store = Kept();
   std::lock_guard<std::mutex> hold(store.Lock);
-  DropDead(store.Entries);
-  const Key key = Key::Of(data);
+  Drop(store.Entries, data->GetPoints(), &now);
+  radiosity::PreparedScene rays; // a rays-only match, where no transport one is kept
   for (auto entry = store.Entries.begin(); entry != store.Entries.end(); ++entry)
   {
-    if (entry->From.SameMesh(key) && (!transport || (entry->Scene.Geometry && entry->From.SamePatches(key))))
+    if (entry->From.Mesh != now.Mesh)
+    {
+      continue;
+    }
+    if (!transport || (entry->Scene.Geometry && entry->From.Patches == now.Patches))
     {
       std::rotate(store.Entries.begin(), entry, entry + 1);
       return store.Entries.front().Scene;
     }
+    if (!rays.Rays)
+    {
+      rays = entry->Scene; // its rays (and sizes) serve; its geometry is for other patches
+      rays.Geometry.reset();
+      rays.SplitPatches = 0;
+    }
   }
-  return radiosity::PreparedScene();
+  return rays;
 }
 
 void Keep(vtkPolyData* data, const radiosity::PreparedScene& scene)
@@ -121,14 +171,16 @@ void Keep(vtkPolyData* data, const radiosity::PreparedScene& scene)
   {
     return;
   }
+  const Fingerprint now = Fingerprint::Of(data);
   Store& store = Kept();
   std::lock_guard<std::mutex> hold(store.Lock);
-  DropDead(store.Entries);
-  const Key key = Key::Of(data);
+  Drop(store.Entries, data->GetPoints(), &now);
   store.Entries.erase(std::remove_if(store.Entries.begin(), store.Entries.end(),
-                        [&](const Entry& e) { return e.From.SameMesh(key) && e.From.SamePatches(key); }),
+                        [&](const Entry& e) {
+                          return e.Owner == data->GetPoints() && e.From.Patches == now.Patches;
+                        }),
     store.Entries.end());
-  store.Entries.insert(store.Entries.begin(), Entry{ key, scene });
+  store.Entries.insert(store.Entries.begin(), Entry{ data->GetPoints(), now, scene });
   if (store.Entries.size() > MaximumKeys)
   {
     store.Entries.resize(MaximumKeys);
@@ -140,12 +192,18 @@ void Keep(vtkPolyData* data, const radiosity::PreparedScene& scene)
   }
 }
 
+void Clear()
+{
+  Store& store = Kept();
+  std::lock_guard<std::mutex> hold(store.Lock);
+  store.Entries.clear();
+}
+
 int Held()
 {
   Store& store = Kept();
   std::lock_guard<std::mutex> hold(store.Lock);
-  DropDead(store.Entries);
-  std::set<const radiosity::Visibility*> distinct;
+  std::set<const radiosity::Visibility*> distinct; // dead ones too: the observer drops them
   for (const Entry& e : store.Entries)
   {
     distinct.insert(e.Scene.Rays.get());

@@ -8,9 +8,13 @@
  * the solver's output and every EXR picture of it. Measured at 217,800 elements: 1.2 s of
  * preparation (BVH, patch splitting, the hemisphere probes) skipped by each of them.
  *
- * The keys are weak: a scene goes when the points it was made for are deleted. Up to four
- * keys are kept, the least recently used dropped first; where two keys share one
- * preparation (the solver's input and output) it is held once. Not wrapped.
+ * A preparation is found by content: a hash of the points, the polygons and PatchId, so
+ * edits in place (numpy, InsertNextCell) are never mistaken for the mesh prepared before
+ * (modification times miss them). It is kept for the points object it was made for and goes
+ * when those points are deleted or edited; up to four are kept, the least recently used
+ * dropped first; where two entries share one preparation (the solver's input and output)
+ * it is held once. Under MPI the solver's whole scene is gathered anew for each solve, so
+ * only the relight and the writers on a rank's own piece reuse there. Not wrapped.
  */
 #ifndef vtkRadiosityPreparedScenes_h
 #define vtkRadiosityPreparedScenes_h
@@ -22,15 +26,18 @@ class vtkPolyData;
 namespace vtkRadiosityPreparedScenes
 {
 
-/// The preparation kept for `data`'s points and polygons, unchanged since; with
-/// `transport`, only one that has geometry for `data`'s PatchId as it is now. Otherwise an
-/// empty one (null Rays).
+/// The preparation kept for a mesh with `data`'s points and polygons; with `transport`,
+/// one that also has geometry for `data`'s PatchId. Where only rays are kept for the mesh
+/// (the EXR writer prepared it), those (null Geometry); otherwise an empty one (null Rays).
 radiosity::PreparedScene Find(vtkPolyData* data, bool transport);
 
 /// Keeps `scene` for `data`'s points, polygons and PatchId as they are now.
 void Keep(vtkPolyData* data, const radiosity::PreparedScene& scene);
 
-/// How many preparations are held (distinct ones, however many keys share them).
+/// Drops every kept preparation (memory back now; the next solve prepares again).
+void Clear();
+
+/// How many preparations are held (distinct ones, however many entries share them).
 int Held();
 
 }

@@ -60,6 +60,7 @@ struct vtkRadiosityRelight::MovingState
   vtkMTimeType SceneTime = 0, DynamicTime = 0;
   radiosity::SceneMesh Scene, Dynamic;
   std::unique_ptr<radiosity::MovingLightShader> Shader;
+  bool Reused = false; ///< the shader shades on the solver's kept preparation
 };
 
 vtkRadiosityRelight::vtkRadiosityRelight()
@@ -173,7 +174,11 @@ bool vtkRadiosityRelight::AddMovingLights(vtkPolyData* scene, vtkPolyData* light
       state.DynamicTime = 0;
       return false;
     }
-    if (!state.Shader->SetDynamicObjects(state.Dynamic.NumberOfPolygons() > 0 ? &state.Dynamic : nullptr))
+    bool swapped = false; // the objects' BVH is built on ParaView's threads
+    vtkRadiosityAdapter::SharedPool()->Within([&] {
+      swapped = state.Shader->SetDynamicObjects(state.Dynamic.NumberOfPolygons() > 0 ? &state.Dynamic : nullptr);
+    });
+    if (!swapped)
     {
       error = state.Shader->Error();
       state.Shader.reset();
@@ -201,15 +206,17 @@ bool vtkRadiosityRelight::AddMovingLights(vtkPolyData* scene, vtkPolyData* light
     // The solver's preparation where it is kept (its patches are the basis's), else one
     // made here the same way and kept for the EXR writer.
     radiosity::PreparedScene prepared = vtkRadiosityPreparedScenes::Find(scene, true);
-    this->LastMovingSceneReused = prepared.Geometry != nullptr;
+    state.Reused = prepared.Geometry != nullptr;
     if (!prepared.Geometry &&
       !(error = radiosity::PrepareTransport(state.Scene, vtkRadiosityAdapter::Threads(0), {}, prepared)).empty())
     {
       return false;
     }
     vtkRadiosityPreparedScenes::Keep(scene, prepared);
-    state.Shader.reset(new radiosity::MovingLightShader(
-      state.Scene, prepared, state.Dynamic.NumberOfPolygons() > 0 ? &state.Dynamic : nullptr));
+    vtkRadiosityAdapter::SharedPool()->Within([&] {
+      state.Shader.reset(new radiosity::MovingLightShader(
+        state.Scene, prepared, state.Dynamic.NumberOfPolygons() > 0 ? &state.Dynamic : nullptr));
+    });
     if (!state.Shader->Error().empty())
     {
       error = state.Shader->Error();
@@ -274,8 +281,10 @@ bool vtkRadiosityRelight::AddMovingLights(vtkPolyData* scene, vtkPolyData* light
     }
   }
   std::vector<radiosity::Vec3> direct, cells;
-  this->LastMovingRays = state.Shader->Direct(movers, vtkRadiosityAdapter::SharedPool(), direct);
-  radiosity::AddBasisInterreflection(g, direct, basis, vtkRadiosityAdapter::SharedPool(), cells);
+  this->LastMovingSceneReused = state.Reused;
+  const auto pool = vtkRadiosityAdapter::SharedPool();
+  this->LastMovingRays = state.Shader->Direct(movers, *pool, direct);
+  radiosity::AddBasisInterreflection(g, direct, basis, *pool, cells);
   if (cellResult->GetNumberOfTuples() == static_cast<vtkIdType>(cells.size()))
   {
     AddTo(cellResult, cells);

@@ -1,10 +1,12 @@
 // Run as `mpiexec -np 3 RadiosityParallelTests TestGatherPieces`: every rank builds a
 // different piece (rank 2 none at all), gathers them raw, and checks each against the piece
 // that rank built, array by array: type, name, values, active attributes, the four cell
-// arrays in 32- and 64-bit storage, the field data. Then once more with a string array in
-// one rank's cell data, which sends everything the general way.
+// arrays in 32- and 64-bit storage, the field data. Then with rank 0's piece reduced to
+// points (no cells), and with a string or a bit array in rank 1's cell data, which must
+// send everything the general way (a bit array sent raw would overrun its buffer).
 #include "vtkRadiosityGather.h"
 
+#include "vtkBitArray.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
@@ -28,7 +30,15 @@ namespace
 
 /// The piece rank `rank` holds: null for rank 2, otherwise points and cells whose values
 /// say which rank made them.
-vtkSmartPointer<vtkPolyData> MakePiece(int rank, bool withStrings)
+enum class Extra
+{
+  None,
+  PointsOnly,
+  Strings,
+  Bits
+};
+
+vtkSmartPointer<vtkPolyData> MakePiece(int rank, Extra extra)
 {
   if (rank == 2)
   {
@@ -80,7 +90,7 @@ vtkSmartPointer<vtkPolyData> MakePiece(int rank, bool withStrings)
   names->SetName("LightNames");
   names->InsertNextValue("lamp of rank " + std::to_string(rank));
   piece->GetFieldData()->AddArray(names);
-  if (withStrings && rank == 1)
+  if (extra == Extra::Strings && rank == 1)
   {
     vtkNew<vtkStringArray> labels;
     labels->SetName("Label");
@@ -89,6 +99,23 @@ vtkSmartPointer<vtkPolyData> MakePiece(int rank, bool withStrings)
       labels->InsertNextValue("cell " + std::to_string(c));
     }
     piece->GetCellData()->AddArray(labels);
+  }
+  if (extra == Extra::Bits && rank == 1)
+  {
+    vtkNew<vtkBitArray> flags;
+    flags->SetName("Flag");
+    for (vtkIdType c = 0; c < piece->GetNumberOfCells(); ++c)
+    {
+      flags->InsertNextValue(static_cast<int>(c % 2));
+    }
+    piece->GetCellData()->AddArray(flags);
+  }
+  if (extra == Extra::PointsOnly && rank == 0)
+  {
+    piece->SetPolys(nullptr);
+    piece->SetVerts(nullptr);
+    piece->SetLines(nullptr);
+    piece->GetCellData()->Initialize();
   }
   return piece;
 }
@@ -160,16 +187,24 @@ void Compare(vtkPolyData* got, vtkPolyData* want, int rank, int from, bool raw)
   {
     return;
   }
-  Expect(SameArray(got->GetPoints()->GetData(), want->GetPoints()->GetData()), rank, from, "points differ");
+  Expect(got->GetPoints() && SameArray(got->GetPoints()->GetData(), want->GetPoints()->GetData()), rank, from,
+    "points differ");
+  if (!got->GetPoints())
+  {
+    return;
+  }
   Expect(SameCells(got->GetPolys(), want->GetPolys()), rank, from, "polygons differ");
   Expect(SameCells(got->GetVerts(), want->GetVerts()), rank, from, "vertices differ");
   Expect(SameCells(got->GetLines(), want->GetLines()), rank, from, "lines differ");
   Expect(got->GetStrips()->GetNumberOfCells() == 0, rank, from, "strips appeared");
   Expect(SameArray(got->GetPointData()->GetScalars(), want->GetPointData()->GetScalars()), rank, from,
     "the active scalars differ");
-  Expect(SameArray(got->GetCellData()->GetArray("PatchId"), want->GetCellData()->GetArray("PatchId")), rank, from,
-    "PatchId differs");
-  if (raw && from != rank) // a rank's own entry is its piece itself
+  if (want->GetNumberOfCells() > 0)
+  {
+    Expect(SameArray(got->GetCellData()->GetArray("PatchId"), want->GetCellData()->GetArray("PatchId")), rank,
+      from, "PatchId differs");
+  }
+  if (raw && from != rank && want->GetNumberOfCells() > 0) // a rank's own entry is its piece itself
   {
     Expect(got->GetCellData()->GetNumberOfArrays() == 1, rank, from, "unexpected cell arrays");
   }
@@ -177,21 +212,25 @@ void Compare(vtkPolyData* got, vtkPolyData* want, int rank, int from, bool raw)
   Expect(names && names->GetValue(0) == "lamp of rank " + std::to_string(from), rank, from, "LightNames differ");
   if (!raw && from == 1)
   {
-    Expect(got->GetCellData()->GetAbstractArray("Label") != nullptr, rank, from, "the string array was lost");
+    Expect(got->GetCellData()->GetAbstractArray("Label") != nullptr ||
+        SameArray(got->GetCellData()->GetArray("Flag"), want->GetCellData()->GetArray("Flag")),
+      rank, from, "the string or bit array was lost");
   }
 }
 
-void Round(vtkMPIController* controller, bool withStrings)
+void Round(vtkMPIController* controller, Extra extra)
 {
   const int rank = controller->GetLocalProcessId();
-  vtkSmartPointer<vtkPolyData> mine = MakePiece(rank, withStrings);
+  vtkSmartPointer<vtkPolyData> mine = MakePiece(rank, extra);
   std::vector<vtkSmartPointer<vtkPolyData>> pieces;
-  vtkRadiosityGather::AllGatherPieces(controller, mine, pieces);
+  const bool raw = vtkRadiosityGather::AllGatherPieces(controller, mine, pieces);
+  const bool general = extra == Extra::Strings || extra == Extra::Bits;
+  Expect(raw != general, rank, rank, general ? "a string or bit array went raw" : "plain arrays did not go raw");
   Expect(static_cast<int>(pieces.size()) == controller->GetNumberOfProcesses(), rank, rank, "wrong count");
   for (int from = 0; from < static_cast<int>(pieces.size()); ++from)
   {
-    vtkSmartPointer<vtkPolyData> want = MakePiece(from, withStrings);
-    Compare(pieces[from], want, rank, from, !withStrings);
+    vtkSmartPointer<vtkPolyData> want = MakePiece(from, extra);
+    Compare(pieces[from], want, rank, from, raw);
   }
 }
 
@@ -207,8 +246,10 @@ int TestGatherPieces(int argc, char* argv[])
     controller->Finalize();
     return 1;
   }
-  Round(controller, false);
-  Round(controller, true);
+  for (Extra extra : { Extra::None, Extra::PointsOnly, Extra::Strings, Extra::Bits })
+  {
+    Round(controller, extra);
+  }
   int mine = failures, all = 0;
   controller->AllReduce(&mine, &all, 1, vtkCommunicator::SUM_OP);
   controller->Finalize();

@@ -24,6 +24,11 @@ struct PreparedScene
   std::shared_ptr<const Visibility> Rays;
   std::shared_ptr<const SceneGeometry> Geometry; ///< null where only rays were prepared
   int SplitPatches = 0;                          ///< patches SplitSeparatedPatches added
+  /// The mesh it was made for, by size (a check against being given another mesh's).
+  long long Points = 0, Polygons = 0, Corners = 0;
+
+  /// True when it was made for a mesh of `mesh`'s sizes, with geometry where `transport`.
+  bool Fits(const SceneMesh& mesh, bool transport) const;
 };
 
 /// The rays of `mesh` (a picture needs no more), the BVH built on `threads` threads (0:

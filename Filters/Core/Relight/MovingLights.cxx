@@ -34,8 +34,7 @@ MovingLightShader::MovingLightShader(const SceneMesh& scene, const PreparedScene
   : Scene(scene)
   , Prepared(prepared)
 {
-  if (!Prepared.Rays || !Prepared.Geometry ||
-    Prepared.Geometry->normal.size() != static_cast<size_t>(scene.NumberOfPolygons()))
+  if (!Prepared.Fits(scene, true))
   {
     Error_ = "the prepared scene is not this mesh's";
     return;
@@ -46,12 +45,21 @@ MovingLightShader::MovingLightShader(const SceneMesh& scene, const PreparedScene
 bool MovingLightShader::SetDynamicObjects(const SceneMesh* objects)
 {
   WithObjects.reset();
-  if (!Error_.empty() || !objects || objects->NumberOfPolygons() == 0)
+  if (!Prepared.Fits(Scene, true))
   {
-    return Error_.empty();
+    return false; // Error_ says why
+  }
+  Error_.clear(); // a failure with earlier objects does not stick
+  if (!objects || objects->NumberOfPolygons() == 0)
+  {
+    return true;
   }
   WithObjects.reset(new Visibility(Prepared.Rays, *objects));
   Error_ = WithObjects->Error();
+  if (!Error_.empty())
+  {
+    WithObjects.reset();
+  }
   return Error_.empty();
 }
 

@@ -49,8 +49,7 @@ RadiositySolver::RadiositySolver(const SceneMesh& mesh, const PreparedScene& pre
   : Mesh(mesh)
   , Prepared_(prepared)
 {
-  if (!Prepared_.Rays || !Prepared_.Geometry ||
-    Prepared_.Geometry->normal.size() != static_cast<size_t>(mesh.NumberOfPolygons()))
+  if (!Prepared_.Fits(mesh, true))
   {
     Error_ = "the prepared scene is not this mesh's";
   }
