@@ -186,6 +186,22 @@ public:
   vtkGetMacro(LightSeparationEffect, int);
   vtkSetClampMacro(ConvergedLightsEffect, int, EFFECT_AUTO, EFFECT_OFF);
   vtkGetMacro(ConvergedLightsEffect, int);
+  /// By name, as the other enumerations: SetVisibilityEffectToOff() and so on.
+  void SetVisibilityEffectToAuto() { this->SetVisibilityEffect(EFFECT_AUTO); }
+  void SetVisibilityEffectToOn() { this->SetVisibilityEffect(EFFECT_ON); }
+  void SetVisibilityEffectToOff() { this->SetVisibilityEffect(EFFECT_OFF); }
+  void SetInterreflectionEffectToAuto() { this->SetInterreflectionEffect(EFFECT_AUTO); }
+  void SetInterreflectionEffectToOn() { this->SetInterreflectionEffect(EFFECT_ON); }
+  void SetInterreflectionEffectToOff() { this->SetInterreflectionEffect(EFFECT_OFF); }
+  void SetColorEffectToAuto() { this->SetColorEffect(EFFECT_AUTO); }
+  void SetColorEffectToOn() { this->SetColorEffect(EFFECT_ON); }
+  void SetColorEffectToOff() { this->SetColorEffect(EFFECT_OFF); }
+  void SetLightSeparationEffectToAuto() { this->SetLightSeparationEffect(EFFECT_AUTO); }
+  void SetLightSeparationEffectToOn() { this->SetLightSeparationEffect(EFFECT_ON); }
+  void SetLightSeparationEffectToOff() { this->SetLightSeparationEffect(EFFECT_OFF); }
+  void SetConvergedLightsEffectToAuto() { this->SetConvergedLightsEffect(EFFECT_AUTO); }
+  void SetConvergedLightsEffectToOn() { this->SetConvergedLightsEffect(EFFECT_ON); }
+  void SetConvergedLightsEffectToOff() { this->SetConvergedLightsEffect(EFFECT_OFF); }
   ///@}
 
   ///@{

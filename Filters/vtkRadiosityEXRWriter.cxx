@@ -102,7 +102,9 @@ bool vtkRadiosityEXRWriter::Render(std::vector<std::string>& names, std::vector<
   else if (!this->LightLayers)
   {
     vtkErrorMacro(<< "Cannot render: the input needs a 3-component point array '"
-                  << (this->ArrayName ? this->ArrayName : "") << "'.");
+                  << (this->ArrayName ? this->ArrayName : "")
+                  << "' (the relight filter's output has 'Radiosity'; on the solver's output set ArrayName to "
+                     "'Radiosity_<light>' or turn LightLayers on).");
     return false;
   }
   int lightLayers = 0;

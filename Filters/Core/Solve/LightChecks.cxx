@@ -100,7 +100,8 @@ std::vector<std::string> CheckLights(const SceneMesh& mesh, const SceneGeometry&
     {
       std::snprintf(text, sizeof(text),
         "Light '%s' cannot emit: every element of it is closed off (inside an object, or lying in another "
-        "surface's plane, such as a lamp drawn in the ceiling).", names[l].c_str());
+        "surface's plane, such as a lamp drawn in the ceiling; or the surfaces around it face away from "
+        "it: check their winding).", names[l].c_str());
       messages.push_back(text);
       continue;
     }
