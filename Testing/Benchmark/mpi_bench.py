@@ -1,10 +1,12 @@
 """What ranks buy on ParaView's MPI server (issue 11): the same solve on 1 rank and on R
 ranks, one thread each, and what the ranks send each other.
 
-./relight bench mpi [--elements 230000] [--ranks 2] [--repeats 3] [--scene Data/paper_8lights.vtp]
+./relight bench mpi [--elements 230000] [--ranks 2] [--repeats 3] [--scene Data/paper_8lights.vtp] [--no-ceiling]
 
 Runs `mpiexec -np 1` and `-np R` pvbatch alternately, `repeats` times, and takes each one's
-fastest run (this machine's neighbours make single runs noisy). Prints the solve times, the
+fastest run (this machine's neighbours make single runs noisy). Each repeat also runs R
+one-rank solves at once, pinned to R cores: R copies of the scene competing for cache and
+memory as R ranks do, the ceiling R ranks could reach on this machine. Prints the solve times, the
 speed-up, each rank's share of the receivers, the sums per shot and their bytes, the time of
 one sum with every rank ready (mpi_latency.py), and a model of 16 and 64 ranks built from
 these figures."""
@@ -35,6 +37,25 @@ def run(ranks, scene, elements, threads):
                        (float(x) for x in m))) for m in SHARE.findall(log)]
     shots = int(SHOTS.search(log).group(1))
     return float(found.group(1)), int(found.group(2)), sorted(shares, key=lambda s: s["rank"]), shots
+
+
+def side_by_side(copies, scene, elements, threads):
+    """Seconds of the slowest of `copies` one-rank solves run at once, each pinned to its own
+    core: what this machine gives independent processes, the most R ranks could reach
+    (R copies of the scene compete for cache and memory as R ranks do)."""
+    command = lambda core: ["taskset", "-c", str(core), shutil.which("mpiexec"), "--allow-run-as-root",  # noqa: E731
+                            "--bind-to", "none", "-np", "1", "pvbatch", "--mpi",
+                            os.path.join(HERE, "mpi_rank.py"), scene, str(elements), str(threads)]
+    running = [subprocess.Popen(command(c % os.cpu_count()), stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                                text=True) for c in range(copies)]
+    slowest = 0.0
+    for process in running:
+        log = process.communicate(timeout=3600)[0]
+        found = re.search(r"BENCH solve ([\d.]+) s", log)
+        if process.returncode != 0 or not found:
+            raise SystemExit(f"a side-by-side run failed:\n{log[-3000:]}")
+        slowest = max(slowest, float(found.group(1)))
+    return slowest
 
 
 def latency(ranks):
@@ -79,18 +100,30 @@ def main():
     parser.add_argument("--ranks", type=int, default=2)
     parser.add_argument("--threads", type=int, default=1)
     parser.add_argument("--repeats", type=int, default=3)
+    parser.add_argument("--no-ceiling", dest="ceiling", action="store_false",
+                        help="skip the side-by-side one-rank runs that measure the machine's own ceiling")
     args = parser.parse_args()
     best = {}
+    pinned = None
     for repeat in range(args.repeats):
         for ranks in (1, args.ranks):
             seconds, elements, shares, shots = run(ranks, args.scene, args.elements, args.threads)
             print(f"  run {repeat + 1}: {ranks} rank(s) x {args.threads} thread(s): {seconds:.2f} s", flush=True)
             if ranks not in best or seconds < best[ranks][0]:
                 best[ranks] = (seconds, elements, shares, shots)
+        if args.ceiling and shutil.which("taskset"):
+            seconds = side_by_side(args.ranks, args.scene, args.elements, args.threads)
+            print(f"  run {repeat + 1}: {args.ranks} one-rank solves side by side: slowest {seconds:.2f} s", flush=True)
+            pinned = seconds if pinned is None else min(pinned, seconds)
     serial, elements, _, shots = best[1]
     parallel, _, shares, _ = best[args.ranks]
     print(f"\n{elements} elements, {shots} shots, {args.threads} thread(s) per rank, fastest of {args.repeats} runs:")
     print(f"  1 rank: {serial:.2f} s   {args.ranks} ranks: {parallel:.2f} s   speed-up {serial / parallel:.2f}x")
+    if pinned:
+        ceiling = args.ranks * serial / pinned
+        print(f"  {args.ranks} independent one-rank solves side by side: {pinned:.2f} s for the slowest, so this "
+              f"machine runs {args.ranks} copies at {ceiling:.2f}x the throughput of one: the most {args.ranks} ranks "
+              f"could reach here; the ranks reach {serial / parallel / ceiling:.0%} of it")
     for s in shares:
         print(f"  rank {int(s['rank'])}: received for {int(s['mine'])} elements, cast {int(s['rays'])} rays, "
               f"{int(s['sums'])} sums ({s['sums'] / shots:.2f} per shot), {int(s['shot_bytes'])} bytes per shot, "
