@@ -87,7 +87,10 @@ bool vtkRadiosityEXRWriter::Render(std::vector<std::string>& names, std::vector<
     vtkErrorMacro(<< "Cannot render: a filter upstream failed (see its error).");
     return false;
   }
-  if (!vtkRadiosityAdapter::CopyPolygons(input, mesh, error))
+  // A mesh kept prepared (an animation's earlier frame, the solver's output) was copied and
+  // checked when it was prepared: each frame's write skips the copy.
+  radiosity::PreparedScene prepared = vtkRadiosityPreparedScenes::Find(input, false);
+  if (!prepared.Rays && !vtkRadiosityAdapter::CopyPolygons(input, mesh, error))
   {
     vtkErrorMacro(<< "Cannot render: " << error << ".");
     return false;
@@ -127,7 +130,6 @@ bool vtkRadiosityEXRWriter::Render(std::vector<std::string>& names, std::vector<
       return false;
     }
   }
-  radiosity::PreparedScene prepared = vtkRadiosityPreparedScenes::Find(input, false);
   if (!prepared.Rays)
   {
     ++this->RaySceneBuilds;
