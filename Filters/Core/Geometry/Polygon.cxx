@@ -66,10 +66,8 @@ bool Bounds::Overlaps(const Bounds& b, double tolerance) const
   return true;
 }
 
-std::array<long long, 4> PlaneKey(
-  const Vec3& unitNormal, const Vec3& pointOnPlane, const Vec3& centre, double normalStep, double offsetStep)
+std::array<long long, 4> PlaneKey(const Vec3& unitNormal, double offset, double normalStep, double offsetStep)
 {
-  const double offset = Dot(unitNormal, pointOnPlane - centre);
   return { std::llround(unitNormal.x / normalStep), std::llround(unitNormal.y / normalStep),
     std::llround(unitNormal.z / normalStep), std::llround(offset / offsetStep) };
 }

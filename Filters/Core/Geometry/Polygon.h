@@ -26,14 +26,13 @@ struct Bounds
   Vec3 Centre() const { return (Lo + Hi) * 0.5; }
 };
 
-/// A plane as a hash key: the unit normal in steps of `normalStep` and the offset from
-/// `centre` (the plane's distance past it along the normal) in steps of `offsetStep`. The
-/// offset is taken from the scene's centre, not the origin: far from the origin the
-/// normal's round-off times the distance would split one floor into many keys. Planes
-/// closer than a step can still round apart: a caller that must join them probes the
-/// neighbouring keys (the mesher's surfaces do; the shooters' blocker groups need not).
-std::array<long long, 4> PlaneKey(
-  const Vec3& unitNormal, const Vec3& pointOnPlane, const Vec3& centre, double normalStep, double offsetStep);
+/// A plane as a hash key: the unit normal in steps of `normalStep` and `offset`, the plane's
+/// distance along the normal past the scene's centre, in steps of `offsetStep`. Measure the
+/// offset from the scene's centre, not the origin: far from the origin the normal's
+/// round-off times the distance would split one floor into many keys. Planes closer than a
+/// step can still round apart: a caller that must join them probes the neighbouring keys
+/// (the mesher's surfaces do; the shooters' blocker groups need not).
+std::array<long long, 4> PlaneKey(const Vec3& unitNormal, double offset, double normalStep, double offsetStep);
 
 /// A point as a hash key: each coordinate in steps of `step` (welding equal points).
 std::array<long long, 3> QuantizedPoint(const Vec3& p, double step);

@@ -507,7 +507,7 @@ std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& of
 
     const Vec3 centroid = PolygonCentroid(loop.data(), static_cast<int>(loop.size()));
     const double planeOffset = Dot(normal, centroid - sceneCentre);
-    const std::array<long long, 4> key = PlaneKey(normal, centroid, sceneCentre, kNormalTolerance, quantum * 1000);
+    const std::array<long long, 4> key = PlaneKey(normal, planeOffset, kNormalTolerance, quantum * 1000);
     const SurfaceId id{ surfaceKey[source[i]], key[0], key[1], key[2], key[3] };
     const Plane plane{ normal, planeOffset };
     int s = FindSurface(surfaceIndex, id, surfacePlanes, plane, quantum * 1000);

@@ -119,7 +119,7 @@ void ShooterFormFactors::FindBlockers()
   {
     const Vec3& normal = Geometry.normal[e];
     const double offset = Dot(normal, Geometry.centroid[e] - centre);
-    const std::array<long long, 4> key = PlaneKey(normal, Geometry.centroid[e], centre, 1e-6, eps * 1e3);
+    const std::array<long long, 4> key = PlaneKey(normal, offset, 1e-6, eps * 1e3);
     auto known = blocking.find(key);
     if (known == blocking.end())
     {
