@@ -126,7 +126,12 @@ std::string DescribeMethod(const radiosity::SolverStatistics& stats)
   {
     std::snprintf(text, sizeof(text), "ProgressiveRefinement: %lld form factors", stats.FormFactorCount);
   }
-  return text;
+  std::string described = text;
+  if (stats.FaceClusters > 0)
+  {
+    described += "; " + std::to_string(stats.FaceClusters) + " face clusters";
+  }
+  return stats.MethodReason.empty() ? described : described + "; " + stats.MethodReason;
 }
 
 /// How the solve ended (field array SolverStatus); an aborted result is partial.

@@ -165,6 +165,7 @@ std::string MeshPiece(vtkRadiosityMesher* self, vtkPolyData* input, double eleme
   options.Warning = [self, &warnings](const std::string& message) { warnings.Add(self, message); };
   options.MergeTriangles = self->GetMergeTriangles();
   options.SharePatches = self->GetSharePatches();
+  options.ClusterAngle = self->GetClusterAngle();
   options.WholeScene = wholeScene;
   const vtkRadiosityAbortWatch abort(self);
   options.Progress = [self, abort](double f) {
@@ -322,6 +323,10 @@ int vtkRadiosityMesher::RequestData(
     merged->SetName("MergedTrianglePairs");
     merged->InsertNextValue(meshed.mergedTrianglePairs);
     output->GetFieldData()->AddArray(merged);
+    vtkNew<vtkIntArray> clustered;
+    clustered->SetName("ClusteredPatches");
+    clustered->InsertNextValue(meshed.clusteredPatches);
+    output->GetFieldData()->AddArray(clustered);
     vtkNew<vtkDoubleArray> used;
     used->SetName("MesherElementSize");
     used->InsertNextValue(meshed.elementSize);

@@ -65,6 +65,15 @@ public:
   ///@}
 
   ///@{
+  /// Small patches of a curved surface (a tessellated CAD part, a scan: each triangle on
+  /// its own plane) are grouped into face clusters about PatchSize across whose normals
+  /// stay within this many degrees, so that the solver shoots from groups of polygons,
+  /// not from each one. 0 turns it off; default 30, at most 60.
+  vtkSetClampMacro(ClusterAngle, double, 0.0, 60.0);
+  vtkGetMacro(ClusterAngle, double);
+  ///@}
+
+  ///@{
   /// Element budget. 0 (default): none. Otherwise, when ElementSize would make more
   /// elements than this, the mesher uses the smallest larger element size that fits and
   /// says so; the size used is in the field array MesherElementSize. Without a budget,
@@ -107,6 +116,7 @@ private:
   vtkIdType MaximumElements = 0;
   bool MergeTriangles = true;
   bool SharePatches = true;
+  double ClusterAngle = 30;
   double SuggestedPatchSize = 1.0;
   double SuggestedElementSize = 0.25;
   double InputArea = 0.0;

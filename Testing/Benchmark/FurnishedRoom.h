@@ -52,12 +52,9 @@ struct RoomPolygons
   }
 };
 
-/// Room 6 x 5 x 3 m (faces inward) with a table, a sofa, two cabinets, a shelf and eight
-/// 0.3 m lamps 1 cm under the ceiling, each its own light.
-inline RoomPolygons FurnishedRoom()
+/// The floor, ceiling and four walls of an X x Y x Z room, facing inward (two walls coloured).
+inline void AddRoomShell(RoomPolygons& r, double X, double Y, double Z)
 {
-  RoomPolygons r;
-  const double X = 6, Y = 5, Z = 3;
   const Vec3 wall{ 0.75, 0.72, 0.68 }, floor{ 0.45, 0.32, 0.22 }, ceiling{ 0.8, 0.8, 0.8 };
   r.Quad({ 0, 0, 0 }, { X, 0, 0 }, { X, Y, 0 }, { 0, Y, 0 }, floor, { 0, 0, 1 });
   r.Quad({ 0, 0, Z }, { X, 0, Z }, { X, Y, Z }, { 0, Y, Z }, ceiling, { 0, 0, -1 });
@@ -65,6 +62,15 @@ inline RoomPolygons FurnishedRoom()
   r.Quad({ 0, Y, 0 }, { X, Y, 0 }, { X, Y, Z }, { 0, Y, Z }, { 0.3, 0.45, 0.65 }, { 0, -1, 0 });
   r.Quad({ 0, 0, 0 }, { 0, Y, 0 }, { 0, Y, Z }, { 0, 0, Z }, wall, { 1, 0, 0 });
   r.Quad({ X, 0, 0 }, { X, Y, 0 }, { X, Y, Z }, { X, 0, Z }, { 0.7, 0.35, 0.3 }, { -1, 0, 0 });
+}
+
+/// Room 6 x 5 x 3 m (faces inward) with a table, a sofa, two cabinets, a shelf and eight
+/// 0.3 m lamps 1 cm under the ceiling, each its own light.
+inline RoomPolygons FurnishedRoom()
+{
+  RoomPolygons r;
+  const double X = 6, Y = 5, Z = 3;
+  AddRoomShell(r, X, Y, Z);
   const Vec3 wood{ 0.55, 0.38, 0.22 }, fabric{ 0.2, 0.5, 0.3 }, white{ 0.85, 0.85, 0.85 };
   r.Block({ 2.2, 1.8, 0.72 }, { 3.8, 2.8, 0.78 }, wood, true); // table top
   for (const Vec3& leg : { Vec3{ 2.25, 1.85, 0 }, Vec3{ 3.69, 1.85, 0 }, Vec3{ 2.25, 2.69, 0 }, Vec3{ 3.69, 2.69, 0 } })
@@ -105,16 +111,10 @@ inline double TotalArea(const RoomPolygons& r)
 }
 
 /// Meshes the room into a solver scene; returns an empty string or the mesher's error.
-inline std::string MeshRoom(const RoomPolygons& r, double patch, double element, radiosity::SceneMesh& mesh)
+/// Meshes the polygons with these surface keys and options into a solver scene.
+inline std::string MeshWithKeys(const RoomPolygons& r, const std::vector<int>& keys,
+  const radiosity::MesherOptions& options, radiosity::SceneMesh& mesh)
 {
-  radiosity::MesherOptions options;
-  options.PatchSize = patch;
-  options.ElementSize = element;
-  std::vector<int> keys(r.Reflectance.size());
-  for (size_t c = 0; c < keys.size(); ++c)
-  {
-    keys[c] = static_cast<int>(c); // polygons never share points: each keeps its own shading
-  }
   radiosity::MeshedPolygons out;
   const std::string error = radiosity::MeshPolygons(r.Points, r.Offsets, r.Connectivity, keys, options, out);
   if (!error.empty())
@@ -132,6 +132,19 @@ inline std::string MeshRoom(const RoomPolygons& r, double patch, double element,
     mesh.lightId.push_back(r.LightId[source]);
   }
   return std::string();
+}
+
+inline std::string MeshRoom(const RoomPolygons& r, double patch, double element, radiosity::SceneMesh& mesh)
+{
+  radiosity::MesherOptions options;
+  options.PatchSize = patch;
+  options.ElementSize = element;
+  std::vector<int> keys(r.Reflectance.size());
+  for (size_t c = 0; c < keys.size(); ++c)
+  {
+    keys[c] = static_cast<int>(c); // polygons never share points: each keeps its own shading
+  }
+  return MeshWithKeys(r, keys, options, mesh);
 }
 
 } // namespace radiosity_bench

@@ -1,6 +1,7 @@
 // ./relight bench scale: time, memory and accuracy of the solver methods as the furnished
 // room grows from 10k to 1M elements, k = 8 lights. Prints ratios measured in one run and
 // writes a CSV; it never judges them.
+#include "BenchClock.h"
 #include "FurnishedRoom.h"
 #include "Geometry/PointAverages.h"
 #include "Solve/LightSolutions.h"
@@ -24,30 +25,6 @@ using namespace radiosity_bench;
 
 namespace
 {
-double Now()
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-/// Peak resident memory since the last ResetPeakMemory, in MB (Linux).
-double PeakMemoryMB()
-{
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  while (std::getline(status, line))
-  {
-    if (line.rfind("VmHWM:", 0) == 0)
-    {
-      return std::atof(line.c_str() + 6) / 1024.0;
-    }
-  }
-  return 0;
-}
-
-void ResetPeakMemory()
-{
-  std::ofstream("/proc/self/clear_refs") << "5";
-}
 
 /// Fixed rays from three viewpoints inside the room; each hit is a probe point.
 struct Probes

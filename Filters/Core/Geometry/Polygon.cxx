@@ -77,6 +77,30 @@ std::array<long long, 3> QuantizedPoint(const Vec3& p, double step)
   return { std::llround(p.x / step), std::llround(p.y / step), std::llround(p.z / step) };
 }
 
+std::vector<int> WeldedPointIds(const std::vector<Vec3>& points, double step)
+{
+  std::vector<std::pair<std::array<long long, 3>, int>> keyed(points.size());
+  for (size_t i = 0; i < points.size(); ++i)
+  {
+    keyed[i] = { QuantizedPoint(points[i], step), static_cast<int>(i) };
+  }
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<int> first(points.size());
+  for (size_t i = 0; i < keyed.size(); ++i)
+  {
+    first[keyed[i].second] = i > 0 && keyed[i].first == keyed[i - 1].first ? first[keyed[i - 1].second] : keyed[i].second;
+  }
+  std::vector<int> ids(points.size(), -1), number(points.size(), -1);
+  int next = 0;
+  for (size_t i = 0; i < points.size(); ++i)
+  {
+    int& n = number[first[i]];
+    n = n < 0 ? next++ : n;
+    ids[i] = n;
+  }
+  return ids;
+}
+
 Vec3 NewellVector(const Vec3* loop, int count)
 {
   // Relative to the first point: the sums of far-away coordinates would cancel the

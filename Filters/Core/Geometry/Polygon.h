@@ -37,6 +37,11 @@ std::array<long long, 4> PlaneKey(const Vec3& unitNormal, double offset, double 
 /// A point as a hash key: each coordinate in steps of `step` (welding equal points).
 std::array<long long, 3> QuantizedPoint(const Vec3& p, double step);
 
+/// One id per distinct position (QuantizedPoint of `step`), numbered in order of first
+/// appearance: point i and j are the same place when ids[i] == ids[j]. By sorting, so a
+/// million points take well under a second.
+std::vector<int> WeldedPointIds(const std::vector<Vec3>& points, double step);
+
 /// Newell's vector: normal direction of the right-hand-rule loop, length = 2 * area.
 /// Robust for non-planar or nearly degenerate loops, unlike a single cross product.
 Vec3 NewellVector(const Vec3* loop, int count);

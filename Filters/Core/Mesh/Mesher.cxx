@@ -1,5 +1,6 @@
 #include "Mesh/Mesher.h"
 #include "Mesh/ContactCuts.h"
+#include "Mesh/FaceClusters.h"
 #include "Geometry/Polygon.h"
 #include "Mesh/TrianglePairs.h"
 
@@ -699,6 +700,11 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
     MeshList(points, polygons.offsets, polygons.connectivity, polygons.source, surfaceKey, contacts, sized, out);
   out.mergedTrianglePairs = polygons.merged;
   out.elementSize = sized.ElementSize;
+  if (error.empty())
+  {
+    out.clusteredPatches =
+      ClusterFaces(out, paired, polygons.source, surfaceKey, sized.PatchSize, options.ClusterAngle);
+  }
   return error;
 }
 

@@ -23,6 +23,10 @@ struct MesherOptions
   /// Polygons that fit in one patch share it with the other such polygons of their flat,
   /// same-material surface in the same PatchSize cell of the plane.
   bool SharePatches = true;
+  /// Small patches of a curved surface (its tessellation's many polygons, each on its own
+  /// plane) are grouped into face clusters of about PatchSize whose normals stay within
+  /// this many degrees of each other (FaceClusters.h); 0: never.
+  double ClusterAngle = 30;
   /// Element budget (0: none): above it the smallest larger element size that fits is used.
   double ElementBudget = 0;
   /// The whole scene where the polygons are one process's piece of it: surfaces of other
@@ -42,6 +46,7 @@ struct MeshedPolygons
   std::vector<int> patchId;       ///< 0..patches-1
   int patches = 0;
   int mergedTrianglePairs = 0; ///< triangle pairs meshed as one quad
+  int clusteredPatches = 0;    ///< small patches merged into face clusters
   double elementSize = 0;      ///< the element size used (see ElementBudget)
 };
 

@@ -18,6 +18,9 @@ struct ShooterLinks
   std::vector<int> NodeFactorBegin; ///< where each patch link's node factors start
   std::vector<float> NodeFactors;   ///< F(node -> shooter) at each node of each linked patch
   std::vector<double> MeanFactors;  ///< their integral over the patch per unit of its open area
+  /// Face clusters taken whole: F(element -> shooter) = normal . vector for each element.
+  std::vector<int> Clusters;
+  std::vector<float> ClusterVectors; ///< three per cluster link
   std::vector<int> Groups;   ///< receiver patch of each element group
   std::vector<int> GroupEnd; ///< end of each group in Elements
   std::vector<int> Elements;
@@ -28,7 +31,8 @@ struct ShooterLinks
 
   double Bytes() const
   {
-    return static_cast<double>(Patches.size() * 4 + NodeFactors.size() + Groups.size() * 2 + Elements.size() * 2) * 4;
+    return static_cast<double>(Patches.size() * 4 + NodeFactors.size() + Clusters.size() * 4 + Groups.size() * 2 +
+             Elements.size() * 2) * 4;
   }
 };
 
@@ -36,12 +40,16 @@ enum class LinkKind : char
 {
   None,
   Patch,
+  Cluster,
   Elements
 };
 
 /// Centres closer than this many times the sum of two patches' radii are linked element by
 /// element: there the form factor varies too much across the receiver for one value.
 constexpr double kNearRadii = 2.0;
+/// The same for a face cluster taken whole: it has one value (a vector) at its centre, no
+/// corners to interpolate between, so it must be farther for the value to hold across it.
+constexpr double kClusterNearRadii = 3.0;
 
 class LinkBuilder
 {
@@ -59,9 +67,18 @@ public:
     , Patches(static_cast<int>(g.patchElements.size()))
     , Kind(Patches)
     , NodeFactor(nodes.Count())
+    , ClusterVector(Patches)
     , Owned(owned)
     , Ranks(ranks)
+    , OpenAreaVector(Patches)
   {
+    for (size_t e = 0; e < g.normal.size(); ++e)
+    {
+      if (!g.sheltered[e])
+      {
+        OpenAreaVector[g.elementPatch[e]] += g.normal[e] * g.area[e];
+      }
+    }
   }
 
   /// `shotFraction`: the largest fraction of a solution's emitted power this shot carries.
@@ -75,6 +92,10 @@ public:
       if (Kind[q] == LinkKind::Patch)
       {
         AddPatchLink(q, links);
+      }
+      else if (Kind[q] == LinkKind::Cluster)
+      {
+        AddClusterLink(q, links);
       }
       else if (Kind[q] == LinkKind::Elements)
       {
@@ -105,6 +126,17 @@ private:
     links.ReceivingArea += covered;
   }
 
+  void AddClusterLink(int q, ShooterLinks& links) const
+  {
+    const Vec3& v = ClusterVector[q];
+    links.Clusters.push_back(q);
+    for (int k = 0; k < 3; ++k)
+    {
+      links.ClusterVectors.push_back(static_cast<float>(v[k]));
+    }
+    links.ReceivingArea += Receiving(q, v);
+  }
+
   /// Scales every link of the shooter so that it delivers no more than it shoots, and
   /// exactly that when it sees a closed scene (ShooterFormFactors::ConservationScale), over
   /// the links of every process.
@@ -126,6 +158,10 @@ private:
       f *= scale;
     }
     for (float& f : links.ElementFactors)
+    {
+      f = static_cast<float>(f * scale);
+    }
+    for (float& f : links.ClusterVectors)
     {
       f = static_cast<float>(f * scale);
     }
@@ -153,7 +189,7 @@ private:
   {
     if (!Factors.Planar(s) || !Factors.Planar(q))
     {
-      return LinkKind::Elements;
+      return DecideForCluster(s, q, scratch, rays);
     }
     const Vec3 d = Factors.Centre(q) - Factors.Centre(s);
     const double ahead = Dot(Factors.Normal(s), d), facing = -Dot(Factors.Normal(q), d);
@@ -176,18 +212,67 @@ private:
     {
       return LinkKind::Elements; // strong transfer: worth element resolution
     }
-    double visible = 1;
-    if (Samples > 0 && Factors.MayBeBlockedBetweenPatches(q, s))
-    {
-      visible = static_cast<double>(Factors.VisibleRaysBetweenPatches(q, s, Samples)) / Samples;
-      rays += Samples;
-    }
+    const double visible = Visible(s, q, rays);
     for (int j = Nodes.Begin(q); j < Nodes.End(q); ++j)
     {
       NodeFactor[j] *= visible;
     }
     return visible > 0 ? LinkKind::Patch : LinkKind::None;
   }
+
+  /// Decide where one of the two is a face cluster (not flat): whole when each faces all of
+  /// the other from far enough (so that every cosine stays positive and one value holds),
+  /// through node factors to a flat receiver, through a factor vector to a cluster.
+  LinkKind DecideForCluster(int s, int q, std::vector<Vec3>& scratch, long long& rays)
+  {
+    const Vec3 &cs = Factors.Centre(s), &cq = Factors.Centre(q);
+    const double rs = Factors.Radius(s), rq = Factors.Radius(q);
+    if (BehindBall(cs, rs, Factors.Cone(s), cq, rq) || BehindBall(cq, rq, Factors.Cone(q), cs, rs))
+    {
+      return LinkKind::None;
+    }
+    const double near = Factors.Planar(q) ? kNearRadii : kClusterNearRadii;
+    if (Norm(cq - cs) < near * (rs + rq) || !FacesBall(cs, rs, Factors.Cone(s), cq, rq) ||
+      !FacesBall(cq, rq, Factors.Cone(q), cs, rs) || G.patchOpenArea[q] <= 0)
+    {
+      return LinkKind::Elements;
+    }
+    double received = 0;
+    if (Factors.Planar(q))
+    {
+      received = NodeFactors(s, q, scratch);
+    }
+    else
+    {
+      ClusterVector[q] = Factors.FactorVector(s, cq);
+      received = Receiving(q, ClusterVector[q]);
+    }
+    if (!(received > 0))
+    {
+      return LinkKind::None;
+    }
+    const double visible = Visible(s, q, rays);
+    for (int j = Nodes.Begin(q); j < Nodes.End(q); ++j)
+    {
+      NodeFactor[j] *= visible;
+    }
+    ClusterVector[q] = ClusterVector[q] * visible;
+    return visible <= 0 ? LinkKind::None : Factors.Planar(q) ? LinkKind::Patch : LinkKind::Cluster;
+  }
+
+  /// The unblocked fraction of the rays between two patches (1 where none can be blocked).
+  double Visible(int s, int q, long long& rays) const
+  {
+    if (Samples <= 0 || !Factors.MayBeBlockedBetweenPatches(q, s))
+    {
+      return 1.0;
+    }
+    rays += Samples;
+    return static_cast<double>(Factors.VisibleRaysBetweenPatches(q, s, Samples)) / Samples;
+  }
+
+  /// Power a cluster's open elements receive per unit shot radiosity through vector v.
+  double Receiving(int q, const Vec3& v) const { return Dot(OpenAreaVector[q], v); }
 
   /// F(node -> s) at q's nodes, scaled so that their interpolant integrates over q like a
   /// rule exact for quadratics: 3/4 of the fan triangles' centroid rule plus 1/4 of their
@@ -331,8 +416,10 @@ private:
   const int Patches;
   std::vector<LinkKind> Kind;
   std::vector<double> NodeFactor, Scratch;
+  std::vector<Vec3> ClusterVector; ///< per receiver cluster, this shooter's factor vector
   const std::vector<char>& Owned;
   Collective& Ranks;
+  std::vector<Vec3> OpenAreaVector; ///< per patch, the sum of area x normal of its open elements
 };
 
 std::vector<Vec3> MeanReflectance(const SceneMesh& mesh, const SceneGeometry& g)
@@ -354,7 +441,8 @@ double DistributeAlongLinks(ShootingState<Channel>& state, const WorkerPool& poo
   const std::vector<Vec3>& meanReflectance)
 {
   const int patchLinks = static_cast<int>(links.Patches.size());
-  const int items = patchLinks + static_cast<int>(links.Groups.size());
+  const int wholeLinks = patchLinks + static_cast<int>(links.Clusters.size());
+  const int items = wholeLinks + static_cast<int>(links.Groups.size());
   // Every item touches one receiver patch only, so the items run in parallel safely.
   pool.For(items, 8, [&](int begin, int end) {
     for (int i = begin; i < end; ++i)
@@ -365,7 +453,13 @@ double DistributeAlongLinks(ShootingState<Channel>& state, const WorkerPool& poo
         state.GatherPatch(q, links.NodeFactors.data() + links.NodeFactorBegin[i], links.MeanFactors[i], meanReflectance[q]);
         continue;
       }
-      const int group = i - patchLinks;
+      if (i < wholeLinks)
+      {
+        const float* v = links.ClusterVectors.data() + 3 * (i - patchLinks);
+        state.GatherCluster(links.Clusters[i - patchLinks], Vec3{ v[0], v[1], v[2] });
+        continue;
+      }
+      const int group = i - wholeLinks;
       const int first = group == 0 ? 0 : links.GroupEnd[group - 1];
       for (int j = first; j < links.GroupEnd[group]; ++j)
       {
@@ -389,6 +483,7 @@ void Shoot(const SceneMesh& mesh, const SceneGeometry& g, const Visibility& rays
   estimator.SetReceivers(&state.OwnedPatchFlags());
   const PatchNodes nodes(g, estimator.PatchLoops(), estimator.Centres());
   state.EnablePatchGathering(nodes);
+  state.EnableClusterGathering();
   const int samples = options.Visibility == EffectMode::Off ? 0 : options.Samples;
   const double refine = options.RefinementThreshold > 0 ? options.RefinementThreshold : 2.0; // 2: never
   LinkBuilder builder(g, estimator, nodes, pool, samples, refine, state.OwnedPatchFlags(), state.Ranks());

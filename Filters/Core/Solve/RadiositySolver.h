@@ -32,7 +32,8 @@ enum class EffectMode
 /// carry every solution along each evaluation (light tagging).
 enum class SolverMethod
 {
-  /// Hierarchical where the scene is large enough for it to pay, otherwise progressive.
+  /// Hierarchical where its links pay (many elements, or many patches: a curved model),
+  /// otherwise progressive; SolverStatistics::MethodReason says which measure decided.
   Auto = 0,
   /// Every shot evaluates a form factor to every element: cost shots x elements.
   ProgressiveRefinement = 1,
@@ -118,6 +119,8 @@ struct SolverStatistics
   int BlockingSurfaces = -1;      ///< planes with geometry behind them (-1: not examined)
   long long FormFactorCount = 0; ///< receiver-shooter pairs evaluated
   SolverMethod Method = SolverMethod::ProgressiveRefinement; ///< the method that ran
+  std::string MethodReason; ///< why: "as set", or Auto's measure of the scene
+  int FaceClusters = 0;     ///< patches of several elements on more than one plane
   long long PatchLinks = 0;   ///< hierarchical: shooter-to-patch links made
   long long ElementLinks = 0; ///< hierarchical: shooter-to-element links made
   double LinkBytes = 0;       ///< hierarchical: memory the links held

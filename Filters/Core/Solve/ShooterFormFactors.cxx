@@ -86,10 +86,30 @@ ShooterFormFactors::ShooterFormFactors(const SceneMesh& mesh, const SceneGeometr
     }
   }
   BuildOutlines();
+  BuildTrees();
   if (CullVisibility)
   {
     FindBlockers();
   }
+}
+
+void ShooterFormFactors::BuildTrees()
+{
+  const int patches = static_cast<int>(Geometry.patchElements.size());
+  PatchCone.assign(patches, NormalCone());
+  Trees.resize(patches);
+  Pool.For(patches, 16, [&](int begin, int end) {
+    for (int p = begin; p < end; ++p)
+    {
+      const std::vector<int>& elements = Geometry.patchElements[p];
+      PatchCone[p] = Planar(p) ? NormalCone{ PatchNormal[p], 0.0 } : ConeOf(Geometry, elements);
+      // Below this a plain sum over the elements is as fast as a walk down a tree.
+      if (!Planar(p) && elements.size() >= 8)
+      {
+        Trees[p] = std::make_unique<ClusterTree>(Mesh, Geometry, Loops, elements);
+      }
+    }
+  });
 }
 
 void ShooterFormFactors::FindBlockers()
@@ -478,6 +498,10 @@ double ShooterFormFactors::PointFactor(int patch, const Vec3& x, const Vec3& nor
     const std::vector<Vec3>& loop = PatchLoop[patch];
     return PointToPolygonFormFactor(x, normal, loop.data(), static_cast<int>(loop.size()), scratch);
   }
+  if (Trees[patch])
+  {
+    return Trees[patch]->PointFactor(x, normal, scratch);
+  }
   double f = 0;
   for (int s : Geometry.patchElements[patch])
   {
@@ -488,6 +512,30 @@ double ShooterFormFactors::PointFactor(int patch, const Vec3& x, const Vec3& nor
     f += PointToPolygonFormFactor(x, normal, Loops.data() + Mesh.offsets[s], Mesh.PolygonSize(s), scratch);
   }
   return f;
+}
+
+Vec3 ShooterFormFactors::FactorVector(int patch, const Vec3& x) const
+{
+  if (Trees[patch])
+  {
+    return Trees[patch]->FactorVector(x);
+  }
+  const std::vector<Vec3>& loop = PatchLoop[patch];
+  if (!loop.empty())
+  {
+    return Dot(PatchNormal[patch], x - PatchCentre[patch]) > 0
+      ? PolygonFactorVector(x, loop.data(), static_cast<int>(loop.size()))
+      : Vec3();
+  }
+  Vec3 sum;
+  for (int s : Geometry.patchElements[patch])
+  {
+    if (Dot(Geometry.normal[s], x - Geometry.centroid[s]) > 0)
+    {
+      sum += PolygonFactorVector(x, Loops.data() + Mesh.offsets[s], Mesh.PolygonSize(s));
+    }
+  }
+  return sum;
 }
 
 Vec3 ShooterFormFactors::SamplePoint(int patch, int r, int samples, SampleStream& random, const SampleTriangle** picked) const

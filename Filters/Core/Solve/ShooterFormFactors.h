@@ -3,6 +3,7 @@
 #define RadiosityCore_ShooterFormFactors_h
 
 #include "Base/SampleStream.h"
+#include "Geometry/ClusterTree.h"
 #include "Geometry/Polygon.h"
 #include "Geometry/Scene.h"
 #include "Geometry/Visibility.h"
@@ -10,6 +11,7 @@
 
 #include <atomic>
 #include <map>
+#include <memory>
 #include <vector>
 
 namespace radiosity
@@ -53,6 +55,9 @@ public:
 
   /// Unoccluded F(dA at x with `normal` -> patch); 0 where the patch's front faces away.
   double PointFactor(int patch, const Vec3& x, const Vec3& normal, std::vector<Vec3>& scratch) const;
+  /// The vector V with PointFactor(patch, x, n) = n . V for every n whose front half-space
+  /// holds the whole patch (ClusterTree::FactorVector).
+  Vec3 FactorVector(int patch, const Vec3& x) const;
   /// Unoccluded F(element e -> patch): PointFactor at the centroid, or, where the element
   /// is within twice its size of the patch, the area mean over its fan triangles.
   double ReceiverFactor(int patch, int e, std::vector<Vec3>& scratch) const;
@@ -84,6 +89,8 @@ public:
   const Vec3& Normal(int patch) const { return PatchNormal[patch]; }
   /// Largest distance from the centre to a point of the patch.
   double Radius(int patch) const { return PatchRadius[patch]; }
+  /// The cone of the patch's normals (spread 0 for a flat patch, more for a face cluster).
+  const NormalCone& Cone(int patch) const { return PatchCone[patch]; }
   /// True when the patch is flat: one element, or coplanar elements with one outline.
   bool Planar(int patch) const
   {
@@ -130,6 +137,11 @@ private:
   std::vector<std::vector<SampleTriangle>> PatchTriangles;
   std::vector<Vec3> PatchCentre, PatchNormal;
   std::vector<double> PatchRadius;
+  std::vector<NormalCone> PatchCone;
+  /// For a patch of many elements that are not coplanar (a face cluster of a curved
+  /// surface): form factors to it in log time. Null for the others.
+  std::vector<std::unique_ptr<ClusterTree>> Trees;
+  void BuildTrees();
   /// Outline of each planar patch (interior edges cancelled), as start/end point pairs;
   /// empty for a patch whose elements are not coplanar.
   std::vector<std::vector<Vec3>> PatchOutline;

@@ -173,6 +173,44 @@ public:
     }
   }
 
+  /// A face cluster receives the shot as a whole: F(e -> shooter) = n_e . v for each of its
+  /// open elements, applied in Finish; what they reflect joins its unshot energy now.
+  void GatherCluster(int q, const Vec3& v)
+  {
+    for (int m = 0; m < L; ++m)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        ClusterGathered[3 * Index(q, m) + k] += Shot[m] * v[k];
+      }
+    }
+    if (!Reflect || G.patchOpenArea[q] <= 0)
+    {
+      return;
+    }
+    const Vec3* r = ClusterReflectance.data() + 3 * static_cast<size_t>(q);
+    const Vec3 reflected = Vec3{ Dot(r[0], v), Dot(r[1], v), Dot(r[2], v) } * (1.0 / G.patchOpenArea[q]);
+    for (int m = 0; m < L; ++m)
+    {
+      Unshot[Index(q, m)] += Channel::Reflect(reflected, Shot[m], 1.0);
+    }
+  }
+
+  /// Cluster gathering needs three values per patch and solution; only the hierarchical
+  /// solver asks. Per channel, the sum of reflectance x area x normal of open elements.
+  void EnableClusterGathering()
+  {
+    ClusterGathered.assign(3 * static_cast<size_t>(Patches) * L, Value());
+    ClusterReflectance.assign(3 * static_cast<size_t>(Patches), Vec3());
+    for (int e = 0; e < Elements; ++e)
+    {
+      for (int c = 0; c < 3 && !G.sheltered[e]; ++c)
+      {
+        ClusterReflectance[3 * static_cast<size_t>(G.elementPatch[e]) + c] += G.normal[e] * (G.area[e] * Mesh.reflectance[e][c]);
+      }
+    }
+  }
+
   /// Patch-level gathering needs a buffer per patch node; only the hierarchical solver asks.
   void EnablePatchGathering(const PatchNodes& nodes)
   {
@@ -512,6 +550,7 @@ private:
 
   void FinishGathered()
   {
+    FinishClusters();
     if (Gathered.empty())
     {
       return;
@@ -531,6 +570,25 @@ private:
         {
           Radiosity[Index(e, m)] += Channel::Reflect(Mesh.reflectance[e], Gathered[Index(j, m)], weight);
         }
+      }
+    }
+  }
+
+  /// Each open element of a cluster turns the gathered vectors into its own irradiance.
+  void FinishClusters()
+  {
+    for (int e = 0; e < Elements && !ClusterGathered.empty(); ++e)
+    {
+      const int q = G.elementPatch[e];
+      if (!Owned[q] || G.sheltered[e])
+      {
+        continue;
+      }
+      const Vec3& n = G.normal[e];
+      for (int m = 0; m < L; ++m)
+      {
+        const Value* v = ClusterGathered.data() + 3 * Index(q, m);
+        Radiosity[Index(e, m)] += Channel::Reflect(Mesh.reflectance[e], v[0] * n.x + v[1] * n.y + v[2] * n.z, 1.0);
       }
     }
   }
@@ -573,7 +631,8 @@ private:
   Solution& Out;
   SolverStatistics& Stats;
   const bool Direct, Reflect;
-  std::vector<Value> Radiosity, DirectPart, Unshot, UnshotEmission, Gathered;
+  std::vector<Value> Radiosity, DirectPart, Unshot, UnshotEmission, Gathered, ClusterGathered;
+  std::vector<Vec3> ClusterReflectance;
   std::vector<Value> Shot, ShotEmission;
   std::vector<char> Distribute, Active, PendingEmission;
   std::vector<double> InitialPer, RemainingPer;

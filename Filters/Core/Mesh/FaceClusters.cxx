@@ -1,0 +1,182 @@
+#include "Mesh/FaceClusters.h"
+#include "Geometry/Polygon.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <deque>
+#include <utility>
+
+namespace radiosity
+{
+
+namespace
+{
+struct PatchSummary
+{
+  Vec3 Centre, Normal;
+  double Area = 0, Radius = 0;
+  int Key = 0;
+};
+
+std::vector<PatchSummary> Summarise(const MeshedPolygons& mesh, const std::vector<int>& surfaceKey)
+{
+  std::vector<PatchSummary> patches(mesh.patches);
+  const int n = static_cast<int>(mesh.offsets.size()) - 1;
+  std::vector<Vec3> loop;
+  for (int e = 0; e < n; ++e)
+  {
+    loop.assign(mesh.offsets[e + 1] - mesh.offsets[e], Vec3());
+    for (int v = mesh.offsets[e]; v < mesh.offsets[e + 1]; ++v)
+    {
+      loop[v - mesh.offsets[e]] = mesh.points[mesh.connectivity[v]];
+    }
+    const Vec3 newell = NewellVector(loop.data(), static_cast<int>(loop.size()));
+    const double area = 0.5 * Norm(newell);
+    PatchSummary& p = patches[mesh.patchId[e]];
+    p.Centre += PolygonCentroid(loop.data(), static_cast<int>(loop.size())) * area;
+    p.Normal += newell * 0.5;
+    p.Area += area;
+    p.Key = surfaceKey[mesh.sourcePolygon[e]];
+  }
+  for (PatchSummary& p : patches)
+  {
+    p.Centre = p.Area > 0 ? p.Centre * (1.0 / p.Area) : p.Centre;
+    p.Normal = Normalized(p.Normal);
+  }
+  for (int e = 0; e < n; ++e)
+  {
+    PatchSummary& p = patches[mesh.patchId[e]];
+    for (int v = mesh.offsets[e]; v < mesh.offsets[e + 1]; ++v)
+    {
+      p.Radius = std::max(p.Radius, Norm(mesh.points[mesh.connectivity[v]] - p.Centre));
+    }
+  }
+  return patches;
+}
+
+/// The patches next to each patch: those whose input polygons share an edge with its own,
+/// by the position of the input's points (a small patch holds whole input polygons, and
+/// the mesher's own points along split edges are computed, so they may differ in the last
+/// bits, where the input's are copies of each other).
+std::vector<std::vector<int>> Neighbours(
+  const MeshedPolygons& mesh, const PolygonArrays& input, const std::vector<int>& source, double quantum)
+{
+  const std::vector<int> welded = WeldedPointIds(input.Points, quantum);
+  const int cells = source.empty() ? 0 : *std::max_element(source.begin(), source.end()) + 1;
+  std::vector<int> polygonOf(std::max(cells, 1), -1);
+  for (size_t i = 0; i < source.size(); ++i)
+  {
+    polygonOf[source[i]] = static_cast<int>(i);
+  }
+  std::vector<int> cellPatch(input.Offsets.size() - 1, -1);
+  for (size_t e = 0; e < mesh.sourcePolygon.size(); ++e)
+  {
+    cellPatch[polygonOf[mesh.sourcePolygon[e]]] = mesh.patchId[e];
+  }
+  std::vector<std::pair<std::uint64_t, int>> edges;
+  for (size_t c = 0; c < cellPatch.size(); ++c)
+  {
+    const int begin = input.Offsets[c], count = input.Offsets[c + 1] - begin;
+    for (int v = 0; v < count && cellPatch[c] >= 0; ++v)
+    {
+      const std::uint64_t a = welded[input.Connectivity[begin + v]];
+      const std::uint64_t b = welded[input.Connectivity[begin + (v + 1) % count]];
+      edges.push_back({ std::min(a, b) << 32 | std::max(a, b), cellPatch[c] });
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  std::vector<std::vector<int>> next(mesh.patches);
+  for (size_t i = 0; i < edges.size();)
+  {
+    size_t j = i;
+    while (j < edges.size() && edges[j].first == edges[i].first)
+    {
+      ++j;
+    }
+    for (size_t a = i; a < j; ++a)
+    {
+      for (size_t b = a + 1; b < j; ++b)
+      {
+        if (edges[a].second != edges[b].second)
+        {
+          next[edges[a].second].push_back(edges[b].second);
+          next[edges[b].second].push_back(edges[a].second);
+        }
+      }
+    }
+    i = j;
+  }
+  for (std::vector<int>& list : next)
+  {
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+  }
+  return next;
+}
+} // namespace
+
+int ClusterFaces(MeshedPolygons& mesh, const PolygonArrays& input, const std::vector<int>& source,
+  const std::vector<int>& surfaceKey, double patchSize, double coneDegrees)
+{
+  if (!(coneDegrees > 0) || !(patchSize > 0) || mesh.patches < 2)
+  {
+    return 0;
+  }
+  const std::vector<PatchSummary> patches = Summarise(mesh, surfaceKey);
+  const std::vector<std::vector<int>> next = Neighbours(mesh, input, source, std::max(Span(input.Points), 1e-300) * 1e-9);
+  // Models come in whole sizes, so limits are met exactly; slack above float noise (VTK's
+  // float points 1 km away: 1e-5 of a 5 m patch) keeps it from deciding which side they fall.
+  const double slack = 1 + 1e-4;
+  const double cosCone = std::cos(coneDegrees * Pi / 180.0) - 1e-4, reach = 0.5 * patchSize * slack;
+  auto small = [&](int p) { return patches[p].Radius <= 0.25 * patchSize * slack && patches[p].Area > 0; };
+  std::vector<int> cluster(mesh.patches, -1);
+  std::deque<int> frontier;
+  for (int seed = 0; seed < mesh.patches; ++seed)
+  {
+    if (cluster[seed] >= 0)
+    {
+      continue;
+    }
+    cluster[seed] = seed;
+    if (!small(seed))
+    {
+      continue;
+    }
+    const PatchSummary& s = patches[seed];
+    frontier.assign(1, seed);
+    while (!frontier.empty())
+    {
+      const int p = frontier.front();
+      frontier.pop_front();
+      for (int q : next[p])
+      {
+        const PatchSummary& c = patches[q];
+        if (cluster[q] < 0 && small(q) && c.Key == s.Key && Dot(c.Normal, s.Normal) >= cosCone &&
+          Norm(c.Centre - s.Centre) + c.Radius <= reach)
+        {
+          cluster[q] = seed;
+          frontier.push_back(q);
+        }
+      }
+    }
+  }
+  std::vector<int> compact(mesh.patches, -1);
+  int count = 0;
+  for (int p = 0; p < mesh.patches; ++p)
+  {
+    if (compact[cluster[p]] < 0)
+    {
+      compact[cluster[p]] = count++;
+    }
+  }
+  for (int& id : mesh.patchId)
+  {
+    id = compact[cluster[id]];
+  }
+  const int merged = mesh.patches - count;
+  mesh.patches = count;
+  return merged;
+}
+
+} // namespace radiosity

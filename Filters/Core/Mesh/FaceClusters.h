@@ -1,0 +1,26 @@
+// Face clusters: a curved surface tessellated into many small polygons (a CAD export, a
+// scan) is grouped into patches of about PatchSize, so that light is shot from and received
+// by groups of polygons, not by each one (after Willmott, Heckbert & Garland 1999).
+#ifndef RadiosityCore_FaceClusters_h
+#define RadiosityCore_FaceClusters_h
+
+#include "Mesh/Mesher.h"
+
+#include <vector>
+
+namespace radiosity
+{
+
+/// Merges small patches (at most half of `patchSize` across) of `mesh` into face clusters:
+/// grown from each patch in order over the edges its `input` polygons share (the polygons
+/// MeshPolygons meshed into `mesh`, polygon i from input cell `source[i]`, the cell
+/// `mesh.sourcePolygon` names), through patches of the same
+/// `surfaceKey` (per input polygon, as MeshPolygons takes it) whose normals are within
+/// `coneDegrees` of the first one's, while every corner stays within `patchSize` / 2 of its
+/// centre. Patch ids are made 0..patches-1 again. Returns the number of patches merged away.
+int ClusterFaces(MeshedPolygons& mesh, const PolygonArrays& input, const std::vector<int>& source,
+  const std::vector<int>& surfaceKey, double patchSize, double coneDegrees);
+
+} // namespace radiosity
+
+#endif

@@ -1,0 +1,71 @@
+// ./relight bench polygons: solve time, memory and shots of a room with tessellated
+// spheres as their triangles grow, face clusters on and off. One scene a run (the driver,
+// polygons_bench.py, sweeps sizes and draws the figure); prints one CSV row.
+#include "BenchClock.h"
+#include "CurvedRoom.h"
+#include "Solve/LightSolutions.h"
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <string>
+
+using namespace radiosity;
+using namespace radiosity_bench;
+
+namespace
+{
+const char* MethodName(SolverMethod m)
+{
+  return m == SolverMethod::Hierarchical ? "hierarchical" : "progressive";
+}
+} // namespace
+
+int main(int argc, char** argv)
+{
+  int triangles = 20000, spheres = 1, lamps = 3;
+  double patch = 0.5, element = 0.1, cone = 30, budget = 0;
+  SolverMethod method = SolverMethod::Auto;
+  for (int i = 1; i + 1 < argc; i += 2)
+  {
+    const std::string flag = argv[i];
+    const char* value = argv[i + 1];
+    if (flag == "--triangles") triangles = std::atoi(value);
+    else if (flag == "--spheres") spheres = std::atoi(value);
+    else if (flag == "--lamps") lamps = std::atoi(value);
+    else if (flag == "--patch") patch = std::atof(value);
+    else if (flag == "--element") element = std::atof(value);
+    else if (flag == "--cluster-angle") cone = std::atof(value);
+    else if (flag == "--time-budget") budget = std::atof(value);
+    else if (flag == "--method")
+      method = std::strcmp(value, "hierarchical") == 0 ? SolverMethod::Hierarchical
+        : std::strcmp(value, "progressive") == 0      ? SolverMethod::ProgressiveRefinement
+                                                      : SolverMethod::Auto;
+  }
+  const double t0 = Now();
+  SceneMesh mesh;
+  const RoomPolygons room = CurvedRoom(lamps, spheres, triangles);
+  const std::string error = MeshByMaterial(room, patch, element, cone, mesh);
+  if (!error.empty())
+  {
+    std::fprintf(stderr, "%s\n", error.c_str());
+    return 1;
+  }
+  const double t1 = Now();
+  const RadiositySolver solver(mesh);
+  const double t2 = Now();
+  SolverOptions options;
+  options.Solver = method;
+  options.TimeBudget = budget;
+  const Solution s = SolveLights(solver, mesh, LightGrouping::OnePerLight(lamps), {}, SolutionMode::LightTagged, options);
+  const double t3 = Now();
+  const SolverStatistics& st = s.Statistics;
+  const int inputTriangles = static_cast<int>(room.Offsets.size()) - 1 - 6 - lamps;
+  std::printf("triangles,elements,patches,lights,cluster_angle,method,shots,converged,link_mb,mesh_s,prepare_s,solve_s,total_s,peak_mb\n");
+  std::printf("%d,%d,%zu,%d,%g,%s,%d,%d,%.1f,%.2f,%.2f,%.2f,%.2f,%.0f\n", inputTriangles, mesh.NumberOfPolygons(),
+    solver.Geometry().patchElements.size(), lamps, cone, MethodName(st.Method), st.Shots, st.Converged ? 1 : 0,
+    st.LinkBytes / 1e6, t1 - t0, t2 - t1, t3 - t2, t3 - t0, PeakMemoryMB());
+  return 0;
+}

@@ -1,0 +1,200 @@
+// Face clusters: the tree's form factors against the sum over their polygons, the mesher's
+// clusters against their limits, and a room with a tessellated sphere solved through
+// clusters against progressive refinement over every triangle.
+#include "CurvedRoom.h"
+#include "Geometry/ClusterTree.h"
+#include "Geometry/FormFactor.h"
+#include "Solve/LightSolutions.h"
+#include "SceneBuilders.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace radiosity;
+using namespace radiosity_bench;
+
+namespace
+{
+const Vec3 kSphere{ 0.7, 0.7, 0.65 }; // CurvedRoom's spheres
+
+bool operator!=(const Vec3& a, const Vec3& b)
+{
+  return a.x != b.x || a.y != b.y || a.z != b.z;
+}
+
+/// A cap of a tessellated sphere (radius 1, outward), `triangles` of the whole sphere, the
+/// triangles within `degrees` of the north pole.
+SceneMesh Cap(int triangles, double degrees)
+{
+  RoomPolygons r;
+  AddSphere(r, { 0, 0, 0 }, 1.0, triangles, { 0.5, 0.5, 0.5 });
+  SceneMesh mesh;
+  mesh.points = r.Points;
+  for (size_t c = 0; c + 1 < r.Offsets.size(); ++c)
+  {
+    const Vec3& a = r.Points[r.Connectivity[r.Offsets[c]]];
+    if (a.z >= std::cos(degrees * Pi / 180))
+    {
+      mesh.AddPolygon({ r.Connectivity.begin() + r.Offsets[c], r.Connectivity.begin() + r.Offsets[c + 1] });
+      mesh.reflectance.push_back({ 0.5, 0.5, 0.5 });
+      mesh.lightId.push_back(-1);
+    }
+  }
+  return mesh;
+}
+
+std::vector<Vec3> Loops(const SceneMesh& mesh)
+{
+  std::vector<Vec3> loops;
+  for (int id : mesh.connectivity)
+  {
+    loops.push_back(mesh.points[id]);
+  }
+  return loops;
+}
+
+double ExactFactor(const SceneMesh& mesh, const SceneGeometry& g, const Vec3& x, const Vec3& n)
+{
+  double f = 0;
+  std::vector<Vec3> loop;
+  for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
+  {
+    loop.clear();
+    for (int v = 0; v < mesh.PolygonSize(e); ++v)
+    {
+      loop.push_back(mesh.points[mesh.Polygon(e)[v]]);
+    }
+    f += Dot(g.normal[e], x - g.centroid[e]) > 0 ? PointToPolygonFormFactor(x, n, loop.data(), static_cast<int>(loop.size())) : 0;
+  }
+  return f;
+}
+
+Solution SolveRoom(const SceneMesh& mesh, SolverMethod method, int lamps)
+{
+  const RadiositySolver solver(mesh);
+  EXPECT_TRUE(solver.Error().empty()) << solver.Error();
+  SolverOptions o = radiosity_test::Converged(1e-4);
+  o.Solver = method;
+  return SolveLights(solver, mesh, LightGrouping::OnePerLight(lamps), {}, SolutionMode::LightTagged, o);
+}
+
+/// Per light, sum |a - b| A / sum b A over the elements, where the two meshes' elements are
+/// the same polygons in any order: matched by centroid.
+double MeanDifference(const SceneMesh& ma, const Solution& a, const SceneMesh& mb, const Solution& b, int light)
+{
+  const SceneGeometry ga(ma), gb(mb);
+  std::map<std::array<long long, 3>, int> where;
+  for (int e = 0; e < mb.NumberOfPolygons(); ++e)
+  {
+    where[QuantizedPoint(gb.centroid[e], 1e-6)] = e;
+  }
+  double diff = 0, sum = 0;
+  for (int e = 0; e < ma.NumberOfPolygons(); ++e)
+  {
+    const auto found = where.find(QuantizedPoint(ga.centroid[e], 1e-6));
+    EXPECT_TRUE(found != where.end());
+    if (found == where.end())
+    {
+      continue;
+    }
+    const Vec3& x = a.Radiosity[static_cast<size_t>(e) * a.Solutions + light];
+    const Vec3& y = b.Radiosity[static_cast<size_t>(found->second) * b.Solutions + light];
+    diff += (std::fabs(x.x - y.x) + std::fabs(x.y - y.y) + std::fabs(x.z - y.z)) * ga.area[e];
+    sum += (y.x + y.y + y.z) * ga.area[e];
+  }
+  return diff / sum;
+}
+} // namespace
+
+TEST(Clusters, TreeFactorsEqualTheSumOverTheirPolygons)
+{
+  const SceneMesh cap = Cap(20000, 40);
+  const SceneGeometry g(cap);
+  std::vector<int> all(cap.NumberOfPolygons());
+  for (size_t e = 0; e < all.size(); ++e)
+  {
+    all[e] = static_cast<int>(e);
+  }
+  const std::vector<Vec3> loops = Loops(cap);
+  const ClusterTree tree(cap, g, loops, all);
+  std::vector<Vec3> scratch;
+  // Far above, beside at a grazing angle, and near (where the tree must open to its leaves).
+  struct Probe
+  {
+    Vec3 X, N;
+    double Tolerance;
+  };
+  for (const Probe& p : { Probe{ { 0, 0, 8 }, { 0, 0, -1 }, 0.01 }, Probe{ { 3, 0, 1.2 }, Normalized(Vec3{ -1, 0, -0.2 }), 0.02 },
+         Probe{ { 0.1, 0, 1.05 }, { 0, 0, -1 }, 0.005 }, Probe{ { 0, 0.4, 1.3 }, Normalized(Vec3{ 0, -1, -1 }), 0.01 } })
+  {
+    const double exact = ExactFactor(cap, g, p.X, p.N);
+    ASSERT_GT(exact, 0);
+    EXPECT_NEAR(tree.PointFactor(p.X, p.N, scratch), exact, p.Tolerance * exact);
+    // Where the whole cap is in front of the receiver's plane, n . vector is the factor.
+    EXPECT_NEAR(Dot(p.N, tree.FactorVector(p.X)), exact, std::max(p.Tolerance, 1e-9) * exact + 1e-12);
+  }
+  EXPECT_NEAR(tree.Cone().Spread * 180 / Pi, 40, 2.0);
+}
+
+TEST(Clusters, PolygonVectorGivesLambertsFactor)
+{
+  const Vec3 square[4] = { { -1, -1, 2 }, { 1, -1, 2 }, { 1, 1, 2 }, { -1, 1, 2 } };
+  for (const Vec3& n : { Vec3{ 0, 0, 1 }, Normalized(Vec3{ 0.2, 0.1, 1 }) })
+  {
+    const Vec3 x{ 0.1, 0.2, 0 };
+    EXPECT_NEAR(Dot(n, PolygonFactorVector(x, square, 4)), PointToPolygonFormFactor(x, n, square, 4), 1e-12);
+  }
+}
+
+TEST(Clusters, MesherGroupsASphereIntoClustersWithinTheirLimits)
+{
+  const RoomPolygons room = CurvedRoom(1, 1, 20000);
+  SceneMesh plain, clustered;
+  ASSERT_EQ(MeshByMaterial(room, 0.5, 0.1, 0, plain), "");
+  ASSERT_EQ(MeshByMaterial(room, 0.5, 0.1, 30, clustered), "");
+  const SceneGeometry gp(plain), gc(clustered);
+  ASSERT_EQ(plain.NumberOfPolygons(), clustered.NumberOfPolygons());
+  EXPECT_GT(gp.patchElements.size(), 5 * gc.patchElements.size());
+  for (const std::vector<int>& patch : gc.patchElements)
+  {
+    const NormalCone cone = ConeOf(gc, patch);
+    EXPECT_LE(cone.Spread, 2 * 30 * Pi / 180 + 1e-9);
+    for (int e : patch)
+    {
+      // Every element is within PatchSize / 2 of the cluster's seed: PatchSize across.
+      EXPECT_TRUE(clustered.reflectance[e] != kSphere || Norm(gc.centroid[e] - gc.centroid[patch[0]]) <= 0.5 + 1e-9);
+    }
+  }
+  // The room's flat walls keep their patches: only small patches join.
+  int flatPlain = 0, flatClustered = 0;
+  for (const std::vector<int>& patch : gp.patchElements)
+  {
+    flatPlain += plain.reflectance[patch[0]] != kSphere ? 1 : 0;
+  }
+  for (const std::vector<int>& patch : gc.patchElements)
+  {
+    flatClustered += clustered.reflectance[patch[0]] != kSphere ? 1 : 0;
+  }
+  EXPECT_EQ(flatPlain, flatClustered);
+  // The solver keeps each cluster whole: its elements see each other over the surface.
+  const RadiositySolver solver(clustered);
+  EXPECT_EQ(solver.SplitPatches(), 0);
+}
+
+TEST(Clusters, SphereRoomEqualsProgressiveRefinementOverEveryTriangle)
+{
+  const int lamps = 3;
+  const RoomPolygons room = CurvedRoom(lamps, 1, 1200);
+  SceneMesh plain, clustered;
+  ASSERT_EQ(MeshByMaterial(room, 0.5, 0.25, 0, plain), "");
+  ASSERT_EQ(MeshByMaterial(room, 0.5, 0.25, 30, clustered), "");
+  const Solution reference = SolveRoom(plain, SolverMethod::ProgressiveRefinement, lamps);
+  const Solution hierarchical = SolveRoom(clustered, SolverMethod::Hierarchical, lamps);
+  const Solution progressive = SolveRoom(clustered, SolverMethod::ProgressiveRefinement, lamps);
+  for (int m = 0; m < lamps; ++m)
+  {
+    EXPECT_LT(MeanDifference(clustered, hierarchical, plain, reference, m), 0.01) << "light " << m;
+    EXPECT_LT(MeanDifference(clustered, progressive, plain, reference, m), 0.01) << "light " << m;
+  }
+}
