@@ -63,9 +63,9 @@ int main(int argc, char** argv)
   const double t3 = Now();
   const SolverStatistics& st = s.Statistics;
   const int inputTriangles = static_cast<int>(room.Offsets.size()) - 1 - 6 - lamps;
-  std::printf("triangles,elements,patches,lights,cluster_angle,method,shots,converged,link_mb,mesh_s,prepare_s,solve_s,total_s,peak_mb\n");
-  std::printf("%d,%d,%zu,%d,%g,%s,%d,%d,%.1f,%.2f,%.2f,%.2f,%.2f,%.0f\n", inputTriangles, mesh.NumberOfPolygons(),
+  std::printf("triangles,elements,patches,lights,cluster_angle,method,shots,converged,rays,patch_links,element_links,link_mb,mesh_s,prepare_s,solve_s,total_s,peak_mb\n");
+  std::printf("%d,%d,%zu,%d,%g,%s,%d,%d,%lld,%lld,%lld,%.1f,%.2f,%.2f,%.2f,%.2f,%.0f\n", inputTriangles, mesh.NumberOfPolygons(),
     solver.Geometry().patchElements.size(), lamps, cone, MethodName(st.Method), st.Shots, st.Converged ? 1 : 0,
-    st.LinkBytes / 1e6, t1 - t0, t2 - t1, t3 - t2, t3 - t0, PeakMemoryMB());
+    st.RayCount, st.PatchLinks, st.ElementLinks, st.LinkBytes / 1e6, t1 - t0, t2 - t1, t3 - t2, t3 - t0, PeakMemoryMB());
   return 0;
 }

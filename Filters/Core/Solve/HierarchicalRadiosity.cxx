@@ -50,6 +50,9 @@ constexpr double kNearRadii = 2.0;
 /// The same for a face cluster taken whole: it has one value (a vector) at its centre, no
 /// corners to interpolate between, so it must be farther for the value to hold across it.
 constexpr double kClusterNearRadii = 3.0;
+/// Rays per sample for one visibility shared by a far receiver's element links: they stand
+/// for all of its elements' rays, so they are more.
+constexpr int kSharedRays = 4;
 
 class LinkBuilder
 {
@@ -68,6 +71,7 @@ public:
     , Kind(Patches)
     , NodeFactor(nodes.Count())
     , ClusterVector(Patches)
+    , SharedVisibility(Patches, -1.0)
     , Owned(owned)
     , Ranks(ranks)
     , OpenAreaVector(Patches)
@@ -177,6 +181,7 @@ private:
       long long chunkRays = 0;
       for (int q = begin; q < end; ++q)
       {
+        SharedVisibility[q] = -1;
         Kind[q] = q == shooter || !Owned[q] ? LinkKind::None : Decide(shooter, q, shotFraction, scratch, chunkRays);
       }
       rays += chunkRays;
@@ -220,8 +225,8 @@ private:
     return visible > 0 ? LinkKind::Patch : LinkKind::None;
   }
 
-  /// Decide where one of the two is a face cluster (not flat): whole when each faces all of
-  /// the other from far enough (so that every cosine stays positive and one value holds),
+  /// Decide where one of the two is a face cluster (not flat): whole when far enough and the
+  /// receiver faces all of the shooter (so that its cosines stay positive),
   /// through node factors to a flat receiver, through a factor vector to a cluster.
   LinkKind DecideForCluster(int s, int q, std::vector<Vec3>& scratch, long long& rays)
   {
@@ -232,10 +237,19 @@ private:
       return LinkKind::None;
     }
     const double near = Factors.Planar(q) ? kNearRadii : kClusterNearRadii;
-    if (Norm(cq - cs) < near * (rs + rq) || !FacesBall(cs, rs, Factors.Cone(s), cq, rq) ||
-      !FacesBall(cq, rq, Factors.Cone(q), cs, rs) || G.patchOpenArea[q] <= 0)
+    // The receiver's elements must all face the whole shooter (so n . v is each one's
+    // factor); the shooter's may turn away in part, which its tree accounts for at the
+    // receiver's centre and which changes slowly across a receiver this far away.
+    if (Norm(cq - cs) < near * (rs + rq) || G.patchOpenArea[q] <= 0)
     {
       return LinkKind::Elements;
+    }
+    if (!FacesBall(cq, rq, Factors.Cone(q), cs, rs))
+    {
+      // Far, but some of the receiver's elements turn from part of the shooter: each gets
+      // its own factor, all one visibility (rays per element would not see more this far).
+      SharedVisibility[q] = Visible(s, q, rays, kSharedRays);
+      return SharedVisibility[q] > 0 ? LinkKind::Elements : LinkKind::None;
     }
     double received = 0;
     if (Factors.Planar(q))
@@ -260,15 +274,17 @@ private:
     return visible <= 0 ? LinkKind::None : Factors.Planar(q) ? LinkKind::Patch : LinkKind::Cluster;
   }
 
-  /// The unblocked fraction of the rays between two patches (1 where none can be blocked).
-  double Visible(int s, int q, long long& rays) const
+  /// The unblocked fraction of the rays between two patches (1 where none can be blocked),
+  /// `perSample` rays for each of Samples.
+  double Visible(int s, int q, long long& rays, int perSample = 1) const
   {
     if (Samples <= 0 || !Factors.MayBeBlockedBetweenPatches(q, s))
     {
       return 1.0;
     }
-    rays += Samples;
-    return static_cast<double>(Factors.VisibleRaysBetweenPatches(q, s, Samples)) / Samples;
+    const int samples = Samples * perSample;
+    rays += samples;
+    return static_cast<double>(Factors.VisibleRaysBetweenPatches(q, s, samples)) / samples;
   }
 
   /// Power a cluster's open elements receive per unit shot radiosity through vector v.
@@ -330,9 +346,11 @@ private:
   void LinkElements(int shooter, ShooterLinks& links, SolverStatistics& stats)
   {
     std::vector<int> elements;
+    ElementVisibility.clear();
     for (int q : links.Groups)
     {
       elements.insert(elements.end(), G.patchElements[q].begin(), G.patchElements[q].end());
+      ElementVisibility.insert(ElementVisibility.end(), G.patchElements[q].size(), SharedVisibility[q]);
     }
     if (Ranks.Distributed())
     {
@@ -374,7 +392,9 @@ private:
       for (int i = begin; i < end; ++i)
       {
         const size_t k = static_cast<size_t>(first) + static_cast<size_t>(i) * step;
-        Scratch[k] = Factors.ElementFactor(shooter, elements[k], Samples, scratch, counts);
+        const double shared = ElementVisibility[k];
+        Scratch[k] = shared < 0 ? Factors.ElementFactor(shooter, elements[k], Samples, scratch, counts)
+                                : Factors.ReceiverFactor(shooter, elements[k], scratch) * shared;
       }
       rays += counts.Rays;
       Factors.Count(counts, Samples);
@@ -396,10 +416,21 @@ private:
       before += r < Ranks.Rank() ? static_cast<size_t>(counts[r]) : 0;
       total += static_cast<size_t>(counts[r]);
     }
-    std::vector<double> ids(total, 0.0);
+    // Ids and shared visibilities (-1: per element) in one sum, the visibility shifted by 2
+    // so that the zeros of the other ranks' parts add nothing.
+    std::vector<double> ids(2 * total, 0.0);
     std::copy(mine.begin(), mine.end(), ids.begin() + static_cast<std::ptrdiff_t>(before));
+    for (size_t k = 0; k < mine.size(); ++k)
+    {
+      ids[total + before + k] = ElementVisibility[k] + 2;
+    }
     Ranks.Sum(ids);
-    const std::vector<int> all(ids.begin(), ids.end());
+    const std::vector<int> all(ids.begin(), ids.begin() + static_cast<std::ptrdiff_t>(total));
+    ElementVisibility.assign(ids.begin() + static_cast<std::ptrdiff_t>(total), ids.end());
+    for (double& v : ElementVisibility)
+    {
+      v -= 2;
+    }
     Scratch.assign(total, 0.0);
     ComputeFactors(shooter, all, Ranks.Rank(), Ranks.Ranks(), stats);
     Ranks.Sum(Scratch); // each factor computed by one rank, zero elsewhere: the sum is exact
@@ -417,6 +448,9 @@ private:
   std::vector<LinkKind> Kind;
   std::vector<double> NodeFactor, Scratch;
   std::vector<Vec3> ClusterVector; ///< per receiver cluster, this shooter's factor vector
+  /// Per receiver patch, one visibility for all its element links (-1: rays per element),
+  /// and the same per element of the list being computed.
+  std::vector<double> SharedVisibility, ElementVisibility;
   const std::vector<char>& Owned;
   Collective& Ranks;
   std::vector<Vec3> OpenAreaVector; ///< per patch, the sum of area x normal of its open elements
