@@ -5,7 +5,9 @@
 
 #include "FurnishedRoom.h"
 
+#include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <map>
 #include <tuple>
 
@@ -53,6 +55,49 @@ inline void AddSphere(RoomPolygons& r, const Vec3& centre, double radius, int tr
       }
     }
   }
+}
+
+/// Adds the triangles of an OFF file (a CGAL demo mesh), scaled so its largest extent is
+/// `size` and standing 1 cm above the floor at (x, y); returns false if it cannot be read.
+inline bool AddOffMesh(RoomPolygons& r, const std::string& path, double size, double x, double y, const Vec3& rho)
+{
+  std::ifstream in(path);
+  std::string magic;
+  int vertices = 0, faces = 0, edges = 0;
+  if (!(in >> magic >> vertices >> faces >> edges) || magic != "OFF")
+  {
+    return false;
+  }
+  std::vector<Vec3> points(vertices);
+  Vec3 lo{ 1e300, 1e300, 1e300 }, hi{ -1e300, -1e300, -1e300 };
+  for (Vec3& p : points)
+  {
+    in >> p.x >> p.y >> p.z;
+    for (int k = 0; k < 3; ++k)
+    {
+      lo[k] = std::min(lo[k], p[k]);
+      hi[k] = std::max(hi[k], p[k]);
+    }
+  }
+  const double scale = size / std::max({ hi.x - lo.x, hi.y - lo.y, hi.z - lo.z });
+  const int base = static_cast<int>(r.Points.size());
+  for (const Vec3& p : points)
+  {
+    r.Points.push_back({ x + (p.x - 0.5 * (lo.x + hi.x)) * scale, y + (p.y - 0.5 * (lo.y + hi.y)) * scale, 0.01 + (p.z - lo.z) * scale });
+  }
+  for (int f = 0; f < faces; ++f)
+  {
+    int count = 0;
+    in >> count;
+    for (int v = 0, id = 0; v < count && in >> id; ++v)
+    {
+      r.Connectivity.push_back(base + id);
+    }
+    r.Offsets.push_back(static_cast<int>(r.Connectivity.size()));
+    r.Reflectance.push_back(rho);
+    r.LightId.push_back(-1);
+  }
+  return static_cast<bool>(in);
 }
 
 /// Room 6 x 5 x 3 m with `lamps` 0.3 m ceiling lamps (each its own light) and `spheres`

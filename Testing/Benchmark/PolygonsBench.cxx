@@ -28,6 +28,7 @@ int main(int argc, char** argv)
   int triangles = 20000, spheres = 1, lamps = 3;
   double patch = 0.5, element = 0.1, cone = 30, budget = 0;
   SolverMethod method = SolverMethod::Auto;
+  std::vector<std::string> models; // OFF meshes to stand in the room beside the spheres
   for (int i = 1; i + 1 < argc; i += 2)
   {
     const std::string flag = argv[i];
@@ -39,6 +40,7 @@ int main(int argc, char** argv)
     else if (flag == "--element") element = std::atof(value);
     else if (flag == "--cluster-angle") cone = std::atof(value);
     else if (flag == "--time-budget") budget = std::atof(value);
+    else if (flag == "--off") models.push_back(value);
     else if (flag == "--method")
       method = std::strcmp(value, "hierarchical") == 0 ? SolverMethod::Hierarchical
         : std::strcmp(value, "progressive") == 0      ? SolverMethod::ProgressiveRefinement
@@ -46,7 +48,15 @@ int main(int argc, char** argv)
   }
   const double t0 = Now();
   SceneMesh mesh;
-  const RoomPolygons room = CurvedRoom(lamps, spheres, triangles);
+  RoomPolygons room = CurvedRoom(lamps, triangles > 0 ? spheres : 0, triangles);
+  for (size_t i = 0; i < models.size(); ++i)
+  {
+    if (!AddOffMesh(room, models[i], 1.2, 1.8 + 2.4 * (i % 2), 2.5, { 0.65, 0.6, 0.55 }))
+    {
+      std::fprintf(stderr, "cannot read %s as OFF\n", models[i].c_str());
+      return 1;
+    }
+  }
   const std::string error = MeshByMaterial(room, patch, element, cone, mesh);
   if (!error.empty())
   {

@@ -45,7 +45,6 @@ public:
   /// as the square of radius / distance (under 1 % for one node at 6 radii, less summed).
   static constexpr double kFarRadii = 6.0;
 
-private:
   struct Node
   {
     Vec3 Centre;     ///< area-weighted centroid
@@ -65,6 +64,12 @@ private:
     int First = 0, Count = 0; ///< range in Order
     int Left = -1, Right = -1;
   };
+  /// The nodes, the root first, children after their parent; each holds Order's range.
+  const std::vector<Node>& AllNodes() const { return Nodes; }
+  /// The elements in tree order.
+  const std::vector<int>& Elements() const { return Order; }
+
+private:
   int Build(int first, int count);
   void Summarise(Node& node) const;
   /// The far field of a node at x: returns sum A n . (x - c) / (pi |d|^4), with `d` from x

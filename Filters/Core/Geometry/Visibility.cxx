@@ -370,10 +370,7 @@ int SplitSeparatedPatches(const Visibility& rays, const SceneMesh& mesh, SceneGe
   // Elements of one patch that share an edge are joined when they see each other just
   // above the surface; a wall standing on the patch keeps its two sides apart.
   // (edge, element) pairs sorted by edge: a map of a million elements' edges is slow.
-  // Edges by position: a face cluster's elements lie on different planes, which the mesher
-  // gives points of their own.
   const long long points = static_cast<long long>(mesh.points.size());
-  const std::vector<int> welded = WeldedPointIds(mesh.points, 1e-9 * std::max(g.sceneDiagonal, 1e-300));
   std::vector<std::pair<long long, int>> edges;
   edges.reserve(mesh.connectivity.size());
   for (int e = 0; e < n; ++e)
@@ -381,7 +378,7 @@ int SplitSeparatedPatches(const Visibility& rays, const SceneMesh& mesh, SceneGe
     const int* ids = mesh.Polygon(e);
     for (int v = 0; v < mesh.PolygonSize(e); ++v)
     {
-      const long long a = welded[ids[v]], b = welded[ids[(v + 1) % mesh.PolygonSize(e)]];
+      const long long a = ids[v], b = ids[(v + 1) % mesh.PolygonSize(e)];
       edges.push_back({ std::min(a, b) * points + std::max(a, b), e });
     }
   }
@@ -394,13 +391,9 @@ int SplitSeparatedPatches(const Visibility& rays, const SceneMesh& mesh, SceneGe
   for (size_t i = 0; i + 1 < edges.size(); ++i)
   {
     const int a = edges[i].second, b = edges[i + 1].second;
-    // Between two elements at an angle (a curved cluster) the chord dips under the surface
-    // by about a quarter of their distance times the angle: lift over that.
-    const double bend = Norm(g.normal[a] - g.normal[b]) * Norm(g.centroid[a] - g.centroid[b]);
-    const double up = std::max(lift, bend);
     if (edges[i].first == edges[i + 1].first && g.elementPatch[a] == g.elementPatch[b] &&
       Root(parent, a) != Root(parent, b) &&
-      !rays.Occluded(g.centroid[a] + g.normal[a] * up, g.centroid[b] + g.normal[b] * up, 1e-6))
+      !rays.Occluded(g.centroid[a] + g.normal[a] * lift, g.centroid[b] + g.normal[b] * lift, 1e-6))
     {
       parent[Root(parent, a)] = Root(parent, b);
     }
@@ -410,6 +403,15 @@ int SplitSeparatedPatches(const Visibility& rays, const SceneMesh& mesh, SceneGe
   const size_t patches = g.patchElements.size();
   for (size_t p = 0; p < patches; ++p)
   {
+    // A face cluster (elements on several planes, FaceClusters.h) stays whole: it was
+    // grown over shared edges of a curved surface, where nothing stands, and its elements
+    // have points of their own per plane, so they share no edge by id.
+    const std::vector<int>& members = g.patchElements[p];
+    if (std::any_of(members.begin(), members.end(),
+          [&](int e) { return Dot(g.normal[e], g.normal[members[0]]) < 1 - 1e-9; }))
+    {
+      continue;
+    }
     std::map<int, std::vector<int>> groups;
     for (int e : g.patchElements[p])
     {

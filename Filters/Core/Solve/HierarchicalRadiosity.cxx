@@ -18,9 +18,11 @@ struct ShooterLinks
   std::vector<int> NodeFactorBegin; ///< where each patch link's node factors start
   std::vector<float> NodeFactors;   ///< F(node -> shooter) at each node of each linked patch
   std::vector<double> MeanFactors;  ///< their integral over the patch per unit of its open area
-  /// Face clusters taken whole: F(element -> shooter) = normal . vector for each element.
+  /// Face clusters' nodes (ReceiverNodes) taken whole: F(element -> shooter) = normal .
+  /// vector for each of their elements; grouped by patch with the element links.
   std::vector<int> Clusters;
   std::vector<float> ClusterVectors; ///< three per cluster link
+  std::vector<int> ClusterEnd;       ///< end of each group in Clusters
   std::vector<int> Groups;   ///< receiver patch of each element group
   std::vector<int> GroupEnd; ///< end of each group in Elements
   std::vector<int> Elements;
@@ -31,7 +33,7 @@ struct ShooterLinks
 
   double Bytes() const
   {
-    return static_cast<double>(Patches.size() * 4 + NodeFactors.size() + Clusters.size() * 4 + Groups.size() * 2 +
+    return static_cast<double>(Patches.size() * 4 + NodeFactors.size() + Clusters.size() * 4 + Groups.size() * 3 +
              Elements.size() * 2) * 4;
   }
 };
@@ -47,9 +49,13 @@ enum class LinkKind : char
 /// Centres closer than this many times the sum of two patches' radii are linked element by
 /// element: there the form factor varies too much across the receiver for one value.
 constexpr double kNearRadii = 2.0;
-/// The same for a face cluster taken whole: it has one value (a vector) at its centre, no
-/// corners to interpolate between, so it must be farther for the value to hold across it.
+/// Within this many of the sum of their radii a cluster pair's links are near: visibility
+/// is sampled per node and per element, not once for the pair.
 constexpr double kClusterNearRadii = 3.0;
+/// A cluster's node is taken whole where the shooter is farther from it than this many of
+/// the node's radii (one vector at its centre, no corners to interpolate between: the
+/// value must hold across it); nearer, its children are.
+constexpr double kNodeNearRadii = 4.0;
 /// Rays per sample for one visibility shared by a far receiver's element links: they stand
 /// for all of its elements' rays, so they are more.
 constexpr int kSharedRays = 4;
@@ -59,30 +65,25 @@ class LinkBuilder
 public:
   /// `owned`: the receiver patches this process links to; `ranks`: the processes solving
   /// together, which share the element factors of every shooter's near patches.
-  LinkBuilder(const SceneGeometry& g, ShooterFormFactors& factors, const PatchNodes& nodes, const WorkerPool& pool,
-    int samples, double threshold, const std::vector<char>& owned, Collective& ranks)
+  LinkBuilder(const SceneGeometry& g, ShooterFormFactors& factors, const PatchNodes& nodes,
+    const ReceiverNodes& clusters, const WorkerPool& pool, int samples, double threshold, const std::vector<char>& owned,
+    Collective& ranks)
     : G(g)
     , Factors(factors)
     , Nodes(nodes)
+    , ClusterNodes(clusters)
     , Pool(pool)
     , Samples(samples)
     , Threshold(threshold)
     , Patches(static_cast<int>(g.patchElements.size()))
     , Kind(Patches)
     , NodeFactor(nodes.Count())
-    , ClusterVector(Patches)
     , SharedVisibility(Patches, -1.0)
+    , NodeLinks(Patches)
+    , NodeElements(Patches)
     , Owned(owned)
     , Ranks(ranks)
-    , OpenAreaVector(Patches)
   {
-    for (size_t e = 0; e < g.normal.size(); ++e)
-    {
-      if (!g.sheltered[e])
-      {
-        OpenAreaVector[g.elementPatch[e]] += g.normal[e] * g.area[e];
-      }
-    }
   }
 
   /// `shotFraction`: the largest fraction of a solution's emitted power this shot carries.
@@ -97,11 +98,7 @@ public:
       {
         AddPatchLink(q, links);
       }
-      else if (Kind[q] == LinkKind::Cluster)
-      {
-        AddClusterLink(q, links);
-      }
-      else if (Kind[q] == LinkKind::Elements)
+      else if (Kind[q] == LinkKind::Cluster || Kind[q] == LinkKind::Elements)
       {
         links.Groups.push_back(q);
       }
@@ -130,15 +127,19 @@ private:
     links.ReceivingArea += covered;
   }
 
-  void AddClusterLink(int q, ShooterLinks& links) const
+  /// The node links of group q (a cluster receiver), after the groups before it.
+  void AddClusterLinks(int q, ShooterLinks& links) const
   {
-    const Vec3& v = ClusterVector[q];
-    links.Clusters.push_back(q);
-    for (int k = 0; k < 3; ++k)
+    for (const auto& link : NodeLinks[q])
     {
-      links.ClusterVectors.push_back(static_cast<float>(v[k]));
+      links.Clusters.push_back(link.first);
+      for (int k = 0; k < 3; ++k)
+      {
+        links.ClusterVectors.push_back(static_cast<float>(link.second[k]));
+      }
+      links.ReceivingArea += Dot(ClusterNodes.OpenArea[link.first], link.second);
     }
-    links.ReceivingArea += Receiving(q, v);
+    links.ClusterEnd.push_back(static_cast<int>(links.Clusters.size()));
   }
 
   /// Scales every link of the shooter so that it delivers no more than it shoots, and
@@ -225,43 +226,39 @@ private:
     return visible > 0 ? LinkKind::Patch : LinkKind::None;
   }
 
-  /// Decide where one of the two is a face cluster (not flat): whole when far enough and the
-  /// receiver faces all of the shooter (so that its cosines stay positive),
-  /// through node factors to a flat receiver, through a factor vector to a cluster.
+  /// Decide where one of the two is a face cluster (not flat). A flat receiver is linked
+  /// whole, through node factors from the cluster's tree, where it is far and faces all of
+  /// the shooter; a cluster receiver links node by node (LinkNode).
   LinkKind DecideForCluster(int s, int q, std::vector<Vec3>& scratch, long long& rays)
   {
     const Vec3 &cs = Factors.Centre(s), &cq = Factors.Centre(q);
     const double rs = Factors.Radius(s), rq = Factors.Radius(q);
-    if (BehindBall(cs, rs, Factors.Cone(s), cq, rq) || BehindBall(cq, rq, Factors.Cone(q), cs, rs))
+    if (BehindBall(cs, rs, Factors.Cone(s), cq, rq) || BehindBall(cq, rq, Factors.Cone(q), cs, rs) ||
+      G.patchOpenArea[q] <= 0)
     {
       return LinkKind::None;
     }
-    const double near = Factors.Planar(q) ? kNearRadii : kClusterNearRadii;
-    // The receiver's elements must all face the whole shooter (so n . v is each one's
-    // factor); the shooter's may turn away in part, which its tree accounts for at the
-    // receiver's centre and which changes slowly across a receiver this far away.
-    if (Norm(cq - cs) < near * (rs + rq) || G.patchOpenArea[q] <= 0)
+    const bool near = Norm(cq - cs) < (Factors.Planar(q) ? kNearRadii : kClusterNearRadii) * (rs + rq);
+    if (!Factors.Planar(q))
+    {
+      NodeLinks[q].clear();
+      NodeElements[q].clear();
+      double shared = -2; // not cast yet
+      LinkNode(s, q, ClusterNodes.Root[q], near, shared, rays);
+      return NodeLinks[q].empty() && NodeElements[q].empty() ? LinkKind::None : LinkKind::Cluster;
+    }
+    if (near)
     {
       return LinkKind::Elements;
     }
     if (!FacesBall(cq, rq, Factors.Cone(q), cs, rs))
     {
-      // Far, but some of the receiver's elements turn from part of the shooter: each gets
-      // its own factor, all one visibility (rays per element would not see more this far).
+      // Far, but the receiver's plane cuts part of the shooter: each element gets its own
+      // factor, all one visibility (rays per element would not see more this far).
       SharedVisibility[q] = Visible(s, q, rays, kSharedRays);
       return SharedVisibility[q] > 0 ? LinkKind::Elements : LinkKind::None;
     }
-    double received = 0;
-    if (Factors.Planar(q))
-    {
-      received = NodeFactors(s, q, scratch);
-    }
-    else
-    {
-      ClusterVector[q] = Factors.FactorVector(s, cq);
-      received = Receiving(q, ClusterVector[q]);
-    }
-    if (!(received > 0))
+    if (!(NodeFactors(s, q, scratch) > 0))
     {
       return LinkKind::None;
     }
@@ -270,8 +267,67 @@ private:
     {
       NodeFactor[j] *= visible;
     }
-    ClusterVector[q] = ClusterVector[q] * visible;
-    return visible <= 0 ? LinkKind::None : Factors.Planar(q) ? LinkKind::Patch : LinkKind::Cluster;
+    return visible > 0 ? LinkKind::Patch : LinkKind::None;
+  }
+
+  /// Links node n of cluster q: whole (a factor vector at its centre) where the shooter is
+  /// far from it and in front of all its elements, else through its children, and at a
+  /// leaf element by element. Visibility: per node and element for a near pair, else one
+  /// for the pair (`shared`, cast once).
+  void LinkNode(int s, int q, int n, bool near, double& shared, long long& rays)
+  {
+    const ReceiverNodes& c = ClusterNodes;
+    const Vec3& cs = Factors.Centre(s);
+    const double rs = Factors.Radius(s);
+    if (BehindBall(cs, rs, Factors.Cone(s), c.Centre[n], c.Radius[n]) ||
+      BehindBall(c.Centre[n], c.Radius[n], c.Cone[n], cs, rs))
+    {
+      return;
+    }
+    const double distance = Norm(c.Centre[n] - cs);
+    if (distance - rs >= kNodeNearRadii * c.Radius[n] && FacesBall(c.Centre[n], c.Radius[n], c.Cone[n], cs, rs))
+    {
+      const Vec3 v = Factors.FactorVector(s, c.Centre[n]);
+      const double visible = Dot(c.OpenArea[n], v) > 0 ? (near ? NodeVisible(s, q, n, rays) : Shared(s, q, shared, rays)) : 0;
+      if (visible > 0)
+      {
+        NodeLinks[q].push_back({ n, v * visible });
+      }
+      return;
+    }
+    if (c.Left[n] >= 0)
+    {
+      LinkNode(s, q, c.Left[n], near, shared, rays);
+      LinkNode(s, q, c.Right[n], near, shared, rays);
+      return;
+    }
+    const double mode = near ? -1.0 : Shared(s, q, shared, rays);
+    for (int i = c.ElementBegin[n]; i < c.ElementEnd[n] && mode != 0; ++i)
+    {
+      NodeElements[q].push_back({ c.Elements[i], mode });
+    }
+  }
+
+  double Shared(int s, int q, double& shared, long long& rays) const
+  {
+    if (shared < -1)
+    {
+      shared = Visible(s, q, rays, kSharedRays);
+    }
+    return shared;
+  }
+
+  /// The unblocked fraction of rays from the shooter to node n's elements.
+  double NodeVisible(int s, int q, int n, long long& rays) const
+  {
+    if (Samples <= 0 || !Factors.MayBeBlockedBetweenPatches(q, s))
+    {
+      return 1.0;
+    }
+    const ReceiverNodes& c = ClusterNodes;
+    rays += Samples;
+    return static_cast<double>(Factors.VisibleRaysToElements(s, c.Elements.data() + c.ElementBegin[n],
+             c.ElementEnd[n] - c.ElementBegin[n], Samples, static_cast<std::uint64_t>(n))) / Samples;
   }
 
   /// The unblocked fraction of the rays between two patches (1 where none can be blocked),
@@ -287,8 +343,6 @@ private:
     return static_cast<double>(Factors.VisibleRaysBetweenPatches(q, s, samples)) / samples;
   }
 
-  /// Power a cluster's open elements receive per unit shot radiosity through vector v.
-  double Receiving(int q, const Vec3& v) const { return Dot(OpenAreaVector[q], v); }
 
   /// F(node -> s) at q's nodes, scaled so that their interpolant integrates over q like a
   /// rule exact for quadratics: 3/4 of the fan triangles' centroid rule plus 1/4 of their
@@ -345,12 +399,24 @@ private:
   /// whole patches would leave one rank waiting for another at every link-building shot.
   void LinkElements(int shooter, ShooterLinks& links, SolverStatistics& stats)
   {
-    std::vector<int> elements;
+    std::vector<int> elements, groupSize;
     ElementVisibility.clear();
     for (int q : links.Groups)
     {
+      AddClusterLinks(q, links);
+      if (Kind[q] == LinkKind::Cluster)
+      {
+        for (const auto& e : NodeElements[q])
+        {
+          elements.push_back(e.first);
+          ElementVisibility.push_back(e.second);
+        }
+        groupSize.push_back(static_cast<int>(NodeElements[q].size()));
+        continue;
+      }
       elements.insert(elements.end(), G.patchElements[q].begin(), G.patchElements[q].end());
       ElementVisibility.insert(ElementVisibility.end(), G.patchElements[q].size(), SharedVisibility[q]);
+      groupSize.push_back(static_cast<int>(G.patchElements[q].size()));
     }
     if (Ranks.Distributed())
     {
@@ -363,9 +429,9 @@ private:
     }
     stats.FormFactorCount += static_cast<long long>(elements.size());
     size_t k = 0;
-    for (int q : links.Groups)
+    for (size_t group = 0; group < links.Groups.size(); ++group)
     {
-      for (size_t j = 0; j < G.patchElements[q].size(); ++j, ++k)
+      for (int j = 0; j < groupSize[group]; ++j, ++k)
       {
         const float f = static_cast<float>(Scratch[k]);
         if (f > 0)
@@ -447,13 +513,16 @@ private:
   const int Patches;
   std::vector<LinkKind> Kind;
   std::vector<double> NodeFactor, Scratch;
-  std::vector<Vec3> ClusterVector; ///< per receiver cluster, this shooter's factor vector
+  const ReceiverNodes& ClusterNodes;
+  /// Per receiver cluster: its node links (node, factor vector) and the elements linked one
+  /// by one (element, shared visibility or -1), made in Classify.
+  std::vector<std::vector<std::pair<int, Vec3>>> NodeLinks;
+  std::vector<std::vector<std::pair<int, double>>> NodeElements;
   /// Per receiver patch, one visibility for all its element links (-1: rays per element),
   /// and the same per element of the list being computed.
   std::vector<double> SharedVisibility, ElementVisibility;
   const std::vector<char>& Owned;
   Collective& Ranks;
-  std::vector<Vec3> OpenAreaVector; ///< per patch, the sum of area x normal of its open elements
 };
 
 std::vector<Vec3> MeanReflectance(const SceneMesh& mesh, const SceneGeometry& g)
@@ -475,8 +544,7 @@ double DistributeAlongLinks(ShootingState<Channel>& state, const WorkerPool& poo
   const std::vector<Vec3>& meanReflectance)
 {
   const int patchLinks = static_cast<int>(links.Patches.size());
-  const int wholeLinks = patchLinks + static_cast<int>(links.Clusters.size());
-  const int items = wholeLinks + static_cast<int>(links.Groups.size());
+  const int items = patchLinks + static_cast<int>(links.Groups.size());
   // Every item touches one receiver patch only, so the items run in parallel safely.
   pool.For(items, 8, [&](int begin, int end) {
     for (int i = begin; i < end; ++i)
@@ -487,13 +555,12 @@ double DistributeAlongLinks(ShootingState<Channel>& state, const WorkerPool& poo
         state.GatherPatch(q, links.NodeFactors.data() + links.NodeFactorBegin[i], links.MeanFactors[i], meanReflectance[q]);
         continue;
       }
-      if (i < wholeLinks)
+      const int group = i - patchLinks;
+      for (int c = group == 0 ? 0 : links.ClusterEnd[group - 1]; c < links.ClusterEnd[group]; ++c)
       {
-        const float* v = links.ClusterVectors.data() + 3 * (i - patchLinks);
-        state.GatherCluster(links.Clusters[i - patchLinks], Vec3{ v[0], v[1], v[2] });
-        continue;
+        const float* v = links.ClusterVectors.data() + 3 * c;
+        state.GatherCluster(links.Clusters[c], Vec3{ v[0], v[1], v[2] });
       }
-      const int group = i - wholeLinks;
       const int first = group == 0 ? 0 : links.GroupEnd[group - 1];
       for (int j = first; j < links.GroupEnd[group]; ++j)
       {
@@ -516,11 +583,12 @@ void Shoot(const SceneMesh& mesh, const SceneGeometry& g, const Visibility& rays
   ShooterFormFactors estimator(mesh, g, rays, pool, options.Visibility == EffectMode::Auto);
   estimator.SetReceivers(&state.OwnedPatchFlags());
   const PatchNodes nodes(g, estimator.PatchLoops(), estimator.Centres());
+  const ReceiverNodes clusters(g, estimator);
   state.EnablePatchGathering(nodes);
-  state.EnableClusterGathering();
+  state.EnableClusterGathering(clusters);
   const int samples = options.Visibility == EffectMode::Off ? 0 : options.Samples;
   const double refine = options.RefinementThreshold > 0 ? options.RefinementThreshold : 2.0; // 2: never
-  LinkBuilder builder(g, estimator, nodes, pool, samples, refine, state.OwnedPatchFlags(), state.Ranks());
+  LinkBuilder builder(g, estimator, nodes, clusters, pool, samples, refine, state.OwnedPatchFlags(), state.Ranks());
   const std::vector<Vec3> meanReflectance = MeanReflectance(mesh, g);
   std::vector<ShooterLinks> links(state.Patches);
   std::vector<double> factors;

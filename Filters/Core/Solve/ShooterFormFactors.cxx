@@ -591,6 +591,21 @@ int ShooterFormFactors::VisibleRaysBetweenPatches(int receiver, int shooter, int
   return visible;
 }
 
+int ShooterFormFactors::VisibleRaysToElements(
+  int shooter, const int* elements, int count, int samples, std::uint64_t seed) const
+{
+  SampleStream random(static_cast<std::uint64_t>(shooter), seed, 13);
+  int visible = 0;
+  for (int r = 0; r < samples && count > 0; ++r)
+  {
+    const int pick = std::min(count - 1, static_cast<int>((r + random.Next()) / samples * count));
+    const int e = elements[pick];
+    const Vec3 from = Geometry.centroid[e] + Geometry.normal[e] * Epsilon;
+    visible += Rays.Occluded(from, SamplePoint(shooter, r, samples, random), 0.0) ? 0 : 1;
+  }
+  return visible;
+}
+
 double ShooterFormFactors::ReceiverFactor(int patch, int e, std::vector<Vec3>& scratch) const
 {
   const Vec3& c = Geometry.centroid[e];

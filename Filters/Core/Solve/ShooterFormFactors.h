@@ -89,6 +89,11 @@ public:
   const Vec3& Normal(int patch) const { return PatchNormal[patch]; }
   /// Largest distance from the centre to a point of the patch.
   double Radius(int patch) const { return PatchRadius[patch]; }
+  /// The patch's cluster tree (null for a flat patch or one of few elements).
+  const ClusterTree* Tree(int patch) const { return Trees[patch].get(); }
+  /// Unblocked rays of `samples` from stratified points of the shooter to the centroids
+  /// of `count` elements (picked evenly over them), `seed` decorrelating calls.
+  int VisibleRaysToElements(int shooter, const int* elements, int count, int samples, std::uint64_t seed) const;
   /// The cone of the patch's normals (spread 0 for a flat patch, more for a face cluster).
   const NormalCone& Cone(int patch) const { return PatchCone[patch]; }
   /// True when the patch is flat: one element, or coplanar elements with one outline.

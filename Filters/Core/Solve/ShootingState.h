@@ -8,6 +8,7 @@
 #include "Solve/RadiositySolver.h"
 #include "Solve/Channels.h"
 #include "Solve/RankTable.h"
+#include "Solve/ReceiverNodes.h"
 #include "Base/WorkerPool.h"
 
 #include <algorithm>
@@ -173,22 +174,24 @@ public:
     }
   }
 
-  /// A face cluster receives the shot as a whole: F(e -> shooter) = n_e . v for each of its
-  /// open elements, applied in Finish; what they reflect joins its unshot energy now.
-  void GatherCluster(int q, const Vec3& v)
+  /// A face cluster's node (ReceiverNodes) receives the shot as a whole: F(e -> shooter) =
+  /// n_e . v for each of its open elements, applied in Finish; what they reflect joins the
+  /// cluster's unshot energy now. Callers keep one cluster's nodes in one thread.
+  void GatherCluster(int node, const Vec3& v)
   {
     for (int m = 0; m < L; ++m)
     {
       for (int k = 0; k < 3; ++k)
       {
-        ClusterGathered[3 * Index(q, m) + k] += Shot[m] * v[k];
+        ClusterGathered[3 * Index(node, m) + k] += Shot[m] * v[k];
       }
     }
+    const int q = Clusters->Patch[node];
     if (!Reflect || G.patchOpenArea[q] <= 0)
     {
       return;
     }
-    const Vec3* r = ClusterReflectance.data() + 3 * static_cast<size_t>(q);
+    const Vec3* r = ClusterReflectance.data() + 3 * static_cast<size_t>(node);
     const Vec3 reflected = Vec3{ Dot(r[0], v), Dot(r[1], v), Dot(r[2], v) } * (1.0 / G.patchOpenArea[q]);
     for (int m = 0; m < L; ++m)
     {
@@ -196,17 +199,23 @@ public:
     }
   }
 
-  /// Cluster gathering needs three values per patch and solution; only the hierarchical
-  /// solver asks. Per channel, the sum of reflectance x area x normal of open elements.
-  void EnableClusterGathering()
+  /// Cluster gathering needs three values per node and solution; only the hierarchical
+  /// solver asks. Per node and channel, the sum of reflectance x area x normal of its open
+  /// elements.
+  void EnableClusterGathering(const ReceiverNodes& nodes)
   {
-    ClusterGathered.assign(3 * static_cast<size_t>(Patches) * L, Value());
-    ClusterReflectance.assign(3 * static_cast<size_t>(Patches), Vec3());
-    for (int e = 0; e < Elements; ++e)
+    Clusters = &nodes;
+    ClusterGathered.assign(3 * static_cast<size_t>(nodes.Count()) * L, Value());
+    ClusterReflectance.assign(3 * static_cast<size_t>(nodes.Count()), Vec3());
+    for (int n = 0; n < nodes.Count(); ++n)
     {
-      for (int c = 0; c < 3 && !G.sheltered[e]; ++c)
+      for (int i = nodes.ElementBegin[n]; i < nodes.ElementEnd[n]; ++i)
       {
-        ClusterReflectance[3 * static_cast<size_t>(G.elementPatch[e]) + c] += G.normal[e] * (G.area[e] * Mesh.reflectance[e][c]);
+        const int e = nodes.Elements[i];
+        for (int c = 0; c < 3 && !G.sheltered[e]; ++c)
+        {
+          ClusterReflectance[3 * static_cast<size_t>(n) + c] += G.normal[e] * (G.area[e] * Mesh.reflectance[e][c]);
+        }
       }
     }
   }
@@ -574,21 +583,25 @@ private:
     }
   }
 
-  /// Each open element of a cluster turns the gathered vectors into its own irradiance.
+  /// Each open element of a cluster node turns the node's gathered vectors into its own
+  /// irradiance.
   void FinishClusters()
   {
-    for (int e = 0; e < Elements && !ClusterGathered.empty(); ++e)
+    for (int node = 0; Clusters && node < Clusters->Count(); ++node)
     {
-      const int q = G.elementPatch[e];
-      if (!Owned[q] || G.sheltered[e])
+      if (!Owned[Clusters->Patch[node]])
       {
         continue;
       }
-      const Vec3& n = G.normal[e];
-      for (int m = 0; m < L; ++m)
+      for (int i = Clusters->ElementBegin[node]; i < Clusters->ElementEnd[node]; ++i)
       {
-        const Value* v = ClusterGathered.data() + 3 * Index(q, m);
-        Radiosity[Index(e, m)] += Channel::Reflect(Mesh.reflectance[e], v[0] * n.x + v[1] * n.y + v[2] * n.z, 1.0);
+        const int e = Clusters->Elements[i];
+        const Vec3& n = G.normal[e];
+        for (int m = 0; m < L && !G.sheltered[e]; ++m)
+        {
+          const Value* v = ClusterGathered.data() + 3 * Index(node, m);
+          Radiosity[Index(e, m)] += Channel::Reflect(Mesh.reflectance[e], v[0] * n.x + v[1] * n.y + v[2] * n.z, 1.0);
+        }
       }
     }
   }
@@ -638,6 +651,7 @@ private:
   std::vector<double> InitialPer, RemainingPer;
   double Initial = 0, ShotSum = 0;
   const PatchNodes* Nodes = nullptr;
+  const ReceiverNodes* Clusters = nullptr;
   Collective Group;
   std::vector<char> Owned;
   std::vector<int> OwnedList;
