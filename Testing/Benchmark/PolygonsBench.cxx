@@ -6,6 +6,7 @@
 #include "Solve/LightSolutions.h"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -29,6 +30,7 @@ int main(int argc, char** argv)
   double patch = 0.5, element = 0.1, cone = 30, budget = 0;
   SolverMethod method = SolverMethod::Auto;
   std::vector<std::string> models; // OFF meshes to stand in the room beside the spheres
+  bool compare = false;             // also solve by progressive refinement and print the difference
   for (int i = 1; i + 1 < argc; i += 2)
   {
     const std::string flag = argv[i];
@@ -41,6 +43,7 @@ int main(int argc, char** argv)
     else if (flag == "--cluster-angle") cone = std::atof(value);
     else if (flag == "--time-budget") budget = std::atof(value);
     else if (flag == "--off") models.push_back(value);
+    else if (flag == "--compare") compare = std::strcmp(value, "progressive") == 0;
     else if (flag == "--method")
       method = std::strcmp(value, "hierarchical") == 0 ? SolverMethod::Hierarchical
         : std::strcmp(value, "progressive") == 0      ? SolverMethod::ProgressiveRefinement
@@ -77,5 +80,24 @@ int main(int argc, char** argv)
   std::printf("%d,%d,%zu,%d,%g,%s,%d,%d,%lld,%lld,%lld,%.1f,%.2f,%.2f,%.2f,%.2f,%.0f\n", inputTriangles, mesh.NumberOfPolygons(),
     solver.Geometry().patchElements.size(), lamps, cone, MethodName(st.Method), st.Shots, st.Converged ? 1 : 0,
     st.RayCount, st.PatchLinks, st.ElementLinks, st.LinkBytes / 1e6, t1 - t0, t2 - t1, t3 - t2, t3 - t0, PeakMemoryMB());
+  if (compare)
+  {
+    options.Solver = SolverMethod::ProgressiveRefinement;
+    const Solution p = SolveLights(solver, mesh, LightGrouping::OnePerLight(lamps), {}, SolutionMode::LightTagged, options);
+    const SceneGeometry& g = solver.Geometry();
+    for (int m = 0; m < lamps; ++m)
+    {
+      double diff = 0, sum = 0;
+      for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
+      {
+        const Vec3& a = s.Radiosity[static_cast<size_t>(e) * lamps + m];
+        const Vec3& b = p.Radiosity[static_cast<size_t>(e) * lamps + m];
+        diff += (std::fabs(a.x - b.x) + std::fabs(a.y - b.y) + std::fabs(a.z - b.z)) * g.area[e];
+        sum += (b.x + b.y + b.z) * g.area[e];
+      }
+      std::printf("light %d: %s differs from progressive refinement by %.3f %% (mean, area-weighted)\n", m,
+        MethodName(st.Method), 100 * diff / sum);
+    }
+  }
   return 0;
 }

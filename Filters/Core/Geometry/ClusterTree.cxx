@@ -1,5 +1,6 @@
 #include "Geometry/ClusterTree.h"
 #include "Geometry/FormFactor.h"
+#include "Geometry/Polygon.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,12 +11,6 @@ namespace radiosity
 namespace
 {
 constexpr int kLeafSize = 4;
-
-/// The angle between unit `axis` and `d` (of length `length` > 0).
-double AngleTo(const Vec3& axis, const Vec3& d, double length)
-{
-  return std::acos(std::max(-1.0, std::min(1.0, Dot(axis, d) / length)));
-}
 } // namespace
 
 bool FacesBall(const Vec3& centre, double radius, const NormalCone& cone, const Vec3& c, double r)
@@ -26,9 +21,11 @@ bool FacesBall(const Vec3& centre, double radius, const NormalCone& cone, const 
   {
     return false;
   }
-  // Every normal is within Spread of the axis, so its angle to d is at most phi + Spread.
-  const double worst = std::min(Pi, AngleTo(cone.Axis, d, length) + cone.Spread);
-  return length * std::cos(worst) > r + radius;
+  // Every normal is within Spread of the axis, so its angle to d is at most phi + Spread:
+  // the cosine of that (negative past pi / 2, where the test fails anyway) bounds n . d.
+  const double cosPhi = std::max(-1.0, std::min(1.0, Dot(cone.Axis, d) / length));
+  const double sinPhi = std::sqrt(1 - cosPhi * cosPhi);
+  return length * (cosPhi * cone.CosSpread - sinPhi * cone.SinSpread) > r + radius;
 }
 
 bool BehindBall(const Vec3& centre, double radius, const NormalCone& cone, const Vec3& c, double r)
@@ -39,29 +36,33 @@ bool BehindBall(const Vec3& centre, double radius, const NormalCone& cone, const
   {
     return false;
   }
-  const double best = std::max(0.0, AngleTo(cone.Axis, d, length) - cone.Spread);
-  return length * std::cos(best) < -(r + radius);
+  const double cosPhi = std::max(-1.0, std::min(1.0, Dot(cone.Axis, d) / length));
+  if (cosPhi >= cone.CosSpread)
+  {
+    return false; // d is inside the cone: some normal points along it
+  }
+  const double sinPhi = std::sqrt(1 - cosPhi * cosPhi);
+  return length * (cosPhi * cone.CosSpread + sinPhi * cone.SinSpread) < -(r + radius);
 }
 
 NormalCone ConeOf(const SceneGeometry& g, const std::vector<int>& elements)
 {
-  NormalCone cone;
   Vec3 sum;
   for (int e : elements)
   {
     sum += g.normal[e] * g.area[e];
   }
-  cone.Axis = Normalized(sum);
-  if (Norm(cone.Axis) == 0)
+  const Vec3 axis = Normalized(sum);
+  if (Norm(axis) == 0)
   {
-    cone.Spread = Pi;
-    return cone;
+    return NormalCone(axis, Pi);
   }
+  double spread = 0;
   for (int e : elements)
   {
-    cone.Spread = std::max(cone.Spread, std::acos(std::max(-1.0, std::min(1.0, Dot(cone.Axis, g.normal[e])))));
+    spread = std::max(spread, std::acos(std::max(-1.0, std::min(1.0, Dot(axis, g.normal[e])))));
   }
-  return cone;
+  return NormalCone(axis, spread);
 }
 
 Vec3 PolygonFactorVector(const Vec3& x, const Vec3* loop, int count)
@@ -221,6 +222,52 @@ Vec3 ClusterTree::FactorVector(const Vec3& x) const
   Vec3 sum;
   NodeVector(0, x, sum);
   return sum;
+}
+
+bool ClusterTree::FactorVectorFor(const Vec3& c, double r, const NormalCone& cone, double clearance, Vec3& v) const
+{
+  v = Vec3();
+  return NodeVectorFor(0, c, r, cone, clearance, v);
+}
+
+bool ClusterTree::NodeVectorFor(
+  int index, const Vec3& c, double r, const NormalCone& cone, double clearance, Vec3& sum) const
+{
+  const Node& node = Nodes[index];
+  if (BehindBall(node.Centre, node.Radius, node.Cone, c, r) || BehindBall(c, r, cone, node.Centre, node.Radius))
+  {
+    return true; // faces away from the whole receiver, or behind all its planes: nothing
+  }
+  if (FacesBall(c, r, cone, node.Centre, node.Radius) && Norm(node.Centre - c) - node.Radius >= clearance * r)
+  {
+    NodeVector(index, c, sum);
+    return true;
+  }
+  if (node.Left >= 0)
+  {
+    return NodeVectorFor(node.Left, c, r, cone, clearance, sum) && NodeVectorFor(node.Right, c, r, cone, clearance, sum);
+  }
+  if (cone.Spread > kFlatReceiver || Norm(node.Centre - c) - node.Radius < clearance * r)
+  {
+    return false;
+  }
+  // A leaf cut by a nearly flat receiver's planes: each polygon clipped to the front of the
+  // receiver's mean plane, which stands for all of them.
+  std::vector<Vec3> clipped;
+  for (int i = node.First; i < node.First + node.Count; ++i)
+  {
+    const int e = Order[i];
+    if (Dot(G.normal[e], c - G.centroid[e]) <= 0)
+    {
+      continue;
+    }
+    ClipToHalfSpace(Loops.data() + Mesh.offsets[e], Mesh.PolygonSize(e), c, cone.Axis, clipped);
+    if (clipped.size() >= 3)
+    {
+      sum += PolygonFactorVector(c, clipped.data(), static_cast<int>(clipped.size()));
+    }
+  }
+  return true;
 }
 
 void ClusterTree::NodeVector(int index, const Vec3& x, Vec3& sum) const

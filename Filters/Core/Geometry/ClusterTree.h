@@ -6,6 +6,7 @@
 
 #include "Geometry/Scene.h"
 
+#include <cmath>
 #include <vector>
 
 namespace radiosity
@@ -16,6 +17,16 @@ struct NormalCone
 {
   Vec3 Axis;         ///< unit; zero where the normals cancel
   double Spread = 0; ///< half-angle in radians (Pi: no cone)
+  double CosSpread = 1, SinSpread = 0; ///< of Spread: the ball tests run without trigonometry
+
+  NormalCone() = default;
+  NormalCone(const Vec3& axis, double spread)
+    : Axis(axis)
+    , Spread(spread)
+    , CosSpread(std::cos(spread))
+    , SinSpread(std::sin(spread))
+  {
+  }
 };
 
 /// True when every point of the ball (centre `c`, radius `r`) lies strictly in front of
@@ -41,9 +52,20 @@ public:
 
   const NormalCone& Cone() const { return Nodes.front().Cone; }
 
+  /// FactorVector at the centre `c` of a receiver (a ball of radius `r` whose polygons'
+  /// normals lie in `cone`) such that n . v is each receiving polygon's factor and holds
+  /// across the ball: the polygons behind all the receiver's planes are left out, those cut
+  /// by them clipped by the receiver's mean plane where it is nearly flat, and it fails
+  /// (returns false) where a receiver of wider normals cuts a leaf or a part nearer than
+  /// `clearance` x r contributes.
+  bool FactorVectorFor(const Vec3& c, double r, const NormalCone& cone, double clearance, Vec3& v) const;
+
   /// A node is far from x beyond this many of its radii: the error of the far field falls
   /// as the square of radius / distance (under 1 % for one node at 6 radii, less summed).
   static constexpr double kFarRadii = 6.0;
+  /// A receiver whose normals spread less than this (radians, 10 degrees) is clipped by its
+  /// mean plane alone, where one of its planes cuts a leaf (FactorVectorFor).
+  static constexpr double kFlatReceiver = 10.0 * 3.14159265358979323846 / 180.0;
 
   struct Node
   {
@@ -77,6 +99,7 @@ private:
   static double FarField(const Node& node, const Vec3& x, Vec3& d);
   double NodeFactor(int node, const Vec3& x, const Vec3& normal, std::vector<Vec3>& scratch) const;
   void NodeVector(int node, const Vec3& x, Vec3& sum) const;
+  bool NodeVectorFor(int node, const Vec3& c, double r, const NormalCone& cone, double clearance, Vec3& sum) const;
 
   const SceneMesh& Mesh;
   const SceneGeometry& G;

@@ -284,10 +284,9 @@ private:
     {
       return;
     }
-    const double distance = Norm(c.Centre[n] - cs);
-    if (distance - rs >= kNodeNearRadii * c.Radius[n] && FacesBall(c.Centre[n], c.Radius[n], c.Cone[n], cs, rs))
+    Vec3 v;
+    if (WholeNodeVector(s, c.Centre[n], c.Radius[n], c.Cone[n], v))
     {
-      const Vec3 v = Factors.FactorVector(s, c.Centre[n]);
       const double visible = Dot(c.OpenArea[n], v) > 0 ? (near ? NodeVisible(s, q, n, rays) : Shared(s, q, shared, rays)) : 0;
       if (visible > 0)
       {
@@ -306,6 +305,25 @@ private:
     {
       NodeElements[q].push_back({ c.Elements[i], mode });
     }
+  }
+
+  /// The factor vector from shooter s to a receiver node where one holds for all of it: the
+  /// shooter (each part of it, where it is a cluster) far from the node and in front of
+  /// all its elements.
+  bool WholeNodeVector(int s, const Vec3& c, double r, const NormalCone& cone, Vec3& v) const
+  {
+    if (const ClusterTree* tree = Factors.Tree(s))
+    {
+      return tree->FactorVectorFor(c, r, cone, kNodeNearRadii, v);
+    }
+    const Vec3& cs = Factors.Centre(s);
+    const double rs = Factors.Radius(s);
+    if (Norm(c - cs) - rs < kNodeNearRadii * r || !FacesBall(c, r, cone, cs, rs))
+    {
+      return false;
+    }
+    v = Factors.FactorVector(s, c);
+    return true;
   }
 
   double Shared(int s, int q, double& shared, long long& rays) const

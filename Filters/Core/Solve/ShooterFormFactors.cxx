@@ -98,13 +98,20 @@ void ShooterFormFactors::BuildTrees()
   const int patches = static_cast<int>(Geometry.patchElements.size());
   PatchCone.assign(patches, NormalCone());
   Trees.resize(patches);
+  bool clusters = false;
+  for (int p = 0; p < patches && !clusters; ++p)
+  {
+    clusters = !Planar(p);
+  }
   Pool.For(patches, 16, [&](int begin, int end) {
     for (int p = begin; p < end; ++p)
     {
       const std::vector<int>& elements = Geometry.patchElements[p];
-      PatchCone[p] = Planar(p) ? NormalCone{ PatchNormal[p], 0.0 } : ConeOf(Geometry, elements);
-      // Below this a plain sum over the elements is as fast as a walk down a tree.
-      if (!Planar(p) && elements.size() >= 8)
+      PatchCone[p] = Planar(p) ? NormalCone(PatchNormal[p], 0.0) : ConeOf(Geometry, elements);
+      // Below this a plain sum over the elements is as fast as a walk down a tree. A flat
+      // patch gets one only where clusters receive: to link to their parts (FactorVectorFor)
+      // it must leave out its own parts behind them; its factors keep using its outline.
+      if ((!Planar(p) || clusters) && elements.size() >= 8)
       {
         Trees[p] = std::make_unique<ClusterTree>(Mesh, Geometry, Loops, elements);
       }
@@ -498,7 +505,7 @@ double ShooterFormFactors::PointFactor(int patch, const Vec3& x, const Vec3& nor
     const std::vector<Vec3>& loop = PatchLoop[patch];
     return PointToPolygonFormFactor(x, normal, loop.data(), static_cast<int>(loop.size()), scratch);
   }
-  if (Trees[patch])
+  if (Trees[patch] && !Planar(patch))
   {
     return Trees[patch]->PointFactor(x, normal, scratch);
   }
@@ -516,16 +523,16 @@ double ShooterFormFactors::PointFactor(int patch, const Vec3& x, const Vec3& nor
 
 Vec3 ShooterFormFactors::FactorVector(int patch, const Vec3& x) const
 {
-  if (Trees[patch])
-  {
-    return Trees[patch]->FactorVector(x);
-  }
   const std::vector<Vec3>& loop = PatchLoop[patch];
   if (!loop.empty())
   {
     return Dot(PatchNormal[patch], x - PatchCentre[patch]) > 0
       ? PolygonFactorVector(x, loop.data(), static_cast<int>(loop.size()))
       : Vec3();
+  }
+  if (Trees[patch])
+  {
+    return Trees[patch]->FactorVector(x);
   }
   Vec3 sum;
   for (int s : Geometry.patchElements[patch])
