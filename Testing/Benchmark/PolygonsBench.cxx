@@ -3,6 +3,7 @@
 // polygons_bench.py, sweeps sizes and draws the figure); prints one CSV row.
 #include "BenchClock.h"
 #include "CurvedRoom.h"
+#include "ProbeReference.h"
 #include "Solve/LightSolutions.h"
 
 #include <chrono>
@@ -31,6 +32,9 @@ int main(int argc, char** argv)
   SolverMethod method = SolverMethod::Auto;
   std::vector<std::string> models; // OFF meshes to stand in the room beside the spheres
   bool compare = false;             // also solve by progressive refinement and print the difference
+  std::string exportPath;           // write the room and probe points for Mitsuba, and stop
+  std::string referencePath;        // Mitsuba's radiosity at the probes: print the error
+  bool combined = false;            // one solution for all lights (k = 1), not one per light
   for (int i = 1; i + 1 < argc; i += 2)
   {
     const std::string flag = argv[i];
@@ -44,6 +48,9 @@ int main(int argc, char** argv)
     else if (flag == "--time-budget") budget = std::atof(value);
     else if (flag == "--off") models.push_back(value);
     else if (flag == "--compare") compare = std::strcmp(value, "progressive") == 0;
+    else if (flag == "--export") exportPath = value;
+    else if (flag == "--combined") combined = std::atoi(value) != 0;
+    else if (flag == "--reference") referencePath = value;
     else if (flag == "--method")
       method = std::strcmp(value, "hierarchical") == 0 ? SolverMethod::Hierarchical
         : std::strcmp(value, "progressive") == 0      ? SolverMethod::ProgressiveRefinement
@@ -69,17 +76,30 @@ int main(int argc, char** argv)
   const double t1 = Now();
   const RadiositySolver solver(mesh);
   const double t2 = Now();
+  const Probes probes(3000);
+  if (!exportPath.empty())
+  {
+    ExportRoom(room, solver, mesh, probes, exportPath);
+    return 0;
+  }
   SolverOptions options;
   options.Solver = method;
   options.TimeBudget = budget;
-  const Solution s = SolveLights(solver, mesh, LightGrouping::OnePerLight(lamps), {}, SolutionMode::LightTagged, options);
+  const SolutionMode mode = combined ? SolutionMode::StandardCombined : SolutionMode::LightTagged;
+  const Solution s = SolveLights(solver, mesh, LightGrouping::OnePerLight(lamps), {}, mode, options);
   const double t3 = Now();
   const SolverStatistics& st = s.Statistics;
   const int inputTriangles = static_cast<int>(room.Offsets.size()) - 1 - 6 - lamps;
-  std::printf("triangles,elements,patches,lights,cluster_angle,method,shots,converged,rays,patch_links,element_links,link_mb,mesh_s,prepare_s,solve_s,total_s,peak_mb\n");
-  std::printf("%d,%d,%zu,%d,%g,%s,%d,%d,%lld,%lld,%lld,%.1f,%.2f,%.2f,%.2f,%.2f,%.0f\n", inputTriangles, mesh.NumberOfPolygons(),
+  double probeError = std::nan(""), worst = std::nan("");
+  if (!referencePath.empty())
+  {
+    probeError = MeanError(Sample(solver, mesh, s, probes), ReadReference(referencePath, probes.Origin.size(), lamps), lamps, &worst);
+  }
+  std::printf("triangles,elements,patches,lights,cluster_angle,method,shots,converged,rays,patch_links,element_links,link_mb,mesh_s,prepare_s,solve_s,total_s,peak_mb,error_pct,worst_light_pct\n");
+  std::printf("%d,%d,%zu,%d,%g,%s,%d,%d,%lld,%lld,%lld,%.1f,%.2f,%.2f,%.2f,%.2f,%.0f,%.2f,%.2f\n", inputTriangles, mesh.NumberOfPolygons(),
     solver.Geometry().patchElements.size(), lamps, cone, MethodName(st.Method), st.Shots, st.Converged ? 1 : 0,
-    st.RayCount, st.PatchLinks, st.ElementLinks, st.LinkBytes / 1e6, t1 - t0, t2 - t1, t3 - t2, t3 - t0, PeakMemoryMB());
+    st.RayCount, st.PatchLinks, st.ElementLinks, st.LinkBytes / 1e6, t1 - t0, t2 - t1, t3 - t2, t3 - t0, PeakMemoryMB(),
+    100 * probeError, 100 * worst);
   if (compare)
   {
     options.Solver = SolverMethod::ProgressiveRefinement;

@@ -38,30 +38,41 @@ mi.set_variant("scalar_rgb")
 EPS = 1e-4
 
 
-def make_quad(name, pts, reflectance, radiance=None):
-    """Two-triangle mesh from a planar quad, built directly via mi.Mesh."""
+def make_mesh(name, loops, reflectance, radiance=None):
+    """One mesh of planar convex polygons (each fanned from its first corner, which keeps
+    its right-hand-rule front), built directly via mi.Mesh."""
     props = mi.Properties()
     props["bsdf"] = mi.load_dict(
         {"type": "diffuse", "reflectance": {"type": "rgb", "value": list(reflectance)}})
     if radiance is not None:
         props["emitter"] = mi.load_dict(
             {"type": "area", "radiance": {"type": "rgb", "value": [radiance] * 3}})
-    mesh = mi.Mesh(name, 4, 2, props)
+    positions, faces = [], []
+    for pts in loops:
+        base = len(positions) // 3
+        positions += [float(c) for p in pts for c in p]
+        for t in range(1, len(pts) - 1):
+            faces += [base, base + t, base + t + 1]
+    mesh = mi.Mesh(name, len(positions) // 3, len(faces) // 3, props)
     params = mi.traverse(mesh)
-    params["vertex_positions"] = [float(c) for p in pts for c in p]
-    params["faces"] = [0, 1, 2, 0, 2, 3]
+    params["vertex_positions"] = positions
+    params["faces"] = faces
     params.update()
     return mesh
 
 
 def make_scene(polygons, active_light):
-    """Scene in which only polygons with light == active_light emit."""
+    """Scene in which only polygons with light == active_light emit; the others are
+    grouped into one mesh per reflectance (a tessellated model has many thousands)."""
     scene = {"type": "scene",
              "integrator": {"type": "path", "max_depth": -1}}
-    for i, poly in enumerate(polygons):
+    groups = {}
+    for poly in polygons:
         emits = poly["light"] >= 0 and poly["light"] == active_light
-        scene["q%d" % i] = make_quad("q%d" % i, poly["points"], poly["reflectance"],
-                                     1.0 / math.pi if emits else None)
+        key = (tuple(poly["reflectance"]), emits)
+        groups.setdefault(key, []).append(poly["points"])
+    for i, ((reflectance, emits), loops) in enumerate(sorted(groups.items())):
+        scene["m%d" % i] = make_mesh("m%d" % i, loops, reflectance, 1.0 / math.pi if emits else None)
     return mi.load_dict(scene)
 
 
@@ -140,8 +151,8 @@ def selftest(spp):
     def scene(em):
         return mi.load_dict({"type": "scene",
                              "integrator": {"type": "path", "max_depth": -1},
-                             "r": make_quad("r", rx, [0.5] * 3),
-                             "e": make_quad("e", em, black, 1 / math.pi)})
+                             "r": make_mesh("r", [rx], [0.5] * 3),
+                             "e": make_mesh("e", [em], black, 1 / math.pi)})
     ok = True
 
     def check(name, got, want, tol):
@@ -174,7 +185,7 @@ def selftest(spp):
                 pts.append(p)
             if side == 1:  # (u x v) = +a; flip the far wall so it faces inwards
                 pts.reverse()
-            walls["w%d%d" % (a, side)] = make_quad("w%d%d" % (a, side), pts, [0.5] * 3, 1 / math.pi)
+            walls["w%d%d" % (a, side)] = make_mesh("w%d%d" % (a, side), [pts], [0.5] * 3, 1 / math.pi)
     furnace = mi.load_dict(dict(type="scene", integrator={"type": "path", "max_depth": -1}, **walls))
     check("furnace cube, rho=0.5, all walls emit: B = 2",
           radiosity(furnace, [0.3, 0.6, 0], [0, 0, 1], spp)[0], 2.0, 0.02)

@@ -308,3 +308,38 @@ TEST(Clusters, HundredThousandTriangleSphereRoomConvergesAndBalances)
   const double absorbed = radiosity_test::AbsorbedPower(mesh, s);
   EXPECT_NEAR(st.EmittedPower, absorbed + st.EscapedPower + st.UnshotPower, 1e-6 * st.EmittedPower);
 }
+
+TEST(Clusters, SameResultOnAnyNumberOfThreadsAndLightTaggedEqualsCombined)
+{
+  const int lamps = 3;
+  SceneMesh mesh;
+  ASSERT_EQ(MeshByMaterial(CurvedRoom(lamps, 1, 4000), 0.5, 0.25, 30, mesh), "");
+  const RadiositySolver solver(mesh);
+  SolverOptions o = radiosity_test::Converged(1e-4);
+  o.Solver = SolverMethod::Hierarchical;
+  o.Threads = 1;
+  const Solution one = SolveLights(solver, mesh, LightGrouping::OnePerLight(lamps), {}, SolutionMode::LightTagged, o);
+  o.Threads = 3;
+  const Solution three = SolveLights(solver, mesh, LightGrouping::OnePerLight(lamps), {}, SolutionMode::LightTagged, o);
+  ASSERT_EQ(one.Radiosity.size(), three.Radiosity.size());
+  for (size_t i = 0; i < one.Radiosity.size(); ++i)
+  {
+    ASSERT_EQ(one.Radiosity[i].x, three.Radiosity[i].x) << i;
+    ASSERT_EQ(one.Radiosity[i].z, three.Radiosity[i].z) << i;
+  }
+  // Light tagging: the sum of the k unit solutions is the solution of all lights at once.
+  const Solution combined = SolveLights(solver, mesh, LightGrouping::OnePerLight(lamps), {}, SolutionMode::StandardCombined, o);
+  double diff = 0, sum = 0;
+  for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
+  {
+    Vec3 tagged;
+    for (int m = 0; m < lamps; ++m)
+    {
+      tagged += one.Radiosity[static_cast<size_t>(e) * lamps + m];
+    }
+    const Vec3& all = combined.Radiosity[e];
+    diff += std::fabs(tagged.x - all.x) + std::fabs(tagged.y - all.y) + std::fabs(tagged.z - all.z);
+    sum += all.x + all.y + all.z;
+  }
+  EXPECT_LT(diff / sum, 0.002);
+}

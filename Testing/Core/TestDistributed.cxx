@@ -1,6 +1,7 @@
 // Several processes solving one scene together (SolverOptions::Group), played here by
 // threads with a sum over them as MPI_Allreduce would do it: every rank must get the
 // serial answer, whatever the number of ranks and the method, and stop where the others do.
+#include "CurvedRoom.h"
 #include "FurnishedRoom.h"
 #include "Solve/LightSolutions.h"
 #include "SceneBuilders.h"
@@ -126,9 +127,8 @@ double LargestDifference(const std::vector<Vec3>& a, const std::vector<Vec3>& b)
   return peak > 0 ? most / peak : most;
 }
 
-void ExpectSerialAnswer(SolverMethod method, int ranks, bool direct)
+void ExpectSerialAnswer(SolverMethod method, int ranks, bool direct, const SceneMesh& mesh = Room(), int lights = 8)
 {
-  const SceneMesh mesh = Room();
   SolverOptions options = Converged(1e-4);
   options.Solver = method;
   options.SeparateDirect = direct;
@@ -136,8 +136,8 @@ void ExpectSerialAnswer(SolverMethod method, int ranks, bool direct)
   options.Threads = 1;
   const RadiositySolver serial(mesh);
   const Solution one =
-    SolveLights(serial, mesh, LightGrouping::OnePerLight(8), {}, SolutionMode::LightTagged, options);
-  const std::vector<Solution> many = SolveOnRanks(mesh, ranks, options);
+    SolveLights(serial, mesh, LightGrouping::OnePerLight(lights), {}, SolutionMode::LightTagged, options);
+  const std::vector<Solution> many = SolveOnRanks(mesh, ranks, options, nullptr, lights);
   for (int r = 0; r < ranks; ++r)
   {
     const SolverStatistics& s = many[r].Statistics;
@@ -159,7 +159,7 @@ void ExpectSerialAnswer(SolverMethod method, int ranks, bool direct)
       EXPECT_NEAR(s.RemainingPerSolution[i], one.Statistics.RemainingPerSolution[i], 1e-9) << "entry " << i;
     }
     EXPECT_NEAR(s.EscapedPower, one.Statistics.EscapedPower, 1e-9 * one.Statistics.EmittedPower);
-    for (int m = 0; m < 8; ++m)
+    for (int m = 0; m < lights; ++m)
     {
       EXPECT_NEAR(many[r].Ambient[m].x, one.Ambient[m].x, 1e-9 * (one.Ambient[m].x + 1e-30));
     }
@@ -175,6 +175,14 @@ TEST(Distributed, ProgressiveOnTwoRanksGivesTheSerialAnswer)
 TEST(Distributed, HierarchicalOnThreeRanksGivesTheSerialAnswerWithDirectAndAmbient)
 {
   ExpectSerialAnswer(SolverMethod::Hierarchical, 3, true);
+}
+
+TEST(Distributed, FaceClustersOnTwoRanksGiveTheSerialAnswer)
+{
+  // Cluster receivers linked node by node, element links shared element by element.
+  SceneMesh mesh;
+  ASSERT_EQ(radiosity_bench::MeshByMaterial(radiosity_bench::CurvedRoom(3, 1, 4000), 0.5, 0.25, 30, mesh), "");
+  ExpectSerialAnswer(SolverMethod::Hierarchical, 2, true, mesh, 3);
 }
 
 TEST(Distributed, SharesAreEvenAndCoverEveryPatchOnce)
