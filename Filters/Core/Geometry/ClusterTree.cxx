@@ -16,33 +16,29 @@ constexpr int kLeafSize = 4;
 bool FacesBall(const Vec3& centre, double radius, const NormalCone& cone, const Vec3& c, double r)
 {
   const Vec3 d = c - centre;
-  const double length = Norm(d);
-  if (cone.Spread >= 0.5 * Pi || Norm(cone.Axis) == 0 || length <= r + radius)
+  const double along = Dot(cone.Axis, d); // length x cos(phi)
+  if (cone.Spread >= 0.5 * Pi || along <= r + radius)
   {
-    return false;
+    return false; // also where the axis is zero (normals cancel)
   }
   // Every normal is within Spread of the axis, so its angle to d is at most phi + Spread:
-  // the cosine of that (negative past pi / 2, where the test fails anyway) bounds n . d.
-  const double cosPhi = std::max(-1.0, std::min(1.0, Dot(cone.Axis, d) / length));
-  const double sinPhi = std::sqrt(1 - cosPhi * cosPhi);
-  return length * (cosPhi * cone.CosSpread - sinPhi * cone.SinSpread) > r + radius;
+  // length x cos(phi + Spread) bounds n . d.
+  const double across = std::sqrt(std::max(0.0, Dot(d, d) - along * along)); // length x sin(phi)
+  return along * cone.CosSpread - across * cone.SinSpread > r + radius;
 }
 
 bool BehindBall(const Vec3& centre, double radius, const NormalCone& cone, const Vec3& c, double r)
 {
   const Vec3 d = c - centre;
-  const double length = Norm(d);
-  if (cone.Spread >= 0.5 * Pi || Norm(cone.Axis) == 0 || length <= r + radius)
+  const double along = Dot(cone.Axis, d); // length x cos(phi)
+  if (cone.Spread >= 0.5 * Pi || along >= -(r + radius))
   {
-    return false;
+    return false; // the bound below is at least along: it cannot be behind (or no axis)
   }
-  const double cosPhi = std::max(-1.0, std::min(1.0, Dot(cone.Axis, d) / length));
-  if (cosPhi >= cone.CosSpread)
-  {
-    return false; // d is inside the cone: some normal points along it
-  }
-  const double sinPhi = std::sqrt(1 - cosPhi * cosPhi);
-  return length * (cosPhi * cone.CosSpread + sinPhi * cone.SinSpread) < -(r + radius);
+  // The normal nearest d is at phi - Spread from it: length x cos(phi - Spread) bounds n . d
+  // from above (phi > Spread here, as along < 0).
+  const double across = std::sqrt(std::max(0.0, Dot(d, d) - along * along));
+  return along * cone.CosSpread + across * cone.SinSpread < -(r + radius);
 }
 
 NormalCone ConeOf(const SceneGeometry& g, const std::vector<int>& elements)

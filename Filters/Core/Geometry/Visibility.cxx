@@ -403,12 +403,15 @@ int SplitSeparatedPatches(const Visibility& rays, const SceneMesh& mesh, SceneGe
   const size_t patches = g.patchElements.size();
   for (size_t p = 0; p < patches; ++p)
   {
-    // A face cluster (elements on several planes, FaceClusters.h) stays whole: it was
-    // grown over shared edges of a curved surface, where nothing stands, and its elements
-    // have points of their own per plane, so they share no edge by id.
+    // A face cluster (elements on several planes, FaceClusters.h; parallel ones too) stays
+    // whole: it was grown over shared edges of its input polygons, and its elements have
+    // points of their own per plane, so they share no edge by id.
     const std::vector<int>& members = g.patchElements[p];
-    if (std::any_of(members.begin(), members.end(),
-          [&](int e) { return Dot(g.normal[e], g.normal[members[0]]) < 1 - 1e-9; }))
+    const Vec3& n = g.normal[members[0]];
+    const Vec3& c = g.centroid[members[0]];
+    if (std::any_of(members.begin(), members.end(), [&](int e) {
+          return Dot(g.normal[e], n) < 1 - 1e-9 || std::fabs(Dot(n, g.centroid[e] - c)) > 1e-9 * g.sceneDiagonal;
+        }))
     {
       continue;
     }

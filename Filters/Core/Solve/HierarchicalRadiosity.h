@@ -20,6 +20,10 @@ namespace radiosity
 ///   front (and, with `RefinementThreshold`, carries less than that fraction of any
 ///   solution's emitted power); element by element otherwise. Later shots reuse the links:
 ///   no rays, no form factors.
+/// - A face cluster (a patch of a curved surface, FaceClusters.h) receives node by node
+///   through its cluster tree: a node whose elements all face the shooter from far enough
+///   takes one factor vector (n_e . v per element); nearer, its children; at the leaves,
+///   its elements. A cluster shooter is split the same way through its own tree.
 /// - Patch-level energy reaches the elements at the end, interpolated from the corners
 ///   (mean value coordinates), times each element's reflectance.
 /// Each link carries the k-vector of every solution: transport is computed once for all k.
