@@ -84,8 +84,8 @@ public:
   /// rays. Cost grows about linearly with elements. FormFactorMethod and
   /// FormFactorSamples' meaning for Hemicube/MonteCarlo apply to ProgressiveRefinement
   /// only; Hierarchical uses analytic factors with FormFactorSamples shadow rays.
-  /// Auto (default): Hierarchical for 20,000 elements or more (with Analytic factors),
-  /// otherwise ProgressiveRefinement.
+  /// Auto (default): Hierarchical from 5,000 element-patch pairs (elements x patches, with
+  /// Analytic factors), otherwise ProgressiveRefinement; SolverMethod says why.
   vtkSetClampMacro(SolverMethod, int, SOLVER_AUTO, HIERARCHICAL);
   vtkGetMacro(SolverMethod, int);
   void SetSolverMethodToAuto() { this->SetSolverMethod(SOLVER_AUTO); }

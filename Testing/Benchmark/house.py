@@ -99,12 +99,12 @@ def add_lamps(house, lamps, half=0.15):
     return marker.GetOutput()
 
 
-def solve(scene, patch, element):
+def solve(scene, patch, element, cluster_angle=30.0):
     """Mesh + solve at the solver's default settings (Auto picks Hierarchical at this size);
     keeps warnings and errors."""
     mesher = relight.vtkRadiosityMesher()
     mesher.SetInputData(scene)
-    mesher.SetPatchSize(patch), mesher.SetElementSize(element)
+    mesher.SetPatchSize(patch), mesher.SetElementSize(element), mesher.SetClusterAngle(cluster_angle)
     solver = relight.vtkLightTaggedRadiosity()
     solver.SetInputConnection(mesher.GetOutputPort())
     catchers = [relight.ErrorCatcher(mesher), relight.ErrorCatcher(solver)]
@@ -145,6 +145,7 @@ def main():
     parser.add_argument("--element", type=float, default=0.25, help="ElementSize, m (0.1 gives ~830k elements)")
     parser.add_argument("--patch", type=float, default=0.5, help="PatchSize, m")
     parser.add_argument("--out", default="out/bench")
+    parser.add_argument("--cluster-angle", type=float, default=30.0, help="the mesher's ClusterAngle (0: no face clusters)")
     args = parser.parse_args()
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
@@ -157,7 +158,7 @@ def main():
     print("\n".join(f"Lamp{i}: {np.round(p, 2)} (floor at {f} m)" for i, (f, p) in enumerate(lamps)))
     k = len(lamps)
     scene = add_lamps(house, lamps)
-    solver, warnings = solve(scene, args.patch, args.element)
+    solver, warnings = solve(scene, args.patch, args.element, args.cluster_angle)
     result = solver.GetOutput()
     method = result.GetFieldData().GetAbstractArray("SolverMethod").GetValue(0)
     commit = subprocess.run(["git", "describe", "--always", "--dirty"], capture_output=True, text=True).stdout.strip()

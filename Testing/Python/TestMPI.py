@@ -54,7 +54,9 @@ def by_centre(data, name):
     return {tuple(c): v for c, v in zip(centres, values)}
 
 
-solver = relight.solve(read_polydata(SCENE), 1.0, 0.5, ConvergenceThreshold=1e-4, MaximumShots=0)
+# Progressive refinement on both sides (see mpi_solve.py).
+solver = relight.solve(read_polydata(SCENE), 1.0, 0.5, ConvergenceThreshold=1e-4, MaximumShots=0,
+                       SolverMethod=relight.vtkLightTaggedRadiosity.PROGRESSIVE_REFINEMENT)
 serial = relight.vtkRadiosityRelight()
 serial.SetInputConnection(solver.GetOutputPort())
 serial.Update()
@@ -106,7 +108,8 @@ for data, path in zip((movers, blocker), files):
     writer.SetInputData(data)
     writer.SetFileName(path)
     writer.Write()
-basis = relight.solve(read_polydata(SCENE), 1.0, 0.5, ConvergenceThreshold=1e-4, MaximumShots=0, PatchBasis=True)
+basis = relight.solve(read_polydata(SCENE), 1.0, 0.5, ConvergenceThreshold=1e-4, MaximumShots=0, PatchBasis=True,
+                      SolverMethod=relight.vtkLightTaggedRadiosity.PROGRESSIVE_REFINEMENT)
 moving = relight.vtkRadiosityRelight()
 moving.SetInputConnection(0, basis.GetOutputPort())
 moving.SetInputData(1, movers)

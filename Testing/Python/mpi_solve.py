@@ -22,7 +22,12 @@ if mode in ("marked", "broken"):
                        AreaLights=["Desk", "1", "2", "1", "2", "0", "-1", "0", "0.3", "0", "4", "4", "4"])
 mesher = RadiosityMesher(Input=scene, PatchSize=1.0, ElementSize=0.5 if mode != "budget" else 0.1, SharePatches=0,
                          MaximumElements=300 if mode == "budget" else 0)
-solver = LightTaggedRadiosity(Input=mesher, ConvergenceThreshold=1e-4, PatchBasis=1 if mode.startswith("moving") else 0)
+# Progressive refinement, as Auto picked for this scene before it took the links from 5,000
+# element-patch pairs: the redistributed pieces mesh a little differently from the whole,
+# and its exact per-element shots keep that difference below the 1 % this test allows (the
+# hierarchical method under MPI is held to the serial answer in Core.Distributed*).
+solver = LightTaggedRadiosity(Input=mesher, ConvergenceThreshold=1e-4, SolverMethod="ProgressiveRefinement",
+                              PatchBasis=1 if mode.startswith("moving") else 0)
 relight = RadiosityRelight(Input=solver)
 if mode.startswith("moving"):
     relight.MovingLights = XMLPolyDataReader(FileName=[sys.argv[4]])
