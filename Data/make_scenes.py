@@ -255,7 +255,7 @@ PAPER_REFL = {
 }
 LAMP_REFL = (0.8, 0.8, 0.8)
 
-# Lamp palette: (name, emission RGB).  Distinct colours *and* intensities so
+# Lamp palette: (name, emission RGB).  Distinct colors *and* intensities so
 # that relighting tests can tell the per-light contributions apart.
 LAMP_PALETTE = [
     ("WarmWhite", (1.00, 0.85, 0.65)),
@@ -319,8 +319,8 @@ CB_WHITE = (0.725, 0.71, 0.68)
 CB_RED = (0.63, 0.065, 0.05)
 CB_GREEN = (0.14, 0.45, 0.091)
 CB_LIGHT_REFL = (0.78, 0.78, 0.78)
-# Original light radiance is (17, 12, 4); we store the colour normalised to a
-# max of 1 (divide by 17) so Emission is a colour in [0,1] and overall
+# Original light radiance is (17, 12, 4); we store the color normalised to a
+# max of 1 (divide by 17) so Emission is a color in [0,1] and overall
 # brightness is left to the relighting intensity controls.  Multiply by 17 to
 # recover the reference radiance.
 CB_EMISSION = (1.0, 12.0 / 17.0, 4.0 / 17.0)

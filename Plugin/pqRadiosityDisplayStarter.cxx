@@ -62,7 +62,7 @@ void pqRadiosityDisplayStarter::onRepresentationAdded(pqRepresentation* represen
   {
     return;
   }
-  // ParaView sets its own defaults (colouring, scalar bar) after the representation is
+  // ParaView sets its own defaults (coloring, scalar bar) after the representation is
   // registered; ours go on top of those, once control is back in the event loop.
   QTimer::singleShot(0, this, [this, data]() {
     if (data)
@@ -185,7 +185,7 @@ void pqRadiosityDisplayStarter::StyleRadiosityColorMap(pqDataRepresentation* rep
   {
     return;
   }
-  // A colour map of one array belongs to every view of it; style it once only, so that a
+  // A color map of one array belongs to every view of it; style it once only, so that a
   // user's own choice is kept. The legend is made (not shown) if there is none yet.
   vtkNew<vtkSMTransferFunctionManager> manager;
   vtkSMProxy* bar = manager->GetScalarBarRepresentation(lut, view->getProxy());

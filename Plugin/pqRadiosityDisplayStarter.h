@@ -10,8 +10,8 @@ class pqRepresentation;
 /**
  * Display defaults for this plugin's outputs in the GUI, applied once, right after
  * ParaView has shown an output with its own defaults (the user can change them after):
- * - Radiosity Relight: its DisplayColors as they are (no colour map, no shading on top);
- * - Light Tagged Radiosity, coloured by a Radiosity_* or Direct_* array: an HDR colour
+ * - Radiosity Relight: its DisplayColors as they are (no color map, no shading on top);
+ * - Light Tagged Radiosity, colored by a Radiosity_* or Direct_* array: an HDR color
  *   map (Inferno) and the unit in the legend;
  * - its Convergence output (a line chart by the XML's View hint): unshot energy per shot
  *   on a log axis, one line per light.

@@ -31,7 +31,7 @@ pqRadiosityLightsWidget::pqRadiosityLightsWidget(vtkSMProxy* proxy, vtkSMPropert
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addWidget(new QLabel("Lights (after the first Apply):", this));
-  this->Table->setHorizontalHeaderLabels({ "Light", "Colour", "Intensity", "On" });
+  this->Table->setHorizontalHeaderLabels({ "Light", "Color", "Intensity", "On" });
   this->Table->verticalHeader()->hide();
   // The table fits the panel's width: names take what is left, and nothing hides past a
   // horizontal scroll bar (the panel is often narrower than the table would like).
@@ -171,7 +171,7 @@ void pqRadiosityLightsWidget::rebuild()
       Light& light = this->Lights[row];
       const QColor chosen = QColorDialog::getColor(
         QColor::fromRgbF(std::min(1.0, light.Color[0]), std::min(1.0, light.Color[1]), std::min(1.0, light.Color[2])),
-        this, "Colour of " + light.Name);
+        this, "Color of " + light.Name);
       if (chosen.isValid())
       {
         light.Color[0] = chosen.redF();
@@ -213,7 +213,7 @@ void pqRadiosityLightsWidget::fitHeight()
 {
   // A table that scrolls inside the scrolling panel shows rows cut off at its own frame,
   // where clicks land on the table or the panel and do nothing (found by TestGUI with 8
-  // lights: the last three colour buttons ignored clicks). Show every row up to 16, so
+  // lights: the last three color buttons ignored clicks). Show every row up to 16, so
   // only the panel scrolls; beyond that the table scrolls as a visible list.
   constexpr int MostRowsShown = 16;
   int height = this->Table->horizontalHeader()->sizeHint().height() + 2 * this->Table->frameWidth();

@@ -1,5 +1,5 @@
 // ParaView panel for the relight filter's per-light settings: one row per light, by name,
-// with a colour button, an intensity box and an on/off check box.
+// with a color button, an intensity box and an on/off check box.
 #ifndef pqRadiosityLightsWidget_h
 #define pqRadiosityLightsWidget_h
 
@@ -44,7 +44,7 @@ private:
     double Intensity = 1;
     bool Enabled = true;
     bool Edited = false;      ///< only edited lights are written, others keep their defaults
-    bool ColorEdited = false; ///< an unedited colour is written as NaN: keep the default
+    bool ColorEdited = false; ///< an unedited color is written as NaN: keep the default
   };
   void push();
   /// The table as tall as its rows (up to a limit), so the panel, not the table, scrolls.

@@ -35,7 +35,7 @@ struct vtkRadiosityRelightMapper::Internals
   double Time = 0;
   double Exposure = 1;
   std::vector<std::string> Names;       ///< of the data uploaded
-  std::vector<radiosity::Vec3> Defaults; ///< their default colours
+  std::vector<radiosity::Vec3> Defaults; ///< their default colors
   vtkNew<vtkOpenGLBufferObject> Buffer;
   vtkNew<vtkTextureObject> Texture;
   vtkPolyData* UploadedData = nullptr;
@@ -48,10 +48,10 @@ struct vtkRadiosityRelightMapper::Internals
   bool OnCPU = false;       ///< this data is relit on the CPU (asked for, or fallen back to)
   std::string WhyCPU;       ///< the reason, said once
   std::string ReportedCPU;
-  vtkSmartPointer<vtkPolyData> Coloured; ///< the input with CPU-summed display colours
-  std::vector<float> ColouredWeights;   ///< the weights and exposure it was made with
-  double ColouredExposure = -1;
-  vtkMTimeType ColouredFor = 0;
+  vtkSmartPointer<vtkPolyData> Colored; ///< the input with CPU-summed display colors
+  std::vector<float> ColoredWeights;   ///< the weights and exposure it was made with
+  double ColoredExposure = -1;
+  vtkMTimeType ColoredFor = 0;
 };
 
 namespace
@@ -65,7 +65,7 @@ std::string VertexDeclarations(int k)
 }
 
 /// GLSL added at the end of the vertex shader's main(): sum, exposure, clamp, sRGB.
-std::string VertexColour(int k)
+std::string VertexColor(int k)
 {
   return "  vec3 relightSum = vec3(0.0);\n"
          "  for (int i = 0; i < " + std::to_string(k) + "; ++i)\n"
@@ -95,16 +95,16 @@ void Extend(vtkShader* shader, const std::string& declarations, const std::strin
 }
 
 
-/// Each light's default colour, as the relight filter takes it.
-std::vector<radiosity::Vec3> DefaultColours(vtkPolyData* data, size_t k)
+/// Each light's default color, as the relight filter takes it.
+std::vector<radiosity::Vec3> DefaultColors(vtkPolyData* data, size_t k)
 {
-  const std::vector<double> rgb = vtkRadiosityDefaultLightColours(data, static_cast<int>(k));
-  std::vector<radiosity::Vec3> colours;
+  const std::vector<double> rgb = vtkRadiosityDefaultLightColors(data, static_cast<int>(k));
+  std::vector<radiosity::Vec3> colors;
   for (size_t l = 0; l < k; ++l)
   {
-    colours.push_back({ rgb[3 * l], rgb[3 * l + 1], rgb[3 * l + 2] });
+    colors.push_back({ rgb[3 * l], rgb[3 * l + 1], rgb[3 * l + 2] });
   }
-  return colours;
+  return colors;
 }
 
 std::string Number(double value)
@@ -119,7 +119,7 @@ std::string Number(double value)
 vtkRadiosityRelightMapper::vtkRadiosityRelightMapper()
   : Internal(new Internals)
 {
-  this->ScalarVisibilityOff(); // the colour comes from the shader
+  this->ScalarVisibilityOff(); // the color comes from the shader
 }
 
 vtkRadiosityRelightMapper::~vtkRadiosityRelightMapper() = default;
@@ -243,7 +243,7 @@ void vtkRadiosityRelightMapper::UploadIfNeeded(vtkRenderer* ren)
     in.Names.clear();
     return;
   }
-  in.Defaults = DefaultColours(data, k);
+  in.Defaults = DefaultColors(data, k);
   GLint most = 0, vectors = 0;
   glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &most);
   glGetIntegerv(GL_MAX_VERTEX_UNIFORM_VECTORS, &vectors);
@@ -296,7 +296,7 @@ void vtkRadiosityRelightMapper::DescribeLights(vtkPolyData* data, vtkStringArray
   const std::vector<std::string> lights = vtkRadiosityLightNames(data->GetFieldData());
   std::vector<radiosity::LightSetting> effective;
   std::vector<std::string> warnings;
-  if (!this->Internal->Rig.Resolve(lights, DefaultColours(data, lights.size()), this->Internal->Time, effective, warnings)
+  if (!this->Internal->Rig.Resolve(lights, DefaultColors(data, lights.size()), this->Internal->Time, effective, warnings)
          .empty())
   {
     return;
@@ -324,10 +324,10 @@ void vtkRadiosityRelightMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act
   }
   if (in.OnCPU && in.WhyCPU != in.ReportedCPU)
   {
-    vtkWarningMacro(<< "Relighting on the CPU: " << in.WhyCPU << "; each light change uploads new colours.");
+    vtkWarningMacro(<< "Relighting on the CPU: " << in.WhyCPU << "; each light change uploads new colors.");
     in.ReportedCPU = in.WhyCPU;
   }
-  // The CPU path draws display colours as VTK's own mapper would; the GPU path draws none.
+  // The CPU path draws display colors as VTK's own mapper would; the GPU path draws none.
   const bool scalars = in.OnCPU && in.Problem.empty();
   if (this->ScalarVisibility != (scalars ? 1 : 0))
   {
@@ -336,7 +336,7 @@ void vtkRadiosityRelightMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act
   }
   if (scalars)
   {
-    this->CurrentInput = this->CpuColoured();
+    this->CurrentInput = this->CpuColored();
   }
   this->Superclass::RenderPieceStart(ren, act);
 }
@@ -369,15 +369,15 @@ std::vector<float> vtkRadiosityRelightMapper::CurrentWeights()
   return weights;
 }
 
-vtkPolyData* vtkRadiosityRelightMapper::CpuColoured()
+vtkPolyData* vtkRadiosityRelightMapper::CpuColored()
 {
   Internals& in = *this->Internal;
   vtkPolyData* data = in.UploadedData;
   const std::vector<float> weights = this->CurrentWeights();
-  if (in.Coloured && in.ColouredFor == data->GetMTime() && in.ColouredWeights == weights &&
-    in.ColouredExposure == in.Exposure)
+  if (in.Colored && in.ColoredFor == data->GetMTime() && in.ColoredWeights == weights &&
+    in.ColoredExposure == in.Exposure)
   {
-    return in.Coloured;
+    return in.Colored;
   }
   const vtkIdType points = data->GetNumberOfPoints();
   // The relight filter's sum (in parallel, on the arrays' own memory), as the shader's.
@@ -396,19 +396,19 @@ vtkPolyData* vtkRadiosityRelightMapper::CpuColoured()
     linear->SetNumberOfTuples(points);
     linear->FillValue(0.0f);
   }
-  vtkNew<vtkUnsignedCharArray> colours;
-  colours->SetName("RelitDisplayColors");
-  colours->SetNumberOfComponents(3);
-  colours->SetNumberOfTuples(points);
+  vtkNew<vtkUnsignedCharArray> colors;
+  colors->SetName("RelitDisplayColors");
+  colors->SetNumberOfComponents(3);
+  colors->SetNumberOfTuples(points);
   static const radiosity::DisplayCurve curve;
-  curve.Apply(linear->GetPointer(0), 3 * static_cast<size_t>(points), in.Exposure, colours->GetPointer(0));
-  in.Coloured = vtkSmartPointer<vtkPolyData>::New();
-  in.Coloured->ShallowCopy(data);
-  in.Coloured->GetPointData()->SetScalars(colours);
-  in.ColouredFor = data->GetMTime();
-  in.ColouredWeights = weights;
-  in.ColouredExposure = in.Exposure;
-  return in.Coloured;
+  curve.Apply(linear->GetPointer(0), 3 * static_cast<size_t>(points), in.Exposure, colors->GetPointer(0));
+  in.Colored = vtkSmartPointer<vtkPolyData>::New();
+  in.Colored->ShallowCopy(data);
+  in.Colored->GetPointData()->SetScalars(colors);
+  in.ColoredFor = data->GetMTime();
+  in.ColoredWeights = weights;
+  in.ColoredExposure = in.Exposure;
+  return in.Colored;
 }
 
 vtkUnsignedCharArray* vtkRadiosityRelightMapper::MapScalars(double alpha)
@@ -465,9 +465,9 @@ void vtkRadiosityRelightMapper::ReplaceShaderValues(
   this->Internal->ShaderLights = this->Internal->OnCPU ? -2 : k;
   if (ren->GetSelector() || this->Internal->OnCPU)
   {
-    return; // picking draws ids, not colours; the CPU path draws its colours as scalars
+    return; // picking draws ids, not colors; the CPU path draws its colors as scalars
   }
-  Extend(shaders[vtkShader::Vertex], VertexDeclarations(k), VertexColour(k));
+  Extend(shaders[vtkShader::Vertex], VertexDeclarations(k), VertexColor(k));
   Extend(shaders[vtkShader::Fragment], "in vec3 relightColor;\n", "  gl_FragData[0] = vec4(relightColor, 1.0);\n");
 }
 

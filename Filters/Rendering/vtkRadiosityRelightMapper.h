@@ -5,8 +5,8 @@
  * Give it the solver's output (point arrays `Radiosity_<name>`, field arrays LightNames
  * and LightDefaultColors). The k solutions are uploaded once, as 32-bit floats in a
  * texture buffer (any k, no quantisation); the vertex shader sums them with each light's
- * colour x intensity (zero when off), then applies Exposure, the clamp and the sRGB curve
- * of vtkRadiosityRelight's DisplayColors, and the surface is drawn unlit with that colour.
+ * color x intensity (zero when off), then applies Exposure, the clamp and the sRGB curve
+ * of vtkRadiosityRelight's DisplayColors, and the surface is drawn unlit with that color.
  *
  * Light settings have the relight filter's meaning and precedence (defaults, by name, the
  * schedule at Time, by index), but changing them does not modify the mapper: no pipeline
@@ -60,7 +60,7 @@ public:
   ///@}
 
   ///@{
-  /// Multiplier before the clamp to display colours, as the relight filter's. Default 1.
+  /// Multiplier before the clamp to display colors, as the relight filter's. Default 1.
   void SetExposure(double exposure);
   double GetExposure() const;
   ///@}
@@ -72,7 +72,7 @@ public:
 
   ///@{
   /// Relight on the GPU (default) or on the CPU: the CPU sums the solutions into display
-  /// colours after each change and uploads them, as the relight filter would. The mapper
+  /// colors after each change and uploads them, as the relight filter would. The mapper
   /// also falls back to the CPU by itself, and says so once, where this OpenGL cannot hold
   /// the solutions in a texture buffer or the weights in uniforms.
   void SetUseGPU(bool use);
@@ -103,7 +103,7 @@ protected:
   void ReplaceShaderValues(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
-  /// The CPU path's colours are on the data drawn (CurrentInput), not on the input.
+  /// The CPU path's colors are on the data drawn (CurrentInput), not on the input.
   vtkUnsignedCharArray* MapScalars(double alpha) override;
   vtkUnsignedCharArray* MapScalars(double alpha, int& cellFlag) override;
 
@@ -117,8 +117,8 @@ private:
   /// The lights' weights now (3 per light), zero with the error reported once when a
   /// setting is invalid.
   std::vector<float> CurrentWeights();
-  /// The input with display colours summed on the CPU, made again only after a change.
-  vtkPolyData* CpuColoured();
+  /// The input with display colors summed on the CPU, made again only after a change.
+  vtkPolyData* CpuColored();
 
   struct Internals;
   std::unique_ptr<Internals> Internal;

@@ -23,7 +23,7 @@ vtkRadiosityRelitRepresentation::vtkRadiosityRelitRepresentation()
   , SettingsInfo(vtkSmartPointer<vtkStringArray>::New())
 {
   this->Actor->SetMapper(this->Mapper);
-  // The shader draws the relit colours unlit; the actor's lighting plays no part.
+  // The shader draws the relit colors unlit; the actor's lighting plays no part.
   this->Actor->GetProperty()->LightingOff();
 }
 

@@ -32,7 +32,7 @@ public:
   void ClearLightSettings();
   ///@}
 
-  /// Multiplier before the clamp to display colours.
+  /// Multiplier before the clamp to display colors.
   void SetRelightExposure(double exposure);
 
   ///@{

@@ -52,7 +52,7 @@ struct RoomPolygons
   }
 };
 
-/// The floor, ceiling and four walls of an X x Y x Z room, facing inward (two walls coloured).
+/// The floor, ceiling and four walls of an X x Y x Z room, facing inward (two walls colored).
 inline void AddRoomShell(RoomPolygons& r, double X, double Y, double Z)
 {
   const Vec3 wall{ 0.75, 0.72, 0.68 }, floor{ 0.45, 0.32, 0.22 }, ceiling{ 0.8, 0.8, 0.8 };

@@ -3,7 +3,7 @@
 ./relight bench render [--cells 1000000] [--lights 8] [--frames 10]
 
 The CPU path is the relight filter + VTK's mapper (DisplayColors): a light change runs
-the filter and uploads new colours. The GPU path is vtkRadiosityRelightMapper: a light
+the filter and uploads new colors. The GPU path is vtkRadiosityRelightMapper: a light
 change sets uniforms. The scene is a grid of quads with smooth, made-up per-light arrays
 (the cost depends on the sizes, not on the values; solving 1M elements would take an
 hour here). Prints milliseconds per frame and the ratios, measured in this one run, and

@@ -102,7 +102,7 @@ TEST(Effects, GreySceneSolvesOneChannel)
   EXPECT_TRUE(autoRun.Statistics.SingleChannel);
   EXPECT_FALSE(onRun.Statistics.SingleChannel);
   EXPECT_LT(MaxDifference(autoRun.Radiosity, onRun.Radiosity), 1e-12);
-  // Coloured reflectance keeps all three channels.
+  // Colored reflectance keeps all three channels.
   EXPECT_FALSE(Solve(ConvexRoom({ 0.6, 0.5, 0.6 }), With(EffectMode::Auto)).Statistics.SingleChannel);
 }
 

@@ -107,7 +107,7 @@ TEST(Hierarchical, HowellPairsThroughPatchLinks)
     AddGrid(mesh, c.origin, c.u, c.v, 4, 1, { 0, 0, 0 }, 0, patch);
     AddGrid(mesh, { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, 32, 4, { 0.5, 0.5, 0.5 }, -1, patch);
     SolverOptions options = Hierarchical();
-    options.DirectToElements = false;
+    options.Hierarchical.DirectToElements = false;
     RadiositySolver solver(mesh);
     const Solution s = SolveLights(solver, mesh, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, options);
     EXPECT_GT(s.Statistics.PatchLinks, 0);
@@ -344,4 +344,24 @@ TEST(Hierarchical, CeilingAboveALampsBackIsShelteredNotBlurred)
   ASSERT_GT(besideOutline, 0);
   std::printf("outline vertices / elements beside them: %.3f\n", onOutline / besideOutline);
   EXPECT_GT(onOutline / besideOutline, 0.9) << "outline vertices against the elements beside them";
+}
+
+TEST(Hierarchical, StandardSeparateReportsTheMethodThatRan)
+{
+  // One hierarchical solve per light: the statistics say hierarchical, with the links of
+  // every solve and the cap in force, and the solutions match the one-pass light tagging.
+  const SceneMesh mesh = Room(0.6, 0.3);
+  const Solution separate = SolveRoom(mesh, Hierarchical(1e-4), SolutionMode::StandardSeparate);
+  const Solution tagged = SolveRoom(mesh, Hierarchical(1e-4));
+  const SolverStatistics& s = separate.Statistics;
+  EXPECT_EQ(s.Method, SolverMethod::Hierarchical);
+  EXPECT_EQ(s.MethodReason, tagged.Statistics.MethodReason);
+  EXPECT_EQ(s.ShotCap, tagged.Statistics.ShotCap);
+  EXPECT_TRUE(s.Converged);
+  EXPECT_GT(s.PatchLinks, tagged.Statistics.PatchLinks); // rebuilt for each of the 8 solves
+  EXPECT_GT(s.LinkBytes, 0);
+  for (double d : RelativeDifference(mesh, separate, tagged))
+  {
+    EXPECT_LT(d, 0.01);
+  }
 }

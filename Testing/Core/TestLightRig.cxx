@@ -27,7 +27,7 @@ TEST(LightRig, PrecedenceIsDefaultsNameScheduleIndex)
   std::vector<LightSetting> effective;
   std::vector<std::string> warnings;
   ASSERT_EQ(rig.Resolve(names, defaults, 0, effective, warnings), "");
-  EXPECT_DOUBLE_EQ(effective[0].Color.y, 0.8); // the default colour, intensity 1, on
+  EXPECT_DOUBLE_EQ(effective[0].Color.y, 0.8); // the default color, intensity 1, on
   EXPECT_DOUBLE_EQ(effective[1].Intensity, 1);
   rig.ByName["Warm"] = Intensity(2);
   rig.Schedule.push_back({ 0, "Warm", { 1, 1, 1 }, 3, true });
@@ -35,7 +35,7 @@ TEST(LightRig, PrecedenceIsDefaultsNameScheduleIndex)
   ASSERT_EQ(rig.Resolve(names, defaults, 5, effective, warnings), "");
   EXPECT_DOUBLE_EQ(effective[0].Intensity, 4);   // the schedule beats the name, interpolated
   EXPECT_TRUE(effective[0].Enabled);             // on/off held from the keyframe before
-  EXPECT_DOUBLE_EQ(effective[0].Color.z, 1);     // the keyframe's colour
+  EXPECT_DOUBLE_EQ(effective[0].Color.z, 1);     // the keyframe's color
   rig.ByIndex[0] = Intensity(7);
   ASSERT_EQ(rig.Resolve(names, defaults, 5, effective, warnings), "");
   EXPECT_DOUBLE_EQ(effective[0].Intensity, 7);   // the index beats the schedule

@@ -94,7 +94,7 @@ TEST(Solver, OccluderBlocksDirectLight)
 
 namespace
 {
-/// An open box (no lid) with two occluding walls and three coloured lights.
+/// An open box (no lid) with two occluding walls and three colored lights.
 SceneMesh ThreeLightScene(std::vector<Vec3>& colors)
 {
   SceneMesh mesh = Box(4.0, 8, 2, { 0.6, 0.5, 0.4 }, [](int) { return -1; });
@@ -291,7 +291,7 @@ TEST(Solver, DirectPartIsEmissionPlusFirstBounce)
 
 TEST(Solver, BankEqualsEmissionWeightedSumOfItsLights)
 {
-  // Linearity: a bank's solution is its lights' unit solutions weighted by their colours.
+  // Linearity: a bank's solution is its lights' unit solutions weighted by their colors.
   std::vector<Vec3> colors;
   SceneMesh mesh = ThreeLightScene(colors);
   RadiositySolver solver(mesh);

@@ -35,8 +35,8 @@ rows = [  # time, light, r, g, b, intensity, enabled
 
 def expected(t):
     w = t / 10.0
-    colour = np.array([1.0, 1.0 - w, 1.0 - w]) * (1.0 + 2.0 * w)
-    return colour * B["WarmWhite"] + amber_default * B["Amber"]
+    color = np.array([1.0, 1.0 - w, 1.0 - w]) * (1.0 + 2.0 * w)
+    return color * B["WarmWhite"] + amber_default * B["Amber"]
 
 
 def run(rl, label):

@@ -66,7 +66,7 @@ expect_error(solver, scene(reflectance=(0.5, nan, 0.5)), "Reflectance of cell 0"
 expect_error(mesher, scene(reflectance=(0.5, nan, 0.5)), "Reflectance of cell 0")
 # The light marker's Emission (ParaView's panel bounds it at 0; Python can pass anything)
 for bad in ((-1.0, 1.0, 1.0), (1.0, nan, 1.0)):
-    expect_error(relight.vtkRadiosityLightMarker, scene(), "Emission colour component",
+    expect_error(relight.vtkRadiosityLightMarker, scene(), "Emission color component",
                  lambda f, e=bad: (f.SetEmission(*e), f.AddCellId(1)))
 expect_error(solver, scene(reflectance=(1.5, 0.5, 0.5)), "must be a number in [0, 1]")
 expect_error(solver, scene(reflectance=(-0.1, 0.5, 0.5)), "must be a number in [0, 1]")

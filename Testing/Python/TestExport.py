@@ -27,8 +27,8 @@ EXPOSURE = 2.5
 solver = relight.solve(read_polydata(os.path.join(DATA, "paper_3lights.vtp")), 1.5, 0.75, ConvergenceThreshold=1e-3)
 relit_filter = relight.vtkRadiosityRelight()
 relit_filter.SetInputConnection(solver.GetOutputPort())
-for i, (colour, intensity) in enumerate(zip(COLOURS, INTENSITIES)):
-    relit_filter.SetLightColor(i, *colour)
+for i, (color, intensity) in enumerate(zip(COLOURS, INTENSITIES)):
+    relit_filter.SetLightColor(i, *color)
     relit_filter.SetLightIntensity(i, intensity)
 relit_filter.Update()
 relit = relit_filter.GetOutput()
@@ -55,7 +55,7 @@ def accessor(document, binary, index):
     return values.reshape(-1, 3) if width == 3 else values
 
 
-# --- glTF: every light's solution, the relit colours, names and default colours ---------------
+# --- glTF: every light's solution, the relit colors, names and default colors ---------------
 glb = os.path.join(folder, "room.glb")
 relight.write_gltf(relit, glb, exposure=EXPOSURE)
 # Khronos' validator (npm gltf-validator, pinned with the web viewer and run by node).
@@ -75,14 +75,14 @@ for entry in lights:
     check(entry["attribute"].startswith("_RADIOSITY_") and np.array_equal(values, expected),
           f"{entry['attribute']}: the unit solution of {entry['name']}, bit for bit in float")
 defaults = numpy_support.vtk_to_numpy(relit.GetFieldData().GetArray("LightDefaultColors"))
-check(np.allclose([entry["defaultColor"] for entry in lights], defaults), "extras carry the default colours")
-colour = accessor(document, binary, primitive["attributes"]["COLOR_0"])
+check(np.allclose([entry["defaultColor"] for entry in lights], defaults), "extras carry the default colors")
+color = accessor(document, binary, primitive["attributes"]["COLOR_0"])
 expected = np.clip(point_array(relit, "Radiosity") * EXPOSURE, 0, 1)
-check(np.allclose(colour, expected, atol=1e-6), "COLOR_0 is the relit radiosity x exposure, clamped")
+check(np.allclose(color, expected, atol=1e-6), "COLOR_0 is the relit radiosity x exposure, clamped")
 # The sum a viewer computes from the light attributes gives the relit picture back.
 mix = sum(np.asarray(c) * s * accessor(document, binary, primitive["attributes"][e["attribute"]])
           for c, s, e in zip(COLOURS, INTENSITIES, lights))
-check(np.allclose(mix, point_array(relit, "Radiosity"), rtol=1e-5, atol=1e-7), "sum of colour x intensity x attribute = relit")
+check(np.allclose(mix, point_array(relit, "Radiosity"), rtol=1e-5, atol=1e-7), "sum of color x intensity x attribute = relit")
 indices = accessor(document, binary, primitive["indices"])
 positions = accessor(document, binary, primitive["attributes"]["POSITION"]).astype(float)
 triangles = positions[indices.reshape(-1, 3)]

@@ -111,11 +111,11 @@ check(summary == ["two.obj: 3 polygons, 2 materials, 1 lights, 2 degenerate cell
 warnings = " | ".join(fields(by_material, "Warnings"))
 check("'Oak'" in warnings and "clamped" in warnings, f"a Kd above 1 is clamped, naming the material: {warnings}")
 check(np.allclose(cell_array(by_material, "Reflectance")[0], [1.0, 0.4, 0.2]), "Oak's reflectance clamped to 1 in red")
-check(np.allclose(cell_array(by_material, "Emission")[1], [5, 5, 4]), "Emission is the Ke colour")
+check(np.allclose(cell_array(by_material, "Emission")[1], [5, 5, 4]), "Emission is the Ke color")
 by_object = relight.import_scene(two_lamps, lights_per_object=True)
 check(light_names(by_object) == ["Lamp A", "Lamp B"], f"one light per object: {light_names(by_object)}")
 
-# --- glTF: node transforms, base colour, emissive factor x KHR_materials_emissive_strength ------
+# --- glTF: node transforms, base color, emissive factor x KHR_materials_emissive_strength ------
 def gltf_document(binary):
     """A floor (two triangles, white x 0.5/0.4/0.3) and a lamp quad 2 m up under a parent
     node scaled by 2, whose material emits (1, 0.5, 0.25) x strength 4."""
@@ -186,7 +186,7 @@ normals.Update()
 floor_z = numpy_support.vtk_to_numpy(normals.GetOutput().GetCellData().GetArray("Normals"))[0, 2]
 check(floor_z > 0.99, f"a floor mirrored in x still faces +z (normal z {floor_z:.2f})")
 
-# --- VRML97: materials by DEF and USE, emissive colours, transforms ---------------------------
+# --- VRML97: materials by DEF and USE, emissive colors, transforms ---------------------------
 def vtk_importer_bounds(path):
     """The bounds of VTK's own importer's actors, in a process of their own: a second
     vtkVRMLImporter in one Python process can crash in VTK 9.2 (not the product's reader,
@@ -212,7 +212,7 @@ def vrml_faces(path):
 
 def write_vrml(scene, name):
     """One Shape per cell; a Material DEF'd at its first cell and USEd by the next cells of
-    the same colours (VTK's importer ignores USE of a Material); lamps named after lights."""
+    the same colors (VTK's importer ignores USE of a Material); lamps named after lights."""
     names = light_names(scene)
     rho = cell_array(scene, "Reflectance")
     ids = cell_array(scene, "LightId").astype(int)
@@ -262,7 +262,7 @@ check(light_names(room) == ["Ceiling_Lamp"] and lamp.sum() == 1 and np.allclose(
 check(np.allclose(centre, [[1, 1, 1.99]]) and np.allclose(cell_areas(room)[lamp], 0.25),
       f"VRML: the Transform places the lamp ({centre.tolist()})")
 check(np.allclose(cell_array(room, "Reflectance")[~lamp], [0.5, 0.4, 0.3]),
-      "VRML: a Material without emissiveColor is a surface, not a white lamp (VTK's default ambient colour)")
+      "VRML: a Material without emissiveColor is a surface, not a white lamp (VTK's default ambient color)")
 for wrl in ("Wuson.wrl", "MotionCaptureROM.WRL"):
     path = "/usr/share/assimp/models/WRL/" + wrl
     polygons = vrml_faces(path)
@@ -290,13 +290,13 @@ rho, ids = cell_array(tricky, "Reflectance"), cell_array(tricky, "LightId").asty
 check(light_names(tricky) == ["Red", "Zlamp", "Alamp"] and ids == [0, 0, 1, 2, -1]
       and np.allclose(rho[[0, 1]], [0.9, 0.1, 0.1]) and np.allclose(rho[[2, 3, 4]], 0.8),
       f"VRML as VRML resolves it: comments ignored, a USEd Appearance keeps its Material, ambientIntensity 0 "
-      f"is no matter, two lamps of one colour stay two, a Material without diffuseColor reflects 0.8 "
+      f"is no matter, two lamps of one color stay two, a Material without diffuseColor reflects 0.8 "
       f"({light_names(tricky)}, {ids})")
 files = ["/usr/share/assimp/models/WRL/" + w for w in ("Wuson.wrl", "MotionCaptureROM.WRL")]
 again = [relight.import_scene(f, require_lights=False).GetNumberOfCells() for _ in range(6) for f in files]
 check(again == [vrml_faces(f) for f in files] * 6, "VRML files read again and again in one process give the same scenes")
 
-# --- PLY: face colours (8-bit sRGB) as linear reflectance -------------------------------------
+# --- PLY: face colors (8-bit sRGB) as linear reflectance -------------------------------------
 ply = write("tiles.ply", """ply
 format ascii 1.0
 element vertex 4
@@ -319,7 +319,7 @@ end_header
 tiles = relight.import_scene(ply, require_lights=False)
 srgb = lambda v: v / 12.92 if v <= 0.04045 else ((v + 0.055) / 1.055) ** 2.4  # noqa: E731
 expected = [[srgb(255 / 255), srgb(128 / 255), 0], [srgb(10 / 255)] * 3]
-check(np.allclose(cell_array(tiles, "Reflectance"), expected), "PLY face colours as linear reflectance")
+check(np.allclose(cell_array(tiles, "Reflectance"), expected), "PLY face colors as linear reflectance")
 
 # --- the FZK-Haus IFC (Debian's assimp-testmodels) through assimp -----------------------------
 ifc = "/usr/share/assimp/models/IFC/AC14-FZK-Haus.ifc"

@@ -123,11 +123,11 @@ room = [
     [(0, 0, 0), (W, 0, 0), (W, H, 0), (0, H, 0)], [(0, 0, D), (0, H, D), (W, H, D), (W, 0, D)],
     [(0, 0, 0), (0, H, 0), (0, H, D), (0, 0, D)], [(W, 0, 0), (W, 0, D), (W, H, D), (W, H, 0)],
 ]
-colours = [(0.6, 0.6, 0.6), (0.8, 0.8, 0.8), (0.8, 0.3, 0.3), (0.8, 0.8, 0.8), (0.3, 0.4, 0.8), (0.8, 0.8, 0.8)]
+colors = [(0.6, 0.6, 0.6), (0.8, 0.8, 0.8), (0.8, 0.3, 0.3), (0.8, 0.8, 0.8), (0.3, 0.4, 0.8), (0.8, 0.8, 0.8)]
 centre, half = (0.25, 1.2, 1.6), 0.05  # 0.25 m from the x = 0 wall, facing it
 lamp = [(centre[0], centre[1] - half, centre[2] - half), (centre[0], centre[1] - half, centre[2] + half),
         (centre[0], centre[1] + half, centre[2] + half), (centre[0], centre[1] + half, centre[2] - half)]  # faces -x
-scene = make_scene(room + [lamp], colours + [(0.0, 0.0, 0.0)], [-1] * 6 + [0], light_names=["Lamp"])
+scene = make_scene(room + [lamp], colors + [(0.0, 0.0, 0.0)], [-1] * 6 + [0], light_names=["Lamp"])
 def tagged(patch, basis):
     # Converged: the default shot cap would stop the fine meshes early.
     return relight.solve(scene, patch, ELEMENT, ConvergenceThreshold=1e-5, MaximumShots=1000000,

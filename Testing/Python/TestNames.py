@@ -1,4 +1,4 @@
-"""One set of names: the plugin's XML and the README's settings table against the C++
+"""One set of names: the plugin's XML and the settings table (docs/settings.md) against the C++
 classes (as VTK's Python wraps them). ParaView.TestPluginProxies checks the same table
 against the proxies that pvbatch makes from the XML."""
 
@@ -6,12 +6,12 @@ import os
 import xml.etree.ElementTree as ElementTree
 
 import relight
-from readmetable import setting_rows
+from settingstable import setting_rows
 from testlib import check, finish
 
 ROOT = os.environ.get("RELIGHT_ROOT", ".")
 XML = os.path.join(ROOT, "Plugin", "RadiosityFilters.xml")
-README = os.path.join(ROOT, "README.md")
+SETTINGS = os.path.join(ROOT, "docs", "settings.md")
 
 
 def proxies_with_classes(root):
@@ -96,14 +96,26 @@ for proxy in proxies_with_classes(root):
                     mismatched.append(f"{name}: entries {min(values)}..{max(values)}, C++ {low()}..{high()}")
 check(not mismatched, f"the XML's ranges are the C++ clamps (differences: {mismatched})")
 
-rows = setting_rows(README)
-check(len(rows) == 7, f"the README's settings table has {len(rows)} rows, expected 7")
+# Solver methods come from one table in the core (Solve/SolverMethods.cxx): the XML's
+# enumeration, the filter's SetSolverMethodTo<Name> shortcuts and the docs name them all.
+solver_class = relight.vtkLightTaggedRadiosity
+table = {v: solver_class.GetSolverMethodName(v) for v in range(solver_class.GetNumberOfSolverMethods())}
+entries = {int(e.get("value")): e.get("text") for p in root.iter("IntVectorProperty") if p.get("name") == "SolverMethod"
+           for e in p.iter("Entry")}
+check(entries == table, f"the XML's SolverMethod entries {entries} are the core's method table {table}")
+shortcuts = [n for n in table.values() if not hasattr(solver_class(), "SetSolverMethodTo" + n)]
+check(not shortcuts, f"SetSolverMethodTo<Name> for every method (missing: {shortcuts})")
+guide = open(os.path.join(ROOT, "docs", "design.md"), encoding="utf-8").read()
+check(all(n in guide for n in table.values()), "docs/design.md names every solver method")
+
+rows = setting_rows(SETTINGS)
+check(len(rows) == 7, f"docs/settings.md's table has {len(rows)} rows, expected 7")
 for proxy, cls, settings, methods in rows:
     wrapped = getattr(relight, cls)
     settable = {name for name, cs in commands.get(cls, {}).items() if any(c.startswith(("Set", "Add")) for c in cs)}
     settable -= {"Input", "MovingLights", "DynamicObjects", "Selection", "DummyInput"}
-    check(set(settings) == settable, f"{proxy}: the README lists the XML's settings "
-                                     f"(only in README {sorted(set(settings) - settable)}, "
+    check(set(settings) == settable, f"{proxy}: docs/settings.md lists the XML's settings "
+                                     f"(only in docs {sorted(set(settings) - settable)}, "
                                      f"only in XML {sorted(settable - set(settings))})")
     plain = [name for name in settings if not hasattr(wrapped, "Set" + name)]
     named = [m for m in methods if not hasattr(wrapped, m)]

@@ -1,8 +1,8 @@
 """Runs inside the real ParaView GUI (started by RunParaViewGUI.py under Xvfb): builds the
 pipeline in Python and shows each output in the view its hints ask for, as Apply does.
 Checks what ParaView then shows with no change in the display panel: the Radiosity menu
-in pipeline order, the relit colours as computed, the convergence as a log-scale line
-chart with a line per light, and a Radiosity array in an HDR colour map with its unit.
+in pipeline order, the relit colors as computed, the convergence as a log-scale line
+chart with a line per light, and a Radiosity array in an HDR color map with its unit.
 """
 
 import os
@@ -48,11 +48,11 @@ def check_menu():
 
 
 def check_relit(display):
-    result.check(display.MapScalars == 0, "the relit output is shown through a colour map (Map Scalars on)")
+    result.check(display.MapScalars == 0, "the relit output is shown through a color map (Map Scalars on)")
     result.check(display.ColorArrayName[1] == "DisplayColors",
-                 "the relit output is coloured by '%s', expected DisplayColors" % display.ColorArrayName[1])
+                 "the relit output is colored by '%s', expected DisplayColors" % display.ColorArrayName[1])
     result.check(display.Ambient == 1 and display.Diffuse == 0,
-                 "shading on top of the relit colours: Ambient %g, Diffuse %g" % (display.Ambient, display.Diffuse))
+                 "shading on top of the relit colors: Ambient %g, Diffuse %g" % (display.Ambient, display.Diffuse))
 
 
 def check_chart(view_type, chart, line):
@@ -68,7 +68,7 @@ def check_chart(view_type, chart, line):
 def check_legend(solver, view):
     display = Show(solver, view)
     ColorBy(display, ("POINTS", "Radiosity_WarmWhite"))
-    display.SetScalarBarVisibility(view, True)  # as the GUI does when colouring by an array
+    display.SetScalarBarVisibility(view, True)  # as the GUI does when coloring by an array
     guitest.settle()
     bar = servermanager.vtkSMTransferFunctionProxy.FindScalarBarRepresentation(display.LookupTable.SMProxy,
                                                                                view.SMProxy)

@@ -1,5 +1,5 @@
 """Runs inside the real ParaView GUI (started by RunParaViewGUI.py under Xvfb): opens the
-demo pipeline from Data/, clicks a light's colour button in the lights panel (a colour
+demo pipeline from Data/, clicks a light's color button in the lights panel (a color
 dialog must open), changes a light through the proxy and saves a screenshot.
 """
 
@@ -24,9 +24,9 @@ for _ in range(50):
     app.processEvents()
 
 
-def colour_buttons():
+def color_buttons():
     tables = [t for t in app.allWidgets() if isinstance(t, QTableWidget) and t.isVisible()
-              and t.horizontalHeaderItem(1) is not None and t.horizontalHeaderItem(1).text() == "Colour"]
+              and t.horizontalHeaderItem(1) is not None and t.horizontalHeaderItem(1).text() == "Color"]
     return [b for t in tables for b in (t.cellWidget(r, 1) for r in range(t.rowCount())) if isinstance(b, QPushButton)]
 
 
@@ -59,10 +59,10 @@ def click_opens_dialog(button):
     return seen == [1]
 
 
-buttons = colour_buttons()
-if result.check(len(buttons) == 8, "the lights panel shows %d colour buttons, expected 8" % len(buttons)):
+buttons = color_buttons()
+if result.check(len(buttons) == 8, "the lights panel shows %d color buttons, expected 8" % len(buttons)):
     opened = [i for i, button in enumerate(buttons) if click_opens_dialog(button)]
-    result.check(len(opened) == 8, "a click on each colour button opens the colour dialog (opened for %s)" % opened)
+    result.check(len(opened) == 8, "a click on each color button opens the color dialog (opened for %s)" % opened)
 
 # An On box unchecked in the filter's panel is a pending change, as for any property:
 # nothing changes until Apply (the rows go through ParaView's property links).

@@ -59,9 +59,9 @@ check(history.GetValue(history.GetNumberOfTuples() - 1) < 1e-6, "converged to th
 # --- relight: equation 1, defaults, disabled lights --------------------------------------
 rl = relight.vtkRadiosityRelight()
 rl.SetInputConnection(tagged.GetOutputPort())
-colours = [(1.0, 0.5, 0.25), (0.2, 0.9, 0.4), (3.0, 2.0, 1.0)]
+colors = [(1.0, 0.5, 0.25), (0.2, 0.9, 0.4), (3.0, 2.0, 1.0)]
 intensities = [2.0, 0.5, 7.0]
-for i, (c, s) in enumerate(zip(colours, intensities)):
+for i, (c, s) in enumerate(zip(colors, intensities)):
     rl.SetLightColor(i, *c)
     rl.SetLightIntensity(i, s)
 rl.SetLightEnabled(1, False)
@@ -69,14 +69,14 @@ rl.Update()
 out = rl.GetOutput()
 for getter in (point_array, cell_array):
     expected = sum(
-        np.asarray(colours[i]) * intensities[i] * getter(solved, "Radiosity_" + n).astype(np.float64)
+        np.asarray(colors[i]) * intensities[i] * getter(solved, "Radiosity_" + n).astype(np.float64)
         for i, n in enumerate(names) if i != 1
     )
     got = getter(out, "Radiosity")
-    check(np.allclose(got, expected, rtol=1e-5, atol=1e-7), "relit = sum colour*intensity*B_i")
-check(out.GetPointData().GetScalars().GetName() == "DisplayColors", "display colours are active")
+    check(np.allclose(got, expected, rtol=1e-5, atol=1e-7), "relit = sum color*intensity*B_i")
+check(out.GetPointData().GetScalars().GetName() == "DisplayColors", "display colors are active")
 
-# Defaults: colour = mean Emission of the light's cells, intensity 1.
+# Defaults: color = mean Emission of the light's cells, intensity 1.
 rl.ResetLights()
 rl.Update()
 emission = cell_array(solved, "Emission")
@@ -85,7 +85,7 @@ default = sum(
     for i, n in enumerate(names)
 )
 check(np.allclose(cell_array(rl.GetOutput(), "Radiosity"), default, rtol=1e-5, atol=1e-7),
-      "default colour is the mean Emission")
+      "default color is the mean Emission")
 
 # Changing a light re-executes only the relight filter.
 executions = {"solver": 0, "relight": 0}
@@ -111,7 +111,7 @@ rl.SetLightSetting("Amber", float("nan"), float("nan"), float("nan"), 4.0, 1)
 rl.Update()
 keep = default - emission[light_ids == 2].mean(axis=0) * amber + 4.0 * emission[light_ids == 2].mean(axis=0) * amber
 check(np.allclose(cell_array(rl.GetOutput(), "Radiosity"), keep, rtol=1e-5, atol=1e-7),
-      "NaN colour in SetLightSetting keeps the default colour")
+      "NaN color in SetLightSetting keeps the default color")
 
 # --- tagged relit == standard combined, once both converge --------------------------------
 combined = solver_for(os.path.join(DATA, "paper_3lights.vtp"), mode="StandardCombined", threshold=1e-6)

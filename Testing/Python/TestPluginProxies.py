@@ -18,7 +18,7 @@ from paraview.simple import *  # noqa: F401,F403  (LoadPlugin, Show, Render, ...
 from paraview import servermanager
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from readmetable import setting_rows  # noqa: E402
+from settingstable import setting_rows  # noqa: E402
 
 import numpy as np
 from vtkmodules.util import numpy_support
@@ -68,23 +68,23 @@ def check_finite(dataset, label):
                       % (label, kind, array.GetName()))
 
 
-def check_readme_names(readme, proxies):
-    """Every setting the README's table lists is a property of its proxy, and every
+def check_setting_names(settings, proxies):
+    """Every setting docs/settings.md lists is a property of its proxy, and every
     settable property is in the table (TestNames.py checks the XML against C++)."""
-    table = {row[0]: row[2] for row in setting_rows(readme)}
-    check(len(table) == 7, "the README's settings table lists %d proxies, expected 7" % len(table))
+    table = {row[0]: row[2] for row in setting_rows(settings)}
+    check(len(table) == 7, "docs/settings.md lists %d proxies, expected 7" % len(table))
     for proxy in proxies:
         xml_name = proxy.SMProxy.GetXMLName()
         listed = table.get(xml_name, [])
         for name in listed:
-            check(hasattr(proxy, name), f"README names {xml_name}.{name}, which ParaView's Python lacks")
+            check(hasattr(proxy, name), f"docs/settings.md names {xml_name}.{name}, which ParaView's Python lacks")
         iterator = proxy.SMProxy.NewPropertyIterator()
         iterator.Begin()
         while not iterator.IsAtEnd():
             name, prop = iterator.GetKey(), iterator.GetProperty()
             iterator.Next()
             if not prop.GetInformationOnly() and not prop.IsA("vtkSMInputProperty"):
-                check(name in listed, f"{xml_name}.{name} is missing from the README's settings table")
+                check(name in listed, f"{xml_name}.{name} is missing from docs/settings.md")
 
 def write_room_obj():
     """A 2 x 2 x 2 m box (inward faces, Kd 0.5) with a 0.5 m ceiling lamp (Ke 10) as OBJ+MTL."""
@@ -145,7 +145,7 @@ def main(argv):
     check(mode == "LightTagged", "default SolutionMode is %r, expected 'LightTagged'" % (mode,))
     relight = RadiosityRelight(registrationName="Relight", Input=solver)
     scene_reader = RadiositySceneReader(FileName=write_room_obj())
-    check_readme_names(os.path.join(os.path.dirname(os.path.abspath(data_path)), "..", "README.md"),
+    check_setting_names(os.path.join(os.path.dirname(os.path.abspath(data_path)), "..", "docs", "settings.md"),
                        (scene_reader, MarkLights(Input=scene_reader), mesher, solver, relight))
     # One row of the repeatable string-vector property:
     # Name, Red, Green, Blue, Intensity, Enabled (all passed as strings).
@@ -164,7 +164,7 @@ def main(argv):
     check(n_lights == len(names),
           "NumberOfLights is %d but LightNamesInfo lists %d names" % (n_lights, len(names)))
     # The settings in effect read back, defaults included: ours for LIGHT, the filter's
-    # (solver's default colour, intensity 1, on) for any other light.
+    # (solver's default color, intensity 1, on) for any other light.
     effective = list(relight.LightSettingsInfo)
     rows = {effective[i]: effective[i + 1:i + 6] for i in range(0, len(effective), 6)}
     check(sorted(rows) == sorted(names), "LightSettingsInfo has rows for %s, expected %s" % (sorted(rows), names))
@@ -261,7 +261,7 @@ def main(argv):
     allowed = REL_TOL * np.abs(expected) + 1e-12 * scale
     bad = np.nonzero(np.any(error > allowed, axis=1))[0]
     check(bad.size == 0,
-          "relit cell Radiosity != colour * intensity * %s at %d cells; first: cell %d "
+          "relit cell Radiosity != color * intensity * %s at %d cells; first: cell %d "
           "relit %s expected %s" % (per_light, bad.size, bad[0] if bad.size else -1,
                                     relit_cells[bad[0]] if bad.size else None,
                                     expected[bad[0]] if bad.size else None))

@@ -23,14 +23,14 @@ def pixels(image):
 
 
 def both_paths(solved, settings, camera, exposure):
-    """The CPU and GPU pictures for `settings` = {index: (colour, intensity, enabled)}."""
+    """The CPU and GPU pictures for `settings` = {index: (color, intensity, enabled)}."""
     filter_ = relight.vtkRadiosityRelight()
     filter_.SetInputData(solved)
     mapper = relight.vtkRadiosityRelightMapper()
     mapper.SetInputData(solved)
     for target in (filter_, mapper):
-        for i, (colour, intensity, enabled) in settings.items():
-            target.SetLightColor(i, *colour)
+        for i, (color, intensity, enabled) in settings.items():
+            target.SetLightColor(i, *color)
             target.SetLightIntensity(i, intensity)
             target.SetLightEnabled(i, enabled)
         target.SetExposure(exposure)
@@ -63,8 +63,8 @@ check("light 'WarmWhite' has intensity -1" in mapper.GetLastProblem(), f"a bad s
 cpu_mapper = relight.vtkRadiosityRelightMapper()
 cpu_mapper.SetInputData(solved)
 cpu_mapper.SetUseGPU(False)
-for i, (colour, intensity, enabled) in settings.items():
-    cpu_mapper.SetLightColor(i, *colour)
+for i, (color, intensity, enabled) in settings.items():
+    cpu_mapper.SetLightColor(i, *color)
     cpu_mapper.SetLightIntensity(i, intensity)
     cpu_mapper.SetLightEnabled(i, enabled)
 cpu_mapper.SetExposure(2.0)

@@ -177,7 +177,7 @@ name = light_names(solved)[0]
 for label, setup, fragment in [
         ("negative intensity", lambda r: r.SetLightIntensity(0, -2.0), f"light '{name}' has intensity -2"),
         ("NaN intensity", lambda r: r.SetLightIntensity(0, float("nan")), "has intensity nan"),
-        ("negative colour", lambda r: r.SetLightColor(0, 1.0, -0.5, 1.0), "colour component 1 = -0.5"),
+        ("negative color", lambda r: r.SetLightColor(0, 1.0, -0.5, 1.0), "color component 1 = -0.5"),
         ("NaN exposure", lambda r: r.SetExposure(float("nan")), "Exposure (nan)")]:
     out, error = relit(solved, setup)
     check(fragment in error and out.GetNumberOfCells() == 0, f"relight, {label}: {error}")
@@ -244,7 +244,7 @@ try:
                        ((2, 2, 1), (2, 2, 0), (0, 1, 0), 60))
     check(False, "render_png of the solver's output raises")
 except ValueError as error:
-    check("DisplayColors" in str(error), f"render_png of the solver's output (no colours) raises: {error}")
+    check("DisplayColors" in str(error), f"render_png of the solver's output (no colors) raises: {error}")
 
 # --- a wall across a room: light does not pass through it --------------------------------------
 # The partition stands across floor, ceiling and side-wall patches (0.5 m patches): a patch

@@ -72,7 +72,7 @@ page = relight.export_viewer(relit.GetOutput(), os.path.join(folder, "viewer"), 
 before = browser_shot(page, "controls=0", "before.png")
 reference = vtk_shot(relit, "vtk_before.png")
 defaults = numpy_support.vtk_to_numpy(relit.GetOutput().GetFieldData().GetArray("LightDefaultColors"))
-peak = defaults[amber].max()  # the slider's default value: the default colour's largest channel
+peak = defaults[amber].max()  # the slider's default value: the default color's largest channel
 after = browser_shot(page, f"controls=0&intensity.Amber={BOOST * peak:.9g}", "after.png")
 relit.SetLightIntensity(amber, BOOST)
 boosted = vtk_shot(relit, "vtk_after.png")
@@ -102,7 +102,7 @@ if check(before is not None and after is not None, "Chromium rendered the page t
 # --- 20 lights: the solutions travel in a texture, so none is left out ---------------------------
 marker = relight.vtkRadiosityLightMarker()
 marker.SetInputData(read_polydata(os.path.join(DATA, "paper_3lights.vtp")))
-for n in range(17):  # 17 small lamps under the ceiling, in a grid, in turning colours
+for n in range(17):  # 17 small lamps under the ceiling, in a grid, in turning colors
     x, z = 0.6 + 0.7 * (n % 5), 0.6 + 0.9 * (n // 5)
     marker.AddAreaLight(f"Lamp{n + 4}", 0, x, 2.45, z, 0, -1, 0, 0.15, 0.15, 1 + n % 3, 1 + (n + 1) % 3, 1 + (n + 2) % 3)
 marker.Update()

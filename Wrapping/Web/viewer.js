@@ -1,6 +1,6 @@
 // Relights a glTF written by vtkRadiosityGLTFWriter in the browser: each light's
 // unit-emission solution (a vertex attribute in the file) goes into one float texture, and
-// the vertex shader sums them with the colour, intensity and on/off of the controls (a
+// the vertex shader sums them with the color, intensity and on/off of the controls (a
 // second texture), then applies the exposure and sRGB encoding per vertex, as the relight
 // filter's DisplayColors. Textures, not attributes: WebGL has 16 attributes, not 16 lights.
 import * as THREE from "three";
@@ -62,13 +62,13 @@ function solutionTexture(geometry, lights) {
 }
 
 const fragmentShader = `in vec3 shade;
-out vec4 colour;
-void main() { colour = vec4(shade, 1.0); }`;
+out vec4 color;
+void main() { color = vec4(shade, 1.0); }`;
 
-/// A light's default colour split into a displayable colour and an intensity.
-function splitColour(rgb) {
+/// A light's default color split into a displayable color and an intensity.
+function splitColor(rgb) {
   const peak = Math.max(rgb[0], rgb[1], rgb[2]);
-  if (!(peak > 0)) return { hex: "#ffffff", intensity: 0 }; // a light with no default colour: white, off
+  if (!(peak > 0)) return { hex: "#ffffff", intensity: 0 }; // a light with no default color: white, off
   const hex = rgb.map((c) => Math.round((255 * c) / peak).toString(16).padStart(2, "0")).join("");
   return { hex: `#${hex}`, intensity: peak };
 }
@@ -80,22 +80,22 @@ function hexToRgb(hex) {
 function controlRow(light, onChange) {
   const row = document.createElement("div");
   row.className = "light";
-  const { hex, intensity } = splitColour(light.defaultColor);
+  const { hex, intensity } = splitColor(light.defaultColor);
   row.innerHTML = `<label><input type="checkbox" checked> <span></span></label>
     <input type="color" value="${hex}">
     <input type="range" min="0" max="${4 * (intensity || 1)}" step="${(intensity || 1) / 100}" value="${intensity}">`;
   row.querySelector("span").textContent = light.name;
-  const [enabled, colour, slider] = row.querySelectorAll("input");
+  const [enabled, color, slider] = row.querySelectorAll("input");
   const weight = () => {
-    const rgb = hexToRgb(colour.value);
+    const rgb = hexToRgb(color.value);
     const on = enabled.checked ? Number(slider.value) : 0;
     return new THREE.Vector3(rgb[0] * on, rgb[1] * on, rgb[2] * on);
   };
-  for (const input of [enabled, colour, slider]) input.addEventListener("input", onChange);
-  return { row, weight, enabled, colour, slider };
+  for (const input of [enabled, color, slider]) input.addEventListener("input", onChange);
+  return { row, weight, enabled, color, slider };
 }
 
-/// URL settings, as a user's changes: ?intensity.Amber=4&enabled.Warm%20White=0&colour.X=ff0000
+/// URL settings, as a user's changes: ?intensity.Amber=4&enabled.Warm%20White=0&color.X=ff0000
 function applyQuery(controls, lights) {
   const query = new URLSearchParams(location.search);
   lights.forEach((light, i) => {
@@ -109,9 +109,9 @@ function applyQuery(controls, lights) {
     if (wanted > Number(controls[i].slider.max)) controls[i].slider.max = String(wanted);
     set(controls[i].slider, "intensity", "value");
     set(controls[i].enabled, "enabled", "checked");
-    if (query.has(`colour.${light.name}`)) {
-      controls[i].colour.value = `#${query.get(`colour.${light.name}`)}`;
-      controls[i].colour.dispatchEvent(new Event("input"));
+    if (query.has(`color.${light.name}`)) {
+      controls[i].color.value = `#${query.get(`color.${light.name}`)}`;
+      controls[i].color.dispatchEvent(new Event("input"));
     }
   });
   if (query.get("controls") === "0") document.getElementById("panel").style.display = "none";

@@ -28,7 +28,7 @@ struct AreaLight
   Vec3 Normal{ 0, 0, -1 }; ///< the side it emits to
   double Width = 1;        ///< a disk's diameter
   double Height = 1;       ///< a rectangle's other side
-  Vec3 Colour{ 1, 1, 1 };  ///< its Emission
+  Vec3 Color{ 1, 1, 1 };  ///< its Emission
 };
 
 /// The corners of an area light, wound so that its front (right-hand rule) faces Normal:

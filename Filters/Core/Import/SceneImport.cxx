@@ -35,11 +35,11 @@ std::string CheckMaterials(const std::vector<ImportMaterial>& materials)
   {
     if (!Finite(m.Diffuse) || !Finite(m.Emissive))
     {
-      return "material '" + m.Name + "' has a colour that is not a finite number";
+      return "material '" + m.Name + "' has a color that is not a finite number";
     }
     if (m.Emissive.x < 0 || m.Emissive.y < 0 || m.Emissive.z < 0)
     {
-      return "material '" + m.Name + "' has a negative emissive colour";
+      return "material '" + m.Name + "' has a negative emissive color";
     }
   }
   return std::string();
@@ -155,7 +155,7 @@ std::string BuildImportedScene(const RawScene& raw, const ImportOptions& options
   }
   const int polygons = raw.NumberOfPolygons();
   if (raw.material.size() != static_cast<size_t>(polygons) || raw.object.size() != static_cast<size_t>(polygons) ||
-    (!raw.colour.empty() && raw.colour.size() != static_cast<size_t>(polygons)))
+    (!raw.color.empty() && raw.color.size() != static_cast<size_t>(polygons)))
   {
     return "internal: material and object lists do not match the polygons";
   }
@@ -173,11 +173,11 @@ std::string BuildImportedScene(const RawScene& raw, const ImportOptions& options
       return "internal: a polygon refers to material " + std::to_string(m) + ", which does not exist";
     }
   }
-  for (const Vec3& c : raw.colour)
+  for (const Vec3& c : raw.color)
   {
     if (!Finite(c))
     {
-      return "a polygon colour is not a finite number";
+      return "a polygon color is not a finite number";
     }
   }
   out.Mesh.points.reserve(raw.points.size());
@@ -218,9 +218,9 @@ std::string BuildImportedScene(const RawScene& raw, const ImportOptions& options
   {
     const int m = raw.material[i];
     Vec3 diffuse = m >= 0 ? raw.materials[m].Diffuse : Vec3{ 0.8, 0.8, 0.8 };
-    if (!raw.colour.empty())
+    if (!raw.color.empty())
     {
-      diffuse = { diffuse.x * raw.colour[i].x, diffuse.y * raw.colour[i].y, diffuse.z * raw.colour[i].z };
+      diffuse = { diffuse.x * raw.color[i].x, diffuse.y * raw.color[i].y, diffuse.z * raw.color[i].z };
     }
     out.Mesh.reflectance.push_back(Clamped(diffuse));
     if (m >= 0 && !InUnitRange(diffuse))
@@ -246,7 +246,7 @@ std::string BuildImportedScene(const RawScene& raw, const ImportOptions& options
     {
       names += (names.empty() ? "'" : ", '") + name + "'";
     }
-    out.Warnings.push_back("diffuse colours outside [0, 1] clamped for " + std::to_string(clamped.size()) +
+    out.Warnings.push_back("diffuse colors outside [0, 1] clamped for " + std::to_string(clamped.size()) +
       " materials: " + names);
   }
   if (out.Dropped)

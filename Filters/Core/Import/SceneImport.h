@@ -1,5 +1,5 @@
 // From what a scene file holds (polygons, materials, objects) to the radiosity input:
-// reflectance from diffuse colours, lights from emissive materials, degenerate cells out.
+// reflectance from diffuse colors, lights from emissive materials, degenerate cells out.
 // File formats are read elsewhere (VTK's readers, assimp); this part is format-free.
 #ifndef RadiosityCore_SceneImport_h
 #define RadiosityCore_SceneImport_h
@@ -17,8 +17,8 @@ struct ImportMaterial
 {
   std::string Name;
   Vec3 Diffuse{ 0.8, 0.8, 0.8 }; ///< linear RGB, as written (clamped later)
-  Vec3 Emissive;                 ///< emitted colour; any positive channel makes a light
-  std::string DiffuseTexture;    ///< texture file the diffuse colour is multiplied by, if any
+  Vec3 Emissive;                 ///< emitted color; any positive channel makes a light
+  std::string DiffuseTexture;    ///< texture file the diffuse color is multiplied by, if any
 };
 
 /// Polygons as read from a file, before they become a radiosity scene.
@@ -29,7 +29,7 @@ struct RawScene
   std::vector<int> connectivity;
   std::vector<int> material; ///< per polygon: index into materials, or -1 for none
   std::vector<int> object;   ///< per polygon: index into objectNames, or -1
-  std::vector<Vec3> colour;  ///< per polygon, multiplies its material's diffuse; empty: none
+  std::vector<Vec3> color;  ///< per polygon, multiplies its material's diffuse; empty: none
   std::vector<ImportMaterial> materials;
   std::vector<std::string> objectNames;
   int NumberOfPolygons() const { return static_cast<int>(offsets.size()) - 1; }
@@ -59,7 +59,7 @@ struct ImportedScene
 constexpr const char* NoLightsWarning = "no emissive material: mark lights before solving";
 
 /// Builds the scene; returns an empty string or what makes the file unusable (a
-/// non-finite coordinate, a material colour that is not a number, nothing left).
+/// non-finite coordinate, a material color that is not a number, nothing left).
 std::string BuildImportedScene(const RawScene& raw, const ImportOptions& options, ImportedScene& out);
 
 } // namespace radiosity

@@ -27,7 +27,7 @@ bool Number(const std::string& word, double& value)
 }
 
 /// "Kd 0.5 0.4 0.3" or "Kd 0.5" (grey) after the keyword; false if not finite numbers.
-bool ReadColour(std::istringstream& words, Vec3& colour)
+bool ReadColor(std::istringstream& words, Vec3& color)
 {
   std::vector<double> values;
   std::string word;
@@ -44,7 +44,7 @@ bool ReadColour(std::istringstream& words, Vec3& colour)
   {
     return false;
   }
-  colour = values.size() == 1 ? Vec3{ value, value, value } : Vec3{ values[0], values[1], values[2] };
+  color = values.size() == 1 ? Vec3{ value, value, value } : Vec3{ values[0], values[1], values[2] };
   return true;
 }
 
@@ -204,7 +204,7 @@ std::string ParseMtl(const std::string& text, std::vector<ImportMaterial>& mater
       return std::string();
     }
     Vec3& target = keyword == "Kd" ? current->Diffuse : current->Emissive;
-    return ReadColour(words, target) ? std::string()
+    return ReadColor(words, target) ? std::string()
                                      : where + keyword + " needs one or three finite numbers (material '" + current->Name + "')";
   });
 }

@@ -44,7 +44,7 @@ std::string Joined(const std::vector<std::string>& names)
 
 } // namespace
 
-std::string InvalidLightValues(double intensity, const Vec3& colour)
+std::string InvalidLightValues(double intensity, const Vec3& color)
 {
   std::ostringstream why;
   if (!(std::isfinite(intensity) && intensity >= 0))
@@ -53,9 +53,9 @@ std::string InvalidLightValues(double intensity, const Vec3& colour)
   }
   for (int c = 0; c < 3 && why.str().empty(); ++c)
   {
-    if (!(std::isfinite(colour[c]) && colour[c] >= 0))
+    if (!(std::isfinite(color[c]) && color[c] >= 0))
     {
-      why << "has colour component " << c << " = " << colour[c] << "; colours must be finite and >= 0";
+      why << "has color component " << c << " = " << color[c] << "; colors must be finite and >= 0";
     }
   }
   return why.str();
@@ -77,11 +77,11 @@ void LightSetting::ApplyTo(LightSetting& effective) const
   }
 }
 
-void LightRig::SetColor(int light, const Vec3& colour)
+void LightRig::SetColor(int light, const Vec3& color)
 {
   LightSetting& s = this->ByIndex[light];
   s.HasColor = true;
-  s.Color = colour;
+  s.Color = color;
 }
 
 void LightRig::SetIntensity(int light, double intensity)
@@ -98,13 +98,13 @@ void LightRig::SetEnabled(int light, bool enabled)
   s.Enabled = enabled;
 }
 
-void LightRig::SetByName(const std::string& name, const Vec3& colour, double intensity, bool enabled)
+void LightRig::SetByName(const std::string& name, const Vec3& color, double intensity, bool enabled)
 {
   LightSetting& s = this->ByName[name];
-  s.HasColor = !(std::isnan(colour.x) || std::isnan(colour.y) || std::isnan(colour.z));
+  s.HasColor = !(std::isnan(color.x) || std::isnan(color.y) || std::isnan(color.z));
   s.HasIntensity = !std::isnan(intensity);
   s.HasEnabled = true;
-  s.Color = colour;
+  s.Color = color;
   s.Intensity = intensity;
   s.Enabled = enabled;
 }
@@ -239,17 +239,17 @@ std::string LightRig::Resolve(const std::vector<std::string>& names, const std::
   return std::string();
 }
 
-std::vector<Vec3> DefaultLightColours(int lights, const std::vector<double>& given, const std::vector<int>& lightId,
+std::vector<Vec3> DefaultLightColors(int lights, const std::vector<double>& given, const std::vector<int>& lightId,
   const std::vector<Vec3>& emission)
 {
-  std::vector<Vec3> colours(lights, { 1, 1, 1 });
+  std::vector<Vec3> colors(lights, { 1, 1, 1 });
   if (given.size() == 3 * static_cast<size_t>(lights))
   {
     for (int l = 0; l < lights; ++l)
     {
-      colours[l] = { given[3 * l], given[3 * l + 1], given[3 * l + 2] };
+      colors[l] = { given[3 * l], given[3 * l + 1], given[3 * l + 2] };
     }
-    return colours;
+    return colors;
   }
   std::vector<Vec3> sum(lights);
   std::vector<int> count(lights, 0);
@@ -263,9 +263,9 @@ std::vector<Vec3> DefaultLightColours(int lights, const std::vector<double>& giv
   }
   for (int l = 0; l < lights; ++l)
   {
-    colours[l] = count[l] ? sum[l] * (1.0 / count[l]) : colours[l];
+    colors[l] = count[l] ? sum[l] * (1.0 / count[l]) : colors[l];
   }
-  return colours;
+  return colors;
 }
 
 std::vector<double> LightWeights(const std::vector<LightSetting>& effective, double indirectScale)

@@ -1,6 +1,6 @@
 // The lights' settings and what decides them: defaults, settings by name, a schedule of
 // keyframes over time, settings by index. One place for the precedence, so the relight
-// filter, a renderer that relights on the GPU and Python give the same colours.
+// filter, a renderer that relights on the GPU and Python give the same colors.
 #ifndef RadiosityCore_LightRig_h
 #define RadiosityCore_LightRig_h
 
@@ -13,7 +13,7 @@
 namespace radiosity
 {
 
-/// A light's colour, intensity and on/off; a part without its Has flag leaves what lies
+/// A light's color, intensity and on/off; a part without its Has flag leaves what lies
 /// below it (a default, or a setting of lower precedence) as it is.
 struct LightSetting
 {
@@ -24,13 +24,13 @@ struct LightSetting
   bool HasEnabled = false;
   bool Enabled = true;
   void ApplyTo(LightSetting& effective) const;
-  /// Its contribution weight per channel: colour x intensity, or zero when off.
+  /// Its contribution weight per channel: color x intensity, or zero when off.
   Vec3 Weight() const { return Enabled ? Color * Intensity : Vec3(); }
 };
 
 /// Why a light's values cannot be used (empty when they can): light is never negative,
 /// and NaN would silently blank the picture.
-std::string InvalidLightValues(double intensity, const Vec3& colour);
+std::string InvalidLightValues(double intensity, const Vec3& color);
 
 /// A keyframe of the schedule: the light by name, or by index written as a number.
 struct LightKeyframe
@@ -55,16 +55,16 @@ struct LightRig
 
   ///@{
   /// Settings by index, one part at a time.
-  void SetColor(int light, const Vec3& colour);
+  void SetColor(int light, const Vec3& color);
   void SetIntensity(int light, double intensity);
   void SetEnabled(int light, bool enabled);
   ///@}
 
-  /// A whole setting by name; a NaN colour component or intensity keeps that part at its
-  /// default (a panel that changed only the intensity must not replace the colour).
-  void SetByName(const std::string& name, const Vec3& colour, double intensity, bool enabled);
+  /// A whole setting by name; a NaN color component or intensity keeps that part at its
+  /// default (a panel that changed only the intensity must not replace the color).
+  void SetByName(const std::string& name, const Vec3& color, double intensity, bool enabled);
 
-  /// The schedule's setting for light `name` (index `index`) at `time`: colour and
+  /// The schedule's setting for light `name` (index `index`) at `time`: color and
   /// intensity interpolated linearly between keyframes, on/off held from the one before.
   /// False if no keyframe names the light.
   bool Scheduled(const std::string& name, int index, double time, LightSetting& out) const;
@@ -72,7 +72,7 @@ struct LightRig
   /// Every keyframe time, sorted, each once.
   std::vector<double> KeyframeTimes() const;
 
-  /// The settings in effect for lights `names` with `defaults` (their default colours),
+  /// The settings in effect for lights `names` with `defaults` (their default colors),
   /// at `time`: defaults, then by name, then the schedule, then by index. Returns an empty
   /// string, or the error for a light switched on with a negative, infinite or NaN value.
   /// `warnings` gets settings that name no light.
@@ -80,14 +80,14 @@ struct LightRig
     std::vector<LightSetting>& effective, std::vector<std::string>& warnings) const;
 };
 
-/// The lights' default colours: `given` (the solver's LightDefaultColors, 3 values per
+/// The lights' default colors: `given` (the solver's LightDefaultColors, 3 values per
 /// light) when it holds one per light, else each light's mean Emission over its cells
 /// (`lightId`, `emission` per cell; zero Emission stays zero, a light without cells or
 /// without an Emission array is white).
-std::vector<Vec3> DefaultLightColours(int lights, const std::vector<double>& given, const std::vector<int>& lightId,
+std::vector<Vec3> DefaultLightColors(int lights, const std::vector<double>& given, const std::vector<int>& lightId,
   const std::vector<Vec3>& emission);
 
-/// The 3k weights (colour x intensity, zero for lights off) of resolved settings; with an
+/// The 3k weights (color x intensity, zero for lights off) of resolved settings; with an
 /// indirect scale other than 1, 6k: s times the totals, then (1 - s) times the direct
 /// parts, for B = s B_total + (1 - s) B_direct.
 std::vector<double> LightWeights(const std::vector<LightSetting>& effective, double indirectScale);

@@ -50,7 +50,7 @@ void CombineLightsRange(const std::vector<const T*>& solutions, const std::vecto
 }
 
 /// `solutions[i]` points at n RGB tuples of solution i (any value type); `weights` holds
-/// 3 * k factors (colour * intensity, 0 for a disabled light). Writes n RGB tuples to
+/// 3 * k factors (color * intensity, 0 for a disabled light). Writes n RGB tuples to
 /// `out`, accumulating in double. Cost O(n k); nothing else is recomputed.
 template <typename T, typename Out>
 void CombineLights(const std::vector<const T*>& solutions, const std::vector<double>& weights,
@@ -69,7 +69,7 @@ void CombineLights(const std::vector<const T*>& solutions, const std::vector<dou
   });
 }
 
-/// Linear radiosity to 8-bit display colour: exposure, clamp, sRGB transfer curve.
+/// Linear radiosity to 8-bit display color: exposure, clamp, sRGB transfer curve.
 inline unsigned char ToDisplay(double linear, double exposure)
 {
   double v = linear * exposure;

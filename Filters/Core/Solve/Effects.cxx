@@ -136,7 +136,7 @@ std::vector<EffectDecision> DescribeEffects(const SceneMesh& mesh, const SolverO
   }
   else
   {
-    color.Reason = options.Color == EffectMode::On ? "simulated: forced on" : "simulated: coloured reflectance or emission";
+    color.Reason = options.Color == EffectMode::On ? "simulated: forced on" : "simulated: colored reflectance or emission";
   }
   rows.push_back(color);
 

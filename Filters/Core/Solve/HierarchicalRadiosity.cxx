@@ -1,4 +1,5 @@
 #include "Solve/HierarchicalRadiosity.h"
+#include "Solve/PatchTree.h"
 #include "Solve/ShootToElements.h"
 
 #include <algorithm>
@@ -23,6 +24,10 @@ struct ShooterLinks
   std::vector<int> Clusters;
   std::vector<float> ClusterVectors; ///< three per cluster link
   std::vector<int> ClusterEnd;       ///< end of each group in Clusters
+  /// Patch-tree nodes taken whole (far and in full view): each of their patches receives
+  /// F = n_q . v, a face cluster through its root node; three floats per link.
+  std::vector<int> Volumes;
+  std::vector<float> VolumeVectors;
   std::vector<int> Groups;   ///< receiver patch of each element group
   std::vector<int> GroupEnd; ///< end of each group in Elements
   std::vector<int> Elements;
@@ -34,7 +39,7 @@ struct ShooterLinks
   double Bytes() const
   {
     return static_cast<double>(Patches.size() * 4 + NodeFactors.size() + Clusters.size() * 4 + Groups.size() * 3 +
-             Elements.size() * 2) * 4;
+             Elements.size() * 2 + Volumes.size() * 4) * 4;
   }
 };
 
@@ -59,6 +64,16 @@ constexpr double kNodeNearRadii = 4.0;
 /// Rays per sample for one visibility shared by a far receiver's element links: they stand
 /// for all of its elements' rays, so they are more.
 constexpr int kSharedRays = 4;
+/// A node of the patch tree farther from the shooter than this many of the sum of their
+/// radii is passed over whole when none of kHiddenNodeRays rays from the shooter to its
+/// elements that face it arrives (a room behind a wall); nearer, the shooter's own walls and corners
+/// would hide too much of a node that is partly in view.
+constexpr double kHiddenNodeRadii = 2.0;
+constexpr int kHiddenNodeRays = 16;
+/// A patch-tree node in full view and farther than this many of its radii is linked whole:
+/// one factor vector at its centre stands for each patch's factor, to within about
+/// (1 / 6)^2 = 3 % of each (the error of a point factor across a far receiver).
+constexpr double kVolumeNearRadii = 6.0;
 
 class LinkBuilder
 {
@@ -66,11 +81,12 @@ public:
   /// `owned`: the receiver patches this process links to; `ranks`: the processes solving
   /// together, which share the element factors of every shooter's near patches.
   LinkBuilder(const SceneGeometry& g, ShooterFormFactors& factors, const PatchNodes& nodes,
-    const ReceiverNodes& clusters, const WorkerPool& pool, int samples, double threshold, const std::vector<char>& owned,
-    Collective& ranks)
+    const ReceiverNodes& clusters, const PatchTree& tree, const WorkerPool& pool, int samples, double threshold,
+    const std::vector<char>& owned, Collective& ranks)
     : G(g)
     , Factors(factors)
     , Nodes(nodes)
+    , Tree(tree)
     , ClusterNodes(clusters)
     , Pool(pool)
     , Samples(samples)
@@ -83,7 +99,15 @@ public:
     , NodeElements(Patches)
     , Owned(owned)
     , Ranks(ranks)
+    , PatchCovered(Patches, 0.0)
   {
+    for (int q = 0; q < Patches; ++q)
+    {
+      for (int j = Nodes.Begin(q); j < Nodes.End(q); ++j)
+      {
+        PatchCovered[q] += Nodes.CoveredArea(j);
+      }
+    }
   }
 
   /// `shotFraction`: the largest fraction of a solution's emitted power this shot carries.
@@ -92,6 +116,7 @@ public:
     Classify(shooter, shotFraction, stats);
     ShooterLinks links;
     links.Built = true;
+    AddVolumeLinks(links, stats);
     for (int q = 0; q < Patches; ++q)
     {
       if (Kind[q] == LinkKind::Patch)
@@ -111,7 +136,81 @@ public:
     return links;
   }
 
+  /// Delivers the current shot to the owned patches of volume link `link`.
+  template <typename Channel>
+  void DeliverVolume(ShootingState<Channel>& state, const ShooterLinks& links, int link,
+    const std::vector<Vec3>& meanReflectance) const
+  {
+    const float* f = links.VolumeVectors.data() + 3 * link;
+    const Vec3 v{ f[0], f[1], f[2] };
+    const PatchTree::Node& node = Tree.Nodes()[links.Volumes[link]];
+    for (int i = node.First; i < node.First + node.Count; ++i)
+    {
+      const int q = Tree.Patches()[i];
+      if (!Owned[q] || G.patchOpenArea[q] <= 0)
+      {
+        continue;
+      }
+      if (!Factors.Planar(q))
+      {
+        state.GatherCluster(ClusterNodes.Root[q], v); // only links facing all of it are made
+        continue;
+      }
+      const double factor = Dot(Factors.Normal(q), v);
+      if (factor > 0)
+      {
+        state.GatherPatchUniform(q, factor, factor * PatchCovered[q] / G.patchOpenArea[q], meanReflectance[q]);
+      }
+    }
+  }
+
 private:
+  void AddVolumeLinks(ShooterLinks& links, SolverStatistics& stats) const
+  {
+    for (const auto& task : TaskVolumes)
+    {
+      for (const auto& link : task)
+      {
+        links.Volumes.push_back(link.first);
+        for (int k = 0; k < 3; ++k)
+        {
+          links.VolumeVectors.push_back(static_cast<float>(link.second[k]));
+        }
+        links.ReceivingArea += VolumeReceiving(link.first, link.second, true);
+      }
+    }
+    // Every rank makes the same volume links, each for its own patches: count them once.
+    stats.VolumeLinks += Ranks.Rank() == 0 ? static_cast<long long>(links.Volumes.size()) : 0;
+  }
+
+  /// The power node n receives per unit shot radiosity through factor vector v (its owned
+  /// patches only, where `owned`); -1 where a face cluster in it is cut by the shooter's
+  /// ball's planes, so that the node cannot be taken whole.
+  double VolumeReceiving(int n, const Vec3& v, bool owned, int s = -1) const
+  {
+    const PatchTree::Node& node = Tree.Nodes()[n];
+    double covered = 0;
+    for (int i = node.First; i < node.First + node.Count; ++i)
+    {
+      const int q = Tree.Patches()[i];
+      if ((owned && !Owned[q]) || G.patchOpenArea[q] <= 0)
+      {
+        continue;
+      }
+      if (Factors.Planar(q))
+      {
+        covered += std::max(0.0, Dot(Factors.Normal(q), v)) * PatchCovered[q];
+        continue;
+      }
+      if (s >= 0 && !FacesBall(Factors.Centre(q), Factors.Radius(q), Factors.Cone(q), Factors.Centre(s), Factors.Radius(s)))
+      {
+        return -1;
+      }
+      covered += Dot(ClusterNodes.OpenArea[ClusterNodes.Root[q]], v);
+    }
+    return covered;
+  }
+
   void AddPatchLink(int q, ShooterLinks& links) const
   {
     links.Patches.push_back(q);
@@ -170,25 +269,111 @@ private:
     {
       f = static_cast<float>(f * scale);
     }
+    for (float& f : links.VolumeVectors)
+    {
+      f = static_cast<float>(f * scale);
+    }
     links.ReceivingArea *= scale;
   }
 
   /// Decides per receiver patch: no link, one patch link, or element links.
   void Classify(int shooter, double shotFraction, SolverStatistics& stats)
   {
+    std::fill(Kind.begin(), Kind.end(), LinkKind::None);
+    std::fill(SharedVisibility.begin(), SharedVisibility.end(), -1.0);
     std::atomic<long long> rays{ 0 };
-    Pool.For(Patches, 16, [&](int begin, int end) {
+    const std::vector<int>& tasks = Tree.Frontier();
+    TaskVolumes.assign(tasks.size(), {});
+    Pool.For(static_cast<int>(tasks.size()), 1, [&](int begin, int end) {
       thread_local std::vector<Vec3> scratch;
       long long chunkRays = 0;
-      for (int q = begin; q < end; ++q)
+      for (int t = begin; t < end; ++t)
       {
-        SharedVisibility[q] = -1;
-        Kind[q] = q == shooter || !Owned[q] ? LinkKind::None : Decide(shooter, q, shotFraction, scratch, chunkRays);
+        Visit(shooter, tasks[t], shotFraction, scratch, chunkRays, TaskVolumes[t]);
       }
       rays += chunkRays;
     });
     stats.RayCount += rays;
     stats.FormFactorCount += std::count(Owned.begin(), Owned.end(), 1);
+  }
+
+  /// Decides for the patches of patch-tree node n: passes over all of them where the node
+  /// lies behind the shooter, faces away from it, or is far and out of its sight; links it
+  /// whole where it is far enough and in full view; else asks its children, or each patch.
+  void Visit(int s, int n, double shotFraction, std::vector<Vec3>& scratch, long long& rays,
+    std::vector<std::pair<int, Vec3>>& volumes)
+  {
+    const PatchTree::Node& node = Tree.Nodes()[n];
+    const Vec3& cs = Factors.Centre(s);
+    const double rs = Factors.Radius(s);
+    if (BehindBall(cs, rs, Factors.Cone(s), node.Centre, node.Radius) ||
+      BehindBall(node.Centre, node.Radius, node.Cone, cs, rs))
+    {
+      return;
+    }
+    const double distance = Norm(node.Centre - cs);
+    if (node.Count > 1 && distance > kHiddenNodeRadii * (node.Radius + rs))
+    {
+      const double seen = InView(s, n, rays);
+      if (seen == 0)
+      {
+        return;
+      }
+      if (seen == 1 && distance - rs >= kVolumeNearRadii * node.Radius && TakeWhole(s, n, shotFraction, volumes))
+      {
+        return;
+      }
+    }
+    if (node.Left >= 0)
+    {
+      Visit(s, node.Left, shotFraction, scratch, rays, volumes);
+      Visit(s, node.Right, shotFraction, scratch, rays, volumes);
+      return;
+    }
+    for (int i = node.First; i < node.First + node.Count; ++i)
+    {
+      const int q = Tree.Patches()[i];
+      Kind[q] = q == s || !Owned[q] ? LinkKind::None : Decide(s, q, shotFraction, scratch, rays);
+    }
+  }
+
+  /// Links node n whole unless the transfer is strong enough to want patch resolution
+  /// (the refinement threshold) or a face cluster in it is not wholly in front of the
+  /// shooter; false when it must be refined.
+  bool TakeWhole(int s, int n, double shotFraction, std::vector<std::pair<int, Vec3>>& volumes) const
+  {
+    const Vec3 v = Factors.FactorVector(s, Tree.Nodes()[n].Centre);
+    const double covered = VolumeReceiving(n, v, false, s);
+    if (covered < 0 || shotFraction * covered / G.patchArea[s] >= Threshold)
+    {
+      return false;
+    }
+    if (covered > 0)
+    {
+      volumes.push_back({ n, v });
+    }
+    return true;
+  }
+
+  /// Whether node n's elements that face the shooter are in its full view (1), out of it
+  /// (0, also where none faces it) or partly (in between), by kHiddenNodeRays rays.
+  double InView(int s, int n, long long& rays) const
+  {
+    const PatchTree::Node& node = Tree.Nodes()[n];
+    if (node.ElementCount == 0)
+    {
+      return -1.0; // no elements to aim at: neither hidden nor seen
+    }
+    if (Samples <= 0 || Factors.BlockingPlanes() == 0)
+    {
+      return 1.0; // no shadows, or nothing that could cast one
+    }
+    const std::uint64_t seed = (std::uint64_t{ 1 } << 40) + static_cast<std::uint64_t>(n);
+    long long cast = 0;
+    const double seen = Factors.VisibleFractionOfFacing(
+      s, Tree.Targets().data() + node.ElementFirst, node.ElementCount, kHiddenNodeRays, seed, cast);
+    rays += Ranks.Rank() == 0 ? cast : 0; // every rank casts the same rays: count them once
+    return seen;
   }
 
   LinkKind Decide(int s, int q, double shotFraction, std::vector<Vec3>& scratch, long long& rays)
@@ -525,6 +710,7 @@ private:
   const SceneGeometry& G;
   ShooterFormFactors& Factors;
   const PatchNodes& Nodes;
+  const PatchTree& Tree;
   const WorkerPool& Pool;
   const int Samples;
   const double Threshold;
@@ -541,6 +727,10 @@ private:
   std::vector<double> SharedVisibility, ElementVisibility;
   const std::vector<char>& Owned;
   Collective& Ranks;
+  /// Per patch, the area its nodes cover (a uniform factor's integral per unit factor).
+  std::vector<double> PatchCovered;
+  /// The volume links found by each task of the walk, joined in task order.
+  std::vector<std::vector<std::pair<int, Vec3>>> TaskVolumes;
 };
 
 std::vector<Vec3> MeanReflectance(const SceneMesh& mesh, const SceneGeometry& g)
@@ -558,15 +748,23 @@ std::vector<Vec3> MeanReflectance(const SceneMesh& mesh, const SceneGeometry& g)
 
 /// Sends the current shot along a shooter's links; returns the power received.
 template <typename Channel>
-double DistributeAlongLinks(ShootingState<Channel>& state, const WorkerPool& pool, const ShooterLinks& links,
-  const std::vector<Vec3>& meanReflectance)
+double DistributeAlongLinks(ShootingState<Channel>& state, const WorkerPool& pool, const LinkBuilder& builder,
+  const ShooterLinks& links, const std::vector<Vec3>& meanReflectance)
 {
   const int patchLinks = static_cast<int>(links.Patches.size());
-  const int items = patchLinks + static_cast<int>(links.Groups.size());
-  // Every item touches one receiver patch only, so the items run in parallel safely.
+  const int volumes = static_cast<int>(links.Volumes.size());
+  const int items = volumes + patchLinks + static_cast<int>(links.Groups.size());
+  // Every item touches its own receiver patches (a volume link those of its node, which no
+  // other link of the shooter reaches), so the items run in parallel safely.
   pool.For(items, 8, [&](int begin, int end) {
-    for (int i = begin; i < end; ++i)
+    for (int item = begin; item < end; ++item)
     {
+      if (item < volumes)
+      {
+        builder.DeliverVolume(state, links, item, meanReflectance);
+        continue;
+      }
+      const int i = item - volumes;
       if (i < patchLinks)
       {
         const int q = links.Patches[i];
@@ -602,18 +800,19 @@ void Shoot(const SceneMesh& mesh, const SceneGeometry& g, const Visibility& rays
   estimator.SetReceivers(&state.OwnedPatchFlags());
   const PatchNodes nodes(g, estimator.PatchLoops(), estimator.Centres());
   const ReceiverNodes clusters(g, estimator);
+  const PatchTree tree(g, estimator);
   state.EnablePatchGathering(nodes);
   state.EnableClusterGathering(clusters);
   const int samples = options.Visibility == EffectMode::Off ? 0 : options.Samples;
-  const double refine = options.RefinementThreshold > 0 ? options.RefinementThreshold : 2.0; // 2: never
-  LinkBuilder builder(g, estimator, nodes, clusters, pool, samples, refine, state.OwnedPatchFlags(), state.Ranks());
+  const double refine = options.Hierarchical.RefinementThreshold > 0 ? options.Hierarchical.RefinementThreshold : 2.0; // 2: never
+  LinkBuilder builder(g, estimator, nodes, clusters, tree, pool, samples, refine, state.OwnedPatchFlags(), state.Ranks());
   const std::vector<Vec3> meanReflectance = MeanReflectance(mesh, g);
   std::vector<ShooterLinks> links(state.Patches);
   std::vector<double> factors;
   while (state.Continue())
   {
     const int shooter = state.PickShooter();
-    const bool emitting = options.DirectToElements && state.Emitting(shooter);
+    const bool emitting = options.Hierarchical.DirectToElements && state.Emitting(shooter);
     state.TakeShot(shooter);
     if (emitting)
     {
@@ -625,7 +824,7 @@ void Shoot(const SceneMesh& mesh, const SceneGeometry& g, const Visibility& rays
     {
       links[shooter] = builder.Build(shooter, state.ShotFraction(shooter), stats);
     }
-    state.EndShot(shooter, DistributeAlongLinks(state, pool, links[shooter], meanReflectance));
+    state.EndShot(shooter, DistributeAlongLinks(state, pool, builder, links[shooter], meanReflectance));
   }
   state.Finish(estimator);
 }

@@ -17,7 +17,7 @@ namespace radiosity
 /// - Every other shooter links once, at its first shot, to each receiver patch: to the
 ///   patch as a whole (form factors at its corners, visibility from rays between the
 ///   patches) when it is far (centres more than 2 x the sum of their radii apart) and wholly in
-///   front (and, with `RefinementThreshold`, carries less than that fraction of any
+///   front (and, with `Hierarchical.RefinementThreshold`, carries less than that fraction of any
 ///   solution's emitted power); element by element otherwise. Later shots reuse the links:
 ///   no rays, no form factors.
 /// - A face cluster (a patch of a curved surface, FaceClusters.h) receives node by node

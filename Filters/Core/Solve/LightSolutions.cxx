@@ -133,7 +133,7 @@ Solution SolveInMode(const RadiositySolver& solver, const SceneMesh& mesh, const
   }
   out.Ambient.assign(L, Vec3());
   SolverStatistics& total = out.Statistics;
-  total.Converged = true;
+  total = SolverStatistics::Sequence();
   std::vector<double> lastRemaining(L, 1.0);
   // Each solution's emitted power, so the history is total remaining / total initial, as
   // in the one-pass modes.
@@ -193,22 +193,7 @@ Solution SolveInMode(const RadiositySolver& solver, const SceneMesh& mesh, const
       total.TimeHistory.push_back(elapsed + t.TimeHistory[shot]);
     }
     elapsed += t.TimeHistory.empty() ? 0.0 : t.TimeHistory.back();
-    total.Shots += t.Shots;
-    total.Converged = total.Converged && t.Converged;
-    total.Aborted = t.Aborted;
-    total.OutOfTime = t.OutOfTime;
-    total.RayCount += t.RayCount;
-    total.RaysSkipped += t.RaysSkipped;
-    total.PairsUnblockable += t.PairsUnblockable;
-    total.DistributionsSkipped += t.DistributionsSkipped;
-    total.SingleChannel = m == 0 ? t.SingleChannel : total.SingleChannel && t.SingleChannel;
-    total.BlockingSurfaces = t.BlockingSurfaces;
-    total.EmittedPower += t.EmittedPower;
-    total.EscapedPower += t.EscapedPower;
-    total.UnshotPower += t.UnshotPower;
-    total.FormFactorCount += t.FormFactorCount;
-    total.ShotPower += t.ShotPower;
-    total.ReceivedPower += t.ReceivedPower;
+    total.Append(t);
     if (t.Aborted || t.OutOfTime)
     {
       break;

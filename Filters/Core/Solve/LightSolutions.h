@@ -10,12 +10,12 @@ namespace radiosity
 enum class SolutionMode
 {
   LightTagged = 0,      ///< one solution per light or bank, all in one pass (the paper)
-  StandardCombined = 1, ///< one ordinary solution with every light at its Emission colour
+  StandardCombined = 1, ///< one ordinary solution with every light at its Emission color
   StandardSeparate = 2  ///< the same solutions as LightTagged, solved one after the other
 };
 
 /// Which lights share a solution. A light alone in its solution emits unit exitance (its
-/// colour is applied when relighting); lights in a shared bank emit their Emission colour
+/// color is applied when relighting); lights in a shared bank emit their Emission color
 /// (white without one), so relighting scales the bank as one (paper 2.1, Dorsey 1995).
 struct LightGrouping
 {
@@ -31,8 +31,8 @@ struct LightGrouping
 std::vector<Vec3> SolutionEmission(const SceneMesh& mesh, const LightGrouping& grouping,
   const std::vector<Vec3>& emissionColor);
 
-/// The relight colour that reproduces the scene's own Emission: a lone light's mean
-/// Emission (white if it has none), white for a bank (its colour is inside the solution).
+/// The relight color that reproduces the scene's own Emission: a lone light's mean
+/// Emission (white if it has none), white for a bank (its color is inside the solution).
 std::vector<Vec3> DefaultColors(const SceneMesh& mesh, const LightGrouping& grouping,
   const std::vector<Vec3>& emissionColor);
 

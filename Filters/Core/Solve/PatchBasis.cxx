@@ -20,7 +20,7 @@ SolverOptions BasisOptions(const SolverOptions& options)
   SolverOptions basis = options;
   basis.AmbientTerm = false;
   basis.SeparateDirect = false;
-  basis.DirectToElements = false; // every patch emits: links, not P x N factors
+  basis.Hierarchical.DirectToElements = false; // every patch emits: links, not P x N factors
   return basis;
 }
 

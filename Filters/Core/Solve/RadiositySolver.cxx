@@ -1,8 +1,7 @@
 #include "Solve/RadiositySolver.h"
 #include "Base/WorkerPool.h"
 #include "Geometry/ClusterTree.h"
-#include "Solve/HierarchicalRadiosity.h"
-#include "Solve/ProgressiveRadiosity.h"
+#include "Solve/SolverMethods.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -25,7 +24,7 @@ constexpr double kHierarchicalPairs = 5000;
 /// in progressive refinement.
 SolverMethod ResolveMethod(const SolverOptions& options, int elements, int patches, std::string& reason)
 {
-  if (options.Solver != SolverMethod::Auto)
+  if (options.Solver != SolverMethod::Auto && FindSolverMethod(options.Solver))
   {
     reason = "as set";
     return options.Solver;
@@ -115,10 +114,44 @@ Solution RadiositySolver::Solve(
   out.Statistics.SingleChannel = grey;
   const SolverMethod method =
     ResolveMethod(options, n, static_cast<int>(Geometry().patchElements.size()), out.Statistics.MethodReason);
-  const SolveFunction solve = method == SolverMethod::Hierarchical ? SolveHierarchical : SolveProgressive;
   out.Statistics.FaceClusters = CountFaceClusters(Geometry());
-  solve(Mesh, Geometry(), Rays(), emission, solutions, grey, options, start, out);
+  FindSolverMethod(method)->Solve(Mesh, Geometry(), Rays(), emission, solutions, grey, options, start, out);
   return out;
+}
+
+void SolverStatistics::Append(const SolverStatistics& next)
+{
+  Shots += next.Shots;
+  ShotCap = next.ShotCap;
+  Converged = Converged && next.Converged;
+  Aborted = next.Aborted;
+  OutOfTime = next.OutOfTime;
+  RayCount += next.RayCount;
+  RaysSkipped += next.RaysSkipped;
+  PairsUnblockable += next.PairsUnblockable;
+  DistributionsSkipped += next.DistributionsSkipped;
+  SingleChannel = SingleChannel && next.SingleChannel;
+  BlockingSurfaces = next.BlockingSurfaces;
+  FormFactorCount += next.FormFactorCount;
+  Method = next.Method;
+  MethodReason = next.MethodReason;
+  FaceClusters = next.FaceClusters;
+  PatchLinks += next.PatchLinks;
+  ElementLinks += next.ElementLinks;
+  VolumeLinks += next.VolumeLinks;
+  LinkBytes = std::max(LinkBytes, next.LinkBytes);
+  ShotPower += next.ShotPower;
+  ReceivedPower += next.ReceivedPower;
+  EmittedPower += next.EmittedPower;
+  EscapedPower += next.EscapedPower;
+  UnshotPower += next.UnshotPower;
+  Ranks = next.Ranks;
+  Collectives += next.Collectives;
+  CollectiveBytes += next.CollectiveBytes;
+  ShotCollectiveBytes += next.ShotCollectiveBytes;
+  CollectiveSeconds += next.CollectiveSeconds;
+  ReceivingElements = next.ReceivingElements;
+  OwnRays += next.OwnRays;
 }
 
 std::vector<char> OwnedPatches(const SceneGeometry& geometry, int rank, int ranks)

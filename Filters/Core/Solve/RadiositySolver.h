@@ -83,16 +83,20 @@ struct SolverOptions
   /// Called between shots with the fraction done; returning false aborts the solve, which
   /// then keeps the valid partial result of the shots made so far.
   std::function<bool(double)> Progress;
-  /// Hierarchical only: an emitter's first shot (its direct light) reaches every element
-  /// with its own shadow rays, as in progressive refinement. Off: it links like any other
-  /// shooter, which is much cheaper when many patches emit (the moving-light basis).
-  bool DirectToElements = true;
-  /// Hierarchical only: a far link that would carry at least this fraction of a
-  /// solution's emitted power at its first shot is resolved element by element. 0 (the
-  /// default) refines by geometry alone, so the links, and the light-tagged and combined
-  /// results, do not depend on which light shoots; measured, energy refinement gained
-  /// little (0.83 % -> 0.81 % against progressive refinement at 1e-4).
-  double RefinementThreshold = 0;
+  /// What the hierarchical method alone reads.
+  struct HierarchicalSettings
+  {
+    /// An emitter's first shot (its direct light) reaches every element with its own
+    /// shadow rays, as in progressive refinement. Off: it links like any other shooter,
+    /// which is much cheaper when many patches emit (the moving-light basis).
+    bool DirectToElements = true;
+    /// A far link that would carry at least this fraction of a solution's emitted power
+    /// at its first shot is resolved element by element. 0 (the default) refines by
+    /// geometry alone, so the links, and the light-tagged and combined results, do not
+    /// depend on which light shoots; measured, energy refinement gained little (0.83 % ->
+    /// 0.81 % against progressive refinement at 1e-4).
+    double RefinementThreshold = 0;
+  } Hierarchical;
   /// Several processes solving together: each computes the transport to its own share of
   /// the receivers (OwnedPatches), and they agree on each shot through Group.SumAll. Every
   /// rank passes the whole scene and gets the whole solution. Default: one process.
@@ -123,6 +127,7 @@ struct SolverStatistics
   int FaceClusters = 0;     ///< patches of several elements on more than one plane
   long long PatchLinks = 0;   ///< hierarchical: shooter-to-patch links made
   long long ElementLinks = 0; ///< hierarchical: shooter-to-element links made
+  long long VolumeLinks = 0;  ///< hierarchical: links to whole far regions of patches
   double LinkBytes = 0;       ///< hierarchical: memory the links held
   /// Channel-summed power shot by patches and power arriving at receivers (irradiance
   /// times area, before reflection); equal up to discretization in a closed scene.
@@ -143,6 +148,21 @@ struct SolverStatistics
   double CollectiveSeconds = 0;   ///< this rank's time in the sums (waits for others too)
   int ReceivingElements = 0; ///< the elements this rank received for
   long long OwnRays = 0;     ///< the rays this rank cast (RayCount is the sum over ranks)
+
+  /// Takes in the statistics of a solve run after the ones already in (the
+  /// StandardSeparate mode's solutions, one by one, into Sequence()): counts, links and
+  /// powers add up, the method, its reason, the cap and the flags are the runs' (converged
+  /// and single-channel only if all were), link memory is the most held at once. The
+  /// histories stay the caller's: they are weighted by each solution's emitted power.
+  void Append(const SolverStatistics& next);
+  /// Statistics of no solve yet, to Append solves to.
+  static SolverStatistics Sequence()
+  {
+    SolverStatistics s;
+    s.Converged = true;
+    s.SingleChannel = true;
+    return s;
+  }
 };
 
 /// One line of the solver's account of what it simulated and what it skipped.
@@ -166,7 +186,8 @@ struct Solution
 /// What every solver method is: the prepared scene, k emissions and the options in; the
 /// solution and its statistics out (`out` arrives with Solutions and Ambient sized, and
 /// the statistics' SingleChannel decided as `grey`). A new method (a distributed or GPU
-/// one) is one more function of this shape, chosen in RadiositySolver::Solve.
+/// one) is one more function of this shape in a file of its own, one more SolverMethod
+/// value and one more row of SolverMethodTable (Solve/SolverMethods.cxx).
 using SolveFunction = void (*)(const SceneMesh& mesh, const SceneGeometry& geometry, const Visibility& rays,
   const std::vector<Vec3>& emission, int solutions, bool grey, const SolverOptions& options,
   std::chrono::steady_clock::time_point start, Solution& out);

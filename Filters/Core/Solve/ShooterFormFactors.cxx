@@ -613,6 +613,31 @@ int ShooterFormFactors::VisibleRaysToElements(
   return visible;
 }
 
+double ShooterFormFactors::VisibleFractionOfFacing(
+  int shooter, const int* elements, int count, int samples, std::uint64_t seed, long long& rays) const
+{
+  SampleStream random(static_cast<std::uint64_t>(shooter), seed, 17);
+  int visible = 0, aimed = 0;
+  for (int r = 0; r < samples && count > 0; ++r)
+  {
+    const int pick = std::min(count - 1, static_cast<int>((r + random.Next()) / samples * count));
+    const int e = elements[pick];
+    const Vec3 to = SamplePoint(shooter, r, samples, random);
+    if (Dot(Geometry.normal[e], to - Geometry.centroid[e]) <= 0)
+    {
+      continue; // the element's back is turned: no light of this shooter point reaches it
+    }
+    ++aimed;
+    ++rays;
+    visible += Rays.Occluded(Geometry.centroid[e] + Geometry.normal[e] * Epsilon, to, 0.0) ? 0 : 1;
+    if (visible > 0 && visible < aimed)
+    {
+      return 0.5; // partly in view: the callers need no closer estimate
+    }
+  }
+  return aimed > 0 ? static_cast<double>(visible) / aimed : 0.0;
+}
+
 double ShooterFormFactors::ReceiverFactor(int patch, int e, std::vector<Vec3>& scratch) const
 {
   const Vec3& c = Geometry.centroid[e];

@@ -94,6 +94,12 @@ public:
   /// Unblocked rays of `samples` from stratified points of the shooter to the centroids
   /// of `count` elements (picked evenly over them), `seed` decorrelating calls.
   int VisibleRaysToElements(int shooter, const int* elements, int count, int samples, std::uint64_t seed) const;
+  /// 1 when every ray from stratified points of the shooter to the centroids of those of
+  /// `count` elements (picked evenly over them) whose fronts face each point is unblocked,
+  /// 0 when every one is blocked or none faces, 0.5 (cast no further) when some are and
+  /// some are not; of `samples` in all, counting the rays cast into `rays`.
+  double VisibleFractionOfFacing(
+    int shooter, const int* elements, int count, int samples, std::uint64_t seed, long long& rays) const;
   /// The cone of the patch's normals (spread 0 for a flat patch, more for a face cluster).
   const NormalCone& Cone(int patch) const { return PatchCone[patch]; }
   /// True when the patch is flat: one element, or coplanar elements with one outline.

@@ -174,6 +174,26 @@ public:
     }
   }
 
+  /// A whole patch receives the shot with one factor at all of its nodes (a part of a far
+  /// volume link, where the factor does not vary across a patch).
+  void GatherPatchUniform(int q, double factor, double meanFactor, const Vec3& meanReflectance)
+  {
+    for (int j = Nodes->Begin(q); j < Nodes->End(q); ++j)
+    {
+      for (int m = 0; m < L; ++m)
+      {
+        Gathered[Index(j, m)] += Shot[m] * factor;
+      }
+    }
+    if (Reflect)
+    {
+      for (int m = 0; m < L; ++m)
+      {
+        Unshot[Index(q, m)] += Channel::Reflect(meanReflectance, Shot[m], meanFactor);
+      }
+    }
+  }
+
   /// A face cluster's node (ReceiverNodes) receives the shot as a whole: F(e -> shooter) =
   /// n_e . v for each of its open elements, applied in Finish; what they reflect joins the
   /// cluster's unshot energy now. Callers keep one cluster's nodes in one thread.

@@ -5,7 +5,7 @@ The three VTK filters (wrapped C++):
 - ``vtkRadiosityMesher``: polygons -> patches -> elements (cell array ``PatchId``);
 - ``vtkLightTaggedRadiosity``: one radiosity solution per light in one progressive pass,
   as point/cell arrays ``Radiosity_<light>``;
-- ``vtkRadiosityRelight``: ``sum_i colour_i * intensity_i * Radiosity_<light i>``.
+- ``vtkRadiosityRelight``: ``sum_i color_i * intensity_i * Radiosity_<light i>``.
 
 plus ``vtkRadiosityEXRWriter`` for HDR images, and helpers in :mod:`relight.scene`.
 """

@@ -220,11 +220,11 @@ def plot(rows, path):
 
     scenes = sorted({r["scene"] for r in rows})
     fig, axes = plt.subplots(1, len(scenes), figsize=(5.2 * len(scenes), 4.4), squeeze=False)
-    colours = {"Analytic": "tab:blue", "Hemicube": "tab:orange", "MonteCarlo": "tab:green"}
+    colors = {"Analytic": "tab:blue", "Hemicube": "tab:orange", "MonteCarlo": "tab:green"}
     for ax, scene in zip(axes[0], scenes):
         points = per_setting(rows, scene)
         for seconds, error, r in points:
-            ax.scatter(seconds, max(error, 1e-6), color=colours[r["method"]], s=18 + 6 * r["samples"] ** 0.25,
+            ax.scatter(seconds, max(error, 1e-6), color=colors[r["method"]], s=18 + 6 * r["samples"] ** 0.25,
                        marker="o" if not r["ambient"] else "^", alpha=0.8)
         front = pareto([(p[0], p[1]) for p in points])
         xs = [points[i][0] for i in front]
@@ -236,8 +236,8 @@ def plot(rows, path):
         ax.set_ylabel("mean error (worst light)")
         ax.set_title(scene)
         ax.grid(True, which="both", alpha=0.3)
-        for method, colour in colours.items():
-            ax.scatter([], [], color=colour, label=method)
+        for method, color in colors.items():
+            ax.scatter([], [], color=color, label=method)
         ax.legend(fontsize=8)
     fig.suptitle("What accuracy costs in time (marker size: samples; triangles: ambient term)")
     fig.tight_layout()

@@ -26,7 +26,7 @@ INTENSITY = 25.0  # the lamps are 0.3 m squares: unit exitance lights the room d
 
 
 def light_sequence(names):
-    """(title, {light index: (colour or None, intensity, enabled)}) for each frame."""
+    """(title, {light index: (color or None, intensity, enabled)}) for each frame."""
     k = len(names)
     everything = {i: (None, INTENSITY, True) for i in range(k)}
     first_half = {i: (None, INTENSITY * 2, i < k // 2) for i in range(k)}
@@ -35,7 +35,7 @@ def light_sequence(names):
     night = {i: ((0.35, 0.45, 1.0), INTENSITY * 0.6, True) for i in range(k)}
     single = {i: (None, INTENSITY * 6, i == 0) for i in range(k)}
     return [
-        ("all lights, their own colours", everything),
+        ("all lights, their own colors", everything),
         ("first half of the lights", first_half),
         ("second half of the lights", second_half),
         ("warm, alternating intensities", sunset),
@@ -51,11 +51,11 @@ def animate(solver, names, out, frames=32):
     animated = vtkRadiosityRelight()
     animated.SetInputConnection(solver.GetOutputPort())
     period = frames / len(names)
-    colours = solver.GetOutput().GetFieldData().GetArray("LightDefaultColors")
+    colors = solver.GetOutput().GetFieldData().GetArray("LightDefaultColors")
     for i, name in enumerate(names):
-        colour = colours.GetTuple3(i)
+        color = colors.GetTuple3(i)
         for t, level in ((i * period - period, 0.1), (i * period, 4.0), (i * period + 2 * period, 0.1)):
-            animated.AddScheduleEntry(t, name, *colour, INTENSITY * level, 1)
+            animated.AddScheduleEntry(t, name, *color, INTENSITY * level, 1)
     folder = out / "animation"
     folder.mkdir(exist_ok=True)
     renderer = FrameRenderer(CAMERA, (480, 360))
@@ -148,7 +148,7 @@ def moving_light(scene_path, out, frames=24):
     print(f"moving light: basis of {patches} patches x {basis.GetNumberOfTuples()} elements "
           f"({basis.GetNumberOfTuples() * basis.GetNumberOfComponents() * 4 / 1024:.0f} KB) solved in "
           f"{basis_seconds:.2f} s; per frame {1e3 * sum(times) / len(times):.2f} ms "
-          f"(shadow rays, basis, display colours); {frames} frames in {folder}/")
+          f"(shadow rays, basis, display colors); {frames} frames in {folder}/")
 
 
 def main():
@@ -194,9 +194,9 @@ def main():
     frame_times = []
     for frame, (title, lights) in enumerate(light_sequence(names)):
         relight.ResetLights()
-        for i, (colour, intensity, enabled) in lights.items():
-            if colour is not None:
-                relight.SetLightColor(i, *colour)
+        for i, (color, intensity, enabled) in lights.items():
+            if color is not None:
+                relight.SetLightColor(i, *color)
             relight.SetLightIntensity(i, intensity)
             relight.SetLightEnabled(i, enabled)
         start = time.perf_counter()
@@ -221,7 +221,7 @@ def main():
     print(
         f"relight time per frame: mean {1e3 * sum(frame_times) / len(frame_times):.3f} ms, "
         f"best {1e3 * min(frame_times):.3f} ms (k = {len(names)}, "
-        f"{solved.GetNumberOfCells()} elements; includes the display-colour pass)"
+        f"{solved.GetNumberOfCells()} elements; includes the display-color pass)"
     )
     print(
         f"memory per light: {per_light / 1024:.1f} KiB "

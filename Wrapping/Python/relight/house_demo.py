@@ -40,7 +40,7 @@ WARM, COOL = (1.0, 0.78, 0.55), (0.7, 0.85, 1.0)
 
 
 def settings(names):
-    """(title, {light: (colour, intensity relative to the exposure's, on)}) per picture."""
+    """(title, {light: (color, intensity relative to the exposure's, on)}) per picture."""
     ground = {n: n.startswith("Ground") for n in names}
     return [
         ("all lamps, white", {n: ((1, 1, 1), 1.0, True) for n in names}),
@@ -95,8 +95,8 @@ def main():
     exposure = exposure_for(relit)
     times = []
     for picture, (title, lights) in enumerate(settings(names), 1):
-        for name, (colour, intensity, on) in lights.items():
-            relit.SetLightSetting(name, *colour, intensity, int(on))
+        for name, (color, intensity, on) in lights.items():
+            relit.SetLightSetting(name, *color, intensity, int(on))
         relit.SetExposure(exposure)
         begin = time.perf_counter()
         relit.Update()

@@ -202,7 +202,7 @@ def render_png(data, path, camera, size=(640, 480)):
     """
     if data.GetPointData().GetArray("DisplayColors") is None:
         raise ValueError("render_png shows the relight filter's DisplayColors: give it vtkRadiosityRelight's "
-                         "output (the solver's output holds radiosity, not colours)")
+                         "output (the solver's output holds radiosity, not colors)")
     renderer = FrameRenderer(camera, size)
     writer = vtkPNGWriter()
     writer.SetFileName(str(path))

@@ -1,5 +1,5 @@
 // Regression image of the relit Cornell box: mesher -> light-tagged solver -> relight,
-// rendered by VTK with the radiosity as unlit vertex colours.
+// rendered by VTK with the radiosity as unlit vertex colors.
 #include "CornellScene.h"
 
 #include "vtkPolyDataMapper.h"

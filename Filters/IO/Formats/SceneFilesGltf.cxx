@@ -1,5 +1,5 @@
 // glTF 2.0 (.gltf, .glb) through VTK's document loader: node transforms applied,
-// baseColorFactor (times the base colour texture's mean) as the diffuse colour, and
+// baseColorFactor (times the base color texture's mean) as the diffuse color, and
 // emissiveFactor times KHR_materials_emissive_strength (read from the JSON: the loader
 // skips that extension) as the emission.
 #include "SceneFiles.h"
@@ -210,7 +210,7 @@ void ReadMaterials(const nlohmann::json& document, const Loader::Model& model, r
     const Loader::Material& source = model.Materials[m];
     radiosity::ImportMaterial material;
     material.Name = source.Name.empty() ? "material " + std::to_string(m) : source.Name;
-    // glTF's default base colour is white.
+    // glTF's default base color is white.
     material.Diffuse = Rgb(source.PbrMetallicRoughness.BaseColorFactor, { 1, 1, 1 });
     const int texture = source.PbrMetallicRoughness.BaseColorTexture.Index;
     if (texture >= 0 && texture < static_cast<int>(model.Textures.size()))
@@ -218,7 +218,7 @@ void ReadMaterials(const nlohmann::json& document, const Loader::Model& model, r
       const int image = model.Textures[texture].Source;
       if (image >= 0 && image < static_cast<int>(model.Images.size()))
       {
-        const radiosity::Vec3 mean = MeanColour(model.Images[image].ImageData);
+        const radiosity::Vec3 mean = MeanColor(model.Images[image].ImageData);
         material.Diffuse = { material.Diffuse.x * mean.x, material.Diffuse.y * mean.y, material.Diffuse.z * mean.z };
       }
     }

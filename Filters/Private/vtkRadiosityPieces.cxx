@@ -66,7 +66,7 @@ void CutPiece(vtkPolyData* whole, const Slice& slice, vtkPolyData* piece, vtkPol
   output->SetFieldData(fields);
   for (int type = 0; type < vtkDataSetAttributes::NUM_ATTRIBUTES; ++type)
   {
-    // Colouring follows the whole's active arrays (the relight filter's DisplayColors).
+    // Coloring follows the whole's active arrays (the relight filter's DisplayColors).
     vtkAbstractArray* point = whole->GetPointData()->GetAbstractAttribute(type);
     vtkAbstractArray* cell = whole->GetCellData()->GetAbstractAttribute(type);
     if (point && point->GetName() && piece->GetNumberOfCells() > 0)

@@ -3,7 +3,7 @@
 // - it ignores USE of a Material or Appearance, leaving that shape a default property;
 // - it starts every Material from vtkProperty's defaults (white diffuse, white ambient)
 //   rather than VRML's (0.8 diffuse, black emissive), and keeps emissiveColor as the
-//   ambient colour, so a material naming no emissive colour would read as a white lamp;
+//   ambient color, so a material naming no emissive color would read as a white lamp;
 // - it does not say which Material a shape's property came from.
 // So the file is read from a copy in which comments are gone, every USE of a DEF'd
 // Material or Appearance is replaced by that definition (the latest before it, as VRML

@@ -42,7 +42,7 @@ std::string ReadLibraries(const std::string& path, const std::vector<std::string
   return std::string();
 }
 
-/// The diffuse colour times its texture's mean colour, where the texture can be read.
+/// The diffuse color times its texture's mean color, where the texture can be read.
 void ApplyTexture(const std::string& folder, radiosity::ImportMaterial& m, std::vector<std::string>& warnings)
 {
   const std::string file = vtksys::SystemTools::CollapseFullPath(m.DiffuseTexture, folder);
@@ -56,7 +56,7 @@ void ApplyTexture(const std::string& folder, radiosity::ImportMaterial& m, std::
   }
   reader->SetFileName(file.c_str());
   reader->Update();
-  const radiosity::Vec3 mean = MeanColour(reader->GetOutput());
+  const radiosity::Vec3 mean = MeanColor(reader->GetOutput());
   m.Diffuse = { m.Diffuse.x * mean.x, m.Diffuse.y * mean.y, m.Diffuse.z * mean.z };
 }
 

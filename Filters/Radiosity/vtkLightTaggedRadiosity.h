@@ -15,7 +15,7 @@
  *
  * Output port 0: the input plus, for each light (or bank), point and cell arrays
  * `Radiosity_<name>` (3 components, float, exitance) and with SeparateDirect also
- * `Direct_<name>`; field arrays `LightNames`, `LightDefaultColors` (the relight colour
+ * `Direct_<name>`; field arrays `LightNames`, `LightDefaultColors` (the relight color
  * that reproduces the scene's Emission) and `UnshotHistory` (remaining unshot power /
  * initial after each shot). In StandardCombined mode one array `Radiosity` instead, with
  * every light at its `Emission`.
@@ -23,7 +23,7 @@
  * Remaining_<name> per solution), ready for a line chart.
  *
  * An optional field array `LightBanks` (k integers, 0..b-1) groups lights into banks that
- * share one solution (their relative Emission colours are kept inside it); an optional
+ * share one solution (their relative Emission colors are kept inside it); an optional
  * field array `StaticLights` (k integers) marks lights nobody will change, merged into one
  * bank when LightSeparationEffect is Auto.
  *
@@ -40,8 +40,26 @@
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkRadiosityFiltersModule.h" // for export macro
 
+#include <chrono> // for the solve's start time
+
 class vtkMultiProcessController;
 class vtkTable;
+namespace radiosity
+{
+struct ProcessGroup;
+struct SolverOptions;
+struct Solution;
+class RadiositySolver;
+enum class EffectMode;
+}
+namespace vtkRadiositySolveOutput
+{
+struct SceneInput;
+}
+namespace vtkRadiosityAdapter
+{
+class WarningList;
+}
 
 class VTKRADIOSITYFILTERS_EXPORT vtkLightTaggedRadiosity : public vtkPolyDataAlgorithm
 {
@@ -91,6 +109,10 @@ public:
   void SetSolverMethodToAuto() { this->SetSolverMethod(SOLVER_AUTO); }
   void SetSolverMethodToProgressiveRefinement() { this->SetSolverMethod(PROGRESSIVE_REFINEMENT); }
   void SetSolverMethodToHierarchical() { this->SetSolverMethod(HIERARCHICAL); }
+  /// The values SolverMethod takes (Auto and every method of the core's table,
+  /// Solve/SolverMethods.cxx) and their names, which the XML's enumeration repeats.
+  static int GetNumberOfSolverMethods();
+  static const char* GetSolverMethodName(int value);
   ///@}
 
   ///@{
@@ -279,6 +301,16 @@ private:
   /// reported when the input cannot be solved. With `ranks`, every rank of it calls this
   /// on the same scene and each computes the transport to its share of the receivers.
   int Solve(vtkPolyData* input, vtkPolyData* output, vtkTable* history, vtkMultiProcessController* ranks = nullptr);
+  /// The core's options from this filter's settings.
+  radiosity::SolverOptions Options(int threads, const radiosity::ProcessGroup& group) const;
+  /// An effect setting as the solver takes it (On for all with ForceAllEffects).
+  radiosity::EffectMode Effect(int mode) const;
+  /// Writes the solved scene's arrays, field data and convergence table; 0 with the error
+  /// reported when the moving-light basis asked for cannot be made.
+  int WriteResult(vtkPolyData* input, vtkPolyData* output, vtkTable* history,
+    const vtkRadiositySolveOutput::SceneInput& scene, const radiosity::RadiositySolver& solver,
+    const radiosity::Solution& result, const radiosity::SolverOptions& options, bool aborted,
+    std::chrono::steady_clock::time_point start, vtkRadiosityAdapter::WarningList& warnings, int rank);
 
   int SolutionMode = LIGHT_TAGGED;
   int SolverMethod = SOLVER_AUTO;

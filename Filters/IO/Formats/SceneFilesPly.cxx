@@ -1,4 +1,4 @@
-// PLY through vtkPLYReader: face colours, or else the mean of the corners' colours, as
+// PLY through vtkPLYReader: face colors, or else the mean of the corners' colors, as
 // each polygon's reflectance (8-bit sRGB made linear). PLY has no materials or emission:
 // the whole file is one material named after it, and lights are marked afterwards.
 #include "SceneFiles.h"
@@ -22,7 +22,7 @@ namespace SceneFiles
 namespace
 {
 
-vtkDataArray* Colours(vtkDataSetAttributes* attributes)
+vtkDataArray* Colors(vtkDataSetAttributes* attributes)
 {
   for (const char* name : { "RGB", "RGBA" })
   {
@@ -35,29 +35,29 @@ vtkDataArray* Colours(vtkDataSetAttributes* attributes)
   return nullptr;
 }
 
-radiosity::Vec3 Linear(vtkDataArray* colours, vtkIdType i)
+radiosity::Vec3 Linear(vtkDataArray* colors, vtkIdType i)
 {
-  auto channel = [&](int c) { return SrgbToLinear(colours->GetComponent(i, c) / 255.0); };
+  auto channel = [&](int c) { return SrgbToLinear(colors->GetComponent(i, c) / 255.0); };
   return { channel(0), channel(1), channel(2) };
 }
 
-/// Each polygon's colour: its own, or the mean of its corners'; empty if the file has none.
-std::vector<radiosity::Vec3> PolygonColours(vtkPolyData* data)
+/// Each polygon's color: its own, or the mean of its corners'; empty if the file has none.
+std::vector<radiosity::Vec3> PolygonColors(vtkPolyData* data)
 {
-  std::vector<radiosity::Vec3> colours;
-  if (vtkDataArray* cells = Colours(data->GetCellData()))
+  std::vector<radiosity::Vec3> colors;
+  if (vtkDataArray* cells = Colors(data->GetCellData()))
   {
     const vtkIdType base = data->GetNumberOfVerts() + data->GetNumberOfLines();
     for (vtkIdType c = 0; c < data->GetNumberOfPolys(); ++c)
     {
-      colours.push_back(Linear(cells, base + c));
+      colors.push_back(Linear(cells, base + c));
     }
-    return colours;
+    return colors;
   }
-  vtkDataArray* points = Colours(data->GetPointData());
+  vtkDataArray* points = Colors(data->GetPointData());
   if (!points)
   {
-    return colours;
+    return colors;
   }
   auto iterator = vtk::TakeSmartPointer(data->GetPolys()->NewIterator());
   for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell())
@@ -70,9 +70,9 @@ std::vector<radiosity::Vec3> PolygonColours(vtkPolyData* data)
     {
       sum += Linear(points, ids[k]);
     }
-    colours.push_back(sum * (count ? 1.0 / count : 0.0));
+    colors.push_back(sum * (count ? 1.0 / count : 0.0));
   }
-  return colours;
+  return colors;
 }
 
 } // namespace
@@ -92,11 +92,11 @@ std::string ReadPly(const std::string& path, radiosity::RawScene& raw, std::vect
   radiosity::ImportMaterial material;
   material.Name = vtksys::SystemTools::GetFilenameWithoutLastExtension(path);
   material.Diffuse = { 1, 1, 1 };
-  const std::vector<radiosity::Vec3> colours = PolygonColours(data);
-  if (colours.empty())
+  const std::vector<radiosity::Vec3> colors = PolygonColors(data);
+  if (colors.empty())
   {
     material.Diffuse = { 0.8, 0.8, 0.8 };
-    warnings.push_back("the PLY has no colours: reflectance 0.8");
+    warnings.push_back("the PLY has no colors: reflectance 0.8");
   }
   raw.materials.push_back(material);
   const int first = raw.NumberOfPolygons();
@@ -104,11 +104,11 @@ std::string ReadPly(const std::string& path, radiosity::RawScene& raw, std::vect
   {
     warnings.push_back("points and lines in the PLY are not surfaces; left out");
   }
-  if (!colours.empty())
+  if (!colors.empty())
   {
-    raw.colour.resize(first, { 1, 1, 1 });
-    raw.colour.insert(raw.colour.end(), colours.begin(), colours.end());
-    raw.colour.resize(raw.NumberOfPolygons(), { 1, 1, 1 }); // strips' triangles, if any
+    raw.color.resize(first, { 1, 1, 1 });
+    raw.color.insert(raw.color.end(), colors.begin(), colors.end());
+    raw.color.resize(raw.NumberOfPolygons(), { 1, 1, 1 }); // strips' triangles, if any
   }
   return std::string();
 }

@@ -7,10 +7,10 @@
  * holding its unit-emission solution (`_RADIOSITY_<NAME>`, from the point arrays
  * `Radiosity_<name>`), and `COLOR_0` with the current relit picture (the point array
  * `Radiosity` times Exposure, clamped to [0, 1]) where the input has it. The mesh's
- * `extras.relight` lists each light's name, attribute and default colour
+ * `extras.relight` lists each light's name, attribute and default color
  * (`LightDefaultColors`) and the exposure, so a viewer computes
- * `sum_i colour_i * intensity_i * _RADIOSITY_i * exposure`. The material is unlit
- * (KHR_materials_unlit): the light is in the colours. Coordinates are written as they are
+ * `sum_i color_i * intensity_i * _RADIOSITY_i * exposure`. The material is unlit
+ * (KHR_materials_unlit): the light is in the colors. Coordinates are written as they are
  * (glTF expects metres with +Y up).
  *
  * The file is written under a temporary name and renamed, so a failed write leaves an

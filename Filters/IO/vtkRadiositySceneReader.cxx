@@ -25,7 +25,7 @@ vtkStandardNewMacro(vtkRadiositySceneReader);
 namespace
 {
 
-vtkSmartPointer<vtkDoubleArray> Colours(const char* name, const std::vector<radiosity::Vec3>& values)
+vtkSmartPointer<vtkDoubleArray> Colors(const char* name, const std::vector<radiosity::Vec3>& values)
 {
   auto array = vtkSmartPointer<vtkDoubleArray>::New();
   array->SetName(name);
@@ -81,9 +81,9 @@ void Fill(const radiosity::ImportedScene& scene, vtkPolyData* output)
   }
   output->SetPoints(points);
   output->SetPolys(polys);
-  output->GetCellData()->AddArray(Colours("Reflectance", mesh.reflectance));
+  output->GetCellData()->AddArray(Colors("Reflectance", mesh.reflectance));
   output->GetCellData()->AddArray(Ints("LightId", mesh.lightId));
-  output->GetCellData()->AddArray(Colours("Emission", scene.Emission));
+  output->GetCellData()->AddArray(Colors("Emission", scene.Emission));
   output->GetCellData()->AddArray(Ints("MaterialIds", scene.Material));
   output->GetFieldData()->AddArray(Strings("LightNames", scene.LightNames));
   output->GetFieldData()->AddArray(Strings("MaterialNames", scene.MaterialNames));

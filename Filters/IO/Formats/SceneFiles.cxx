@@ -183,7 +183,7 @@ double SrgbToLinear(double c)
   return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
 }
 
-radiosity::Vec3 MeanColour(vtkImageData* image)
+radiosity::Vec3 MeanColor(vtkImageData* image)
 {
   vtkDataArray* scalars = image ? image->GetPointData()->GetScalars() : nullptr;
   const int components = scalars ? scalars->GetNumberOfComponents() : 0;

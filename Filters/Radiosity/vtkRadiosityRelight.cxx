@@ -550,7 +550,7 @@ void vtkRadiosityRelight::PrintSelf(ostream& os, vtkIndent indent)
   for (int l = 0; l < this->GetNumberOfLights(); ++l)
   {
     const radiosity::LightSetting& s = this->Internal->Effective[l];
-    os << indent << this->Internal->Names[l] << ": colour (" << s.Color.x << ", " << s.Color.y << ", "
+    os << indent << this->Internal->Names[l] << ": color (" << s.Color.x << ", " << s.Color.y << ", "
        << s.Color.z << ") intensity " << s.Intensity << (s.Enabled ? " on" : " off") << "\n";
   }
 }
@@ -673,17 +673,17 @@ int vtkRadiosityRelight::Relight(
       return 0;
     }
 
-    // Default colours: the solver's, else the mean Emission of each light's cells.
+    // Default colors: the solver's, else the mean Emission of each light's cells.
     const int k = static_cast<int>(names.size());
-    const std::vector<double> rgb = vtkRadiosityDefaultLightColours(input, k);
-    std::vector<radiosity::Vec3> defaultColours;
+    const std::vector<double> rgb = vtkRadiosityDefaultLightColors(input, k);
+    std::vector<radiosity::Vec3> defaultColors;
     for (int l = 0; l < k; ++l)
     {
-      defaultColours.push_back({ rgb[3 * l], rgb[3 * l + 1], rgb[3 * l + 2] });
+      defaultColors.push_back({ rgb[3 * l], rgb[3 * l + 1], rgb[3 * l + 2] });
     }
     std::vector<radiosity::LightSetting> effective;
     std::vector<std::string> warnings;
-    const std::string invalid = this->Internal->Rig.Resolve(names, defaultColours, time, effective, warnings);
+    const std::string invalid = this->Internal->Rig.Resolve(names, defaultColors, time, effective, warnings);
     if (!invalid.empty())
     {
       vtkErrorMacro(<< "Cannot relight: " << invalid << ".");

@@ -2,7 +2,7 @@
  * @class   vtkRadiosityEXRWriter
  * @brief   ray-casts a view of a radiosity solution and writes it as OpenEXR (HDR)
  *
- * Display colours are clamped to 8 bits; this writer keeps the linear radiosity. Each
+ * Display colors are clamped to 8 bits; this writer keeps the linear radiosity. Each
  * pixel shows the point array ArrayName (3 components, default `Radiosity`) interpolated
  * over the polygon hit by the pixel's centre ray (Embree), from a pinhole camera with
  * VTK's conventions (position, focal point, view up, vertical view angle in degrees).

@@ -1,4 +1,4 @@
-"""The README's table of setting names (From ParaView), read by TestNames.py (against
+"""The table of setting names in docs/settings.md, read by TestNames.py (against
 the XML and C++) and TestPluginProxies.py (against pvbatch's proxies)."""
 
 import re
@@ -7,10 +7,10 @@ ROW = re.compile(r"\| `(\w+)` \(`(vtk\w+)`\) \| (.*) \|$")
 REMARK = re.compile(r"\(C\+\+:[^)]*\)")
 
 
-def setting_rows(readme):
+def setting_rows(path):
     """(proxy, class, settings, C++ methods named in "(C++: ...)" remarks) per row."""
     rows = []
-    for line in open(readme, encoding="utf-8"):
+    for line in open(path, encoding="utf-8"):
         row = ROW.match(line.strip())
         if row:
             remarks = " ".join(REMARK.findall(row.group(3)))

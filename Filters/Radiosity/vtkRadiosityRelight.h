@@ -1,14 +1,14 @@
 /**
  * @class   vtkRadiosityRelight
- * @brief   combines per-light radiosity solutions with user-set light colours
+ * @brief   combines per-light radiosity solutions with user-set light colors
  *
- * Computes B_j = sum_i colour_i * intensity_i * B_j,i (the paper's equation 1) from the
+ * Computes B_j = sum_i color_i * intensity_i * B_j,i (the paper's equation 1) from the
  * `Radiosity_<name>` point and cell arrays of vtkLightTaggedRadiosity, for the lights named
  * in the field array `LightNames` (or every `Radiosity_*` array if it is absent).
  * Changing a light re-executes only this filter, and this filter only combines: cost
  * O(n k), nothing upstream is recomputed.
  *
- * A light's default colour is the solver's field array `LightDefaultColors` (else the mean
+ * A light's default color is the solver's field array `LightDefaultColors` (else the mean
  * `Emission` of its cells, else white), its default intensity 1 and it is enabled.
  * With the solver's `Direct_<name>` arrays, IndirectScale scales indirect light alone:
  * B = Direct + IndirectScale * (Radiosity - Direct). Lights are addressed by index (SetLightColor
@@ -60,7 +60,7 @@ public:
 
   ///@{
   /// Per-light settings by name, all at once (ParaView's repeatable property). A NaN
-  /// colour component or intensity keeps that part at its default.
+  /// color component or intensity keeps that part at its default.
   void SetLightSetting(const char* name, double r, double g, double b, double intensity, int enabled);
   void ClearLightSettings();
   ///@}
@@ -71,7 +71,7 @@ public:
   ///@{
   /**
    * A light schedule animates lights over time: keyframes (time, light, r, g, b,
-   * intensity, enabled), the light given by name or by index. Between keyframes colour and
+   * intensity, enabled), the light given by name or by index. Between keyframes color and
    * intensity are interpolated linearly, `enabled` holds from the previous keyframe. With
    * a schedule the filter reports its keyframe times as time steps, so a time slider (or
    * UpdateTimeStep) relights. Entries come from AddScheduleEntry or from a CSV file
@@ -89,7 +89,7 @@ public:
   ///@}
 
   ///@{
-  /// Multiplier applied before clamping to display colours. Default 1.
+  /// Multiplier applied before clamping to display colors. Default 1.
   vtkSetClampMacro(Exposure, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(Exposure, double);
   ///@}

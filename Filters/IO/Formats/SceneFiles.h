@@ -58,7 +58,7 @@ double SrgbToLinear(double encoded);
 
 /// The mean linear RGB of an image: integer (8 or 16 bit) sRGB codes made linear, float
 /// values as they are, grey counted for all channels; white if there is none.
-radiosity::Vec3 MeanColour(vtkImageData* image);
+radiosity::Vec3 MeanColor(vtkImageData* image);
 
 }
 

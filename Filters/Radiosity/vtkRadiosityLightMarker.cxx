@@ -300,7 +300,7 @@ void vtkRadiosityLightMarker::AddAreaLight(const char* name, int shape, double c
   light.Normal = { nx, ny, nz };
   light.Width = width;
   light.Height = height;
-  light.Colour = { r, g, b };
+  light.Color = { r, g, b };
   this->Chosen->AreaLights.push_back(light);
   this->Modified();
 }
@@ -346,8 +346,8 @@ int vtkRadiosityLightMarker::RequestData(
     {
       if (!(std::isfinite(this->Emission[c]) && this->Emission[c] >= GetEmissionMinValue()))
       {
-        vtkErrorMacro(<< "Cannot mark lights: Emission colour component " << c << " = " << this->Emission[c]
-                      << "; colours must be finite and >= 0.");
+        vtkErrorMacro(<< "Cannot mark lights: Emission color component " << c << " = " << this->Emission[c]
+                      << "; colors must be finite and >= 0.");
         return 0;
       }
     }
@@ -400,7 +400,7 @@ int vtkRadiosityLightMarker::RequestData(
       }
       AppendAreaLight(output, loop, area.Name);
       lights.Id.push_back(LightIndex(lights, area.Name));
-      lights.Emission.push_back(area.Colour);
+      lights.Emission.push_back(area.Color);
     }
     if (!count && this->Chosen->AreaLights.empty())
     {

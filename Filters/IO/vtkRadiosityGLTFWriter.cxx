@@ -186,13 +186,13 @@ void vtkRadiosityGLTFWriter::WriteData()
     }
     const std::string attribute = AttributeName(names[l], taken);
     attributes[attribute] = glb.AddVec3(Floats(light, 1.0, false), false);
-    double colour[3] = { 1, 1, 1 };
+    double color[3] = { 1, 1, 1 };
     if (defaults && defaults->GetNumberOfComponents() == 3 && l < defaults->GetNumberOfTuples())
     {
-      defaults->GetTuple(l, colour);
+      defaults->GetTuple(l, color);
     }
     lights.push_back({ { "name", names[l] }, { "attribute", attribute },
-      { "defaultColor", { colour[0], colour[1], colour[2] } } });
+      { "defaultColor", { color[0], color[1], color[2] } } });
   }
   const json primitive = { { "attributes", attributes }, { "indices", glb.AddIndices(Triangles(mesh)) },
     { "material", 0 }, { "mode", 4 } };

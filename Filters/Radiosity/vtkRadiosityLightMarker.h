@@ -53,7 +53,7 @@ public:
   ///@}
 
   ///@{
-  /// The chosen cells' Emission (the light's default colour and intensity). Default 1, 1, 1.
+  /// The chosen cells' Emission (the light's default color and intensity). Default 1, 1, 1.
   /// Each component finite and at least GetEmissionMinValue(); marking with another is an
   /// error that names it.
   vtkSetVector3Macro(Emission, double);
@@ -64,7 +64,7 @@ public:
 
   ///@{
   /// Appends an area light: shape 0 a width x height rectangle, 1 a disk of diameter
-  /// width; centre, the normal it emits towards, and its Emission colour.
+  /// width; centre, the normal it emits towards, and its Emission color.
   void AddAreaLight(const char* name, int shape, double cx, double cy, double cz, double nx, double ny,
     double nz, double width, double height, double r, double g, double b);
   void ClearAreaLights();

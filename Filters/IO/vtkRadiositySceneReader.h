@@ -3,12 +3,12 @@
  * @brief   reads a scene file (OBJ+MTL, glTF/GLB, PLY; IFC, FBX, DAE, 3DS... through
  *          assimp) into the radiosity input: polygons with Reflectance, LightId, Emission
  *
- * Diffuse colours (MTL `Kd`, glTF `baseColorFactor` times the base colour texture's mean,
- * PLY colours) become the cell array `Reflectance`, clamped into [0, 1] with one warning
- * that names the clamped materials. Emissive colours (MTL `Ke`, glTF `emissiveFactor`
+ * Diffuse colors (MTL `Kd`, glTF `baseColorFactor` times the base color texture's mean,
+ * PLY colors) become the cell array `Reflectance`, clamped into [0, 1] with one warning
+ * that names the clamped materials. Emissive colors (MTL `Ke`, glTF `emissiveFactor`
  * times `KHR_materials_emissive_strength`) make lights: one per emissive material, named
  * after it, or with LightsPerObject one per object and emissive material, named after the
- * object; `Emission` is the emissive colour. Scene-graph transforms are applied, and
+ * object; `Emission` is the emissive color. Scene-graph transforms are applied, and
  * UnitScale scales every coordinate (0.001 for a file in millimetres). Degenerate cells
  * (zero area, collinear points, crossing edges) are dropped and counted. The output also
  * keeps each cell's material (cell array `MaterialIds`, field array `MaterialNames`), for

@@ -1,0 +1,59 @@
+#include "Solve/SolverMethods.h"
+#include "Solve/HierarchicalRadiosity.h"
+#include "Solve/ProgressiveRadiosity.h"
+
+#include <cstdio>
+
+namespace radiosity
+{
+
+namespace
+{
+std::string DescribeProgressive(const SolverStatistics& stats)
+{
+  return "ProgressiveRefinement: " + std::to_string(stats.FormFactorCount) + " form factors";
+}
+
+std::string DescribeHierarchical(const SolverStatistics& stats)
+{
+  char text[256];
+  std::snprintf(text, sizeof(text),
+    "Hierarchical: %lld patch links, %lld element links, %lld volume links, %.1f MB of links", stats.PatchLinks,
+    stats.ElementLinks, stats.VolumeLinks, stats.LinkBytes / 1048576.0);
+  return text;
+}
+} // namespace
+
+const std::vector<MethodEntry>& SolverMethodTable()
+{
+  static const std::vector<MethodEntry> table = {
+    { SolverMethod::ProgressiveRefinement, "ProgressiveRefinement", SolveProgressive, DescribeProgressive },
+    { SolverMethod::Hierarchical, "Hierarchical", SolveHierarchical, DescribeHierarchical },
+  };
+  return table;
+}
+
+const MethodEntry* FindSolverMethod(SolverMethod method)
+{
+  for (const MethodEntry& entry : SolverMethodTable())
+  {
+    if (entry.Method == method)
+    {
+      return &entry;
+    }
+  }
+  return nullptr;
+}
+
+std::string DescribeSolve(const SolverStatistics& stats)
+{
+  const MethodEntry* entry = FindSolverMethod(stats.Method);
+  std::string described = entry ? entry->Describe(stats) : "no method";
+  if (stats.FaceClusters > 0)
+  {
+    described += "; " + std::to_string(stats.FaceClusters) + " face clusters";
+  }
+  return stats.MethodReason.empty() ? described : described + "; " + stats.MethodReason;
+}
+
+} // namespace radiosity

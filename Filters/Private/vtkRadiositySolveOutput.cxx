@@ -1,0 +1,280 @@
+#include "vtkRadiositySolveOutput.h"
+
+#include "Base/Memory.h"
+#include "Geometry/PointAverages.h"
+#include "Solve/Effects.h"
+#include "Solve/LightChecks.h"
+#include "Solve/SolverMethods.h"
+
+#include "vtkAlgorithm.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkIntArray.h"
+#include "vtkLogger.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkStringArray.h"
+#include "vtkTable.h"
+
+#include <algorithm>
+#include <sstream>
+
+namespace vtkRadiositySolveOutput
+{
+namespace
+{
+std::vector<int> FieldInts(vtkPolyData* input, const char* name)
+{
+  std::vector<int> values;
+  if (vtkDataArray* array = input->GetFieldData()->GetArray(name))
+  {
+    for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
+    {
+      values.push_back(static_cast<int>(array->GetComponent(i, 0)));
+    }
+  }
+  return values;
+}
+
+vtkSmartPointer<vtkFloatArray> MakeArray(
+  const std::string& name, const std::vector<radiosity::Vec3>& values, int columns, int column, size_t count)
+{
+  auto array = vtkSmartPointer<vtkFloatArray>::New();
+  array->SetName(name.c_str());
+  array->SetNumberOfComponents(3);
+  array->SetNumberOfTuples(static_cast<vtkIdType>(count));
+  float* out = array->GetPointer(0);
+  for (size_t i = 0; i < count; ++i)
+  {
+    const radiosity::Vec3& v = values[i * columns + column];
+    out[3 * i + 0] = static_cast<float>(v.x);
+    out[3 * i + 1] = static_cast<float>(v.y);
+    out[3 * i + 2] = static_cast<float>(v.z);
+  }
+  return array;
+}
+
+/// Cell and point arrays `name` for each solution of `cellValues`.
+void AddPerSolution(vtkPolyData* output, const radiosity::SceneMesh& mesh, const radiosity::SceneGeometry& g,
+  const std::vector<radiosity::Vec3>& cellValues, int columns, const std::vector<std::string>& names,
+  const std::string& prefix, bool combined)
+{
+  const std::vector<radiosity::Vec3> pointValues = radiosity::AverageToPoints(mesh, g, cellValues, columns);
+  for (int m = 0; m < columns; ++m)
+  {
+    const std::string name = combined ? prefix : prefix + "_" + names[m];
+    output->GetCellData()->AddArray(MakeArray(name, cellValues, columns, m, mesh.NumberOfPolygons()));
+    output->GetPointData()->AddArray(MakeArray(name, pointValues, columns, m, mesh.points.size()));
+  }
+}
+
+void AddStrings(vtkFieldData* fields, const char* name, const std::vector<std::string>& values)
+{
+  vtkNew<vtkStringArray> array;
+  array->SetName(name);
+  for (const std::string& value : values)
+  {
+    array->InsertNextValue(value);
+  }
+  fields->AddArray(array);
+}
+
+void AddColumn(vtkTable* table, const std::string& name, const std::vector<double>& values, size_t stride,
+  size_t offset)
+{
+  vtkNew<vtkDoubleArray> column;
+  column->SetName(name.c_str());
+  const size_t rows = stride ? values.size() / stride : 0;
+  column->SetNumberOfValues(static_cast<vtkIdType>(rows));
+  for (size_t r = 0; r < rows; ++r)
+  {
+    column->SetValue(static_cast<vtkIdType>(r), values[r * stride + offset]);
+  }
+  table->AddColumn(column);
+}
+
+/// How the solve ended (field array SolverStatus); an aborted result is partial.
+std::string DescribeStatus(const radiosity::SolverStatistics& stats, bool aborted)
+{
+  if (aborted || stats.Aborted)
+  {
+    return "aborted";
+  }
+  if (stats.Converged)
+  {
+    return "converged";
+  }
+  return stats.OutOfTime ? "stopped at TimeBudget" : "stopped at MaximumShots";
+}
+} // namespace
+
+std::string ReadInput(vtkPolyData* input, radiosity::EffectMode separation, SceneInput& scene)
+{
+  std::string error;
+  if (!vtkRadiosityAdapter::CopyPolygons(input, scene.Mesh, error) ||
+    !vtkRadiosityAdapter::ReadSceneArrays(input, scene.Mesh, scene.Emission, error) ||
+    !(error = radiosity::ValidateScene(scene.Mesh, scene.Lights)).empty())
+  {
+    return error;
+  }
+  scene.LightNames = vtkRadiosityAdapter::LightNames(input->GetFieldData(), scene.Lights);
+  return radiosity::GroupLights(
+    scene.Lights, FieldInts(input, "LightBanks"), FieldInts(input, "StaticLights"), separation, scene.Grouping);
+}
+
+std::string CheckSolveMemory(
+  const SceneInput& scene, int solutions, bool separateDirect, const radiosity::ProcessGroup& group)
+{
+  const int elements = scene.Mesh.NumberOfPolygons();
+  std::string error = radiosity::CheckMemory(
+    radiosity::SolveMemory(elements, static_cast<long long>(scene.Mesh.points.size()), solutions, separateDirect),
+    std::to_string(solutions) + " solutions on " + std::to_string(elements) + " elements");
+  error = radiosity::AgreeOnFailure(group, error, "has too little memory for the solve");
+  return error.empty() ? error
+                       : error + "; group lights into LightBanks, solve StandardCombined, or use fewer elements";
+}
+
+std::vector<std::string> SolutionNames(const SceneInput& scene, bool combined)
+{
+  if (combined)
+  {
+    return { "" };
+  }
+  std::vector<std::string> names(scene.Grouping.Solutions);
+  for (size_t i = 0; i < scene.LightNames.size(); ++i)
+  {
+    std::string& name = names[scene.Grouping.SolutionOfLight[i]];
+    name += (name.empty() ? "" : "+") + scene.LightNames[i];
+  }
+  return names;
+}
+
+void AddSolutionArrays(vtkPolyData* output, const SceneInput& scene, const radiosity::RadiositySolver& solver,
+  const radiosity::Solution& result, const std::vector<std::string>& names, bool combined)
+{
+  const radiosity::SceneMesh& mesh = scene.Mesh;
+  if (solver.SplitPatches() > 0)
+  {
+    // Patches cut by a wall were split for the solve; say so in PatchId, so that the
+    // relight filter (moving lights) groups elements as the solver did.
+    vtkNew<vtkIntArray> patchIds;
+    patchIds->SetName("PatchId");
+    patchIds->SetNumberOfTuples(static_cast<vtkIdType>(mesh.NumberOfPolygons()));
+    const std::vector<int>& patchOf = solver.Geometry().elementPatch;
+    std::copy(patchOf.begin(), patchOf.end(), patchIds->GetPointer(0));
+    output->GetCellData()->AddArray(patchIds);
+    vtkLogF(INFO, "LightTaggedRadiosity: %d patches split where a surface stands across them", solver.SplitPatches());
+  }
+  vtkLogScopeF(TRACE, "average to points");
+  AddPerSolution(output, mesh, solver.Geometry(), result.Radiosity, result.Solutions, names, "Radiosity", combined);
+  if (!result.Direct.empty())
+  {
+    AddPerSolution(output, mesh, solver.Geometry(), result.Direct, result.Solutions, names, "Direct", combined);
+  }
+}
+
+void AddLightFields(vtkAlgorithm* self, vtkFieldData* fields, const SceneInput& scene,
+  const std::vector<std::string>& names, vtkRadiosityAdapter::WarningList& warnings)
+{
+  AddStrings(fields, "LightNames", names);
+  vtkNew<vtkDoubleArray> defaults;
+  defaults->SetName("LightDefaultColors");
+  defaults->SetNumberOfComponents(3);
+  const std::vector<radiosity::Vec3> colors = radiosity::DefaultColors(scene.Mesh, scene.Grouping, scene.Emission);
+  for (size_t m = 0; m < colors.size(); ++m)
+  {
+    const radiosity::Vec3& c = colors[m];
+    defaults->InsertNextTuple3(c.x, c.y, c.z);
+    if (c.x + c.y + c.z <= 0)
+    {
+      warnings.Add(self, "Light '" + names[m] +
+          "' has zero Emission: it stays dark when relit until it is given a color (its unit solution is there).");
+    }
+  }
+  fields->AddArray(defaults);
+}
+
+void AddStatusFields(vtkFieldData* fields, const std::vector<radiosity::EffectDecision>& effects,
+  const radiosity::SolverStatistics& stats, bool aborted)
+{
+  std::vector<std::string> names, decisions, reasons;
+  for (const radiosity::EffectDecision& e : effects)
+  {
+    names.push_back(e.Effect);
+    decisions.push_back(e.Simulated ? "simulated" : "skipped");
+    reasons.push_back(e.Reason);
+  }
+  AddStrings(fields, "Effects", names);
+  AddStrings(fields, "EffectDecisions", decisions);
+  AddStrings(fields, "EffectReasons", reasons);
+  AddStrings(fields, "SolverMethod", { radiosity::DescribeSolve(stats) });
+  AddStrings(fields, "SolverStatus", { DescribeStatus(stats, aborted) });
+  vtkNew<vtkDoubleArray> unshot;
+  unshot->SetName("UnshotHistory");
+  for (double r : stats.RemainingHistory)
+  {
+    unshot->InsertNextValue(r);
+  }
+  fields->AddArray(unshot);
+}
+
+void FillHistory(vtkTable* history, const radiosity::SolverStatistics& stats, const std::vector<std::string>& names,
+  int columns, bool combined)
+{
+  vtkNew<vtkIntArray> shotColumn;
+  shotColumn->SetName("Shot");
+  for (int s = 1; s <= stats.Shots; ++s)
+  {
+    shotColumn->InsertNextValue(s);
+  }
+  history->AddColumn(shotColumn);
+  AddColumn(history, "Time", stats.TimeHistory, 1, 0);
+  AddColumn(history, "Remaining", stats.RemainingHistory, 1, 0);
+  for (int m = 0; m < columns && !combined; ++m)
+  {
+    AddColumn(history, "Remaining_" + names[m], stats.RemainingPerSolution, columns, m);
+  }
+}
+
+std::string DescribeEarlyStop(const radiosity::SolverStatistics& stats, double budget, double threshold)
+{
+  const double remaining = stats.RemainingHistory.empty() ? 1.0 : stats.RemainingHistory.back();
+  std::ostringstream text;
+  if (stats.Aborted)
+  {
+    text << "Solve aborted after " << stats.Shots << " shots; the output holds the partial result.";
+  }
+  else if (stats.OutOfTime)
+  {
+    text << "TimeBudget of " << budget << " s reached after " << stats.Shots << " shots; remaining unshot energy "
+         << remaining << " of the initial.";
+  }
+  else if (!stats.Converged)
+  {
+    text << "Stopped at MaximumShots (" << stats.ShotCap << ") before converging: remaining unshot energy "
+         << remaining << " of the initial, threshold " << threshold
+         << ". Raise MaximumShots (or use the ambient term) for a converged result.";
+  }
+  return text.str();
+}
+
+void LogSolve(const radiosity::SolverStatistics& stats, double seconds, int elements, int rank,
+  const std::vector<radiosity::EffectDecision>& effects)
+{
+  vtkLogF(INFO, "LightTaggedRadiosity: %s; %d shots, %.3f s; %s", radiosity::DescribeSolve(stats).c_str(),
+    stats.Shots, seconds, radiosity::SummarizeEffects(effects).c_str());
+  if (stats.Ranks > 1)
+  {
+    vtkLogF(INFO,
+      "LightTaggedRadiosity: rank %d of %d received for %d of %d elements and cast %lld rays; %lld sums over the "
+      "ranks, %.0f bytes per shot, %.3f MB in all, %.3f s in sums",
+      rank, stats.Ranks, stats.ReceivingElements, elements, stats.OwnRays, stats.Collectives,
+      stats.ShotCollectiveBytes / std::max(stats.Shots, 1), stats.CollectiveBytes / 1e6, stats.CollectiveSeconds);
+  }
+}
+}

@@ -1,0 +1,325 @@
+#include "vtkLightTaggedRadiosity.h"
+#include "vtkRadiosityAbort.h"
+#include "vtkRadiosityAdapter.h"
+#include "vtkRadiosityPieces.h"
+#include "vtkRadiosityPreparedScenes.h"
+#include "vtkRadiositySolveOutput.h"
+
+#include "Solve/Effects.h"
+#include "Solve/LightChecks.h"
+#include "Geometry/PointAverages.h"
+#include "Solve/LightSolutions.h"
+#include "Base/Memory.h"
+#include "Solve/PatchBasis.h"
+#include "Solve/SolverMethods.h"
+
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkLogger.h"
+#include "vtkMultiProcessController.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkStringArray.h"
+#include "vtkTable.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <sstream>
+
+vtkStandardNewMacro(vtkLightTaggedRadiosity);
+
+int vtkLightTaggedRadiosity::GetPreparedScenesHeld()
+{
+  return vtkRadiosityPreparedScenes::Held();
+}
+
+void vtkLightTaggedRadiosity::ReleasePreparedScenes()
+{
+  vtkRadiosityPreparedScenes::Clear();
+}
+
+vtkLightTaggedRadiosity::vtkLightTaggedRadiosity()
+{
+  this->SetNumberOfOutputPorts(2);
+}
+
+int vtkLightTaggedRadiosity::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 1)
+  {
+    info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkTable");
+    return 1;
+  }
+  return this->Superclass::FillOutputPortInformation(port, info);
+}
+
+int vtkLightTaggedRadiosity::GetNumberOfSolverMethods()
+{
+  return static_cast<int>(radiosity::SolverMethodTable().size()) + 1;
+}
+
+const char* vtkLightTaggedRadiosity::GetSolverMethodName(int value)
+{
+  if (value == SOLVER_AUTO)
+  {
+    return "Auto";
+  }
+  const radiosity::MethodEntry* entry = radiosity::FindSolverMethod(static_cast<radiosity::SolverMethod>(value));
+  return entry ? entry->Name : nullptr;
+}
+
+void vtkLightTaggedRadiosity::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "SolutionMode: " << this->SolutionMode << "\n";
+  os << indent << "FormFactorMethod: " << this->FormFactorMethod << "\n";
+  os << indent << "FormFactorSamples: " << this->FormFactorSamples << "\n";
+  os << indent << "SolverMethod: " << this->SolverMethod << "\n";
+  os << indent << "MaximumShots: " << this->MaximumShots << "\n";
+  os << indent << "ConvergenceThreshold: " << this->ConvergenceThreshold << "\n";
+  os << indent << "TimeBudget: " << this->TimeBudget << "\n";
+  os << indent << "AmbientTerm: " << this->AmbientTerm << "\n";
+  os << indent << "SeparateDirect: " << this->SeparateDirect << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "Effects (visibility, interreflection, color, separation, converged): "
+     << this->VisibilityEffect << " " << this->InterreflectionEffect << " " << this->ColorEffect << " "
+     << this->LightSeparationEffect << " " << this->ConvergedLightsEffect
+     << (this->ForceAllEffects ? " (all forced on)" : "") << "\n";
+}
+
+namespace
+{
+
+/// The preparation kept for `input`'s mesh where every rank has one (MarkEnclosed is
+/// collective: the ranks must all prepare or all reuse), else a new one, kept for the next
+/// solve, the relight and the pictures of this mesh.
+std::string PrepareOrReuse(vtkPolyData* input, const radiosity::SceneMesh& mesh, int threads,
+  const radiosity::ProcessGroup& group, radiosity::PreparedScene& prepared, bool& reused)
+{
+  prepared = vtkRadiosityPreparedScenes::Find(input, true);
+  reused = radiosity::AgreeOnFailure(group, prepared.Geometry ? "" : "not kept", "not kept").empty();
+  if (reused)
+  {
+    return "";
+  }
+  // Kept here but not on every rank: all prepare again (rays kept here are reused).
+  prepared.Geometry.reset();
+  prepared.SplitPatches = 0;
+  const std::string error = radiosity::PrepareTransport(mesh, threads, group, prepared);
+  if (error.empty())
+  {
+    vtkRadiosityPreparedScenes::Keep(input, prepared);
+  }
+  return error;
+}
+
+/// Solves the moving-light basis and adds its arrays (see PatchBasisLevel); false, with
+/// the error reported, when the basis cannot be made.
+bool AddPatchBasis(vtkAlgorithm* self, int level, const radiosity::RadiositySolver& solver,
+  const radiosity::SceneMesh& mesh, const radiosity::SolverOptions& options, vtkPolyData* output,
+  vtkFieldData* fields, std::vector<radiosity::EffectDecision>& effects,
+  vtkRadiosityAdapter::WarningList& warnings)
+{
+  radiosity::SolverStatistics stats;
+  radiosity::PatchBasis basis;
+  const std::string error =
+    radiosity::SolvePatchBasis(solver, mesh, options, static_cast<radiosity::BasisLevel>(level), stats, basis);
+  // The node basis runs on every rank alone: an abort on one must drop the basis on all,
+  // or the pieces would differ in their arrays.
+  stats.Aborted = !radiosity::AgreeOnFailure(options.Group, stats.Aborted ? "aborted" : "", "aborted").empty();
+  if (stats.Aborted)
+  {
+    warnings.Add(self, "Moving-light basis aborted: the output has the light solutions but no basis.");
+    return true;
+  }
+  if (!error.empty())
+  {
+    vtkErrorWithObjectMacro(self, << "Cannot solve the moving-light basis: " << error);
+    return false;
+  }
+  vtkNew<vtkFloatArray> values;
+  values->SetName("PatchBasis");
+  values->SetNumberOfComponents(3 * basis.Patches);
+  values->SetNumberOfTuples(basis.Receivers);
+  std::copy(basis.Values.begin(), basis.Values.end(), values->GetPointer(0));
+  const bool perElement = basis.Node.empty();
+  if (perElement)
+  {
+    output->GetCellData()->AddArray(values);
+  }
+  else
+  {
+    fields->AddArray(values);
+    vtkNew<vtkIntArray> nodes;
+    nodes->SetName("PatchBasisNodes");
+    nodes->SetNumberOfComponents(3);
+    nodes->SetNumberOfTuples(output->GetNumberOfCells());
+    std::copy(basis.Node.begin(), basis.Node.end(), nodes->GetPointer(0));
+    vtkNew<vtkFloatArray> weights;
+    weights->SetName("PatchBasisWeights");
+    weights->SetNumberOfComponents(3);
+    weights->SetNumberOfTuples(output->GetNumberOfCells());
+    std::copy(basis.Weight.begin(), basis.Weight.end(), weights->GetPointer(0));
+    output->GetCellData()->AddArray(nodes);
+    output->GetCellData()->AddArray(weights);
+  }
+  radiosity::RecordBasisEffect(basis, stats, effects);
+  if (!stats.Converged)
+  {
+    warnings.Add(self, "The patch basis stopped before converging (" + std::to_string(stats.Shots) +
+        " shots); moving lights will miss some interreflection.");
+  }
+  return true;
+}
+
+}
+
+int vtkLightTaggedRadiosity::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkTable* history = vtkTable::GetData(outputVector, 1);
+  history->Initialize();
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  vtkMultiProcessController* parallel = vtkRadiosityPieces::Parallel(outputVector->GetInformationObject(0));
+  // On ParaView's MPI server every rank joins the gather even when its input failed
+  // upstream (rank 0 then fails them all), so none is left waiting.
+  return vtkRadiosityAdapter::Guarded(this, parallel ? nullptr : input, output, [&]() -> int {
+    if (!parallel)
+    {
+      return this->Solve(input, output, history);
+    }
+    // Light transport needs the whole scene: every rank holds it, computes the transport
+    // to its share of the receivers, and keeps its own piece of the result.
+    return vtkRadiosityPieces::SolveTogether(parallel, input, output, history,
+      [this, parallel](vtkPolyData* whole, vtkPolyData* solved, vtkTable* table) {
+        return this->Solve(whole, solved, table, parallel);
+      });
+  });
+}
+
+radiosity::SolverOptions vtkLightTaggedRadiosity::Options(int threads, const radiosity::ProcessGroup& group) const
+{
+  radiosity::SolverOptions options;
+  options.Solver = static_cast<radiosity::SolverMethod>(this->SolverMethod);
+  options.MaximumShots = this->MaximumShots;
+  options.ConvergenceThreshold = this->ConvergenceThreshold;
+  options.TimeBudget = this->TimeBudget;
+  options.Method = static_cast<radiosity::FormFactorMethod>(this->FormFactorMethod);
+  options.Samples = this->FormFactorSamples;
+  options.Threads = threads;
+  options.AmbientTerm = this->AmbientTerm;
+  options.SeparateDirect = this->SeparateDirect;
+  options.Visibility = this->Effect(this->VisibilityEffect);
+  options.Interreflection = this->Effect(this->InterreflectionEffect);
+  options.Color = this->Effect(this->ColorEffect);
+  options.ConvergedSolutions = this->Effect(this->ConvergedLightsEffect);
+  options.Group = group;
+  return options;
+}
+
+radiosity::EffectMode vtkLightTaggedRadiosity::Effect(int mode) const
+{
+  return this->ForceAllEffects ? radiosity::EffectMode::On : static_cast<radiosity::EffectMode>(mode);
+}
+
+int vtkLightTaggedRadiosity::Solve(
+  vtkPolyData* input, vtkPolyData* output, vtkTable* history, vtkMultiProcessController* ranks)
+{
+  namespace steps = vtkRadiositySolveOutput;
+  vtkLogScopeF(TRACE, "solve"); // pvbatch --verbosity=TRACE times the solve and its steps
+  steps::SceneInput scene;
+  const bool combined = this->SolutionMode == STANDARD_COMBINED;
+  const radiosity::ProcessGroup group = vtkRadiosityPieces::Group(ranks);
+  std::string error = steps::ReadInput(input, this->Effect(this->LightSeparationEffect), scene);
+  if (error.empty())
+  {
+    error = steps::CheckSolveMemory(scene, combined ? 1 : scene.Grouping.Solutions, this->SeparateDirect, group);
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const int threads = vtkRadiosityAdapter::Threads(this->NumberOfThreads);
+  radiosity::PreparedScene prepared;
+  if (error.empty())
+  {
+    vtkLogScopeF(TRACE, "prepare the scene");
+    error = PrepareOrReuse(input, scene.Mesh, threads, group, prepared, this->LastPreparationReused);
+  }
+  const radiosity::RadiositySolver solver(scene.Mesh, prepared);
+  if (!error.empty() || !(error = solver.Error()).empty())
+  {
+    vtkErrorMacro(<< "Cannot solve: " << error << ".");
+    return 0;
+  }
+  // Every rank finds the same warnings; rank 0 says them.
+  vtkRadiosityAdapter::WarningList warnings(ranks && ranks->GetLocalProcessId() != 0);
+  for (const std::string& warning : radiosity::CheckLights(scene.Mesh, solver.Geometry(), solver.Rays(), scene.LightNames))
+  {
+    warnings.Add(this, warning);
+  }
+  radiosity::SolverOptions options = this->Options(threads, group);
+  const vtkRadiosityAbortWatch abort(this);
+  options.Progress = [this, abort](double f) {
+    this->UpdateProgress(f);
+    return !abort.Stop();
+  };
+  const auto mode = static_cast<radiosity::SolutionMode>(this->SolutionMode);
+  vtkLogStartScope(TRACE, "shoot");
+  const radiosity::Solution result = radiosity::SolveLights(solver, scene.Mesh, scene.Grouping, scene.Emission, mode, options);
+  vtkLogEndScope("shoot");
+  return this->WriteResult(input, output, history, scene, solver, result, options, abort.Stop(), start, warnings,
+    ranks ? ranks->GetLocalProcessId() : 0);
+}
+
+int vtkLightTaggedRadiosity::WriteResult(vtkPolyData* input, vtkPolyData* output, vtkTable* history,
+  const vtkRadiositySolveOutput::SceneInput& scene, const radiosity::RadiositySolver& solver,
+  const radiosity::Solution& result, const radiosity::SolverOptions& options, bool aborted,
+  std::chrono::steady_clock::time_point start, vtkRadiosityAdapter::WarningList& warnings, int rank)
+{
+  namespace steps = vtkRadiositySolveOutput;
+  const bool combined = this->SolutionMode == STANDARD_COMBINED;
+  const std::vector<std::string> names = steps::SolutionNames(scene, combined);
+  output->ShallowCopy(input);
+  steps::AddSolutionArrays(output, scene, solver, result, names, combined);
+  this->LastSolveSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const radiosity::SolverStatistics& stats = result.Statistics;
+  this->LastShots = stats.Shots;
+  this->LastConverged = stats.Converged;
+  this->LastRays = stats.RayCount;
+  const std::string stop = steps::DescribeEarlyStop(stats, this->TimeBudget, this->ConvergenceThreshold);
+  if (!stop.empty())
+  {
+    warnings.Add(this, stop);
+  }
+  // The output shares the input's points and polygons: the relight's moving lights and
+  // the EXR writer find the solver's preparation under it, patches in the basis's order.
+  vtkRadiosityPreparedScenes::Keep(output, solver.Prepared());
+  vtkNew<vtkFieldData> fields; // fresh: the input's arrays are shared, ours are added on top
+  fields->ShallowCopy(input->GetFieldData());
+  if (!combined)
+  {
+    steps::AddLightFields(this, fields, scene, names, warnings);
+  }
+  std::vector<radiosity::EffectDecision> effects = result.Effects;
+  if (this->PatchBasis && !stats.Aborted &&
+    !AddPatchBasis(this, this->PatchBasisLevel, solver, scene.Mesh, options, output, fields, effects, warnings))
+  {
+    output->Initialize();
+    return 0;
+  }
+  steps::AddStatusFields(fields, effects, stats, aborted);
+  steps::LogSolve(stats, this->LastSolveSeconds, scene.Mesh.NumberOfPolygons(), rank, effects);
+  warnings.AddTo(fields);
+  output->SetFieldData(fields);
+  steps::FillHistory(history, stats, names, result.Solutions, combined);
+  return 1;
+}
