@@ -1,6 +1,6 @@
 """A real third-party building: KIT's FZK-Haus (IFC from Debian's assimp-testmodels, read by
 relight.import_scene through assimp), 6 ceiling lamps, Hierarchical solve, two pictures from inside. Run:
-./relight python Testing/Benchmark/house.py [--element 0.25] [--patch 0.5] [--out out/bench]"""
+./relight python Testing/Benchmark/house.py [--element 0.25] [--patch 0.5] [--time-budget 0] [--out out/bench]"""
 
 import argparse, pathlib, resource, subprocess
 import numpy as np
@@ -99,7 +99,7 @@ def add_lamps(house, lamps, half=0.15):
     return marker.GetOutput()
 
 
-def solve(scene, patch, element, cluster_angle=30.0):
+def solve(scene, patch, element, cluster_angle=30.0, time_budget=0.0):
     """Mesh + solve at the solver's default settings (Auto picks Hierarchical at this size);
     keeps warnings and errors."""
     mesher = relight.vtkRadiosityMesher()
@@ -107,6 +107,7 @@ def solve(scene, patch, element, cluster_angle=30.0):
     mesher.SetPatchSize(patch), mesher.SetElementSize(element), mesher.SetClusterAngle(cluster_angle)
     solver = relight.vtkLightTaggedRadiosity()
     solver.SetInputConnection(mesher.GetOutputPort())
+    solver.SetTimeBudget(time_budget)
     catchers = [relight.ErrorCatcher(mesher), relight.ErrorCatcher(solver)]
     solver.Update()
     if any(c.errors for c in catchers):
@@ -146,6 +147,7 @@ def main():
     parser.add_argument("--patch", type=float, default=0.5, help="PatchSize, m")
     parser.add_argument("--out", default="out/bench")
     parser.add_argument("--cluster-angle", type=float, default=30.0, help="the mesher's ClusterAngle (0: no face clusters)")
+    parser.add_argument("--time-budget", type=float, default=0.0, help="the solver's TimeBudget, s (0: solve to convergence)")
     args = parser.parse_args()
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
@@ -158,7 +160,7 @@ def main():
     print("\n".join(f"Lamp{i}: {np.round(p, 2)} (floor at {f} m)" for i, (f, p) in enumerate(lamps)))
     k = len(lamps)
     scene = add_lamps(house, lamps)
-    solver, warnings = solve(scene, args.patch, args.element, args.cluster_angle)
+    solver, warnings = solve(scene, args.patch, args.element, args.cluster_angle, args.time_budget)
     result = solver.GetOutput()
     method = result.GetFieldData().GetAbstractArray("SolverMethod").GetValue(0)
     commit = subprocess.run(["git", "describe", "--always", "--dirty"], capture_output=True, text=True).stdout.strip()
