@@ -103,17 +103,13 @@ vtkRadiositySceneReader::~vtkRadiositySceneReader()
 
 bool vtkRadiositySceneReader::CanReadFile(const char* fileName)
 {
-  if (!fileName)
-  {
-    return false;
-  }
-  std::string extension = vtksys::SystemTools::GetFilenameLastExtension(fileName);
-  extension = vtksys::SystemTools::LowerCase(extension.empty() ? extension : extension.substr(1));
-  const auto& native = SceneFiles::NativeExtensions();
-  const auto& other = SceneFiles::AssimpExtensions();
-  return std::find(native.begin(), native.end(), extension) != native.end() ||
-    (std::find(other.begin(), other.end(), extension) != other.end() &&
-      !vtksys::SystemTools::FindProgram("assimp").empty());
+  const SceneFiles::Format* format = fileName ? SceneFiles::FormatOf(fileName) : nullptr;
+  return format && (!format->NeedsAssimp || !vtksys::SystemTools::FindProgram("assimp").empty());
+}
+
+std::string vtkRadiositySceneReader::GetFileExtensions()
+{
+  return SceneFiles::AllExtensions();
 }
 
 int vtkRadiositySceneReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)

@@ -25,6 +25,8 @@
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkRadiosityFiltersModule.h" // for export macro
 
+#include <string> // for GetFileExtensions
+
 class VTKRADIOSITYFILTERS_EXPORT vtkRadiositySceneReader : public vtkPolyDataAlgorithm
 {
 public:
@@ -54,6 +56,9 @@ public:
 
   /// True if the extension is one this reader handles (assimp's only where installed).
   static bool CanReadFile(const char* fileName);
+  /// Every extension the reader knows, space-separated (the table in
+  /// IO/Formats/SceneFiles.cxx; the ParaView reader hint lists the same).
+  static std::string GetFileExtensions();
 
 protected:
   vtkRadiositySceneReader();

@@ -108,6 +108,11 @@ check(not shortcuts, f"SetSolverMethodTo<Name> for every method (missing: {short
 guide = open(os.path.join(ROOT, "docs", "design.md"), encoding="utf-8").read()
 check(all(n in guide for n in table.values()), "docs/design.md names every solver method")
 
+# Scene formats come from one table (IO/Formats/SceneFiles.cxx): the reader hint lists them all.
+hints = [f.get("extensions") for f in root.iter("ReaderFactory")]
+check(hints == [relight.vtkRadiositySceneReader.GetFileExtensions()],
+      f"the XML's reader hint {hints} lists the reader's extensions {relight.vtkRadiositySceneReader.GetFileExtensions()!r}")
+
 rows = setting_rows(SETTINGS)
 check(len(rows) == 7, f"docs/settings.md's table has {len(rows)} rows, expected 7")
 for proxy, cls, settings, methods in rows:

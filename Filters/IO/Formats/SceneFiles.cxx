@@ -66,17 +66,45 @@ bool ReadText(const std::string& path, std::string& text)
   return true;
 }
 
-const std::vector<std::string>& NativeExtensions()
+const std::vector<Format>& Formats()
 {
-  static const std::vector<std::string> extensions = { "obj", "gltf", "glb", "ply", "wrl", "vrml" };
-  return extensions;
+  static const std::vector<Format> formats = {
+    { "OBJ", { "obj" }, ReadObj, false },
+    { "glTF", { "gltf", "glb" }, ReadGltf, false },
+    { "PLY", { "ply" }, ReadPly, false },
+    { "VRML", { "wrl", "vrml" }, ReadVrml, false },
+    { "assimp (IFC, FBX, DAE, 3DS and others)",
+      { "ifc", "fbx", "dae", "3ds", "blend", "x3d", "lwo", "ase", "ms3d", "stl", "off", "x", "ac", "md5mesh" },
+      ReadWithAssimp, true },
+  };
+  return formats;
 }
 
-const std::vector<std::string>& AssimpExtensions()
+const Format* FormatOf(const std::string& path)
 {
-  static const std::vector<std::string> extensions = { "ifc", "fbx", "dae", "3ds", "blend", "x3d", "lwo",
-    "ase", "ms3d", "stl", "off", "x", "ac", "md5mesh" };
-  return extensions;
+  std::string extension = vtksys::SystemTools::GetFilenameLastExtension(path);
+  extension = vtksys::SystemTools::LowerCase(extension.empty() ? extension : extension.substr(1));
+  for (const Format& format : Formats())
+  {
+    if (std::find(format.Extensions.begin(), format.Extensions.end(), extension) != format.Extensions.end())
+    {
+      return &format;
+    }
+  }
+  return nullptr;
+}
+
+std::string AllExtensions()
+{
+  std::string all;
+  for (const Format& format : Formats())
+  {
+    for (const std::string& extension : format.Extensions)
+    {
+      all += (all.empty() ? "" : " ") + extension;
+    }
+  }
+  return all;
 }
 
 std::string Read(const std::string& path, radiosity::RawScene& raw, std::vector<std::string>& warnings)
@@ -85,31 +113,17 @@ std::string Read(const std::string& path, radiosity::RawScene& raw, std::vector<
   {
     return "'" + path + "' does not exist or is not a file";
   }
-  std::string extension = vtksys::SystemTools::GetFilenameLastExtension(path);
-  extension = vtksys::SystemTools::LowerCase(extension.empty() ? extension : extension.substr(1));
-  if (extension == "obj")
+  if (const Format* format = FormatOf(path))
   {
-    return ReadObj(path, raw, warnings);
+    return format->Read(path, raw, warnings);
   }
-  if (extension == "gltf" || extension == "glb")
+  std::string known;
+  for (const Format& format : Formats())
   {
-    return ReadGltf(path, raw, warnings);
+    known += (known.empty() ? "" : ", ") + std::string(format.Name);
   }
-  if (extension == "ply")
-  {
-    return ReadPly(path, raw, warnings);
-  }
-  if (extension == "wrl" || extension == "vrml")
-  {
-    return ReadVrml(path, raw, warnings);
-  }
-  const auto& other = AssimpExtensions();
-  if (std::find(other.begin(), other.end(), extension) != other.end())
-  {
-    return ReadWithAssimp(path, raw, warnings);
-  }
-  return "'" + path + "': the extension '." + extension +
-    "' is not a scene format this reader knows (OBJ, glTF, GLB, PLY, VRML; IFC, FBX, DAE, 3DS and others through assimp)";
+  return "'" + path + "': the extension '" + vtksys::SystemTools::GetFilenameLastExtension(path) +
+    "' is not a scene format this reader knows (" + known + "; extensions: " + AllExtensions() + ")";
 }
 
 int AppendPolygons(vtkPolyData* data, const vtkMatrix4x4* transform, int material, int object,

@@ -28,9 +28,23 @@ std::string ReadWithAssimp(const std::string& path, radiosity::RawScene& raw, st
 /// The whole file as bytes; false where it cannot be opened.
 bool ReadText(const std::string& path, std::string& text);
 
-/// Extensions read natively, and those handed to assimp (lower case, without the dot).
-const std::vector<std::string>& NativeExtensions();
-const std::vector<std::string>& AssimpExtensions();
+using ReadFunction = std::string (*)(const std::string&, radiosity::RawScene&, std::vector<std::string>&);
+
+/// One row of the table of scene formats: the one place a format is registered. The
+/// reader dispatches on it, CanReadFile and the "unknown extension" error are made from
+/// it, and Python.TestNames checks the ParaView reader hint against it.
+struct Format
+{
+  const char* Name;
+  std::vector<std::string> Extensions; ///< lower case, without the dot
+  ReadFunction Read;
+  bool NeedsAssimp; ///< read through assimp's command-line tool
+};
+const std::vector<Format>& Formats();
+/// The row for a file's extension (any case); null where no format has it.
+const Format* FormatOf(const std::string& path);
+/// Every extension of every format, space-separated, in table order.
+std::string AllExtensions();
 
 /// Appends `data`'s polygons (points through `transform` if given) with one material and
 /// object; returns the number of cells that were not polygons (lines, points) and so left out.
