@@ -214,6 +214,102 @@ double ElementSizeEverywhere(vtkRadiosityMesher* self, vtkMultiProcessController
 
 } // namespace
 
+namespace
+{
+/// Every rank's polygons (no arrays: the other ranks need none), so that surfaces of other
+/// pieces that stand on this piece's cut it (ContactCuts.h).
+radiosity::SceneMesh GatherWholeScene(vtkMultiProcessController* parallel, vtkPolyData* input, bool upstream)
+{
+  vtkNew<vtkPolyData> shape;
+  if (!upstream && input)
+  {
+    shape->SetPoints(input->GetPoints());
+    shape->SetPolys(input->GetPolys());
+  }
+  vtkNew<vtkPolyData> gathered;
+  vtkRadiosityPieces::AllGather(parallel, shape, gathered);
+  radiosity::SceneMesh whole;
+  std::string ignored; // a rank's own piece reports its problems itself
+  vtkRadiosityAdapter::CopyPolygons(gathered, whole, ignored);
+  return whole;
+}
+
+/// The ranks' verdict on their pieces: this rank's error, another's, or none at all cells;
+/// `firstPatch` receives the patches of the ranks before this one.
+std::string AgreeOnPieces(vtkMultiProcessController* parallel, const std::string& error, bool empty,
+  vtkPolyData* input, const radiosity::MeshedPolygons& meshed, long long& firstPatch)
+{
+  const long long failures = vtkRadiosityPieces::SumOverRanks(parallel, error.empty() ? 0 : 1);
+  const long long cells = vtkRadiosityPieces::SumOverRanks(parallel, empty ? 0 : input->GetNumberOfCells());
+  vtkRadiosityPieces::SumOverRanks(parallel, error.empty() ? meshed.patches : 0, &firstPatch);
+  if (!error.empty())
+  {
+    return error;
+  }
+  if (failures)
+  {
+    return "another rank could not mesh its piece (see its error)";
+  }
+  return cells ? std::string() : std::string("the input has no polygons");
+}
+
+void AddFieldInt(vtkFieldData* fields, const char* name, int value)
+{
+  vtkNew<vtkIntArray> array;
+  array->SetName(name);
+  array->InsertNextValue(value);
+  fields->AddArray(array);
+}
+
+/// The elements as the output's points and polygons, each with its source polygon's cell
+/// data and PatchId (offset by `firstPatch`), and the mesher's field arrays.
+void WriteMeshed(vtkPolyData* output, vtkPolyData* input, const radiosity::MeshedPolygons& meshed,
+  long long firstPatch, const vtkRadiosityAdapter::WarningList& warnings)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(meshed.points.size()));
+  for (size_t p = 0; p < meshed.points.size(); ++p)
+  {
+    const radiosity::Vec3& x = meshed.points[p];
+    points->SetPoint(static_cast<vtkIdType>(p), x.x, x.y, x.z);
+  }
+  vtkNew<vtkCellArray> polys;
+  const vtkIdType elements = static_cast<vtkIdType>(meshed.sourcePolygon.size());
+  polys->AllocateExact(elements, static_cast<vtkIdType>(meshed.connectivity.size()));
+  for (vtkIdType e = 0; e < elements; ++e)
+  {
+    polys->InsertNextCell(meshed.offsets[e + 1] - meshed.offsets[e]);
+    for (int k = meshed.offsets[e]; k < meshed.offsets[e + 1]; ++k)
+    {
+      polys->InsertCellPoint(meshed.connectivity[k]);
+    }
+  }
+  output->SetPoints(points);
+  output->SetPolys(polys);
+  vtkCellData* outCD = output->GetCellData();
+  outCD->CopyAllocate(input->GetCellData(), elements);
+  vtkNew<vtkIntArray> patchId;
+  patchId->SetName("PatchId");
+  patchId->SetNumberOfValues(elements);
+  for (vtkIdType e = 0; e < elements; ++e)
+  {
+    outCD->CopyData(input->GetCellData(), meshed.sourcePolygon[e], e);
+    patchId->SetValue(e, static_cast<int>(firstPatch + meshed.patchId[e]));
+  }
+  outCD->AddArray(patchId);
+  vtkFieldData* fields = output->GetFieldData();
+  fields->ShallowCopy(input->GetFieldData());
+  AddFieldInt(fields, "MergedTrianglePairs", meshed.mergedTrianglePairs);
+  AddFieldInt(fields, "ClusteredPatches", meshed.clusteredPatches);
+  vtkNew<vtkDoubleArray> used;
+  used->SetName("MesherElementSize");
+  used->InsertNextValue(meshed.elementSize);
+  fields->AddArray(used);
+  warnings.AddTo(fields);
+}
+}
+
 int vtkRadiosityMesher::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -224,48 +320,28 @@ int vtkRadiosityMesher::RequestData(
   // exception), so one that fails never leaves the others waiting; patch ids then follow
   // those of the ranks before.
   vtkMultiProcessController* parallel = vtkRadiosityPieces::Parallel(outputVector->GetInformationObject(0));
-  return vtkRadiosityAdapter::Guarded(this, parallel ? nullptr : input, vtkPolyData::GetData(outputVector), [&]() -> int {
-    vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  return vtkRadiosityAdapter::Guarded(this, parallel ? nullptr : input, output, [&]() -> int {
     const bool upstream = vtkRadiosityAdapter::FailedUpstream(input);
     const bool empty = !input || input->GetNumberOfCells() == 0;
-    radiosity::MeshedPolygons meshed;
     vtkRadiosityAdapter::WarningList warnings;
-    // Surfaces of other ranks' pieces that stand on this piece's cut it (ContactCuts.h):
-    // every rank sees the whole scene's polygons, small next to their elements.
-    radiosity::SceneMesh whole;
-    if (parallel)
-    {
-      vtkNew<vtkPolyData> shape; // the polygons only: the other ranks need no arrays
-      if (!upstream && input)
-      {
-        shape->SetPoints(input->GetPoints());
-        shape->SetPolys(input->GetPolys());
-      }
-      vtkNew<vtkPolyData> gathered;
-      vtkRadiosityPieces::AllGather(parallel, shape, gathered);
-      std::string ignored; // a rank's own piece reports its problems below
-      vtkRadiosityAdapter::CopyPolygons(gathered, whole, ignored);
-    }
+    const radiosity::SceneMesh whole = parallel ? GatherWholeScene(parallel, input, upstream) : radiosity::SceneMesh();
     const radiosity::PolygonArrays wholeArrays{ whole.points, whole.offsets, whole.connectivity };
     const radiosity::PolygonArrays* wholeScene = parallel ? &wholeArrays : nullptr;
-    const bool budget = parallel && this->MaximumElements > 0;
-    const double elementSize =
-      budget ? ElementSizeEverywhere(this, parallel, input, wholeScene, warnings) : this->ElementSize;
+    const double elementSize = parallel && this->MaximumElements > 0
+      ? ElementSizeEverywhere(this, parallel, input, wholeScene, warnings)
+      : this->ElementSize;
     const double localBudget = parallel ? 0.0 : static_cast<double>(this->MaximumElements);
+    radiosity::MeshedPolygons meshed;
     std::string error = upstream ? "a filter upstream failed"
       : parallel && empty        ? std::string()
                                  : vtkRadiosityAdapter::Caught([&]() {
-                                     return MeshPiece(
-                                       this, input, elementSize, localBudget, wholeScene, meshed, warnings);
+                                     return MeshPiece(this, input, elementSize, localBudget, wholeScene, meshed, warnings);
                                    });
     long long firstPatch = 0;
     if (parallel)
     {
-      const long long failures = vtkRadiosityPieces::SumOverRanks(parallel, error.empty() ? 0 : 1);
-      const long long cells = vtkRadiosityPieces::SumOverRanks(parallel, empty ? 0 : input->GetNumberOfCells());
-      vtkRadiosityPieces::SumOverRanks(parallel, error.empty() ? meshed.patches : 0, &firstPatch);
-      error = !error.empty() || !failures ? error : "another rank could not mesh its piece (see its error)";
-      error = !error.empty() || cells ? error : "the input has no polygons";
+      error = AgreeOnPieces(parallel, error, empty, input, meshed, firstPatch);
     }
     if (!error.empty())
     {
@@ -280,58 +356,7 @@ int vtkRadiosityMesher::RequestData(
       output->GetFieldData()->ShallowCopy(input->GetFieldData());
       return 1;
     }
-
-    vtkNew<vtkPoints> points;
-    points->SetDataTypeToDouble();
-    points->SetNumberOfPoints(static_cast<vtkIdType>(meshed.points.size()));
-    for (size_t p = 0; p < meshed.points.size(); ++p)
-    {
-      const radiosity::Vec3& x = meshed.points[p];
-      points->SetPoint(static_cast<vtkIdType>(p), x.x, x.y, x.z);
-    }
-    vtkNew<vtkCellArray> polys;
-    const vtkIdType elements = static_cast<vtkIdType>(meshed.sourcePolygon.size());
-    polys->AllocateExact(elements, static_cast<vtkIdType>(meshed.connectivity.size()));
-    for (vtkIdType e = 0; e < elements; ++e)
-    {
-      polys->InsertNextCell(meshed.offsets[e + 1] - meshed.offsets[e]);
-      for (int k = meshed.offsets[e]; k < meshed.offsets[e + 1]; ++k)
-      {
-        polys->InsertCellPoint(meshed.connectivity[k]);
-      }
-    }
-    output->SetPoints(points);
-    output->SetPolys(polys);
-
-    vtkCellData* inCD = input->GetCellData();
-    vtkCellData* outCD = output->GetCellData();
-    outCD->CopyAllocate(inCD, elements);
-    for (vtkIdType e = 0; e < elements; ++e)
-    {
-      outCD->CopyData(inCD, meshed.sourcePolygon[e], e);
-    }
-    vtkNew<vtkIntArray> patchId;
-    patchId->SetName("PatchId");
-    patchId->SetNumberOfValues(elements);
-    for (vtkIdType e = 0; e < elements; ++e)
-    {
-      patchId->SetValue(e, static_cast<int>(firstPatch + meshed.patchId[e]));
-    }
-    outCD->AddArray(patchId);
-    output->GetFieldData()->ShallowCopy(input->GetFieldData());
-    vtkNew<vtkIntArray> merged;
-    merged->SetName("MergedTrianglePairs");
-    merged->InsertNextValue(meshed.mergedTrianglePairs);
-    output->GetFieldData()->AddArray(merged);
-    vtkNew<vtkIntArray> clustered;
-    clustered->SetName("ClusteredPatches");
-    clustered->InsertNextValue(meshed.clusteredPatches);
-    output->GetFieldData()->AddArray(clustered);
-    vtkNew<vtkDoubleArray> used;
-    used->SetName("MesherElementSize");
-    used->InsertNextValue(meshed.elementSize);
-    output->GetFieldData()->AddArray(used);
-    warnings.AddTo(output->GetFieldData());
+    WriteMeshed(output, input, meshed, firstPatch, warnings);
     return 1;
   });
 }
