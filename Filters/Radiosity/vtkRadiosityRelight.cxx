@@ -148,92 +148,13 @@ bool ReadBasis(vtkPolyData* scene, int patches, radiosity::BasisView& basis, std
 }
 }
 
-bool vtkRadiosityRelight::AddMovingLights(vtkPolyData* scene, vtkPolyData* lights, vtkPolyData* dynamic,
-  vtkFloatArray* pointResult, vtkFloatArray* cellResult, std::string& error)
+namespace
 {
-  const auto start = std::chrono::steady_clock::now();
-  if (!scene->GetCellData()->GetArray("PatchBasis") && !scene->GetFieldData()->GetArray("PatchBasis"))
-  {
-    error = "moving lights need the solver's float array 'PatchBasis' (vtkLightTaggedRadiosity::PatchBasisOn())";
-    return false;
-  }
-  if (!this->Moving)
-  {
-    this->Moving = new MovingState;
-  }
-  MovingState& state = *this->Moving;
-  const vtkMTimeType sceneTime = scene->GetMTime();
-  const vtkMTimeType dynamicTime = dynamic ? dynamic->GetMTime() : 0;
-  if (state.Shader && state.SceneTime == sceneTime && state.DynamicTime != dynamicTime)
-  {
-    // Only the dynamic objects moved: swap them in the ray scene, keep the rest.
-    state.Dynamic = radiosity::SceneMesh();
-    if (dynamic && dynamic->GetNumberOfPolys() > 0 && !vtkRadiosityAdapter::CopyPolygons(dynamic, state.Dynamic, error))
-    {
-      error = "dynamic objects: " + error;
-      state.DynamicTime = 0;
-      return false;
-    }
-    bool swapped = false; // the objects' BVH is built on ParaView's threads
-    vtkRadiosityAdapter::SharedPool()->Within([&] {
-      swapped = state.Shader->SetDynamicObjects(state.Dynamic.NumberOfPolygons() > 0 ? &state.Dynamic : nullptr);
-    });
-    if (!swapped)
-    {
-      error = state.Shader->Error();
-      state.Shader.reset();
-      return false;
-    }
-    state.DynamicTime = dynamicTime;
-  }
-  if (!state.Shader || state.SceneTime != sceneTime || state.DynamicTime != dynamicTime)
-  {
-    state = MovingState();
-    std::vector<radiosity::Vec3> unused;
-    int lightCount = 0;
-    if (!vtkRadiosityAdapter::CopyPolygons(scene, state.Scene, error) ||
-      !vtkRadiosityAdapter::ReadSceneArrays(scene, state.Scene, unused, error) ||
-      !(error = radiosity::ValidateScene(state.Scene, lightCount)).empty())
-    {
-      return false;
-    }
-    if (dynamic && dynamic->GetNumberOfPolys() > 0 &&
-      !vtkRadiosityAdapter::CopyPolygons(dynamic, state.Dynamic, error))
-    {
-      error = "dynamic objects: " + error;
-      return false;
-    }
-    // The solver's preparation where it is kept (its patches are the basis's), else one
-    // made here the same way and kept for the EXR writer.
-    radiosity::PreparedScene prepared = vtkRadiosityPreparedScenes::Find(scene, true);
-    state.Reused = prepared.Geometry != nullptr;
-    if (!prepared.Geometry &&
-      !(error = radiosity::PrepareTransport(state.Scene, vtkRadiosityAdapter::Threads(0), {}, prepared)).empty())
-    {
-      return false;
-    }
-    vtkRadiosityPreparedScenes::Keep(scene, prepared);
-    vtkRadiosityAdapter::SharedPool()->Within([&] {
-      state.Shader.reset(new radiosity::MovingLightShader(
-        state.Scene, prepared, state.Dynamic.NumberOfPolygons() > 0 ? &state.Dynamic : nullptr));
-    });
-    if (!state.Shader->Error().empty())
-    {
-      error = state.Shader->Error();
-      state.Shader.reset();
-      return false;
-    }
-    state.SceneTime = sceneTime;
-    state.DynamicTime = dynamicTime;
-  }
-  const radiosity::SceneGeometry& g = state.Shader->Geometry();
-  const int patches = static_cast<int>(g.patchElements.size());
-  radiosity::BasisView basis;
-  if (!ReadBasis(scene, patches, basis, error))
-  {
-    return false;
-  }
-  std::vector<radiosity::MovingLight> movers(lights->GetNumberOfPoints());
+/// The moving lights of `lights` (points with Color, Intensity and optional Normal);
+/// false with `error` naming the first bad one.
+bool ReadMovingLights(vtkPolyData* lights, std::vector<radiosity::MovingLight>& movers, std::string& error)
+{
+  movers.assign(lights->GetNumberOfPoints(), radiosity::MovingLight());
   vtkDataArray* color = lights->GetPointData()->GetArray("Color");
   vtkDataArray* intensity = lights->GetPointData()->GetArray("Intensity");
   vtkDataArray* normal = lights->GetPointData()->GetArray("Normal");
@@ -279,6 +200,117 @@ bool vtkRadiosityRelight::AddMovingLights(vtkPolyData* scene, vtkPolyData* light
                                                     "an isotropic light";
       return false;
     }
+  }
+  return true;
+}
+}
+
+/// Where only the dynamic objects changed: swaps them in the shader's ray scene and keeps
+/// the rest; false with `error` where they cannot be read or built.
+bool vtkRadiosityRelight::SwapDynamicObjects(vtkPolyData* dynamic, std::string& error)
+{
+  MovingState& state = *this->Moving;
+  const vtkMTimeType dynamicTime = dynamic ? dynamic->GetMTime() : 0;
+  // Only the dynamic objects moved: swap them in the ray scene, keep the rest.
+  state.Dynamic = radiosity::SceneMesh();
+  if (dynamic && dynamic->GetNumberOfPolys() > 0 && !vtkRadiosityAdapter::CopyPolygons(dynamic, state.Dynamic, error))
+  {
+    error = "dynamic objects: " + error;
+    state.DynamicTime = 0;
+    return false;
+  }
+  bool swapped = false; // the objects' BVH is built on ParaView's threads
+  vtkRadiosityAdapter::SharedPool()->Within([&] {
+    swapped = state.Shader->SetDynamicObjects(state.Dynamic.NumberOfPolygons() > 0 ? &state.Dynamic : nullptr);
+  });
+  if (!swapped)
+  {
+    error = state.Shader->Error();
+    state.Shader.reset();
+    return false;
+  }
+  state.DynamicTime = dynamicTime;
+  return true;
+}
+
+/// Reads the scene and the dynamic objects anew and makes the shader, on the solver's
+/// preparation where it is kept; false with `error` where they cannot be read or prepared.
+bool vtkRadiosityRelight::RebuildMovingScene(vtkPolyData* scene, vtkPolyData* dynamic, std::string& error)
+{
+  MovingState& state = *this->Moving;
+  state = MovingState();
+  std::vector<radiosity::Vec3> unused;
+  int lightCount = 0;
+  if (!vtkRadiosityAdapter::CopyPolygons(scene, state.Scene, error) ||
+    !vtkRadiosityAdapter::ReadSceneArrays(scene, state.Scene, unused, error) ||
+    !(error = radiosity::ValidateScene(state.Scene, lightCount)).empty())
+  {
+    return false;
+  }
+  if (dynamic && dynamic->GetNumberOfPolys() > 0 &&
+    !vtkRadiosityAdapter::CopyPolygons(dynamic, state.Dynamic, error))
+  {
+    error = "dynamic objects: " + error;
+    return false;
+  }
+  // The solver's preparation where it is kept (its patches are the basis's), else one
+  // made here the same way and kept for the EXR writer.
+  radiosity::PreparedScene prepared = vtkRadiosityPreparedScenes::Find(scene, true);
+  state.Reused = prepared.Geometry != nullptr;
+  if (!prepared.Geometry &&
+    !(error = radiosity::PrepareTransport(state.Scene, vtkRadiosityAdapter::Threads(0), {}, prepared)).empty())
+  {
+    return false;
+  }
+  vtkRadiosityPreparedScenes::Keep(scene, prepared);
+  vtkRadiosityAdapter::SharedPool()->Within([&] {
+    state.Shader.reset(new radiosity::MovingLightShader(
+      state.Scene, prepared, state.Dynamic.NumberOfPolygons() > 0 ? &state.Dynamic : nullptr));
+  });
+  if (!state.Shader->Error().empty())
+  {
+    error = state.Shader->Error();
+    state.Shader.reset();
+    return false;
+  }
+  state.SceneTime = scene->GetMTime();
+  state.DynamicTime = dynamic ? dynamic->GetMTime() : 0;
+  return true;
+}
+
+bool vtkRadiosityRelight::AddMovingLights(vtkPolyData* scene, vtkPolyData* lights, vtkPolyData* dynamic,
+  vtkFloatArray* pointResult, vtkFloatArray* cellResult, std::string& error)
+{
+  const auto start = std::chrono::steady_clock::now();
+  if (!scene->GetCellData()->GetArray("PatchBasis") && !scene->GetFieldData()->GetArray("PatchBasis"))
+  {
+    error = "moving lights need the solver's float array 'PatchBasis' (vtkLightTaggedRadiosity::PatchBasisOn())";
+    return false;
+  }
+  if (!this->Moving)
+  {
+    this->Moving = new MovingState;
+  }
+  MovingState& state = *this->Moving;
+  const vtkMTimeType sceneTime = scene->GetMTime();
+  const vtkMTimeType dynamicTime = dynamic ? dynamic->GetMTime() : 0;
+  if (state.Shader && state.SceneTime == sceneTime && state.DynamicTime != dynamicTime &&
+    !this->SwapDynamicObjects(dynamic, error))
+  {
+    return false;
+  }
+  if ((!state.Shader || state.SceneTime != sceneTime || state.DynamicTime != dynamicTime) &&
+    !this->RebuildMovingScene(scene, dynamic, error))
+  {
+    return false;
+  }
+  const radiosity::SceneGeometry& g = state.Shader->Geometry();
+  radiosity::BasisView basis;
+  std::vector<radiosity::MovingLight> movers;
+  if (!ReadBasis(scene, static_cast<int>(g.patchElements.size()), basis, error) ||
+    !ReadMovingLights(lights, movers, error))
+  {
+    return false;
   }
   std::vector<radiosity::Vec3> direct, cells;
   this->LastMovingSceneReused = state.Reused;

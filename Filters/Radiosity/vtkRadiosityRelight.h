@@ -148,6 +148,8 @@ private:
   int Relight(vtkPolyData* input, vtkPolyData* movers, vtkPolyData* dynamic, double time, vtkPolyData* output);
   struct MovingState;
   MovingState* Moving = nullptr; ///< scene and Embree shader, rebuilt only when inputs change
+  bool SwapDynamicObjects(vtkPolyData* dynamic, std::string& error);
+  bool RebuildMovingScene(vtkPolyData* scene, vtkPolyData* dynamic, std::string& error);
   bool AddMovingLights(vtkPolyData* scene, vtkPolyData* lights, vtkPolyData* dynamic,
     vtkFloatArray* pointResult, vtkFloatArray* cellResult, std::string& error);
   long long LastMovingRays = 0;
