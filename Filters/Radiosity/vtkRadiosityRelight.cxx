@@ -656,159 +656,186 @@ int vtkRadiosityRelight::RequestData(
   });
 }
 
+namespace
+{
+const std::string kPrefix = "Radiosity_";
+
+/// The lights: the solver's LightNames, else every Radiosity_* point or cell array; "" or
+/// why the input cannot be relit.
+std::string FindLights(vtkPolyData* input, std::vector<std::string>& names)
+{
+  names = vtkRadiosityLightNames(input->GetFieldData());
+  if (!input->GetFieldData()->GetAbstractArray("LightNames"))
+  {
+    vtkFieldData* source = input->GetPointData()->GetNumberOfArrays() > 0
+      ? static_cast<vtkFieldData*>(input->GetPointData())
+      : static_cast<vtkFieldData*>(input->GetCellData());
+    for (int a = 0; a < source->GetNumberOfArrays(); ++a)
+    {
+      const char* name = source->GetArrayName(a);
+      if (name && std::string(name).compare(0, kPrefix.size(), kPrefix) == 0)
+      {
+        names.push_back(std::string(name).substr(kPrefix.size()));
+      }
+    }
+  }
+  bool perLight = false;
+  for (const std::string& name : names)
+  {
+    perLight = perLight || input->GetCellData()->GetAbstractArray((kPrefix + name).c_str()) ||
+      input->GetPointData()->GetAbstractArray((kPrefix + name).c_str());
+  }
+  if (!perLight && input->GetCellData()->GetAbstractArray("Radiosity"))
+  {
+    return "the input holds one combined solution (SolutionMode StandardCombined); relighting needs the "
+           "per-light solutions of LightTagged or StandardSeparate";
+  }
+  return names.empty() ? "the input has no lights (no field array 'LightNames' and no 'Radiosity_<name>' "
+                         "arrays); run vtkLightTaggedRadiosity first"
+                       : "";
+}
+
+/// The arrays the weights apply to: Radiosity_<name> per light and, where IndirectScale
+/// is not 1, Direct_<name> too (B = s B_total + (1 - s) B_direct over 2k arrays).
+std::string SolutionArrays(
+  vtkPolyData* input, const std::vector<std::string>& names, bool withDirect, std::vector<std::string>& arrays)
+{
+  for (const std::string& name : names)
+  {
+    arrays.push_back(kPrefix + name);
+  }
+  if (!withDirect)
+  {
+    return "";
+  }
+  const std::string direct = "Direct_" + names[0];
+  if (!input->GetPointData()->GetAbstractArray(direct.c_str()) && !input->GetCellData()->GetAbstractArray(direct.c_str()))
+  {
+    return "IndirectScale needs the arrays '" + direct + "' etc.; turn on SeparateDirect in the solver";
+  }
+  for (const std::string& name : names)
+  {
+    arrays.push_back("Direct_" + name);
+  }
+  return "";
+}
+
+/// "" when the moving lights left every value finite, else where one is not.
+std::string CheckFinite(vtkFloatArray* points, vtkFloatArray* cells)
+{
+  for (vtkFloatArray* result : { points, cells })
+  {
+    const vtkIdType bad = result ? vtkRadiosityFirstNonFinite(result) : -1;
+    if (bad >= 0)
+    {
+      return "the result is not finite at item " + std::to_string(bad) +
+        " (moving lights included); a light is too strong for float";
+    }
+  }
+  return "";
+}
+}
+
+std::string vtkRadiosityRelight::ResolveWeights(
+  vtkPolyData* input, const std::vector<std::string>& names, double time, std::vector<double>& weights)
+{
+  // Default colors: the solver's, else the mean Emission of each light's cells.
+  const int k = static_cast<int>(names.size());
+  const std::vector<double> rgb = vtkRadiosityDefaultLightColors(input, k);
+  std::vector<radiosity::Vec3> defaultColors;
+  for (int l = 0; l < k; ++l)
+  {
+    defaultColors.push_back({ rgb[3 * l], rgb[3 * l + 1], rgb[3 * l + 2] });
+  }
+  std::vector<radiosity::LightSetting> effective;
+  std::vector<std::string> warnings;
+  const std::string invalid = this->Internal->Rig.Resolve(names, defaultColors, time, effective, warnings);
+  if (!invalid.empty())
+  {
+    return invalid;
+  }
+  for (const std::string& warning : warnings)
+  {
+    vtkWarningMacro(<< warning);
+  }
+  this->Internal->Names = names;
+  this->Internal->Effective = effective;
+  weights = radiosity::LightWeights(effective, this->IndirectScale);
+  return "";
+}
+
+std::string vtkRadiosityRelight::Combine(vtkPolyData* input, vtkPolyData* movers, vtkPolyData* dynamic,
+  const std::vector<std::string>& arrays, const std::vector<double>& weights, vtkFloatArray* points,
+  vtkFloatArray* cells)
+{
+  std::string error;
+  if ((points && !vtkRadiosityCombineSolutions(input->GetPointData(), arrays, weights, input->GetNumberOfPoints(), points, error)) ||
+    (cells && !vtkRadiosityCombineSolutions(input->GetCellData(), arrays, weights, input->GetNumberOfCells(), cells, error)))
+  {
+    return error;
+  }
+  this->LastMovingRays = 0;
+  this->LastMovingSeconds = 0;
+  if (!movers || movers->GetNumberOfPoints() == 0)
+  {
+    return ""; // Combine checked the sum; moving lights may still overflow it
+  }
+  vtkNew<vtkFloatArray> unusedPoints, unusedCells; // AddMovingLights fills arrays of the right size only
+  return this->AddMovingLights(input, movers, dynamic, points ? points : unusedPoints.Get(),
+           cells ? cells : unusedCells.Get(), error)
+    ? CheckFinite(points, cells)
+    : error;
+}
+
 int vtkRadiosityRelight::Relight(
   vtkPolyData* input, vtkPolyData* movers, vtkPolyData* dynamic, double time, vtkPolyData* output)
 {
+  std::vector<std::string> names, arrays;
+  std::vector<double> weights;
+  std::string error = !std::isfinite(this->Exposure) || !std::isfinite(this->IndirectScale)
+    ? "Exposure (" + std::to_string(this->Exposure) + ") and IndirectScale (" + std::to_string(this->IndirectScale) +
+      ") must be finite"
+    : FindLights(input, names);
+  if (error.empty())
   {
-    if (!std::isfinite(this->Exposure) || !std::isfinite(this->IndirectScale))
-    {
-      vtkErrorMacro(<< "Cannot relight: Exposure (" << this->Exposure << ") and IndirectScale ("
-                    << this->IndirectScale << ") must be finite.");
-      return 0;
-    }
-
-    // Lights: the solver's LightNames, else every Radiosity_* point or cell array.
-    const std::string prefix = "Radiosity_";
-    std::vector<std::string> names = vtkRadiosityLightNames(input->GetFieldData());
-    if (!input->GetFieldData()->GetAbstractArray("LightNames"))
-    {
-      vtkFieldData* source = input->GetPointData()->GetNumberOfArrays() > 0
-        ? static_cast<vtkFieldData*>(input->GetPointData())
-        : static_cast<vtkFieldData*>(input->GetCellData());
-      for (int a = 0; a < source->GetNumberOfArrays(); ++a)
-      {
-        const char* name = source->GetArrayName(a);
-        if (name && std::string(name).compare(0, prefix.size(), prefix) == 0)
-        {
-          names.push_back(std::string(name).substr(prefix.size()));
-        }
-      }
-    }
-    bool perLight = false;
-    for (const std::string& name : names)
-    {
-      perLight = perLight || input->GetCellData()->GetAbstractArray((prefix + name).c_str()) ||
-        input->GetPointData()->GetAbstractArray((prefix + name).c_str());
-    }
-    const bool combinedOnly = !perLight && input->GetCellData()->GetAbstractArray("Radiosity");
-    if (combinedOnly)
-    {
-      vtkErrorMacro(<< "Cannot relight: the input holds one combined solution (SolutionMode "
-                       "StandardCombined); relighting needs the per-light solutions of LightTagged "
-                       "or StandardSeparate.");
-      return 0;
-    }
-    if (names.empty())
-    {
-      vtkErrorMacro(<< "Cannot relight: the input has no lights (no field array 'LightNames' and "
-                       "no 'Radiosity_<name>' arrays); run vtkLightTaggedRadiosity first.");
-      return 0;
-    }
-
-    // Default colors: the solver's, else the mean Emission of each light's cells.
-    const int k = static_cast<int>(names.size());
-    const std::vector<double> rgb = vtkRadiosityDefaultLightColors(input, k);
-    std::vector<radiosity::Vec3> defaultColors;
-    for (int l = 0; l < k; ++l)
-    {
-      defaultColors.push_back({ rgb[3 * l], rgb[3 * l + 1], rgb[3 * l + 2] });
-    }
-    std::vector<radiosity::LightSetting> effective;
-    std::vector<std::string> warnings;
-    const std::string invalid = this->Internal->Rig.Resolve(names, defaultColors, time, effective, warnings);
-    if (!invalid.empty())
-    {
-      vtkErrorMacro(<< "Cannot relight: " << invalid << ".");
-      return 0;
-    }
-    for (const std::string& warning : warnings)
-    {
-      vtkWarningMacro(<< warning);
-    }
-    this->Internal->Names = names;
-    this->Internal->Effective = effective;
-    std::vector<double> weights = radiosity::LightWeights(effective, this->IndirectScale);
-    std::vector<std::string> pointArrays, cellArrays;
-    for (const std::string& name : names)
-    {
-      pointArrays.push_back(prefix + name);
-      cellArrays.push_back(prefix + name);
-    }
-
-    // B = s B_total + (1 - s) B_direct: the same combination over 2k arrays.
-    if (this->IndirectScale != 1.0)
-    {
-      const std::string direct = "Direct_" + names[0];
-      if (!input->GetPointData()->GetAbstractArray(direct.c_str()) &&
-        !input->GetCellData()->GetAbstractArray(direct.c_str()))
-      {
-        vtkErrorMacro(<< "Cannot relight: IndirectScale needs the arrays '" << direct
-                      << "' etc.; turn on SeparateDirect in the solver.");
-        return 0;
-      }
-      for (const std::string& name : names)
-      {
-        pointArrays.push_back("Direct_" + name);
-        cellArrays.push_back("Direct_" + name);
-      }
-    }
-
-    const bool hasPoints = input->GetPointData()->GetAbstractArray(pointArrays[0].c_str()) != nullptr;
-    const bool hasCells = input->GetCellData()->GetAbstractArray(cellArrays[0].c_str()) != nullptr;
-    if (!hasPoints && !hasCells)
-    {
-      vtkErrorMacro(<< "Cannot relight: no point or cell array '" << pointArrays[0] << "'.");
-      return 0;
-    }
-    vtkNew<vtkFloatArray> pointResult, cellResult;
-    std::string error;
-    if ((hasPoints && !vtkRadiosityCombineSolutions(input->GetPointData(), pointArrays, weights,
-                        input->GetNumberOfPoints(), pointResult, error)) ||
-      (hasCells && !vtkRadiosityCombineSolutions(input->GetCellData(), cellArrays, weights, input->GetNumberOfCells(),
-                     cellResult, error)))
-    {
-      vtkErrorMacro(<< "Cannot relight: " << error << ".");
-      return 0;
-    }
-
-    this->LastMovingRays = 0;
-    this->LastMovingSeconds = 0;
-    const bool moving = movers && movers->GetNumberOfPoints() > 0;
-    if (moving && !this->AddMovingLights(input, movers, dynamic, pointResult, cellResult, error))
-    {
-      vtkErrorMacro(<< "Cannot relight: " << error << ".");
-      return 0;
-    }
-    // Combine checked the static part; moving lights may still overflow the sum.
-    for (vtkFloatArray* result : { hasPoints && moving ? pointResult.Get() : nullptr,
-           hasCells && moving ? cellResult.Get() : nullptr })
-    {
-      const vtkIdType bad = result ? vtkRadiosityFirstNonFinite(result) : -1;
-      if (bad >= 0)
-      {
-        vtkErrorMacro(<< "Cannot relight: the result is not finite at item " << bad
-                      << " (moving lights included); a light is too strong for float.");
-        return 0;
-      }
-    }
-
-    output->ShallowCopy(input);
-    if (!this->Internal->Rig.KeyframeTimes().empty())
-    {
-      output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);
-    }
-    if (hasPoints)
-    {
-      pointResult->SetName("Radiosity");
-      output->GetPointData()->AddArray(pointResult);
-      output->GetPointData()->SetScalars(Display(pointResult, this->Exposure));
-    }
-    if (hasCells)
-    {
-      cellResult->SetName("Radiosity");
-      output->GetCellData()->AddArray(cellResult);
-      output->GetCellData()->SetScalars(Display(cellResult, this->Exposure));
-    }
-    return 1;
+    error = this->ResolveWeights(input, names, time, weights);
   }
+  if (error.empty())
+  {
+    error = SolutionArrays(input, names, this->IndirectScale != 1.0, arrays);
+  }
+  const bool hasPoints = error.empty() && input->GetPointData()->GetAbstractArray(arrays[0].c_str()) != nullptr;
+  const bool hasCells = error.empty() && input->GetCellData()->GetAbstractArray(arrays[0].c_str()) != nullptr;
+  if (error.empty() && !hasPoints && !hasCells)
+  {
+    error = "no point or cell array '" + arrays[0] + "'";
+  }
+  vtkNew<vtkFloatArray> pointResult, cellResult;
+  if (error.empty())
+  {
+    error = this->Combine(input, movers, dynamic, arrays, weights, hasPoints ? pointResult.Get() : nullptr,
+      hasCells ? cellResult.Get() : nullptr);
+  }
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< "Cannot relight: " << error << ".");
+    return 0;
+  }
+  output->ShallowCopy(input);
+  if (!this->Internal->Rig.KeyframeTimes().empty())
+  {
+    output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);
+  }
+  for (auto [result, data] : { std::make_pair(hasPoints ? pointResult.Get() : nullptr,
+                                 static_cast<vtkDataSetAttributes*>(output->GetPointData())),
+         std::make_pair(hasCells ? cellResult.Get() : nullptr, static_cast<vtkDataSetAttributes*>(output->GetCellData())) })
+  {
+    if (result)
+    {
+      result->SetName("Radiosity");
+      data->AddArray(result);
+      data->SetScalars(Display(result, this->Exposure));
+    }
+  }
+  return 1;
 }

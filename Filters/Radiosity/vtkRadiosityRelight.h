@@ -43,6 +43,7 @@ class vtkStringArray;
 
 #include <memory>  // for the internals
 #include <string>  // for names
+#include <vector>  // for names and weights
 
 class VTKRADIOSITYFILTERS_EXPORT vtkRadiosityRelight : public vtkPolyDataAlgorithm
 {
@@ -148,6 +149,15 @@ private:
   int Relight(vtkPolyData* input, vtkPolyData* movers, vtkPolyData* dynamic, double time, vtkPolyData* output);
   struct MovingState;
   MovingState* Moving = nullptr; ///< scene and Embree shader, rebuilt only when inputs change
+  /// The weights of the lights `names` at `time` (settings, schedule, defaults); "" or
+  /// why they are invalid. Keeps the names and settings in effect for the Info properties.
+  std::string ResolveWeights(
+    vtkPolyData* input, const std::vector<std::string>& names, double time, std::vector<double>& weights);
+  /// The weighted sum of `arrays` into `points` and `cells` (either may be null), plus the
+  /// moving lights; "" or the problem.
+  std::string Combine(vtkPolyData* input, vtkPolyData* movers, vtkPolyData* dynamic,
+    const std::vector<std::string>& arrays, const std::vector<double>& weights, vtkFloatArray* points,
+    vtkFloatArray* cells);
   bool SwapDynamicObjects(vtkPolyData* dynamic, std::string& error);
   bool RebuildMovingScene(vtkPolyData* scene, vtkPolyData* dynamic, std::string& error);
   bool AddMovingLights(vtkPolyData* scene, vtkPolyData* lights, vtkPolyData* dynamic,
