@@ -77,25 +77,9 @@ std::string LayerName(std::string name, const std::vector<std::string>& taken)
 
 } // namespace
 
-bool vtkRadiosityEXRWriter::Render(std::vector<std::string>& names, std::vector<std::vector<float>>& images)
+std::string vtkRadiosityEXRWriter::CollectLayers(
+  vtkPolyData* input, std::vector<std::string>& names, std::vector<std::vector<radiosity::Vec3>>& layers) const
 {
-  vtkPolyData* input = vtkPolyData::SafeDownCast(this->GetInput());
-  radiosity::SceneMesh mesh;
-  std::string error;
-  if (vtkRadiosityAdapter::FailedUpstream(input))
-  {
-    vtkErrorMacro(<< "Cannot render: a filter upstream failed (see its error).");
-    return false;
-  }
-  // A mesh kept prepared (an animation's earlier frame, the solver's output) was copied and
-  // checked when it was prepared: each frame's write skips the copy.
-  radiosity::PreparedScene prepared = vtkRadiosityPreparedScenes::Find(input, false);
-  if (!prepared.Rays && !vtkRadiosityAdapter::CopyPolygons(input, mesh, error))
-  {
-    vtkErrorMacro(<< "Cannot render: " << error << ".");
-    return false;
-  }
-  std::vector<std::vector<radiosity::Vec3>> layers;
   vtkDataArray* values = this->ArrayName ? input->GetPointData()->GetArray(this->ArrayName) : nullptr;
   if (values && values->GetNumberOfComponents() == 3)
   {
@@ -104,43 +88,31 @@ bool vtkRadiosityEXRWriter::Render(std::vector<std::string>& names, std::vector<
   }
   else if (!this->LightLayers)
   {
-    vtkErrorMacro(<< "Cannot render: the input needs a 3-component point array '"
-                  << (this->ArrayName ? this->ArrayName : "")
-                  << "' (the relight filter's output has 'Radiosity'; on the solver's output set ArrayName to "
-                     "'Radiosity_<light>' or turn LightLayers on).");
-    return false;
+    return std::string("the input needs a 3-component point array '") + (this->ArrayName ? this->ArrayName : "") +
+      "' (the relight filter's output has 'Radiosity'; on the solver's output set ArrayName to "
+      "'Radiosity_<light>' or turn LightLayers on)";
+  }
+  if (!this->LightLayers)
+  {
+    return "";
   }
   int lightLayers = 0;
-  if (this->LightLayers)
+  for (const std::string& name : vtkRadiosityLightNames(input->GetFieldData()))
   {
-    for (const std::string& name : vtkRadiosityLightNames(input->GetFieldData()))
+    vtkDataArray* light = input->GetPointData()->GetArray(("Radiosity_" + name).c_str());
+    if (light && light->GetNumberOfComponents() == 3)
     {
-      vtkDataArray* light = input->GetPointData()->GetArray(("Radiosity_" + name).c_str());
-      if (light && light->GetNumberOfComponents() == 3)
-      {
-        names.push_back(LayerName(name, names));
-        layers.push_back(PointValues(light));
-        ++lightLayers;
-      }
-    }
-    if (lightLayers == 0)
-    {
-      vtkErrorMacro(<< "Cannot render light layers: the input has no Radiosity_<light> point arrays "
-                       "for its LightNames (the light-tagged solver's output has them).");
-      return false;
+      names.push_back(LayerName(name, names));
+      layers.push_back(PointValues(light));
+      ++lightLayers;
     }
   }
-  if (!prepared.Rays)
-  {
-    ++this->RaySceneBuilds;
-    if (!(error = radiosity::PrepareRays(mesh, vtkRadiosityAdapter::Threads(0), prepared)).empty())
-    {
-      vtkErrorMacro(<< "Cannot render: " << error << ".");
-      return false;
-    }
-    vtkRadiosityPreparedScenes::Keep(input, prepared);
-  }
-  const std::shared_ptr<const radiosity::Visibility> scene = prepared.Rays;
+  return lightLayers > 0 ? "" : "light layers: the input has no Radiosity_<light> point arrays for its LightNames "
+                                "(the light-tagged solver's output has them)";
+}
+
+radiosity::PinholeCamera vtkRadiosityEXRWriter::Camera() const
+{
   radiosity::PinholeCamera camera;
   camera.Position = { this->CameraPosition[0], this->CameraPosition[1], this->CameraPosition[2] };
   camera.FocalPoint = { this->FocalPoint[0], this->FocalPoint[1], this->FocalPoint[2] };
@@ -148,7 +120,40 @@ bool vtkRadiosityEXRWriter::Render(std::vector<std::string>& names, std::vector<
   camera.ViewAngle = this->ViewAngle;
   camera.Width = this->Size[0];
   camera.Height = this->Size[1];
-  if (!(error = radiosity::ValidateCamera(camera)).empty())
+  return camera;
+}
+
+bool vtkRadiosityEXRWriter::Render(std::vector<std::string>& names, std::vector<std::vector<float>>& images)
+{
+  vtkPolyData* input = vtkPolyData::SafeDownCast(this->GetInput());
+  radiosity::SceneMesh mesh;
+  std::string error = vtkRadiosityAdapter::FailedUpstream(input) ? "a filter upstream failed (see its error)" : "";
+  // A mesh kept prepared (an animation's earlier frame, the solver's output) was copied and
+  // checked when it was prepared: each frame's write skips the copy.
+  radiosity::PreparedScene prepared = error.empty() ? vtkRadiosityPreparedScenes::Find(input, false) : radiosity::PreparedScene();
+  if (error.empty() && !prepared.Rays)
+  {
+    vtkRadiosityAdapter::CopyPolygons(input, mesh, error);
+  }
+  std::vector<std::vector<radiosity::Vec3>> layers;
+  if (error.empty())
+  {
+    error = this->CollectLayers(input, names, layers);
+  }
+  if (error.empty() && !prepared.Rays)
+  {
+    ++this->RaySceneBuilds;
+    if ((error = radiosity::PrepareRays(mesh, vtkRadiosityAdapter::Threads(0), prepared)).empty())
+    {
+      vtkRadiosityPreparedScenes::Keep(input, prepared);
+    }
+  }
+  const radiosity::PinholeCamera camera = this->Camera();
+  if (error.empty())
+  {
+    error = radiosity::ValidateCamera(camera);
+  }
+  if (!error.empty())
   {
     vtkErrorMacro(<< "Cannot render: " << error << ".");
     return false;
@@ -160,7 +165,7 @@ bool vtkRadiosityEXRWriter::Render(std::vector<std::string>& names, std::vector<
   }
   const vtkRadiosityAbortWatch abort(this);
   images = radiosity::RenderLayers(
-    *scene, pointers, camera,
+    *prepared.Rays, pointers, camera,
     [this, &abort](double f) {
       this->UpdateProgress(f);
       return !abort.Stop();

@@ -25,6 +25,12 @@
 #include <vector> // for the pixel buffer
 
 class vtkFloatArray;
+class vtkPolyData;
+namespace radiosity
+{
+struct Vec3;
+struct PinholeCamera;
+}
 
 class VTKRADIOSITYFILTERS_EXPORT vtkRadiosityEXRWriter : public vtkWriter
 {
@@ -94,6 +100,11 @@ protected:
 private:
   /// The layers to write, rendered with one ray per pixel; false with an error.
   bool Render(std::vector<std::string>& names, std::vector<std::vector<float>>& images);
+  /// The point arrays to draw (ArrayName, and with LightLayers one per light) with their
+  /// layer names; "" or why there are none.
+  std::string CollectLayers(
+    vtkPolyData* input, std::vector<std::string>& names, std::vector<std::vector<radiosity::Vec3>>& layers) const;
+  radiosity::PinholeCamera Camera() const;
   vtkRadiosityEXRWriter(const vtkRadiosityEXRWriter&) = delete;
   void operator=(const vtkRadiosityEXRWriter&) = delete;
 
