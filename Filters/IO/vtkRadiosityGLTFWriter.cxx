@@ -143,6 +143,77 @@ int vtkRadiosityGLTFWriter::FillInputPortInformation(int, vtkInformation* info)
   return 1;
 }
 
+namespace
+{
+/// One vertex attribute per light (Radiosity_<name>) with its name and default color for
+/// the extras; returns those light records.
+json AddLightAttributes(vtkPolyData* input, GlbDocument& glb, json& attributes)
+{
+  const std::vector<std::string> names = vtkRadiosityLightNames(input->GetFieldData());
+  vtkDataArray* defaults = input->GetFieldData()->GetArray("LightDefaultColors");
+  json lights = json::array();
+  std::set<std::string> taken;
+  for (vtkIdType l = 0; l < static_cast<vtkIdType>(names.size()); ++l)
+  {
+    vtkDataArray* light = input->GetPointData()->GetArray(("Radiosity_" + names[l]).c_str());
+    if (!light || light->GetNumberOfComponents() != 3)
+    {
+      continue;
+    }
+    const std::string attribute = AttributeName(names[l], taken);
+    attributes[attribute] = glb.AddVec3(Floats(light, 1.0, false), false);
+    double color[3] = { 1, 1, 1 };
+    if (defaults && defaults->GetNumberOfComponents() == 3 && l < defaults->GetNumberOfTuples())
+    {
+      defaults->GetTuple(l, color);
+    }
+    lights.push_back(
+      { { "name", names[l] }, { "attribute", attribute }, { "defaultColor", { color[0], color[1], color[2] } } });
+  }
+  return lights;
+}
+
+/// The glTF document: one unlit, double-sided mesh whose extras list the lights.
+json Document(const GlbDocument& glb, const json& primitive, const json& lights, double exposure)
+{
+  return { { "asset", { { "version", "2.0" }, { "generator", "RadiosityRelight" } } },
+    { "extensionsUsed", { "KHR_materials_unlit" } }, { "scene", 0 }, { "scenes", { { { "nodes", { 0 } } } } },
+    { "nodes", { { { "mesh", 0 } } } },
+    { "meshes", { { { "primitives", { primitive } },
+                  { "extras", { { "relight", { { "lights", lights }, { "exposure", exposure } } } } } } } },
+    { "materials", { { { "name", "radiosity" }, { "doubleSided", true },
+                     { "pbrMetallicRoughness", { { "baseColorFactor", { 1, 1, 1, 1 } } } },
+                     { "extensions", { { "KHR_materials_unlit", json::object() } } } } } },
+    { "buffers", { { { "byteLength", glb.Binary.size() } } } }, { "bufferViews", glb.Views },
+    { "accessors", glb.Accessors } };
+}
+
+/// Writes `bytes` to `path` through a temporary file; "" or the problem.
+std::string WriteBytes(const char* path, const std::string& bytes)
+{
+  try
+  {
+    return radiosity::WriteAtomically(path, [&](const char* temporary, bool& created) {
+      std::ofstream out(temporary, std::ios::binary);
+      if (!out)
+      {
+        throw std::runtime_error(std::string("cannot open ") + temporary);
+      }
+      created = true;
+      out << bytes;
+      if (!out.flush())
+      {
+        throw std::runtime_error("the disk refused the data");
+      }
+    });
+  }
+  catch (const std::exception& e)
+  {
+    return e.what();
+  }
+}
+}
+
 void vtkRadiosityGLTFWriter::WriteData()
 {
   vtkPolyData* input = vtkPolyData::SafeDownCast(this->GetInput());
@@ -173,68 +244,18 @@ void vtkRadiosityGLTFWriter::WriteData()
   {
     attributes["COLOR_0"] = glb.AddVec3(Floats(relit, this->Exposure, true), false);
   }
-  const std::vector<std::string> names = vtkRadiosityLightNames(input->GetFieldData());
-  vtkDataArray* defaults = input->GetFieldData()->GetArray("LightDefaultColors");
-  json lights = json::array();
-  std::set<std::string> taken;
-  for (vtkIdType l = 0; l < static_cast<vtkIdType>(names.size()); ++l)
-  {
-    vtkDataArray* light = input->GetPointData()->GetArray(("Radiosity_" + names[l]).c_str());
-    if (!light || light->GetNumberOfComponents() != 3)
-    {
-      continue;
-    }
-    const std::string attribute = AttributeName(names[l], taken);
-    attributes[attribute] = glb.AddVec3(Floats(light, 1.0, false), false);
-    double color[3] = { 1, 1, 1 };
-    if (defaults && defaults->GetNumberOfComponents() == 3 && l < defaults->GetNumberOfTuples())
-    {
-      defaults->GetTuple(l, color);
-    }
-    lights.push_back({ { "name", names[l] }, { "attribute", attribute },
-      { "defaultColor", { color[0], color[1], color[2] } } });
-  }
+  const json lights = AddLightAttributes(input, glb, attributes);
   const json primitive = { { "attributes", attributes }, { "indices", glb.AddIndices(Triangles(mesh)) },
     { "material", 0 }, { "mode", 4 } };
-  const json document = { { "asset", { { "version", "2.0" }, { "generator", "RadiosityRelight" } } },
-    { "extensionsUsed", { "KHR_materials_unlit" } }, { "scene", 0 }, { "scenes", { { { "nodes", { 0 } } } } },
-    { "nodes", { { { "mesh", 0 } } } },
-    { "meshes", { { { "primitives", { primitive } },
-                  { "extras", { { "relight", { { "lights", lights }, { "exposure", this->Exposure } } } } } } } },
-    { "materials", { { { "name", "radiosity" }, { "doubleSided", true },
-                     { "pbrMetallicRoughness", { { "baseColorFactor", { 1, 1, 1, 1 } } } },
-                     { "extensions", { { "KHR_materials_unlit", json::object() } } } } } },
-    { "buffers", { { { "byteLength", glb.Binary.size() } } } }, { "bufferViews", glb.Views },
-    { "accessors", glb.Accessors } };
   std::string bytes;
-  if (!SceneFiles::GlbBytes(document.dump(), glb.Binary, bytes))
+  if (!SceneFiles::GlbBytes(Document(glb, primitive, lights, this->Exposure).dump(), glb.Binary, bytes))
   {
     vtkErrorMacro(<< "Cannot write " << this->FileName << ": " << glb.Binary.size() / 1073741824.0
                   << " GiB of data is more than a .glb holds (4 GiB); write fewer lights or a coarser mesh.");
     this->SetErrorCode(vtkErrorCode::UserError);
     return;
   }
-  try
-  {
-    error = radiosity::WriteAtomically(this->FileName, [&](const char* temporary, bool& created) {
-      std::ofstream out(temporary, std::ios::binary);
-      if (!out)
-      {
-        throw std::runtime_error(std::string("cannot open ") + temporary);
-      }
-      created = true;
-      out << bytes;
-      if (!out.flush())
-      {
-        throw std::runtime_error("the disk refused the data");
-      }
-    });
-  }
-  catch (const std::exception& e)
-  {
-    error = e.what();
-  }
-  if (!error.empty())
+  if (!(error = WriteBytes(this->FileName, bytes)).empty())
   {
     vtkErrorMacro(<< "Cannot write " << this->FileName << ": " << error << ".");
     this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
