@@ -79,18 +79,8 @@ void pqRadiosityLightsWidget::setRows(const QList<QVariant>& values)
   }
 }
 
-void pqRadiosityLightsWidget::rebuild()
+QVector<pqRadiosityLightsWidget::Light> pqRadiosityLightsWidget::readLights(vtkSMProperty* info) const
 {
-  vtkSMProxy* proxy = this->proxy();
-  proxy->UpdatePropertyInformation();
-  // Values in effect (defaults included; the property's information property, on the
-  // relight filter and on the Relit Surface representation alike), then the user's own
-  // rows of the property, both as (name, r, g, b, intensity, enabled).
-  vtkSMProperty* info = this->Property->GetInformationProperty();
-  if (!info)
-  {
-    return;
-  }
   vtkSMPropertyHelper effective(info);
   const QStringList& values = this->Rows;
   QVector<Light> lights;
@@ -132,27 +122,97 @@ void pqRadiosityLightsWidget::rebuild()
     }
     lights.push_back(light);
   }
+  return lights;
+}
+
+void pqRadiosityLightsWidget::refreshInPlace(const QVector<Light>& lights)
+{
+  // Same lights: refresh the values in place (they may have been set from Python or
+  // reset), without recreating the widgets someone may be typing in.
+  this->Lights = lights;
+  for (int row = 0; row < lights.size(); ++row)
+  {
+    if (auto* intensity = qobject_cast<QDoubleSpinBox*>(this->Table->cellWidget(row, 2)))
+    {
+      const QSignalBlocker block(intensity);
+      intensity->setValue(lights[row].Intensity);
+    }
+    if (auto* enabled = qobject_cast<QCheckBox*>(this->Table->cellWidget(row, 3)))
+    {
+      const QSignalBlocker block(enabled);
+      enabled->setChecked(lights[row].Enabled);
+    }
+    this->paintColorButton(row);
+  }
+}
+
+void pqRadiosityLightsWidget::addRow(int row)
+{
+  const QVector<Light>& lights = this->Lights;
+  auto* name = new QTableWidgetItem(lights[row].Name);
+  name->setFlags(Qt::ItemIsEnabled);
+  this->Table->setItem(row, 0, name);
+
+  auto* color = new QPushButton(this->Table);
+  color->setMaximumWidth(48);
+  this->Table->setCellWidget(row, 1, color);
+  QObject::connect(color, &QPushButton::clicked, this, [this, row]() {
+    Light& light = this->Lights[row];
+    const QColor chosen = QColorDialog::getColor(
+      QColor::fromRgbF(std::min(1.0, light.Color[0]), std::min(1.0, light.Color[1]), std::min(1.0, light.Color[2])),
+      this, "Color of " + light.Name);
+    if (chosen.isValid())
+    {
+      light.Color[0] = chosen.redF();
+      light.Color[1] = chosen.greenF();
+      light.Color[2] = chosen.blueF();
+      light.Edited = light.ColorEdited = true;
+      this->paintColorButton(row);
+      this->push();
+    }
+  });
+  this->paintColorButton(row);
+
+  auto* intensity = new QDoubleSpinBox(this->Table);
+  intensity->setMaximumWidth(90);
+  intensity->setRange(0.0, 1e9);
+  intensity->setDecimals(3);
+  intensity->setValue(lights[row].Intensity);
+  this->Table->setCellWidget(row, 2, intensity);
+  QObject::connect(intensity, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this, row](double v) {
+    this->Lights[row].Intensity = v;
+    this->Lights[row].Edited = true;
+    this->push();
+  });
+
+  auto* enabled = new QCheckBox(this->Table);
+  enabled->setChecked(lights[row].Enabled);
+  this->Table->setCellWidget(row, 3, enabled);
+  QObject::connect(enabled, &QCheckBox::toggled, this, [this, row](bool on) {
+    this->Lights[row].Enabled = on;
+    this->Lights[row].Edited = true;
+    this->push();
+  });
+}
+
+void pqRadiosityLightsWidget::rebuild()
+{
+  vtkSMProxy* proxy = this->proxy();
+  proxy->UpdatePropertyInformation();
+  // Values in effect (defaults included; the property's information property, on the
+  // relight filter and on the Relit Surface representation alike), then the user's own
+  // rows of the property, both as (name, r, g, b, intensity, enabled).
+  vtkSMProperty* info = this->Property->GetInformationProperty();
+  if (!info)
+  {
+    return;
+  }
+  const QVector<Light> lights = this->readLights(info);
   if (lights.size() == this->Lights.size() &&
     std::equal(lights.begin(), lights.end(), this->Lights.begin(),
       [](const Light& a, const Light& b) { return a.Name == b.Name; }))
   {
-    // Same lights: refresh the values in place (they may have been set from Python or
-    // reset), without recreating the widgets someone may be typing in.
-    this->Lights = lights;
-    for (int row = 0; row < lights.size(); ++row)
-    {
-      if (auto* intensity = qobject_cast<QDoubleSpinBox*>(this->Table->cellWidget(row, 2)))
-      {
-        const QSignalBlocker block(intensity);
-        intensity->setValue(lights[row].Intensity);
-      }
-      if (auto* enabled = qobject_cast<QCheckBox*>(this->Table->cellWidget(row, 3)))
-      {
-        const QSignalBlocker block(enabled);
-        enabled->setChecked(lights[row].Enabled);
-      }
-      this->paintColorButton(row);
-    }
+    this->refreshInPlace(lights);
     return;
   }
   this->Lights = lights;
@@ -160,50 +220,7 @@ void pqRadiosityLightsWidget::rebuild()
   this->Table->setRowCount(lights.size());
   for (int row = 0; row < lights.size(); ++row)
   {
-    auto* name = new QTableWidgetItem(lights[row].Name);
-    name->setFlags(Qt::ItemIsEnabled);
-    this->Table->setItem(row, 0, name);
-
-    auto* color = new QPushButton(this->Table);
-    color->setMaximumWidth(48);
-    this->Table->setCellWidget(row, 1, color);
-    QObject::connect(color, &QPushButton::clicked, this, [this, row]() {
-      Light& light = this->Lights[row];
-      const QColor chosen = QColorDialog::getColor(
-        QColor::fromRgbF(std::min(1.0, light.Color[0]), std::min(1.0, light.Color[1]), std::min(1.0, light.Color[2])),
-        this, "Color of " + light.Name);
-      if (chosen.isValid())
-      {
-        light.Color[0] = chosen.redF();
-        light.Color[1] = chosen.greenF();
-        light.Color[2] = chosen.blueF();
-        light.Edited = light.ColorEdited = true;
-        this->paintColorButton(row);
-        this->push();
-      }
-    });
-    this->paintColorButton(row);
-
-    auto* intensity = new QDoubleSpinBox(this->Table);
-    intensity->setMaximumWidth(90);
-    intensity->setRange(0.0, 1e9);
-    intensity->setDecimals(3);
-    intensity->setValue(lights[row].Intensity);
-    this->Table->setCellWidget(row, 2, intensity);
-    QObject::connect(intensity, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this, row](double v) {
-      this->Lights[row].Intensity = v;
-      this->Lights[row].Edited = true;
-      this->push();
-    });
-
-    auto* enabled = new QCheckBox(this->Table);
-    enabled->setChecked(lights[row].Enabled);
-    this->Table->setCellWidget(row, 3, enabled);
-    QObject::connect(enabled, &QCheckBox::toggled, this, [this, row](bool on) {
-      this->Lights[row].Enabled = on;
-      this->Lights[row].Edited = true;
-      this->push();
-    });
+    this->addRow(row);
   }
   this->fitHeight();
   this->Updating = false;

@@ -50,6 +50,12 @@ private:
   /// The table as tall as its rows (up to a limit), so the panel, not the table, scrolls.
   void fitHeight();
   void paintColorButton(int row);
+  /// The lights in effect (the information property), with the user's own rows on top.
+  QVector<Light> readLights(vtkSMProperty* info) const;
+  /// Same lights as shown: new values into the widgets, which someone may be typing in.
+  void refreshInPlace(const QVector<Light>& lights);
+  /// The name, color button, intensity box and on/off box of Lights[row].
+  void addRow(int row);
 
   vtkSMProperty* Property;
   QStringList Rows; ///< the property's elements as the links last gave or took them
