@@ -43,9 +43,11 @@ std::string ReflectanceProblem(const Vec3& r, long long cell)
   return "";
 }
 
-std::string ValidateScene(const SceneMesh& mesh, int& numberOfLights)
+namespace
 {
-  std::ostringstream err;
+/// The array sizes and the points; "" or the first problem.
+std::string ArraysProblem(const SceneMesh& mesh)
+{
   const int n = mesh.NumberOfPolygons();
   if (n <= 0)
   {
@@ -63,57 +65,60 @@ std::string ValidateScene(const SceneMesh& mesh, int& numberOfLights)
   {
     if (!Finite(mesh.points[p]))
     {
-      err << "point " << p << " has a non-finite coordinate";
-      return err.str();
+      return "point " + std::to_string(p) + " has a non-finite coordinate";
     }
   }
-  int maxLight = -1;
-  for (int i = 0; i < n; ++i)
+  return "";
+}
+
+/// Cell i's shape, reflectance and LightId; "" or the problem.
+std::string CellProblem(const SceneMesh& mesh, int i)
+{
+  const int n = mesh.NumberOfPolygons();
+  const int size = mesh.PolygonSize(i);
+  std::ostringstream err;
+  if (size < 3)
   {
-    const int size = mesh.PolygonSize(i);
-    if (size < 3)
-    {
-      err << "cell " << i << " has " << size << " points; polygons need at least 3";
-      return err.str();
-    }
-    for (int v = 0; v < size; ++v)
-    {
-      const int id = mesh.Polygon(i)[v];
-      if (id < 0 || id >= static_cast<int>(mesh.points.size()))
-      {
-        err << "cell " << i << " refers to missing point " << id;
-        return err.str();
-      }
-    }
-    const std::vector<Vec3> loop = Loop(mesh, i);
-    const std::string problem = PolygonProblem(loop.data(), size);
-    if (!problem.empty())
-    {
-      err << "cell " << i << " " << problem;
-      return err.str();
-    }
-    const std::string reflectance = ReflectanceProblem(mesh.reflectance[i], i);
-    if (!reflectance.empty())
-    {
-      return reflectance;
-    }
-    if (mesh.lightId[i] >= n)
-    {
-      err << "LightId of cell " << i << " is " << mesh.lightId[i] << "; there are only " << n
-          << " cells, so ids must be -1 or 0..k-1 with k <= " << n;
-      return err.str();
-    }
-    if (mesh.lightId[i] < -1)
-    {
-      err << "LightId of cell " << i << " is " << mesh.lightId[i] << "; use -1 or 0..k-1";
-      return err.str();
-    }
-    maxLight = std::max(maxLight, mesh.lightId[i]);
+    err << "cell " << i << " has " << size << " points; polygons need at least 3";
+    return err.str();
   }
-  if (maxLight < 0)
+  for (int v = 0; v < size; ++v)
   {
-    return "no cell has a LightId >= 0: the scene has no lights (k = 0)";
+    const int id = mesh.Polygon(i)[v];
+    if (id < 0 || id >= static_cast<int>(mesh.points.size()))
+    {
+      err << "cell " << i << " refers to missing point " << id;
+      return err.str();
+    }
   }
+  const std::vector<Vec3> loop = Loop(mesh, i);
+  const std::string problem = PolygonProblem(loop.data(), size);
+  if (!problem.empty())
+  {
+    return "cell " + std::to_string(i) + " " + problem;
+  }
+  const std::string reflectance = ReflectanceProblem(mesh.reflectance[i], i);
+  if (!reflectance.empty())
+  {
+    return reflectance;
+  }
+  if (mesh.lightId[i] >= n)
+  {
+    err << "LightId of cell " << i << " is " << mesh.lightId[i] << "; there are only " << n
+        << " cells, so ids must be -1 or 0..k-1 with k <= " << n;
+    return err.str();
+  }
+  if (mesh.lightId[i] < -1)
+  {
+    err << "LightId of cell " << i << " is " << mesh.lightId[i] << "; use -1 or 0..k-1";
+    return err.str();
+  }
+  return "";
+}
+
+/// The light ids 0..maxLight all used; "" or the first gap.
+std::string LightGap(const SceneMesh& mesh, int maxLight)
+{
   std::vector<char> seen(maxLight + 1, 0);
   for (int id : mesh.lightId)
   {
@@ -126,10 +131,34 @@ std::string ValidateScene(const SceneMesh& mesh, int& numberOfLights)
   {
     if (!seen[l])
     {
-      err << "LightId has a gap: no cell has id " << l << " but ids go up to " << maxLight
-          << "; ids must be 0..k-1";
-      return err.str();
+      return "LightId has a gap: no cell has id " + std::to_string(l) + " but ids go up to " +
+        std::to_string(maxLight) + "; ids must be 0..k-1";
     }
+  }
+  return "";
+}
+}
+
+std::string ValidateScene(const SceneMesh& mesh, int& numberOfLights)
+{
+  std::string problem = ArraysProblem(mesh);
+  int maxLight = -1;
+  for (int i = 0; i < mesh.NumberOfPolygons() && problem.empty(); ++i)
+  {
+    problem = CellProblem(mesh, i);
+    maxLight = std::max(maxLight, mesh.lightId[i]);
+  }
+  if (!problem.empty())
+  {
+    return problem;
+  }
+  if (maxLight < 0)
+  {
+    return "no cell has a LightId >= 0: the scene has no lights (k = 0)";
+  }
+  if (!(problem = LightGap(mesh, maxLight)).empty())
+  {
+    return problem;
   }
   numberOfLights = maxLight + 1;
   return std::string();
