@@ -5,17 +5,12 @@
 #include "vtkRadiosityPreparedScenes.h"
 #include "vtkRadiositySolveOutput.h"
 
-#include "Solve/Effects.h"
 #include "Solve/LightChecks.h"
-#include "Geometry/PointAverages.h"
 #include "Solve/LightSolutions.h"
-#include "Base/Memory.h"
 #include "Solve/PatchBasis.h"
 #include "Solve/SolverMethods.h"
 
 #include "vtkCellData.h"
-#include "vtkDataArray.h"
-#include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
@@ -25,16 +20,11 @@
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
-#include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkSmartPointer.h"
-#include "vtkStringArray.h"
 #include "vtkTable.h"
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
-#include <sstream>
 
 vtkStandardNewMacro(vtkLightTaggedRadiosity);
 
