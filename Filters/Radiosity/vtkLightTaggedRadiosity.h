@@ -90,7 +90,8 @@ public:
   {
     SOLVER_AUTO = 0,
     PROGRESSIVE_REFINEMENT = 1,
-    HIERARCHICAL = 2
+    HIERARCHICAL = 2,
+    CLUSTERED = 3
   };
 
   ///@{
@@ -102,13 +103,18 @@ public:
   /// rays. Cost grows about linearly with elements. FormFactorMethod and
   /// FormFactorSamples' meaning for Hemicube/MonteCarlo apply to ProgressiveRefinement
   /// only; Hierarchical uses analytic factors with FormFactorSamples shadow rays.
+  /// Clustered: hierarchical radiosity with clustering: links between groups of elements
+  /// of any size, found once for the scene and gathered along for every light; direct
+  /// light per element with its own shadow rays. Its cost follows the surfaces, not the
+  /// polygons: for models of many small polygons (CAD, scans, BIM).
   /// Auto (default): Hierarchical from 5,000 element-patch pairs (elements x patches, with
   /// Analytic factors), otherwise ProgressiveRefinement; SolverMethod says why.
-  vtkSetClampMacro(SolverMethod, int, SOLVER_AUTO, HIERARCHICAL);
+  vtkSetClampMacro(SolverMethod, int, SOLVER_AUTO, CLUSTERED);
   vtkGetMacro(SolverMethod, int);
   void SetSolverMethodToAuto() { this->SetSolverMethod(SOLVER_AUTO); }
   void SetSolverMethodToProgressiveRefinement() { this->SetSolverMethod(PROGRESSIVE_REFINEMENT); }
   void SetSolverMethodToHierarchical() { this->SetSolverMethod(HIERARCHICAL); }
+  void SetSolverMethodToClustered() { this->SetSolverMethod(CLUSTERED); }
   /// The values SolverMethod takes (Auto and every method of the core's table,
   /// Solve/SolverMethods.cxx) and their names, which the XML's enumeration repeats.
   static int GetNumberOfSolverMethods();

@@ -21,7 +21,7 @@ namespace
 {
 const char* MethodName(SolverMethod m)
 {
-  return m == SolverMethod::Hierarchical ? "hierarchical" : "progressive";
+  return m == SolverMethod::Hierarchical ? "hierarchical" : m == SolverMethod::Clustered ? "clustered" : "progressive";
 }
 } // namespace
 
@@ -53,6 +53,7 @@ int main(int argc, char** argv)
     else if (flag == "--reference") referencePath = value;
     else if (flag == "--method")
       method = std::strcmp(value, "hierarchical") == 0 ? SolverMethod::Hierarchical
+        : std::strcmp(value, "clustered") == 0        ? SolverMethod::Clustered
         : std::strcmp(value, "progressive") == 0      ? SolverMethod::ProgressiveRefinement
                                                       : SolverMethod::Auto;
   }
@@ -95,11 +96,11 @@ int main(int argc, char** argv)
   {
     probeError = MeanError(Sample(solver, mesh, s, probes), ReadReference(referencePath, probes.Origin.size(), lamps), lamps, &worst);
   }
-  std::printf("triangles,elements,patches,lights,cluster_angle,method,shots,converged,rays,patch_links,element_links,link_mb,mesh_s,prepare_s,solve_s,total_s,peak_mb,error_pct,worst_light_pct\n");
-  std::printf("%d,%d,%zu,%d,%g,%s,%d,%d,%lld,%lld,%lld,%.1f,%.2f,%.2f,%.2f,%.2f,%.0f,%.2f,%.2f\n", inputTriangles, mesh.NumberOfPolygons(),
+  std::printf("triangles,elements,patches,lights,cluster_angle,method,shots,converged,rays,patch_links,element_links,link_mb,mesh_s,prepare_s,solve_s,total_s,peak_mb,error_pct,worst_light_pct,cluster_links\n");
+  std::printf("%d,%d,%zu,%d,%g,%s,%d,%d,%lld,%lld,%lld,%.1f,%.2f,%.2f,%.2f,%.2f,%.0f,%.2f,%.2f,%lld\n", inputTriangles, mesh.NumberOfPolygons(),
     solver.Geometry().patchElements.size(), lamps, cone, MethodName(st.Method), st.Shots, st.Converged ? 1 : 0,
     st.RayCount, st.PatchLinks, st.ElementLinks, st.LinkBytes / 1e6, t1 - t0, t2 - t1, t3 - t2, t3 - t0, PeakMemoryMB(),
-    100 * probeError, 100 * worst);
+    100 * probeError, 100 * worst, st.VolumeLinks);
   if (compare)
   {
     options.Solver = SolverMethod::ProgressiveRefinement;

@@ -99,7 +99,7 @@ def add_lamps(house, lamps, half=0.15):
     return marker.GetOutput()
 
 
-def solve(scene, patch, element, cluster_angle=30.0, time_budget=0.0):
+def solve(scene, patch, element, cluster_angle=30.0, time_budget=0.0, method="Auto"):
     """Mesh + solve at the solver's default settings (Auto picks Hierarchical at this size);
     keeps warnings and errors."""
     mesher = relight.vtkRadiosityMesher()
@@ -108,6 +108,7 @@ def solve(scene, patch, element, cluster_angle=30.0, time_budget=0.0):
     solver = relight.vtkLightTaggedRadiosity()
     solver.SetInputConnection(mesher.GetOutputPort())
     solver.SetTimeBudget(time_budget)
+    getattr(solver, f"SetSolverMethodTo{method}")()
     catchers = [relight.ErrorCatcher(mesher), relight.ErrorCatcher(solver)]
     solver.Update()
     if any(c.errors for c in catchers):
@@ -148,6 +149,7 @@ def main():
     parser.add_argument("--out", default="out/bench")
     parser.add_argument("--cluster-angle", type=float, default=30.0, help="the mesher's ClusterAngle (0: no face clusters)")
     parser.add_argument("--time-budget", type=float, default=0.0, help="the solver's TimeBudget, s (0: solve to convergence)")
+    parser.add_argument("--method", default="Auto", help="SolverMethod: Auto, ProgressiveRefinement, Hierarchical, Clustered")
     args = parser.parse_args()
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
@@ -160,13 +162,13 @@ def main():
     print("\n".join(f"Lamp{i}: {np.round(p, 2)} (floor at {f} m)" for i, (f, p) in enumerate(lamps)))
     k = len(lamps)
     scene = add_lamps(house, lamps)
-    solver, warnings = solve(scene, args.patch, args.element, args.cluster_angle, args.time_budget)
+    solver, warnings = solve(scene, args.patch, args.element, args.cluster_angle, args.time_budget, args.method)
     result = solver.GetOutput()
     method = result.GetFieldData().GetAbstractArray("SolverMethod").GetValue(0)
     commit = subprocess.run(["git", "describe", "--always", "--dirty"], capture_output=True, text=True).stdout.strip()
     row = dict(commit=commit or "?", polygons=scene.GetNumberOfCells(), elements=result.GetNumberOfCells(),
                patches=len(np.unique(relight.cell_array(result, "PatchId"))), lights=k,
-               element=args.element, patch=args.patch, solve_s=round(solver.GetLastSolveSeconds(), 2),
+               element=args.element, patch=args.patch, method=args.method, solve_s=round(solver.GetLastSolveSeconds(), 2),
                shots=solver.GetLastShots(), converged=bool(solver.GetLastConverged()),
                peak_mib=round(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024),
                warnings=len(warnings))

@@ -5,6 +5,10 @@
 #include "Solve/RadiositySolver.h"
 #include "Geometry/Scene.h"
 
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
 namespace radiosity_test
 {
 using radiosity::SceneMesh;
@@ -40,6 +44,48 @@ inline double AbsorbedPower(const SceneMesh& mesh, const radiosity::Solution& s)
     }
   }
   return absorbed;
+}
+
+/// Per light, sum |a - b| A / sum b A over the elements: the mean relative difference.
+inline std::vector<double> RelativeDifference(const SceneMesh& mesh, const radiosity::Solution& a, const radiosity::Solution& b)
+{
+  const radiosity::SceneGeometry g(mesh);
+  const int L = a.Solutions;
+  std::vector<double> diff(L, 0.0), sum(L, 0.0);
+  for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
+  {
+    for (int m = 0; m < L; ++m)
+    {
+      const Vec3& x = a.Radiosity[static_cast<size_t>(e) * L + m];
+      const Vec3& y = b.Radiosity[static_cast<size_t>(e) * L + m];
+      diff[m] += (std::fabs(x.x - y.x) + std::fabs(x.y - y.y) + std::fabs(x.z - y.z)) * g.area[e];
+      sum[m] += (y.x + y.y + y.z) * g.area[e];
+    }
+  }
+  for (int m = 0; m < L; ++m)
+  {
+    diff[m] /= sum[m];
+  }
+  return diff;
+}
+
+/// The largest difference between the sum of the k light-tagged solutions and the one
+/// combined solution, over the elements (red channel), relative to the combined peak.
+inline double TaggedMinusCombined(const radiosity::Solution& tagged, const radiosity::Solution& combined)
+{
+  const int L = tagged.Solutions;
+  double peak = 0, worst = 0;
+  for (size_t e = 0; e < combined.Radiosity.size(); ++e)
+  {
+    double sum = 0;
+    for (int m = 0; m < L; ++m)
+    {
+      sum += tagged.Radiosity[e * L + m].x;
+    }
+    peak = std::max(peak, combined.Radiosity[e].x);
+    worst = std::max(worst, std::fabs(sum - combined.Radiosity[e].x));
+  }
+  return peak > 0 ? worst / peak : worst;
 }
 
 /// Adds the quad origin + [0,1]u + [0,1]v as an n x n grid of elements (normal u x v)

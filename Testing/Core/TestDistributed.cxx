@@ -177,6 +177,12 @@ TEST(Distributed, HierarchicalOnThreeRanksGivesTheSerialAnswerWithDirectAndAmbie
   ExpectSerialAnswer(SolverMethod::Hierarchical, 3, true);
 }
 
+TEST(Distributed, ClusteredOnThreeRanksGivesTheSerialAnswerWithDirectAndAmbient)
+{
+  // Each rank links its share of the node pairs; the bounce's node sums meet in one sum.
+  ExpectSerialAnswer(SolverMethod::Clustered, 3, true);
+}
+
 TEST(Distributed, FaceClustersOnTwoRanksGiveTheSerialAnswer)
 {
   // Cluster receivers linked node by node, element links shared element by element.

@@ -1,4 +1,5 @@
 #include "Solve/PatchTree.h"
+#include "Solve/MedianSplit.h"
 
 #include <algorithm>
 #include <cmath>
@@ -64,17 +65,7 @@ int PatchTree::Build(int first, int count, int leafPatches)
   }
   const int half = count / 2;
   const std::vector<long long> key = SplitKeys(first, count);
-  std::vector<int> rank(count);
-  std::iota(rank.begin(), rank.end(), 0);
-  std::nth_element(rank.begin(), rank.begin() + half, rank.end(), [&](int a, int b) {
-    return key[a] < key[b] || (key[a] == key[b] && Order[first + a] < Order[first + b]);
-  });
-  std::vector<int> sorted(count);
-  for (int i = 0; i < count; ++i)
-  {
-    sorted[i] = Order[first + rank[i]];
-  }
-  std::copy(sorted.begin(), sorted.end(), Order.begin() + first);
+  SplitAtMedian(Order, first, count, key);
   const int left = Build(first, half, leafPatches);
   const int right = Build(first + half, count - half, leafPatches);
   All[index].Left = left;

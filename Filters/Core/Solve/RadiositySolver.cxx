@@ -19,6 +19,14 @@ namespace
 /// this many element-patch pairs a solve takes milliseconds either way, and progressive
 /// refinement's exact per-element shots are kept.
 constexpr double kHierarchicalPairs = 5000;
+/// Where the polygons themselves are the patches (many patches of a few elements: a BIM
+/// model's window frames, sills and strips), every shooter links to thousands of them and
+/// the clustered method's links between groups win: measured on the FZK-Haus, 172.9 s
+/// against 535.6 s at 53,695 patches of 2.9 elements, 77.4 s against 192.1 s at 35,118 of 2.1; on a
+/// curved model of 1,637 face clusters (57 elements each) the hierarchical method was
+/// 2.1 x faster.
+constexpr int kClusteredPatches = 20000;
+constexpr double kClusteredElementsPerPatch = 8;
 
 /// Auto's choice, and why, in `reason`; the hemicube and Monte Carlo estimators exist only
 /// in progressive refinement.
@@ -35,6 +43,13 @@ SolverMethod ResolveMethod(const SolverOptions& options, int elements, int patch
   {
     reason = "chosen by Auto: the hemicube and Monte Carlo estimators are progressive only";
     return SolverMethod::ProgressiveRefinement;
+  }
+  if (patches >= kClusteredPatches && elements < kClusteredElementsPerPatch * patches)
+  {
+    std::snprintf(text, sizeof(text), "chosen by Auto: %d patches of %.1f elements (>= %d, < %.0f): polygons are the patches",
+      patches, static_cast<double>(elements) / patches, kClusteredPatches, kClusteredElementsPerPatch);
+    reason = text;
+    return SolverMethod::Clustered;
   }
   const bool linked = pairs >= kHierarchicalPairs;
   std::snprintf(text, sizeof(text), "chosen by Auto: %d elements x %d patches = %.3g, %s %.0f", elements, patches,

@@ -40,7 +40,11 @@ enum class SolverMethod
   /// Two-level links (Hanrahan et al. 1991, in shooting order): a shooter links to a far,
   /// weakly lit receiver patch as a whole and to near or partly hidden ones element by
   /// element. Links are made at a patch's first shot and reused by its later shots.
-  Hierarchical = 2
+  Hierarchical = 2,
+  /// Hierarchical radiosity with clustering (Smits et al. 1994), gathering: links between
+  /// groups of elements of any size, found once for the scene; direct light per element
+  /// as in progressive refinement. Its cost follows the surfaces, not polygons x shooters.
+  Clustered = 3
 };
 
 struct SolverOptions

@@ -73,6 +73,9 @@ public:
   /// point rule's excess near the shooter and its deficit at corners cancel out of the
   /// total, so a closed room neither creates nor loses energy, even at rho = 0.999.
   double ConservationScale(int patch, double receiving);
+  /// True where every probe ray from the (planar) patch lands on a receiver's front: the
+  /// patch sees a closed scene, so the factors from each of its elements sum to one.
+  bool ViewIsClosed(int patch) { return SeesClosedScene(patch); }
   /// Restricts the analytic method to the elements of these patches (1 = receives), the
   /// share of one process when several solve together; the others get factor 0. Null
   /// (the default): every element. The sampling methods' cost is the shooter's, so they

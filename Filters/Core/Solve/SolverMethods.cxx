@@ -1,4 +1,5 @@
 #include "Solve/SolverMethods.h"
+#include "Solve/ClusteredRadiosity.h"
 #include "Solve/HierarchicalRadiosity.h"
 #include "Solve/ProgressiveRadiosity.h"
 
@@ -22,6 +23,14 @@ std::string DescribeHierarchical(const SolverStatistics& stats)
     stats.ElementLinks, stats.VolumeLinks, stats.LinkBytes / 1048576.0);
   return text;
 }
+
+std::string DescribeClustered(const SolverStatistics& stats)
+{
+  char text[256];
+  std::snprintf(text, sizeof(text), "Clustered: %lld cluster links, %lld element links, %.1f MB of links",
+    stats.VolumeLinks, stats.ElementLinks, stats.LinkBytes / 1048576.0);
+  return text;
+}
 } // namespace
 
 const std::vector<MethodEntry>& SolverMethodTable()
@@ -29,6 +38,7 @@ const std::vector<MethodEntry>& SolverMethodTable()
   static const std::vector<MethodEntry> table = {
     { SolverMethod::ProgressiveRefinement, "ProgressiveRefinement", SolveProgressive, DescribeProgressive },
     { SolverMethod::Hierarchical, "Hierarchical", SolveHierarchical, DescribeHierarchical },
+    { SolverMethod::Clustered, "Clustered", SolveClustered, DescribeClustered },
   };
   return table;
 }

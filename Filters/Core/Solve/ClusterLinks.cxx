@@ -1,0 +1,466 @@
+#include "Solve/ClusterLinks.h"
+#include "Geometry/FormFactor.h"
+#include "Base/SampleStream.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace radiosity
+{
+
+struct ClusterLinkBuilder::Found
+{
+  std::vector<int> Receiver, Source, LeafReceiver, LeafSource;
+  std::vector<float> Coupling, Direction, LeafFactor;
+  std::vector<unsigned char> Mixed;
+  long long Rays = 0;
+};
+
+namespace
+{
+/// A pair of nodes farther apart than this many of the sum of their radii that none of
+/// kHiddenRays rays between points facing each other connects is passed over whole (the
+/// rooms behind a wall) instead of being split down to where its links would be made.
+constexpr double kHiddenRadii = 2.0;
+constexpr int kHiddenRays = 16;
+
+/// Stable counting sort of the links by receiver: the order the gathering runs in, each
+/// receiver's links in one thread.
+std::vector<int> ByReceiver(const std::vector<int>& receiver, int receivers)
+{
+  std::vector<int> start(receivers + 1, 0);
+  for (int r : receiver)
+  {
+    ++start[r + 1];
+  }
+  for (int i = 0; i < receivers; ++i)
+  {
+    start[i + 1] += start[i];
+  }
+  std::vector<int> order(receiver.size());
+  for (int i = 0; i < static_cast<int>(receiver.size()); ++i)
+  {
+    order[start[receiver[i]]++] = i;
+  }
+  return order;
+}
+
+template <typename T>
+std::vector<T> Permuted(const std::vector<T>& values, const std::vector<int>& order, int width = 1)
+{
+  std::vector<T> out(values.size());
+  for (size_t i = 0; i < order.size(); ++i)
+  {
+    for (int k = 0; k < width; ++k)
+    {
+      out[width * i + k] = values[width * static_cast<size_t>(order[i]) + k];
+    }
+  }
+  return out;
+}
+} // namespace
+
+ClusterLinkBuilder::ClusterLinkBuilder(const SceneMesh& mesh, const SceneGeometry& g, const ElementTree& tree,
+  const Visibility& rays, const ShooterFormFactors& culling, const ClusterLinkOptions& options)
+  : Mesh(mesh)
+  , G(g)
+  , Tree(tree)
+  , Rays(rays)
+  , Culling(culling)
+  , Options(options)
+  , AreaBefore(tree.Elements().size() + 1, 0.0)
+  , Epsilon(1e-6 * g.sceneDiagonal)
+{
+  for (size_t i = 0; i < tree.Elements().size(); ++i)
+  {
+    AreaBefore[i + 1] = AreaBefore[i] + g.area[tree.Elements()[i]];
+  }
+}
+
+bool ClusterLinkBuilder::NotInFront(int a, int b) const
+{
+  const ElementTree::Node& A = Tree.Nodes()[a];
+  const ElementTree::Node& B = Tree.Nodes()[b];
+  if (!A.Flat)
+  {
+    return BehindBall(A.Centre, A.Radius, A.Cone, B.Centre, B.Radius);
+  }
+  const bool parallel = B.Flat && std::abs(Dot(A.Cone.Axis, B.Cone.Axis)) > 1 - 1e-9;
+  const double highest = Dot(A.Cone.Axis, B.Centre) + (parallel ? 0.0 : B.Radius);
+  return highest <= A.PlaneOffset + Tree.Tolerance();
+}
+
+bool ClusterLinkBuilder::FacesCentre(int a, int b) const
+{
+  const ElementTree::Node& A = Tree.Nodes()[a];
+  const ElementTree::Node& B = Tree.Nodes()[b];
+  if (!A.Flat)
+  {
+    return FacesBall(A.Centre, A.Radius, A.Cone, B.Centre, 0.0);
+  }
+  return Dot(A.Cone.Axis, B.Centre) > A.PlaneOffset + Tree.Tolerance();
+}
+
+ClusterLinkBuilder::Pair ClusterLinkBuilder::Classify(int a, int b) const
+{
+  if (NotInFront(a, b) || NotInFront(b, a))
+  {
+    return Pair::Cull; // one of them faces away from all of the other: nothing passes
+  }
+  const ElementTree::Node& A = Tree.Nodes()[a];
+  const ElementTree::Node& B = Tree.Nodes()[b];
+  const double d = Norm(A.Centre - B.Centre);
+  const double reach = A.Radius + B.Radius;
+  if (d > Options.Separation * reach)
+  {
+    const bool facesB = FacesCentre(a, b), facesA = FacesCentre(b, a);
+    if (facesA && facesB)
+    {
+      return Pair::Far;
+    }
+    // A flat node that does not face the other's centre is cut by its plane: split that.
+    if ((facesB || !A.Flat) && (facesA || !B.Flat) && d > Options.MixedSeparation * reach)
+    {
+      return Pair::Far;
+    }
+  }
+  return Tree.IsLeaf(a) && Tree.IsLeaf(b) ? Pair::Near : Pair::Split;
+}
+
+ClusterLinkBuilder::Children ClusterLinkBuilder::Split(int a, int b) const
+{
+  const ElementTree::Node& A = Tree.Nodes()[a];
+  const ElementTree::Node& B = Tree.Nodes()[b];
+  Children c;
+  if (a == b)
+  {
+    c.Pairs[c.Count++] = { A.Left, A.Left };
+    c.Pairs[c.Count++] = { A.Left, A.Right };
+    c.Pairs[c.Count++] = { A.Right, A.Right };
+  }
+  else if (!Tree.IsLeaf(a) && (Tree.IsLeaf(b) || A.Radius >= B.Radius))
+  {
+    c.Pairs[c.Count++] = { A.Left, b };
+    c.Pairs[c.Count++] = { A.Right, b };
+  }
+  else
+  {
+    c.Pairs[c.Count++] = { a, B.Left };
+    c.Pairs[c.Count++] = { a, B.Right };
+  }
+  return c;
+}
+
+void ClusterLinkBuilder::RefineChildren(int a, int b, Found& found, bool seen) const
+{
+  const Children c = Split(a, b);
+  for (int i = 0; i < c.Count; ++i)
+  {
+    Refine(c.Pairs[i].A, c.Pairs[i].B, found, seen);
+  }
+}
+
+void ClusterLinkBuilder::Refine(int a, int b, Found& found, bool seen) const
+{
+  Pair kind = a == b ? (Tree.IsLeaf(a) ? Pair::Cull : Pair::Split) : Classify(a, b);
+  if (kind == Pair::Far)
+  {
+    AddFar(a, b, found);
+  }
+  else if (kind == Pair::Near)
+  {
+    AddNear(a, b, found);
+  }
+  else if (kind == Pair::Split)
+  {
+    const Sight sight = seen ? Sight::Seen : Hidden(a, b, found.Rays);
+    if (sight != Sight::Hidden)
+    {
+      RefineChildren(a, b, found, sight == Sight::Seen);
+    }
+  }
+}
+
+void ClusterLinkBuilder::AddFar(int a, int b, Found& found) const
+{
+  const ElementTree::Node& A = Tree.Nodes()[a];
+  const ElementTree::Node& B = Tree.Nodes()[b];
+  const Vec3 between = A.Centre - B.Centre;
+  const double d2 = Dot(between, between);
+  const Vec3 u = between * (1.0 / std::sqrt(d2)); // from b towards a
+  const bool mixedA = !FacesCentre(a, b), mixedB = !FacesCentre(b, a);
+  const double projectedB = Tree.ProjectedArea(b, u, !mixedB);
+  const double projectedA = Tree.ProjectedArea(a, u * -1.0, !mixedA);
+  if (projectedA <= 0 || projectedB <= 0)
+  {
+    return;
+  }
+  const double visible = NeedsRays(a, b) ? Visible(a, b, found.Rays) : 1.0;
+  if (visible <= 0)
+  {
+    return;
+  }
+  // The point-to-disc correction (pi d^2 + area) keeps a near cluster from sending more
+  // than a disc of its projected area could.
+  const double fromA = projectedA * projectedB / (A.Area * (Pi * d2 + projectedB));
+  const double fromB = projectedA * projectedB / (B.Area * (Pi * d2 + projectedA));
+  if (visible < 1 && !(Tree.IsLeaf(a) && Tree.IsLeaf(b)) && std::max(fromA, fromB) > Options.PartialFactor)
+  {
+    RefineChildren(a, b, found, true); // a shadow's edge crosses them: link their parts instead
+    return;
+  }
+  const int ends[2][2] = { { a, b }, { b, a } };
+  // One coupling both ways keeps reciprocity (A_a F_ab = A_b F_ba), so a uniformly bright
+  // closed scene stays uniform.
+  const double shared = visible / (Pi * d2 + 0.5 * (projectedA + projectedB));
+  const double coupling[2] = { shared, shared };
+  for (int k = 0; k < 2; ++k)
+  {
+    found.Receiver.push_back(ends[k][0]);
+    found.Source.push_back(ends[k][1]);
+    found.Coupling.push_back(static_cast<float>(coupling[k]));
+    const bool source = k == 0 ? mixedB : mixedA, receiver = k == 0 ? mixedA : mixedB;
+    found.Mixed.push_back(static_cast<unsigned char>((source ? 1 : 0) | (receiver ? 2 : 0)));
+    for (int c = 0; c < 3; ++c)
+    {
+      found.Direction.push_back(static_cast<float>(k == 0 ? u[c] : -u[c]));
+    }
+  }
+}
+
+void ClusterLinkBuilder::AddNear(int a, int b, Found& found) const
+{
+  const int ea = Tree.ElementOf(a), eb = Tree.ElementOf(b);
+  std::vector<Vec3> scratch;
+  // The point rule at either end estimates the same A_a F_ab = A_b F_ba: their mean, made
+  // reciprocal, errs less than either (measured against progressive refinement).
+  const double exchange = 0.5 * (NearFactor(ea, eb, scratch) * G.area[ea] + NearFactor(eb, ea, scratch) * G.area[eb]);
+  const double fromA = exchange / G.area[ea], fromB = exchange / G.area[eb];
+  if (exchange <= 0)
+  {
+    return;
+  }
+  const double visible = NeedsRays(a, b) ? Visible(a, b, found.Rays) : 1.0;
+  const int ends[2][2] = { { ea, eb }, { eb, ea } };
+  const double factor[2] = { fromA * visible, fromB * visible };
+  for (int k = 0; k < 2; ++k)
+  {
+    if (factor[k] > 0)
+    {
+      found.LeafReceiver.push_back(ends[k][0]);
+      found.LeafSource.push_back(ends[k][1]);
+      found.LeafFactor.push_back(static_cast<float>(factor[k]));
+    }
+  }
+}
+
+double ClusterLinkBuilder::NearFactor(int from, int to, std::vector<Vec3>& scratch) const
+{
+  std::vector<Vec3> loop;
+  for (int i = 0; i < Mesh.PolygonSize(to); ++i)
+  {
+    loop.push_back(Mesh.points[Mesh.Polygon(to)[i]]);
+  }
+  const Vec3& n = G.normal[from];
+  const auto value = [&](const Vec3& x) {
+    // Only the front of `to` sends; Lambert's formula alone would count its back too.
+    return Dot(G.normal[to], x - G.centroid[to]) > Tree.Tolerance()
+      ? PointToPolygonFormFactor(x, n, loop.data(), static_cast<int>(loop.size()), scratch)
+      : 0.0;
+  };
+  const double reach = Tree.ElementRadius(from) + Tree.ElementRadius(to);
+  if (Norm(G.centroid[from] - G.centroid[to]) > 2 * reach)
+  {
+    return value(G.centroid[from]);
+  }
+  const double mean = FanAverage(Mesh, G, from, value); // adjacent: the centroid alone misjudges
+  return std::isfinite(mean) ? mean : 0.0;
+}
+
+bool ClusterLinkBuilder::NeedsRays(int a, int b) const
+{
+  if (Options.Samples <= 0 || Culling.BlockingPlanes() == 0)
+  {
+    return false;
+  }
+  if (Tree.IsLeaf(a) && Tree.IsLeaf(b))
+  {
+    const int pa = G.elementPatch[Tree.ElementOf(a)], pb = G.elementPatch[Tree.ElementOf(b)];
+    return Culling.MayBeBlockedBetweenPatches(pa, pb);
+  }
+  return true;
+}
+
+Vec3 ClusterLinkBuilder::SamplePoint(int node, double u, SampleStream& random, Vec3& normal) const
+{
+  const ElementTree::Node& n = Tree.Nodes()[node];
+  const double target = AreaBefore[n.First] + u * n.Area;
+  int i = static_cast<int>(
+    std::upper_bound(AreaBefore.begin() + n.First, AreaBefore.begin() + n.First + n.Count, target) -
+    AreaBefore.begin()) - 1;
+  i = std::max(n.First, std::min(n.First + n.Count - 1, i));
+  const int e = Tree.Elements()[i];
+  normal = G.normal[e];
+  // A point uniform over the element's fan triangles around its centroid.
+  const int* ids = Mesh.Polygon(e);
+  const int count = Mesh.PolygonSize(e);
+  const Vec3& c = G.centroid[e];
+  double total = 0;
+  for (int k = 0; k < count; ++k)
+  {
+    total += Norm(Cross(Mesh.points[ids[k]] - c, Mesh.points[ids[(k + 1) % count]] - c));
+  }
+  double pick = random.Next() * total;
+  int k = 0;
+  for (; k < count - 1; ++k)
+  {
+    pick -= Norm(Cross(Mesh.points[ids[k]] - c, Mesh.points[ids[(k + 1) % count]] - c));
+    if (pick < 0)
+    {
+      break;
+    }
+  }
+  double s = random.Next(), t = random.Next();
+  if (s + t > 1)
+  {
+    s = 1 - s;
+    t = 1 - t;
+  }
+  const Vec3 p = c + (Mesh.points[ids[k]] - c) * s + (Mesh.points[ids[(k + 1) % count]] - c) * t;
+  return p + normal * Epsilon;
+}
+
+ClusterLinkBuilder::Sight ClusterLinkBuilder::Hidden(int a, int b, long long& rays) const
+{
+  const ElementTree::Node& A = Tree.Nodes()[a];
+  const ElementTree::Node& B = Tree.Nodes()[b];
+  if (a == b || !NeedsRays(a, b) || Norm(A.Centre - B.Centre) <= kHiddenRadii * (A.Radius + B.Radius))
+  {
+    return Sight::Unknown; // near: the nodes' own surfaces would hide too much of a pair partly in view
+  }
+  SampleStream random(static_cast<std::uint64_t>(a), static_cast<std::uint64_t>(b), 0xC2u);
+  int valid = 0;
+  for (int r = 0; r < kHiddenRays; ++r)
+  {
+    Vec3 na, nb;
+    const Vec3 pa = SamplePoint(a, (r + random.Next()) / kHiddenRays, random, na);
+    const Vec3 pb = SamplePoint(b, random.Next(), random, nb);
+    if (Dot(na, pb - pa) <= 0 || Dot(nb, pa - pb) <= 0)
+    {
+      continue;
+    }
+    ++valid;
+    ++rays;
+    if (!Rays.Occluded(pa, pb))
+    {
+      return Sight::Seen; // the first ray through settles it, for the pair's parts too
+    }
+  }
+  // No two points facing each other: too little passes between them to test again below.
+  return valid > 0 ? Sight::Hidden : Sight::Seen;
+}
+
+double ClusterLinkBuilder::Visible(int a, int b, long long& rays) const
+{
+  SampleStream random(static_cast<std::uint64_t>(a), static_cast<std::uint64_t>(b), 0xC1u);
+  int valid = 0, open = 0;
+  for (int r = 0; r < Options.Samples; ++r)
+  {
+    Vec3 na, nb;
+    const Vec3 pa = SamplePoint(a, (r + random.Next()) / Options.Samples, random, na);
+    const Vec3 pb = SamplePoint(b, random.Next(), random, nb);
+    if (Dot(na, pb - pa) <= 0 || Dot(nb, pa - pb) <= 0)
+    {
+      continue; // these two points do not exchange light: no ray speaks for the pair
+    }
+    ++valid;
+    ++rays;
+    open += Rays.Occluded(pa, pb) ? 0 : 1;
+  }
+  return valid > 0 ? static_cast<double>(open) / valid : 1.0;
+}
+
+std::vector<ClusterLinkBuilder::Task> ClusterLinkBuilder::Frontier(int wanted) const
+{
+  std::vector<Task> list;
+  if (!Tree.Nodes().empty())
+  {
+    list.push_back({ 0, 0 });
+  }
+  bool split = true;
+  while (split && static_cast<int>(list.size()) < wanted)
+  {
+    split = false;
+    std::vector<Task> next;
+    for (const Task& t : list)
+    {
+      const Pair kind = t.A == t.B ? (Tree.IsLeaf(t.A) ? Pair::Cull : Pair::Split) : Classify(t.A, t.B);
+      if (kind == Pair::Split)
+      {
+        const Children c = Split(t.A, t.B);
+        next.insert(next.end(), c.Pairs, c.Pairs + c.Count);
+        split = true;
+      }
+      else if (kind != Pair::Cull)
+      {
+        next.push_back(t);
+      }
+    }
+    list.swap(next);
+  }
+  return list;
+}
+
+ClusterLinkSet ClusterLinkBuilder::Build(
+  const WorkerPool& pool, int rank, int ranks, const std::function<bool(double)>& keepGoing)
+{
+  const std::vector<Task> tasks = Frontier(4096);
+  std::vector<Found> found(tasks.size());
+  ClusterLinkSet links;
+  const int batch = std::max(1, static_cast<int>(tasks.size()) / 50);
+  for (int begin = 0; begin < static_cast<int>(tasks.size()); begin += batch)
+  {
+    if (keepGoing && !keepGoing(static_cast<double>(begin) / tasks.size()))
+    {
+      links.Complete = false;
+      break;
+    }
+    const int end = std::min(static_cast<int>(tasks.size()), begin + batch);
+    pool.For(end - begin, 1, [&](int first, int last) {
+      for (int i = begin + first; i < begin + last; ++i)
+      {
+        if (i % ranks == rank)
+        {
+          Refine(tasks[i].A, tasks[i].B, found[i], false);
+        }
+      }
+    });
+  }
+  Found all;
+  for (Found& f : found)
+  {
+    all.Receiver.insert(all.Receiver.end(), f.Receiver.begin(), f.Receiver.end());
+    all.Source.insert(all.Source.end(), f.Source.begin(), f.Source.end());
+    all.Coupling.insert(all.Coupling.end(), f.Coupling.begin(), f.Coupling.end());
+    all.Direction.insert(all.Direction.end(), f.Direction.begin(), f.Direction.end());
+    all.Mixed.insert(all.Mixed.end(), f.Mixed.begin(), f.Mixed.end());
+    all.LeafReceiver.insert(all.LeafReceiver.end(), f.LeafReceiver.begin(), f.LeafReceiver.end());
+    all.LeafSource.insert(all.LeafSource.end(), f.LeafSource.begin(), f.LeafSource.end());
+    all.LeafFactor.insert(all.LeafFactor.end(), f.LeafFactor.begin(), f.LeafFactor.end());
+    links.Rays += f.Rays;
+    f = Found();
+  }
+  const std::vector<int> far = ByReceiver(all.Receiver, static_cast<int>(Tree.Nodes().size()));
+  links.Receiver = Permuted(all.Receiver, far);
+  links.Source = Permuted(all.Source, far);
+  links.Coupling = Permuted(all.Coupling, far);
+  links.Direction = Permuted(all.Direction, far, 3);
+  links.Mixed = Permuted(all.Mixed, far);
+  const std::vector<int> near = ByReceiver(all.LeafReceiver, static_cast<int>(G.normal.size()));
+  links.LeafReceiver = Permuted(all.LeafReceiver, near);
+  links.LeafSource = Permuted(all.LeafSource, near);
+  links.LeafFactor = Permuted(all.LeafFactor, near);
+  return links;
+}
+
+} // namespace radiosity

@@ -1,0 +1,122 @@
+// The links of the clustered method: which groups of elements exchange light directly,
+// found once for the scene and for every light (a light-independent oracle), so that the
+// transport is computed once and carries all k solutions.
+#ifndef RadiosityCore_ClusterLinks_h
+#define RadiosityCore_ClusterLinks_h
+
+#include "Solve/ElementTree.h"
+#include "Solve/ShooterFormFactors.h"
+#include "Base/WorkerPool.h"
+
+#include <functional>
+#include <vector>
+
+namespace radiosity
+{
+
+/// Directed links, each "receiver gathers from source", sorted by receiver.
+struct ClusterLinkSet
+{
+  /// Far links between tree nodes in full or partial view: the receiver's irradiance
+  /// vector gains Coupling x (M_source . u) x (-u), where M is the sum of radiosity x area x
+  /// normal over the source's elements and u the unit vector from source to receiver.
+  std::vector<int> Receiver, Source;
+  std::vector<float> Coupling, Direction; ///< Direction: three per link
+  /// Per link: 1 where the source's elements do not all face the receiver (its emission
+  /// towards u is taken from the clamped cosine's series), 2 where the receiver's do not
+  /// (each element's share likewise), 3 for both.
+  std::vector<unsigned char> Mixed;
+  /// Near links between two elements: irradiance += Factor x the source's radiosity, with
+  /// Factor = F(receiver -> source) by Lambert's formula and shadow rays.
+  std::vector<int> LeafReceiver, LeafSource;
+  std::vector<float> LeafFactor;
+  long long Rays = 0;
+  bool Complete = true; ///< false where the build was stopped (abort or time)
+
+  double Bytes() const { return 25.0 * Receiver.size() + 12.0 * LeafReceiver.size(); }
+};
+
+/// How fine the links are: a pair of nodes is linked whole when their centres are
+/// farther apart than Separation x the sum of their radii and each faces the other's centre.
+struct ClusterLinkOptions
+{
+  double Separation = 4.0;
+  /// The same for a pair where one side's elements do not all face the other (a corner, a
+  /// curved object's rim): farther, as the series errs by up to 1/16 of head-on.
+  double MixedSeparation = 6.0;
+  int Samples = 4;     ///< shadow rays per link (0: none)
+  /// A partly hidden pair of nodes whose form factor either way exceeds this is split.
+  double PartialFactor = 0.01;
+};
+
+class ClusterLinkBuilder
+{
+public:
+  ClusterLinkBuilder(const SceneMesh& mesh, const SceneGeometry& g, const ElementTree& tree,
+    const Visibility& rays, const ShooterFormFactors& culling, const ClusterLinkOptions& options);
+
+  /// The links of this rank's share of the pairs (every `ranks`-th task); `keepGoing` is
+  /// asked between batches of tasks with the fraction done, and false stops the build.
+  ClusterLinkSet Build(const WorkerPool& pool, int rank, int ranks, const std::function<bool(double)>& keepGoing);
+
+private:
+  enum class Pair
+  {
+    Cull,
+    Far,
+    Near,
+    Split
+  };
+  struct Task
+  {
+    int A, B;
+  };
+  struct Children
+  {
+    Task Pairs[3];
+    int Count = 0;
+  };
+  struct Found; // one task's links
+  Pair Classify(int a, int b) const;
+  std::vector<Task> Frontier(int wanted) const;
+  /// The pairs a pair splits into: both halves of a node paired with itself, else the
+  /// halves of the larger node with the other.
+  Children Split(int a, int b) const;
+  /// `seen`: a ray joined an ancestor pair, so the pair is not tested for being hidden.
+  void RefineChildren(int a, int b, Found& found, bool seen) const;
+  void Refine(int a, int b, Found& found, bool seen) const;
+  void AddFar(int a, int b, Found& found) const;
+  void AddNear(int a, int b, Found& found) const;
+  /// True when no point of node b lies in front of node a's elements' planes.
+  bool NotInFront(int a, int b) const;
+  /// True when node b's centre lies in front of every plane of a's elements: then a
+  /// gathers from b as from a point, with a positive cosine at each of its elements.
+  bool FacesCentre(int a, int b) const;
+  double NearFactor(int from, int to, std::vector<Vec3>& scratch) const;
+  /// Fraction of shadow rays between the nodes that arrive (only rays from the front of
+  /// one to the front of the other count); 1 without rays.
+  double Visible(int a, int b, long long& rays) const;
+  /// A point of node `node` (uniform by area, `u` choosing where), just off its front.
+  enum class Sight
+  {
+    Unknown, ///< near, or no rays needed
+    Seen,    ///< a ray between facing points arrived (or no two sampled points face)
+    Hidden   ///< far apart, and none of the rays between facing points arrived
+  };
+  Sight Hidden(int a, int b, long long& rays) const;
+  Vec3 SamplePoint(int node, double u, SampleStream& random, Vec3& normal) const;
+  bool NeedsRays(int a, int b) const;
+
+  const SceneMesh& Mesh;
+  const SceneGeometry& G;
+  const ElementTree& Tree;
+  const Visibility& Rays;
+  const ShooterFormFactors& Culling;
+  const ClusterLinkOptions Options;
+  std::vector<double> AreaBefore; ///< prefix sums of area in tree order
+  double Epsilon = 0;
+};
+
+} // namespace radiosity
+
+#endif

@@ -1,0 +1,433 @@
+#include "Solve/ClusteredRadiosity.h"
+#include "Solve/Channels.h"
+#include "Solve/ClusterGather.h"
+#include "Solve/ElementTree.h"
+#include "Solve/RankTable.h"
+#include "Base/WorkerPool.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace radiosity
+{
+
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+double NonNegative(double v)
+{
+  return std::max(0.0, v);
+}
+
+Vec3 NonNegative(const Vec3& v)
+{
+  return { std::max(0.0, v.x), std::max(0.0, v.y), std::max(0.0, v.z) };
+}
+
+template <typename Channel>
+class Gathering
+{
+public:
+  using Value = typename Channel::Value;
+
+  Gathering(const SceneMesh& mesh, const SceneGeometry& g, const Visibility& rays, const std::vector<Vec3>& emission,
+    int solutions, const SolverOptions& options, Clock::time_point start, Solution& out)
+    : Mesh(mesh)
+    , G(g)
+    , Rays(rays)
+    , L(solutions)
+    , N(static_cast<int>(g.normal.size()))
+    , P(static_cast<int>(g.patchElements.size()))
+    , Options(options)
+    , Start(start)
+    , Out(out)
+    , Stats(out.Statistics)
+    , Pool(options.Threads)
+    , Group(options.Group)
+    , Owned(OwnedPatches(g, Group.Rank(), Group.Ranks()))
+    , Reflect(options.Interreflection != EffectMode::Off)
+  {
+    Initialize(emission);
+  }
+
+  void Run()
+  {
+    ShooterFormFactors estimator(Mesh, G, Rays, Pool, Options.Visibility == EffectMode::Auto);
+    estimator.SetReceivers(&Owned);
+    ShootEmitters(estimator);
+    if (Reflect && !Stopped && AnyActive())
+    {
+      Interreflect(estimator);
+    }
+    Stats.Converged = !AnyActive();
+    Finish(estimator);
+  }
+
+private:
+  size_t At(int item, int m) const { return static_cast<size_t>(item) * L + m; }
+  double Seconds() const { return std::chrono::duration<double>(Clock::now() - Start).count(); }
+
+  void Initialize(const std::vector<Vec3>& emission)
+  {
+    Radiosity.assign(static_cast<size_t>(N) * L, Value());
+    Last.assign(Radiosity.size(), Value());
+    Unshot.assign(static_cast<size_t>(P) * L, Value());
+    for (int e = 0; e < N; ++e)
+    {
+      const int p = G.elementPatch[e];
+      for (int m = 0; m < L; ++m)
+      {
+        const Value v = Channel::From(emission[At(e, m)]);
+        Radiosity[At(e, m)] = v;
+        if (G.patchOpenArea[p] > 0 && !G.enclosed[e]) // enclosed emission never gets out
+        {
+          Unshot[At(p, m)] += v * (G.area[e] / G.patchOpenArea[p]);
+        }
+      }
+    }
+    InitialPer.assign(L, 0.0);
+    std::vector<double> power(P, 0.0);
+    for (int p = 0; p < P; ++p)
+    {
+      for (int m = 0; m < L; ++m)
+      {
+        const double w = Channel::Sum(Unshot[At(p, m)]) * G.patchOpenArea[p];
+        InitialPer[m] += w;
+        power[p] += w;
+      }
+      if (power[p] != 0)
+      {
+        Emitters.push_back(p);
+      }
+    }
+    // The brightest first, as the shooting methods do: a stopped solve has the most light.
+    std::stable_sort(Emitters.begin(), Emitters.end(), [&](int a, int b) { return power[a] > power[b]; });
+    PendingPer = RemainingPer = InitialPer;
+    Initial = std::accumulate(InitialPer.begin(), InitialPer.end(), 0.0);
+    Stats.EmittedPower = Stats.UnshotPower = Initial;
+    Stats.ShotCap = ShotCap(Options, P);
+    ReceiverScale.assign(N, 1.0);
+  }
+
+  bool AnyActive() const
+  {
+    for (int m = 0; m < L; ++m)
+    {
+      if (InitialPer[m] > 0 && RemainingPer[m] >= Options.ConvergenceThreshold * InitialPer[m])
+      {
+        return true;
+      }
+    }
+    return false;
+  }
+
+  /// The stopping rules every rank applies together: the shot cap, the time budget, abort.
+  bool KeepGoing(double fraction)
+  {
+    if (Stopped || Stats.Shots >= Stats.ShotCap)
+    {
+      return false;
+    }
+    double flags[2] = { Options.TimeBudget > 0 && Seconds() >= Options.TimeBudget ? 1.0 : 0.0, 0.0 };
+    flags[1] = flags[0] == 0 && Options.Progress && !Options.Progress(std::min(1.0, std::max(0.0, fraction))) ? 1.0 : 0.0;
+    Group.Sum(flags, 2);
+    Stats.OutOfTime = flags[0] > 0;
+    Stats.Aborted = !Stats.OutOfTime && flags[1] > 0;
+    Stopped = Stats.OutOfTime || Stats.Aborted;
+    return !Stopped;
+  }
+
+  /// Progress through the iterations: the remaining power's way down to the threshold.
+  double IterationFraction() const
+  {
+    const double threshold = Options.ConvergenceThreshold;
+    const double left = Initial > 0 ? Stats.UnshotPower / Initial : 0.0;
+    if (threshold <= 0 || threshold >= 1 || left <= 0)
+    {
+      return 0.7;
+    }
+    return 0.7 + 0.3 * std::min(1.0, std::max(0.0, std::log(left) / std::log(threshold)));
+  }
+
+  /// Each emitter's direct light to every element, with its own shadow rays.
+  void ShootEmitters(ShooterFormFactors& estimator)
+  {
+    const int samples = Options.Visibility == EffectMode::Off ? 0 : Options.Samples;
+    std::vector<double> factors(N);
+    for (size_t i = 0; i < Emitters.size(); ++i)
+    {
+      if (!KeepGoing(0.2 * i / Emitters.size()))
+      {
+        break;
+      }
+      const int p = Emitters[i];
+      Stats.RayCount += estimator.Compute(p, FormFactorMethod::Analytic, samples, Stats.Shots, factors);
+      Stats.FormFactorCount += N;
+      double receiving = 0;
+      for (int e = 0; e < N; ++e)
+      {
+        factors[e] = Owned[G.elementPatch[e]] ? factors[e] : 0.0;
+        receiving += factors[e] * G.area[e];
+      }
+      Group.Sum(&receiving, 1);
+      const double scale = estimator.ConservationScale(p, receiving);
+      Pool.For(N, 512, [&](int begin, int end) {
+        for (int e = begin; e < end; ++e)
+        {
+          for (int m = 0; m < L && factors[e] > 0; ++m)
+          {
+            Last[At(e, m)] += Channel::Reflect(Mesh.reflectance[e], Unshot[At(p, m)], factors[e] * scale);
+          }
+        }
+      });
+      double shot = 0;
+      for (int m = 0; m < L; ++m)
+      {
+        const double power = Channel::Sum(Unshot[At(p, m)]) * G.patchOpenArea[p];
+        PendingPer[m] -= power;
+        shot += power;
+        Unshot[At(p, m)] = Value();
+      }
+      Record(shot, shot / std::max(G.patchOpenArea[p], 1e-300) * receiving * scale, false);
+    }
+    if (Group.Distributed())
+    {
+      SumOverRanks(Last); // each rank received for its own elements
+    }
+    for (size_t i = 0; i < Radiosity.size(); ++i)
+    {
+      Radiosity[i] += Last[i];
+    }
+    if (Options.SeparateDirect)
+    {
+      DirectPart = Radiosity;
+    }
+    UpdateRemaining(true);
+  }
+
+  void Interreflect(ShooterFormFactors& estimator)
+  {
+    const ElementTree tree(Mesh, G);
+    ClusterLinkOptions options;
+    options.Samples = Options.Visibility == EffectMode::Off ? 0 : Options.Samples;
+    ClusterLinkBuilder builder(Mesh, G, tree, Rays, estimator, options);
+    const ClusterLinkSet links =
+      builder.Build(Pool, Group.Rank(), Group.Ranks(), [&](double f) { return KeepGoing(0.2 + 0.5 * f); });
+    Stats.RayCount += links.Rays;
+    Stats.VolumeLinks += static_cast<long long>(links.Receiver.size());
+    Stats.ElementLinks += static_cast<long long>(links.LeafReceiver.size());
+    Stats.LinkBytes += links.Bytes();
+    if (!links.Complete)
+    {
+      return; // stopped while linking: the direct light stands, the rest stays unshot
+    }
+    Normalize(tree, links, estimator);
+    ClusterGather<Value> gather(G, tree, links, Pool);
+    std::vector<Value> irradiance;
+    while (AnyActive() && KeepGoing(IterationFraction()))
+    {
+      gather.Scatter(Last, L);
+      for (std::vector<Value>* sums : Group.Distributed() ? gather.Sums() : std::vector<std::vector<Value>*>())
+      {
+        SumOverRanks(*sums); // each rank gathered along its own share of the links
+      }
+      gather.Collect(L, irradiance);
+      Bounce(irradiance);
+    }
+  }
+
+  /// Per element, the factor that makes what it gathers from a uniformly bright closed
+  /// scene its full view (where its patch sees a closed scene; elsewhere only an excess is
+  /// cut): the far-field factors of the cluster links and the point rule near a source do
+  /// not sum to one on their own. A closed furnace then stays uniform.
+  void Normalize(const ElementTree& tree, const ClusterLinkSet& links, ShooterFormFactors& estimator)
+  {
+    ClusterGather<double> unit(G, tree, links, Pool);
+    unit.Scatter(std::vector<double>(N, 1.0), 1);
+    for (std::vector<double>* sums : unit.Sums())
+    {
+      Group.Sum(*sums);
+    }
+    std::vector<double> seen;
+    unit.Collect(1, seen);
+    for (int e = 0; e < N; ++e)
+    {
+      if (seen[e] > 1 || (seen[e] > 0 && estimator.ViewIsClosed(G.elementPatch[e])))
+      {
+        ReceiverScale[e] = 1 / seen[e];
+      }
+    }
+  }
+
+  /// Each element's irradiance into its radiosity: the new last bounce.
+  void Bounce(const std::vector<Value>& irradiance)
+  {
+    double shot = 0, received = 0;
+    for (int e = 0; e < N; ++e)
+    {
+      for (int m = 0; m < L; ++m)
+      {
+        shot += Channel::Sum(Last[At(e, m)]) * G.area[e];
+        // The clamped cosine's series dips below zero near grazing: no element takes light away.
+        const Value h = NonNegative(irradiance[At(e, m)] * ReceiverScale[e]);
+        received += Channel::Sum(h) * G.area[e];
+        Last[At(e, m)] = Channel::Reflect(Mesh.reflectance[e], h, 1.0);
+        Radiosity[At(e, m)] += Last[At(e, m)];
+      }
+    }
+    UpdateRemaining(true);
+    Record(shot, received, true);
+  }
+
+  /// RemainingPer: emitters not yet shot, and the last bounce where it is still to travel.
+  void UpdateRemaining(bool shared)
+  {
+    std::vector<double> last(L, 0.0);
+    for (int e = 0; e < N && Reflect; ++e)
+    {
+      for (int m = 0; m < L && (shared || Owned[G.elementPatch[e]]); ++m)
+      {
+        last[m] += Channel::Sum(Last[At(e, m)]) * G.area[e];
+      }
+    }
+    if (!shared)
+    {
+      Group.Sum(last);
+    }
+    for (int m = 0; m < L; ++m)
+    {
+      RemainingPer[m] = PendingPer[m] + last[m];
+    }
+  }
+
+  /// The ledger and the histories after a shot or a bounce.
+  void Record(double shot, double received, bool updated)
+  {
+    if (!updated)
+    {
+      UpdateRemaining(false);
+    }
+    ++Stats.Shots;
+    Stats.ShotPower += shot;
+    Stats.ReceivedPower += received;
+    Stats.EscapedPower += shot - received;
+    double remaining = 0;
+    for (int m = 0; m < L; ++m)
+    {
+      remaining += RemainingPer[m];
+      Stats.RemainingPerSolution.push_back(InitialPer[m] > 0 ? RemainingPer[m] / InitialPer[m] : 0.0);
+    }
+    Stats.UnshotPower = remaining;
+    Stats.RemainingHistory.push_back(Initial > 0 ? remaining / Initial : 0.0);
+    Stats.TimeHistory.push_back(Seconds());
+  }
+
+  void SumOverRanks(std::vector<Value>& values)
+  {
+    static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 is summed as three doubles");
+    Group.Sum(reinterpret_cast<double*>(values.data()), values.size() * Channel::Doubles);
+  }
+
+  /// The ambient term, then the output: each rank writes its own elements (the sum over
+  /// the ranks gives every rank the whole).
+  void Finish(const ShooterFormFactors& estimator)
+  {
+    Stats.RaysSkipped = estimator.RaysSkipped();
+    Stats.PairsUnblockable = estimator.PairsUnblockable();
+    Stats.BlockingSurfaces = estimator.BlockingPlanes();
+    if (Options.AmbientTerm && Reflect)
+    {
+      AddAmbient();
+    }
+    Out.Radiosity.assign(Radiosity.size(), Vec3());
+    if (Options.SeparateDirect)
+    {
+      Out.Direct.assign(Radiosity.size(), Vec3());
+    }
+    for (int e = 0; e < N; ++e)
+    {
+      const Vec3& rho = Mesh.reflectance[e];
+      for (int m = 0; m < L && Owned[G.elementPatch[e]]; ++m)
+      {
+        const Vec3& a = Out.Ambient[m];
+        Out.Radiosity[At(e, m)] = Channel::To(Radiosity[At(e, m)]) + Vec3{ rho.x * a.x, rho.y * a.y, rho.z * a.z };
+        if (Options.SeparateDirect)
+        {
+          Out.Direct[At(e, m)] = Channel::To(DirectPart.empty() ? Radiosity[At(e, m)] : DirectPart[At(e, m)]);
+        }
+      }
+      Stats.ReceivingElements += Owned[G.elementPatch[e]] ? 1 : 0;
+    }
+    Stats.OwnRays = Stats.RayCount;
+    if (Group.Distributed())
+    {
+      GatherOverRanks(Group, Out);
+    }
+  }
+
+  /// Cohen et al. 1988, as the shooting methods add it: what is left to travel, spread
+  /// evenly and interreflected in closed form.
+  void AddAmbient()
+  {
+    Vec3 meanRho;
+    double area = 0;
+    for (int e = 0; e < N; ++e)
+    {
+      meanRho += Mesh.reflectance[e] * G.area[e];
+      area += G.area[e];
+    }
+    meanRho = meanRho * (1.0 / area);
+    for (int m = 0; m < L; ++m)
+    {
+      Vec3 left;
+      for (int p = 0; p < P; ++p)
+      {
+        left += Channel::To(Unshot[At(p, m)]) * G.patchOpenArea[p];
+      }
+      for (int e = 0; e < N; ++e)
+      {
+        left += Channel::To(Last[At(e, m)]) * G.area[e];
+      }
+      for (int c = 0; c < 3; ++c)
+      {
+        Out.Ambient[m][c] = left[c] / area / std::max(1.0 - meanRho[c], 1e-6); // capped: rho = 1 has none
+      }
+    }
+  }
+
+  const SceneMesh& Mesh;
+  const SceneGeometry& G;
+  const Visibility& Rays;
+  const int L, N, P;
+  const SolverOptions& Options;
+  Clock::time_point Start;
+  Solution& Out;
+  SolverStatistics& Stats;
+  WorkerPool Pool;
+  Collective Group;
+  std::vector<char> Owned;
+  const bool Reflect;
+  bool Stopped = false;
+  /// Per element and solution: the radiosity so far, the last bounce (still to travel),
+  /// and the direct part; per patch, the emission not yet shot.
+  std::vector<Value> Radiosity, Last, DirectPart, Unshot;
+  std::vector<int> Emitters;
+  std::vector<double> InitialPer, PendingPer, RemainingPer, ReceiverScale;
+  double Initial = 0;
+};
+} // namespace
+
+void SolveClustered(const SceneMesh& mesh, const SceneGeometry& geometry, const Visibility& rays,
+  const std::vector<Vec3>& emission, int solutions, bool grey, const SolverOptions& options,
+  Clock::time_point start, Solution& out)
+{
+  out.Statistics.Method = SolverMethod::Clustered;
+  WithChannel(grey, [&](auto channel) {
+    Gathering<decltype(channel)> gathering(mesh, geometry, rays, emission, solutions, options, start, out);
+    gathering.Run();
+  });
+}
+
+} // namespace radiosity

@@ -1,0 +1,32 @@
+// Hierarchical radiosity with clustering, in gathering order (Smits, Arvo & Greenberg
+// 1994; Sillion 1995): links between groups of elements of any size, found once for the
+// scene, carry every light's solution at once.
+#ifndef RadiosityCore_ClusteredRadiosity_h
+#define RadiosityCore_ClusteredRadiosity_h
+
+#include "Solve/RadiositySolver.h"
+
+#include <chrono>
+
+namespace radiosity
+{
+
+/// The SolveFunction for SolverMethod::Clustered.
+/// - Direct light: each emitter patch shoots once to every element, with shadow rays per
+///   element, as in progressive refinement: shadows stay sharp.
+/// - The interreflection: an element tree (ElementTree.h) whose node pairs are linked
+///   (ClusterLinks.h) where they are far apart for their size and face each other wholly;
+///   nearer pairs split, down to element pairs, which take Lambert's formula. The links do
+///   not depend on the lights, so their cost follows the scene's surfaces, not its polygons
+///   times its shooters.
+/// - Each iteration gathers the last bounce along every link (sums of radiosity x area x
+///   normal pulled up the tree, irradiance vectors pushed down) until what is left to
+///   propagate is below the threshold of each solution's emitted power. Each source
+///   patch's links are scaled to deliver exactly what it sends where it sees a closed scene.
+void SolveClustered(const SceneMesh& mesh, const SceneGeometry& geometry, const Visibility& rays,
+  const std::vector<Vec3>& emission, int solutions, bool grey, const SolverOptions& options,
+  std::chrono::steady_clock::time_point start, Solution& out);
+
+} // namespace radiosity
+
+#endif

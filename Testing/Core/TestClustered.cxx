@@ -1,0 +1,157 @@
+// The clustered method against closed forms, against progressive refinement with every
+// element its own patch (the paper scene and the Cornell box: Python.TestClustered) (the exact transport of the same elements, which patch-level
+// shooting only approximates), and against its own invariants (light tagging, the
+// ledger, threads, a stop that keeps a valid result).
+#include "CurvedRoom.h"
+#include "FurnishedRoom.h"
+#include "Solve/LightSolutions.h"
+#include "SceneBuilders.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+using namespace radiosity;
+using radiosity_test::Box;
+using radiosity_test::Converged;
+using radiosity_test::RelativeDifference;
+
+namespace
+{
+SolverOptions Options(SolverMethod method, double threshold)
+{
+  SolverOptions o = Converged(threshold);
+  o.Solver = method;
+  return o;
+}
+
+Solution Solve(const SceneMesh& mesh, int lights, const SolverOptions& options,
+  SolutionMode mode = SolutionMode::LightTagged)
+{
+  const RadiositySolver solver(mesh);
+  EXPECT_TRUE(solver.Error().empty()) << solver.Error();
+  return SolveLights(solver, mesh, LightGrouping::OnePerLight(lights), {}, mode, options);
+}
+
+/// Progressive refinement with every element its own shooter.
+Solution Reference(SceneMesh mesh, int lights, int samples = 4)
+{
+  mesh.patchId.clear();
+  SolverOptions o = Options(SolverMethod::ProgressiveRefinement, 1e-4);
+  o.Samples = samples;
+  return Solve(mesh, lights, o);
+}
+
+SceneMesh FurnishedRoom(double patch, double element)
+{
+  SceneMesh mesh;
+  const std::string error = radiosity_bench::MeshRoom(radiosity_bench::FurnishedRoom(), patch, element, mesh);
+  EXPECT_TRUE(error.empty()) << error;
+  return mesh;
+}
+
+SceneMesh SphereRoom(int lamps, int triangles, double patch, double element)
+{
+  SceneMesh mesh;
+  EXPECT_EQ(radiosity_bench::MeshByMaterial(radiosity_bench::CurvedRoom(lamps, 1, triangles), patch, element, 30, mesh), "");
+  return mesh;
+}
+} // namespace
+
+TEST(Clustered, FurnaceGivesOneOverOneMinusRho)
+{
+  // Closed box, every face emitting 1: B = 1 / (1 - rho) everywhere, here through cluster
+  // links of every size (the receiver normalization makes a closed view sum to one).
+  for (double rho : { 0.5, 0.9 })
+  {
+    SceneMesh box = Box(2.0, 24, 4, { rho, rho, rho }, [](int) { return 0; });
+    const Solution s = Solve(box, 1, Options(SolverMethod::Clustered, 1e-7));
+    ASSERT_TRUE(s.Statistics.Converged);
+    EXPECT_EQ(s.Statistics.Method, SolverMethod::Clustered);
+    EXPECT_GT(s.Statistics.VolumeLinks, 4 * s.Statistics.ElementLinks);
+    const double expected = 1.0 / (1.0 - rho);
+    double mean = 0, worst = 0;
+    for (const Vec3& b : s.Radiosity)
+    {
+      mean += b.x / s.Radiosity.size();
+      worst = std::max(worst, std::fabs(b.x - expected) / expected);
+    }
+    EXPECT_NEAR(mean, expected, 5e-3 * expected);
+    EXPECT_LT(worst, 0.01);
+  }
+}
+
+TEST(Clustered, SphereRoomEqualsProgressiveRefinement)
+{
+  // A 1,200-triangle sphere in face clusters: mixed-orientation clusters link whole.
+  const SceneMesh mesh = SphereRoom(3, 1200, 0.5, 0.25);
+  const Solution a = Solve(mesh, 3, Options(SolverMethod::Clustered, 1e-4)), b = Reference(mesh, 3);
+  for (double d : RelativeDifference(mesh, a, b))
+  {
+    std::printf("clustered vs progressive, sphere room: %.3f %%\n", 100 * d);
+    EXPECT_LT(d, 0.01);
+  }
+}
+
+TEST(Clustered, TaggedEqualsCombinedAndTheLedgerCloses)
+{
+  // The links do not depend on the lights: the sum of the k unit solutions is one solve
+  // with every lamp on. Emitted = absorbed + escaped + unshot, absorbed from the output.
+  const SceneMesh mesh = FurnishedRoom(0.6, 0.3);
+  const Solution tagged = Solve(mesh, 8, Options(SolverMethod::Clustered, 1e-7));
+  const Solution combined = Solve(mesh, 8, Options(SolverMethod::Clustered, 1e-7), SolutionMode::StandardCombined);
+  EXPECT_LT(radiosity_test::TaggedMinusCombined(tagged, combined), 1e-5);
+  const SolverStatistics& t = tagged.Statistics;
+  const double absorbed = radiosity_test::AbsorbedPower(mesh, tagged);
+  EXPECT_NEAR(absorbed + t.EscapedPower + t.UnshotPower, t.EmittedPower, 1e-9 * t.EmittedPower);
+  EXPECT_LT(std::fabs(t.EscapedPower), 0.05 * t.EmittedPower);
+}
+
+TEST(Clustered, SameResultOnAnyNumberOfThreads)
+{
+  const SceneMesh mesh = SphereRoom(3, 4000, 0.5, 0.25);
+  SolverOptions one = Options(SolverMethod::Clustered, 1e-4), three = one;
+  one.Threads = 1;
+  three.Threads = 3;
+  const Solution a = Solve(mesh, 3, one), b = Solve(mesh, 3, three);
+  ASSERT_EQ(a.Radiosity.size(), b.Radiosity.size());
+  for (size_t i = 0; i < a.Radiosity.size(); ++i)
+  {
+    ASSERT_EQ(a.Radiosity[i].x, b.Radiosity[i].x) << i;
+    ASSERT_EQ(a.Radiosity[i].z, b.Radiosity[i].z) << i;
+  }
+}
+
+TEST(Clustered, AStoppedSolveKeepsTheDirectLightAndBooksTheRest)
+{
+  // Aborted at the first bounce: the direct light (emission and its first bounce, per
+  // element with shadow rays) is all there, what was not carried is unshot, the ledger holds.
+  const SceneMesh mesh = FurnishedRoom(0.6, 0.3);
+  SolverOptions full = Options(SolverMethod::Clustered, 1e-4);
+  full.SeparateDirect = true;
+  SolverOptions stopped = full;
+  int calls = 0;
+  stopped.Progress = [&](double) { return ++calls <= 9; }; // 8 lamps shoot, then the links start
+  const Solution a = Solve(mesh, 8, full), b = Solve(mesh, 8, stopped);
+  EXPECT_TRUE(b.Statistics.Aborted);
+  EXPECT_FALSE(b.Statistics.Converged);
+  for (size_t i = 0; i < a.Direct.size(); ++i)
+  {
+    ASSERT_NEAR(b.Radiosity[i].x, a.Direct[i].x, 1e-12 + 1e-9 * a.Direct[i].x) << i;
+  }
+  const SolverStatistics& t = b.Statistics;
+  EXPECT_GT(t.UnshotPower, 0.1 * t.EmittedPower);
+  EXPECT_NEAR(radiosity_test::AbsorbedPower(mesh, b) + t.EscapedPower + t.UnshotPower, t.EmittedPower, 1e-9 * t.EmittedPower);
+}
+
+TEST(Clustered, HundredThousandTriangleSphereRoomSolves)
+{
+  const int lamps = 3;
+  const SceneMesh mesh = SphereRoom(lamps, 100000, 0.5, 0.1);
+  ASSERT_GT(mesh.NumberOfPolygons(), 50000);
+  const Solution s = Solve(mesh, lamps, Options(SolverMethod::Clustered, 1e-3));
+  const SolverStatistics& st = s.Statistics;
+  EXPECT_TRUE(st.Converged);
+  EXPECT_NEAR(st.EmittedPower, radiosity_test::AbsorbedPower(mesh, s) + st.EscapedPower + st.UnshotPower, 1e-6 * st.EmittedPower);
+}
