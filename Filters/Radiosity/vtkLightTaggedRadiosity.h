@@ -107,8 +107,9 @@ public:
   /// of any size, found once for the scene and gathered along for every light; direct
   /// light per element with its own shadow rays. Its cost follows the surfaces, not the
   /// polygons: for models of many small polygons (CAD, scans, BIM).
-  /// Auto (default): Hierarchical from 5,000 element-patch pairs (elements x patches, with
-  /// Analytic factors), otherwise ProgressiveRefinement; SolverMethod says why.
+  /// Auto (default): Clustered from 20,000 patches of fewer than 8 elements each, else
+  /// Hierarchical from 5,000 element-patch pairs (elements x patches, with Analytic
+  /// factors), otherwise ProgressiveRefinement; SolverMethod says why.
   vtkSetClampMacro(SolverMethod, int, SOLVER_AUTO, CLUSTERED);
   vtkGetMacro(SolverMethod, int);
   void SetSolverMethodToAuto() { this->SetSolverMethod(SOLVER_AUTO); }

@@ -84,8 +84,8 @@ TEST(Clustered, FurnaceGivesOneOverOneMinusRho)
 
 TEST(Clustered, SphereRoomEqualsProgressiveRefinement)
 {
-  // A 1,200-triangle sphere in face clusters: mixed-orientation clusters link whole.
-  const SceneMesh mesh = SphereRoom(3, 1200, 0.5, 0.25);
+  // A 600-triangle sphere in face clusters: mixed-orientation clusters link whole.
+  const SceneMesh mesh = SphereRoom(3, 600, 0.5, 0.35);
   const Solution a = Solve(mesh, 3, Options(SolverMethod::Clustered, 1e-4)), b = Reference(mesh, 3);
   for (double d : RelativeDifference(mesh, a, b))
   {
@@ -147,11 +147,25 @@ TEST(Clustered, AStoppedSolveKeepsTheDirectLightAndBooksTheRest)
 
 TEST(Clustered, HundredThousandTriangleSphereRoomSolves)
 {
-  const int lamps = 3;
+  const int lamps = 1; // the links are the cost to test; each light adds to the bounces only
   const SceneMesh mesh = SphereRoom(lamps, 100000, 0.5, 0.1);
   ASSERT_GT(mesh.NumberOfPolygons(), 50000);
   const Solution s = Solve(mesh, lamps, Options(SolverMethod::Clustered, 1e-3));
   const SolverStatistics& st = s.Statistics;
   EXPECT_TRUE(st.Converged);
   EXPECT_NEAR(st.EmittedPower, radiosity_test::AbsorbedPower(mesh, s) + st.EscapedPower + st.UnshotPower, 1e-6 * st.EmittedPower);
+}
+
+TEST(Clustered, AutoPicksItWhereThePolygonsAreThePatches)
+{
+  // 21,600 patches of one element each: every polygon would be a shooter. A large-patch
+  // box of as many elements stays hierarchical. (A budget of nothing: only the choice counts.)
+  SolverOptions automatic = Converged(1e-3);
+  automatic.TimeBudget = 1e-9;
+  const SceneMesh tiny = Box(2.0, 60, 1, { 0.5, 0.5, 0.5 }, [](int f) { return f == 1 ? 0 : -1; });
+  const Solution a = Solve(tiny, 1, automatic);
+  EXPECT_EQ(a.Statistics.Method, SolverMethod::Clustered);
+  EXPECT_NE(a.Statistics.MethodReason.find("polygons are the patches"), std::string::npos) << a.Statistics.MethodReason;
+  const SceneMesh large = Box(2.0, 60, 6, { 0.5, 0.5, 0.5 }, [](int f) { return f == 1 ? 0 : -1; });
+  EXPECT_EQ(Solve(large, 1, automatic).Statistics.Method, SolverMethod::Hierarchical);
 }

@@ -66,5 +66,5 @@ def compare(label, path, patch, element):
 
 
 compare("paper scene, 3 lights", os.path.join(DATA, "paper_3lights.vtp"), 1.0, 0.25)
-cornell = compare("Cornell box", os.path.join(DATA, "cornell_box.vtp"), 100.0, 25.0)
+cornell = compare("Cornell box", os.path.join(DATA, "cornell_box.vtp"), 100.0, 50.0)
 finish("TestClustered")
