@@ -85,7 +85,7 @@ TEST(Clustered, FurnaceGivesOneOverOneMinusRho)
 TEST(Clustered, SphereRoomEqualsProgressiveRefinement)
 {
   // A 600-triangle sphere in face clusters: mixed-orientation clusters link whole.
-  const SceneMesh mesh = SphereRoom(3, 600, 0.5, 0.35);
+  const SceneMesh mesh = SphereRoom(3, 600, 0.5, 0.5);
   const Solution a = Solve(mesh, 3, Options(SolverMethod::Clustered, 1e-4)), b = Reference(mesh, 3);
   for (double d : RelativeDifference(mesh, a, b))
   {

@@ -21,6 +21,11 @@ SolverOptions BasisOptions(const SolverOptions& options)
   basis.AmbientTerm = false;
   basis.SeparateDirect = false;
   basis.Hierarchical.DirectToElements = false; // every patch emits: links, not P x N factors
+  if (basis.Solver == SolverMethod::Clustered)
+  {
+    // Its node sums hold every solution at every node: one per patch here is too many.
+    basis.Solver = SolverMethod::Hierarchical;
+  }
   return basis;
 }
 

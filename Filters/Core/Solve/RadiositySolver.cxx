@@ -44,7 +44,10 @@ SolverMethod ResolveMethod(const SolverOptions& options, int elements, int patch
     reason = "chosen by Auto: the hemicube and Monte Carlo estimators are progressive only";
     return SolverMethod::ProgressiveRefinement;
   }
-  if (patches >= kClusteredPatches && elements < kClusteredElementsPerPatch * patches)
+  // Not for the moving-light basis (every patch emits, one solution each: DirectToElements
+  // off), whose solutions the clustered method's node sums could not hold.
+  if (patches >= kClusteredPatches && elements < kClusteredElementsPerPatch * patches &&
+    options.Hierarchical.DirectToElements)
   {
     std::snprintf(text, sizeof(text), "chosen by Auto: %d patches of %.1f elements (>= %d, < %.0f): polygons are the patches",
       patches, static_cast<double>(elements) / patches, kClusteredPatches, kClusteredElementsPerPatch);

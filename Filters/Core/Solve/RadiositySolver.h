@@ -92,7 +92,8 @@ struct SolverOptions
   {
     /// An emitter's first shot (its direct light) reaches every element with its own
     /// shadow rays, as in progressive refinement. Off: it links like any other shooter,
-    /// which is much cheaper when many patches emit (the moving-light basis).
+    /// which is much cheaper when many patches emit (the moving-light basis). Off also
+    /// keeps Auto from the clustered method, which shoots every emitter first.
     bool DirectToElements = true;
     /// A far link that would carry at least this fraction of a solution's emitted power
     /// at its first shot is resolved element by element. 0 (the default) refines by
