@@ -14,6 +14,7 @@ struct ClusterLinkBuilder::Found
   std::vector<float> Coupling, Direction, LeafFactor;
   std::vector<unsigned char> Mixed;
   long long Rays = 0;
+  std::vector<Vec3> Loop, Scratch; ///< NearFactor's buffers, reused over the task's pairs
 };
 
 namespace
@@ -231,10 +232,9 @@ void ClusterLinkBuilder::AddFar(int a, int b, Found& found) const
 void ClusterLinkBuilder::AddNear(int a, int b, Found& found) const
 {
   const int ea = Tree.ElementOf(a), eb = Tree.ElementOf(b);
-  std::vector<Vec3> scratch;
   // The point rule at either end estimates the same A_a F_ab = A_b F_ba: their mean, made
   // reciprocal, errs less than either (measured against progressive refinement).
-  const double exchange = 0.5 * (NearFactor(ea, eb, scratch) * G.area[ea] + NearFactor(eb, ea, scratch) * G.area[eb]);
+  const double exchange = 0.5 * (NearFactor(ea, eb, found) * G.area[ea] + NearFactor(eb, ea, found) * G.area[eb]);
   const double fromA = exchange / G.area[ea], fromB = exchange / G.area[eb];
   if (exchange <= 0)
   {
@@ -254,9 +254,11 @@ void ClusterLinkBuilder::AddNear(int a, int b, Found& found) const
   }
 }
 
-double ClusterLinkBuilder::NearFactor(int from, int to, std::vector<Vec3>& scratch) const
+double ClusterLinkBuilder::NearFactor(int from, int to, Found& found) const
 {
-  std::vector<Vec3> loop;
+  std::vector<Vec3>& loop = found.Loop;
+  std::vector<Vec3>& scratch = found.Scratch;
+  loop.clear();
   for (int i = 0; i < Mesh.PolygonSize(to); ++i)
   {
     loop.push_back(Mesh.points[Mesh.Polygon(to)[i]]);

@@ -92,7 +92,7 @@ private:
   /// True when node b's centre lies in front of every plane of a's elements: then a
   /// gathers from b as from a point, with a positive cosine at each of its elements.
   bool FacesCentre(int a, int b) const;
-  double NearFactor(int from, int to, std::vector<Vec3>& scratch) const;
+  double NearFactor(int from, int to, Found& found) const;
   /// Fraction of shadow rays between the nodes that arrive (only rays from the front of
   /// one to the front of the other count); 1 without rays.
   double Visible(int a, int b, long long& rays) const;
