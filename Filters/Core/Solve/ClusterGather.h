@@ -11,15 +11,18 @@
 namespace radiosity
 {
 
-/// Per node and solution the source sums are the sum of x A n (3 values) and, for the
-/// series, of x A and x A n n^T (7); the receiver sums the irradiance vector (3) for links
-/// whose receiver faces them, and 1, w, w w^T weighted by the arriving flux (10) for the
-/// others. The vector parts are kept apart: most links read and write only them.
+/// The values of every solution and color channel of one element or node side by side
+/// ("lanes"): a link does the same arithmetic on each lane, which the compiler vectorizes.
+/// Per node and lane the source sums are the sum of x A n (3 values) and, for the series, of
+/// x A and x A n n^T (7), kept in float: a bounce reads them once per link, so their size
+/// is its speed. The receiver sums (double) are the irradiance vector (3) for links whose
+/// receiver faces them, and 1, w, w w^T weighted by the arriving flux (10) for the others.
 template <typename Value>
 class ClusterGather
 {
 public:
   static constexpr int kVector = 3, kSourceSeries = 7, kReceiverSeries = 10;
+  static constexpr int kChannels = sizeof(Value) / sizeof(double);
 
   ClusterGather(const SceneGeometry& g, const ElementTree& tree, const ClusterLinkSet& links, const WorkerPool& pool)
     : G(g)
@@ -39,47 +42,46 @@ public:
   /// near sums over the ranks (Sums) before Collect where several share the links.
   void Scatter(const std::vector<Value>& sending, int L)
   {
-    PullUp(sending, L);
-    const size_t nodes = Tree.Nodes().size() * static_cast<size_t>(L);
-    ReceivedVector.assign(nodes * kVector, Value());
-    ReceivedSeries.assign(nodes * kReceiverSeries, Value());
-    Near.assign(sending.size(), Value());
+    W = L * kChannels;
+    const double* x = reinterpret_cast<const double*>(sending.data());
+    PullUp(x);
+    const size_t nodes = Tree.Nodes().size();
+    ReceivedVector.assign(nodes * kVector * W, 0.0);
+    ReceivedSeries.assign(nodes * kReceiverSeries * W, 0.0);
+    Near.assign(G.normal.size() * W, 0.0);
     Pool.For(static_cast<int>(FarRuns.size()) - 1, 64, [&](int begin, int end) {
-      for (int i = FarRuns[begin]; i < FarRuns[end]; ++i)
+      std::vector<double> lanes((kVector + kReceiverSeries + 1) * W);
+      for (int run = begin; run < end; ++run)
       {
-        FarLink(i, L);
+        FarRun(FarRuns[run], FarRuns[run + 1], lanes.data());
       }
     });
     Pool.For(static_cast<int>(NearRuns.size()) - 1, 256, [&](int begin, int end) {
-      for (int i = NearRuns[begin]; i < NearRuns[end]; ++i)
+      for (int run = begin; run < end; ++run)
       {
-        const size_t to = static_cast<size_t>(Links.LeafReceiver[i]) * L, from = static_cast<size_t>(Links.LeafSource[i]) * L;
-        for (int m = 0; m < L; ++m)
-        {
-          Near[to + m] += sending[from + m] * Links.LeafFactor[i];
-        }
+        NearRun(NearRuns[run], NearRuns[run + 1], x);
       }
     });
   }
 
   /// The sums Scatter left, for a sum over the ranks.
-  std::vector<std::vector<Value>*> Sums() { return { &ReceivedVector, &ReceivedSeries, &Near }; }
+  std::vector<std::vector<double>*> Sums() { return { &ReceivedVector, &ReceivedSeries, &Near }; }
 
   /// Pushes the node sums down and evaluates each element's irradiance.
   void Collect(int L, std::vector<Value>& irradiance)
   {
-    PushDown(ReceivedVector, kVector * L);
-    PushDown(ReceivedSeries, kReceiverSeries * L);
-    irradiance.assign(Near.size(), Value());
+    W = L * kChannels;
+    PushDown(ReceivedVector, static_cast<size_t>(kVector) * W);
+    PushDown(ReceivedSeries, static_cast<size_t>(kReceiverSeries) * W);
+    irradiance.assign(G.normal.size() * L, Value());
+    double* out = reinterpret_cast<double*>(irradiance.data());
     Pool.For(static_cast<int>(G.normal.size()), 512, [&](int begin, int end) {
       for (int e = begin; e < end; ++e)
       {
         const int leaf = Tree.LeafOf(e);
-        for (int m = 0; m < L && leaf >= 0; ++m)
+        if (leaf >= 0)
         {
-          const size_t at = static_cast<size_t>(leaf) * L + m;
-          irradiance[static_cast<size_t>(e) * L + m] = AtElement(ReceivedVector.data() + at * kVector,
-            ReceivedSeries.data() + at * kReceiverSeries, G.normal[e]) + Near[static_cast<size_t>(e) * L + m];
+          AtElement(leaf, e, out + static_cast<size_t>(e) * W);
         }
       }
     });
@@ -113,86 +115,156 @@ private:
     Divide(Tree.Nodes()[n].Right, limit);
   }
 
-  void FarLink(int i, int L)
+  /// One receiver's far links, summed in `lanes` (vector, series, flux) and stored once.
+  void FarRun(int begin, int end, double* lanes)
   {
-    const float* d = Links.Direction.data() + 3 * i;
-    const Vec3 u{ d[0], d[1], d[2] };
-    const bool mixedSource = (Links.Mixed[i] & 1) != 0, mixedReceiver = (Links.Mixed[i] & 2) != 0;
-    const double w[6] = { u.x * u.x, u.x * u.y, u.x * u.z, u.y * u.y, u.y * u.z, u.z * u.z };
-    const double c = Links.Coupling[i];
-    const size_t source = static_cast<size_t>(Links.Source[i]) * L, receiver = static_cast<size_t>(Links.Receiver[i]) * L;
-    for (int m = 0; m < L; ++m)
+    double* vector = lanes;
+    double* series = lanes + kVector * W;
+    double* flux = series + kReceiverSeries * W;
+    std::fill(lanes, lanes + (kVector + kReceiverSeries) * W, 0.0);
+    bool mixedAny = false;
+    for (int i = begin; i < end; ++i)
     {
-      const Value* s = SentVector.data() + (source + m) * kVector;
-      const Value along = s[0] * u.x + s[1] * u.y + s[2] * u.z;
-      Value flux = along * c;
-      if (mixedSource)
+      const float* d = Links.Direction.data() + 3 * i;
+      const double u[3] = { d[0], d[1], d[2] };
+      Flux(i, u, flux);
+      if ((Links.Mixed[i] & 2) == 0)
       {
-        const Value* q = SentSeries.data() + (source + m) * kSourceSeries; // x A, then x A n n^T
-        const Value quadratic = q[1] * w[0] + q[4] * w[3] + q[6] * w[5] + (q[2] * w[1] + q[3] * w[2] + q[5] * w[4]) * 2.0;
-        flux = (q[0] * 0.25 + along * 0.5 + (quadratic * 3.0 - q[0]) * (5.0 / 32.0)) * c;
-      }
-      if (!mixedReceiver)
-      {
-        Value* r = ReceivedVector.data() + (receiver + m) * kVector;
-        r[0] += flux * -u.x; // towards the source: n . (-u) > 0 at each receiving element
-        r[1] += flux * -u.y;
-        r[2] += flux * -u.z;
+        for (int k = 0; k < kVector; ++k)
+        {
+          for (int j = 0; j < W; ++j)
+          {
+            vector[k * W + j] -= flux[j] * u[k]; // towards the source: n . (-u) > 0 at each receiving element
+          }
+        }
         continue;
       }
-      Value* r = ReceivedSeries.data() + (receiver + m) * kReceiverSeries;
-      r[0] += flux;
-      r[1] += flux * -u.x;
-      r[2] += flux * -u.y;
-      r[3] += flux * -u.z;
+      mixedAny = true;
+      const double w[kReceiverSeries] = { 1, -u[0], -u[1], -u[2], u[0] * u[0], u[0] * u[1], u[0] * u[2], u[1] * u[1],
+        u[1] * u[2], u[2] * u[2] };
+      for (int k = 0; k < kReceiverSeries; ++k)
+      {
+        for (int j = 0; j < W; ++j)
+        {
+          series[k * W + j] += flux[j] * w[k];
+        }
+      }
+    }
+    const size_t receiver = Links.Receiver[begin];
+    std::copy(vector, vector + kVector * W, ReceivedVector.data() + receiver * kVector * W);
+    if (mixedAny)
+    {
+      std::copy(series, series + kReceiverSeries * W, ReceivedSeries.data() + receiver * kReceiverSeries * W);
+    }
+  }
+
+  /// What link i carries towards its receiver per lane: Coupling x the source's emission
+  /// along u (its area vector's projection, or the clamped cosine's series where mixed).
+  void Flux(int i, const double* u, double* flux) const
+  {
+    const double c = Links.Coupling[i];
+    const float* s = SentVector.data() + static_cast<size_t>(Links.Source[i]) * kVector * W;
+    for (int j = 0; j < W; ++j)
+    {
+      flux[j] = (s[j] * u[0] + s[W + j] * u[1] + s[2 * W + j] * u[2]) * c;
+    }
+    if ((Links.Mixed[i] & 1) == 0)
+    {
+      return;
+    }
+    const float* q = SentSeries.data() + static_cast<size_t>(Links.Source[i]) * kSourceSeries * W; // x A, then x A n n^T
+    const double w[6] = { u[0] * u[0], 2 * u[0] * u[1], 2 * u[0] * u[2], u[1] * u[1], 2 * u[1] * u[2], u[2] * u[2] };
+    for (int j = 0; j < W; ++j)
+    {
+      double quadratic = 0;
       for (int k = 0; k < 6; ++k)
       {
-        r[4 + k] += flux * w[k];
+        quadratic += q[(1 + k) * W + j] * w[k];
+      }
+      const double area = q[j];
+      flux[j] = area * 0.25 * c + flux[j] * 0.5 + (quadratic * 3.0 - area) * (5.0 / 32.0) * c;
+    }
+  }
+
+  /// One receiving element's near links.
+  void NearRun(int begin, int end, const double* sending)
+  {
+    double* to = Near.data() + static_cast<size_t>(Links.LeafReceiver[begin]) * W;
+    for (int i = begin; i < end; ++i)
+    {
+      const double* from = sending + static_cast<size_t>(Links.LeafSource[i]) * W;
+      const double f = Links.LeafFactor[i];
+      for (int j = 0; j < W; ++j)
+      {
+        to[j] += from[j] * f;
       }
     }
   }
 
-  /// What an element of normal n receives from its node's sums.
-  static Value AtElement(const Value* v, const Value* r, const Vec3& n)
+  /// What element e of normal n receives from its leaf's sums, per lane.
+  void AtElement(int leaf, int e, double* out) const
   {
-    const Value along = r[1] * n.x + r[2] * n.y + r[3] * n.z;
-    const Value quadratic = r[4] * (n.x * n.x) + r[7] * (n.y * n.y) + r[9] * (n.z * n.z) +
-      (r[5] * (n.x * n.y) + r[6] * (n.x * n.z) + r[8] * (n.y * n.z)) * 2.0;
-    return v[0] * n.x + v[1] * n.y + v[2] * n.z + r[0] * 0.25 + along * 0.5 + (quadratic * 3.0 - r[0]) * (5.0 / 32.0);
+    const Vec3& n = G.normal[e];
+    const double* v = ReceivedVector.data() + static_cast<size_t>(leaf) * kVector * W;
+    const double* r = ReceivedSeries.data() + static_cast<size_t>(leaf) * kReceiverSeries * W;
+    const double* near = Near.data() + static_cast<size_t>(e) * W;
+    const double w[6] = { n.x * n.x, 2 * n.x * n.y, 2 * n.x * n.z, n.y * n.y, 2 * n.y * n.z, n.z * n.z };
+    for (int j = 0; j < W; ++j)
+    {
+      const double along = r[W + j] * n.x + r[2 * W + j] * n.y + r[3 * W + j] * n.z;
+      double quadratic = 0;
+      for (int k = 0; k < 6; ++k)
+      {
+        quadratic += r[(4 + k) * W + j] * w[k];
+      }
+      out[j] = v[j] * n.x + v[W + j] * n.y + v[2 * W + j] * n.z + r[j] * 0.25 + along * 0.5 +
+        (quadratic * 3.0 - r[j]) * (5.0 / 32.0) + near[j];
+    }
   }
 
-  void PullUp(const std::vector<Value>& sending, int L)
+  void PullUpLeaf(int n, const double* sending)
+  {
+    const int e = Tree.ElementOf(n);
+    const Vec3& v = G.normal[e];
+    const double a = G.area[e];
+    const double vector[kVector] = { a * v.x, a * v.y, a * v.z };
+    const double moments[kSourceSeries] = { a, a * v.x * v.x, a * v.x * v.y, a * v.x * v.z, a * v.y * v.y, a * v.y * v.z,
+      a * v.z * v.z };
+    const double* x = sending + static_cast<size_t>(e) * W;
+    float* toVector = SentVector.data() + static_cast<size_t>(n) * kVector * W;
+    float* toSeries = SentSeries.data() + static_cast<size_t>(n) * kSourceSeries * W;
+    for (int k = 0; k < kVector; ++k)
+    {
+      for (int j = 0; j < W; ++j)
+      {
+        toVector[k * W + j] = static_cast<float>(x[j] * vector[k]);
+      }
+    }
+    for (int k = 0; k < kSourceSeries; ++k)
+    {
+      for (int j = 0; j < W; ++j)
+      {
+        toSeries[k * W + j] = static_cast<float>(x[j] * moments[k]);
+      }
+    }
+  }
+
+  void PullUp(const double* sending)
   {
     const std::vector<ElementTree::Node>& nodes = Tree.Nodes();
-    const size_t vector = static_cast<size_t>(kVector) * L, series = static_cast<size_t>(kSourceSeries) * L;
-    SentVector.assign(nodes.size() * vector, Value());
-    SentSeries.assign(nodes.size() * series, Value());
+    const size_t vector = static_cast<size_t>(kVector) * W, series = static_cast<size_t>(kSourceSeries) * W;
+    SentVector.assign(nodes.size() * vector, 0.0f);
+    SentSeries.assign(nodes.size() * series, 0.0f);
     const auto node = [&](int n) {
-      Value* toVector = SentVector.data() + n * vector;
-      Value* toSeries = SentSeries.data() + n * series;
       if (Tree.IsLeaf(n))
       {
-        const int e = Tree.ElementOf(n);
-        const Vec3& v = G.normal[e];
-        const double a = G.area[e];
-        const double moments[kSourceSeries] = { a, a * v.x * v.x, a * v.x * v.y, a * v.x * v.z, a * v.y * v.y,
-          a * v.y * v.z, a * v.z * v.z };
-        for (int m = 0; m < L; ++m)
-        {
-          const Value x = sending[static_cast<size_t>(e) * L + m];
-          for (int k = 0; k < kVector; ++k)
-          {
-            toVector[m * kVector + k] = x * (a * v[k]);
-          }
-          for (int k = 0; k < kSourceSeries; ++k)
-          {
-            toSeries[m * kSourceSeries + k] = x * moments[k];
-          }
-        }
+        PullUpLeaf(n, sending);
         return;
       }
-      Add(SentVector.data() + nodes[n].Left * vector, SentVector.data() + nodes[n].Right * vector, toVector, vector);
-      Add(SentSeries.data() + nodes[n].Left * series, SentSeries.data() + nodes[n].Right * series, toSeries, series);
+      Add(SentVector.data() + nodes[n].Left * vector, SentVector.data() + nodes[n].Right * vector,
+        SentVector.data() + n * vector, vector);
+      Add(SentSeries.data() + nodes[n].Left * series, SentSeries.data() + nodes[n].Right * series,
+        SentSeries.data() + n * series, series);
     };
     Pool.For(static_cast<int>(Subtrees.size()), 1, [&](int begin, int end) {
       for (int s = begin; s < end; ++s)
@@ -209,7 +281,7 @@ private:
     }
   }
 
-  static void Add(const Value* a, const Value* b, Value* to, size_t count)
+  static void Add(const float* a, const float* b, float* to, size_t count)
   {
     for (size_t j = 0; j < count; ++j)
     {
@@ -218,7 +290,7 @@ private:
   }
 
   /// Adds each node's sums (`width` values) to its children's, root first.
-  void PushDown(std::vector<Value>& sums, size_t width)
+  void PushDown(std::vector<double>& sums, size_t width)
   {
     const std::vector<ElementTree::Node>& nodes = Tree.Nodes();
     const auto node = [&](int n) {
@@ -226,9 +298,9 @@ private:
       {
         return;
       }
-      const Value* from = sums.data() + n * width;
-      Value* left = sums.data() + nodes[n].Left * width;
-      Value* right = sums.data() + nodes[n].Right * width;
+      const double* from = sums.data() + n * width;
+      double* left = sums.data() + nodes[n].Left * width;
+      double* right = sums.data() + nodes[n].Right * width;
       for (size_t j = 0; j < width; ++j)
       {
         left[j] += from[j];
@@ -256,7 +328,9 @@ private:
   const WorkerPool& Pool;
   const std::vector<int> FarRuns, NearRuns;
   std::vector<int> Top, Subtrees;
-  std::vector<Value> SentVector, SentSeries, ReceivedVector, ReceivedSeries, Near;
+  int W = 1; ///< lanes: solutions x channels
+  std::vector<float> SentVector, SentSeries;
+  std::vector<double> ReceivedVector, ReceivedSeries, Near;
 };
 
 } // namespace radiosity

@@ -71,10 +71,24 @@ ClusterLinkBuilder::ClusterLinkBuilder(const SceneMesh& mesh, const SceneGeometr
   , Options(options)
   , AreaBefore(tree.Elements().size() + 1, 0.0)
   , Epsilon(1e-6 * g.sceneDiagonal)
+  , FanArea(mesh.connectivity.size(), 0.0)
+  , FanTotal(g.normal.size(), 0.0)
 {
   for (size_t i = 0; i < tree.Elements().size(); ++i)
   {
     AreaBefore[i + 1] = AreaBefore[i] + g.area[tree.Elements()[i]];
+  }
+  // Sampling a point asks for these hundreds of millions of times.
+  for (int e = 0; e < static_cast<int>(g.normal.size()); ++e)
+  {
+    const int* ids = mesh.Polygon(e);
+    const int count = mesh.PolygonSize(e);
+    for (int k = 0; k < count; ++k)
+    {
+      const double a = Norm(Cross(mesh.points[ids[k]] - g.centroid[e], mesh.points[ids[(k + 1) % count]] - g.centroid[e]));
+      FanArea[mesh.offsets[e] + k] = a;
+      FanTotal[e] += a;
+    }
   }
 }
 
@@ -307,16 +321,12 @@ Vec3 ClusterLinkBuilder::SamplePoint(int node, double u, SampleStream& random, V
   const int* ids = Mesh.Polygon(e);
   const int count = Mesh.PolygonSize(e);
   const Vec3& c = G.centroid[e];
-  double total = 0;
-  for (int k = 0; k < count; ++k)
-  {
-    total += Norm(Cross(Mesh.points[ids[k]] - c, Mesh.points[ids[(k + 1) % count]] - c));
-  }
-  double pick = random.Next() * total;
+  const double* fan = FanArea.data() + Mesh.offsets[e];
+  double pick = random.Next() * FanTotal[e];
   int k = 0;
   for (; k < count - 1; ++k)
   {
-    pick -= Norm(Cross(Mesh.points[ids[k]] - c, Mesh.points[ids[(k + 1) % count]] - c));
+    pick -= fan[k];
     if (pick < 0)
     {
       break;

@@ -115,6 +115,9 @@ private:
   const ClusterLinkOptions Options;
   std::vector<double> AreaBefore; ///< prefix sums of area in tree order
   double Epsilon = 0;
+  /// Twice the area of each fan triangle around an element's centroid (one per corner, at
+  /// the polygon's offset), and their sum per element: where SamplePoint picks a point.
+  std::vector<double> FanArea, FanTotal;
 };
 
 } // namespace radiosity

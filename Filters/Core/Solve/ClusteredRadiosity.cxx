@@ -229,9 +229,9 @@ private:
     while (AnyActive() && KeepGoing(IterationFraction()))
     {
       gather.Scatter(Last, L);
-      for (std::vector<Value>* sums : Group.Distributed() ? gather.Sums() : std::vector<std::vector<Value>*>())
+      for (std::vector<double>* sums : Group.Distributed() ? gather.Sums() : std::vector<std::vector<double>*>())
       {
-        SumOverRanks(*sums); // each rank gathered along its own share of the links
+        Group.Sum(*sums); // each rank gathered along its own share of the links
       }
       gather.Collect(L, irradiance);
       Bounce(irradiance);
