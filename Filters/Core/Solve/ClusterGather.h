@@ -125,6 +125,7 @@ private:
     bool mixedAny = false;
     for (int i = begin; i < end; ++i)
     {
+      Prefetch(i + kAhead);
       const float* d = Links.Direction.data() + 3 * i;
       const double u[3] = { d[0], d[1], d[2] };
       Flux(i, u, flux);
@@ -155,6 +156,31 @@ private:
     if (mixedAny)
     {
       std::copy(series, series + kReceiverSeries * W, ReceivedSeries.data() + receiver * kReceiverSeries * W);
+    }
+  }
+
+  /// The sources are scattered over memory: a bounce waits on their sums unless they are
+  /// asked for a few links ahead.
+  static constexpr int kAhead = 6;
+  void Prefetch(int i) const
+  {
+    if (i >= static_cast<int>(Links.Source.size()))
+    {
+      return;
+    }
+    const size_t source = static_cast<size_t>(Links.Source[i]);
+    const char* vector = reinterpret_cast<const char*>(SentVector.data() + source * kVector * W);
+    for (size_t at = 0; at < kVector * W * sizeof(float); at += 64)
+    {
+      __builtin_prefetch(vector + at);
+    }
+    if ((Links.Mixed[i] & 1) != 0)
+    {
+      const char* series = reinterpret_cast<const char*>(SentSeries.data() + source * kSourceSeries * W);
+      for (size_t at = 0; at < kSourceSeries * W * sizeof(float); at += 64)
+      {
+        __builtin_prefetch(series + at);
+      }
     }
   }
 
