@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace radiosity
 {
@@ -25,41 +26,56 @@ namespace
 constexpr double kHiddenRadii = 2.0;
 constexpr int kHiddenRays = 16;
 
-/// Stable counting sort of the links by receiver: the order the gathering runs in, each
-/// receiver's links in one thread.
-std::vector<int> ByReceiver(const std::vector<int>& receiver, int receivers)
-{
-  std::vector<int> start(receivers + 1, 0);
-  for (int r : receiver)
-  {
-    ++start[r + 1];
-  }
-  for (int i = 0; i < receivers; ++i)
-  {
-    start[i + 1] += start[i];
-  }
-  std::vector<int> order(receiver.size());
-  for (int i = 0; i < static_cast<int>(receiver.size()); ++i)
-  {
-    order[start[receiver[i]]++] = i;
-  }
-  return order;
-}
-
-template <typename T>
-std::vector<T> Permuted(const std::vector<T>& values, const std::vector<int>& order, int width = 1)
-{
-  std::vector<T> out(values.size());
-  for (size_t i = 0; i < order.size(); ++i)
-  {
-    for (int k = 0; k < width; ++k)
-    {
-      out[width * i + k] = values[width * static_cast<size_t>(order[i]) + k];
-    }
-  }
-  return out;
-}
 } // namespace
+
+void ClusterLinkBuilder::SortByReceiver(std::vector<Found>& found, ClusterLinkSet& links) const
+{
+  // A counting sort over every task's links, in task order: each task's lists are freed
+  // once placed, so the links are held at most twice.
+  std::vector<size_t> far(Tree.Nodes().size() + 1, 0), near(G.normal.size() + 1, 0);
+  for (const Found& f : found)
+  {
+    for (int r : f.Receiver)
+    {
+      ++far[r + 1];
+    }
+    for (int r : f.LeafReceiver)
+    {
+      ++near[r + 1];
+    }
+    links.Rays += f.Rays;
+  }
+  std::partial_sum(far.begin(), far.end(), far.begin());
+  std::partial_sum(near.begin(), near.end(), near.begin());
+  links.Receiver.resize(far.back());
+  links.Source.resize(far.back());
+  links.Coupling.resize(far.back());
+  links.Direction.resize(3 * far.back());
+  links.Mixed.resize(far.back());
+  links.LeafReceiver.resize(near.back());
+  links.LeafSource.resize(near.back());
+  links.LeafFactor.resize(near.back());
+  for (Found& f : found)
+  {
+    for (size_t i = 0; i < f.Receiver.size(); ++i)
+    {
+      const size_t at = far[f.Receiver[i]]++;
+      links.Receiver[at] = f.Receiver[i];
+      links.Source[at] = f.Source[i];
+      links.Coupling[at] = f.Coupling[i];
+      links.Mixed[at] = f.Mixed[i];
+      std::copy_n(f.Direction.begin() + 3 * i, 3, links.Direction.begin() + 3 * at);
+    }
+    for (size_t i = 0; i < f.LeafReceiver.size(); ++i)
+    {
+      const size_t at = near[f.LeafReceiver[i]]++;
+      links.LeafReceiver[at] = f.LeafReceiver[i];
+      links.LeafSource[at] = f.LeafSource[i];
+      links.LeafFactor[at] = f.LeafFactor[i];
+    }
+    f = Found();
+  }
+}
 
 ClusterLinkBuilder::ClusterLinkBuilder(const SceneMesh& mesh, const SceneGeometry& g, const ElementTree& tree,
   const Visibility& rays, const ShooterFormFactors& culling, const ClusterLinkOptions& options)
@@ -448,30 +464,7 @@ ClusterLinkSet ClusterLinkBuilder::Build(
       }
     });
   }
-  Found all;
-  for (Found& f : found)
-  {
-    all.Receiver.insert(all.Receiver.end(), f.Receiver.begin(), f.Receiver.end());
-    all.Source.insert(all.Source.end(), f.Source.begin(), f.Source.end());
-    all.Coupling.insert(all.Coupling.end(), f.Coupling.begin(), f.Coupling.end());
-    all.Direction.insert(all.Direction.end(), f.Direction.begin(), f.Direction.end());
-    all.Mixed.insert(all.Mixed.end(), f.Mixed.begin(), f.Mixed.end());
-    all.LeafReceiver.insert(all.LeafReceiver.end(), f.LeafReceiver.begin(), f.LeafReceiver.end());
-    all.LeafSource.insert(all.LeafSource.end(), f.LeafSource.begin(), f.LeafSource.end());
-    all.LeafFactor.insert(all.LeafFactor.end(), f.LeafFactor.begin(), f.LeafFactor.end());
-    links.Rays += f.Rays;
-    f = Found();
-  }
-  const std::vector<int> far = ByReceiver(all.Receiver, static_cast<int>(Tree.Nodes().size()));
-  links.Receiver = Permuted(all.Receiver, far);
-  links.Source = Permuted(all.Source, far);
-  links.Coupling = Permuted(all.Coupling, far);
-  links.Direction = Permuted(all.Direction, far, 3);
-  links.Mixed = Permuted(all.Mixed, far);
-  const std::vector<int> near = ByReceiver(all.LeafReceiver, static_cast<int>(G.normal.size()));
-  links.LeafReceiver = Permuted(all.LeafReceiver, near);
-  links.LeafSource = Permuted(all.LeafSource, near);
-  links.LeafFactor = Permuted(all.LeafFactor, near);
+  SortByReceiver(found, links);
   return links;
 }
 

@@ -78,6 +78,9 @@ private:
   };
   struct Found; // one task's links
   Pair Classify(int a, int b) const;
+  /// Every task's links into `links`, sorted by receiver (the order the gathering runs in,
+  /// each receiver's links in one thread), in the order the tasks found them.
+  void SortByReceiver(std::vector<Found>& found, ClusterLinkSet& links) const;
   std::vector<Task> Frontier(int wanted) const;
   /// The pairs a pair splits into: both halves of a node paired with itself, else the
   /// halves of the larger node with the other.
