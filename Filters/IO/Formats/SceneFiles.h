@@ -22,6 +22,9 @@ std::string Read(const std::string& path, radiosity::RawScene& raw, std::vector<
 std::string ReadObj(const std::string& path, radiosity::RawScene& raw, std::vector<std::string>& warnings);
 std::string ReadGltf(const std::string& path, radiosity::RawScene& raw, std::vector<std::string>& warnings);
 std::string ReadPly(const std::string& path, radiosity::RawScene& raw, std::vector<std::string>& warnings);
+/// Empty when every count, list and face index of the PLY file fits what the file holds;
+/// otherwise the error (vtkPLYReader would crash on such a file).
+std::string CheckPly(const std::string& path);
 std::string ReadVrml(const std::string& path, radiosity::RawScene& raw, std::vector<std::string>& warnings);
 std::string ReadWithAssimp(const std::string& path, radiosity::RawScene& raw, std::vector<std::string>& warnings);
 

@@ -79,6 +79,11 @@ std::vector<radiosity::Vec3> PolygonColors(vtkPolyData* data)
 
 std::string ReadPly(const std::string& path, radiosity::RawScene& raw, std::vector<std::string>& warnings)
 {
+  const std::string unsafe = CheckPly(path);
+  if (!unsafe.empty())
+  {
+    return unsafe;
+  }
   vtkNew<vtkPLYReader> reader;
   reader->SetFileName(path.c_str());
   const ErrorCapture capture(reader);

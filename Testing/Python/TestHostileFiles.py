@@ -1,0 +1,147 @@
+"""Hostile PLY files through import_scene: never a crash, one clear error naming the file.
+
+vtkPLYReader trusts a PLY's header: a count larger than the file, a list longer than its
+line or a face index past the vertices ends in an assert or a segfault inside VTK. The
+corpus is written here (no binaries committed): the cases an adversarial run found, then
+random mutations of a valid ASCII and a valid binary file (header counts, truncations,
+flipped bytes). All files are read by one child process that names each file before it
+reads it, so a crash is caught and pinned on its file. For a long run:
+    RELIGHT_HOSTILE_CASES=10000 ./relight python Testing/Python/TestHostileFiles.py
+"""
+
+import os
+import pathlib
+import random
+import struct
+import subprocess
+import sys
+import tempfile
+
+from testlib import check, finish
+
+CASES = int(os.environ.get("RELIGHT_HOSTILE_CASES", "300"))
+rng = random.Random(int(os.environ.get("RELIGHT_HOSTILE_SEED", "26")))
+TRIANGLE = [(0, 0, 0), (1, 0, 0), (0, 1, 0)]
+
+
+def ascii_ply(vertices, faces, lines):
+    header = (f"ply\nformat ascii 1.0\nelement vertex {vertices}\nproperty float x\nproperty float y\n"
+              f"property float z\nelement face {faces}\nproperty list uchar int vertex_indices\nend_header\n")
+    return (header + "".join(f"{x} {y} {z}\n" for x, y, z in TRIANGLE) + "".join(lines)).encode()
+
+
+def binary_ply(vertices, faces, lists, count_type="uchar", count_format="B"):
+    header = (f"ply\nformat binary_little_endian 1.0\nelement vertex {vertices}\nproperty float x\n"
+              f"property float y\nproperty float z\nelement face {faces}\n"
+              f"property list {count_type} int vertex_indices\nend_header\n").encode()
+    body = b"".join(struct.pack("<3f", *v) for v in TRIANGLE)
+    for count, ids in lists:
+        body += struct.pack("<" + count_format, count) + b"".join(struct.pack("<i", i) for i in ids)
+    return header + body
+
+
+# name -> (contents, what the error must say; None: it must import)
+KNOWN = {
+    "good_ascii.ply": (ascii_ply(3, 1, ["3 0 1 2\n"]), None),
+    "good_binary.ply": (binary_ply(3, 1, [(3, [0, 1, 2])]), None),
+    "claims_a_million_vertices.ply": (ascii_ply(10**6, 1, ["3 0 1 2\n"]), "of 1000000"),
+    "claims_a_million_faces.ply": (ascii_ply(3, 10**6, ["3 0 1 2\n"]), "face 2 of 1000000"),
+    "list_of_255_with_3.ply": (ascii_ply(3, 1, ["255 0 1 2\n"]), "ends inside face 1 of 1"),
+    "negative_count.ply": (ascii_ply(-5, 1, ["3 0 1 2\n"]), "count '-5'"),
+    "count_4e9.ply": (ascii_ply(4000000000, 1, ["3 0 1 2\n"]), "count '4000000000'"),
+    "index_past_the_vertices.ply": (ascii_ply(3, 1, ["3 0 1 99999\n"]), "names vertex 99999"),
+    "binary_claims_a_million.ply": (binary_ply(10**6, 1, [(3, [0, 1, 2])]), "of 1000000"),
+    "binary_list_of_255.ply": (binary_ply(3, 1, [(255, [0, 1, 2])]), "ends inside face 1 of 1"),
+    "binary_count_0xFFFFFFF0.ply": (binary_ply(3, 1, [(0xFFFFFFF0, [0, 1, 2])], "uint", "I"), "4294967280 items"),
+    "binary_index_past_the_vertices.ply": (binary_ply(3, 1, [(3, [0, 1, 70000])]), "names vertex 70000"),
+    "binary_truncated.ply": (binary_ply(3, 1, [(3, [0, 1, 2])])[:-7], "ends inside face 1 of 1"),
+    "no_end_header.ply": (b"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n", "no 'end_header'"),
+    "unknown_type.ply": (ascii_ply(3, 1, ["3 0 1 2\n"]).replace(b"property float z", b"property quad z"),
+                         "'quad' is not a PLY type"),
+}
+
+
+def mutations(count):
+    """Random damage to a valid file: a header count, a truncation or flipped data bytes."""
+    sources = [ascii_ply(3, 1, ["3 0 1 2\n"]), binary_ply(3, 2, [(3, [0, 1, 2]), (3, [2, 1, 0])])]
+    for i in range(count):
+        data = bytearray(rng.choice(sources))
+        kind = rng.randrange(3)
+        if kind == 0:
+            old = rng.choice([b"vertex 3", b"face 1", b"face 2"])
+            new = rng.choice(["0", "1", "2", "7", "1000000", "-1", "2147483648", "99999999999", "x"])
+            data = bytearray(bytes(data).replace(old, old.split()[0] + b" " + new.encode()))
+        elif kind == 1:
+            data = data[:rng.randrange(len(data))]
+        else:
+            start = bytes(data).find(b"end_header") + 11
+            for _ in range(rng.randrange(1, 4)):
+                if start < len(data):
+                    data[rng.randrange(start, len(data))] = rng.randrange(256)
+        yield f"mutant_{i:05d}.ply", bytes(data)
+
+
+CHILD = r"""
+import sys, relight
+for path in sys.argv[1:]:
+    print("start", path, flush=True)
+    try:
+        scene = relight.import_scene(path, require_lights=False)
+        print("ok", path, scene.GetNumberOfCells(), flush=True)
+    except Exception as error:
+        print("error", path, str(error).replace("\n", " "), flush=True)
+"""
+
+
+def read_all(paths):
+    """{path: (status, text)}; the file that took the child down gets 'crash'."""
+    results, pending = {}, list(paths)
+    while pending:
+        child = subprocess.run([sys.executable, "-c", CHILD, *pending], capture_output=True, text=True, timeout=600)
+        started = None
+        for line in child.stdout.splitlines():
+            status, path, *rest = line.split(" ", 2)
+            if status == "start":
+                started = path
+            else:
+                results[path] = (status, rest[0] if rest else "")
+                started = None
+        if child.returncode == 0 or started is None:
+            break
+        results[started] = ("crash", f"exit {child.returncode}: {child.stderr.strip()[-300:]}")
+        pending = pending[pending.index(started) + 1:]
+    return results
+
+
+with tempfile.TemporaryDirectory() as folder:
+    files = {}
+    for name, (data, _) in KNOWN.items():
+        files[name] = data
+    for name, data in mutations(CASES):
+        files[name] = data
+    paths = []
+    for name, data in files.items():
+        path = pathlib.Path(folder) / name
+        path.write_bytes(data)
+        paths.append(str(path))
+    results = read_all(paths)
+
+    for name, (_, expected) in KNOWN.items():
+        status, text = results.get(str(pathlib.Path(folder) / name), ("missing", ""))
+        if expected is None:
+            check(status == "ok", f"{name} imports ({status} {text[:120]})")
+        else:
+            check(status == "error" and expected in text and name in text,
+                  f"{name}: one error naming the file and saying '{expected}' ({status}: {text[:160]})")
+    crashed = [p for p, (s, _) in results.items() if s == "crash"]
+    unclear = [p for p, (s, t) in results.items() if s == "error" and pathlib.Path(p).name not in t]
+    missing = [p for p in paths if p not in results]
+    check(not crashed, f"{CASES} mutants and {len(KNOWN)} known files: no crash "
+                       f"({len(crashed)}: {[pathlib.Path(p).name for p in crashed[:5]]} {results.get(crashed[0]) if crashed else ''})")
+    check(not unclear, f"every error names its file ({len(unclear)} do not: "
+                       f"{[results[p][1][:100] for p in unclear[:3]]})")
+    check(not missing, f"every file got an answer ({len(missing)} did not)")
+    errors = sum(1 for s, _ in results.values() if s == "error")
+    print(f"{len(results)} files: {len(results) - errors - len(crashed)} imported, {errors} refused, {len(crashed)} crashed")
+
+finish("TestHostileFiles")
