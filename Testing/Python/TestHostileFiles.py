@@ -1,17 +1,21 @@
-"""Hostile PLY files through import_scene: never a crash, one clear error naming the file.
+"""Hostile PLY and glTF files through import_scene: never a crash, one clear error naming the file.
 
-vtkPLYReader trusts a PLY's header: a count larger than the file, a list longer than its
-line or a face index past the vertices ends in an assert or a segfault inside VTK. The
-corpus is written here (no binaries committed): the cases an adversarial run found, then
-random mutations of a valid ASCII and a valid binary file (header counts, truncations,
-flipped bytes). All files are read by one child process that names each file before it
-reads it, so a crash is caught and pinned on its file. For a long run:
+vtkPLYReader trusts a PLY's header and VTK's glTF loader the indices and lengths in the
+JSON: a count larger than the file, a list longer than its line, a face index past the
+vertices, a buffer shorter than it claims or a node that is its own child end in an
+assert, a segfault or endless recursion inside VTK. The corpus is written here (no
+binaries committed): the cases an adversarial run found, then random mutations of valid
+files (PLY header counts, truncations, flipped bytes; numbers in a .glb's JSON). All files
+are read by one child process that names each file before it reads it, so a crash is
+caught and pinned on its file. For a long run:
     RELIGHT_HOSTILE_CASES=10000 ./relight python Testing/Python/TestHostileFiles.py
 """
 
+import json
 import os
 import pathlib
 import random
+import re
 import struct
 import subprocess
 import sys
@@ -59,6 +63,79 @@ KNOWN = {
     "unknown_type.ply": (ascii_ply(3, 1, ["3 0 1 2\n"]).replace(b"property float z", b"property quad z"),
                          "'quad' is not a PLY type"),
 }
+
+
+def glb(document, binary):
+    """A .glb: the JSON chunk (padded with spaces) and the binary chunk (with zeros)."""
+    text = json.dumps(document).encode()
+    text += b" " * (-len(text) % 4)
+    binary += b"\0" * (-len(binary) % 4)
+    chunks = struct.pack("<I4s", len(text), b"JSON") + text + struct.pack("<I4s", len(binary), b"BIN\0") + binary
+    return struct.pack("<4sII", b"glTF", 2, 12 + len(chunks)) + chunks
+
+
+def triangle_gltf(indices=(0, 1, 2)):
+    """One triangle: its JSON (buffer 0 without a uri) and its 44 bytes."""
+    binary = b"".join(struct.pack("<3f", *v) for v in TRIANGLE) + struct.pack("<3H", *indices) + b"\0\0"
+    document = {
+        "asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+        "buffers": [{"byteLength": 44}],
+        "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                       "min": [0, 0, 0], "max": [1, 1, 0]},
+                      {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}],
+    }
+    return document, binary
+
+
+def damaged(change, indices=(0, 1, 2)):
+    document, binary = triangle_gltf(indices)
+    change(document)
+    return glb(document, binary)
+
+
+def with_file(uri, length=44):
+    """A .gltf whose buffer is the file `uri` (written beside it: 'triangle.bin')."""
+    document, _ = triangle_gltf()
+    document["buffers"] = [{"uri": uri, "byteLength": length}]
+    return json.dumps(document).encode()
+
+
+def chain(document, depth):
+    document["nodes"] = [{"children": [i + 1]} for i in range(depth)] + [{"mesh": 0}]
+
+
+GLTF = {
+    "good.glb": (damaged(lambda d: None), None),
+    "good.gltf": (with_file("triangle.bin"), None),
+    "missing_bin.gltf": (with_file("missing.bin"), "'missing.bin' is missing"),
+    "claims_3600_bytes.gltf": (with_file("triangle.bin", 3600), "claims 3600 bytes and holds 44"),
+    "uri_outside.gltf": (with_file("../../../../etc/passwd"), "is not in the model's folder"),
+    "uri_absolute.gltf": (with_file("/etc/passwd"), "is not in the model's folder"),
+    "uri_a_folder.gltf": (with_file("."), "is not a regular file"),
+    "count_2^31-1.glb": (damaged(lambda d: d["accessors"][0].update(count=2**31 - 1)), "does not fit its bufferView"),
+    "offset_1e12.glb": (damaged(lambda d: d["bufferViews"][0].update(byteOffset=10**12)), "does not fit its buffer"),
+    "position_99999.glb": (damaged(lambda d: d["meshes"][0]["primitives"][0]["attributes"].update(POSITION=99999)),
+                           "names accessor 99999, and there are 2 accessors"),
+    "own_child.glb": (damaged(lambda d: d["nodes"][0].update(children=[0])), "cycle"),
+    "two_parents.glb": (damaged(lambda d: d.update(nodes=[{"children": [2]}, {"children": [2]}, {"mesh": 0}])),
+                        "more than one parent"),
+    "5000_deep.glb": (damaged(lambda d: chain(d, 5000)), "deeper than 1024"),
+    "index_past_the_vertices.glb": (damaged(lambda d: None, (0, 1, 99)), "point 99"),
+}
+
+
+def glb_mutations(count):
+    """Numbers in a valid .glb's JSON replaced at random."""
+    document, binary = triangle_gltf()
+    text = json.dumps(document)
+    numbers = [m.span() for m in re.finditer(r"\b\d+\b", text)]
+    for i in range(count):
+        start, end = rng.choice(numbers)
+        value = rng.choice(["0", "1", "2", "3", "-1", "36", "44", "99999", "2147483647", "4294967296", "1000000000000"])
+        mutated = json.loads(text[:start] + value + text[end:])
+        yield f"glb_mutant_{i:05d}.glb", glb(mutated, binary)
 
 
 def mutations(count):
@@ -114,19 +191,22 @@ def read_all(paths):
 
 
 with tempfile.TemporaryDirectory() as folder:
-    files = {}
-    for name, (data, _) in KNOWN.items():
+    known = {**KNOWN, **GLTF}
+    files = {"triangle.bin": triangle_gltf()[1]}
+    for name, (data, _) in known.items():
         files[name] = data
     for name, data in mutations(CASES):
+        files[name] = data
+    for name, data in glb_mutations(CASES):
         files[name] = data
     paths = []
     for name, data in files.items():
         path = pathlib.Path(folder) / name
         path.write_bytes(data)
-        paths.append(str(path))
+        paths += [] if name.endswith(".bin") else [str(path)]
     results = read_all(paths)
 
-    for name, (_, expected) in KNOWN.items():
+    for name, (_, expected) in known.items():
         status, text = results.get(str(pathlib.Path(folder) / name), ("missing", ""))
         if expected is None:
             check(status == "ok", f"{name} imports ({status} {text[:120]})")
@@ -136,7 +216,7 @@ with tempfile.TemporaryDirectory() as folder:
     crashed = [p for p, (s, _) in results.items() if s == "crash"]
     unclear = [p for p, (s, t) in results.items() if s == "error" and pathlib.Path(p).name not in t]
     missing = [p for p in paths if p not in results]
-    check(not crashed, f"{CASES} mutants and {len(KNOWN)} known files: no crash "
+    check(not crashed, f"{2 * CASES} mutants and {len(known)} known files: no crash "
                        f"({len(crashed)}: {[pathlib.Path(p).name for p in crashed[:5]]} {results.get(crashed[0]) if crashed else ''})")
     check(not unclear, f"every error names its file ({len(unclear)} do not: "
                        f"{[results[p][1][:100] for p in unclear[:3]]})")

@@ -4,6 +4,7 @@
 // skips that extension) as the emission.
 #include "SceneFiles.h"
 #include "SceneFilesErrors.h"
+#include "SceneFilesGltfCheck.h"
 
 #include "vtkGLTFDocumentLoader.h"
 #include "vtkImageData.h"
@@ -267,6 +268,12 @@ std::string ReadGltf(const std::string& path, radiosity::RawScene& raw, std::vec
   if (!invalid.empty())
   {
     return "'" + path + "' could not be read as glTF: it " + invalid;
+  }
+  const std::string unsafe =
+    CheckGltfReferences(document, path, parts.Glb ? static_cast<long long>(parts.Binary.size()) : -1);
+  if (!unsafe.empty())
+  {
+    return "'" + path + "' could not be read as glTF: " + unsafe;
   }
   const TemporaryFolder folder;
   const std::string readable = patched ? WritePatched(path, parts, document, folder.Path) : path;
