@@ -204,6 +204,17 @@ with tempfile.TemporaryDirectory() as folder:
         path = pathlib.Path(folder) / name
         path.write_bytes(data)
         paths += [] if name.endswith(".bin") else [str(path)]
+    # Not regular files: a FIFO named like a scene blocks any reader for ever, /dev/zero
+    # as a material library never ends, a folder as one was silently passed over.
+    specials = {"fifo.obj": "is not a regular file", "zero_mtl.obj": "'/dev/zero', which is missing or not a regular file",
+                "folder_mtl.obj": "which is missing or not a regular file"}
+    os.mkfifo(pathlib.Path(folder) / "fifo.obj")
+    (pathlib.Path(folder) / "sub").mkdir()
+    triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"
+    (pathlib.Path(folder) / "zero_mtl.obj").write_text("mtllib /dev/zero\n" + triangle)
+    (pathlib.Path(folder) / "folder_mtl.obj").write_text("mtllib sub\n" + triangle)
+    paths += [str(pathlib.Path(folder) / name) for name in specials]
+    known.update({name: (None, expected) for name, expected in specials.items()})
     results = read_all(paths)
 
     for name, (_, expected) in known.items():

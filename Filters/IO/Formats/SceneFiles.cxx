@@ -13,6 +13,8 @@
 
 #include <vtksys/SystemTools.hxx>
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -53,8 +55,18 @@ void AddStrip(const vtkIdType* ids, vtkIdType count, int base, int material, int
 
 } // namespace
 
+bool RegularFile(const std::string& path)
+{
+  struct stat info;
+  return stat(path.c_str(), &info) == 0 && S_ISREG(info.st_mode);
+}
+
 bool ReadText(const std::string& path, std::string& text)
 {
+  if (!RegularFile(path))
+  {
+    return false; // a FIFO would block for ever, /dev/zero never end
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in)
   {
@@ -109,9 +121,9 @@ std::string AllExtensions()
 
 std::string Read(const std::string& path, radiosity::RawScene& raw, std::vector<std::string>& warnings)
 {
-  if (!vtksys::SystemTools::FileExists(path, true))
+  if (!RegularFile(path))
   {
-    return "'" + path + "' does not exist or is not a file";
+    return "'" + path + "' does not exist or is not a regular file";
   }
   if (const Format* format = FormatOf(path))
   {

@@ -30,6 +30,9 @@ std::string ReadWithAssimp(const std::string& path, radiosity::RawScene& raw, st
 
 /// The whole file as bytes; false where it cannot be opened.
 bool ReadText(const std::string& path, std::string& text);
+/// True for a file that holds data (not a folder, FIFO or device: reading those blocks or
+/// never ends).
+bool RegularFile(const std::string& path);
 
 using ReadFunction = std::string (*)(const std::string&, radiosity::RawScene&, std::vector<std::string>&);
 

@@ -31,7 +31,7 @@ std::string ReadLibraries(const std::string& path, const std::vector<std::string
     std::string text;
     if (!ReadText(file, text))
     {
-      return "'" + path + "' uses the material library '" + library + "', which is missing (looked for " + file + ")";
+      return "'" + path + "' uses the material library '" + library + "', which is missing or not a regular file (looked for " + file + ")";
     }
     const std::string error = radiosity::ParseMtl(text, definitions);
     if (!error.empty())
