@@ -15,6 +15,7 @@
 #include "vtkSMPTools.h"
 #include "vtkStringArray.h"
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <new>
@@ -22,6 +23,18 @@
 
 namespace vtkRadiosityAdapter
 {
+
+double PointQuantum(vtkPolyData* input, double farthest)
+{
+  // The mesher writes its input's (its own points are double, whatever it was given).
+  vtkDataArray* given = input->GetFieldData()->GetArray(PointQuantumName);
+  if (given && given->GetNumberOfTuples() > 0)
+  {
+    return given->GetTuple1(0);
+  }
+  const bool single = input->GetPoints() && input->GetPoints()->GetDataType() == VTK_FLOAT;
+  return single ? farthest * std::ldexp(1.0, -23) : 0.0;
+}
 
 bool CopyPolygons(vtkPolyData* input, radiosity::SceneMesh& mesh, std::string& error)
 {
@@ -38,12 +51,15 @@ bool CopyPolygons(vtkPolyData* input, radiosity::SceneMesh& mesh, std::string& e
   }
   const vtkIdType nPoints = input->GetNumberOfPoints();
   mesh.points.resize(nPoints);
+  double farthest = 0;
   for (vtkIdType p = 0; p < nPoints; ++p)
   {
     double x[3];
     input->GetPoint(p, x);
     mesh.points[p] = { x[0], x[1], x[2] };
+    farthest = std::max({ farthest, std::fabs(x[0]), std::fabs(x[1]), std::fabs(x[2]) });
   }
+  mesh.pointQuantum = PointQuantum(input, farthest);
   mesh.offsets.assign(1, 0);
   mesh.connectivity.clear();
   vtkCellArray* polys = input->GetPolys();

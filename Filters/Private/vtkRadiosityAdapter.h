@@ -28,6 +28,10 @@ namespace vtkRadiosityAdapter
 /// Points and polygons of `input` into `mesh` (arrays left empty). Fails with a message
 /// if the input has vertices, lines or strips, since cell data would no longer line up.
 bool CopyPolygons(vtkPolyData* input, radiosity::SceneMesh& mesh, std::string& error);
+/// The field array that carries SceneMesh::pointQuantum past the mesher.
+constexpr const char* PointQuantumName = "PointQuantum";
+/// SceneMesh::pointQuantum of `input`: its PointQuantum field, or from its points' type.
+double PointQuantum(vtkPolyData* input, double farthest);
 
 /// A cell array with the given name, checked for component count (and integral values if
 /// `integral`); returns nullptr with a message naming the array and the problem.

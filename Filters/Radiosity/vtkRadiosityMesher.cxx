@@ -20,6 +20,8 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <tuple>
 
@@ -306,6 +308,14 @@ void WriteMeshed(vtkPolyData* output, vtkPolyData* input, const radiosity::Meshe
   used->SetName("MesherElementSize");
   used->InsertNextValue(meshed.elementSize);
   fields->AddArray(used);
+  double bounds[6];
+  input->GetBounds(bounds);
+  const double farthest = std::max({ std::fabs(bounds[0]), std::fabs(bounds[1]), std::fabs(bounds[2]),
+    std::fabs(bounds[3]), std::fabs(bounds[4]), std::fabs(bounds[5]) });
+  vtkNew<vtkDoubleArray> quantum;
+  quantum->SetName(vtkRadiosityAdapter::PointQuantumName);
+  quantum->InsertNextValue(vtkRadiosityAdapter::PointQuantum(input, farthest));
+  fields->AddArray(quantum);
   warnings.AddTo(fields);
 }
 }

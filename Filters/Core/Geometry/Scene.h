@@ -23,6 +23,9 @@ struct SceneMesh
   std::vector<Vec3> reflectance; ///< per polygon, RGB in [0, 1]
   std::vector<int> lightId;      ///< per polygon, -1 or 0..k-1
   std::vector<int> patchId;      ///< per polygon; empty: every polygon is its own patch
+  /// How finely the coordinates were given: float input's spacing at its farthest
+  /// coordinate (a surface there can sit that far off another it touches), 0 for double.
+  double pointQuantum = 0;
 
   int NumberOfPolygons() const { return static_cast<int>(offsets.size()) - 1; }
   int PolygonSize(int i) const { return offsets[i + 1] - offsets[i]; }

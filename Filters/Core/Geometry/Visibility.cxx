@@ -454,15 +454,10 @@ int SplitSeparatedPatches(const Visibility& rays, const SceneMesh& mesh, SceneGe
 
 void MarkEnclosed(const Visibility& rays, const SceneMesh& mesh, SceneGeometry& g, int threads, const ProcessGroup& group)
 {
-  // Touching, relative to the scene, and never finer than float coordinates can place a
-  // surface far from the origin (VTK points are floats: a leg standing on a floor 500 km
-  // away can float 3 cm above it).
-  double farthest = 0;
-  for (const Vec3& p : mesh.points)
-  {
-    farthest = std::max({ farthest, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z) });
-  }
-  const double touching = std::max(1e-6 * g.sceneDiagonal, 1e-6 * farthest);
+  // Touching, relative to the scene, and never finer than float input can place a surface
+  // far from the origin (a leg standing on a floor 500 km away can float 3 cm above it).
+  // Double input keeps its precision wherever it is: site coordinates are not float noise.
+  const double touching = std::max(1e-6 * g.sceneDiagonal, 8.4 * mesh.pointQuantum);
   const WorkerPool pool(threads);
   Collective ranks(group);
   const int n = static_cast<int>(g.normal.size()), step = ranks.Ranks();
