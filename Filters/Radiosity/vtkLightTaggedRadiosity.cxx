@@ -231,7 +231,8 @@ int vtkLightTaggedRadiosity::Solve(
   steps::SceneInput scene;
   const bool combined = this->SolutionMode == STANDARD_COMBINED;
   const radiosity::ProcessGroup group = vtkRadiosityPieces::Group(ranks);
-  std::string error = steps::ReadInput(input, this->Effect(this->LightSeparationEffect), scene);
+  std::string error = radiosity::OptionsProblem(this->Options(1, group));
+  error = error.empty() ? steps::ReadInput(input, this->Effect(this->LightSeparationEffect), scene) : error;
   if (error.empty())
   {
     error = steps::CheckSolveMemory(scene, combined ? 1 : scene.Grouping.Solutions, this->SeparateDirect, group);

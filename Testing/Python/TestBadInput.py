@@ -99,6 +99,9 @@ expect_error(solver, scene(points=flat), "cell 0 has zero area")
 expect_error(mesher, scene(points=flat), "cell 0 has zero area")
 nan_point = [(0, 0, 1), (0, nan, 1), (1, 1, 1), (1, 0, 1), (0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)]
 expect_error(solver, scene(points=nan_point), "non-finite coordinate")
+# Settings that cannot mean anything: a NaN threshold ended every solve at once as "converged".
+expect_error(solver, scene(), "ConvergenceThreshold is nan", setup=lambda s: s.SetConvergenceThreshold(nan))
+expect_error(solver, scene(), "TimeBudget is nan", setup=lambda s: s.SetTimeBudget(nan))
 expect_error(mesher, scene(), "choose a larger ElementSize", setup=lambda m: m.SetElementSize(1e-9))
 
 # Relight: no solutions, wrong array types, NaN inside a solution.

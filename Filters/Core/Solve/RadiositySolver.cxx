@@ -4,6 +4,7 @@
 #include "Solve/SolverMethods.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace radiosity
@@ -76,6 +77,20 @@ bool Grey3(const Vec3& v)
   return v.x == v.y && v.y == v.z;
 }
 } // namespace
+
+std::string OptionsProblem(const SolverOptions& options)
+{
+  if (!std::isfinite(options.ConvergenceThreshold) || options.ConvergenceThreshold < 0)
+  {
+    return "ConvergenceThreshold is " + std::to_string(options.ConvergenceThreshold) +
+      "; it is a fraction of the emitted power, from 0 to 1";
+  }
+  if (!std::isfinite(options.TimeBudget) || options.TimeBudget < 0)
+  {
+    return "TimeBudget is " + std::to_string(options.TimeBudget) + "; it is seconds, 0 for none";
+  }
+  return std::string();
+}
 
 int ShotCap(const SolverOptions& options, int patches)
 {

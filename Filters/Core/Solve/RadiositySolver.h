@@ -197,6 +197,10 @@ using SolveFunction = void (*)(const SceneMesh& mesh, const SceneGeometry& geome
   const std::vector<Vec3>& emission, int solutions, bool grey, const SolverOptions& options,
   std::chrono::steady_clock::time_point start, Solution& out);
 
+/// Empty, or which setting cannot mean anything (a NaN or infinite threshold or budget):
+/// a NaN threshold stopped every solve at once, reported as converged.
+std::string OptionsProblem(const SolverOptions& options);
+
 /// The shot cap in force for `patches` patches (see SolverOptions::MaximumShots).
 int ShotCap(const SolverOptions& options, int patches);
 
