@@ -44,9 +44,19 @@ def export_viewer(data, folder, camera=None, size=(640, 480), exposure=1.0):
     if camera is not None:
         position, focal, up, angle = camera
         view = {"position": list(position), "focalPoint": list(focal), "up": list(up), "angle": angle}
-    with open(os.path.join(folder, "scene.js"), "w") as f:
-        f.write(f"window.RELIGHT_GLB = \"{encoded}\";\nwindow.RELIGHT_CAMERA = {json.dumps(view)};\n"
-                f"window.RELIGHT_SIZE = {json.dumps(list(size))};\n")
+    text = (f"window.RELIGHT_GLB = \"{encoded}\";\nwindow.RELIGHT_CAMERA = {json.dumps(view)};\n"
+            f"window.RELIGHT_SIZE = {json.dumps(list(size))};\n")
+    # Each file whole or not at all, as the other writers do: a page that was there keeps
+    # working if the export is killed half way (scene.js was left at 0 bytes).
+    contents = {"scene.js": text.encode()}
     for name in ("index.html", "relight-viewer.js"):
-        shutil.copy(os.path.join(web, name), os.path.join(folder, name))
+        with open(os.path.join(web, name), "rb") as f:
+            contents[name] = f.read()
+    for name, data in contents.items():
+        part = os.path.join(folder, name + ".part")
+        with open(part, "wb") as f:
+            f.write(data)
+            f.flush()
+            os.fsync(f.fileno())
+        os.replace(part, os.path.join(folder, name))
     return os.path.join(folder, "index.html")
