@@ -656,6 +656,15 @@ double ChooseElementSize(const PolygonArrays& polygons, const Contacts& contacts
   const double wanted = count(o.ElementSize);
   std::ostringstream message;
   double size = o.ElementSize;
+  if (o.ElementSize > o.PatchSize && o.Warning)
+  {
+    // An element never spans patches, so a patch is as large as an element gets.
+    std::ostringstream larger;
+    larger << "ElementSize " << o.ElementSize << " is larger than PatchSize " << o.PatchSize
+           << ": elements are patch-sized (" << o.PatchSize << ")";
+    o.Warning(larger.str());
+  }
+  size = std::min(o.ElementSize, o.PatchSize);
   if (o.ElementBudget > 0 && wanted > o.ElementBudget)
   {
     size = ElementSizeForBudget(count, o.PatchSize, size, o.ElementBudget);
