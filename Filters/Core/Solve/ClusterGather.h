@@ -29,9 +29,14 @@ public:
     , Tree(tree)
     , Links(links)
     , Pool(pool)
-    , FarRuns(RunStarts(links.Receiver))
-    , NearRuns(RunStarts(links.LeafReceiver))
+    , FarReceivers(WithLinks(links.FarStart))
+    , NearReceivers(WithLinks(links.NearStart))
+    , Centres(tree.Nodes().size())
   {
+    for (size_t n = 0; n < Centres.size(); ++n)
+    {
+      Centres[n] = tree.Nodes()[n].Centre; // a bounce reads one per link: kept together
+    }
     if (!tree.Nodes().empty())
     {
       Divide(0, std::max(1, tree.Nodes()[0].Count / (8 * pool.Threads())));
@@ -49,17 +54,17 @@ public:
     ReceivedVector.assign(nodes * kVector * W, 0.0);
     ReceivedSeries.assign(nodes * kReceiverSeries * W, 0.0);
     Near.assign(G.normal.size() * W, 0.0);
-    Pool.For(static_cast<int>(FarRuns.size()) - 1, 64, [&](int begin, int end) {
+    Pool.For(static_cast<int>(FarReceivers.size()), 64, [&](int begin, int end) {
       std::vector<double> lanes((kVector + kReceiverSeries + 1) * W);
       for (int run = begin; run < end; ++run)
       {
-        FarRun(FarRuns[run], FarRuns[run + 1], lanes.data());
+        FarRun(FarReceivers[run], lanes.data());
       }
     });
-    Pool.For(static_cast<int>(NearRuns.size()) - 1, 256, [&](int begin, int end) {
+    Pool.For(static_cast<int>(NearReceivers.size()), 256, [&](int begin, int end) {
       for (int run = begin; run < end; ++run)
       {
-        NearRun(NearRuns[run], NearRuns[run + 1], x);
+        NearRun(NearReceivers[run], x);
       }
     });
   }
@@ -88,18 +93,18 @@ public:
   }
 
 private:
-  static std::vector<int> RunStarts(const std::vector<int>& receiver)
+  /// The receivers that have links.
+  static std::vector<int> WithLinks(const std::vector<size_t>& start)
   {
-    std::vector<int> starts;
-    for (int i = 0; i < static_cast<int>(receiver.size()); ++i)
+    std::vector<int> receivers;
+    for (size_t r = 0; r + 1 < start.size(); ++r)
     {
-      if (i == 0 || receiver[i] != receiver[i - 1])
+      if (start[r + 1] > start[r])
       {
-        starts.push_back(i);
+        receivers.push_back(static_cast<int>(r));
       }
     }
-    starts.push_back(static_cast<int>(receiver.size()));
-    return starts;
+    return receivers;
   }
 
   /// The nodes near the root (one thread) and the subtrees under them (in parallel).
@@ -116,17 +121,19 @@ private:
   }
 
   /// One receiver's far links, summed in `lanes` (vector, series, flux) and stored once.
-  void FarRun(int begin, int end, double* lanes)
+  void FarRun(int receiver, double* lanes)
   {
+    const size_t begin = Links.FarStart[receiver], end = Links.FarStart[receiver + 1];
     double* vector = lanes;
     double* series = lanes + kVector * W;
     double* flux = series + kReceiverSeries * W;
     std::fill(lanes, lanes + (kVector + kReceiverSeries) * W, 0.0);
     bool mixedAny = false;
-    for (int i = begin; i < end; ++i)
+    for (size_t i = begin; i < end; ++i)
     {
       Prefetch(i + kAhead);
-      const float* d = Links.Direction.data() + 3 * i;
+      float d[3];
+      FarDirection(Centres[receiver], Centres[Links.Source[i]], d);
       const double u[3] = { d[0], d[1], d[2] };
       Flux(i, u, flux);
       if ((Links.Mixed[i] & 2) == 0)
@@ -151,24 +158,25 @@ private:
         }
       }
     }
-    const size_t receiver = Links.Receiver[begin];
-    std::copy(vector, vector + kVector * W, ReceivedVector.data() + receiver * kVector * W);
+    std::copy(vector, vector + kVector * W, ReceivedVector.data() + static_cast<size_t>(receiver) * kVector * W);
     if (mixedAny)
     {
-      std::copy(series, series + kReceiverSeries * W, ReceivedSeries.data() + receiver * kReceiverSeries * W);
+      std::copy(series, series + kReceiverSeries * W,
+        ReceivedSeries.data() + static_cast<size_t>(receiver) * kReceiverSeries * W);
     }
   }
 
   /// The sources are scattered over memory: a bounce waits on their sums unless they are
   /// asked for a few links ahead.
   static constexpr int kAhead = 6;
-  void Prefetch(int i) const
+  void Prefetch(size_t i) const
   {
-    if (i >= static_cast<int>(Links.Source.size()))
+    if (i >= Links.Source.size())
     {
       return;
     }
     const size_t source = static_cast<size_t>(Links.Source[i]);
+    __builtin_prefetch(Centres.data() + source);
     const char* vector = reinterpret_cast<const char*>(SentVector.data() + source * kVector * W);
     for (size_t at = 0; at < kVector * W * sizeof(float); at += 64)
     {
@@ -186,7 +194,7 @@ private:
 
   /// What link i carries towards its receiver per lane: Coupling x the source's emission
   /// along u (its area vector's projection, or the clamped cosine's series where mixed).
-  void Flux(int i, const double* u, double* flux) const
+  void Flux(size_t i, const double* u, double* flux) const
   {
     const double c = Links.Coupling[i];
     const float* s = SentVector.data() + static_cast<size_t>(Links.Source[i]) * kVector * W;
@@ -213,10 +221,10 @@ private:
   }
 
   /// One receiving element's near links.
-  void NearRun(int begin, int end, const double* sending)
+  void NearRun(int receiver, const double* sending)
   {
-    double* to = Near.data() + static_cast<size_t>(Links.LeafReceiver[begin]) * W;
-    for (int i = begin; i < end; ++i)
+    double* to = Near.data() + static_cast<size_t>(receiver) * W;
+    for (size_t i = Links.NearStart[receiver]; i < Links.NearStart[receiver + 1]; ++i)
     {
       const double* from = sending + static_cast<size_t>(Links.LeafSource[i]) * W;
       const double f = Links.LeafFactor[i];
@@ -352,7 +360,8 @@ private:
   const ElementTree& Tree;
   const ClusterLinkSet& Links;
   const WorkerPool& Pool;
-  const std::vector<int> FarRuns, NearRuns;
+  const std::vector<int> FarReceivers, NearReceivers;
+  std::vector<Vec3> Centres; ///< each node's, as the far links' directions come from them
   std::vector<int> Top, Subtrees;
   int W = 1; ///< lanes: solutions x channels
   std::vector<float> SentVector, SentSeries;

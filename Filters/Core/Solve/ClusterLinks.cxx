@@ -12,7 +12,7 @@ namespace radiosity
 struct ClusterLinkBuilder::Found
 {
   std::vector<int> Receiver, Source, LeafReceiver, LeafSource;
-  std::vector<float> Coupling, Direction, LeafFactor;
+  std::vector<float> Coupling, LeafFactor;
   std::vector<unsigned char> Mixed;
   long long Rays = 0;
   std::vector<Vec3> Loop, Scratch; ///< NearFactor's buffers, reused over the task's pairs
@@ -32,7 +32,10 @@ void ClusterLinkBuilder::SortByReceiver(std::vector<Found>& found, ClusterLinkSe
 {
   // A counting sort over every task's links, in task order: each task's lists are freed
   // once placed, so the links are held at most twice.
-  std::vector<size_t> far(Tree.Nodes().size() + 1, 0), near(G.normal.size() + 1, 0);
+  std::vector<size_t>& far = links.FarStart;
+  std::vector<size_t>& near = links.NearStart;
+  far.assign(Tree.Nodes().size() + 1, 0);
+  near.assign(G.normal.size() + 1, 0);
   for (const Found& f : found)
   {
     for (int r : f.Receiver)
@@ -47,29 +50,24 @@ void ClusterLinkBuilder::SortByReceiver(std::vector<Found>& found, ClusterLinkSe
   }
   std::partial_sum(far.begin(), far.end(), far.begin());
   std::partial_sum(near.begin(), near.end(), near.begin());
-  links.Receiver.resize(far.back());
   links.Source.resize(far.back());
   links.Coupling.resize(far.back());
-  links.Direction.resize(3 * far.back());
   links.Mixed.resize(far.back());
-  links.LeafReceiver.resize(near.back());
   links.LeafSource.resize(near.back());
   links.LeafFactor.resize(near.back());
+  std::vector<size_t> farAt(far.begin(), far.end() - 1), nearAt(near.begin(), near.end() - 1);
   for (Found& f : found)
   {
     for (size_t i = 0; i < f.Receiver.size(); ++i)
     {
-      const size_t at = far[f.Receiver[i]]++;
-      links.Receiver[at] = f.Receiver[i];
+      const size_t at = farAt[f.Receiver[i]]++;
       links.Source[at] = f.Source[i];
       links.Coupling[at] = f.Coupling[i];
       links.Mixed[at] = f.Mixed[i];
-      std::copy_n(f.Direction.begin() + 3 * i, 3, links.Direction.begin() + 3 * at);
     }
     for (size_t i = 0; i < f.LeafReceiver.size(); ++i)
     {
-      const size_t at = near[f.LeafReceiver[i]]++;
-      links.LeafReceiver[at] = f.LeafReceiver[i];
+      const size_t at = nearAt[f.LeafReceiver[i]]++;
       links.LeafSource[at] = f.LeafSource[i];
       links.LeafFactor[at] = f.LeafFactor[i];
     }
@@ -252,10 +250,6 @@ void ClusterLinkBuilder::AddFar(int a, int b, Found& found) const
     found.Coupling.push_back(static_cast<float>(coupling[k]));
     const bool source = k == 0 ? mixedB : mixedA, receiver = k == 0 ? mixedA : mixedB;
     found.Mixed.push_back(static_cast<unsigned char>((source ? 1 : 0) | (receiver ? 2 : 0)));
-    for (int c = 0; c < 3; ++c)
-    {
-      found.Direction.push_back(static_cast<float>(k == 0 ? u[c] : -u[c]));
-    }
   }
 }
 

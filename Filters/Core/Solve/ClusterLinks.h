@@ -8,33 +8,55 @@
 #include "Solve/ShooterFormFactors.h"
 #include "Base/WorkerPool.h"
 
+#include <cmath>
 #include <functional>
 #include <vector>
 
 namespace radiosity
 {
 
-/// Directed links, each "receiver gathers from source", sorted by receiver.
+/// Directed links, each "receiver gathers from source", grouped by receiver: 9 bytes a far
+/// link and 8 a near one (the direction between two nodes is their centres').
 struct ClusterLinkSet
 {
-  /// Far links between tree nodes in full or partial view: the receiver's irradiance
-  /// vector gains Coupling x (M_source . u) x (-u), where M is the sum of radiosity x area x
-  /// normal over the source's elements and u the unit vector from source to receiver.
-  std::vector<int> Receiver, Source;
-  std::vector<float> Coupling, Direction; ///< Direction: three per link
+  /// Far links between tree nodes in full or partial view, node n's at [FarStart[n],
+  /// FarStart[n + 1]): the receiver's irradiance vector gains Coupling x (M_source . u) x
+  /// (-u), where M is the sum of radiosity x area x normal over the source's elements and u
+  /// the unit vector from the source's centre to the receiver's (FarDirection).
+  std::vector<size_t> FarStart;
+  std::vector<int> Source;
+  std::vector<float> Coupling;
   /// Per link: 1 where the source's elements do not all face the receiver (its emission
   /// towards u is taken from the clamped cosine's series), 2 where the receiver's do not
   /// (each element's share likewise), 3 for both.
   std::vector<unsigned char> Mixed;
-  /// Near links between two elements: irradiance += Factor x the source's radiosity, with
-  /// Factor = F(receiver -> source) by Lambert's formula and shadow rays.
-  std::vector<int> LeafReceiver, LeafSource;
+  /// Near links between two elements, element e's at [NearStart[e], NearStart[e + 1]):
+  /// irradiance += Factor x the source's radiosity, with Factor = F(receiver -> source) by
+  /// Lambert's formula and shadow rays.
+  std::vector<size_t> NearStart;
+  std::vector<int> LeafSource;
   std::vector<float> LeafFactor;
   long long Rays = 0;
   bool Complete = true; ///< false where the build was stopped (abort or time)
 
-  double Bytes() const { return 25.0 * Receiver.size() + 12.0 * LeafReceiver.size(); }
+  size_t FarCount() const { return Source.size(); }
+  size_t NearCount() const { return LeafSource.size(); }
+  double Bytes() const
+  {
+    return 9.0 * FarCount() + 8.0 * NearCount() + sizeof(size_t) * (FarStart.size() + NearStart.size());
+  }
 };
+
+/// The unit vector from `source`'s centre to `receiver`'s, as a far link between the two
+/// nodes uses it (in float, as the links once stored it).
+inline void FarDirection(const Vec3& receiver, const Vec3& source, float* u)
+{
+  const Vec3 between = receiver - source;
+  const Vec3 unit = between * (1.0 / std::sqrt(Dot(between, between)));
+  u[0] = static_cast<float>(unit.x);
+  u[1] = static_cast<float>(unit.y);
+  u[2] = static_cast<float>(unit.z);
+}
 
 /// How fine the links are: a pair of nodes is linked whole when their centres are
 /// farther apart than Separation x the sum of their radii and each faces the other's centre.

@@ -216,8 +216,8 @@ private:
     const ClusterLinkSet links =
       builder.Build(Pool, Group.Rank(), Group.Ranks(), [&](double f) { return KeepGoing(0.2 + 0.5 * f); });
     Stats.RayCount += links.Rays;
-    Stats.VolumeLinks += static_cast<long long>(links.Receiver.size());
-    Stats.ElementLinks += static_cast<long long>(links.LeafReceiver.size());
+    Stats.VolumeLinks += static_cast<long long>(links.FarCount());
+    Stats.ElementLinks += static_cast<long long>(links.NearCount());
     Stats.LinkBytes += links.Bytes();
     if (!links.Complete)
     {
