@@ -109,6 +109,10 @@ std::string DescribeStatus(const radiosity::SolverStatistics& stats, bool aborte
   {
     return "converged";
   }
+  if (!stats.OutOfMemory.empty())
+  {
+    return "stopped: out of memory";
+  }
   return stats.OutOfTime ? "stopped at TimeBudget" : "stopped at MaximumShots";
 }
 } // namespace
@@ -248,6 +252,11 @@ std::string DescribeEarlyStop(const radiosity::SolverStatistics& stats, double b
   if (stats.Aborted)
   {
     text << "Solve aborted after " << stats.Shots << " shots; the output holds the partial result.";
+  }
+  else if (!stats.OutOfMemory.empty())
+  {
+    text << "Stopped: " << stats.OutOfMemory << "; the output holds the direct light. Use a larger ElementSize "
+         << "(fewer elements) or SolverMethod Hierarchical.";
   }
   else if (stats.OutOfTime)
   {

@@ -145,6 +145,33 @@ TEST(Clustered, AStoppedSolveKeepsTheDirectLightAndBooksTheRest)
   EXPECT_NEAR(radiosity_test::AbsorbedPower(mesh, b) + t.EscapedPower + t.UnshotPower, t.EmittedPower, 1e-9 * t.EmittedPower);
 }
 
+TEST(Clustered, LinksThatWouldNotFitStopTheSolveWithTheDirectLightAndSayWhy)
+{
+  // The same room under a memory limit far below what its links take: the build stops
+  // once a tenth of it shows the whole would not fit, with the direct light and the reason.
+  const SceneMesh mesh = FurnishedRoom(0.6, 0.3);
+  SolverOptions full = Options(SolverMethod::Clustered, 1e-4);
+  full.SeparateDirect = true;
+  SolverOptions capped = full;
+  const Solution a = Solve(mesh, 8, full);
+  capped.MemoryLimit = 0.1 * a.Statistics.LinkBytes;
+  const Solution b = Solve(mesh, 8, capped);
+  const SolverStatistics& t = b.Statistics;
+  EXPECT_TRUE(a.Statistics.OutOfMemory.empty()) << a.Statistics.OutOfMemory;
+  EXPECT_NE(t.OutOfMemory.find("the clustered method's links needs about"), std::string::npos) << t.OutOfMemory;
+  EXPECT_NE(t.OutOfMemory.find("MemoryLimit"), std::string::npos) << t.OutOfMemory;
+  EXPECT_FALSE(t.Converged);
+  EXPECT_FALSE(t.Aborted);
+  EXPECT_LT(t.VolumeLinks, a.Statistics.VolumeLinks / 2); // stopped early in the build
+  for (size_t i = 0; i < a.Direct.size(); ++i)
+  {
+    ASSERT_NEAR(b.Radiosity[i].x, a.Direct[i].x, 1e-12 + 1e-9 * a.Direct[i].x) << i;
+  }
+  EXPECT_NEAR(radiosity_test::AbsorbedPower(mesh, b) + t.EscapedPower + t.UnshotPower, t.EmittedPower, 1e-9 * t.EmittedPower);
+  capped.MemoryLimit = 10 * a.Statistics.LinkBytes; // room to spare: the same answer
+  EXPECT_EQ(Solve(mesh, 8, capped).Radiosity[7].x, a.Radiosity[7].x);
+}
+
 TEST(Clustered, HundredThousandTriangleSphereRoomSolves)
 {
   const int lamps = 1; // the links are the cost to test; each light adds to the bounces only

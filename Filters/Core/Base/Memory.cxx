@@ -25,14 +25,19 @@ double AvailableMemory()
 
 std::string CheckMemory(double bytes, const std::string& what)
 {
-  const double available = AvailableMemory();
-  if (available <= 0 || bytes <= 0.9 * available)
+  return CheckMemory(bytes, what, 0.0);
+}
+
+std::string CheckMemory(double bytes, const std::string& what, double limit)
+{
+  const double available = limit > 0 ? limit : AvailableMemory();
+  if (available <= 0 || bytes <= (limit > 0 ? 1.0 : 0.9) * available)
   {
     return std::string();
   }
   char text[512];
-  std::snprintf(text, sizeof(text), "%s needs about %.1f GB, more than the %.1f GB of memory available", what.c_str(),
-    bytes / 1073741824.0, available / 1073741824.0);
+  std::snprintf(text, sizeof(text), "%s needs about %.3g GB, more than the %.3g GB of memory %s", what.c_str(),
+    bytes / 1073741824.0, available / 1073741824.0, limit > 0 ? "allowed (MemoryLimit)" : "available");
   return text;
 }
 

@@ -15,6 +15,8 @@ double AvailableMemory();
 /// Empty when `bytes` fit in 90 % of the available memory (or it is unknown); otherwise an
 /// error naming `what`, its size and what is available.
 std::string CheckMemory(double bytes, const std::string& what);
+/// The same against `limit` bytes where it is positive (a cap the caller chose), else as above.
+std::string CheckMemory(double bytes, const std::string& what, double limit);
 
 } // namespace radiosity
 

@@ -434,15 +434,20 @@ std::vector<ClusterLinkBuilder::Task> ClusterLinkBuilder::Frontier(int wanted) c
 }
 
 ClusterLinkSet ClusterLinkBuilder::Build(
-  const WorkerPool& pool, int rank, int ranks, const std::function<bool(double)>& keepGoing)
+  const WorkerPool& pool, int rank, int ranks, const std::function<bool(double, double)>& keepGoing)
 {
   const std::vector<Task> tasks = Frontier(4096);
   std::vector<Found> found(tasks.size());
   ClusterLinkSet links;
   const int batch = std::max(1, static_cast<int>(tasks.size()) / 50);
+  double held = 0; // far links count 13 bytes here, near ones 12
   for (int begin = 0; begin < static_cast<int>(tasks.size()); begin += batch)
   {
-    if (keepGoing && !keepGoing(static_cast<double>(begin) / tasks.size()))
+    for (int i = std::max(0, begin - batch); i < begin; ++i)
+    {
+      held += kFoundBytes * found[i].Receiver.size() + 12.0 * found[i].LeafReceiver.size();
+    }
+    if (keepGoing && !keepGoing(static_cast<double>(begin) / tasks.size(), held))
     {
       links.Complete = false;
       break;

@@ -78,8 +78,12 @@ public:
     const Visibility& rays, const ShooterFormFactors& culling, const ClusterLinkOptions& options);
 
   /// The links of this rank's share of the pairs (every `ranks`-th task); `keepGoing` is
-  /// asked between batches of tasks with the fraction done, and false stops the build.
-  ClusterLinkSet Build(const WorkerPool& pool, int rank, int ranks, const std::function<bool(double)>& keepGoing);
+  /// asked between batches of tasks with the fraction of tasks done and the bytes the links
+  /// found so far hold, and false stops the build.
+  ClusterLinkSet Build(
+    const WorkerPool& pool, int rank, int ranks, const std::function<bool(double, double)>& keepGoing);
+  /// Bytes a link takes while the build holds it, and once sorted (ClusterLinkSet).
+  static constexpr double kFoundBytes = 13.0, kSortedBytes = 9.0;
 
 private:
   enum class Pair

@@ -3,6 +3,7 @@
 #include "Solve/ClusterGather.h"
 #include "Solve/ElementTree.h"
 #include "Solve/RankTable.h"
+#include "Base/Memory.h"
 #include "Base/WorkerPool.h"
 
 #include <algorithm>
@@ -139,6 +140,29 @@ private:
     return !Stopped;
   }
 
+  /// Whether the links still fit, from what the first `done` of the build holds (`held`
+  /// bytes on this rank): every rank agrees, and a build that would not fit stops with the
+  /// direct light and says why.
+  bool LinksFit(double done, double held)
+  {
+    std::string problem;
+    if (done >= 0.1) // the first tasks say too little of the rest
+    {
+      const double all = held / done, sorted = all * ClusterLinkBuilder::kSortedBytes / ClusterLinkBuilder::kFoundBytes;
+      // Against a limit: all of it at once; against the free memory: what is still to come.
+      const double needed = Options.MemoryLimit > 0 ? all + sorted : all - held + sorted;
+      problem = CheckMemory(needed, "the clustered method's links", Options.MemoryLimit);
+    }
+    double ranksShort = problem.empty() ? 0.0 : 1.0;
+    Group.Sum(&ranksShort, 1);
+    if (ranksShort > 0)
+    {
+      Stats.OutOfMemory = problem.empty() ? "another rank's links would not fit in its memory" : problem;
+      Stopped = true;
+    }
+    return !Stopped;
+  }
+
   /// Progress through the iterations: the remaining power's way down to the threshold.
   double IterationFraction() const
   {
@@ -213,8 +237,8 @@ private:
     ClusterLinkOptions options;
     options.Samples = Options.Visibility == EffectMode::Off ? 0 : Options.Samples;
     ClusterLinkBuilder builder(Mesh, G, tree, Rays, estimator, options);
-    const ClusterLinkSet links =
-      builder.Build(Pool, Group.Rank(), Group.Ranks(), [&](double f) { return KeepGoing(0.2 + 0.5 * f); });
+    const ClusterLinkSet links = builder.Build(Pool, Group.Rank(), Group.Ranks(),
+      [&](double f, double held) { return KeepGoing(0.2 + 0.5 * f) && LinksFit(f, held); });
     Stats.RayCount += links.Rays;
     Stats.VolumeLinks += static_cast<long long>(links.FarCount());
     Stats.ElementLinks += static_cast<long long>(links.NearCount());

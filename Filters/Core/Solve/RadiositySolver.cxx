@@ -159,6 +159,7 @@ void SolverStatistics::Append(const SolverStatistics& next)
   Converged = Converged && next.Converged;
   Aborted = next.Aborted;
   OutOfTime = next.OutOfTime;
+  OutOfMemory = next.OutOfMemory.empty() ? OutOfMemory : next.OutOfMemory;
   RayCount += next.RayCount;
   RaysSkipped += next.RaysSkipped;
   PairsUnblockable += next.PairsUnblockable;

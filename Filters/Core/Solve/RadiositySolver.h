@@ -59,6 +59,10 @@ struct SolverOptions
   double ConvergenceThreshold = 1e-3;
   /// Stop after this many seconds of shooting (0: no limit); the result stays valid.
   double TimeBudget = 0;
+  /// Bytes the clustered method's links may take (0: 90 % of the memory the system has
+  /// free when they are built). A build that would need more stops with the direct light,
+  /// the reason in SolverStatistics::OutOfMemory.
+  double MemoryLimit = 0;
   FormFactorMethod Method = FormFactorMethod::Analytic;
   /// Analytic: shadow rays per receiver and shot (0: ignore occlusion); Hemicube: the
   /// resolution of its top face; MonteCarlo: rays per shot.
@@ -115,6 +119,8 @@ struct SolverStatistics
   bool Converged = false;
   bool Aborted = false;
   bool OutOfTime = false;
+  /// Why the solve stopped short of memory (its links would not fit); empty otherwise.
+  std::string OutOfMemory;
   /// Per shot: seconds since the start, remaining unshot power / initial (all solutions),
   /// and the same per solution ([shot * solutions + m]).
   std::vector<double> TimeHistory;
