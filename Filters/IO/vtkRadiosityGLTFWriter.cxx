@@ -225,8 +225,12 @@ void vtkRadiosityGLTFWriter::WriteData()
     this->SetErrorCode(vtkErrorCode::NoFileNameError);
     return;
   }
-  if (!input || vtkRadiosityAdapter::FailedUpstream(input) || !vtkRadiosityAdapter::CopyPolygons(input, mesh, error) ||
-    mesh.NumberOfPolygons() == 0)
+  if (!(this->Exposure >= 0 && this->Exposure <= VTK_DOUBLE_MAX))
+  {
+    error = "Exposure is " + std::to_string(this->Exposure) + "; it scales radiosity to colors: finite, not negative";
+  }
+  if (!error.empty() || !input || vtkRadiosityAdapter::FailedUpstream(input) ||
+    !vtkRadiosityAdapter::CopyPolygons(input, mesh, error) || mesh.NumberOfPolygons() == 0)
   {
     vtkErrorMacro(<< "Cannot write glTF: " << (error.empty() ? "the input has no polygons" : error) << ".");
     this->SetErrorCode(vtkErrorCode::UserError);

@@ -36,7 +36,7 @@ public:
 
   ///@{
   /// Scale from radiosity to COLOR_0 (as the relight filter's Exposure). Default 1.
-  vtkSetClampMacro(Exposure, double, 0.0, VTK_DOUBLE_MAX);
+  vtkSetMacro(Exposure, double); // checked when writing: finite, not negative
   vtkGetMacro(Exposure, double);
   ///@}
 

@@ -792,9 +792,10 @@ int vtkRadiosityRelight::Relight(
 {
   std::vector<std::string> names, arrays;
   std::vector<double> weights;
-  std::string error = !std::isfinite(this->Exposure) || !std::isfinite(this->IndirectScale)
+  std::string error = !(this->Exposure >= 0 && this->Exposure <= VTK_DOUBLE_MAX) ||
+      !(this->IndirectScale >= 0 && this->IndirectScale <= VTK_DOUBLE_MAX)
     ? "Exposure (" + std::to_string(this->Exposure) + ") and IndirectScale (" + std::to_string(this->IndirectScale) +
-      ") must be finite"
+      ") must be finite and not negative"
     : FindLights(input, names);
   if (error.empty())
   {

@@ -91,13 +91,13 @@ public:
 
   ///@{
   /// Multiplier applied before clamping to display colors. Default 1.
-  vtkSetClampMacro(Exposure, double, 0.0, VTK_DOUBLE_MAX);
+  vtkSetMacro(Exposure, double); // a negative or NaN one is an error at the update, not a silent 0
   vtkGetMacro(Exposure, double);
   ///@}
 
   ///@{
   /// Factor on indirect light (needs the solver's SeparateDirect output). Default 1.
-  vtkSetClampMacro(IndirectScale, double, 0.0, VTK_DOUBLE_MAX);
+  vtkSetMacro(IndirectScale, double);
   vtkGetMacro(IndirectScale, double);
   ///@}
 

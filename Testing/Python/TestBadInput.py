@@ -1,6 +1,8 @@
 """Bad input gets a clear error naming the problem and an empty output: no crash, no NaN."""
 
 import math
+import os
+import tempfile
 import sys
 
 import numpy as np
@@ -122,6 +124,24 @@ for i in range(poisoned.GetNumberOfPoints()):
     values.InsertNextTuple3(nan if i == 3 else 0.5, 0.5, 0.5)
 poisoned.GetPointData().AddArray(values)
 expect_error(relight.vtkRadiosityRelight, poisoned, "not finite at item 3")
+# Exposure -1 was clamped to 0 without a word (an all-black picture); NaN reached glTF as null.
+lit = scene()
+lamp = vtkFloatArray()
+lamp.SetName("Radiosity_Lamp")
+lamp.SetNumberOfComponents(3)
+for i in range(lit.GetNumberOfPoints()):
+    lamp.InsertNextTuple3(0.5, 0.5, 0.5)
+lit.GetPointData().AddArray(lamp)
+expect_error(relight.vtkRadiosityRelight, lit, "must be finite and not negative", setup=lambda r: r.SetExposure(-1))
+for exposure in (nan, -1.0):
+    try:
+        relight.write_gltf(lit, os.path.join(tempfile.gettempdir(), "bad_exposure.glb"), exposure=exposure)
+        refused = False
+    except OSError as error:
+        refused = "Exposure is" in str(error)
+    print(f"{'ok  ' if refused else 'FAIL'} write_gltf with exposure {exposure}: refused")
+    if not refused:
+        failures.append(f"write_gltf exposure {exposure}")
 
 # A NaN in a disabled light is not an error: the light contributes nothing.
 r = relight.vtkRadiosityRelight()
