@@ -1,4 +1,5 @@
 #include "Mesh/Mesher.h"
+#include "Mesh/CoincidentCopies.h"
 #include "Mesh/ContactCuts.h"
 #include "Mesh/FaceClusters.h"
 #include "Geometry/Polygon.h"
@@ -278,14 +279,12 @@ double CountWithContacts(const PolygonArrays& polygons, double patchSize, double
 namespace
 {
 /// The polygons the mesher meshes: triangle pairs joined into quads where MergeTriangles.
+/// The polygons the mesher meshes: coincident copies left out (said in `copies`), then
+/// triangle pairs joined where the options ask.
 PairedPolygons Paired(const std::vector<Vec3>& points, const std::vector<int>& offsets,
-  const std::vector<int>& connectivity, const std::vector<int>& surfaceKey, const MesherOptions& options)
+  const std::vector<int>& connectivity, const std::vector<int>& surfaceKey, const MesherOptions& options,
+  CoincidentCopies* copies = nullptr)
 {
-  if (options.MergeTriangles)
-  {
-    const double tolerance = 1e-7 * std::max(Bounds(points).Diagonal(), 1e-300);
-    return MergeTrianglePairs(points, offsets, connectivity, surfaceKey, tolerance);
-  }
   PairedPolygons polygons;
   polygons.offsets = offsets;
   polygons.connectivity = connectivity;
@@ -293,7 +292,53 @@ PairedPolygons Paired(const std::vector<Vec3>& points, const std::vector<int>& o
   {
     polygons.source.push_back(static_cast<int>(i));
   }
-  return polygons;
+  const double tolerance = 1e-7 * std::max(Bounds(points).Diagonal(), 1e-300);
+  const CoincidentCopies found = DropCoincidentCopies(points, surfaceKey, tolerance, polygons);
+  if (copies)
+  {
+    *copies = found;
+  }
+  if (!options.MergeTriangles)
+  {
+    return polygons;
+  }
+  std::vector<int> keys(polygons.source.size(), 0);
+  for (size_t i = 0; i < keys.size(); ++i)
+  {
+    keys[i] = polygons.source[i] < static_cast<int>(surfaceKey.size()) ? surfaceKey[polygons.source[i]] : 0;
+  }
+  PairedPolygons merged = MergeTrianglePairs(points, polygons.offsets, polygons.connectivity, keys, tolerance);
+  for (int& source : merged.source)
+  {
+    source = polygons.source[source]; // back to the input's numbering
+  }
+  return merged;
+}
+
+/// Says which input polygons were left out as copies, or kept though they coincide.
+void WarnAboutCopies(const CoincidentCopies& copies, const MesherOptions& options)
+{
+  const auto list = [](const std::vector<int>& cells) {
+    std::ostringstream text;
+    for (size_t i = 0; i < cells.size() && i < 5; ++i)
+    {
+      text << (i ? ", " : "") << cells[i];
+    }
+    text << (cells.size() > 5 ? ", ..." : "");
+    return text.str();
+  };
+  if (options.Warning && !copies.Dropped.empty())
+  {
+    options.Warning(std::to_string(copies.Dropped.size()) + " cells repeat another cell's corners on the same side (cells " +
+      list(copies.Dropped) + "): left out, as each copy would receive the full light");
+  }
+  if (options.Warning && !copies.Differing.empty())
+  {
+    const std::pair<int, int>& p = copies.Differing.front();
+    options.Warning(std::to_string(copies.Differing.size()) + " pairs of cells coincide with different materials or lights (cells " +
+      std::to_string(p.first) + " and " + std::to_string(p.second) +
+      " first): both kept, and each receives the full light; remove one of each pair");
+  }
 }
 } // namespace
 
@@ -700,7 +745,9 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
     }
   }
   WarnAboutWarpedPolygons(points, offsets, connectivity, options);
-  const PairedPolygons polygons = Paired(points, offsets, connectivity, surfaceKey, options);
+  CoincidentCopies copies;
+  const PairedPolygons polygons = Paired(points, offsets, connectivity, surfaceKey, options, &copies);
+  WarnAboutCopies(copies, options);
   const PolygonArrays paired{ points, polygons.offsets, polygons.connectivity };
   const Contacts contacts = FindSceneContacts(paired, options.WholeScene);
   MesherOptions sized = options;

@@ -1,0 +1,69 @@
+#include "Mesh/CoincidentCopies.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+
+namespace radiosity
+{
+namespace
+{
+/// The polygon's corners rounded to the tolerance and sorted, and the side it faces (the
+/// sign of its normal's largest component): equal for copies, whatever corner they start at.
+std::vector<long long> Key(const std::vector<Vec3>& points, const int* ids, int count, double tolerance)
+{
+  std::vector<std::array<long long, 3>> corners;
+  Vec3 normal;
+  for (int k = 0; k < count; ++k)
+  {
+    const Vec3& p = points[ids[k]];
+    const Vec3& q = points[ids[(k + 1) % count]];
+    normal += Vec3{ (p.y - q.y) * (p.z + q.z), (p.z - q.z) * (p.x + q.x), (p.x - q.x) * (p.y + q.y) };
+    corners.push_back({ std::llround(p.x / tolerance), std::llround(p.y / tolerance), std::llround(p.z / tolerance) });
+  }
+  std::sort(corners.begin(), corners.end());
+  std::vector<long long> key;
+  for (const auto& c : corners)
+  {
+    key.insert(key.end(), c.begin(), c.end());
+  }
+  const double largest[3] = { std::fabs(normal.x), std::fabs(normal.y), std::fabs(normal.z) };
+  const int axis = static_cast<int>(std::max_element(largest, largest + 3) - largest);
+  key.push_back(normal[axis] > 0 ? 1 : -1);
+  return key;
+}
+} // namespace
+
+CoincidentCopies DropCoincidentCopies(
+  const std::vector<Vec3>& points, const std::vector<int>& surfaceKey, double tolerance, PairedPolygons& polygons)
+{
+  CoincidentCopies found;
+  std::map<std::vector<long long>, int> first; // key -> polygon kept
+  PairedPolygons kept;
+  kept.merged = polygons.merged;
+  for (size_t i = 0; i < polygons.source.size(); ++i)
+  {
+    const int* ids = polygons.connectivity.data() + polygons.offsets[i];
+    const int count = polygons.offsets[i + 1] - polygons.offsets[i];
+    const int source = polygons.source[i];
+    const auto [at, isNew] = first.emplace(Key(points, ids, count, tolerance), source);
+    const auto surface = [&](int s) { return s < static_cast<int>(surfaceKey.size()) ? surfaceKey[s] : 0; };
+    if (!isNew && surface(at->second) == surface(source))
+    {
+      found.Dropped.push_back(source);
+      continue;
+    }
+    if (!isNew)
+    {
+      found.Differing.emplace_back(at->second, source);
+    }
+    kept.connectivity.insert(kept.connectivity.end(), ids, ids + count);
+    kept.offsets.push_back(static_cast<int>(kept.connectivity.size()));
+    kept.source.push_back(source);
+  }
+  polygons = std::move(kept);
+  return found;
+}
+
+} // namespace radiosity
