@@ -102,6 +102,17 @@ def with_file(uri, length=44):
     return json.dumps(document).encode()
 
 
+def two_json_chunks():
+    """A .glb whose first chunk is broken JSON and whose good JSON comes after the binary."""
+    document, binary = triangle_gltf()
+    good = json.dumps(document).encode()
+    good += b" " * (-len(good) % 4)
+    bad = b"{broken  "[:8]
+    chunks = (struct.pack("<I4s", len(bad), b"JSON") + bad + struct.pack("<I4s", len(binary), b"BIN\0") + binary +
+              struct.pack("<I4s", len(good), b"JSON") + good)
+    return struct.pack("<4sII", b"glTF", 2, 12 + len(chunks)) + chunks
+
+
 def chain(document, depth):
     document["nodes"] = [{"children": [i + 1]} for i in range(depth)] + [{"mesh": 0}]
 
@@ -123,6 +134,21 @@ GLTF = {
                         "more than one parent"),
     "5000_deep.glb": (damaged(lambda d: chain(d, 5000)), "deeper than 1024"),
     "index_past_the_vertices.glb": (damaged(lambda d: None, (0, 1, 99)), "point 99"),
+    # Found by a review against VTK 9.2's loader: it reads the first chunk as the JSON, drops
+    # entries it cannot read (shifting later indices), keeps offsets in int, wants buffers of
+    # exactly their byteLength and reads sparse indices, morph targets and samplers unchecked.
+    "json_chunk_after_bin.glb": (two_json_chunks(), "not JSON"),
+    "min_of_two_on_vec3.glb": (damaged(lambda d: d["accessors"][0].update(min=[0, 0])), "could read 1 of its 2 accessors"),
+    "type_5.glb": (damaged(lambda d: d["accessors"][0].update(type=5)), "no valid componentType, type or count"),
+    "offset_2^62.glb": (damaged(lambda d: d["bufferViews"][0].update(byteOffset=2**62, byteLength=2**62)), "below 2^31"),
+    "bin_longer_than_claimed.gltf": (with_file("triangle.bin", 40), "claims 40 bytes and holds 44"),
+    "sparse.glb": (damaged(lambda d: d["accessors"][0].update(sparse={"count": 1, "indices": {"bufferView": 1, "componentType": 5123},
+                                                                       "values": {"bufferView": 0}})), "is sparse"),
+    "morph_target_99.glb": (damaged(lambda d: d["meshes"][0]["primitives"][0].update(targets=[{"POSITION": 99}])),
+                            "morph target's POSITION names accessor 99"),
+    "sampler_output_99.glb": (damaged(lambda d: d.update(animations=[{"samplers": [{"input": 0, "output": 99}],
+                                                                     "channels": [{"sampler": 0, "target": {"node": 0, "path": "translation"}}]}])),
+                              "sampler's output names accessor 99"),
 }
 
 

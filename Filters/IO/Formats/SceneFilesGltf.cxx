@@ -36,6 +36,7 @@ struct GltfParts
   std::string Json;
   std::string Binary;
   bool Glb = false;
+  bool HasBinary = false;
 };
 
 GltfParts Split(const std::string& path)
@@ -50,13 +51,23 @@ GltfParts Split(const std::string& path)
   }
   parts.Glb = true;
   size_t at = 12;
-  while (at + 8 <= bytes.size())
+  for (int chunk = 0; at + 8 <= bytes.size(); ++chunk)
   {
     std::uint32_t length = 0;
     std::memcpy(&length, bytes.data() + at, 4);
     const std::string type = bytes.substr(at + 4, 4);
     const std::string data = bytes.substr(at + 8, std::min<size_t>(length, bytes.size() - at - 8));
-    (type == "JSON" ? parts.Json : parts.Binary) = data;
+    // VTK's loader reads the first chunk as the JSON and the first binary chunk as buffer 0:
+    // the checks must see the same ones.
+    if (chunk == 0 && type == "JSON")
+    {
+      parts.Json = data;
+    }
+    else if (chunk > 0 && type == std::string("BIN\0", 4) && !parts.HasBinary)
+    {
+      parts.Binary = data;
+      parts.HasBinary = true;
+    }
     at += 8 + static_cast<size_t>(length);
   }
   return parts;
@@ -113,7 +124,7 @@ std::string Prepare(nlohmann::json& document, bool& patched)
   }
   for (const auto& camera : document.value("cameras", json::array()))
   {
-    const std::string type = camera.is_object() ? camera.value("type", "") : "";
+    const std::string type = Has(camera, "type", &json::is_string) ? camera["type"].get<std::string>() : "";
     if ((type == "perspective" || type == "orthographic") && !Has(camera, type.c_str(), &json::is_object))
     {
       return "a camera has no " + type + " object";
@@ -257,6 +268,47 @@ int AppendNode(const Loader::Model& model, int n, radiosity::RawScene& raw, int 
   return skipped;
 }
 
+/// The first extension the file requires that the loader does not read (its data, Draco
+/// meshes for one, would not be there), said first.
+std::string Unsupported(const nlohmann::json& document, const std::vector<std::string>& supported)
+{
+  if (!Has(document, "extensionsRequired", &nlohmann::json::is_array))
+  {
+    return std::string();
+  }
+  for (const auto& name : document["extensionsRequired"])
+  {
+    const std::string extension = name.is_string() ? name.get<std::string>() : std::string("?");
+    if (std::find(supported.begin(), supported.end(), extension) == supported.end())
+    {
+      return "it requires the extension " + extension + ", which VTK's glTF loader does not read";
+    }
+  }
+  return std::string();
+}
+
+/// VTK's loader leaves out an entry it cannot read (an accessor whose min has the wrong
+/// size, a node with a matrix and a skin...), which shifts every later index onto other
+/// entries: then the file is refused, naming the first list that lost entries.
+std::string DroppedEntries(const nlohmann::json& document, const Loader::Model& model)
+{
+  const std::pair<const char*, size_t> lists[] = { { "accessors", model.Accessors.size() },
+    { "animations", model.Animations.size() }, { "bufferViews", model.BufferViews.size() },
+    { "cameras", model.Cameras.size() }, { "images", model.Images.size() }, { "materials", model.Materials.size() },
+    { "meshes", model.Meshes.size() }, { "nodes", model.Nodes.size() }, { "samplers", model.Samplers.size() },
+    { "scenes", model.Scenes.size() }, { "skins", model.Skins.size() }, { "textures", model.Textures.size() } };
+  for (const auto& list : lists)
+  {
+    const size_t written = Has(document, list.first, &nlohmann::json::is_array) ? document[list.first].size() : 0;
+    if (written != list.second)
+    {
+      return "VTK's glTF loader could read " + std::to_string(list.second) + " of its " + std::to_string(written) + " " +
+        list.first + " (one it cannot read would shift the others)";
+    }
+  }
+  return std::string();
+}
+
 } // namespace
 
 std::string ReadGltf(const std::string& path, radiosity::RawScene& raw, std::vector<std::string>& warnings)
@@ -269,19 +321,33 @@ std::string ReadGltf(const std::string& path, radiosity::RawScene& raw, std::vec
   {
     return "'" + path + "' could not be read as glTF: it " + invalid;
   }
-  const std::string unsafe =
-    CheckGltfReferences(document, path, parts.Glb ? static_cast<long long>(parts.Binary.size()) : -1);
+  vtkNew<Loader> loader;
+  std::string unsafe = Unsupported(document, loader->GetSupportedExtensions());
+  if (unsafe.empty())
+  {
+    unsafe =
+      CheckGltfReferences(document, path, parts.Glb && parts.HasBinary ? static_cast<long long>(parts.Binary.size()) : -1);
+  }
   if (!unsafe.empty())
   {
     return "'" + path + "' could not be read as glTF: " + unsafe;
   }
   const TemporaryFolder folder;
   const std::string readable = patched ? WritePatched(path, parts, document, folder.Path) : path;
-  vtkNew<Loader> loader;
   const ErrorCapture capture(loader);
   std::vector<char> binary;
-  if (!loader->LoadModelMetaDataFromFile(readable) || (parts.Glb && !loader->LoadFileBuffer(readable, binary)) ||
-    !loader->LoadModelData(binary) || !loader->BuildModelVTKGeometry())
+  if (!loader->LoadModelMetaDataFromFile(readable))
+  {
+    return "'" + path + "' could not be read as glTF" +
+      (capture.Message().empty() ? std::string() : " (" + capture.Message() + ")");
+  }
+  const std::string dropped = DroppedEntries(document, *loader->GetInternalModel());
+  if (!dropped.empty())
+  {
+    return "'" + path + "' could not be read as glTF: " + dropped;
+  }
+  if ((parts.Glb && !loader->LoadFileBuffer(readable, binary)) || !loader->LoadModelData(binary) ||
+    !loader->BuildModelVTKGeometry())
   {
     return "'" + path + "' could not be read as glTF" +
       (capture.Message().empty() ? std::string() : " (" + capture.Message() + ")");
