@@ -62,6 +62,19 @@ KNOWN = {
     "no_end_header.ply": (b"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n", "no 'end_header'"),
     "unknown_type.ply": (ascii_ply(3, 1, ["3 0 1 2\n"]).replace(b"property float z", b"property quad z"),
                          "'quad' is not a PLY type"),
+    # Found by a review against VTK 9.2's vtkPLY: what its reader assumes of the layout.
+    "upper_case_axes.ply": (ascii_ply(3, 1, ["3 0 1 2\n"]).replace(b"float x", b"float X"), "no single value 'x'"),
+    "faces_only.ply": (b"ply\nformat ascii 1.0\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n3 0 1 2\n",
+                       "first element is not 'vertex'"),
+    "faces_without_a_list.ply": (ascii_ply(3, 1, ["3\n"]).replace(b"property list uchar int vertex_indices",
+                                                                  b"property uchar red"), "no list 'vertex_indices'"),
+    "float_index_1e9.ply": (ascii_ply(3, 1, ["3 0 1 1e9\n"]).replace(b"list uchar int", b"list uchar float"),
+                            "names vertex 1000000000"),
+    "edge_before_face.ply": (ascii_ply(3, 1, ["3 99999\n", "3 0 1 2\n"]).replace(
+        b"element face", b"element edge 1\nproperty list uchar int vertex_indices\nelement face"), "comes where"),
+    "rewritten_word.ply": (ascii_ply(3, 1, ["3 0vertex_index 1 2\n"]), "not a number"),
+    "form_feed_in_header.ply": (ascii_ply(3, 1, ["3 0 1 2\n"]).replace(b"element vertex", b"element\fvertex"),
+                                "control character"),
 }
 
 
@@ -126,7 +139,8 @@ GLTF = {
     "uri_absolute.gltf": (with_file("/etc/passwd"), "is not in the model's folder"),
     "uri_a_folder.gltf": (with_file("."), "is not a regular file"),
     "count_2^31-1.glb": (damaged(lambda d: d["accessors"][0].update(count=2**31 - 1)), "does not fit its bufferView"),
-    "offset_1e12.glb": (damaged(lambda d: d["bufferViews"][0].update(byteOffset=10**12)), "does not fit its buffer"),
+    "offset_1e12.glb": (damaged(lambda d: d["bufferViews"][0].update(byteOffset=10**12)), "below 2^31"),
+    "offset_past_the_buffer.glb": (damaged(lambda d: d["bufferViews"][0].update(byteOffset=40)), "does not fit its buffer"),
     "position_99999.glb": (damaged(lambda d: d["meshes"][0]["primitives"][0]["attributes"].update(POSITION=99999)),
                            "names accessor 99999, and there are 2 accessors"),
     "own_child.glb": (damaged(lambda d: d["nodes"][0].update(children=[0])), "cycle"),

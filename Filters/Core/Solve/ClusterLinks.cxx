@@ -445,7 +445,8 @@ ClusterLinkSet ClusterLinkBuilder::Build(
   {
     for (int i = std::max(0, begin - batch); i < begin; ++i)
     {
-      held += kFoundBytes * found[i].Receiver.size() + 12.0 * found[i].LeafReceiver.size();
+      // Capacity, not size: a list grown by doubling holds up to twice what it has found.
+      held += kFoundBytes * found[i].Receiver.capacity() + 12.0 * found[i].LeafReceiver.capacity();
     }
     if (keepGoing && !keepGoing(static_cast<double>(begin) / tasks.size(), held))
     {

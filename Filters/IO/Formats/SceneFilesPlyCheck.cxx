@@ -5,6 +5,7 @@
 #include "SceneFiles.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -113,6 +114,9 @@ std::string ParseElement(std::istringstream& words, Header& header)
   return std::string();
 }
 
+/// vtkPLYReader reads a line into 4,096 characters and splits it at spaces and tabs only.
+constexpr size_t kLongestHeaderLine = 4094;
+
 std::string ParseHeader(const std::string& data, Header& header)
 {
   if (data.compare(0, 4, "ply\n") != 0 && data.compare(0, 5, "ply\r\n") != 0)
@@ -128,7 +132,13 @@ std::string ParseHeader(const std::string& data, Header& header)
     {
       break;
     }
-    std::istringstream words(data.substr(at, next - at));
+    const std::string line = data.substr(at, next - at);
+    if (line.size() >= kLongestHeaderLine ||
+      std::any_of(line.begin(), line.end(), [](char c) { return static_cast<unsigned char>(c) < 32 && c != '\t' && c != '\r'; }))
+    {
+      return "a header line is longer than " + std::to_string(kLongestHeaderLine) + " characters or holds a control character";
+    }
+    std::istringstream words(line);
     at = next + 1;
     std::string keyword;
     words >> keyword;
@@ -230,8 +240,12 @@ private:
     {
       ++At;
     }
-    value = std::strtod(Data.substr(start, At - start).c_str(), nullptr);
-    return true;
+    const std::string word = Data.substr(start, At - start);
+    char* end = nullptr;
+    value = std::strtod(word.c_str(), &end);
+    // vtkPLYReader rewrites some words inside a line ("vertex_index") and cuts the line there.
+    Garbled = end != word.c_str() + word.size();
+    return !Garbled;
   }
 
   bool NextBinary(int size, bool integer, bool isSigned, double& value)
@@ -278,6 +292,11 @@ private:
   Encoding Format;
   size_t At;
   size_t LineEnd = 0, After = 0;
+  bool Garbled = false;
+
+public:
+  /// The last word read was not a number.
+  bool NotANumber() const { return Garbled; }
   /// vtkPLYReader reads a line into 4,096 characters; a longer one continues as the next.
   static constexpr size_t kLongestLine = 4094;
 };
@@ -303,21 +322,24 @@ std::string WalkElement(const Element& e, long long vertices, Values& values)
       double count = 1;
       if (p.CountSize > 0 && !values.Next(p.CountSize, true, false, count))
       {
-        return ends + Ordinal(i, e.Count, e.Name) + ": the header promises more than it holds";
+        return values.NotANumber() ? Ordinal(i, e.Count, e.Name) + " holds a word that is not a number"
+                                   : ends + Ordinal(i, e.Count, e.Name) + ": the header promises more than it holds";
       }
       if (count < 0 || count > 1e6)
       {
         return Ordinal(i, e.Count, e.Name) + " has a list of " + std::to_string(static_cast<long long>(count)) + " items";
       }
-      const bool indices = faces && p.CountSize > 0 && p.Integer;
+      const bool indices = faces && p.CountSize > 0 && (p.Name == "vertex_indices" || p.Name == "vertex_index");
       for (long long k = 0; k < static_cast<long long>(count); ++k)
       {
         double v = 0;
         if (!values.Next(p.Size, p.Integer, p.Signed, v))
         {
-          return ends + Ordinal(i, e.Count, e.Name) + ": the header promises more than it holds";
+          return values.NotANumber() ? Ordinal(i, e.Count, e.Name) + " holds a word that is not a number"
+                                     : ends + Ordinal(i, e.Count, e.Name) + ": the header promises more than it holds";
         }
-        if (indices && (v < 0 || v >= static_cast<double>(vertices)))
+        v = indices ? std::trunc(v) : v; // the reader keeps an index as an int
+        if (indices && !(v >= 0 && v < static_cast<double>(vertices)))
         {
           return Ordinal(i, e.Count, e.Name) + " names vertex " + std::to_string(static_cast<long long>(v)) +
             ", and the file has " + std::to_string(vertices);
@@ -331,6 +353,47 @@ std::string WalkElement(const Element& e, long long vertices, Values& values)
 
 } // namespace
 
+/// What vtkPLYReader assumes of the elements: the vertices first, with x, y and z, then
+/// the faces (if any) with a list of vertex indices; it does not skip other elements' data.
+std::string CheckLayout(const Header& header)
+{
+  const auto named = [](const Element& e, const std::string& name) {
+    return std::find_if(e.Properties.begin(), e.Properties.end(), [&](const Property& p) { return p.Name == name; });
+  };
+  if (header.Elements.empty() || header.Elements[0].Name != "vertex")
+  {
+    return "its first element is not 'vertex'";
+  }
+  const Element& vertex = header.Elements[0];
+  for (const char* axis : { "x", "y", "z" })
+  {
+    const auto p = named(vertex, axis);
+    if (p == vertex.Properties.end() || p->CountSize > 0)
+    {
+      return std::string("its vertices have no single value '") + axis + "'";
+    }
+  }
+  for (size_t i = 1; i < header.Elements.size(); ++i)
+  {
+    const std::string& name = header.Elements[i].Name;
+    if ((name == "face" && i != 1) || name == "vertex")
+    {
+      return "element '" + name + "' comes where vtkPLYReader does not look for it (vertex first, then face)";
+    }
+  }
+  if (header.Elements.size() > 1 && header.Elements[1].Name == "face")
+  {
+    const Element& face = header.Elements[1];
+    const auto list = std::find_if(face.Properties.begin(), face.Properties.end(),
+      [](const Property& p) { return p.CountSize > 0 && (p.Name == "vertex_indices" || p.Name == "vertex_index"); });
+    if (list == face.Properties.end())
+    {
+      return "its faces have no list 'vertex_indices'";
+    }
+  }
+  return std::string();
+}
+
 std::string CheckPly(const std::string& path)
 {
   std::ifstream file(path, std::ios::binary);
@@ -339,6 +402,7 @@ std::string CheckPly(const std::string& path)
   const std::string data = whole.str();
   Header header;
   std::string error = ParseHeader(data, header);
+  error = error.empty() ? CheckLayout(header) : error;
   long long vertices = 0;
   for (const Element& e : header.Elements)
   {
