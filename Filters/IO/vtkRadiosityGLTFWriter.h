@@ -37,6 +37,8 @@ public:
   ///@{
   /// Scale from radiosity to COLOR_0 (as the relight filter's Exposure). Default 1.
   vtkSetMacro(Exposure, double); // checked when writing: finite, not negative
+  static double GetExposureMinValue() { return 0.0; }
+  static double GetExposureMaxValue() { return VTK_DOUBLE_MAX; }
   vtkGetMacro(Exposure, double);
   ///@}
 

@@ -87,6 +87,13 @@ void Fill(const radiosity::ImportedScene& scene, vtkPolyData* output)
   output->GetCellData()->AddArray(Ints("MaterialIds", scene.Material));
   output->GetFieldData()->AddArray(Strings("LightNames", scene.LightNames));
   output->GetFieldData()->AddArray(Strings("MaterialNames", scene.MaterialNames));
+  if (mesh.pointQuantum > 0) // the file's coordinates were float, though the output's are double
+  {
+    vtkNew<vtkDoubleArray> quantum;
+    quantum->SetName(vtkRadiosityAdapter::PointQuantumName);
+    quantum->InsertNextValue(mesh.pointQuantum);
+    output->GetFieldData()->AddArray(quantum);
+  }
 }
 
 } // namespace

@@ -26,14 +26,13 @@ namespace vtkRadiosityAdapter
 
 double PointQuantum(vtkPolyData* input, double farthest)
 {
-  // The mesher writes its input's (its own points are double, whatever it was given).
-  vtkDataArray* given = input->GetFieldData()->GetArray(PointQuantumName);
-  if (given && given->GetNumberOfTuples() > 0)
-  {
-    return given->GetTuple1(0);
-  }
+  // The scene reader and the mesher write what their input had (their own points are
+  // double, whatever they were given); float points of this input's own count too.
   const bool single = input->GetPoints() && input->GetPoints()->GetDataType() == VTK_FLOAT;
-  return single ? farthest * std::ldexp(1.0, -23) : 0.0;
+  double quantum = single ? farthest * std::ldexp(1.0, -23) : 0.0;
+  vtkDataArray* given = input->GetFieldData()->GetArray(PointQuantumName);
+  const double written = given && given->GetNumberOfTuples() > 0 ? given->GetTuple1(0) : 0.0;
+  return written >= 0 && written <= VTK_DOUBLE_MAX ? std::max(quantum, written) : quantum;
 }
 
 bool CopyPolygons(vtkPolyData* input, radiosity::SceneMesh& mesh, std::string& error)

@@ -91,13 +91,18 @@ public:
 
   ///@{
   /// Multiplier applied before clamping to display colors. Default 1.
-  vtkSetMacro(Exposure, double); // a negative or NaN one is an error at the update, not a silent 0
+  /// A negative or NaN one is an error at the update (it was clamped to 0: a black picture).
+  vtkSetMacro(Exposure, double);
+  static double GetExposureMinValue() { return 0.0; }
+  static double GetExposureMaxValue() { return VTK_DOUBLE_MAX; }
   vtkGetMacro(Exposure, double);
   ///@}
 
   ///@{
   /// Factor on indirect light (needs the solver's SeparateDirect output). Default 1.
-  vtkSetMacro(IndirectScale, double);
+  vtkSetMacro(IndirectScale, double); // checked at the update as Exposure is
+  static double GetIndirectScaleMinValue() { return 0.0; }
+  static double GetIndirectScaleMaxValue() { return VTK_DOUBLE_MAX; }
   vtkGetMacro(IndirectScale, double);
   ///@}
 

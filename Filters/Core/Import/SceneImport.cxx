@@ -189,6 +189,7 @@ std::string BuildImportedScene(const RawScene& raw, const ImportOptions& options
     }
     out.Mesh.points.push_back(raw.points[p] * options.UnitScale);
   }
+  out.Mesh.pointQuantum = raw.pointQuantum * options.UnitScale;
   std::vector<int> kept;
   for (int i = 0; i < raw.NumberOfPolygons(); ++i)
   {

@@ -32,6 +32,9 @@ struct RawScene
   std::vector<Vec3> color;  ///< per polygon, multiplies its material's diffuse; empty: none
   std::vector<ImportMaterial> materials;
   std::vector<std::string> objectNames;
+  /// How finely the source gave the coordinates (float data: its spacing at the farthest
+  /// point; 0 for double): see SceneMesh::pointQuantum.
+  double pointQuantum = 0;
   int NumberOfPolygons() const { return static_cast<int>(offsets.size()) - 1; }
 };
 

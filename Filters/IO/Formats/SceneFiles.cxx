@@ -143,6 +143,7 @@ int AppendPolygons(vtkPolyData* data, const vtkMatrix4x4* transform, int materia
 {
   const int base = static_cast<int>(raw.points.size());
   const bool mirrored = transform && vtkMatrix4x4::Determinant(&transform->Element[0][0]) < 0;
+  const bool single = data->GetPoints() && data->GetPoints()->GetDataType() == VTK_FLOAT;
   for (vtkIdType p = 0; p < data->GetNumberOfPoints(); ++p)
   {
     double x[4] = { 0, 0, 0, 1 };
@@ -152,6 +153,8 @@ int AppendPolygons(vtkPolyData* data, const vtkMatrix4x4* transform, int materia
       vtkMatrix4x4::MultiplyPoint(&transform->Element[0][0], x, x);
     }
     raw.points.push_back({ x[0], x[1], x[2] });
+    const double farthest = std::max({ std::fabs(x[0]), std::fabs(x[1]), std::fabs(x[2]) });
+    raw.pointQuantum = single ? std::max(raw.pointQuantum, std::ldexp(farthest, -23)) : raw.pointQuantum;
   }
   auto each = [&](vtkCellArray* cells, bool strip) {
     auto iterator = vtk::TakeSmartPointer(cells->NewIterator());
