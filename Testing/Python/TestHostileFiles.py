@@ -230,49 +230,53 @@ def read_all(paths):
     return results
 
 
-with tempfile.TemporaryDirectory() as folder:
-    known = {**KNOWN, **GLTF}
-    files = {"triangle.bin": triangle_gltf()[1]}
-    for name, (data, _) in known.items():
-        files[name] = data
-    for name, data in mutations(CASES):
-        files[name] = data
-    for name, data in glb_mutations(CASES):
-        files[name] = data
-    paths = []
-    for name, data in files.items():
-        path = pathlib.Path(folder) / name
-        path.write_bytes(data)
-        paths += [] if name.endswith(".bin") else [str(path)]
-    # Not regular files: a FIFO named like a scene blocks any reader for ever, /dev/zero
-    # as a material library never ends, a folder as one was silently passed over.
-    specials = {"fifo.obj": "is not a regular file", "zero_mtl.obj": "'/dev/zero', which is missing or not a regular file",
-                "folder_mtl.obj": "which is missing or not a regular file"}
-    os.mkfifo(pathlib.Path(folder) / "fifo.obj")
-    (pathlib.Path(folder) / "sub").mkdir()
-    triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"
-    (pathlib.Path(folder) / "zero_mtl.obj").write_text("mtllib /dev/zero\n" + triangle)
-    (pathlib.Path(folder) / "folder_mtl.obj").write_text("mtllib sub\n" + triangle)
-    paths += [str(pathlib.Path(folder) / name) for name in specials]
-    known.update({name: (None, expected) for name, expected in specials.items()})
-    results = read_all(paths)
+def main():
+    with tempfile.TemporaryDirectory() as folder:
+        known = {**KNOWN, **GLTF}
+        files = {"triangle.bin": triangle_gltf()[1]}
+        for name, (data, _) in known.items():
+            files[name] = data
+        for name, data in mutations(CASES):
+            files[name] = data
+        for name, data in glb_mutations(CASES):
+            files[name] = data
+        paths = []
+        for name, data in files.items():
+            path = pathlib.Path(folder) / name
+            path.write_bytes(data)
+            paths += [] if name.endswith(".bin") else [str(path)]
+        # Not regular files: a FIFO named like a scene blocks any reader for ever, /dev/zero
+        # as a material library never ends, a folder as one was silently passed over.
+        specials = {"fifo.obj": "is not a regular file", "zero_mtl.obj": "'/dev/zero', which is missing or not a regular file",
+                    "folder_mtl.obj": "which is missing or not a regular file"}
+        os.mkfifo(pathlib.Path(folder) / "fifo.obj")
+        (pathlib.Path(folder) / "sub").mkdir()
+        triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"
+        (pathlib.Path(folder) / "zero_mtl.obj").write_text("mtllib /dev/zero\n" + triangle)
+        (pathlib.Path(folder) / "folder_mtl.obj").write_text("mtllib sub\n" + triangle)
+        paths += [str(pathlib.Path(folder) / name) for name in specials]
+        known.update({name: (None, expected) for name, expected in specials.items()})
+        results = read_all(paths)
 
-    for name, (_, expected) in known.items():
-        status, text = results.get(str(pathlib.Path(folder) / name), ("missing", ""))
-        if expected is None:
-            check(status == "ok", f"{name} imports ({status} {text[:120]})")
-        else:
-            check(status == "error" and expected in text and name in text,
-                  f"{name}: one error naming the file and saying '{expected}' ({status}: {text[:160]})")
-    crashed = [p for p, (s, _) in results.items() if s == "crash"]
-    unclear = [p for p, (s, t) in results.items() if s == "error" and pathlib.Path(p).name not in t]
-    missing = [p for p in paths if p not in results]
-    check(not crashed, f"{2 * CASES} mutants and {len(known)} known files: no crash "
-                       f"({len(crashed)}: {[pathlib.Path(p).name for p in crashed[:5]]} {results.get(crashed[0]) if crashed else ''})")
-    check(not unclear, f"every error names its file ({len(unclear)} do not: "
-                       f"{[results[p][1][:100] for p in unclear[:3]]})")
-    check(not missing, f"every file got an answer ({len(missing)} did not)")
-    errors = sum(1 for s, _ in results.values() if s == "error")
-    print(f"{len(results)} files: {len(results) - errors - len(crashed)} imported, {errors} refused, {len(crashed)} crashed")
+        for name, (_, expected) in known.items():
+            status, text = results.get(str(pathlib.Path(folder) / name), ("missing", ""))
+            if expected is None:
+                check(status == "ok", f"{name} imports ({status} {text[:120]})")
+            else:
+                check(status == "error" and expected in text and name in text,
+                      f"{name}: one error naming the file and saying '{expected}' ({status}: {text[:160]})")
+        crashed = [p for p, (s, _) in results.items() if s == "crash"]
+        unclear = [p for p, (s, t) in results.items() if s == "error" and pathlib.Path(p).name not in t]
+        missing = [p for p in paths if p not in results]
+        check(not crashed, f"{2 * CASES} mutants and {len(known)} known files: no crash "
+                           f"({len(crashed)}: {[pathlib.Path(p).name for p in crashed[:5]]} {results.get(crashed[0]) if crashed else ''})")
+        check(not unclear, f"every error names its file ({len(unclear)} do not: "
+                           f"{[results[p][1][:100] for p in unclear[:3]]})")
+        check(not missing, f"every file got an answer ({len(missing)} did not)")
+        errors = sum(1 for s, _ in results.values() if s == "error")
+        print(f"{len(results)} files: {len(results) - errors - len(crashed)} imported, {errors} refused, {len(crashed)} crashed")
+    finish("TestHostileFiles")
 
-finish("TestHostileFiles")
+
+if __name__ == "__main__":
+    main()
