@@ -246,7 +246,11 @@ int vtkLightTaggedRadiosity::Solve(
     error = PrepareOrReuse(input, scene.Mesh, threads, group, prepared, this->LastPreparationReused);
   }
   const radiosity::RadiositySolver solver(scene.Mesh, prepared);
-  if (!error.empty() || !(error = solver.Error()).empty())
+  if (error.empty() && (error = solver.Error()).empty())
+  {
+    error = radiosity::NoFiniteSolution(scene.Mesh, solver.Geometry(), solver.Rays());
+  }
+  if (!error.empty())
   {
     vtkErrorMacro(<< "Cannot solve: " << error << ".");
     return 0;

@@ -86,6 +86,30 @@ TEST(Conservation, ClosedRoomAtRhoNearOneReachesTheClosedForm)
   }
 }
 
+TEST(Conservation, ClosedRoomAtRhoOneHasNoFiniteSolutionAndSaysSo)
+{
+  // Every surface reflecting all the light of a closed room: the light never leaves, and a
+  // shooting method ran to its shot cap. An opening, or a reflectance below 1, gives a sum.
+  const auto lamp = [](int face) { return face == 1 ? 0 : -1; };
+  const SceneMesh closed = Box(1.0, 4, 2, { 0.5, 1.0, 0.5 }, lamp);
+  const RadiositySolver solver(closed);
+  const std::string said = NoFiniteSolution(closed, solver.Geometry(), solver.Rays());
+  EXPECT_NE(said.find("all of the green light and the scene is closed"), std::string::npos) << said;
+  SceneMesh open = closed; // without the face at x = 1 (its 16 polygons are the last)
+  open.offsets.resize(open.offsets.size() - 16);
+  open.connectivity.resize(open.offsets.back());
+  for (std::vector<int>* perPolygon : { &open.lightId, &open.patchId })
+  {
+    perPolygon->resize(open.NumberOfPolygons());
+  }
+  open.reflectance.resize(open.NumberOfPolygons());
+  const RadiositySolver opened(open);
+  EXPECT_EQ(NoFiniteSolution(open, opened.Geometry(), opened.Rays()), "");
+  const SceneMesh below = Box(1.0, 4, 2, { 0.999, 0.999, 0.999 }, lamp);
+  const RadiositySolver dimmer(below);
+  EXPECT_EQ(NoFiniteSolution(below, dimmer.Geometry(), dimmer.Rays()), "");
+}
+
 TEST(Conservation, LampRoomAtRhoNearOneNeverGains)
 {
   // The lamp room at rho = 0.999 diverged (unshot 2e22 times its start). Its lamp's back

@@ -101,6 +101,8 @@ expect_error(solver, scene(points=flat), "cell 0 has zero area")
 expect_error(mesher, scene(points=flat), "cell 0 has zero area")
 nan_point = [(0, 0, 1), (0, nan, 1), (1, 1, 1), (1, 0, 1), (0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)]
 expect_error(solver, scene(points=nan_point), "non-finite coordinate")
+# A closed room reflecting all the light has no finite solution: said, not run to the cap.
+expect_error(solver, relight.furnace_box(rho=1.0), "no finite solution")
 # Settings that cannot mean anything: a NaN threshold ended every solve at once as "converged".
 expect_error(solver, scene(), "ConvergenceThreshold is nan", setup=lambda s: s.SetConvergenceThreshold(nan))
 expect_error(solver, scene(), "TimeBudget is nan", setup=lambda s: s.SetTimeBudget(nan))

@@ -1,6 +1,7 @@
 #include "Solve/RadiositySolver.h"
 #include "Base/WorkerPool.h"
 #include "Geometry/ClusterTree.h"
+#include "Solve/ShooterFormFactors.h"
 #include "Solve/SolverMethods.h"
 
 #include <algorithm>
@@ -90,6 +91,37 @@ std::string OptionsProblem(const SolverOptions& options)
     return "TimeBudget is " + std::to_string(options.TimeBudget) + "; it is seconds, 0 for none";
   }
   return std::string();
+}
+
+std::string NoFiniteSolution(const SceneMesh& mesh, const SceneGeometry& geometry, const Visibility& rays)
+{
+  static const char* const names[3] = { "red", "green", "blue" };
+  int channel = -1;
+  for (int c = 0; c < 3 && channel < 0; ++c)
+  {
+    bool all = true;
+    for (size_t e = 0; e < geometry.normal.size() && all; ++e)
+    {
+      all = geometry.enclosed[e] || mesh.reflectance[e][c] >= 1.0;
+    }
+    channel = all ? c : -1;
+  }
+  if (channel < 0)
+  {
+    return std::string();
+  }
+  const WorkerPool pool(1);
+  ShooterFormFactors probes(mesh, geometry, rays, pool);
+  for (size_t p = 0; p < geometry.patchElements.size(); ++p)
+  {
+    if (geometry.patchOpenArea[p] > 0 && !probes.ViewIsClosed(static_cast<int>(p)))
+    {
+      return std::string(); // light escapes through an opening: the sum converges
+    }
+  }
+  return std::string("every surface reflects all of the ") + names[channel] +
+    " light and the scene is closed: light never leaves, so there is no finite solution; give the surfaces a "
+    "reflectance below 1";
 }
 
 int ShotCap(const SolverOptions& options, int patches)

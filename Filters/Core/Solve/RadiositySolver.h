@@ -207,6 +207,12 @@ using SolveFunction = void (*)(const SceneMesh& mesh, const SceneGeometry& geome
 /// a NaN threshold stopped every solve at once, reported as converged.
 std::string OptionsProblem(const SolverOptions& options);
 
+/// Empty, or why the scene has no finite solution: every open surface reflects all of a
+/// color channel and every patch sees a closed scene, so light in that channel never
+/// leaves (a shooting method would run to its shot cap). Probe rays only when every
+/// reflectance is 1 in some channel.
+std::string NoFiniteSolution(const SceneMesh& mesh, const SceneGeometry& geometry, const Visibility& rays);
+
 /// The shot cap in force for `patches` patches (see SolverOptions::MaximumShots).
 int ShotCap(const SolverOptions& options, int patches);
 
