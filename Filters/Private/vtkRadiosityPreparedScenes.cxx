@@ -1,8 +1,10 @@
 #include "vtkRadiosityPreparedScenes.h"
+#include "vtkRadiosityAdapter.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkFieldData.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkNew.h"
@@ -86,6 +88,8 @@ struct Fingerprint
     f.Mesh = HashArray(data->GetPoints() ? data->GetPoints()->GetData() : nullptr, 1);
     f.Mesh = HashArray(polygons ? polygons->GetOffsetsArray() : nullptr, f.Mesh);
     f.Mesh = HashArray(polygons ? polygons->GetConnectivityArray() : nullptr, f.Mesh);
+    // The points' precision sets what counts as touching (MarkEnclosed), a part of the preparation.
+    f.Mesh = HashArray(data->GetFieldData()->GetArray(vtkRadiosityAdapter::PointQuantumName), f.Mesh);
     f.Patches = HashArray(data->GetCellData()->GetArray("PatchId"), 2);
     return f;
   }

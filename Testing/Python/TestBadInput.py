@@ -110,30 +110,26 @@ expect_error(mesher, scene(), "choose a larger ElementSize", setup=lambda m: m.S
 
 # Relight: no solutions, wrong array types, NaN inside a solution.
 expect_error(relight.vtkRadiosityRelight, scene(), "no lights")
-wrong = scene()
-ints = vtkIntArray()
-ints.SetName("Radiosity_Bad")
-ints.SetNumberOfComponents(3)
-for _ in range(wrong.GetNumberOfPoints()):
-    ints.InsertNextTuple3(1, 1, 1)
-wrong.GetPointData().AddArray(ints)
-expect_error(relight.vtkRadiosityRelight, wrong, "solutions must be float or double")
-poisoned = scene()
-values = vtkFloatArray()
-values.SetName("Radiosity_Lamp")
-values.SetNumberOfComponents(3)
-for i in range(poisoned.GetNumberOfPoints()):
-    values.InsertNextTuple3(nan if i == 3 else 0.5, 0.5, 0.5)
-poisoned.GetPointData().AddArray(values)
+
+
+def with_solution(kind, name, value):
+    """scene() with a 3-component point array `name` of type `kind`, value(i) at point i."""
+    data = scene()
+    array = kind()
+    array.SetName(name)
+    array.SetNumberOfComponents(3)
+    for i in range(data.GetNumberOfPoints()):
+        array.InsertNextTuple3(value(i), 0.5, 0.5)
+    data.GetPointData().AddArray(array)
+    return data
+
+
+expect_error(relight.vtkRadiosityRelight, with_solution(vtkIntArray, "Radiosity_Bad", lambda i: 1),
+             "solutions must be float or double")
+poisoned = with_solution(vtkFloatArray, "Radiosity_Lamp", lambda i: nan if i == 3 else 0.5)
 expect_error(relight.vtkRadiosityRelight, poisoned, "not finite at item 3")
 # Exposure -1 was clamped to 0 without a word (an all-black picture); NaN reached glTF as null.
-lit = scene()
-lamp = vtkFloatArray()
-lamp.SetName("Radiosity_Lamp")
-lamp.SetNumberOfComponents(3)
-for i in range(lit.GetNumberOfPoints()):
-    lamp.InsertNextTuple3(0.5, 0.5, 0.5)
-lit.GetPointData().AddArray(lamp)
+lit = with_solution(vtkFloatArray, "Radiosity_Lamp", lambda i: 0.5)
 expect_error(relight.vtkRadiosityRelight, lit, "must be finite and not negative", setup=lambda r: r.SetExposure(-1))
 for exposure in (nan, -1.0):
     try:

@@ -1,4 +1,5 @@
 #include "Solve/ClusteredRadiosity.h"
+#include "Solve/AmbientTerm.h"
 #include "Solve/Channels.h"
 #include "Solve/ClusterGather.h"
 #include "Solve/ElementTree.h"
@@ -395,14 +396,7 @@ private:
   /// evenly and interreflected in closed form.
   void AddAmbient()
   {
-    Vec3 meanRho;
-    double area = 0;
-    for (int e = 0; e < N; ++e)
-    {
-      meanRho += Mesh.reflectance[e] * G.area[e];
-      area += G.area[e];
-    }
-    meanRho = meanRho * (1.0 / area);
+    const AmbientTerm ambient(Mesh, G, N);
     for (int m = 0; m < L; ++m)
     {
       Vec3 left;
@@ -414,10 +408,7 @@ private:
       {
         left += Channel::To(Last[At(e, m)]) * G.area[e];
       }
-      for (int c = 0; c < 3; ++c)
-      {
-        Out.Ambient[m][c] = left[c] / area / std::max(1.0 - meanRho[c], 1e-6); // capped: rho = 1 has none
-      }
+      Out.Ambient[m] = ambient.Of(left);
     }
   }
 

@@ -6,6 +6,7 @@
 
 #include "Geometry/PatchNodes.h"
 #include "Solve/RadiositySolver.h"
+#include "Solve/AmbientTerm.h"
 #include "Solve/Channels.h"
 #include "Solve/RankTable.h"
 #include "Solve/ReceiverNodes.h"
@@ -631,20 +632,7 @@ private:
   /// shows rho * ambient on top of what it received.
   void AddAmbient()
   {
-    Vec3 meanRho;
-    double area = 0;
-    for (int e = 0; e < Elements; ++e)
-    {
-      meanRho += Mesh.reflectance[e] * G.area[e];
-      area += G.area[e];
-    }
-    meanRho = meanRho * (1.0 / area);
-    Vec3 interreflection;
-    for (int c = 0; c < 3; ++c)
-    {
-      // Capped: a closed scene of perfect reflectors has no finite ambient.
-      interreflection[c] = 1.0 / std::max(1.0 - meanRho[c], 1e-6);
-    }
+    const AmbientTerm ambient(Mesh, G, Elements);
     for (int m = 0; m < L; ++m)
     {
       Vec3 unshotPower;
@@ -654,9 +642,7 @@ private:
       }
       double summed[3] = { unshotPower.x, unshotPower.y, unshotPower.z };
       Group.Sum(summed, 3);
-      unshotPower = { summed[0], summed[1], summed[2] };
-      const Vec3 a = unshotPower * (1.0 / area);
-      Out.Ambient[m] = { interreflection.x * a.x, interreflection.y * a.y, interreflection.z * a.z };
+      Out.Ambient[m] = ambient.Of({ summed[0], summed[1], summed[2] });
     }
   }
 

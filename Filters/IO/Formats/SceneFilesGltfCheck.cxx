@@ -2,10 +2,9 @@
 // trusts it: an index past a list, a range past its buffer, a file outside the model's
 // folder or a node graph with a cycle crash that loader (or read what is not the model's).
 #include "SceneFilesGltfCheck.h"
+#include "SceneFiles.h"
 
 #include <vtksys/SystemTools.hxx>
-
-#include <sys/stat.h>
 
 #include <vector>
 
@@ -97,17 +96,16 @@ std::string LocalFile(const std::string& uri, const std::string& folder, long lo
       return "'" + uri + "' is not in the model's folder";
     }
   }
-  struct stat info;
   const std::string path = folder + "/" + uri;
-  if (stat(path.c_str(), &info) != 0)
+  if (!vtksys::SystemTools::PathExists(path))
   {
     return "'" + uri + "' is missing";
   }
-  if (!S_ISREG(info.st_mode))
+  if (!RegularFile(path))
   {
     return "'" + uri + "' is not a regular file";
   }
-  size = static_cast<long long>(info.st_size);
+  size = static_cast<long long>(vtksys::SystemTools::FileLength(path));
   return std::string();
 }
 

@@ -9,7 +9,6 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <sstream>
 #include <vector>
 
@@ -396,10 +395,8 @@ std::string CheckLayout(const Header& header)
 
 std::string CheckPly(const std::string& path)
 {
-  std::ifstream file(path, std::ios::binary);
-  std::ostringstream whole;
-  whole << file.rdbuf();
-  const std::string data = whole.str();
+  std::string data;
+  ReadText(path, data);
   Header header;
   std::string error = ParseHeader(data, header);
   error = error.empty() ? CheckLayout(header) : error;
