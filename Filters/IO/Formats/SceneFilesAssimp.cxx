@@ -7,6 +7,9 @@
 #include <vtksys/Process.h>
 #include <vtksys/SystemTools.hxx>
 
+#include <algorithm>
+#include <fstream>
+
 
 namespace SceneFiles
 {
@@ -58,8 +61,35 @@ std::string RunAssimp(const std::string& program, const std::string& in, const s
 
 } // namespace
 
+/// An IFC (STEP) file ends with END-ISO-10303-21; assimp reads a cut one without a word,
+/// as the part of the building before the cut.
+std::string CheckStepEnd(const std::string& path)
+{
+  const std::string extension = vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(path));
+  if (extension != ".ifc")
+  {
+    return std::string();
+  }
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  const std::streamoff size = in.tellg();
+  const std::streamoff tail = std::min<std::streamoff>(size, 256);
+  std::string end(static_cast<size_t>(std::max<std::streamoff>(tail, 0)), ' ');
+  in.seekg(size - tail);
+  in.read(&end[0], tail);
+  const size_t last = end.find_last_not_of(" \t\r\n");
+  const std::string mark = "END-ISO-10303-21;";
+  const bool whole = last != std::string::npos && last + 1 >= mark.size() &&
+    end.compare(last + 1 - mark.size(), mark.size(), mark) == 0;
+  return whole ? std::string() : "'" + path + "' does not end with END-ISO-10303-21; (the file is cut short)";
+}
+
 std::string ReadWithAssimp(const std::string& path, radiosity::RawScene& raw, std::vector<std::string>& warnings)
 {
+  const std::string cut = CheckStepEnd(path);
+  if (!cut.empty())
+  {
+    return cut;
+  }
   const std::string program = vtksys::SystemTools::FindProgram("assimp");
   if (program.empty())
   {
