@@ -61,8 +61,8 @@ std::string RunAssimp(const std::string& program, const std::string& in, const s
 
 } // namespace
 
-/// An IFC (STEP) file ends with END-ISO-10303-21; assimp reads a cut one without a word,
-/// as the part of the building before the cut.
+/// An IFC (STEP) file starts with ISO-10303-21; and ends with END-ISO-10303-21; assimp
+/// reads a cut one without a word, as the part of the building before the cut.
 std::string CheckStepEnd(const std::string& path)
 {
   const std::string extension = vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(path));
@@ -72,6 +72,13 @@ std::string CheckStepEnd(const std::string& path)
   }
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   const std::streamoff size = in.tellg();
+  std::string start(13, ' ');
+  in.seekg(0);
+  in.read(&start[0], 13);
+  if (start != "ISO-10303-21;")
+  {
+    return std::string(); // not STEP at all: assimp says what it makes of it
+  }
   const std::streamoff tail = std::min<std::streamoff>(size, 256);
   std::string end(static_cast<size_t>(std::max<std::streamoff>(tail, 0)), ' ');
   in.seekg(size - tail);
