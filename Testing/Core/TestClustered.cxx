@@ -69,7 +69,7 @@ TEST(Clustered, FurnaceGivesOneOverOneMinusRho)
     const Solution s = Solve(box, 1, Options(SolverMethod::Clustered, 1e-7));
     ASSERT_TRUE(s.Statistics.Converged);
     EXPECT_EQ(s.Statistics.Method, SolverMethod::Clustered);
-    EXPECT_GT(s.Statistics.VolumeLinks, 4 * s.Statistics.ElementLinks);
+    EXPECT_GT(s.Statistics.VolumeLinks, 2 * s.Statistics.ElementLinks); // element pairs far apart count as element links
     const double expected = 1.0 / (1.0 - rho);
     double mean = 0, worst = 0;
     for (const Vec3& b : s.Radiosity)

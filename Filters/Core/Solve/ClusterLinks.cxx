@@ -75,6 +75,53 @@ void ClusterLinkBuilder::SortByReceiver(std::vector<Found>& found, ClusterLinkSe
   }
 }
 
+void ClusterLinkBuilder::SortBySource(const WorkerPool& pool, ClusterLinkSet& links)
+{
+  // Neighbouring receivers gather from neighbouring sources: visited in order, a bounce
+  // finds the sources' sums still in the cache.
+  pool.For(static_cast<int>(links.FarStart.size()) - 1, 256, [&](int begin, int end) {
+    std::vector<std::pair<int, int>> order;
+    std::vector<float> coupling;
+    std::vector<unsigned char> mixed;
+    for (int r = begin; r < end; ++r)
+    {
+      const size_t first = links.FarStart[r], count = links.FarStart[r + 1] - first;
+      order.resize(count);
+      for (size_t i = 0; i < count; ++i)
+      {
+        order[i] = { links.Source[first + i], static_cast<int>(i) };
+      }
+      std::sort(order.begin(), order.end());
+      coupling.assign(links.Coupling.begin() + first, links.Coupling.begin() + first + count);
+      mixed.assign(links.Mixed.begin() + first, links.Mixed.begin() + first + count);
+      for (size_t i = 0; i < count; ++i)
+      {
+        links.Source[first + i] = order[i].first;
+        links.Coupling[first + i] = coupling[order[i].second];
+        links.Mixed[first + i] = mixed[order[i].second];
+      }
+    }
+  });
+  pool.For(static_cast<int>(links.NearStart.size()) - 1, 256, [&](int begin, int end) {
+    std::vector<std::pair<int, float>> order;
+    for (int r = begin; r < end; ++r)
+    {
+      const size_t first = links.NearStart[r], count = links.NearStart[r + 1] - first;
+      order.resize(count);
+      for (size_t i = 0; i < count; ++i)
+      {
+        order[i] = { links.LeafSource[first + i], links.LeafFactor[first + i] };
+      }
+      std::sort(order.begin(), order.end());
+      for (size_t i = 0; i < count; ++i)
+      {
+        links.LeafSource[first + i] = order[i].first;
+        links.LeafFactor[first + i] = order[i].second;
+      }
+    }
+  });
+}
+
 ClusterLinkBuilder::ClusterLinkBuilder(const SceneMesh& mesh, const SceneGeometry& g, const ElementTree& tree,
   const Visibility& rays, const ShooterFormFactors& culling, const ClusterLinkOptions& options)
   : Mesh(mesh)
@@ -238,10 +285,18 @@ void ClusterLinkBuilder::AddFar(int a, int b, Found& found) const
     RefineChildren(a, b, found, true); // a shadow's edge crosses them: link their parts instead
     return;
   }
-  const int ends[2][2] = { { a, b }, { b, a } };
   // One coupling both ways keeps reciprocity (A_a F_ab = A_b F_ba), so a uniformly bright
   // closed scene stays uniform.
   const double shared = visible / (Pi * d2 + 0.5 * (projectedA + projectedB));
+  if (Tree.IsLeaf(a) && Tree.IsLeaf(b) && !mixedA && !mixedB)
+  {
+    // Two elements facing each other: the same transport as one number each way, which a
+    // bounce applies at a third of a node link's cost.
+    const double exchange = shared * projectedA * projectedB;
+    AddElementPair(Tree.ElementOf(a), Tree.ElementOf(b), exchange / A.Area, exchange / B.Area, found);
+    return;
+  }
+  const int ends[2][2] = { { a, b }, { b, a } };
   const double coupling[2] = { shared, shared };
   for (int k = 0; k < 2; ++k)
   {
@@ -265,8 +320,13 @@ void ClusterLinkBuilder::AddNear(int a, int b, Found& found) const
     return;
   }
   const double visible = NeedsRays(a, b) ? Visible(a, b, found.Rays) : 1.0;
+  AddElementPair(ea, eb, fromA * visible, fromB * visible, found);
+}
+
+void ClusterLinkBuilder::AddElementPair(int ea, int eb, double fromA, double fromB, Found& found)
+{
   const int ends[2][2] = { { ea, eb }, { eb, ea } };
-  const double factor[2] = { fromA * visible, fromB * visible };
+  const double factor[2] = { fromA, fromB };
   for (int k = 0; k < 2; ++k)
   {
     if (factor[k] > 0)
@@ -465,6 +525,7 @@ ClusterLinkSet ClusterLinkBuilder::Build(
     });
   }
   SortByReceiver(found, links);
+  SortBySource(pool, links);
   return links;
 }
 

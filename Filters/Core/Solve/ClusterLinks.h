@@ -20,9 +20,10 @@ namespace radiosity
 struct ClusterLinkSet
 {
   /// Far links between tree nodes in full or partial view, node n's at [FarStart[n],
-  /// FarStart[n + 1]): the receiver's irradiance vector gains Coupling x (M_source . u) x
-  /// (-u), where M is the sum of radiosity x area x normal over the source's elements and u
-  /// the unit vector from the source's centre to the receiver's (FarDirection).
+  /// FarStart[n + 1]) in the order of their sources: the receiver's irradiance vector gains
+  /// Coupling x (M_source . u) x (-u), where M is the sum of radiosity x area x normal over
+  /// the source's elements and u the unit vector from the source's centre to the
+  /// receiver's (FarDirection).
   std::vector<size_t> FarStart;
   std::vector<int> Source;
   std::vector<float> Coupling;
@@ -30,9 +31,10 @@ struct ClusterLinkSet
   /// towards u is taken from the clamped cosine's series), 2 where the receiver's do not
   /// (each element's share likewise), 3 for both.
   std::vector<unsigned char> Mixed;
-  /// Near links between two elements, element e's at [NearStart[e], NearStart[e + 1]):
+  /// Links between two elements, element e's at [NearStart[e], NearStart[e + 1]):
   /// irradiance += Factor x the source's radiosity, with Factor = F(receiver -> source) by
-  /// Lambert's formula and shadow rays.
+  /// Lambert's formula and shadow rays (near), or a far link's coupling between two
+  /// elements facing each other. Each receiver's links in the order of their sources.
   std::vector<size_t> NearStart;
   std::vector<int> LeafSource;
   std::vector<float> LeafFactor;
@@ -107,6 +109,7 @@ private:
   /// Every task's links into `links`, sorted by receiver (the order the gathering runs in,
   /// each receiver's links in one thread), in the order the tasks found them.
   void SortByReceiver(std::vector<Found>& found, ClusterLinkSet& links) const;
+  static void SortBySource(const WorkerPool& pool, ClusterLinkSet& links);
   std::vector<Task> Frontier(int wanted) const;
   /// The pairs a pair splits into: both halves of a node paired with itself, else the
   /// halves of the larger node with the other.
@@ -116,6 +119,8 @@ private:
   void Refine(int a, int b, Found& found, bool seen) const;
   void AddFar(int a, int b, Found& found) const;
   void AddNear(int a, int b, Found& found) const;
+  /// Element a gathers fromA x b's radiosity, b fromB x a's (a near link each way).
+  static void AddElementPair(int ea, int eb, double fromA, double fromB, Found& found);
   /// True when no point of node b lies in front of node a's elements' planes.
   bool NotInFront(int a, int b) const;
   /// True when node b's centre lies in front of every plane of a's elements: then a
