@@ -16,6 +16,7 @@
 
 using namespace radiosity;
 using namespace radiosity_bench;
+using namespace radiosity_scenes;
 
 namespace
 {

@@ -1,4 +1,4 @@
-"""What ranks buy on ParaView's MPI server (issue 11): the same solve on 1 rank and on R
+"""What ranks buy on ParaView's MPI server: the same solve on 1 rank and on R
 ranks, one thread each, and what the ranks send each other.
 
 ./relight bench mpi [--elements 230000] [--ranks 2] [--repeats 3] [--scene Data/paper_8lights.vtp] [--no-ceiling]

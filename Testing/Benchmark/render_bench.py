@@ -1,4 +1,4 @@
-"""What a light change costs next to a camera move, CPU path against GPU path (issue 12).
+"""What a light change costs next to a camera move, CPU path against GPU path.
 
 ./relight bench render [--cells 1000000] [--lights 8] [--frames 10]
 

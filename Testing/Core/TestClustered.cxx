@@ -46,7 +46,7 @@ Solution Reference(SceneMesh mesh, int lights, int samples = 4)
 SceneMesh FurnishedRoom(double patch, double element)
 {
   SceneMesh mesh;
-  const std::string error = radiosity_bench::MeshRoom(radiosity_bench::FurnishedRoom(), patch, element, mesh);
+  const std::string error = radiosity_scenes::MeshRoom(radiosity_scenes::FurnishedRoom(), patch, element, mesh);
   EXPECT_TRUE(error.empty()) << error;
   return mesh;
 }
@@ -54,7 +54,7 @@ SceneMesh FurnishedRoom(double patch, double element)
 SceneMesh SphereRoom(int lamps, int triangles, double patch, double element)
 {
   SceneMesh mesh;
-  EXPECT_EQ(radiosity_bench::MeshByMaterial(radiosity_bench::CurvedRoom(lamps, 1, triangles), patch, element, 30, mesh), "");
+  EXPECT_EQ(radiosity_scenes::MeshByMaterial(radiosity_scenes::CurvedRoom(lamps, 1, triangles), patch, element, 30, mesh), "");
   return mesh;
 }
 } // namespace

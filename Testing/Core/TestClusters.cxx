@@ -12,7 +12,7 @@
 #include <cmath>
 
 using namespace radiosity;
-using namespace radiosity_bench;
+using namespace radiosity_scenes;
 
 namespace
 {

@@ -109,7 +109,7 @@ std::vector<Solution> SolveOnRanks(const SceneMesh& mesh, int ranks, const Solve
 SceneMesh Room()
 {
   SceneMesh mesh;
-  const std::string error = radiosity_bench::MeshRoom(radiosity_bench::FurnishedRoom(), 1.0, 0.25, mesh);
+  const std::string error = radiosity_scenes::MeshRoom(radiosity_scenes::FurnishedRoom(), 1.0, 0.25, mesh);
   EXPECT_TRUE(error.empty()) << error;
   return mesh;
 }
@@ -187,7 +187,7 @@ TEST(Distributed, FaceClustersOnTwoRanksGiveTheSerialAnswer)
 {
   // Cluster receivers linked node by node, element links shared element by element.
   SceneMesh mesh;
-  ASSERT_EQ(radiosity_bench::MeshByMaterial(radiosity_bench::CurvedRoom(3, 1, 4000), 0.5, 0.25, 30, mesh), "");
+  ASSERT_EQ(radiosity_scenes::MeshByMaterial(radiosity_scenes::CurvedRoom(3, 1, 4000), 0.5, 0.25, 30, mesh), "");
   ExpectSerialAnswer(SolverMethod::Hierarchical, 2, true, mesh, 3);
 }
 

@@ -28,7 +28,7 @@ SolverOptions Hierarchical(double threshold = 1e-6)
 SceneMesh Room(double patch, double element)
 {
   SceneMesh mesh;
-  const std::string error = radiosity_bench::MeshRoom(radiosity_bench::FurnishedRoom(), patch, element, mesh);
+  const std::string error = radiosity_scenes::MeshRoom(radiosity_scenes::FurnishedRoom(), patch, element, mesh);
   EXPECT_TRUE(error.empty()) << error;
   return mesh;
 }

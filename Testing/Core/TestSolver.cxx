@@ -26,7 +26,7 @@ TEST(Solver, FurnaceGivesOneOverOneMinusRho)
   // Closed box, every face emitting 1, uniform rho: B = 1 / (1 - rho) everywhere. Point
   // collocation alone met this to 1e-6 (a point's analytic factors to a closed box sum to
   // exactly 1) while shooting 0.1 % more or less power than each patch had; each shot now
-  // delivers exactly its power in a closed scene (issue 13), which costs the per-element
+  // delivers exactly its power in a closed scene, which costs the per-element
   // exactness: measured within 0.06 %.
   for (double rho : { 0.3, 0.5, 0.9 })
   {

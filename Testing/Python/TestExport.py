@@ -1,4 +1,4 @@
-"""Solutions out (issue 10): a light-tagged solve written as binary glTF, read back by
+"""Solutions out: a light-tagged solve written as binary glTF, read back by
 parsing the file here and by VTK's glTF loader, and as a layered OpenEXR that OpenEXR's
 own exrheader lists. The relit picture must equal the sum of the light layers."""
 

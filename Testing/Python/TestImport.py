@@ -1,4 +1,4 @@
-"""Scene files in (issue 10): OBJ+MTL, glTF/GLB, PLY and VRML written here with known
+"""Scene files in: OBJ+MTL, glTF/GLB, PLY and VRML written here with known
 contents, the FZK-Haus IFC through assimp and two VRML models of assimp-testmodels, and the
 Cornell box as OBJ+MTL and as VRML solving to the same radiosity as Data/cornell_box.vtp. Bad files give an error naming the file and the problem."""
 

@@ -1,4 +1,4 @@
-"""The mesh of a real building does not depend on its unit, its turn or its place (issue 13).
+"""The mesh of a real building does not depend on its unit, its turn or its place.
 
 The KIT FZK-Haus (Debian's assimp-testmodels, an IFC nobody here made) is meshed in metres
 and again scaled to millimetres, turned 37 degrees and moved 1 km, with VTK's float points

@@ -1,4 +1,4 @@
-"""ParaView's MPI server (issue 11): 2 ranks of pvbatch mesh, solve and relight the paper
+"""ParaView's MPI server: 2 ranks of pvbatch mesh, solve and relight the paper
 scene, as read (all on rank 0; rank 1 holds no cells) and spread over both ranks by
 RedistributeDataSet. Each must give the serial answer: the same mesh gives the same
 radiosity to 1e-6, a mesh cut differently by the pieces within 1 % at every element's

@@ -181,7 +181,7 @@ for patch in (2.0, 1.0, 0.5):
           f"{seconds:8.2f} {mover.GetLastMovingSeconds() * 1e3:9.2f} {errors[-1]:10.2%} {filter_error:10.2%}")
 check(errors[2] < errors[1] < errors[0], "finer patches, smaller error in the interreflected light")
 check(errors[-1] < 0.01, f"same patches: within 1 % of the full solve's indirect light ({errors[-1]:.2%})")
-# The lamp's shot in the reference now delivers exactly its power (issue 13: its point-rule
+# The lamp's shot in the reference now delivers exactly its power (its point-rule
 # excess beside the wall was 4 %); the point light's is exact for a point. Measured 2.3 %
 # (0.7 % when both over-delivered alike).
 check(filter_error < 0.03, f"the filter with a point-approximated lamp: within 3 % ({filter_error:.2%})")

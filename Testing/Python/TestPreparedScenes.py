@@ -1,4 +1,4 @@
-"""One preparation per mesh (issue 14): the solver's ray scene and geometry are kept for its
+"""One preparation per mesh: the solver's ray scene and geometry are kept for its
 mesh and shared by a re-solve with other settings, by the relight's moving lights and by the
 EXR writer. Each must give what a preparation made afresh gives, and a changed mesh must be
 prepared again; a preparation goes with the last mesh that uses it."""

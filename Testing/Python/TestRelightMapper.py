@@ -1,4 +1,4 @@
-"""Relighting on the GPU (issue 12): vtkRadiosityRelightMapper against the CPU path
+"""Relighting on the GPU: vtkRadiosityRelightMapper against the CPU path
 (relight filter + DisplayColors) for 3 and 40 lights, light changes without uploads or
 pipeline runs, and 64 lights with intensities 1e-4 and 1e4 (no quantisation)."""
 

@@ -1,4 +1,4 @@
-"""Correct under every input (issue 13): each case here crashed, wrote a broken file, or
+"""Correct under every input: each case here crashed, wrote a broken file, or
 passed silently before. Every failure must be a clear error naming the problem, with
 nothing half-done left behind."""
 

@@ -1,4 +1,4 @@
-"""The browser viewer (issue 10): the page relight.export_viewer writes, shown by Debian's
+"""The browser viewer: the page relight.export_viewer writes, shown by Debian's
 headless Chromium, matches VTK's render of the same light settings, and a slider moved
 (through the page's URL, which sets the slider and fires its input event as a drag does)
 changes the picture where that light dominates, and only there. With 20 lights (more than

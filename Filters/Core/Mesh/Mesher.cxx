@@ -2,11 +2,9 @@
 #include "Mesh/CoincidentCopies.h"
 #include "Mesh/ContactCuts.h"
 #include "Mesh/FaceClusters.h"
+#include "Mesh/Surfaces.h"
 #include "Geometry/Polygon.h"
 #include "Mesh/TrianglePairs.h"
-
-#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
-#include <OpenMesh/Core/System/omstream.hh>
 
 #include <algorithm>
 #include <array>
@@ -22,29 +20,6 @@ namespace radiosity
 
 namespace
 {
-// OpenMesh stores float points by default; radiosity scenes span many orders of magnitude.
-struct DoublePrecision : OpenMesh::DefaultTraits
-{
-  typedef OpenMesh::Vec3d Point;
-  typedef OpenMesh::Vec3d Normal;
-  /// Each element remembers its input polygon and its patch.
-  FaceTraits
-  {
-    int Source = -1;
-    int Patch = -1;
-  };
-};
-using SurfaceMesh = OpenMesh::PolyMesh_ArrayKernelT<DoublePrecision>;
-
-/// Elements of one input polygon before they are stitched into a surface.
-struct Piece
-{
-  std::vector<Vec3> corners; // flattened, `sides` per element
-  std::vector<int> sides;
-  std::vector<int> localPatch;
-  int patchCount = 0;
-};
-
 /// Pieces of at most `size` along `length`. A length within a millionth of a whole number
 /// of sizes counts as that number: VTK stores points as floats (7 digits), so a wall 5 m
 /// long rotated or scaled comes back 5.0000003 m, and would otherwise gain a row.
@@ -413,237 +388,95 @@ double ElementSizeForBudget(
 
 namespace
 {
-/// A surface's plane: its first polygon's unit normal and offset.
-struct Plane
-{
-  Vec3 Normal;
-  double Offset = 0;
-};
-
-/// Normals of one surface differ by at most this (as a distance between unit normals); it
-/// is also the quantisation step of normals in the surface keys, so that one step either
-/// way finds every candidate.
-constexpr double kNormalTolerance = 1e-6;
-
-/// The surface a polygon's plane belongs to: of the surfaces keyed `key` or one step off in
-/// any quantised part (a value near a rounding boundary lands on either side), the nearest
-/// whose plane is within the tolerances of the polygon's (`normalTolerance` as a distance
-/// between unit normals, `offsetTolerance` between offsets), else -1. The tolerances, not
-/// where the rounding boundaries fall, decide, so placement and rotation do not.
-template <typename Map, typename Key>
-int FindSurface(const Map& map, const Key& key, const std::vector<Plane>& planes, const Plane& plane,
-  double offsetTolerance)
-{
-  int best = -1;
-  double nearest = 1;
-  for (int a = -1; a <= 1; ++a)
-  {
-    for (int b = -1; b <= 1; ++b)
-    {
-      for (int c = -1; c <= 1; ++c)
-      {
-        for (int d = -1; d <= 1; ++d)
-        {
-          Key probe = key;
-          std::get<1>(probe) += a;
-          std::get<2>(probe) += b;
-          std::get<3>(probe) += c;
-          std::get<4>(probe) += d;
-          const auto range = map.equal_range(probe);
-          for (auto found = range.first; found != range.second; ++found)
-          {
-            const Plane& other = planes[found->second];
-            const double distance = std::max(Norm(other.Normal - plane.Normal) / kNormalTolerance,
-              std::fabs(other.Offset - plane.Offset) / offsetTolerance);
-            if (distance <= nearest && (best < 0 || distance < nearest || found->second < best))
-            {
-              nearest = distance;
-              best = found->second;
-            }
-          }
-        }
-      }
-    }
-  }
-  return best;
-}
-
 /// MeshPolygons on polygons that came from input cells `source[i]` (for messages, keys and
 /// the output's sourcePolygon), with the surfaces standing on them.
+/// The corners of polygon i without repeats (consecutive points closer than `quantum`
+/// would make zero-area elements), or an error naming its cell.
+std::string DistinctCorners(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, int i, int cell, double quantum, std::vector<Vec3>& loop)
+{
+  loop.clear();
+  for (int k = offsets[i]; k < offsets[i + 1]; ++k)
+  {
+    const Vec3& p = points[connectivity[k]];
+    if (loop.empty() || Norm(p - loop.back()) > quantum)
+    {
+      loop.push_back(p);
+    }
+  }
+  while (loop.size() > 1 && Norm(loop.front() - loop.back()) <= quantum)
+  {
+    loop.pop_back();
+  }
+  std::ostringstream err;
+  if (offsets[i + 1] - offsets[i] < 3)
+  {
+    err << "cell " << cell << " has " << offsets[i + 1] - offsets[i] << " points; polygons need at least 3";
+  }
+  else if (loop.size() < 3)
+  {
+    err << "cell " << cell << " has zero area (only " << loop.size() << " distinct points); remove degenerate cells";
+  }
+  return err.str();
+}
+
+/// Refuses sizes that are not positive, or that would make more elements than allowed.
+std::string CheckSizes(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, const MesherOptions& options)
+{
+  std::ostringstream err;
+  if (!(options.PatchSize > 0) || !(options.ElementSize > 0) || !std::isfinite(options.PatchSize))
+  {
+    err << "PatchSize (" << options.PatchSize << ") and ElementSize (" << options.ElementSize << ") must be positive";
+    return err.str();
+  }
+  double estimate = 0;
+  for (int i = 0; i + 1 < static_cast<int>(offsets.size()); ++i)
+  {
+    estimate += EstimateElements(GatherLoop(points, offsets, connectivity, i), options);
+  }
+  if (!(estimate <= static_cast<double>(options.MaximumElements)))
+  {
+    err << "PatchSize " << options.PatchSize << " and ElementSize " << options.ElementSize << " would make about "
+        << std::setprecision(3) << estimate << " elements, more than the limit of " << options.MaximumElements
+        << "; choose a larger ElementSize (or PatchSize)";
+  }
+  return err.str();
+}
+
 std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& offsets,
   const std::vector<int>& connectivity, const std::vector<int>& source, const std::vector<int>& surfaceKey,
   const Contacts& contacts, const MesherOptions& options, MeshedPolygons& out)
 {
   out = MeshedPolygons();
-  std::ostringstream err;
-  if (!(options.PatchSize > 0) || !(options.ElementSize > 0) || !std::isfinite(options.PatchSize))
+  const std::string problem = CheckSizes(points, offsets, connectivity, options);
+  if (!problem.empty())
   {
-    err << "PatchSize (" << options.PatchSize << ") and ElementSize (" << options.ElementSize
-        << ") must be positive";
-    return err.str();
+    return problem;
   }
   const int count = static_cast<int>(offsets.size()) - 1;
   const double diagonal = Span(points); // not the bounding box's: that turns with the scene
-  const Vec3 sceneCentre = Bounds(points).Centre();
   const double quantum = std::max(diagonal, 1e-300) * 1e-9;
   const double noise = FloatNoise(diagonal);
-
-  // Surfaces: same caller key and same plane, up to a tolerance relative to the scene.
-  using SurfaceId = std::tuple<int, long long, long long, long long, long long>;
-  std::multimap<SurfaceId, int> surfaceIndex; // a key holds every surface whose plane rounds to it
-  std::vector<Plane> surfacePlanes;
-  std::vector<SurfaceMesh> surfaces;
-  std::vector<std::map<std::array<long long, 3>, SurfaceMesh::VertexHandle>> welds;
-  // Polygons that fit in one patch share a patch with the others of their surface in the
-  // same PatchSize cell of the plane: a model's many small parts would otherwise each be a
-  // shooter (a house's 16k polygons made 59k patches).
-  std::map<std::tuple<int, long long, long long>, int> sharedPatch;
-  std::vector<std::array<Vec3, 3>> gridFrames; // per surface: origin and in-plane axes
-
-  double estimate = 0;
-  for (int i = 0; i < count; ++i)
-  {
-    const std::vector<Vec3> loop = GatherLoop(points, offsets, connectivity, static_cast<int>(i));
-    estimate += EstimateElements(loop, options);
-  }
-  if (!(estimate <= static_cast<double>(options.MaximumElements)))
-  {
-    err << "PatchSize " << options.PatchSize << " and ElementSize " << options.ElementSize
-        << " would make about " << std::setprecision(3) << estimate
-        << " elements, more than the limit of " << options.MaximumElements
-        << "; choose a larger ElementSize (or PatchSize)";
-    return err.str();
-  }
-
+  SurfaceAssembly surfaces(quantum, Bounds(points).Centre(), options);
+  std::vector<Vec3> loop;
   for (int i = 0; i < count; ++i)
   {
     if (options.Progress && !options.Progress(static_cast<double>(i) / std::max(count, 1)))
     {
       return "meshing was aborted";
     }
-    std::vector<Vec3> loop;
-    for (int k = offsets[i]; k < offsets[i + 1]; ++k)
+    const std::string bad = DistinctCorners(points, offsets, connectivity, i, source[i], quantum, loop);
+    if (!bad.empty())
     {
-      // Repeated consecutive points would make zero-area elements: drop them.
-      const Vec3& p = points[connectivity[k]];
-      if (loop.empty() || Norm(p - loop.back()) > quantum)
-      {
-        loop.push_back(p);
-      }
+      return bad;
     }
-    while (loop.size() > 1 && Norm(loop.front() - loop.back()) <= quantum)
-    {
-      loop.pop_back();
-    }
-    if (offsets[i + 1] - offsets[i] < 3)
-    {
-      err << "cell " << source[i] << " has " << offsets[i + 1] - offsets[i] << " points; polygons need at least 3";
-      return err.str();
-    }
-    if (loop.size() < 3)
-    {
-      err << "cell " << source[i] << " has zero area (only " << loop.size()
-          << " distinct points); remove degenerate cells";
-      return err.str();
-    }
-    const Vec3 newell = NewellVector(loop.data(), static_cast<int>(loop.size()));
-    const Vec3 normal = Normalized(newell);
+    const Vec3 normal = Normalized(NewellVector(loop.data(), static_cast<int>(loop.size())));
     Piece piece;
     MakePiece(loop, options, noise, ContactCutter(contacts.Segments[i], normal, contacts.Touch), piece);
-
-    const Vec3 centroid = PolygonCentroid(loop.data(), static_cast<int>(loop.size()));
-    const double planeOffset = Dot(normal, centroid - sceneCentre);
-    const std::array<long long, 4> key = PlaneKey(normal, planeOffset, kNormalTolerance, quantum * 1000);
-    const SurfaceId id{ surfaceKey[source[i]], key[0], key[1], key[2], key[3] };
-    const Plane plane{ normal, planeOffset };
-    int s = FindSurface(surfaceIndex, id, surfacePlanes, plane, quantum * 1000);
-    if (s < 0)
-    {
-      s = static_cast<int>(surfaces.size());
-      surfaceIndex.emplace(id, s);
-      surfacePlanes.push_back(plane);
-      surfaces.emplace_back();
-      welds.emplace_back();
-      // The sharing grid hangs from the surface's first polygon, not from world axes, so a
-      // moved or rotated scene groups its small polygons the same way.
-      const Vec3 edge = loop[1] - loop[0];
-      const Vec3 t = Normalized(edge - normal * Dot(edge, normal));
-      gridFrames.push_back({ loop[0], t, Cross(normal, t) });
-    }
-    SurfaceMesh& mesh = surfaces[s];
-    int patchBase = out.patches, ownPatches = piece.patchCount;
-    if (options.SharePatches && piece.patchCount == 1)
-    {
-      const std::array<Vec3, 3>& frame = gridFrames[s];
-      const Vec3 c = PolygonCentroid(loop.data(), static_cast<int>(loop.size())) - frame[0];
-      // Models space their parts in whole patch sizes, so centroids fall on cell borders:
-      // the cells start a millionth early, or float rounding would pick either side.
-      auto cellOf = [&](double along) { return static_cast<long long>(std::floor(along / options.PatchSize + 1e-6)); };
-      const auto cell = std::make_tuple(s, cellOf(Dot(c, frame[1])), cellOf(Dot(c, frame[2])));
-      const auto shared = sharedPatch.emplace(cell, out.patches);
-      patchBase = shared.first->second;
-      ownPatches = shared.second ? 1 : 0;
-    }
-    size_t corner = 0;
-    for (size_t e = 0; e < piece.sides.size(); ++e)
-    {
-      std::vector<SurfaceMesh::VertexHandle> handles;
-      for (int v = 0; v < piece.sides[e]; ++v, ++corner)
-      {
-        const Vec3& p = piece.corners[corner];
-        const auto key = QuantizedPoint(p, quantum);
-        auto weld = welds[s].find(key);
-        if (weld == welds[s].end())
-        {
-          weld = welds[s].emplace(key, mesh.add_vertex(SurfaceMesh::Point(p.x, p.y, p.z))).first;
-        }
-        handles.push_back(weld->second);
-      }
-      // OpenMesh prints each refusal; the fallback below is the answer to it.
-      omerr().disable();
-      SurfaceMesh::FaceHandle face = mesh.add_face(handles);
-      omerr().enable();
-      if (!face.is_valid())
-      {
-        // Overlapping input (coincident faces, T-shaped junctions of three faces on one
-        // edge; a model's parts overlapping by a millimetre, cut along the same contact
-        // lines) is not a 2-manifold: give the element its own vertices instead.
-        for (auto& h : handles)
-        {
-          const auto p = mesh.point(h);
-          h = mesh.add_vertex(p);
-        }
-        face = mesh.add_face(handles);
-      }
-      mesh.data(face).Source = source[i];
-      mesh.data(face).Patch = patchBase + piece.localPatch[e];
-    }
-    out.patches += ownPatches;
+    surfaces.Add(loop, normal, piece, source[i], surfaceKey[source[i]]);
   }
-
-  // Patch ids of empty lattice cells are never used; compact them to 0..patches-1.
-  std::map<int, int> compact;
-  for (size_t s = 0; s < surfaces.size(); ++s)
-  {
-    const SurfaceMesh& mesh = surfaces[s];
-    const int base = static_cast<int>(out.points.size());
-    for (auto v : mesh.vertices())
-    {
-      const auto p = mesh.point(v);
-      out.points.push_back({ p[0], p[1], p[2] });
-    }
-    for (auto face : mesh.faces())
-    {
-      for (auto v : mesh.fv_range(face))
-      {
-        out.connectivity.push_back(base + v.idx());
-      }
-      out.offsets.push_back(static_cast<int>(out.connectivity.size()));
-      out.sourcePolygon.push_back(mesh.data(face).Source);
-      out.patchId.push_back(compact.emplace(mesh.data(face).Patch, static_cast<int>(compact.size())).first->second);
-    }
-  }
-  out.patches = static_cast<int>(compact.size());
+  surfaces.Flatten(out);
   return std::string();
 }
 

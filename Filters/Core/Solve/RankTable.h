@@ -1,4 +1,4 @@
-// What ranks solving together tell each other once per shot (issue 11): one table with a row
+// What ranks solving together tell each other once per shot: one table with a row
 // per rank, summed over the ranks. Each rank fills only its own row, so the sum is exact and
 // every rank reads the same table.
 #ifndef RadiosityCore_RankTable_h

@@ -1,7 +1,7 @@
 // Probe points inside the 6 x 5 x 3 m rooms and an external renderer's radiosity at them:
 // the independent reference of `./relight bench scale` and `./relight bench polygons`.
-#ifndef RadiosityBench_ProbeReference_h
-#define RadiosityBench_ProbeReference_h
+#ifndef RadiosityScenes_ProbeReference_h
+#define RadiosityScenes_ProbeReference_h
 
 #include "FurnishedRoom.h"
 #include "Geometry/PointAverages.h"
@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-namespace radiosity_bench
+namespace radiosity_scenes
 {
 using radiosity::Normalized;
 using radiosity::RadiositySolver;
@@ -153,6 +153,6 @@ inline std::vector<double> ReadReference(const std::string& path, size_t probes,
   return values;
 }
 
-} // namespace radiosity_bench
+} // namespace radiosity_scenes
 
 #endif

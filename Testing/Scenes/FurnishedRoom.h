@@ -1,7 +1,7 @@
 // A furnished room with eight ceiling lamps, meshed by the core mesher at any size: the
 // scene of `./relight bench scale` and of the large-scene tests.
-#ifndef RadiosityBench_FurnishedRoom_h
-#define RadiosityBench_FurnishedRoom_h
+#ifndef RadiosityScenes_FurnishedRoom_h
+#define RadiosityScenes_FurnishedRoom_h
 
 #include "Mesh/Mesher.h"
 #include "Geometry/Scene.h"
@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace radiosity_bench
+namespace radiosity_scenes
 {
 using radiosity::Vec3;
 
@@ -147,6 +147,6 @@ inline std::string MeshRoom(const RoomPolygons& r, double patch, double element,
   return MeshWithKeys(r, keys, options, mesh);
 }
 
-} // namespace radiosity_bench
+} // namespace radiosity_scenes
 
 #endif

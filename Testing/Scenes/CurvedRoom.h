@@ -1,7 +1,7 @@
 // A plain room with lamps and tessellated spheres on its floor: the scene of
 // `./relight bench polygons` and of the face-cluster tests (many small curved polygons).
-#ifndef RadiosityBench_CurvedRoom_h
-#define RadiosityBench_CurvedRoom_h
+#ifndef RadiosityScenes_CurvedRoom_h
+#define RadiosityScenes_CurvedRoom_h
 
 #include "FurnishedRoom.h"
 
@@ -11,7 +11,7 @@
 #include <map>
 #include <tuple>
 
-namespace radiosity_bench
+namespace radiosity_scenes
 {
 
 /// Adds a UV sphere of about `triangles` triangles (outward, sharing points as a
@@ -143,6 +143,6 @@ inline std::string MeshByMaterial(const RoomPolygons& r, double patch, double el
   return MeshWithKeys(r, keys, options, mesh);
 }
 
-} // namespace radiosity_bench
+} // namespace radiosity_scenes
 
 #endif

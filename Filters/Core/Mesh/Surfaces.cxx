@@ -1,0 +1,169 @@
+#include "Mesh/Surfaces.h"
+#include "Geometry/Polygon.h"
+
+#include <OpenMesh/Core/System/omstream.hh>
+
+#include <cmath>
+
+namespace radiosity
+{
+
+namespace
+{
+/// Normals of one surface differ by at most this (as a distance between unit normals); it
+/// is also the quantisation step of normals in the surface keys, so that one step either
+/// way finds every candidate.
+constexpr double kNormalTolerance = 1e-6;
+} // namespace
+
+SurfaceAssembly::SurfaceAssembly(double quantum, const Vec3& centre, const MesherOptions& options)
+  : Quantum(quantum)
+  , Centre(centre)
+  , Options(options)
+{
+}
+
+void SurfaceAssembly::Add(const std::vector<Vec3>& loop, const Vec3& normal, const Piece& piece, int source, int key)
+{
+  const int s = SurfaceOf(loop, normal, key);
+  const std::pair<int, int> patches = PatchesOf(s, loop, piece);
+  Stitch(s, piece, source, patches.first);
+  Patches += patches.second;
+}
+
+int SurfaceAssembly::SurfaceOf(const std::vector<Vec3>& loop, const Vec3& normal, int key)
+{
+  const Vec3 centroid = PolygonCentroid(loop.data(), static_cast<int>(loop.size()));
+  const double planeOffset = Dot(normal, centroid - Centre);
+  const std::array<long long, 4> plane = PlaneKey(normal, planeOffset, kNormalTolerance, Quantum * 1000);
+  const SurfaceId id{ key, plane[0], plane[1], plane[2], plane[3] };
+  int s = FindSurface(id, Plane{ normal, planeOffset });
+  if (s < 0)
+  {
+    s = static_cast<int>(Meshes.size());
+    Index.emplace(id, s);
+    Planes.push_back(Plane{ normal, planeOffset });
+    Meshes.emplace_back();
+    Welds.emplace_back();
+    // The sharing grid hangs from the surface's first polygon, not from world axes, so a
+    // moved or rotated scene groups its small polygons the same way.
+    const Vec3 edge = loop[1] - loop[0];
+    const Vec3 t = Normalized(edge - normal * Dot(edge, normal));
+    GridFrames.push_back({ loop[0], t, Cross(normal, t) });
+  }
+  return s;
+}
+
+int SurfaceAssembly::FindSurface(const SurfaceId& id, const Plane& plane) const
+{
+  // A value near a rounding boundary lands on either side: the tolerances, not where the
+  // boundaries fall, decide, so placement and rotation do not.
+  const double offsetTolerance = Quantum * 1000;
+  int best = -1;
+  double nearest = 1;
+  for (int step = 0; step < 81; ++step)
+  {
+    SurfaceId probe = id;
+    std::get<1>(probe) += step % 3 - 1;
+    std::get<2>(probe) += step / 3 % 3 - 1;
+    std::get<3>(probe) += step / 9 % 3 - 1;
+    std::get<4>(probe) += step / 27 % 3 - 1;
+    const auto range = Index.equal_range(probe);
+    for (auto found = range.first; found != range.second; ++found)
+    {
+      const Plane& other = Planes[found->second];
+      const double distance = std::max(Norm(other.Normal - plane.Normal) / kNormalTolerance,
+        std::fabs(other.Offset - plane.Offset) / offsetTolerance);
+      if (distance <= nearest && (best < 0 || distance < nearest || found->second < best))
+      {
+        nearest = distance;
+        best = found->second;
+      }
+    }
+  }
+  return best;
+}
+
+std::pair<int, int> SurfaceAssembly::PatchesOf(int surface, const std::vector<Vec3>& loop, const Piece& piece)
+{
+  // A model's many small parts would otherwise each be a shooter (a house's 16k polygons
+  // made 59k patches).
+  if (!Options.SharePatches || piece.patchCount != 1)
+  {
+    return { Patches, piece.patchCount };
+  }
+  const std::array<Vec3, 3>& frame = GridFrames[surface];
+  const Vec3 c = PolygonCentroid(loop.data(), static_cast<int>(loop.size())) - frame[0];
+  // Models space their parts in whole patch sizes, so centroids fall on cell borders: the
+  // cells start a millionth early, or float rounding would pick either side.
+  auto cellOf = [&](double along) { return static_cast<long long>(std::floor(along / Options.PatchSize + 1e-6)); };
+  const auto cell = std::make_tuple(surface, cellOf(Dot(c, frame[1])), cellOf(Dot(c, frame[2])));
+  const auto shared = SharedPatch.emplace(cell, Patches);
+  return { shared.first->second, shared.second ? 1 : 0 };
+}
+
+void SurfaceAssembly::Stitch(int surface, const Piece& piece, int source, int firstPatch)
+{
+  SurfaceMesh& mesh = Meshes[surface];
+  size_t corner = 0;
+  for (size_t e = 0; e < piece.sides.size(); ++e)
+  {
+    std::vector<SurfaceMesh::VertexHandle> handles;
+    for (int v = 0; v < piece.sides[e]; ++v, ++corner)
+    {
+      const Vec3& p = piece.corners[corner];
+      auto weld = Welds[surface].find(QuantizedPoint(p, Quantum));
+      if (weld == Welds[surface].end())
+      {
+        weld = Welds[surface].emplace(QuantizedPoint(p, Quantum), mesh.add_vertex(SurfaceMesh::Point(p.x, p.y, p.z))).first;
+      }
+      handles.push_back(weld->second);
+    }
+    // OpenMesh prints each refusal; the fallback below is the answer to it.
+    omerr().disable();
+    SurfaceMesh::FaceHandle face = mesh.add_face(handles);
+    omerr().enable();
+    if (!face.is_valid())
+    {
+      // Overlapping input (coincident faces, T-shaped junctions of three faces on one
+      // edge; a model's parts overlapping by a millimetre, cut along the same contact
+      // lines) is not a 2-manifold: give the element its own vertices instead.
+      for (auto& h : handles)
+      {
+        const auto p = mesh.point(h);
+        h = mesh.add_vertex(p);
+      }
+      face = mesh.add_face(handles);
+    }
+    mesh.data(face).Source = source;
+    mesh.data(face).Patch = firstPatch + piece.localPatch[e];
+  }
+}
+
+void SurfaceAssembly::Flatten(MeshedPolygons& out) const
+{
+  // Patch ids of empty lattice cells are never used.
+  std::map<int, int> compact;
+  for (const SurfaceMesh& mesh : Meshes)
+  {
+    const int base = static_cast<int>(out.points.size());
+    for (auto v : mesh.vertices())
+    {
+      const auto p = mesh.point(v);
+      out.points.push_back({ p[0], p[1], p[2] });
+    }
+    for (auto face : mesh.faces())
+    {
+      for (auto v : mesh.fv_range(face))
+      {
+        out.connectivity.push_back(base + v.idx());
+      }
+      out.offsets.push_back(static_cast<int>(out.connectivity.size()));
+      out.sourcePolygon.push_back(mesh.data(face).Source);
+      out.patchId.push_back(compact.emplace(mesh.data(face).Patch, static_cast<int>(compact.size())).first->second);
+    }
+  }
+  out.patches = static_cast<int>(compact.size());
+}
+
+} // namespace radiosity

@@ -1,0 +1,90 @@
+// The mesher's elements stitched into surfaces: elements on one plane (and of one caller
+// key) share an OpenMesh surface, so neighbours share their corners; small polygons of a
+// surface share patches; the surfaces flattened into the mesher's output.
+#ifndef RadiosityCore_Surfaces_h
+#define RadiosityCore_Surfaces_h
+
+#include "Mesh/Mesher.h"
+
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+
+#include <array>
+#include <map>
+#include <tuple>
+#include <vector>
+
+namespace radiosity
+{
+
+/// The elements of one input polygon before they are stitched into a surface.
+struct Piece
+{
+  std::vector<Vec3> corners; // flattened, `sides` per element
+  std::vector<int> sides;
+  std::vector<int> localPatch;
+  int patchCount = 0;
+};
+
+class SurfaceAssembly
+{
+public:
+  /// `quantum`: points closer than this are one point; `centre`: the scene's, which plane
+  /// offsets are measured from (so they stay small wherever the scene is placed).
+  SurfaceAssembly(double quantum, const Vec3& centre, const MesherOptions& options);
+
+  /// Polygon `loop` (distinct corners, unit `normal`) cut into `piece`, from input cell
+  /// `source` whose caller key is `key`.
+  void Add(const std::vector<Vec3>& loop, const Vec3& normal, const Piece& piece, int source, int key);
+
+  /// Every surface's points and elements into `out`, patch ids compacted to 0..patches-1.
+  void Flatten(MeshedPolygons& out) const;
+
+private:
+  // OpenMesh stores float points by default; radiosity scenes span many orders of magnitude.
+  struct DoublePrecision : OpenMesh::DefaultTraits
+  {
+    typedef OpenMesh::Vec3d Point;
+    typedef OpenMesh::Vec3d Normal;
+    /// Each element remembers its input polygon and its patch.
+    FaceTraits
+    {
+      int Source = -1;
+      int Patch = -1;
+    };
+  };
+  using SurfaceMesh = OpenMesh::PolyMesh_ArrayKernelT<DoublePrecision>;
+  /// A surface's plane: its first polygon's unit normal and offset.
+  struct Plane
+  {
+    Vec3 Normal;
+    double Offset = 0;
+  };
+  using SurfaceId = std::tuple<int, long long, long long, long long, long long>;
+
+  /// The surface of the polygon's plane and key, made where there is none yet.
+  int SurfaceOf(const std::vector<Vec3>& loop, const Vec3& normal, int key);
+  /// Of the surfaces keyed `id` or one step off in any quantised part, the nearest within
+  /// tolerance of `plane`, else -1.
+  int FindSurface(const SurfaceId& id, const Plane& plane) const;
+  /// The first patch id of the piece and how many new patches it takes: a polygon that
+  /// fits in one patch shares it with its surface's others in the same PatchSize cell.
+  std::pair<int, int> PatchesOf(int surface, const std::vector<Vec3>& loop, const Piece& piece);
+  /// The piece's elements into the surface, welded to the corners already there.
+  void Stitch(int surface, const Piece& piece, int source, int firstPatch);
+
+  const double Quantum;
+  const Vec3 Centre;
+  const MesherOptions& Options;
+  int Patches = 0;
+  std::multimap<SurfaceId, int> Index; // a key holds every surface whose plane rounds to it
+  std::vector<Plane> Planes;
+  std::vector<SurfaceMesh> Meshes;
+  std::vector<std::map<std::array<long long, 3>, SurfaceMesh::VertexHandle>> Welds;
+  /// Per surface: the origin and in-plane axes of its patch-sharing grid.
+  std::vector<std::array<Vec3, 3>> GridFrames;
+  std::map<std::tuple<int, long long, long long>, int> SharedPatch;
+};
+
+} // namespace radiosity
+
+#endif
