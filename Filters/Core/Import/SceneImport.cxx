@@ -141,21 +141,18 @@ std::string Summarize(const ImportedScene& out)
 
 } // namespace
 
-std::string BuildImportedScene(const RawScene& raw, const ImportOptions& options, ImportedScene& out)
+namespace
 {
-  out = ImportedScene();
-  if (!(options.UnitScale > 0) || !std::isfinite(options.UnitScale))
-  {
-    return "the unit scale must be a positive number";
-  }
-  std::string error = CheckMaterials(raw.materials);
+/// The raw scene's lists against each other and its numbers finite: the file said it.
+std::string CheckRawScene(const RawScene& raw)
+{
+  const std::string error = CheckMaterials(raw.materials);
   if (!error.empty())
   {
     return error;
   }
-  const int polygons = raw.NumberOfPolygons();
-  if (raw.material.size() != static_cast<size_t>(polygons) || raw.object.size() != static_cast<size_t>(polygons) ||
-    (!raw.color.empty() && raw.color.size() != static_cast<size_t>(polygons)))
+  const size_t polygons = static_cast<size_t>(raw.NumberOfPolygons());
+  if (raw.material.size() != polygons || raw.object.size() != polygons || (!raw.color.empty() && raw.color.size() != polygons))
   {
     return "internal: material and object lists do not match the polygons";
   }
@@ -180,17 +177,26 @@ std::string BuildImportedScene(const RawScene& raw, const ImportOptions& options
       return "a polygon color is not a finite number";
     }
   }
-  out.Mesh.points.reserve(raw.points.size());
   for (size_t p = 0; p < raw.points.size(); ++p)
   {
     if (!Finite(raw.points[p]))
     {
       return "point " + std::to_string(p) + " has a coordinate that is not a finite number";
     }
-    out.Mesh.points.push_back(raw.points[p] * options.UnitScale);
   }
-  out.Mesh.pointQuantum = raw.pointQuantum * options.UnitScale;
-  std::vector<int> kept;
+  return std::string();
+}
+
+/// The scaled points and every polygon that is not degenerate (their input indices in
+/// `kept`; the others counted in out.Dropped).
+void KeepPolygons(const RawScene& raw, double unitScale, ImportedScene& out, std::vector<int>& kept)
+{
+  out.Mesh.points.reserve(raw.points.size());
+  for (const Vec3& p : raw.points)
+  {
+    out.Mesh.points.push_back(p * unitScale);
+  }
+  out.Mesh.pointQuantum = raw.pointQuantum * unitScale;
   for (int i = 0; i < raw.NumberOfPolygons(); ++i)
   {
     const std::vector<int> ids = CornerIds(raw, i);
@@ -207,12 +213,12 @@ std::string BuildImportedScene(const RawScene& raw, const ImportOptions& options
     kept.push_back(i);
     out.Mesh.AddPolygon(ids);
   }
-  if (kept.empty())
-  {
-    return raw.NumberOfPolygons() ? "every polygon is degenerate (zero area or collinear points)" : "no polygons";
-  }
-  KeepUsedPoints(out.Mesh);
-  // Materials in use get reflectance (clamped into [0, 1]); polygons without one get 0.8.
+}
+
+/// Reflectance of the kept polygons from their materials (clamped into [0, 1]; 0.8 without
+/// one), the material list, and a warning for each clamp or default.
+void AssignMaterials(const RawScene& raw, const std::vector<int>& kept, ImportedScene& out)
+{
   std::set<std::string> clamped;
   int unassigned = 0;
   for (int i : kept)
@@ -250,6 +256,29 @@ std::string BuildImportedScene(const RawScene& raw, const ImportOptions& options
     out.Warnings.push_back("diffuse colors outside [0, 1] clamped for " + std::to_string(clamped.size()) +
       " materials: " + names);
   }
+}
+} // namespace
+
+std::string BuildImportedScene(const RawScene& raw, const ImportOptions& options, ImportedScene& out)
+{
+  out = ImportedScene();
+  if (!(options.UnitScale > 0) || !std::isfinite(options.UnitScale))
+  {
+    return "the unit scale must be a positive number";
+  }
+  const std::string error = CheckRawScene(raw);
+  if (!error.empty())
+  {
+    return error;
+  }
+  std::vector<int> kept;
+  KeepPolygons(raw, options.UnitScale, out, kept);
+  if (kept.empty())
+  {
+    return raw.NumberOfPolygons() ? "every polygon is degenerate (zero area or collinear points)" : "no polygons";
+  }
+  KeepUsedPoints(out.Mesh);
+  AssignMaterials(raw, kept, out);
   if (out.Dropped)
   {
     out.Warnings.push_back(std::to_string(out.Dropped) + " degenerate cells dropped (zero area, collinear points or crossing edges)");

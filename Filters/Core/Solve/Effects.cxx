@@ -61,129 +61,147 @@ std::string GroupLights(int lights, const std::vector<int>& banks, const std::ve
   return LightGrouping::FromBanks(bank, lights, grouping);
 }
 
-std::vector<EffectDecision> DescribeEffects(const SceneMesh& mesh, const SolverOptions& options,
-  const Solution& solution, const LightGrouping& grouping, int lights, SolutionMode mode)
+namespace
 {
-  const SolverStatistics& s = solution.Statistics;
-  const double n = mesh.NumberOfPolygons();
-  const int L = solution.Solutions;
-  std::vector<EffectDecision> rows;
-
-  EffectDecision visibility{ "Visibility", true, "" };
+EffectDecision VisibilityRow(const SolverOptions& options, const SolverStatistics& s)
+{
+  EffectDecision row{ "Visibility", true, "" };
   if (options.Method != FormFactorMethod::Analytic)
   {
-    visibility.Reason = "simulated: the hemicube or Monte Carlo rays are the form factors";
+    row.Reason = "simulated: the hemicube or Monte Carlo rays are the form factors";
   }
   else if (options.Visibility == EffectMode::Off || options.Samples <= 0)
   {
-    visibility.Simulated = false;
-    visibility.Reason = "skipped: turned off, every pair treated as unoccluded";
+    row.Simulated = false;
+    row.Reason = "skipped: turned off, every pair treated as unoccluded";
   }
   else if (options.Visibility == EffectMode::On)
   {
-    visibility.Reason = Format("simulated: forced on, %.0f shadow rays", static_cast<double>(s.RayCount));
+    row.Reason = Format("simulated: forced on, %.0f shadow rays", static_cast<double>(s.RayCount));
   }
   else if (s.BlockingSurfaces == 0)
   {
-    visibility.Simulated = false;
-    visibility.Reason = Format("skipped: no surface has scene geometry behind it (a convex enclosure), "
-                               "so nothing can block; saved %.0f shadow rays",
+    row.Simulated = false;
+    row.Reason = Format("skipped: no surface has scene geometry behind it (a convex enclosure), "
+                        "so nothing can block; saved %.0f shadow rays",
       static_cast<double>(s.RaysSkipped));
   }
   else
   {
     const double pairs = s.PairsUnblockable + (options.Samples > 0 ? s.RayCount / options.Samples : 0);
-    visibility.Reason = Format("simulated where needed: %.0f planes can block; %.0f of %.0f lit pairs "
-                               "cannot be blocked, saved %.0f shadow rays",
+    row.Reason = Format("simulated where needed: %.0f planes can block; %.0f of %.0f lit pairs "
+                        "cannot be blocked, saved %.0f shadow rays",
       s.BlockingSurfaces, static_cast<double>(s.PairsUnblockable), pairs, static_cast<double>(s.RaysSkipped));
   }
-  rows.push_back(visibility);
+  return row;
+}
 
+EffectDecision InterreflectionRow(const SceneMesh& mesh, const SolverOptions& options, const SolverStatistics& s)
+{
   bool reflects = false;
   for (const Vec3& r : mesh.reflectance)
   {
     reflects = reflects || r.x > 0 || r.y > 0 || r.z > 0;
   }
-  EffectDecision bounce{ "Interreflection", true, "" };
+  EffectDecision row{ "Interreflection", true, "" };
   if (options.Interreflection == EffectMode::Off)
   {
-    bounce.Simulated = false;
-    bounce.Reason = "skipped: turned off, direct light only (emission and its first bounce)";
+    row.Simulated = false;
+    row.Reason = "skipped: turned off, direct light only (emission and its first bounce)";
   }
   else if (!reflects)
   {
-    bounce.Simulated = false;
-    bounce.Reason = Format("skipped: no surface reflects, each light's patches shoot once (%.0f shots)",
+    row.Simulated = false;
+    row.Reason = Format("skipped: no surface reflects, each light's patches shoot once (%.0f shots)",
       static_cast<double>(s.Shots));
   }
   else
   {
-    bounce.Reason = Format("simulated: %.0f shots", static_cast<double>(s.Shots));
+    row.Reason = Format("simulated: %.0f shots", static_cast<double>(s.Shots));
   }
-  rows.push_back(bounce);
+  return row;
+}
 
-  EffectDecision color{ "Color", !s.SingleChannel, "" };
-  const double saved = 2.0 / 3.0 * n * L * sizeof(double) * 3;
+EffectDecision ColorRow(const SolverOptions& options, const SolverStatistics& s, double polygons, int solutions)
+{
+  EffectDecision row{ "Color", !s.SingleChannel, "" };
+  const double saved = 2.0 / 3.0 * polygons * solutions * sizeof(double) * 3;
   if (s.SingleChannel && options.Color == EffectMode::Off)
   {
-    color.Reason = Format("skipped: turned off, one grey channel (mean reflectance); saved %.2f MB", Megabytes(saved));
+    row.Reason = Format("skipped: turned off, one grey channel (mean reflectance); saved %.2f MB", Megabytes(saved));
   }
   else if (s.SingleChannel)
   {
-    color.Reason = Format("skipped: every reflectance and emission is grey, one channel solved and "
-                          "expanded; saved %.2f MB and two thirds of the distribution work",
+    row.Reason = Format("skipped: every reflectance and emission is grey, one channel solved and "
+                        "expanded; saved %.2f MB and two thirds of the distribution work",
       Megabytes(saved));
   }
   else
   {
-    color.Reason = options.Color == EffectMode::On ? "simulated: forced on" : "simulated: colored reflectance or emission";
+    row.Reason = options.Color == EffectMode::On ? "simulated: forced on" : "simulated: colored reflectance or emission";
   }
-  rows.push_back(color);
+  return row;
+}
 
-  EffectDecision separation{ "LightSeparation", true, "" };
+EffectDecision SeparationRow(const LightGrouping& grouping, int lights, SolutionMode mode, double polygons)
+{
+  EffectDecision row{ "LightSeparation", true, "" };
   if (mode == SolutionMode::StandardCombined)
   {
-    separation.Simulated = false;
-    separation.Reason = "skipped: StandardCombined solves one solution with every light";
+    row.Simulated = false;
+    row.Reason = "skipped: StandardCombined solves one solution with every light";
   }
   else if (grouping.Solutions < lights)
   {
-    separation.Simulated = false;
-    separation.Reason = Format("merged: %.0f lights share %.0f solutions (banks or static lights); "
-                               "saved %.2f MB of output",
-      lights, grouping.Solutions, Megabytes((lights - grouping.Solutions) * n * 3 * 4.0 * 2));
+    row.Simulated = false;
+    row.Reason = Format("merged: %.0f lights share %.0f solutions (banks or static lights); "
+                        "saved %.2f MB of output",
+      lights, grouping.Solutions, Megabytes((lights - grouping.Solutions) * polygons * 3 * 4.0 * 2));
   }
   else
   {
-    separation.Reason = Format("simulated: %.0f lights, one solution each", lights);
+    row.Reason = Format("simulated: %.0f lights, one solution each", lights);
   }
-  rows.push_back(separation);
+  return row;
+}
 
-  EffectDecision converged{ "ConvergedSolutions", s.DistributionsSkipped == 0, "" };
+EffectDecision ConvergedRow(const SolverOptions& options, const SolverStatistics& s, double polygons)
+{
+  EffectDecision row{ "ConvergedSolutions", s.DistributionsSkipped == 0, "" };
   if (options.ConvergedSolutions == EffectMode::On)
   {
-    converged.Reason = "simulated: forced on, every solution shot until all converge";
+    row.Reason = "simulated: forced on, every solution shot until all converge";
   }
   else if (s.DistributionsSkipped > 0)
   {
-    converged.Reason = Format("skipped: %.0f shots of solutions already below the threshold "
-                              "(saved %.0f element updates)",
-      static_cast<double>(s.DistributionsSkipped), static_cast<double>(s.DistributionsSkipped) * n);
+    row.Reason = Format("skipped: %.0f shots of solutions already below the threshold "
+                        "(saved %.0f element updates)",
+      static_cast<double>(s.DistributionsSkipped), static_cast<double>(s.DistributionsSkipped) * polygons);
   }
   else
   {
-    converged.Reason = "simulated: no solution converged before the others";
+    row.Reason = "simulated: no solution converged before the others";
   }
-  rows.push_back(converged);
+  return row;
+}
 
-  EffectDecision split{ "DirectIndirectSplit", options.SeparateDirect, "" };
-  split.Reason = options.SeparateDirect
-    ? "simulated: asked for (SeparateDirect)"
-    : Format("skipped: not asked for (SeparateDirect off); saved %.2f MB", Megabytes(n * L * 3 * 4.0 * 2));
-  rows.push_back(split);
+EffectDecision SplitRow(const SolverOptions& options, double polygons, int solutions)
+{
+  return { "DirectIndirectSplit", options.SeparateDirect,
+    options.SeparateDirect
+      ? "simulated: asked for (SeparateDirect)"
+      : Format("skipped: not asked for (SeparateDirect off); saved %.2f MB", Megabytes(polygons * solutions * 3 * 4.0 * 2)) };
+}
+} // namespace
 
-  rows.push_back({ "MovingLightBasis", false, "skipped: not asked for (no patch basis built)" });
-  return rows;
+std::vector<EffectDecision> DescribeEffects(const SceneMesh& mesh, const SolverOptions& options,
+  const Solution& solution, const LightGrouping& grouping, int lights, SolutionMode mode)
+{
+  const SolverStatistics& s = solution.Statistics;
+  const double n = mesh.NumberOfPolygons();
+  return { VisibilityRow(options, s), InterreflectionRow(mesh, options, s), ColorRow(options, s, n, solution.Solutions),
+    SeparationRow(grouping, lights, mode, n), ConvergedRow(options, s, n), SplitRow(options, n, solution.Solutions),
+    { "MovingLightBasis", false, "skipped: not asked for (no patch basis built)" } };
 }
 
 std::string SummarizeEffects(const std::vector<EffectDecision>& effects)

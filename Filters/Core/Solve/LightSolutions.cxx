@@ -100,106 +100,150 @@ std::vector<Vec3> DefaultColors(
 
 namespace
 {
-Solution SolveInMode(const RadiositySolver& solver, const SceneMesh& mesh, const LightGrouping& grouping,
-  const std::vector<Vec3>& emissionColor, SolutionMode mode, const SolverOptions& options)
+namespace
 {
-  const int n = mesh.NumberOfPolygons();
-  if (mode == SolutionMode::StandardCombined)
+/// StandardCombined's one solution: every light's patches emitting together.
+std::vector<Vec3> CombinedEmission(const SceneMesh& mesh, const std::vector<Vec3>& emissionColor)
+{
+  std::vector<Vec3> emission(mesh.NumberOfPolygons());
+  for (size_t e = 0; e < emission.size(); ++e)
   {
-    std::vector<Vec3> emission(n);
-    for (int e = 0; e < n; ++e)
+    if (mesh.lightId[e] >= 0)
     {
-      if (mesh.lightId[e] >= 0)
+      emission[e] = emissionColor.empty() ? Vec3{ 1, 1, 1 } : emissionColor[e];
+    }
+  }
+  return emission;
+}
+
+/// StandardSeparate: the baseline the paper beats, one solve per solution with the form
+/// factors computed again each time, their results and histories put side by side.
+class SeparateSolves
+{
+public:
+  SeparateSolves(const RadiositySolver& solver, const std::vector<Vec3>& emission, int polygons, int solutions,
+    const SolverOptions& options)
+    : Solver(solver)
+    , Emission(emission)
+    , N(polygons)
+    , L(solutions)
+    , Options(options)
+    , LastRemaining(solutions, 1.0)
+    , InitialPower(solutions, 0.0)
+  {
+    // Each solution's emitted power, so the history is total remaining / total initial, as
+    // in the one-pass modes.
+    for (int e = 0; e < N; ++e)
+    {
+      for (int m = 0; m < L; ++m)
       {
-        emission[e] = emissionColor.empty() ? Vec3{ 1, 1, 1 } : emissionColor[e];
+        const Vec3& v = Emission[At(e, m)];
+        InitialPower[m] += (v.x + v.y + v.z) * solver.Geometry().area[e];
       }
     }
-    return solver.Solve(emission, 1, options);
-  }
-  const int L = grouping.Solutions;
-  const std::vector<Vec3> emission = SolutionEmission(mesh, grouping, emissionColor);
-  if (mode == SolutionMode::LightTagged)
-  {
-    return solver.Solve(emission, L, options);
+    for (double p : InitialPower)
+    {
+      TotalInitial += p;
+    }
   }
 
-  // StandardSeparate: the baseline the paper beats, form factors recomputed per solution.
-  Solution out;
-  out.Solutions = L;
-  out.Radiosity.assign(static_cast<size_t>(n) * L, Vec3());
-  if (options.SeparateDirect)
+  Solution Run()
   {
-    out.Direct.assign(static_cast<size_t>(n) * L, Vec3());
-  }
-  out.Ambient.assign(L, Vec3());
-  SolverStatistics& total = out.Statistics;
-  total = SolverStatistics::Sequence();
-  std::vector<double> lastRemaining(L, 1.0);
-  // Each solution's emitted power, so the history is total remaining / total initial, as
-  // in the one-pass modes.
-  std::vector<double> initialPower(L, 0.0);
-  double totalInitial = 0;
-  for (int e = 0; e < n; ++e)
-  {
+    Out.Solutions = L;
+    Out.Radiosity.assign(static_cast<size_t>(N) * L, Vec3());
+    if (Options.SeparateDirect)
+    {
+      Out.Direct.assign(static_cast<size_t>(N) * L, Vec3());
+    }
+    Out.Ambient.assign(L, Vec3());
+    Out.Statistics = SolverStatistics::Sequence();
     for (int m = 0; m < L; ++m)
     {
-      const Vec3& v = emission[static_cast<size_t>(e) * L + m];
-      initialPower[m] += (v.x + v.y + v.z) * solver.Geometry().area[e];
-    }
-  }
-  for (double p : initialPower)
-  {
-    totalInitial += p;
-  }
-  std::vector<Vec3> single(n);
-  double elapsed = 0;
-  for (int m = 0; m < L; ++m)
-  {
-    for (int e = 0; e < n; ++e)
-    {
-      single[e] = emission[static_cast<size_t>(e) * L + m];
-    }
-    SolverOptions each = options;
-    if (options.Progress)
-    {
-      each.Progress = [&, m](double f) { return options.Progress((m + f) / L); };
-    }
-    if (options.TimeBudget > 0)
-    {
-      each.TimeBudget = std::max(1e-9, options.TimeBudget - elapsed);
-    }
-    const Solution s = solver.Solve(single, 1, each);
-    for (int e = 0; e < n; ++e)
-    {
-      out.Radiosity[static_cast<size_t>(e) * L + m] = s.Radiosity[e];
-      if (options.SeparateDirect)
+      const Solution s = SolveOne(m);
+      Place(s, m);
+      if (s.Statistics.Aborted || s.Statistics.OutOfTime)
       {
-        out.Direct[static_cast<size_t>(e) * L + m] = s.Direct[e];
+        break;
       }
     }
-    out.Ambient[m] = s.Ambient[0];
+    return Out;
+  }
+
+private:
+  size_t At(int e, int m) const { return static_cast<size_t>(e) * L + m; }
+
+  Solution SolveOne(int m) const
+  {
+    std::vector<Vec3> single(N);
+    for (int e = 0; e < N; ++e)
+    {
+      single[e] = Emission[At(e, m)];
+    }
+    SolverOptions each = Options;
+    if (Options.Progress)
+    {
+      each.Progress = [this, m](double f) { return Options.Progress((m + f) / L); };
+    }
+    if (Options.TimeBudget > 0)
+    {
+      each.TimeBudget = std::max(1e-9, Options.TimeBudget - Elapsed);
+    }
+    return Solver.Solve(single, 1, each);
+  }
+
+  /// Solution m's radiosity into its column, its shots into the histories.
+  void Place(const Solution& s, int m)
+  {
+    for (int e = 0; e < N; ++e)
+    {
+      Out.Radiosity[At(e, m)] = s.Radiosity[e];
+      if (Options.SeparateDirect)
+      {
+        Out.Direct[At(e, m)] = s.Direct[e];
+      }
+    }
+    Out.Ambient[m] = s.Ambient[0];
     const SolverStatistics& t = s.Statistics;
+    SolverStatistics& total = Out.Statistics;
     for (int shot = 0; shot < t.Shots; ++shot)
     {
-      lastRemaining[m] = t.RemainingPerSolution[shot];
+      LastRemaining[m] = t.RemainingPerSolution[shot];
       double remaining = 0;
       for (int j = 0; j < L; ++j)
       {
-        remaining += lastRemaining[j] * initialPower[j];
+        remaining += LastRemaining[j] * InitialPower[j];
       }
-      total.RemainingPerSolution.insert(
-        total.RemainingPerSolution.end(), lastRemaining.begin(), lastRemaining.end());
-      total.RemainingHistory.push_back(totalInitial > 0 ? remaining / totalInitial : 0.0);
-      total.TimeHistory.push_back(elapsed + t.TimeHistory[shot]);
+      total.RemainingPerSolution.insert(total.RemainingPerSolution.end(), LastRemaining.begin(), LastRemaining.end());
+      total.RemainingHistory.push_back(TotalInitial > 0 ? remaining / TotalInitial : 0.0);
+      total.TimeHistory.push_back(Elapsed + t.TimeHistory[shot]);
     }
-    elapsed += t.TimeHistory.empty() ? 0.0 : t.TimeHistory.back();
+    Elapsed += t.TimeHistory.empty() ? 0.0 : t.TimeHistory.back();
     total.Append(t);
-    if (t.Aborted || t.OutOfTime)
-    {
-      break;
-    }
   }
-  return out;
+
+  const RadiositySolver& Solver;
+  const std::vector<Vec3>& Emission;
+  const int N, L;
+  const SolverOptions& Options;
+  std::vector<double> LastRemaining, InitialPower;
+  double TotalInitial = 0, Elapsed = 0;
+  Solution Out;
+};
+} // namespace
+
+Solution SolveInMode(const RadiositySolver& solver, const SceneMesh& mesh, const LightGrouping& grouping,
+  const std::vector<Vec3>& emissionColor, SolutionMode mode, const SolverOptions& options)
+{
+  if (mode == SolutionMode::StandardCombined)
+  {
+    return solver.Solve(CombinedEmission(mesh, emissionColor), 1, options);
+  }
+  const std::vector<Vec3> emission = SolutionEmission(mesh, grouping, emissionColor);
+  if (mode == SolutionMode::LightTagged)
+  {
+    return solver.Solve(emission, grouping.Solutions, options);
+  }
+  return SeparateSolves(solver, emission, mesh.NumberOfPolygons(), grouping.Solutions, options).Run();
 }
 } // namespace
 
