@@ -5,6 +5,7 @@
 #include <embree3/rtcore.h>
 
 #include <algorithm>
+#include <numeric>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -363,12 +364,15 @@ int Root(std::vector<int>& parent, int i)
 }
 } // namespace
 
-int SplitSeparatedPatches(const Visibility& rays, const SceneMesh& mesh, SceneGeometry& g)
+namespace
+{
+/// Each element's group (a union-find forest): elements of one patch that share an edge
+/// are joined when they see each other just above the surface, so a wall standing on the
+/// patch keeps its two sides apart.
+std::vector<int> SeenAcrossEdges(const Visibility& rays, const SceneMesh& mesh, const SceneGeometry& g)
 {
   const int n = mesh.NumberOfPolygons();
   const double lift = 1e-6 * g.sceneDiagonal;
-  // Elements of one patch that share an edge are joined when they see each other just
-  // above the surface; a wall standing on the patch keeps its two sides apart.
   // (edge, element) pairs sorted by edge: a map of a million elements' edges is slow.
   const long long points = static_cast<long long>(mesh.points.size());
   std::vector<std::pair<long long, int>> edges;
@@ -384,10 +388,7 @@ int SplitSeparatedPatches(const Visibility& rays, const SceneMesh& mesh, SceneGe
   }
   std::sort(edges.begin(), edges.end());
   std::vector<int> parent(n);
-  for (int e = 0; e < n; ++e)
-  {
-    parent[e] = e;
-  }
+  std::iota(parent.begin(), parent.end(), 0);
   for (size_t i = 0; i + 1 < edges.size(); ++i)
   {
     const int a = edges[i].second, b = edges[i + 1].second;
@@ -398,43 +399,54 @@ int SplitSeparatedPatches(const Visibility& rays, const SceneMesh& mesh, SceneGe
       parent[Root(parent, a)] = Root(parent, b);
     }
   }
-  // The group of a patch's first element keeps the patch; any other becomes a new one.
+  return parent;
+}
+
+/// A face cluster (elements on several planes, FaceClusters.h; parallel ones too) stays
+/// whole: it was grown over shared edges of its input polygons, and its elements have
+/// points of their own per plane, so they share no edge by id.
+bool OnSeveralPlanes(const SceneGeometry& g, const std::vector<int>& members)
+{
+  const Vec3& n = g.normal[members[0]];
+  const Vec3& c = g.centroid[members[0]];
+  return std::any_of(members.begin(), members.end(), [&](int e) {
+    return Dot(g.normal[e], n) < 1 - 1e-9 || std::fabs(Dot(n, g.centroid[e] - c)) > 1e-9 * g.sceneDiagonal;
+  });
+}
+
+/// Patch p keeps the group of its first element; each other group becomes a new patch.
+int SplitPatch(int p, std::vector<int>& parent, SceneGeometry& g)
+{
+  std::map<int, std::vector<int>> groups;
+  for (int e : g.patchElements[p])
+  {
+    groups[Root(parent, e)].push_back(e);
+  }
+  if (groups.size() < 2)
+  {
+    return 0;
+  }
+  const int keep = Root(parent, g.patchElements[p][0]);
+  g.patchElements[p] = groups[keep];
+  for (auto& group : groups)
+  {
+    if (group.first != keep)
+    {
+      g.patchElements.push_back(group.second);
+    }
+  }
+  return static_cast<int>(groups.size()) - 1;
+}
+} // namespace
+
+int SplitSeparatedPatches(const Visibility& rays, const SceneMesh& mesh, SceneGeometry& g)
+{
+  std::vector<int> parent = SeenAcrossEdges(rays, mesh, g);
   int added = 0;
   const size_t patches = g.patchElements.size();
   for (size_t p = 0; p < patches; ++p)
   {
-    // A face cluster (elements on several planes, FaceClusters.h; parallel ones too) stays
-    // whole: it was grown over shared edges of its input polygons, and its elements have
-    // points of their own per plane, so they share no edge by id.
-    const std::vector<int>& members = g.patchElements[p];
-    const Vec3& n = g.normal[members[0]];
-    const Vec3& c = g.centroid[members[0]];
-    if (std::any_of(members.begin(), members.end(), [&](int e) {
-          return Dot(g.normal[e], n) < 1 - 1e-9 || std::fabs(Dot(n, g.centroid[e] - c)) > 1e-9 * g.sceneDiagonal;
-        }))
-    {
-      continue;
-    }
-    std::map<int, std::vector<int>> groups;
-    for (int e : g.patchElements[p])
-    {
-      groups[Root(parent, e)].push_back(e);
-    }
-    if (groups.size() < 2)
-    {
-      continue;
-    }
-    const int keep = Root(parent, g.patchElements[p][0]);
-    g.patchElements[p] = groups[keep];
-    for (auto& group : groups)
-    {
-      if (group.first == keep)
-      {
-        continue;
-      }
-      g.patchElements.push_back(group.second);
-      ++added;
-    }
+    added += OnSeveralPlanes(g, g.patchElements[p]) ? 0 : SplitPatch(static_cast<int>(p), parent, g);
   }
   if (added == 0)
   {
