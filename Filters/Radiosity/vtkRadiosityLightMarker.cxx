@@ -29,6 +29,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 vtkStandardNewMacro(vtkRadiosityLightMarker);
 
@@ -325,6 +326,88 @@ int vtkRadiosityLightMarker::FillInputPortInformation(int port, vtkInformation* 
   return this->Superclass::FillInputPortInformation(port, info);
 }
 
+namespace
+{
+/// What makes the settings unusable on this input, or nothing.
+std::string SettingsProblem(vtkPolyData* input, const double emission[3], double least)
+{
+  std::string error;
+  if (!vtkRadiosityAdapter::RequireCellArray(input, "Reflectance", 3, false, error))
+  {
+    return error;
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    if (!(std::isfinite(emission[c]) && emission[c] >= least))
+    {
+      std::ostringstream text;
+      text << "Emission color component " << c << " = " << emission[c] << "; colors must be finite and >= 0";
+      return text.str();
+    }
+  }
+  return error;
+}
+
+/// The cells chosen by material name, by id and by the selection (`selected`: how many of
+/// the selection's), or why they cannot be.
+std::string ChooseCells(vtkPolyData* data, const char* pattern, const std::vector<vtkIdType>& ids,
+  vtkSelection* selection, std::vector<char>& chosen, int& selected)
+{
+  if (pattern && *pattern)
+  {
+    const std::string error = ChooseByMaterial(data, pattern, chosen);
+    if (!error.empty())
+    {
+      return error;
+    }
+  }
+  for (vtkIdType id : ids)
+  {
+    if (id < 0 || id >= data->GetNumberOfCells())
+    {
+      return "cell id " + std::to_string(id) + " is not in 0.." + std::to_string(data->GetNumberOfCells() - 1);
+    }
+    chosen[id] = 1;
+  }
+  selected = selection ? ChooseBySelection(data, selection, chosen) : -1;
+  return std::string();
+}
+
+/// The chosen cells become light `light` of `color`; returns how many.
+int MarkCells(const std::vector<char>& chosen, int light, const radiosity::Vec3& color, LightArrays& lights)
+{
+  int count = 0;
+  for (size_t c = 0; c < chosen.size(); ++c)
+  {
+    if (chosen[c])
+    {
+      lights.Id[c] = light;
+      lights.Emission[c] = color;
+      ++count;
+    }
+  }
+  return count;
+}
+
+/// Each area light as a polygon of its own, appended to the scene.
+std::string AddAreaLights(const std::vector<radiosity::AreaLight>& areas, vtkPolyData* data, LightArrays& lights)
+{
+  for (const radiosity::AreaLight& area : areas)
+  {
+    std::vector<radiosity::Vec3> loop;
+    const std::string error = radiosity::AreaLightLoop(area, loop);
+    if (!error.empty())
+    {
+      return error;
+    }
+    AppendAreaLight(data, loop, area.Name);
+    lights.Id.push_back(LightIndex(lights, area.Name));
+    lights.Emission.push_back(area.Color);
+  }
+  return std::string();
+}
+} // namespace
+
 int vtkRadiosityLightMarker::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -336,71 +419,35 @@ int vtkRadiosityLightMarker::RequestData(
       output->ShallowCopy(input); // this rank's piece of the scene is empty: nothing to mark
       return 1;
     }
-    std::string error;
-    if (!vtkRadiosityAdapter::RequireCellArray(input, "Reflectance", 3, false, error))
-    {
+    const auto fail = [&](const std::string& error) {
       vtkErrorMacro(<< "Cannot mark lights: " << error << ".");
       return 0;
-    }
-    for (int c = 0; c < 3; ++c)
+    };
+    std::string error = SettingsProblem(input, this->Emission, GetEmissionMinValue());
+    if (!error.empty())
     {
-      if (!(std::isfinite(this->Emission[c]) && this->Emission[c] >= GetEmissionMinValue()))
-      {
-        vtkErrorMacro(<< "Cannot mark lights: Emission color component " << c << " = " << this->Emission[c]
-                      << "; colors must be finite and >= 0.");
-        return 0;
-      }
+      return fail(error);
     }
     output->DeepCopy(input); // area lights grow its arrays; the input stays as it was
     LightArrays lights = ReadLights(output);
     std::vector<char> chosen(output->GetNumberOfCells(), 0);
+    int selected = 0;
+    error = ChooseCells(output, this->MaterialPattern, this->Chosen->CellIds, vtkSelection::GetData(inputVector[1]),
+      chosen, selected);
+    if (!error.empty())
+    {
+      return fail(error);
+    }
     vtkRadiosityAdapter::WarningList warnings;
-    if (this->MaterialPattern && *this->MaterialPattern &&
-      !(error = ChooseByMaterial(output, this->MaterialPattern, chosen)).empty())
+    if (selected == 0)
     {
-      vtkErrorMacro(<< "Cannot mark lights: " << error << ".");
-      return 0;
+      warnings.Add(this, "The selection holds no cell of the scene.");
     }
-    for (vtkIdType id : this->Chosen->CellIds)
+    const int light = std::count(chosen.begin(), chosen.end(), 1) ? LightIndex(lights, this->LightName ? this->LightName : "Light") : -1;
+    const int count = MarkCells(chosen, light, { this->Emission[0], this->Emission[1], this->Emission[2] }, lights);
+    if (!(error = AddAreaLights(this->Chosen->AreaLights, output, lights)).empty())
     {
-      if (id < 0 || id >= output->GetNumberOfCells())
-      {
-        vtkErrorMacro(<< "Cannot mark lights: cell id " << id << " is not in 0.." << output->GetNumberOfCells() - 1 << ".");
-        return 0;
-      }
-      chosen[id] = 1;
-    }
-    if (vtkSelection* selection = vtkSelection::GetData(inputVector[1]))
-    {
-      if (ChooseBySelection(output, selection, chosen) == 0)
-      {
-        warnings.Add(this, "The selection holds no cell of the scene.");
-      }
-    }
-    const int count = static_cast<int>(std::count(chosen.begin(), chosen.end(), 1));
-    if (count)
-    {
-      const int light = LightIndex(lights, this->LightName ? this->LightName : "Light");
-      for (size_t c = 0; c < chosen.size(); ++c)
-      {
-        if (chosen[c])
-        {
-          lights.Id[c] = light;
-          lights.Emission[c] = { this->Emission[0], this->Emission[1], this->Emission[2] };
-        }
-      }
-    }
-    for (const radiosity::AreaLight& area : this->Chosen->AreaLights)
-    {
-      std::vector<radiosity::Vec3> loop;
-      if (!(error = radiosity::AreaLightLoop(area, loop)).empty())
-      {
-        vtkErrorMacro(<< "Cannot mark lights: " << error << ".");
-        return 0;
-      }
-      AppendAreaLight(output, loop, area.Name);
-      lights.Id.push_back(LightIndex(lights, area.Name));
-      lights.Emission.push_back(area.Color);
+      return fail(error);
     }
     if (!count && this->Chosen->AreaLights.empty())
     {
