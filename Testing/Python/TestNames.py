@@ -2,6 +2,7 @@
 classes (as VTK's Python wraps them). ParaView.TestPluginProxies checks the same table
 against the proxies that pvbatch makes from the XML."""
 
+import glob
 import os
 import xml.etree.ElementTree as ElementTree
 
@@ -10,8 +11,16 @@ from settingstable import setting_rows
 from testlib import check, finish
 
 ROOT = os.environ.get("RELIGHT_ROOT", ".")
-XML = os.path.join(ROOT, "Plugin", "RadiosityFilters.xml")
+XML_FILES = sorted(glob.glob(os.path.join(ROOT, "Plugin", "ServerManager", "*.xml")))
 SETTINGS = os.path.join(ROOT, "docs", "settings.md")
+
+
+def plugin_xml():
+    """The plugin's XML files (one per proxy, Plugin/ServerManager) as one configuration."""
+    root = ElementTree.Element("ServerManagerConfiguration")
+    for path in XML_FILES:
+        root.extend(ElementTree.parse(path).getroot())
+    return root
 
 
 def proxies_with_classes(root):
@@ -25,7 +34,7 @@ def proxies_with_classes(root):
 def xml_commands():
     """{class: {property: [commands]}} for every property that calls the C++ object."""
     proxies = {}
-    root = ElementTree.parse(XML).getroot()
+    root = plugin_xml()
     for proxy in proxies_with_classes(root):
         properties = proxies.setdefault(proxy.get("class"), {})
         for prop in proxy:
@@ -38,7 +47,7 @@ def xml_commands():
 def undocumented():
     """Properties of the XML without help text (the panel's tooltip and the ? button)."""
     missing = []
-    root = ElementTree.parse(XML).getroot()
+    root = plugin_xml()
     for proxy in proxies_with_classes(root):
         for prop in proxy:
             text = prop.findtext("Documentation") or ""
@@ -48,6 +57,20 @@ def undocumented():
     return missing
 
 
+# One home per proxy: each file of Plugin/ServerManager is named for the one proxy it holds
+# (a public one with the internal proxies it wraps, or one internal proxy), the menu apart.
+for path in XML_FILES:
+    proxies = {False: [], True: []}  # by internal group or not
+    for group in ElementTree.parse(path).getroot().iter("ProxyGroup"):
+        proxies[group.get("name").startswith("internal_")] += [p.get("name") for p in group if p.tag.endswith("Proxy")]
+    stem = os.path.splitext(os.path.basename(path))[0]
+    named = proxies[False] or proxies[True]
+    check(not named if stem == "Menu" else len(named) == 1 and named[0].endswith(stem),
+          f"{os.path.basename(path)} holds one proxy named for it ({proxies})")
+with open(os.path.join(ROOT, "Plugin", "CMakeLists.txt")) as cmake:
+    listed = cmake.read()
+unlisted = [os.path.basename(p) for p in XML_FILES if os.path.splitext(os.path.basename(p))[0] not in listed]
+check(not unlisted, f"Plugin/CMakeLists.txt builds every file of Plugin/ServerManager (not: {unlisted})")
 check(not undocumented(), f"every property has help text (missing: {undocumented()})")
 commands = xml_commands()
 check(sorted(commands) == ["vtkLightTaggedRadiosity", "vtkRadiosityAppendPieces", "vtkRadiosityEXRWriter",
@@ -61,7 +84,7 @@ for cls, properties in commands.items():
 
 # ParaView calls an input property's command with the port first where port_index > 0
 # (vtkSIProxy::AddInput): a one-argument setter there is never called, silently.
-root = ElementTree.parse(XML).getroot()
+root = plugin_xml()
 ported = [(p.get("name"), p.get("command")) for proxy in proxies_with_classes(root) for p in proxy.iter("InputProperty")
           if int(p.get("port_index") or 0) > 0]
 check(ported and all(command in ("SetInputConnection", "AddInputConnection") for _, command in ported),
