@@ -389,6 +389,21 @@ int MarkCells(const std::vector<char>& chosen, int light, const radiosity::Vec3&
   return count;
 }
 
+/// What was marked, in words for the log.
+std::string Marked(int cells, const std::string& light, size_t areas)
+{
+  std::ostringstream text;
+  if (cells > 0)
+  {
+    text << cells << (cells == 1 ? " cell" : " cells") << " made light '" << light << "'" << (areas ? " and " : "");
+  }
+  if (areas > 0)
+  {
+    text << areas << (areas == 1 ? " area light" : " area lights") << " added";
+  }
+  return cells > 0 || areas > 0 ? text.str() : std::string("nothing marked");
+}
+
 /// Each area light as a polygon of its own, appended to the scene.
 std::string AddAreaLights(const std::vector<radiosity::AreaLight>& areas, vtkPolyData* data, LightArrays& lights)
 {
@@ -464,9 +479,9 @@ int vtkRadiosityLightMarker::RequestData(
       warnings.Add(this, warning);
     }
     warnings.AddTo(output->GetFieldData());
-    vtkLogF(INFO, "Mark Lights: %d cells made light '%s', %d area lights added; %d lights in all", count,
-      this->LightName ? this->LightName : "", static_cast<int>(this->Chosen->AreaLights.size()),
-      static_cast<int>(lights.Names.size()));
+    vtkLogF(INFO, "Mark Lights: %s; the scene has %d light%s",
+      Marked(count, this->LightName ? this->LightName : "Light", this->Chosen->AreaLights.size()).c_str(),
+      static_cast<int>(lights.Names.size()), lights.Names.size() == 1 ? "" : "s");
     return 1;
   });
 }

@@ -64,8 +64,9 @@ def make_scene(polygons, reflectance, light_ids, light_names=None, emission=None
     `polygons`: lists of (x, y, z) points, front side by the right-hand rule;
     `reflectance`: an RGB triple per polygon; `light_ids`: -1 or 0..k-1 per polygon;
     `light_names` (k strings) and `emission` (an RGB triple per polygon) are optional.
+    The arrays have the types import_scene gives (double colors), so the two merge.
     """
-    from vtkmodules.vtkCommonCore import vtkFloatArray, vtkIntArray, vtkPoints, vtkStringArray
+    from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkIntArray, vtkPoints, vtkStringArray
     from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 
     data = vtkPolyData()
@@ -76,9 +77,9 @@ def make_scene(polygons, reflectance, light_ids, light_names=None, emission=None
         cells.InsertNextCell(len(polygon), [points.InsertNextPoint(*p) for p in polygon])
     data.SetPoints(points)
     data.SetPolys(cells)
-    arrays = [("Reflectance", vtkFloatArray, 3, reflectance), ("LightId", vtkIntArray, 1, light_ids)]
+    arrays = [("Reflectance", vtkDoubleArray, 3, reflectance), ("LightId", vtkIntArray, 1, light_ids)]
     if emission is not None:
-        arrays.append(("Emission", vtkFloatArray, 3, emission))
+        arrays.append(("Emission", vtkDoubleArray, 3, emission))
     for name, kind, components, values in arrays:
         array = kind()
         array.SetName(name)

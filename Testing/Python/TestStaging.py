@@ -1,0 +1,104 @@
+"""A model without a room or lights made ready to solve: lamps placed with keywords, the
+model set in a closed room or on a ground plane, every array kept. The room must be closed
+and face inwards: all the light its lamp emits is absorbed (energy balance over the solved
+elements), while on an open ground most of it escapes."""
+
+import os
+import tempfile
+
+import numpy as np
+
+import relight
+from testlib import check, finish
+
+
+def cube(centre, half, rho):
+    """A closed box facing outwards (a model standing on y = centre - half)."""
+    lo, hi = [c - half for c in centre], [c + half for c in centre]
+    x0, y0, z0 = lo
+    x1, y1, z1 = hi
+    faces = [[(x0, y0, z0), (x1, y0, z0), (x1, y0, z1), (x0, y0, z1)], [(x0, y1, z0), (x0, y1, z1), (x1, y1, z1), (x1, y1, z0)],
+             [(x0, y0, z0), (x0, y1, z0), (x1, y1, z0), (x1, y0, z0)], [(x0, y0, z1), (x1, y0, z1), (x1, y1, z1), (x0, y1, z1)],
+             [(x0, y0, z0), (x0, y0, z1), (x0, y1, z1), (x0, y1, z0)], [(x1, y0, z0), (x1, y1, z0), (x1, y1, z1), (x1, y0, z1)]]
+    return relight.make_scene(faces, [rho] * 6, [-1] * 6)
+
+
+def absorbed_fraction(scene):
+    """Power absorbed by every element over the power emitted, for the one light's unit
+    solution: emitted sum A E, absorbed sum A (1 - rho) H with H = (B - E) / rho."""
+    out = relight.solve(scene, patch_size=0.25, element_size=0.125, AmbientTerm=True).GetOutput()
+    area = relight.cell_areas(out)
+    b = relight.cell_array(out, "Radiosity_" + relight.light_names(out)[0])
+    rho = relight.cell_array(out, "Reflectance")
+    lit = relight.cell_array(out, "LightId") >= 0
+    e = np.where(lit[:, None], 1.0, 0.0)  # each light's solution is for unit emission
+    emitted = (area[:, None] * e).sum(axis=0)
+    absorbed = (area[:, None] * (1 - rho) * (b - e) / rho).sum(axis=0)
+    return absorbed / emitted
+
+
+model = cube((0.0, 0.25, 0.0), 0.25, (0.6, 0.5, 0.4))
+lamp = relight.area_light("Lamp", centre=(0, 0.99, 0), normal=(0, -1, 0), size=0.3, color=(1, 0.9, 0.8), intensity=20)
+
+# The keywords give what AddAreaLight's thirteen numbers give.
+marker = relight.vtkRadiosityLightMarker()
+marker.SetInputData(model)
+marker.AddAreaLight("Lamp", 0, 0, 0.99, 0, 0, -1, 0, 0.3, 0.3, 20, 18, 16)
+marker.Update()
+by_hand = marker.GetOutput()
+by_name = relight.mark_lights(model, lamp)
+check(np.array_equal(relight.cell_array(by_hand, "Emission"), relight.cell_array(by_name, "Emission"))
+      and by_hand.GetNumberOfPoints() == by_name.GetNumberOfPoints()
+      and all(by_hand.GetPoint(i) == by_name.GetPoint(i) for i in range(by_hand.GetNumberOfPoints())),
+      "area_light's keywords make the lamp AddAreaLight's positional numbers make")
+
+# In a room: six inward faces around the model, the model on the floor, arrays kept.
+room = relight.in_room(model, margin=1.0)
+bounds = room.GetBounds()
+check(room.GetNumberOfCells() == 12 and np.allclose(bounds, (-0.75, 0.75, 0.0, 1.0, -0.75, 0.75)),
+      f"in_room adds six faces a model's extent beyond it, floor under it (bounds {bounds})")
+names = lambda d: sorted(d.GetCellData().GetArrayName(i) for i in range(d.GetCellData().GetNumberOfArrays()))
+check(names(room) == names(model), f"every cell array is kept ({names(room)})")
+lit = relight.mark_lights(room, lamp)
+check(relight.light_names(lit) == ["Lamp"], "the lamp is the scene's one light")
+closed = absorbed_fraction(lit)
+check(np.all(np.abs(closed - 1) < 0.02), f"closed room: the emitted power is absorbed ({closed.round(4)})")
+ground = absorbed_fraction(relight.mark_lights(relight.on_ground(model, margin=1.0), lamp))
+check(np.all(ground < 0.8), f"on an open ground most of the light escapes ({ground.round(4)} absorbed)")
+
+# An imported model keeps its materials: the room is a material of its own.
+folder = tempfile.mkdtemp()
+with open(os.path.join(folder, "part.obj"), "w") as obj:
+    obj.write("mtllib part.mtl\nusemtl steel\nv 0 0 0\nv 1 0 0\nv 1 0 1\nv 0 0 1\nv 0 1 0\n"
+              "f 1 5 2\nf 2 5 3\nf 3 5 4\nf 4 5 1\n")
+with open(os.path.join(folder, "part.mtl"), "w") as mtl:
+    mtl.write("newmtl steel\nKd 0.5 0.5 0.5\n")
+part = relight.import_scene(os.path.join(folder, "part.obj"), require_lights=False)
+made = relight.make_scene([[(0, 0, 0), (1, 0, 0), (0, 1, 0)]], [(0.5, 0.5, 0.5)], [-1], emission=[(0, 0, 0)])
+kinds = lambda d: [d.GetCellData().GetArray(n).GetClassName() for n in ("Reflectance", "Emission")]
+check(kinds(part) == kinds(made), f"make_scene and import_scene give the same array types ({kinds(made)})")
+housed = relight.in_room(part)
+materials = housed.GetFieldData().GetAbstractArray("MaterialNames")
+ids = relight.cell_array(housed, "MaterialIds")
+check(materials.GetValue(materials.GetNumberOfValues() - 1) == "(room)" and set(ids[-6:]) == {materials.GetNumberOfValues() - 1}
+      and set(ids[:-6]) == {0}, "the room's cells are a material '(room)'; the model's keep theirs")
+
+def plain_plane():
+    from vtkmodules.vtkFiltersSources import vtkPlaneSource
+    plane = vtkPlaneSource()
+    plane.Update()
+    return plane.GetOutput()
+
+
+# Clear errors.
+for name, call, words in (
+        ("no size", lambda: relight.mark_lights(room, relight.area_light("L", (0, 0.9, 0), (0, -1, 0), 0)), "positive size"),
+        ("bad axis", lambda: relight.in_room(model, up="w"), "up must be"),
+        ("no Reflectance", lambda: relight.in_room(plain_plane()), "Reflectance")):
+    try:
+        call()
+        check(False, f"{name}: an error")
+    except ValueError as error:
+        check(words in str(error), f"{name}: ValueError naming it ({error})")
+
+finish("TestStaging")

@@ -1,0 +1,157 @@
+"""A model made ready to solve: lights placed in words, and a room or a ground around it.
+
+CAD exports and scans come without lights and without a room. ``area_light`` describes a
+lamp with keywords, ``mark_lights`` adds lamps (and marks cells as lights) through the Mark
+Lights filter, ``in_room`` and ``on_ground`` set the model in a closed room or on a ground
+plane sized from the model itself (so in the model's unit), keeping every array it has.
+"""
+
+from collections import namedtuple
+
+from .scene import ErrorCatcher
+from .vtkRadiosityFilters import vtkRadiosityLightMarker
+
+AreaLight = namedtuple("AreaLight", "name centre normal width height color disk")
+
+AXES = {"x": 0, "y": 1, "z": 2}
+
+
+def area_light(name, centre, normal, size, color=(1.0, 1.0, 1.0), intensity=1.0, disk=False):
+    """A lamp that emits from one side: a rectangle (`size` = width or (width, height)) or,
+    with disk=True, a disk of diameter `size`, centred at `centre` and facing `normal`;
+    it emits `color` x `intensity` per unit area (W/m^2 per channel at unit relight)."""
+    width, height = (size, size) if disk or not isinstance(size, (tuple, list)) else size
+    emission = tuple(float(c) * float(intensity) for c in color)
+    return AreaLight(str(name), tuple(map(float, centre)), tuple(map(float, normal)), float(width), float(height),
+                     emission, bool(disk))
+
+
+def mark_lights(scene, *lights, cells=(), material=None, name="Light", color=(1.0, 1.0, 1.0), intensity=1.0):
+    """The scene with `lights` (area_light descriptions) added and, where given, the cells
+    with ids `cells` or of materials matching `material` (a wildcard pattern) made the
+    light `name` emitting `color` x `intensity`. Raises ValueError naming the problem."""
+    marker = vtkRadiosityLightMarker()
+    marker.SetInputData(scene)
+    marker.SetLightName(name)
+    marker.SetEmission(*(float(c) * float(intensity) for c in color))
+    if material:
+        marker.SetMaterialPattern(material)
+    for cell in cells:
+        marker.AddCellId(int(cell))
+    for light in lights:
+        marker.AddAreaLight(light.name, 1 if light.disk else 0, *light.centre, *light.normal, light.width,
+                            light.height, *light.color)
+    catcher = ErrorCatcher(marker)
+    marker.Update()
+    if catcher.errors:
+        raise ValueError(catcher.first_error())
+    return marker.GetOutput()
+
+
+def in_room(model, margin=1.0, up="y", reflectance=(0.7, 0.7, 0.7), floor_reflectance=None):
+    """The model standing on the floor of a closed room: the room reaches `margin` x the
+    model's largest extent beyond it on every side and above it; its walls face inwards.
+    Every cell array of the model is kept (the room's cells: LightId -1, no Emission, the
+    given Reflectance, zeros elsewhere), and its field arrays (LightNames) too."""
+    low, high = _room_box(model, margin, up)
+    room = _box_faces(low, high, AXES[up], reflectance, floor_reflectance or reflectance)
+    return _merged(model, room)
+
+
+def on_ground(model, margin=1.0, up="y", reflectance=(0.5, 0.5, 0.5)):
+    """The model standing on a square ground plane that reaches `margin` x its largest
+    extent beyond it: light that misses the ground leaves the scene, as outdoors."""
+    low, high = _room_box(model, margin, up)
+    axis = AXES[up]
+    floor = [f for f in _box_faces(low, high, axis, reflectance, reflectance) if f[2] == "floor"]
+    return _merged(model, floor)
+
+
+def _room_box(model, margin, up):
+    if up not in AXES:
+        raise ValueError(f"up must be one of {', '.join(AXES)}, not {up!r}")
+    if not margin > 0:
+        raise ValueError(f"the margin must be positive, not {margin!r}")
+    if model.GetNumberOfCells() == 0:
+        raise ValueError("the model has no cells")
+    if not model.GetCellData().GetArray("Reflectance"):
+        raise ValueError("the model has no cell array 'Reflectance' (import it with relight.import_scene "
+                         "or build it with relight.make_scene)")
+    b = model.GetBounds()
+    lo, hi = [b[0], b[2], b[4]], [b[1], b[3], b[5]]
+    extent = max(h - l for l, h in zip(lo, hi))
+    if not extent > 0:
+        raise ValueError("the model has no extent")
+    axis = AXES[up]
+    room_lo = [l - margin * extent for l in lo]
+    room_hi = [h + margin * extent for h in hi]
+    room_lo[axis] = lo[axis]  # the model stands on the floor
+    return room_lo, room_hi
+
+
+def _box_faces(low, high, up, wall, floor):
+    """The six faces of the box [low, high] facing inwards: (corners, reflectance, kind)."""
+    faces = []
+    for axis in range(3):
+        a, b = (axis + 1) % 3, (axis + 2) % 3
+        for side, level in ((0, low[axis]), (1, high[axis])):
+            corners = []
+            for u, v in ((0, 0), (1, 0), (1, 1), (0, 1)):
+                p = [0.0, 0.0, 0.0]
+                p[axis], p[a], p[b] = level, (low[a], high[a])[u], (low[b], high[b])[v]
+                corners.append(tuple(p))
+            # (u, v) counter-clockwise about +axis; the low face must look along +axis.
+            if side == 1:
+                corners.reverse()
+            kind = "floor" if axis == up and side == 0 else "wall"
+            faces.append((corners, floor if kind == "floor" else wall, kind))
+    return faces
+
+
+def _merged(model, faces):
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+    from vtkmodules.vtkFiltersCore import vtkAppendPolyData
+
+    part, points, cells = vtkPolyData(), vtkPoints(), vtkCellArray()
+    points.SetDataTypeToDouble()
+    for corners, _, _ in faces:
+        cells.InsertNextCell(len(corners), [points.InsertNextPoint(*p) for p in corners])
+    part.SetPoints(points)
+    part.SetPolys(cells)
+    names = model.GetFieldData().GetAbstractArray("MaterialNames")
+    materials = names.GetNumberOfValues() if names else 0
+    _same_arrays(model.GetCellData(), part.GetCellData(), [f[1] for f in faces], materials=materials)
+    _same_arrays(model.GetPointData(), part.GetPointData(), None, points.GetNumberOfPoints())
+    append = vtkAppendPolyData()
+    append.AddInputData(model)
+    append.AddInputData(part)
+    append.Update()
+    out = vtkPolyData()
+    out.ShallowCopy(append.GetOutput())
+    out.GetFieldData().DeepCopy(model.GetFieldData())
+    if names:
+        out.GetFieldData().GetAbstractArray("MaterialNames").InsertNextValue("(room)")
+    return out
+
+
+def _same_arrays(source, target, reflectance, count=None, materials=0):
+    """Arrays of the model's names, types and widths on the added part, so that the merge
+    keeps them all (vtkAppendPolyData drops an array one input lacks); the part's cells are
+    material `materials` (one past the model's)."""
+    count = len(reflectance) if count is None else count
+    for i in range(source.GetNumberOfArrays()):
+        given = source.GetAbstractArray(i)
+        if given is None or not given.IsNumeric():
+            continue
+        array = given.NewInstance()
+        array.SetName(given.GetName())
+        array.SetNumberOfComponents(given.GetNumberOfComponents())
+        array.SetNumberOfTuples(count)
+        fill = {"LightId": -1, "MaterialIds": materials}.get(given.GetName(), 0)
+        for c in range(given.GetNumberOfComponents()):
+            array.FillComponent(c, fill)
+        if given.GetName() == "Reflectance" and reflectance is not None:
+            for t, rgb in enumerate(reflectance):
+                array.SetTuple(t, rgb)
+        target.AddArray(array)
