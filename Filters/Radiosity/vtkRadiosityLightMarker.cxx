@@ -373,20 +373,17 @@ std::string ChooseCells(vtkPolyData* data, const char* pattern, const std::vecto
   return std::string();
 }
 
-/// The chosen cells become light `light` of `color`; returns how many.
-int MarkCells(const std::vector<char>& chosen, int light, const radiosity::Vec3& color, LightArrays& lights)
+/// The chosen cells become light `light` of `color`.
+void MarkCells(const std::vector<char>& chosen, int light, const radiosity::Vec3& color, LightArrays& lights)
 {
-  int count = 0;
   for (size_t c = 0; c < chosen.size(); ++c)
   {
     if (chosen[c])
     {
       lights.Id[c] = light;
       lights.Emission[c] = color;
-      ++count;
     }
   }
-  return count;
 }
 
 /// What was marked, in words for the log.
@@ -458,8 +455,12 @@ int vtkRadiosityLightMarker::RequestData(
     {
       warnings.Add(this, "The selection holds no cell of the scene.");
     }
-    const int light = std::count(chosen.begin(), chosen.end(), 1) ? LightIndex(lights, this->LightName ? this->LightName : "Light") : -1;
-    const int count = MarkCells(chosen, light, { this->Emission[0], this->Emission[1], this->Emission[2] }, lights);
+    const int count = static_cast<int>(std::count(chosen.begin(), chosen.end(), 1));
+    if (count)
+    {
+      const int light = LightIndex(lights, this->LightName ? this->LightName : "Light");
+      MarkCells(chosen, light, { this->Emission[0], this->Emission[1], this->Emission[2] }, lights);
+    }
     if (!(error = AddAreaLights(this->Chosen->AreaLights, output, lights)).empty())
     {
       return fail(error);

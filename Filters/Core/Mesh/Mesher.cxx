@@ -388,8 +388,6 @@ double ElementSizeForBudget(
 
 namespace
 {
-/// MeshPolygons on polygons that came from input cells `source[i]` (for messages, keys and
-/// the output's sourcePolygon), with the surfaces standing on them.
 /// The corners of polygon i without repeats (consecutive points closer than `quantum`
 /// would make zero-area elements), or an error naming its cell.
 std::string DistinctCorners(const std::vector<Vec3>& points, const std::vector<int>& offsets,
@@ -444,6 +442,8 @@ std::string CheckSizes(const std::vector<Vec3>& points, const std::vector<int>& 
   return err.str();
 }
 
+/// MeshPolygons on polygons that came from input cells `source[i]` (for messages, keys and
+/// the output's sourcePolygon), with the surfaces standing on them.
 std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& offsets,
   const std::vector<int>& connectivity, const std::vector<int>& source, const std::vector<int>& surfaceKey,
   const Contacts& contacts, const MesherOptions& options, MeshedPolygons& out)

@@ -112,10 +112,11 @@ void SurfaceAssembly::Stitch(int surface, const Piece& piece, int source, int fi
     for (int v = 0; v < piece.sides[e]; ++v, ++corner)
     {
       const Vec3& p = piece.corners[corner];
-      auto weld = Welds[surface].find(QuantizedPoint(p, Quantum));
+      const std::array<long long, 3> key = QuantizedPoint(p, Quantum);
+      auto weld = Welds[surface].find(key);
       if (weld == Welds[surface].end())
       {
-        weld = Welds[surface].emplace(QuantizedPoint(p, Quantum), mesh.add_vertex(SurfaceMesh::Point(p.x, p.y, p.z))).first;
+        weld = Welds[surface].emplace(key, mesh.add_vertex(SurfaceMesh::Point(p.x, p.y, p.z))).first;
       }
       handles.push_back(weld->second);
     }
