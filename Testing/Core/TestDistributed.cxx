@@ -127,7 +127,9 @@ double LargestDifference(const std::vector<Vec3>& a, const std::vector<Vec3>& b)
   return peak > 0 ? most / peak : most;
 }
 
-void ExpectSerialAnswer(SolverMethod method, int ranks, bool direct, const SceneMesh& mesh = Room(), int lights = 8)
+/// `tolerance`: relative, for the sums whose order differs between one process and several.
+void ExpectSerialAnswer(SolverMethod method, int ranks, bool direct, const SceneMesh& mesh = Room(), int lights = 8,
+  double tolerance = 1e-9)
 {
   SolverOptions options = Converged(1e-4);
   options.Solver = method;
@@ -146,22 +148,22 @@ void ExpectSerialAnswer(SolverMethod method, int ranks, bool direct, const Scene
     EXPECT_EQ(s.Ranks, ranks);
     EXPECT_GT(s.CollectiveBytes, 0);
     // Only the order of a few sums differs from one process (the conservation scale).
-    EXPECT_LT(LargestDifference(many[r].Radiosity, one.Radiosity), 1e-9) << "rank " << r;
-    EXPECT_LT(LargestDifference(many[r].Direct, one.Direct), 1e-9) << "rank " << r;
+    EXPECT_LT(LargestDifference(many[r].Radiosity, one.Radiosity), tolerance) << "rank " << r;
+    EXPECT_LT(LargestDifference(many[r].Direct, one.Direct), tolerance) << "rank " << r;
     EXPECT_NEAR(s.RayCount, one.Statistics.RayCount, 1e-6 * one.Statistics.RayCount);
-    EXPECT_NEAR(s.ReceivedPower, one.Statistics.ReceivedPower, 1e-9 * one.Statistics.ReceivedPower);
+    EXPECT_NEAR(s.ReceivedPower, one.Statistics.ReceivedPower, tolerance * one.Statistics.ReceivedPower);
     // The convergence table, every shot, as one process has it; the lights converge at
     // different shots, so the shooter is also chosen again after one drops out.
     ASSERT_EQ(s.RemainingPerSolution.size(), one.Statistics.RemainingPerSolution.size());
     ASSERT_EQ(s.TimeHistory.size(), static_cast<size_t>(s.Shots));
     for (size_t i = 0; i < s.RemainingPerSolution.size(); ++i)
     {
-      EXPECT_NEAR(s.RemainingPerSolution[i], one.Statistics.RemainingPerSolution[i], 1e-9) << "entry " << i;
+      EXPECT_NEAR(s.RemainingPerSolution[i], one.Statistics.RemainingPerSolution[i], tolerance) << "entry " << i;
     }
-    EXPECT_NEAR(s.EscapedPower, one.Statistics.EscapedPower, 1e-9 * one.Statistics.EmittedPower);
+    EXPECT_NEAR(s.EscapedPower, one.Statistics.EscapedPower, tolerance * one.Statistics.EmittedPower);
     for (int m = 0; m < lights; ++m)
     {
-      EXPECT_NEAR(many[r].Ambient[m].x, one.Ambient[m].x, 1e-9 * (one.Ambient[m].x + 1e-30));
+      EXPECT_NEAR(many[r].Ambient[m].x, one.Ambient[m].x, tolerance * (one.Ambient[m].x + 1e-30));
     }
   }
 }
@@ -180,7 +182,8 @@ TEST(Distributed, HierarchicalOnThreeRanksGivesTheSerialAnswerWithDirectAndAmbie
 TEST(Distributed, ClusteredOnThreeRanksGivesTheSerialAnswerWithDirectAndAmbient)
 {
   // Each rank links its share of the node pairs; the bounce's node sums meet in one sum.
-  ExpectSerialAnswer(SolverMethod::Clustered, 3, true);
+  // They are floats: summed in another order, they round differently (about 1e-7).
+  ExpectSerialAnswer(SolverMethod::Clustered, 3, true, Room(), 8, 1e-6);
 }
 
 TEST(Distributed, FaceClustersOnTwoRanksGiveTheSerialAnswer)

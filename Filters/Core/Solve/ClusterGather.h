@@ -4,6 +4,7 @@
 #define RadiosityCore_ClusterGather_h
 
 #include "Solve/ClusterLinks.h"
+#include "Base/ProcessGroup.h"
 #include "Base/WorkerPool.h"
 
 #include <vector>
@@ -15,8 +16,9 @@ namespace radiosity
 /// ("lanes"): a link does the same arithmetic on each lane, which the compiler vectorizes.
 /// Per node and lane the source sums are the sum of x A n (3 values) and, for the series, of
 /// x A and x A n n^T (7), kept in float: a bounce reads them once per link, so their size
-/// is its speed. The receiver sums (double) are the irradiance vector (3) for links whose
-/// receiver faces them, and 1, w, w w^T weighted by the arriving flux (10) for the others.
+/// is its speed. The receiver sums (float too: they are cleared, pushed down and read on
+/// every bounce) are the irradiance vector (3) for links whose receiver faces them, and 1,
+/// w, w w^T weighted by the arriving flux (10) for the others.
 template <typename Value>
 class ClusterGather
 {
@@ -29,7 +31,6 @@ public:
     , Tree(tree)
     , Links(links)
     , Pool(pool)
-    , FarReceivers(WithLinks(links.FarStart))
     , NearReceivers(WithLinks(links.NearStart))
     , Centres(tree.Nodes().size())
   {
@@ -51,14 +52,14 @@ public:
     const double* x = reinterpret_cast<const double*>(sending.data());
     PullUp(x);
     const size_t nodes = Tree.Nodes().size();
-    ReceivedVector.assign(nodes * kVector * W, 0.0);
-    ReceivedSeries.assign(nodes * kReceiverSeries * W, 0.0);
+    ReceivedVector.assign(nodes * kVector * W, 0.0f);
+    ReceivedSeries.assign(nodes * kReceiverSeries * W, 0.0f);
     Near.assign(G.normal.size() * W, 0.0);
-    Pool.For(static_cast<int>(FarReceivers.size()), 64, [&](int begin, int end) {
-      std::vector<double> lanes((kVector + kReceiverSeries + 1) * W);
-      for (int run = begin; run < end; ++run)
+    Pool.For(static_cast<int>(Links.FarBlockStart.size()) - 1, 1, [&](int begin, int end) {
+      std::vector<double> flux(W);
+      for (int block = begin; block < end; ++block)
       {
-        FarRun(FarReceivers[run], lanes.data());
+        FarBlock(block, flux.data());
       }
     });
     Pool.For(static_cast<int>(NearReceivers.size()), 256, [&](int begin, int end) {
@@ -69,8 +70,21 @@ public:
     });
   }
 
-  /// The sums Scatter left, for a sum over the ranks.
-  std::vector<std::vector<double>*> Sums() { return { &ReceivedVector, &ReceivedSeries, &Near }; }
+  /// Sums what Scatter left over the ranks (each gathered along its own share of the links).
+  void SumOverRanks(Collective& group)
+  {
+    if (!group.Distributed())
+    {
+      return;
+    }
+    for (std::vector<float>* sums : { &ReceivedVector, &ReceivedSeries })
+    {
+      std::vector<double> values(sums->begin(), sums->end());
+      group.Sum(values);
+      std::copy(values.begin(), values.end(), sums->begin());
+    }
+    group.Sum(Near);
+  }
 
   /// Pushes the node sums down and evaluates each element's irradiance.
   void Collect(int L, std::vector<Value>& irradiance)
@@ -120,49 +134,41 @@ private:
     Divide(Tree.Nodes()[n].Right, limit);
   }
 
-  /// One receiver's far links, summed in `lanes` (vector, series, flux) and stored once.
-  void FarRun(int receiver, double* lanes)
+  /// One block's far links, summed into their receivers' rows (which stay in cache while
+  /// the block runs).
+  void FarBlock(int block, double* flux)
   {
-    const size_t begin = Links.FarStart[receiver], end = Links.FarStart[receiver + 1];
-    double* vector = lanes;
-    double* series = lanes + kVector * W;
-    double* flux = series + kReceiverSeries * W;
-    std::fill(lanes, lanes + (kVector + kReceiverSeries) * W, 0.0);
-    bool mixedAny = false;
-    for (size_t i = begin; i < end; ++i)
+    const int* receivers = Links.FarReceivers.data() + static_cast<size_t>(block) * ClusterLinkSet::kBlock;
+    for (size_t i = Links.FarBlockStart[block]; i < Links.FarBlockStart[block + 1]; ++i)
     {
       Prefetch(i + kAhead);
+      const int receiver = receivers[Links.Receiver[i]];
       float d[3];
       FarDirection(Centres[receiver], Centres[Links.Source[i]], d);
       const double u[3] = { d[0], d[1], d[2] };
       Flux(i, u, flux);
       if ((Links.Mixed[i] & 2) == 0)
       {
+        float* vector = ReceivedVector.data() + static_cast<size_t>(receiver) * kVector * W;
         for (int k = 0; k < kVector; ++k)
         {
           for (int j = 0; j < W; ++j)
           {
-            vector[k * W + j] -= flux[j] * u[k]; // towards the source: n . (-u) > 0 at each receiving element
+            vector[k * W + j] -= static_cast<float>(flux[j] * u[k]); // towards the source: n . (-u) > 0 at each receiving element
           }
         }
         continue;
       }
-      mixedAny = true;
+      float* series = ReceivedSeries.data() + static_cast<size_t>(receiver) * kReceiverSeries * W;
       const double w[kReceiverSeries] = { 1, -u[0], -u[1], -u[2], u[0] * u[0], u[0] * u[1], u[0] * u[2], u[1] * u[1],
         u[1] * u[2], u[2] * u[2] };
       for (int k = 0; k < kReceiverSeries; ++k)
       {
         for (int j = 0; j < W; ++j)
         {
-          series[k * W + j] += flux[j] * w[k];
+          series[k * W + j] += static_cast<float>(flux[j] * w[k]);
         }
       }
-    }
-    std::copy(vector, vector + kVector * W, ReceivedVector.data() + static_cast<size_t>(receiver) * kVector * W);
-    if (mixedAny)
-    {
-      std::copy(series, series + kReceiverSeries * W,
-        ReceivedSeries.data() + static_cast<size_t>(receiver) * kReceiverSeries * W);
     }
   }
 
@@ -239,8 +245,8 @@ private:
   void AtElement(int leaf, int e, double* out) const
   {
     const Vec3& n = G.normal[e];
-    const double* v = ReceivedVector.data() + static_cast<size_t>(leaf) * kVector * W;
-    const double* r = ReceivedSeries.data() + static_cast<size_t>(leaf) * kReceiverSeries * W;
+    const float* v = ReceivedVector.data() + static_cast<size_t>(leaf) * kVector * W;
+    const float* r = ReceivedSeries.data() + static_cast<size_t>(leaf) * kReceiverSeries * W;
     const double* near = Near.data() + static_cast<size_t>(e) * W;
     const double w[6] = { n.x * n.x, 2 * n.x * n.y, 2 * n.x * n.z, n.y * n.y, 2 * n.y * n.z, n.z * n.z };
     for (int j = 0; j < W; ++j)
@@ -324,7 +330,7 @@ private:
   }
 
   /// Adds each node's sums (`width` values) to its children's, root first.
-  void PushDown(std::vector<double>& sums, size_t width)
+  void PushDown(std::vector<float>& sums, size_t width)
   {
     const std::vector<ElementTree::Node>& nodes = Tree.Nodes();
     const auto node = [&](int n) {
@@ -332,9 +338,9 @@ private:
       {
         return;
       }
-      const double* from = sums.data() + n * width;
-      double* left = sums.data() + nodes[n].Left * width;
-      double* right = sums.data() + nodes[n].Right * width;
+      const float* from = sums.data() + n * width;
+      float* left = sums.data() + nodes[n].Left * width;
+      float* right = sums.data() + nodes[n].Right * width;
       for (size_t j = 0; j < width; ++j)
       {
         left[j] += from[j];
@@ -360,12 +366,13 @@ private:
   const ElementTree& Tree;
   const ClusterLinkSet& Links;
   const WorkerPool& Pool;
-  const std::vector<int> FarReceivers, NearReceivers;
+  const std::vector<int> NearReceivers;
   std::vector<Vec3> Centres; ///< each node's, as the far links' directions come from them
   std::vector<int> Top, Subtrees;
   int W = 1; ///< lanes: solutions x channels
   std::vector<float> SentVector, SentSeries;
-  std::vector<double> ReceivedVector, ReceivedSeries, Near;
+  std::vector<float> ReceivedVector, ReceivedSeries;
+  std::vector<double> Near;
 };
 
 } // namespace radiosity

@@ -28,11 +28,11 @@ constexpr int kHiddenRays = 16;
 
 } // namespace
 
-void ClusterLinkBuilder::SortByReceiver(std::vector<Found>& found, ClusterLinkSet& links) const
+void ClusterLinkBuilder::SortByReceiver(
+  std::vector<Found>& found, ClusterLinkSet& links, std::vector<size_t>& far) const
 {
   // A counting sort over every task's links, in task order: each task's lists are freed
   // once placed, so the links are held at most twice.
-  std::vector<size_t>& far = links.FarStart;
   std::vector<size_t>& near = links.NearStart;
   far.assign(Tree.Nodes().size() + 1, 0);
   near.assign(G.normal.size() + 1, 0);
@@ -75,30 +75,54 @@ void ClusterLinkBuilder::SortByReceiver(std::vector<Found>& found, ClusterLinkSe
   }
 }
 
-void ClusterLinkBuilder::SortBySource(const WorkerPool& pool, ClusterLinkSet& links)
+void ClusterLinkBuilder::SortBySource(
+  const WorkerPool& pool, const std::vector<size_t>& farStart, ClusterLinkSet& links)
 {
-  // Neighbouring receivers gather from neighbouring sources: visited in order, a bounce
-  // finds the sources' sums still in the cache.
-  pool.For(static_cast<int>(links.FarStart.size()) - 1, 256, [&](int begin, int end) {
-    std::vector<std::pair<int, int>> order;
-    std::vector<float> coupling;
-    std::vector<unsigned char> mixed;
-    for (int r = begin; r < end; ++r)
+  // Neighbouring receivers gather from neighbouring sources: in one block sorted by source,
+  // a source's sums are read once for all its receivers there.
+  for (size_t r = 0; r + 1 < farStart.size(); ++r)
+  {
+    if (farStart[r + 1] > farStart[r])
     {
-      const size_t first = links.FarStart[r], count = links.FarStart[r + 1] - first;
+      links.FarReceivers.push_back(static_cast<int>(r));
+    }
+  }
+  const int blocks = static_cast<int>((links.FarReceivers.size() + ClusterLinkSet::kBlock - 1) / ClusterLinkSet::kBlock);
+  links.FarBlockStart.assign(blocks + 1, links.Source.size());
+  links.Receiver.resize(links.Source.size());
+  for (int b = 0; b < blocks; ++b)
+  {
+    links.FarBlockStart[b] = farStart[links.FarReceivers[static_cast<size_t>(b) * ClusterLinkSet::kBlock]];
+  }
+  pool.For(blocks, 1, [&](int begin, int end) {
+    std::vector<std::pair<int, int>> order; // (source, place in the block's links before)
+    std::vector<float> coupling;
+    std::vector<unsigned char> mixed, receiver;
+    for (int b = begin; b < end; ++b)
+    {
+      const size_t first = links.FarBlockStart[b], count = links.FarBlockStart[b + 1] - first;
+      receiver.clear();
+      const size_t r0 = static_cast<size_t>(b) * ClusterLinkSet::kBlock;
+      for (size_t r = r0; r < std::min(links.FarReceivers.size(), r0 + ClusterLinkSet::kBlock); ++r)
+      {
+        const int node = links.FarReceivers[r];
+        receiver.insert(receiver.end(), farStart[node + 1] - farStart[node], static_cast<unsigned char>(r - r0));
+      }
       order.resize(count);
       for (size_t i = 0; i < count; ++i)
       {
         order[i] = { links.Source[first + i], static_cast<int>(i) };
       }
-      std::sort(order.begin(), order.end());
+      std::sort(order.begin(), order.end()); // ties by place: each receiver's order stays
       coupling.assign(links.Coupling.begin() + first, links.Coupling.begin() + first + count);
       mixed.assign(links.Mixed.begin() + first, links.Mixed.begin() + first + count);
       for (size_t i = 0; i < count; ++i)
       {
+        const int from = order[i].second;
         links.Source[first + i] = order[i].first;
-        links.Coupling[first + i] = coupling[order[i].second];
-        links.Mixed[first + i] = mixed[order[i].second];
+        links.Coupling[first + i] = coupling[from];
+        links.Mixed[first + i] = mixed[from];
+        links.Receiver[first + i] = receiver[from];
       }
     }
   });
@@ -132,23 +156,40 @@ ClusterLinkBuilder::ClusterLinkBuilder(const SceneMesh& mesh, const SceneGeometr
   , Options(options)
   , AreaBefore(tree.Elements().size() + 1, 0.0)
   , Epsilon(1e-6 * g.sceneDiagonal)
-  , FanArea(mesh.connectivity.size(), 0.0)
-  , FanTotal(g.normal.size(), 0.0)
 {
   for (size_t i = 0; i < tree.Elements().size(); ++i)
   {
     AreaBefore[i + 1] = AreaBefore[i] + g.area[tree.Elements()[i]];
   }
-  // Sampling a point asks for these hundreds of millions of times.
-  for (int e = 0; e < static_cast<int>(g.normal.size()); ++e)
+  PackSampleData();
+}
+
+void ClusterLinkBuilder::PackSampleData()
+{
+  const std::vector<int>& order = Tree.Elements();
+  SampleAt.resize(order.size() + 1, 0);
+  for (size_t i = 0; i < order.size(); ++i)
   {
-    const int* ids = mesh.Polygon(e);
-    const int count = mesh.PolygonSize(e);
+    SampleAt[i + 1] = SampleAt[i] + 7 + 4 * Mesh.PolygonSize(order[i]);
+  }
+  SampleData.resize(SampleAt.back());
+  for (size_t i = 0; i < order.size(); ++i)
+  {
+    const int e = order[i];
+    const int* ids = Mesh.Polygon(e);
+    const int count = Mesh.PolygonSize(e);
+    const Vec3& c = G.centroid[e];
+    double* r = SampleData.data() + SampleAt[i];
+    const double head[6] = { c.x, c.y, c.z, G.normal[e].x, G.normal[e].y, G.normal[e].z };
+    std::copy(head, head + 6, r);
+    r[6] = 0;
     for (int k = 0; k < count; ++k)
     {
-      const double a = Norm(Cross(mesh.points[ids[k]] - g.centroid[e], mesh.points[ids[(k + 1) % count]] - g.centroid[e]));
-      FanArea[mesh.offsets[e] + k] = a;
-      FanTotal[e] += a;
+      const Vec3& p = Mesh.points[ids[k]];
+      const double fan = Norm(Cross(p - c, Mesh.points[ids[(k + 1) % count]] - c));
+      const double corner[4] = { fan, p.x, p.y, p.z };
+      std::copy(corner, corner + 4, r + 7 + 4 * k);
+      r[6] += fan;
     }
   }
 }
@@ -380,36 +421,40 @@ bool ClusterLinkBuilder::NeedsRays(int a, int b) const
 Vec3 ClusterLinkBuilder::SamplePoint(int node, double u, SampleStream& random, Vec3& normal) const
 {
   const ElementTree::Node& n = Tree.Nodes()[node];
-  const double target = AreaBefore[n.First] + u * n.Area;
-  int i = static_cast<int>(
-    std::upper_bound(AreaBefore.begin() + n.First, AreaBefore.begin() + n.First + n.Count, target) -
-    AreaBefore.begin()) - 1;
-  i = std::max(n.First, std::min(n.First + n.Count - 1, i));
-  const int e = Tree.Elements()[i];
-  normal = G.normal[e];
+  int i = n.First;
+  if (n.Count > 1)
+  {
+    const double target = AreaBefore[n.First] + u * n.Area;
+    i = static_cast<int>(
+      std::upper_bound(AreaBefore.begin() + n.First, AreaBefore.begin() + n.First + n.Count, target) -
+      AreaBefore.begin()) - 1;
+    i = std::max(n.First, std::min(n.First + n.Count - 1, i));
+  }
+  const double* r = SampleData.data() + SampleAt[i];
+  const int count = static_cast<int>((SampleAt[i + 1] - SampleAt[i] - 7) / 4);
+  const Vec3 c{ r[0], r[1], r[2] };
+  normal = Vec3{ r[3], r[4], r[5] };
   // A point uniform over the element's fan triangles around its centroid.
-  const int* ids = Mesh.Polygon(e);
-  const int count = Mesh.PolygonSize(e);
-  const Vec3& c = G.centroid[e];
-  const double* fan = FanArea.data() + Mesh.offsets[e];
-  double pick = random.Next() * FanTotal[e];
+  double pick = random.Next() * r[6];
   int k = 0;
   for (; k < count - 1; ++k)
   {
-    pick -= fan[k];
+    pick -= r[7 + 4 * k];
     if (pick < 0)
     {
       break;
     }
   }
+  const double* p = r + 8 + 4 * k;
+  const double* q = r + 8 + 4 * ((k + 1) % count);
   double s = random.Next(), t = random.Next();
   if (s + t > 1)
   {
     s = 1 - s;
     t = 1 - t;
   }
-  const Vec3 p = c + (Mesh.points[ids[k]] - c) * s + (Mesh.points[ids[(k + 1) % count]] - c) * t;
-  return p + normal * Epsilon;
+  const Vec3 point = c + (Vec3{ p[0], p[1], p[2] } - c) * s + (Vec3{ q[0], q[1], q[2] } - c) * t;
+  return point + normal * Epsilon;
 }
 
 ClusterLinkBuilder::Sight ClusterLinkBuilder::Hidden(int a, int b, long long& rays) const
@@ -524,8 +569,9 @@ ClusterLinkSet ClusterLinkBuilder::Build(
       }
     });
   }
-  SortByReceiver(found, links);
-  SortBySource(pool, links);
+  std::vector<size_t> farStart;
+  SortByReceiver(found, links, farStart);
+  SortBySource(pool, farStart, links);
   return links;
 }
 

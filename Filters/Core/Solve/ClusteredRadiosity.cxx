@@ -254,9 +254,9 @@ private:
     while (AnyActive() && KeepGoing(IterationFraction()))
     {
       gather.Scatter(Last, L);
-      for (std::vector<double>* sums : Group.Distributed() ? gather.Sums() : std::vector<std::vector<double>*>())
+      if (Group.Distributed())
       {
-        Group.Sum(*sums); // each rank gathered along its own share of the links
+        gather.SumOverRanks(Group);
       }
       gather.Collect(L, irradiance);
       Bounce(irradiance);
@@ -271,10 +271,7 @@ private:
   {
     ClusterGather<double> unit(G, tree, links, Pool);
     unit.Scatter(std::vector<double>(N, 1.0), 1);
-    for (std::vector<double>* sums : unit.Sums())
-    {
-      Group.Sum(*sums);
-    }
+    unit.SumOverRanks(Group);
     std::vector<double> seen;
     unit.Collect(1, seen);
     for (int e = 0; e < N; ++e)
