@@ -263,6 +263,13 @@ std::string DescribeEarlyStop(const radiosity::SolverStatistics& stats, double b
     text << "TimeBudget of " << budget << " s reached after " << stats.Shots << " shots; remaining unshot energy "
          << remaining << " of the initial.";
   }
+  else if (stats.AmbientAtCap)
+  {
+    text << "Stopped at the shot cap (" << stats.ShotCap << ") before converging: the remaining unshot energy ("
+         << remaining << " of the initial) was added as the ambient term (spread evenly, interreflected in "
+         << "closed form), which suits closed, highly reflective scenes, where the cap is met. Raise "
+         << "MaximumShots for a result that does not rely on it.";
+  }
   else if (!stats.Converged)
   {
     text << "Stopped at MaximumShots (" << stats.ShotCap << ") before converging: remaining unshot energy "

@@ -29,7 +29,8 @@
  *
  * Solves stop at MaximumShots, when every light's remaining unshot power falls below
  * ConvergenceThreshold times its emitted power, when TimeBudget seconds have passed, or
- * on abort; every stop leaves a valid partial result. Work is spread over all hardware
+ * on abort; every stop leaves a valid partial result (a stop at the cap picked from the
+ * scene, MaximumShots 0, adds the rest as the ambient term). Work is spread over all hardware
  * threads; results do not depend on the thread count.
  *
  * @sa vtkRadiosityMesher vtkRadiosityRelight

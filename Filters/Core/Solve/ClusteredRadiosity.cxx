@@ -359,7 +359,7 @@ private:
     Stats.RaysSkipped = estimator.RaysSkipped();
     Stats.PairsUnblockable = estimator.PairsUnblockable();
     Stats.BlockingSurfaces = estimator.BlockingPlanes();
-    if (Options.AmbientTerm && Reflect)
+    if (Reflect && AddsAmbient(Options, Stats))
     {
       AddAmbient();
     }

@@ -133,6 +133,13 @@ int ShotCap(const SolverOptions& options, int patches)
   return static_cast<int>(std::min<long long>(std::max<long long>(2000, 25LL * patches), 1000000000LL));
 }
 
+bool AddsAmbient(const SolverOptions& options, SolverStatistics& stats)
+{
+  stats.AmbientAtCap = !options.AmbientTerm && options.MaximumShots <= 0 && !stats.Converged && !stats.Aborted &&
+    !stats.OutOfTime && stats.OutOfMemory.empty() && stats.Shots >= stats.ShotCap;
+  return options.AmbientTerm || stats.AmbientAtCap;
+}
+
 RadiositySolver::RadiositySolver(const SceneMesh& mesh, int threads, const ProcessGroup& group)
   : Mesh(mesh)
 {
@@ -191,6 +198,7 @@ void SolverStatistics::Append(const SolverStatistics& next)
   Converged = Converged && next.Converged;
   Aborted = next.Aborted;
   OutOfTime = next.OutOfTime;
+  AmbientAtCap = AmbientAtCap || next.AmbientAtCap;
   OutOfMemory = next.OutOfMemory.empty() ? OutOfMemory : next.OutOfMemory;
   RayCount += next.RayCount;
   RaysSkipped += next.RaysSkipped;

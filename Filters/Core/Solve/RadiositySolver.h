@@ -119,6 +119,8 @@ struct SolverStatistics
   bool Converged = false;
   bool Aborted = false;
   bool OutOfTime = false;
+  /// The ambient term was added because the solver's own shot cap stopped it (AddsAmbient).
+  bool AmbientAtCap = false;
   /// Why the solve stopped short of memory (its links would not fit); empty otherwise.
   std::string OutOfMemory;
   /// Per shot: seconds since the start, remaining unshot power / initial (all solutions),
@@ -215,6 +217,13 @@ std::string NoFiniteSolution(const SceneMesh& mesh, const SceneGeometry& geometr
 
 /// The shot cap in force for `patches` patches (see SolverOptions::MaximumShots).
 int ShotCap(const SolverOptions& options, int patches);
+
+/// Whether a solve ends with the ambient term: asked for, or the solver's own shot cap
+/// (MaximumShots 0) stopped it short of converging. That cap is met where light travels
+/// long in a closed, highly reflective scene (rho 0.999 needs ~7,000 sweeps over the
+/// patches), and there the slowest part of the light left is the nearly even light the
+/// ambient term gives in closed form. Sets stats.AmbientAtCap.
+bool AddsAmbient(const SolverOptions& options, SolverStatistics& stats);
 
 /// The entry point: a mesh and its prepared scene (PreparedScene.h); several solves (k
 /// separate solutions, or a re-solve with other emissions) reuse the preparation, and Solve

@@ -291,7 +291,7 @@ public:
   void Finish()
   {
     FinishGathered();
-    if (Options.AmbientTerm && Reflect)
+    if (Reflect && AddsAmbient(Options, Stats))
     {
       AddAmbient();
     }
