@@ -167,6 +167,35 @@ TEST(Mesher, SliversAreNotCutIntoManyPatches)
   }
 }
 
+TEST(Mesher, ACircleOfManyCornersIsMeshedByArea)
+{
+  // A CAD circle: 10,000 corners, radius 1 m. Its triangles are slivers from rim to rim,
+  // and split along their length they made 363,000 elements; a grid over its area makes
+  // about pi / 0.25^2 = 50, and the same number wherever the disk is turned.
+  const int corners = 10000;
+  const Vec3 axis = Normalized({ 0.3, 0.8, 0.2 });
+  for (double angle : { 0.0, 0.65 })
+  {
+    std::vector<Vec3> points;
+    std::vector<int> connectivity;
+    const Vec3 a = Normalized(Cross(axis, { 1, 0, 0 })), b = Cross(axis, a);
+    const Vec3 u = a * std::cos(angle) + b * std::sin(angle), v = Cross(axis, u);
+    for (int i = 0; i < corners; ++i)
+    {
+      const double t = 2 * 3.14159265358979 * i / corners;
+      points.push_back(Vec3{ 5, -3, 2 } + u * std::cos(t) + v * std::sin(t));
+      connectivity.push_back(i);
+    }
+    MeshedPolygons m;
+    ASSERT_EQ(MeshPolygons(points, { 0, corners }, connectivity, { 0 }, Sizes(0.5, 0.25), m), "");
+    const size_t elements = m.sourcePolygon.size();
+    EXPECT_EQ(elements, 60u) << "turned by " << angle; // the 8 x 8 grid less its four corners
+    EXPECT_NEAR(TotalArea(m), PolygonArea(points.data(), corners), 1e-9);
+    EXPECT_EQ(CountElements(points, { 0, corners }, connectivity, 0.5, 0.25), static_cast<double>(elements));
+    EXPECT_EQ(m.patches, 16);
+  }
+}
+
 TEST(Mesher, SmallPolygonsShareAPatchInTheirCell)
 {
   // Four 0.2 m squares of one material in one plane, inside one 1 m cell: one patch. A

@@ -1,4 +1,5 @@
 #include "Mesh/Mesher.h"
+#include "Mesh/AreaGrid.h"
 #include "Mesh/CoincidentCopies.h"
 #include "Mesh/ContactCuts.h"
 #include "Mesh/FaceClusters.h"
@@ -20,14 +21,6 @@ namespace radiosity
 
 namespace
 {
-/// Pieces of at most `size` along `length`. A length within a millionth of a whole number
-/// of sizes counts as that number: VTK stores points as floats (7 digits), so a wall 5 m
-/// long rotated or scaled comes back 5.0000003 m, and would otherwise gain a row.
-int Divisions(double length, double size)
-{
-  return std::max(1, static_cast<int>(std::ceil(length / size * (1 - 1e-6))));
-}
-
 /// Emits the elements of a convex quad on a bilinear grid: emit(corners, 4, local patch).
 /// Returns the number of patches.
 template <typename Emit>
@@ -99,14 +92,29 @@ int SplitTriangle(const Vec3& a, const Vec3& b, const Vec3& c, const MesherOptio
   return np * np * 2;
 }
 
-/// Emits a polygon's elements: convex quads on a bilinear grid, others ear-clipped into
-/// triangles split on a barycentric lattice. Returns the number of patches.
+double CountLattice(const std::vector<Vec3>& loop, double patch, double element, double noise);
+
+/// A convex polygon of more than four corners whose triangles would make more than twice
+/// the elements of a grid over its area (a circle's slivers) is meshed by the grid.
+bool MeshesByArea(const std::vector<Vec3>& loop, double patch, double element, double noise)
+{
+  return loop.size() > 4 && IsConvex(loop.data(), static_cast<int>(loop.size()), noise) &&
+    2 * CountAreaGrid(loop, patch, element, noise) < CountLattice(loop, patch, element, noise);
+}
+
+/// Emits a polygon's elements: convex quads on a bilinear grid, convex polygons of many
+/// corners by area (MeshesByArea), others ear-clipped into triangles split on a barycentric
+/// lattice. Returns the number of patches.
 template <typename Emit>
 int SplitPolygon(const std::vector<Vec3>& loop, const MesherOptions& o, double noise, const Emit& emit)
 {
   if (loop.size() == 4 && IsConvex(loop.data(), 4, noise))
   {
     return SplitQuad(loop.data(), o, emit);
+  }
+  if (MeshesByArea(loop, o.PatchSize, o.ElementSize, noise))
+  {
+    return SplitByAreaGrid(loop, o.PatchSize, o.ElementSize, noise, emit);
   }
   const std::vector<int> corners = Triangulate(loop.data(), static_cast<int>(loop.size()), noise);
   int patches = 0;
@@ -205,6 +213,13 @@ double CountPlain(const std::vector<Vec3>& loop, double patchSize, double elemen
   {
     return CountQuad(loop.data(), patchSize, elementSize);
   }
+  return MeshesByArea(loop, patchSize, elementSize, noise) ? CountAreaGrid(loop, patchSize, elementSize, noise)
+                                                            : CountLattice(loop, patchSize, elementSize, noise);
+}
+
+/// The elements of `loop`'s triangles' lattices.
+double CountLattice(const std::vector<Vec3>& loop, double patchSize, double elementSize, double noise)
+{
   double total = 0;
   const std::vector<int> corners = Triangulate(loop.data(), static_cast<int>(loop.size()), noise);
   for (size_t t = 0; t + 2 < corners.size(); t += 3)
