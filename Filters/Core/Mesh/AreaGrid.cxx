@@ -92,6 +92,14 @@ int SplitByAreaGrid(const std::vector<Vec3>& loop, double patchSize, double elem
   return pu * pv;
 }
 
+double AreaGridCells(const std::vector<Vec3>& loop, double patchSize, double elementSize)
+{
+  const GridFrame f = FrameOf(loop);
+  const double lu = f.High[0] - f.Low[0], lv = f.High[1] - f.Low[1];
+  const double pu = Divisions(lu, patchSize), pv = Divisions(lv, patchSize);
+  return pu * Divisions(lu / pu, elementSize) * pv * Divisions(lv / pv, elementSize);
+}
+
 double CountAreaGrid(const std::vector<Vec3>& loop, double patchSize, double elementSize, double noise)
 {
   double count = 0;

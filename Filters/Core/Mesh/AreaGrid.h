@@ -29,6 +29,9 @@ inline int Divisions(double length, double size)
 int SplitByAreaGrid(const std::vector<Vec3>& loop, double patchSize, double elementSize, double noise,
   const std::function<void(const Vec3*, int, int)>& cell);
 
+/// The cells of the grid before they are cut (an upper bound of CountAreaGrid's, at once).
+double AreaGridCells(const std::vector<Vec3>& loop, double patchSize, double elementSize);
+
 /// The cells SplitByAreaGrid makes.
 double CountAreaGrid(const std::vector<Vec3>& loop, double patchSize, double elementSize, double noise);
 

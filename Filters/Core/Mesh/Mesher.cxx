@@ -94,12 +94,24 @@ int SplitTriangle(const Vec3& a, const Vec3& b, const Vec3& c, const MesherOptio
 
 double CountLattice(const std::vector<Vec3>& loop, double patch, double element, double noise);
 
+/// Grids of more cells than this are not cut to count them (a polygon that large is over
+/// any element budget either way, and its triangles' lattice is counted at once).
+constexpr double kMostAreaGridCells = 1e5;
+
 /// A convex polygon of more than four corners whose triangles would make more than twice
 /// the elements of a grid over its area (a circle's slivers) is meshed by the grid.
 bool MeshesByArea(const std::vector<Vec3>& loop, double patch, double element, double noise)
 {
-  return loop.size() > 4 && IsConvex(loop.data(), static_cast<int>(loop.size()), noise) &&
-    2 * CountAreaGrid(loop, patch, element, noise) < CountLattice(loop, patch, element, noise);
+  if (loop.size() <= 4 || !IsConvex(loop.data(), static_cast<int>(loop.size()), noise))
+  {
+    return false;
+  }
+  const double cells = AreaGridCells(loop, patch, element), lattice = CountLattice(loop, patch, element, noise);
+  if (!(cells <= kMostAreaGridCells))
+  {
+    return 2 * cells < lattice;
+  }
+  return 2 * CountAreaGrid(loop, patch, element, noise) < lattice;
 }
 
 /// Emits a polygon's elements: convex quads on a bilinear grid, convex polygons of many
@@ -213,8 +225,12 @@ double CountPlain(const std::vector<Vec3>& loop, double patchSize, double elemen
   {
     return CountQuad(loop.data(), patchSize, elementSize);
   }
-  return MeshesByArea(loop, patchSize, elementSize, noise) ? CountAreaGrid(loop, patchSize, elementSize, noise)
-                                                            : CountLattice(loop, patchSize, elementSize, noise);
+  if (!MeshesByArea(loop, patchSize, elementSize, noise))
+  {
+    return CountLattice(loop, patchSize, elementSize, noise);
+  }
+  const double cells = AreaGridCells(loop, patchSize, elementSize);
+  return cells <= kMostAreaGridCells ? CountAreaGrid(loop, patchSize, elementSize, noise) : cells;
 }
 
 /// The elements of `loop`'s triangles' lattices.
