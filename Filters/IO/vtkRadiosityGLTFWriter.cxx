@@ -1,5 +1,6 @@
 #include "vtkRadiosityGLTFWriter.h"
 #include "vtkRadiosityAdapter.h"
+#include "vtkRadiosityCombine.h"
 #include "vtkRadiosityLightDefaults.h"
 
 #include "Base/AtomicFile.h"
@@ -9,6 +10,7 @@
 #include "vtkDataArray.h"
 #include "vtkErrorCode.h"
 #include "vtkFieldData.h"
+#include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -174,6 +176,25 @@ json AddLightAttributes(vtkPolyData* input, GlbDocument& glb, json& attributes)
 }
 
 /// The glTF document: one unlit, double-sided mesh whose extras list the lights.
+/// Exposure 0 (the default): the relight filter's, from its field array Exposure, so the
+/// file shows what the filter showed; else metered from the relit Radiosity as it meters.
+double ExposureFor(vtkPolyData* input, double set)
+{
+  vtkDataArray* used = input->GetFieldData()->GetArray("Exposure");
+  if (set > 0 || (used && used->GetNumberOfTuples() > 0 && used->GetComponent(0, 0) > 0))
+  {
+    return set > 0 ? set : used->GetComponent(0, 0);
+  }
+  vtkDataArray* relit = input->GetPointData()->GetArray("Radiosity");
+  if (!relit || relit->GetNumberOfComponents() != 3)
+  {
+    return 1.0;
+  }
+  vtkNew<vtkFloatArray> values;
+  values->DeepCopy(relit);
+  return vtkRadiosityMeteredExposure(input, values, false);
+}
+
 json Document(const GlbDocument& glb, const json& primitive, const json& lights, double exposure)
 {
   return { { "asset", { { "version", "2.0" }, { "generator", "RadiosityRelight" } } },
@@ -244,15 +265,16 @@ void vtkRadiosityGLTFWriter::WriteData()
   }
   json attributes = { { "POSITION", glb.AddVec3(positions, true) } };
   vtkDataArray* relit = input->GetPointData()->GetArray("Radiosity");
+  const double exposure = ExposureFor(input, this->Exposure);
   if (relit && relit->GetNumberOfComponents() == 3)
   {
-    attributes["COLOR_0"] = glb.AddVec3(Floats(relit, this->Exposure, true), false);
+    attributes["COLOR_0"] = glb.AddVec3(Floats(relit, exposure, true), false);
   }
   const json lights = AddLightAttributes(input, glb, attributes);
   const json primitive = { { "attributes", attributes }, { "indices", glb.AddIndices(Triangles(mesh)) },
     { "material", 0 }, { "mode", 4 } };
   std::string bytes;
-  if (!SceneFiles::GlbBytes(Document(glb, primitive, lights, this->Exposure).dump(), glb.Binary, bytes))
+  if (!SceneFiles::GlbBytes(Document(glb, primitive, lights, exposure).dump(), glb.Binary, bytes))
   {
     vtkErrorMacro(<< "Cannot write " << this->FileName << ": " << glb.Binary.size() / 1073741824.0
                   << " GiB of data is more than a .glb holds (4 GiB); write fewer lights or a coarser mesh.");

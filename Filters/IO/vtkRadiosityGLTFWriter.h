@@ -35,7 +35,8 @@ public:
   vtkGetFilePathMacro(FileName);
 
   ///@{
-  /// Scale from radiosity to COLOR_0 (as the relight filter's Exposure). Default 1.
+  /// Scale from radiosity to COLOR_0 (as the relight filter's Exposure). 0 (the default):
+  /// the relight filter's own (its field array Exposure), else metered as it meters.
   vtkSetMacro(Exposure, double); // checked when writing: finite, not negative
   static double GetExposureMinValue() { return 0.0; }
   static double GetExposureMaxValue() { return VTK_DOUBLE_MAX; }
@@ -53,7 +54,7 @@ private:
   void operator=(const vtkRadiosityGLTFWriter&) = delete;
 
   char* FileName = nullptr;
-  double Exposure = 1.0;
+  double Exposure = 0.0;
 };
 
 #endif

@@ -1,10 +1,15 @@
 #include "vtkRadiosityCombine.h"
 #include "vtkRadiosityAdapter.h"
 
+#include "Relight/Exposure.h"
 #include "Relight/Relight.h"
 
 #include "vtkDoubleArray.h"
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
 #include "vtkFieldData.h"
+#include "vtkPolyData.h"
 #include "vtkFloatArray.h"
 
 #include <cmath>
@@ -66,6 +71,51 @@ bool vtkRadiosityCombineSolutions(vtkFieldData* data, const std::vector<std::str
     return false;
   }
   return true;
+}
+
+namespace
+{
+/// Per cell (or per point, for the points of such cells) whether it emits (LightId >= 0).
+std::vector<char> Emitters(vtkPolyData* data, bool cells)
+{
+  vtkDataArray* lightId = data->GetCellData()->GetArray("LightId");
+  std::vector<char> emits;
+  if (!lightId || lightId->GetNumberOfTuples() != data->GetNumberOfCells())
+  {
+    return emits;
+  }
+  emits.assign(cells ? data->GetNumberOfCells() : data->GetNumberOfPoints(), 0);
+  if (cells)
+  {
+    for (vtkIdType c = 0; c < lightId->GetNumberOfTuples(); ++c)
+    {
+      emits[c] = lightId->GetComponent(c, 0) >= 0 ? 1 : 0;
+    }
+    return emits;
+  }
+  // Only polygons carry light (the mesher's and solver's output holds nothing else).
+  const vtkIdType first = data->GetNumberOfVerts() + data->GetNumberOfLines();
+  auto polygons = vtk::TakeSmartPointer(data->GetPolys()->NewIterator());
+  vtkIdType c = first;
+  for (polygons->GoToFirstCell(); !polygons->IsDoneWithTraversal(); polygons->GoToNextCell(), ++c)
+  {
+    vtkIdType count;
+    const vtkIdType* ids;
+    polygons->GetCurrentCell(count, ids);
+    for (vtkIdType k = 0; k < count && lightId->GetComponent(c, 0) >= 0; ++k)
+    {
+      emits[ids[k]] = 1;
+    }
+  }
+  return emits;
+}
+} // namespace
+
+double vtkRadiosityMeteredExposure(vtkPolyData* data, vtkFloatArray* relit, bool cells)
+{
+  const std::vector<char> emits = Emitters(data, cells);
+  return radiosity::MeteredExposure(relit->GetPointer(0), static_cast<size_t>(relit->GetNumberOfTuples()),
+    emits.size() == static_cast<size_t>(relit->GetNumberOfTuples()) ? emits : std::vector<char>());
 }
 
 vtkIdType vtkRadiosityFirstNonFinite(vtkFloatArray* values)

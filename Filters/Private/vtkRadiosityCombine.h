@@ -11,6 +11,7 @@
 
 class vtkFieldData;
 class vtkFloatArray;
+class vtkPolyData;
 
 /// out = sum over i of weights[3i .. 3i+2] times the RGB array `arrays[i]` of `data`, for
 /// `tuples` tuples. The arrays must all be float or all double, 3 components, `tuples`
@@ -19,6 +20,11 @@ class vtkFloatArray;
 VTKRADIOSITYFILTERS_EXPORT bool vtkRadiosityCombineSolutions(vtkFieldData* data,
   const std::vector<std::string>& arrays, const std::vector<double>& weights, vtkIdType tuples, vtkFloatArray* out,
   std::string& error);
+
+/// The exposure a camera would meter for `relit`, the relit values of `data`'s cells
+/// (`cells` true) or points (radiosity::MeteredExposure): those of cells with a `LightId`
+/// of 0 or more emit and are left out.
+VTKRADIOSITYFILTERS_EXPORT double vtkRadiosityMeteredExposure(vtkPolyData* data, vtkFloatArray* relit, bool cells);
 
 /// The first tuple of a 3-component array holding a value that is not finite, or -1.
 VTKRADIOSITYFILTERS_EXPORT vtkIdType vtkRadiosityFirstNonFinite(vtkFloatArray* values);

@@ -823,6 +823,11 @@ int vtkRadiosityRelight::Relight(
     return 0;
   }
   output->ShallowCopy(input);
+  this->ExposureInUse = this->Exposure > 0 ? this->Exposure : vtkRadiosityMeteredExposure(output, hasCells ? cellResult.Get() : pointResult.Get(), hasCells);
+  vtkNew<vtkDoubleArray> exposure;
+  exposure->SetName("Exposure");
+  exposure->InsertNextValue(this->ExposureInUse);
+  output->GetFieldData()->AddArray(exposure);
   if (!this->Internal->Rig.KeyframeTimes().empty())
   {
     output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);
@@ -835,7 +840,7 @@ int vtkRadiosityRelight::Relight(
     {
       result->SetName("Radiosity");
       data->AddArray(result);
-      data->SetScalars(Display(result, this->Exposure));
+      data->SetScalars(Display(result, this->ExposureInUse));
     }
   }
   return 1;

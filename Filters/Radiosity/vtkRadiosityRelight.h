@@ -27,7 +27,8 @@
  *
  * Output: the input plus point and cell arrays `Radiosity` (3 components, linear exitance)
  * and `DisplayColors` (unsigned char RGB: Radiosity times Exposure, clamped, sRGB), the
- * latter active so a default mapper shows it directly.
+ * latter active so a default mapper shows it directly, and the field array `Exposure`
+ * (the one used: metered unless set).
  *
  * @sa vtkLightTaggedRadiosity
  */
@@ -90,12 +91,16 @@ public:
   ///@}
 
   ///@{
-  /// Multiplier applied before clamping to display colors. Default 1.
-  /// A negative or NaN one is an error at the update (it was clamped to 0: a black picture).
+  /// Multiplier applied before clamping to display colors. 0 (the default): metered from
+  /// the relit result as a camera would (radiosity::MeteredExposure: the brightest 1 % of
+  /// the surfaces that do not emit at 80 % of white); the value used is in the output's
+  /// field array `Exposure` and GetExposureInUse. A negative or NaN one is an error at the
+  /// update.
   vtkSetMacro(Exposure, double);
   static double GetExposureMinValue() { return 0.0; }
   static double GetExposureMaxValue() { return VTK_DOUBLE_MAX; }
   vtkGetMacro(Exposure, double);
+  double GetExposureInUse() const { return this->ExposureInUse; }
   ///@}
 
   ///@{
@@ -170,7 +175,8 @@ private:
   long long LastMovingRays = 0;
   double LastMovingSeconds = 0;
   bool LastMovingSceneReused = false;
-  double Exposure = 1.0;
+  double Exposure = 0.0;
+  double ExposureInUse = 1.0;
   double IndirectScale = 1.0;
 };
 

@@ -33,7 +33,10 @@ struct vtkRadiosityRelightMapper::Internals
 {
   radiosity::LightRig Rig;
   double Time = 0;
-  double Exposure = 1;
+  double Exposure = 0;
+  double Metered = 1;                 ///< the metered exposure, for the weights and data below
+  std::vector<float> MeteredWeights;
+  vtkMTimeType MeteredFor = 0;
   std::vector<std::string> Names;       ///< of the data uploaded
   std::vector<radiosity::Vec3> Defaults; ///< their default colors
   vtkNew<vtkOpenGLBufferObject> Buffer;
@@ -375,18 +378,38 @@ vtkPolyData* vtkRadiosityRelightMapper::CpuColored()
   vtkPolyData* data = in.UploadedData;
   const std::vector<float> weights = this->CurrentWeights();
   if (in.Colored && in.ColoredFor == data->GetMTime() && in.ColoredWeights == weights &&
-    in.ColoredExposure == in.Exposure)
+    in.ColoredExposure == this->GetExposureInUse())
   {
     return in.Colored;
   }
   const vtkIdType points = data->GetNumberOfPoints();
+  vtkNew<vtkFloatArray> linear;
+  this->SumOnCpu(weights, linear);
+  vtkNew<vtkUnsignedCharArray> colors;
+  colors->SetName("RelitDisplayColors");
+  colors->SetNumberOfComponents(3);
+  colors->SetNumberOfTuples(points);
+  static const radiosity::DisplayCurve curve;
+  curve.Apply(linear->GetPointer(0), 3 * static_cast<size_t>(points), this->GetExposureInUse(), colors->GetPointer(0));
+  in.Colored = vtkSmartPointer<vtkPolyData>::New();
+  in.Colored->ShallowCopy(data);
+  in.Colored->GetPointData()->SetScalars(colors);
+  in.ColoredFor = data->GetMTime();
+  in.ColoredWeights = weights;
+  in.ColoredExposure = this->GetExposureInUse();
+  return in.Colored;
+}
+
+void vtkRadiosityRelightMapper::SumOnCpu(const std::vector<float>& weights, vtkFloatArray* linear)
+{
+  vtkPolyData* data = this->Internal->UploadedData;
+  const vtkIdType points = data->GetNumberOfPoints();
   // The relight filter's sum (in parallel, on the arrays' own memory), as the shader's.
   std::vector<std::string> arrays;
-  for (const std::string& name : in.Names)
+  for (const std::string& name : this->Internal->Names)
   {
     arrays.push_back("Radiosity_" + name);
   }
-  vtkNew<vtkFloatArray> linear;
   std::string error;
   if (!vtkRadiosityCombineSolutions(data->GetPointData(), arrays,
         std::vector<double>(weights.begin(), weights.end()), points, linear, error))
@@ -396,19 +419,26 @@ vtkPolyData* vtkRadiosityRelightMapper::CpuColored()
     linear->SetNumberOfTuples(points);
     linear->FillValue(0.0f);
   }
-  vtkNew<vtkUnsignedCharArray> colors;
-  colors->SetName("RelitDisplayColors");
-  colors->SetNumberOfComponents(3);
-  colors->SetNumberOfTuples(points);
-  static const radiosity::DisplayCurve curve;
-  curve.Apply(linear->GetPointer(0), 3 * static_cast<size_t>(points), in.Exposure, colors->GetPointer(0));
-  in.Colored = vtkSmartPointer<vtkPolyData>::New();
-  in.Colored->ShallowCopy(data);
-  in.Colored->GetPointData()->SetScalars(colors);
-  in.ColoredFor = data->GetMTime();
-  in.ColoredWeights = weights;
-  in.ColoredExposure = in.Exposure;
-  return in.Colored;
+}
+
+double vtkRadiosityRelightMapper::GetExposureInUse()
+{
+  Internals& in = *this->Internal;
+  vtkPolyData* data = in.UploadedData;
+  if (in.Exposure > 0 || !data)
+  {
+    return in.Exposure > 0 ? in.Exposure : in.Metered;
+  }
+  const std::vector<float> weights = this->CurrentWeights();
+  if (in.MeteredFor != data->GetMTime() || in.MeteredWeights != weights)
+  {
+    vtkNew<vtkFloatArray> linear;
+    this->SumOnCpu(weights, linear);
+    in.Metered = vtkRadiosityMeteredExposure(data, linear, false);
+    in.MeteredFor = data->GetMTime();
+    in.MeteredWeights = weights;
+  }
+  return in.Metered;
 }
 
 vtkUnsignedCharArray* vtkRadiosityRelightMapper::MapScalars(double alpha)
@@ -488,7 +518,7 @@ void vtkRadiosityRelightMapper::SetMapperShaderParameters(vtkOpenGLHelper& cellB
     program->SetUniformi("relightSolutions", in.Texture->GetTextureUnit());
   }
   program->SetUniform3fv("relightWeights", static_cast<int>(weights.size() / 3), weights.data());
-  program->SetUniformf("relightExposure", static_cast<float>(in.Exposure));
+  program->SetUniformf("relightExposure", static_cast<float>(this->GetExposureInUse()));
 }
 
 void vtkRadiosityRelightMapper::ReleaseGraphicsResources(vtkWindow* window)

@@ -24,6 +24,7 @@
 #include <memory> // for the internals
 #include <vector> // for the weights
 
+class vtkFloatArray;
 class vtkStringArray;
 class vtkUnsignedCharArray;
 
@@ -60,9 +61,12 @@ public:
   ///@}
 
   ///@{
-  /// Multiplier before the clamp to display colors, as the relight filter's. Default 1.
+  /// Multiplier before the clamp to display colors, as the relight filter's: 0 (the
+  /// default) meters it from the relit picture at each change of the lights (a sum on the
+  /// CPU), GetExposureInUse says the value drawn with.
   void SetExposure(double exposure);
   double GetExposure() const;
+  double GetExposureInUse();
   ///@}
 
   /// The lights of `data` (the solver's output) and their settings in effect at Time:
@@ -119,6 +123,8 @@ private:
   std::vector<float> CurrentWeights();
   /// The input with display colors summed on the CPU, made again only after a change.
   vtkPolyData* CpuColored();
+  /// The weighted sum of the uploaded data's solutions, on the CPU.
+  void SumOnCpu(const std::vector<float>& weights, vtkFloatArray* linear);
 
   struct Internals;
   std::unique_ptr<Internals> Internal;

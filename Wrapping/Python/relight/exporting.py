@@ -5,10 +5,12 @@ from .scene import ErrorCatcher
 from .vtkRadiosityFilters import vtkRadiosityGLTFWriter
 
 
-def write_gltf(data, path, exposure=1.0):
+def write_gltf(data, path, exposure=0.0):
     """Writes `data` (the solver's or the relight filter's output) as a .glb file:
     geometry, `_RADIOSITY_<LIGHT>` per light, COLOR_0 from `Radiosity` x `exposure`, and
-    the light names and default colors in the mesh's extras.relight. Raises OSError."""
+    the light names, default colors and exposure in the mesh's extras.relight. Exposure 0:
+    the relight filter's (its field array Exposure), else metered as it meters. Raises
+    OSError."""
     writer = vtkRadiosityGLTFWriter()
     writer.SetInputData(data)
     writer.SetFileName(str(path))
@@ -18,10 +20,11 @@ def write_gltf(data, path, exposure=1.0):
         raise OSError(f"could not write {path!r}: {catcher.first_error()}")
 
 
-def export_viewer(data, folder, camera=None, size=(640, 480), exposure=1.0):
+def export_viewer(data, folder, camera=None, size=(640, 480), exposure=0.0):
     """Writes a web page into `folder` that relights `data` in the browser: index.html,
     the bundled viewer (three.js) and scene.js (the .glb as base64, so the page opens
-    from file:// without a server). Per light: on/off, color, intensity; exposure;
+    from file:// without a server). Per light: on/off, color, intensity; exposure (0: as
+    write_gltf picks it);
     orbit with the mouse. `camera` = (position, focal point, view-up, view angle) as for
     render_png. URL parameters set controls as a user would: ?intensity.<light>=4,
     enabled.<light>=0, color.<light>=ff8800, controls=0 (hide the panel).
