@@ -82,6 +82,12 @@ vtkRadiosityMesher::~vtkRadiosityMesher() = default;
 
 double vtkRadiosityMesher::EstimateElements(double patchSize, double elementSize)
 {
+  if (this->GetNumberOfInputConnections(0) > 0)
+  {
+    // Without it a script got 0 until it called UpdateInformation itself; the pass does
+    // nothing when the input has not changed since the last one.
+    this->UpdateInformation();
+  }
   const radiosity::SceneMesh& mesh = this->SeenInput->Mesh;
   radiosity::MesherOptions options;
   options.MergeTriangles = this->MergeTriangles;

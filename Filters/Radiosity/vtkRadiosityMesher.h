@@ -95,9 +95,9 @@ public:
   vtkGetMacro(SuggestedElements, double);
   ///@}
 
-  /// The number of elements these sizes would make of the input the last information
-  /// pass saw (exact, without meshing; 0 before any): the Properties panel's live
-  /// estimate while the sizes are edited, before Apply.
+  /// The number of elements these sizes would make of the input (exact, without meshing;
+  /// runs the information pass first, which reads the input again only if it changed):
+  /// the Properties panel's live estimate while the sizes are edited, before Apply.
   double EstimateElements(double patchSize, double elementSize);
 
 protected:

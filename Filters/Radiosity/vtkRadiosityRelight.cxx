@@ -823,7 +823,10 @@ int vtkRadiosityRelight::Relight(
     return 0;
   }
   output->ShallowCopy(input);
-  this->ExposureInUse = this->Exposure > 0 ? this->Exposure : vtkRadiosityMeteredExposure(output, hasCells ? cellResult.Get() : pointResult.Get(), hasCells);
+  // Metered on the cells where there are some: they know which ones are lamps.
+  this->ExposureInUse = this->Exposure > 0
+    ? this->Exposure
+    : vtkRadiosityMeteredExposure(output, hasCells ? cellResult.Get() : pointResult.Get(), hasCells);
   vtkNew<vtkDoubleArray> exposure;
   exposure->SetName("Exposure");
   exposure->InsertNextValue(this->ExposureInUse);

@@ -66,7 +66,7 @@ for name, scale, degrees, shift in (("millimetres", 1000.0, 0, 0), ("turned 37 d
 # against 155,822 at 1.0 / 0.25).
 estimator = relight.vtkRadiosityMesher()
 estimator.SetInputData(house)
-estimator.UpdateInformation()
+before_any_update = estimator.EstimateElements(5.0, 1.25)  # it gave 0 until UpdateInformation
 for patch, element in ((5.0, 1.25), (1.0, 0.25)):
     estimator.SetPatchSize(patch)
     estimator.SetElementSize(element)
@@ -75,6 +75,8 @@ for patch, element in ((5.0, 1.25), (1.0, 0.25)):
     check(estimator.EstimateElements(patch, element) == made,
           f"the estimate at {patch} / {element} is what the mesher makes: {estimator.EstimateElements(patch, element):.0f} "
           f"and {made}")
+    if patch == 5.0:
+        check(before_any_update == made, f"the estimate before any update is the same: {before_any_update:.0f}")
 
 
 # A scene in site coordinates (UTM-referenced BIM: millions of metres, double points) solves
