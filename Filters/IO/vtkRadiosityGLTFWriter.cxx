@@ -190,8 +190,12 @@ double ExposureFor(vtkPolyData* input, double set)
   {
     return 1.0;
   }
-  vtkNew<vtkFloatArray> values;
-  values->DeepCopy(relit);
+  vtkSmartPointer<vtkFloatArray> values = vtkFloatArray::SafeDownCast(relit); // the relight filter's is float
+  if (!values)
+  {
+    values = vtkSmartPointer<vtkFloatArray>::New();
+    values->DeepCopy(relit);
+  }
   return vtkRadiosityMeteredExposure(input, values, false);
 }
 

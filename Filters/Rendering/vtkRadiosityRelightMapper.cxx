@@ -385,6 +385,10 @@ vtkPolyData* vtkRadiosityRelightMapper::CpuColored()
   const vtkIdType points = data->GetNumberOfPoints();
   vtkNew<vtkFloatArray> linear;
   this->SumOnCpu(weights, linear);
+  if (in.Exposure <= 0)
+  {
+    this->Meter(weights, linear); // from this sum, not another
+  }
   vtkNew<vtkUnsignedCharArray> colors;
   colors->SetName("RelitDisplayColors");
   colors->SetNumberOfComponents(3);
@@ -434,11 +438,17 @@ double vtkRadiosityRelightMapper::GetExposureInUse()
   {
     vtkNew<vtkFloatArray> linear;
     this->SumOnCpu(weights, linear);
-    in.Metered = vtkRadiosityMeteredExposure(data, linear, false);
-    in.MeteredFor = data->GetMTime();
-    in.MeteredWeights = weights;
+    this->Meter(weights, linear);
   }
   return in.Metered;
+}
+
+void vtkRadiosityRelightMapper::Meter(const std::vector<float>& weights, vtkFloatArray* linear)
+{
+  Internals& in = *this->Internal;
+  in.Metered = vtkRadiosityMeteredExposure(in.UploadedData, linear, false);
+  in.MeteredFor = in.UploadedData->GetMTime();
+  in.MeteredWeights = weights;
 }
 
 vtkUnsignedCharArray* vtkRadiosityRelightMapper::MapScalars(double alpha)

@@ -125,6 +125,8 @@ private:
   vtkPolyData* CpuColored();
   /// The weighted sum of the uploaded data's solutions, on the CPU.
   void SumOnCpu(const std::vector<float>& weights, vtkFloatArray* linear);
+  /// Meters the exposure of `linear`, that sum for `weights`, and keeps it for them.
+  void Meter(const std::vector<float>& weights, vtkFloatArray* linear);
 
   struct Internals;
   std::unique_ptr<Internals> Internal;

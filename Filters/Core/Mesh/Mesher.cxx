@@ -99,23 +99,21 @@ double CountLattice(const std::vector<Vec3>& loop, double patch, double element,
 constexpr double kMostAreaGridCells = 1e5;
 
 /// A convex polygon of more than four corners whose triangles would make more than twice
-/// the elements of a grid over its area (a circle's slivers) is meshed by the grid.
-bool MeshesByArea(const std::vector<Vec3>& loop, double patch, double element, double noise)
+/// the elements of a grid over its area (a circle's slivers) is meshed by the grid: the
+/// elements that grid makes, else -1.
+double AreaGridElements(const std::vector<Vec3>& loop, double patch, double element, double noise)
 {
   if (loop.size() <= 4 || !IsConvex(loop.data(), static_cast<int>(loop.size()), noise))
   {
-    return false;
+    return -1;
   }
-  const double cells = AreaGridCells(loop, patch, element), lattice = CountLattice(loop, patch, element, noise);
-  if (!(cells <= kMostAreaGridCells))
-  {
-    return 2 * cells < lattice;
-  }
-  return 2 * CountAreaGrid(loop, patch, element, noise) < lattice;
+  const double cells = AreaGridCells(loop, patch, element);
+  const double grid = cells <= kMostAreaGridCells ? CountAreaGrid(loop, patch, element, noise) : cells;
+  return 2 * grid < CountLattice(loop, patch, element, noise) ? grid : -1;
 }
 
 /// Emits a polygon's elements: convex quads on a bilinear grid, convex polygons of many
-/// corners by area (MeshesByArea), others ear-clipped into triangles split on a barycentric
+/// corners by area (AreaGridElements), others ear-clipped into triangles split on a barycentric
 /// lattice. Returns the number of patches.
 template <typename Emit>
 int SplitPolygon(const std::vector<Vec3>& loop, const MesherOptions& o, double noise, const Emit& emit)
@@ -124,7 +122,7 @@ int SplitPolygon(const std::vector<Vec3>& loop, const MesherOptions& o, double n
   {
     return SplitQuad(loop.data(), o, emit);
   }
-  if (MeshesByArea(loop, o.PatchSize, o.ElementSize, noise))
+  if (AreaGridElements(loop, o.PatchSize, o.ElementSize, noise) >= 0)
   {
     return SplitByAreaGrid(loop, o.PatchSize, o.ElementSize, noise, emit);
   }
@@ -225,12 +223,8 @@ double CountPlain(const std::vector<Vec3>& loop, double patchSize, double elemen
   {
     return CountQuad(loop.data(), patchSize, elementSize);
   }
-  if (!MeshesByArea(loop, patchSize, elementSize, noise))
-  {
-    return CountLattice(loop, patchSize, elementSize, noise);
-  }
-  const double cells = AreaGridCells(loop, patchSize, elementSize);
-  return cells <= kMostAreaGridCells ? CountAreaGrid(loop, patchSize, elementSize, noise) : cells;
+  const double grid = AreaGridElements(loop, patchSize, elementSize, noise);
+  return grid >= 0 ? grid : CountLattice(loop, patchSize, elementSize, noise);
 }
 
 /// The elements of `loop`'s triangles' lattices.
