@@ -9,6 +9,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPVRenderView.h"
 #include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkStringArray.h"
@@ -17,6 +18,7 @@ vtkStandardNewMacro(vtkRadiosityRelitRepresentation);
 
 vtkRadiosityRelitRepresentation::vtkRadiosityRelitRepresentation()
   : Mapper(vtkSmartPointer<vtkRadiosityRelightMapper>::New())
+  , ColorsMapper(vtkSmartPointer<vtkPolyDataMapper>::New())
   , Actor(vtkSmartPointer<vtkActor>::New())
   , Data(vtkSmartPointer<vtkPolyData>::New())
   , NamesInfo(vtkSmartPointer<vtkStringArray>::New())
@@ -25,6 +27,21 @@ vtkRadiosityRelitRepresentation::vtkRadiosityRelitRepresentation()
   this->Actor->SetMapper(this->Mapper);
   // The shader draws the relit colors unlit; the actor's lighting plays no part.
   this->Actor->GetProperty()->LightingOff();
+  // Unsigned char colors pass through unmapped in the default color mode.
+  this->ColorsMapper->SetScalarModeToUsePointFieldData();
+  this->ColorsMapper->SelectColorArray("DisplayColors");
+  this->ColorsMapper->SetColorModeToDefault();
+  this->ColorsMapper->ScalarVisibilityOn();
+}
+
+void vtkRadiosityRelitRepresentation::SetComputedColors(int computed)
+{
+  vtkMapper* wanted = computed ? static_cast<vtkMapper*>(this->ColorsMapper) : this->Mapper;
+  if (this->Actor->GetMapper() != wanted)
+  {
+    this->Actor->SetMapper(wanted);
+    this->Modified();
+  }
 }
 
 vtkRadiosityRelitRepresentation::~vtkRadiosityRelitRepresentation() = default;
@@ -100,6 +117,7 @@ int vtkRadiosityRelitRepresentation::ProcessViewRequest(
     if (vtkAlgorithmOutput* producer = vtkPVRenderView::GetPieceProducer(inInfo, this))
     {
       this->Mapper->SetInputConnection(producer);
+      this->ColorsMapper->SetInputConnection(producer);
     }
   }
   return 1;

@@ -6,6 +6,9 @@
  * the exposure are display properties: a change renders the next frame with new
  * uniforms, without Apply, without running the pipeline and without sending the data
  * again.
+ *
+ * With ComputedColors on ("Relit Colors", the relight filter's output) it shows the
+ * input's DisplayColors as they are instead: the filter already relit and exposed them.
  */
 #ifndef vtkRadiosityRelitRepresentation_h
 #define vtkRadiosityRelitRepresentation_h
@@ -16,6 +19,7 @@
 
 class vtkActor;
 class vtkPolyData;
+class vtkPolyDataMapper;
 class vtkRadiosityRelightMapper;
 class vtkStringArray;
 
@@ -34,6 +38,10 @@ public:
 
   /// Multiplier before the clamp to display colors.
   void SetRelightExposure(double exposure);
+
+  /// Show the input's DisplayColors unchanged (unlit, not through a color map) rather
+  /// than relight its solutions.
+  void SetComputedColors(int computed);
 
   ///@{
   /// The lights of the shown data, and the settings in effect (six strings per light).
@@ -59,6 +67,7 @@ private:
   void operator=(const vtkRadiosityRelitRepresentation&) = delete;
 
   vtkSmartPointer<vtkRadiosityRelightMapper> Mapper;
+  vtkSmartPointer<vtkPolyDataMapper> ColorsMapper;
   vtkSmartPointer<vtkActor> Actor;
   vtkSmartPointer<vtkPolyData> Data; ///< the input as last updated, delivered to the view
   vtkSmartPointer<vtkStringArray> NamesInfo;

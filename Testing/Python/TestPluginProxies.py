@@ -86,6 +86,17 @@ def check_setting_names(settings, proxies):
             if not prop.GetInformationOnly() and not prop.IsA("vtkSMInputProperty"):
                 check(name in listed, f"{xml_name}.{name} is missing from docs/settings.md")
 
+def grab(view):
+    """The view's picture as an array of RGB values."""
+    from vtkmodules.vtkIOImage import vtkPNGReader
+    path = os.path.join(tempfile.mkdtemp(), "view.png")
+    SaveScreenshot(path, view, ImageResolution=[300, 300])
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    return numpy_support.vtk_to_numpy(reader.GetOutput().GetPointData().GetScalars())[:, :3].astype(float)
+
+
 def write_room_obj():
     """A 2 x 2 x 2 m box (inward faces, Kd 0.5) with a 0.5 m ceiling lamp (Ke 10) as OBJ+MTL."""
     folder = tempfile.mkdtemp()
@@ -281,12 +292,14 @@ def main(argv):
     view = GetActiveViewOrCreate("RenderView")
     view.ViewSize = [600, 600]
     view.OrientationAxesVisibility = 0
+    # The solver's output shows relit, as in the GUI (the filter's RepresentationType hint).
+    solved_display = Show(solver, view)
+    check(solved_display.Representation == "Relit Surface",
+          "Show(solver) in pvbatch is '%s', not the relit picture ('Relit Surface')" % solved_display.Representation)
+    Hide(solver, view)
     display = Show(relight, view)
-    ColorBy(display, ("POINTS", "DisplayColors"))
-    display.MapScalars = 0  # show the sRGB DisplayColors as they are
-    display.Ambient = 1.0   # radiosity is view independent: no extra shading
-    display.Diffuse = 0.0
-    display.SetScalarBarVisibility(view, False)
+    check(display.Representation == "Relit Colors",
+          "Show(relight) in pvbatch is '%s', not the filter's colors ('Relit Colors')" % display.Representation)
     bounds = relit.GetBounds()
     centre = [0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
               0.5 * (bounds[4] + bounds[5])]
@@ -295,7 +308,20 @@ def main(argv):
     view.CameraPosition = [centre[0], centre[1], bounds[4] - 2.0 * size]  # open side, z = min
     view.CameraViewUp = [0.0, 1.0, 0.0]
     view.ResetCamera()
-    Render(view)
+    shown = grab(view)
+    # The same colors the long way: a plain surface colored by DisplayColors as they are.
+    display.Representation = "Surface"
+    ColorBy(display, ("POINTS", "DisplayColors"))
+    display.MapScalars = 0  # show the sRGB DisplayColors as they are
+    display.Ambient = 1.0   # radiosity is view independent: no extra shading
+    display.Diffuse = 0.0
+    display.SetScalarBarVisibility(view, False)
+    by_hand = grab(view)
+    difference = np.abs(shown - by_hand).mean()
+    check(shown.max() > 50 and difference < 0.5,
+          "Show(relight) differs from DisplayColors shown as they are by %.3g (of 255) on average" % difference)
+    print("Show(relight): 'Relit Colors', %.3g of 255 from DisplayColors shown by hand (brightest %d)"
+          % (difference, shown.max()))
     if screenshot:
         SaveScreenshot(screenshot, view, ImageResolution=[600, 600])
     # Release the view before the interpreter exits: with an X/GLX build,
