@@ -80,6 +80,12 @@ vtkRadiosityMesher::vtkRadiosityMesher()
 
 vtkRadiosityMesher::~vtkRadiosityMesher() = default;
 
+void vtkRadiosityMesher::ResolveSizes(double suggestedPatch)
+{
+  this->PatchSizeInUse = this->PatchSize > 0 ? this->PatchSize : (suggestedPatch > 0 ? suggestedPatch : 1.0);
+  this->ElementSizeInUse = this->ElementSize > 0 ? this->ElementSize : this->PatchSizeInUse / 4.0;
+}
+
 double vtkRadiosityMesher::EstimateElements(double patchSize, double elementSize)
 {
   if (this->GetNumberOfInputConnections(0) > 0)
@@ -89,6 +95,14 @@ double vtkRadiosityMesher::EstimateElements(double patchSize, double elementSize
     this->UpdateInformation();
   }
   const radiosity::SceneMesh& mesh = this->SeenInput->Mesh;
+  if (!(patchSize > 0))
+  {
+    patchSize = this->SuggestedPatchSize > 0 ? this->SuggestedPatchSize : 1.0;
+  }
+  if (!(elementSize > 0))
+  {
+    elementSize = patchSize / 4.0;
+  }
   radiosity::MesherOptions options;
   options.MergeTriangles = this->MergeTriangles;
   const radiosity::ElementCounter count(mesh.points, mesh.offsets, mesh.connectivity, this->SeenInput->SurfaceKey, options);
@@ -98,8 +112,8 @@ double vtkRadiosityMesher::EstimateElements(double patchSize, double elementSize
 void vtkRadiosityMesher::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "PatchSize: " << this->PatchSize << "\n";
-  os << indent << "ElementSize: " << this->ElementSize << "\n";
+  os << indent << "PatchSize: " << this->PatchSize << (this->PatchSize > 0 ? "" : " (from the scene)") << "\n";
+  os << indent << "ElementSize: " << this->ElementSize << (this->ElementSize > 0 ? "" : " (a quarter of the patch)") << "\n";
 }
 
 int vtkRadiosityMesher::FillInputPortInformation(int, vtkInformation* info)
@@ -125,7 +139,9 @@ int vtkRadiosityMesher::RequestInformation(
   radiosity::SceneMesh& mesh = this->SeenInput->Mesh;
   mesh = radiosity::SceneMesh();
   std::string error;
-  radiosity::SuggestedSizes sizes;
+  // Before the input has run there is nothing to suggest from: 0, so a proxy made then
+  // (pvbatch) keeps the automatic sizes.
+  radiosity::SuggestedSizes sizes{ 0.0, 0.0, 0.0, 0.0 };
   if (input && input->GetNumberOfCells() > 0 && vtkRadiosityAdapter::CopyPolygons(input, mesh, error))
   {
     sizes = radiosity::SuggestMeshSizes(mesh.points, mesh.offsets, mesh.connectivity);
@@ -167,7 +183,7 @@ std::string MeshPiece(vtkRadiosityMesher* self, vtkPolyData* input, double eleme
   const std::vector<int> surfaceKey = SurfaceKeys(mesh, emission);
 
   radiosity::MesherOptions options;
-  options.PatchSize = self->GetPatchSize();
+  options.PatchSize = self->GetPatchSizeInUse();
   options.ElementSize = elementSize;
   options.ElementBudget = budget;
   options.Warning = [self, &warnings](const std::string& message) { warnings.Add(self, message); };
@@ -201,19 +217,20 @@ double ElementSizeEverywhere(vtkRadiosityMesher* self, vtkMultiProcessController
   const std::vector<int> keys = usable ? SurfaceKeys(mesh, emission) : std::vector<int>();
   const radiosity::ElementCounter counter(mesh.points, mesh.offsets, mesh.connectivity, keys, options);
   auto count = [&](double size) {
-    const double here = usable ? counter(self->GetPatchSize(), size) : 0;
+    const double here = usable ? counter(self->GetPatchSizeInUse(), size) : 0;
     return static_cast<double>(vtkRadiosityPieces::SumOverRanks(parallel, static_cast<long long>(here)));
   };
   const double budget = static_cast<double>(self->GetMaximumElements());
-  const double wanted = count(self->GetElementSize());
+  const double wanted = count(self->GetElementSizeInUse());
   if (wanted <= budget)
   {
-    return self->GetElementSize();
+    return self->GetElementSizeInUse();
   }
-  const double size = radiosity::ElementSizeForBudget(count, self->GetPatchSize(), self->GetElementSize(), budget);
+  const double size =
+    radiosity::ElementSizeForBudget(count, self->GetPatchSizeInUse(), self->GetElementSizeInUse(), budget);
   if (parallel->GetLocalProcessId() == 0)
   {
-    warnings.Add(self, "ElementSize " + std::to_string(self->GetElementSize()) + " would make " +
+    warnings.Add(self, "ElementSize " + std::to_string(self->GetElementSizeInUse()) + " would make " +
         std::to_string(static_cast<long long>(wanted)) + " elements over all ranks, more than MaximumElements (" +
         std::to_string(static_cast<long long>(budget)) + "); using " + std::to_string(size) + ".");
   }
@@ -269,10 +286,25 @@ void AddFieldInt(vtkFieldData* fields, const char* name, int value)
   fields->AddArray(array);
 }
 
+/// The patch size suggested for the whole scene (`whole` where given, else `input`); 0
+/// where it has no usable polygons.
+double SuggestedPatch(const radiosity::SceneMesh* whole, vtkPolyData* input)
+{
+  if (whole)
+  {
+    return radiosity::SuggestPatchSize(whole->points, whole->connectivity);
+  }
+  radiosity::SceneMesh mesh;
+  std::string error;
+  const bool usable = input && input->GetNumberOfCells() > 0 && !vtkRadiosityAdapter::FailedUpstream(input) &&
+    vtkRadiosityAdapter::CopyPolygons(input, mesh, error);
+  return usable ? radiosity::SuggestPatchSize(mesh.points, mesh.connectivity) : 0.0;
+}
+
 /// The elements as the output's points and polygons, each with its source polygon's cell
 /// data and PatchId (offset by `firstPatch`), and the mesher's field arrays.
 void WriteMeshed(vtkPolyData* output, vtkPolyData* input, const radiosity::MeshedPolygons& meshed,
-  long long firstPatch, const vtkRadiosityAdapter::WarningList& warnings)
+  long long firstPatch, double patchSize, const vtkRadiosityAdapter::WarningList& warnings)
 {
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -314,6 +346,10 @@ void WriteMeshed(vtkPolyData* output, vtkPolyData* input, const radiosity::Meshe
   used->SetName("MesherElementSize");
   used->InsertNextValue(meshed.elementSize);
   fields->AddArray(used);
+  vtkNew<vtkDoubleArray> patch;
+  patch->SetName("MesherPatchSize");
+  patch->InsertNextValue(patchSize);
+  fields->AddArray(patch);
   double bounds[6];
   input->GetBounds(bounds);
   const double farthest = std::max({ std::fabs(bounds[0]), std::fabs(bounds[1]), std::fabs(bounds[2]),
@@ -344,9 +380,11 @@ int vtkRadiosityMesher::RequestData(
     const radiosity::SceneMesh whole = parallel ? GatherWholeScene(parallel, input, upstream) : radiosity::SceneMesh();
     const radiosity::PolygonArrays wholeArrays{ whole.points, whole.offsets, whole.connectivity };
     const radiosity::PolygonArrays* wholeScene = parallel ? &wholeArrays : nullptr;
+    // Sizes from the scene are taken from all of it, so every rank meshes alike.
+    this->ResolveSizes(this->PatchSize > 0 ? 0.0 : SuggestedPatch(parallel ? &whole : nullptr, input));
     const double elementSize = parallel && this->MaximumElements > 0
       ? ElementSizeEverywhere(this, parallel, input, wholeScene, warnings)
-      : this->ElementSize;
+      : this->ElementSizeInUse;
     const double localBudget = parallel ? 0.0 : static_cast<double>(this->MaximumElements);
     radiosity::MeshedPolygons meshed;
     std::string error = upstream ? "a filter upstream failed"
@@ -372,7 +410,7 @@ int vtkRadiosityMesher::RequestData(
       output->GetFieldData()->ShallowCopy(input->GetFieldData());
       return 1;
     }
-    WriteMeshed(output, input, meshed, firstPatch, warnings);
+    WriteMeshed(output, input, meshed, firstPatch, this->PatchSizeInUse, warnings);
     return 1;
   });
 }

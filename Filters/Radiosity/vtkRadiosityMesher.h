@@ -33,17 +33,27 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
-  /// Longest edge of a patch (the shooting unit), in world units. Default 1. A sliver
-  /// triangle (narrower than a quarter of its length) gets patches of about PatchSize^2
-  /// area instead, so long thin strips do not turn into dozens of empty shooters.
-  vtkSetClampMacro(PatchSize, double, 1e-300, VTK_DOUBLE_MAX);
+  /// Longest edge of a patch (the shooting unit), in world units. 0 (the default): from
+  /// the scene, a sixth of its extent rounded (1 for a 4 x 2.5 x 4 m room, 1000 for the
+  /// same room in millimetres), so a script meshes as the GUI does. A sliver triangle
+  /// (narrower than a quarter of its length) gets patches of about PatchSize^2 area
+  /// instead, so long thin strips do not turn into dozens of empty shooters.
+  vtkSetClampMacro(PatchSize, double, 0, VTK_DOUBLE_MAX);
   vtkGetMacro(PatchSize, double);
   ///@}
 
   ///@{
-  /// Longest edge of an element (the receiving unit), in world units. Default 0.25.
-  vtkSetClampMacro(ElementSize, double, 1e-300, VTK_DOUBLE_MAX);
+  /// Longest edge of an element (the receiving unit), in world units. 0 (the default): a
+  /// quarter of the patch size in use.
+  vtkSetClampMacro(ElementSize, double, 0, VTK_DOUBLE_MAX);
   vtkGetMacro(ElementSize, double);
+  ///@}
+
+  ///@{
+  /// The sizes the last execution used (the automatic ones resolved; the element size
+  /// before any MaximumElements cut, which the field array MesherElementSize reports).
+  vtkGetMacro(PatchSizeInUse, double);
+  vtkGetMacro(ElementSizeInUse, double);
   ///@}
 
   ///@{
@@ -87,8 +97,8 @@ public:
   /// rounded; the element a quarter of that), the input's polygon area, and about how
   /// many elements the suggested sizes make. Known once the pipeline information
   /// is updated with the input already executed (in ParaView: when the filter is added
-  /// to an applied source); 1, 0.25 and 0 before. ParaView starts PatchSize and
-  /// ElementSize from the suggestions.
+  /// to an applied source); 0 before (the sizes are then picked when the mesher runs).
+  /// ParaView starts PatchSize and ElementSize from the suggestions.
   vtkGetMacro(SuggestedPatchSize, double);
   vtkGetMacro(SuggestedElementSize, double);
   vtkGetMacro(InputArea, double);
@@ -97,7 +107,8 @@ public:
 
   /// The number of elements these sizes would make of the input (exact, without meshing;
   /// runs the information pass first, which reads the input again only if it changed):
-  /// the Properties panel's live estimate while the sizes are edited, before Apply.
+  /// the Properties panel's live estimate while the sizes are edited, before Apply. A size
+  /// of 0 is resolved as PatchSize and ElementSize are.
   double EstimateElements(double patchSize, double elementSize);
 
 protected:
@@ -111,14 +122,18 @@ private:
   vtkRadiosityMesher(const vtkRadiosityMesher&) = delete;
   void operator=(const vtkRadiosityMesher&) = delete;
 
-  double PatchSize = 1.0;
-  double ElementSize = 0.25;
+  double PatchSize = 0.0;
+  double ElementSize = 0.0;
+  double PatchSizeInUse = 0.0;
+  double ElementSizeInUse = 0.0;
+  /// PatchSizeInUse and ElementSizeInUse, given the scene's suggested patch size (0: none).
+  void ResolveSizes(double suggestedPatch);
   vtkIdType MaximumElements = 0;
   bool MergeTriangles = true;
   bool SharePatches = true;
   double ClusterAngle = 30;
-  double SuggestedPatchSize = 1.0;
-  double SuggestedElementSize = 0.25;
+  double SuggestedPatchSize = 0.0;
+  double SuggestedElementSize = 0.0;
   double InputArea = 0.0;
   double SuggestedElements = 0.0;
   vtkMTimeType SuggestedForInput = 0; ///< the input's time when the suggestion was made

@@ -186,6 +186,18 @@ def main(argv):
     check(list(relight.LightSettings) == effective,
           "LightSettings reset to the settings in effect reads %s" % list(relight.LightSettings))
 
+    # --- sizes that follow the scene in a script too: a mesher on a reader that has not
+    # run keeps 0 and meshes at the sizes the GUI would suggest (100 and 25 mm).
+    fresh = XMLPolyDataReader(FileName=[data_path])
+    unsized = RadiosityMesher(Input=fresh)
+    meshed = servermanager.Fetch(unsized)
+    used = [meshed.GetFieldData().GetArray(name).GetValue(0) for name in ("MesherPatchSize", "MesherElementSize")]
+    check([unsized.PatchSize, unsized.ElementSize] == [0.0, 0.0] and used == [100.0, 25.0],
+          "a mesher on a reader that has not run meshes at %s (properties %s, %s); expected 100, 25 mm"
+          % (used, unsized.PatchSize, unsized.ElementSize))
+    for proxy in (unsized, fresh):
+        Delete(proxy)
+
     # --- sizes that follow the scene: a mesher added to an executed input starts from
     # them (the Cornell box is about 556 mm wide: diagonal 962, a sixth rounded to 100).
     reader.UpdatePipeline()

@@ -622,6 +622,29 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
   return error;
 }
 
+double SuggestPatchSize(const std::vector<Vec3>& points, const std::vector<int>& connectivity)
+{
+  std::vector<Vec3> corners;
+  corners.reserve(connectivity.size());
+  for (int id : connectivity)
+  {
+    corners.push_back(points[id]);
+  }
+  const double diagonal = Span(corners); // unlike a bounding box's diagonal, turning does not change it
+  if (!(diagonal > 0) || !std::isfinite(diagonal))
+  {
+    return 0.0;
+  }
+  const double target = diagonal / 6.0;
+  const double decade = std::pow(10.0, std::floor(std::log10(target)));
+  double nice = decade;
+  for (double step : { 2.0, 2.5, 5.0 })
+  {
+    nice = step * decade <= target ? step * decade : nice;
+  }
+  return nice;
+}
+
 SuggestedSizes SuggestMeshSizes(const std::vector<Vec3>& points, const std::vector<int>& offsets,
   const std::vector<int>& connectivity)
 {
@@ -632,27 +655,13 @@ SuggestedSizes SuggestMeshSizes(const std::vector<Vec3>& points, const std::vect
     const double area = loop.size() >= 3 ? PolygonArea(loop.data(), static_cast<int>(loop.size())) : 0.0;
     sizes.Area += std::isfinite(area) ? area : 0.0;
   }
-  std::vector<Vec3> corners;
-  corners.reserve(connectivity.size());
-  for (int id : connectivity)
+  const double patch = SuggestPatchSize(points, connectivity);
+  if (patch > 0)
   {
-    corners.push_back(points[id]);
+    sizes.PatchSize = patch;
+    sizes.ElementSize = patch / 4.0;
+    sizes.Elements = CountElements(points, offsets, connectivity, sizes.PatchSize, sizes.ElementSize);
   }
-  const double diagonal = Span(corners); // unlike a bounding box's diagonal, turning does not change it
-  if (!(diagonal > 0) || !std::isfinite(diagonal))
-  {
-    return sizes;
-  }
-  const double target = diagonal / 6.0;
-  const double decade = std::pow(10.0, std::floor(std::log10(target)));
-  double nice = decade;
-  for (double step : { 2.0, 2.5, 5.0 })
-  {
-    nice = step * decade <= target ? step * decade : nice;
-  }
-  sizes.PatchSize = nice;
-  sizes.ElementSize = nice / 4.0;
-  sizes.Elements = CountElements(points, offsets, connectivity, sizes.PatchSize, sizes.ElementSize);
   return sizes;
 }
 

@@ -114,6 +114,10 @@ struct SuggestedSizes
   double Elements = 0.0; ///< the elements these sizes make (CountElements)
 };
 
+/// A sixth of the scene's extent (its span, which turning does not change), rounded down to
+/// 1, 2, 2.5 or 5 times a power of ten; 0 for an empty or degenerate scene.
+double SuggestPatchSize(const std::vector<Vec3>& points, const std::vector<int>& connectivity);
+
 /// The suggestion for a scene; the defaults (1, 0.25) for an empty or degenerate one.
 SuggestedSizes SuggestMeshSizes(const std::vector<Vec3>& points, const std::vector<int>& offsets,
   const std::vector<int>& connectivity);
