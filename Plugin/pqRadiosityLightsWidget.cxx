@@ -1,4 +1,5 @@
 #include "pqRadiosityLightsWidget.h"
+#include "pqRadiosityRows.h"
 
 #include <algorithm>
 #include <cmath>
@@ -57,21 +58,12 @@ pqRadiosityLightsWidget::~pqRadiosityLightsWidget()
 
 QList<QVariant> pqRadiosityLightsWidget::rows() const
 {
-  QList<QVariant> values;
-  for (const QString& item : this->Rows)
-  {
-    values.push_back(item);
-  }
-  return values;
+  return pqRadiosityToVariants(this->Rows);
 }
 
 void pqRadiosityLightsWidget::setRows(const QList<QVariant>& values)
 {
-  QStringList rows;
-  for (const QVariant& value : values)
-  {
-    rows.push_back(value.toString());
-  }
+  const QStringList rows = pqRadiosityToStrings(values);
   if (rows != this->Rows)
   {
     this->Rows = rows;

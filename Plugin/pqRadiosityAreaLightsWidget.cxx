@@ -1,0 +1,231 @@
+#include "pqRadiosityAreaLightsWidget.h"
+#include "pqRadiosityRows.h"
+
+#include "vtkPVDataInformation.h"
+#include "vtkSMPropertyHelper.h"
+#include "vtkSMSourceProxy.h"
+
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPushButton>
+#include <QScrollBar>
+#include <QRegularExpression>
+#include <QSignalBlocker>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+
+namespace
+{
+constexpr int kPerLamp = 13;
+/// Table columns and the property elements each holds: name, shape, centre, facing, size,
+/// emission.
+constexpr int kFirst[] = { 0, 1, 2, 5, 8, 10, 13 };
+constexpr int kColumns = 6;
+
+int Count(int column)
+{
+  return kFirst[column + 1] - kFirst[column];
+}
+}
+
+pqRadiosityAreaLightsWidget::pqRadiosityAreaLightsWidget(vtkSMProxy* proxy, vtkSMProperty* property, QWidget* parent)
+  : Superclass(proxy, parent)
+  , Table(new QTableWidget(0, kColumns, this))
+{
+  this->setShowLabel(false);
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  layout->addWidget(new QLabel("Area lights (lengths in the scene's units):", this));
+  this->Table->setObjectName("AreaLightsTable");
+  this->Table->setHorizontalHeaderLabels(
+    { "Name", "Shape", "Centre x, y, z", "Facing x, y, z", "Width, height", "Emission r, g, b (W/m²)" });
+  const char* tips[kColumns] = { "The light's name (a light of this name gains the lamp)",
+    "Rectangle, or Disk (its width is the diameter)", "Centre of the lamp", "The direction it emits towards",
+    "Width and height (a disk: diameter, ignored)", "Emitted radiosity per color channel, W/m²" };
+  for (int column = 0; column < kColumns; ++column)
+  {
+    this->Table->horizontalHeaderItem(column)->setToolTip(tips[column]);
+  }
+  this->Table->verticalHeader()->hide();
+  this->Table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  this->Table->setSelectionBehavior(QAbstractItemView::SelectRows);
+  layout->addWidget(this->Table);
+  auto* buttons = new QHBoxLayout();
+  auto* add = new QPushButton("Add Lamp", this);
+  add->setObjectName("AddLamp");
+  auto* remove = new QPushButton("Remove", this);
+  remove->setObjectName("RemoveLamps");
+  buttons->addWidget(add);
+  buttons->addWidget(remove);
+  buttons->addStretch();
+  layout->addLayout(buttons);
+  QObject::connect(add, &QPushButton::clicked, this, &pqRadiosityAreaLightsWidget::addLamp);
+  QObject::connect(remove, &QPushButton::clicked, this, &pqRadiosityAreaLightsWidget::removeLamps);
+  QObject::connect(this->Table, &QTableWidget::cellChanged, this, &pqRadiosityAreaLightsWidget::cellEdited);
+  this->addPropertyLink(this, "rows", SIGNAL(rowsChanged()), property);
+  this->fill();
+}
+
+QList<QVariant> pqRadiosityAreaLightsWidget::rows() const
+{
+  return pqRadiosityToVariants(this->Values);
+}
+
+void pqRadiosityAreaLightsWidget::setRows(const QList<QVariant>& values)
+{
+  const QStringList rows = pqRadiosityToStrings(values);
+  if (rows != this->Values)
+  {
+    this->Values = rows;
+    this->fill();
+  }
+}
+
+void pqRadiosityAreaLightsWidget::fill()
+{
+  this->Filling = true;
+  const int lamps = static_cast<int>(this->Values.size()) / kPerLamp;
+  this->Table->setRowCount(lamps);
+  for (int row = 0; row < lamps; ++row)
+  {
+    for (int column = 0; column < kColumns; ++column)
+    {
+      const QStringList part = this->Values.mid(row * kPerLamp + kFirst[column], Count(column));
+      if (column == 1)
+      {
+        auto* shape = new QComboBox(this->Table);
+        shape->addItems({ "Rectangle", "Disk" });
+        shape->setCurrentIndex(part[0].toInt() == 1 ? 1 : 0);
+        QObject::connect(shape, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this, shape](int index) {
+          for (int r = 0; r < this->Table->rowCount(); ++r)
+          {
+            if (this->Table->cellWidget(r, 1) == shape)
+            {
+              this->Values[r * kPerLamp + 1] = QString::number(index);
+              Q_EMIT this->rowsChanged();
+            }
+          }
+        });
+        this->Table->setCellWidget(row, 1, shape);
+        continue;
+      }
+      this->Table->setItem(row, column, new QTableWidgetItem(part.join(", ")));
+    }
+  }
+  this->Filling = false;
+  this->fitHeight();
+}
+
+void pqRadiosityAreaLightsWidget::cellEdited(int row, int column)
+{
+  if (this->Filling || column == 1)
+  {
+    return;
+  }
+  QTableWidgetItem* item = this->Table->item(row, column);
+  const int at = row * kPerLamp + kFirst[column];
+  const QString text = item ? item->text().trimmed() : QString();
+  QStringList parts = column == 0 ? QStringList{ text }
+                                  : text.split(QRegularExpression("[,;\\s]+"), Qt::SkipEmptyParts);
+  bool usable = parts.size() == Count(column) && !(column == 0 && text.isEmpty());
+  for (int k = 0; usable && column > 0 && k < parts.size(); ++k)
+  {
+    bool number = false;
+    usable = std::isfinite(parts[k].toDouble(&number)) && number;
+  }
+  if (!usable)
+  {
+    const QSignalBlocker block(this->Table);
+    item->setText(this->Values.mid(at, Count(column)).join(", ")); // what it held
+    return;
+  }
+  std::copy(parts.begin(), parts.end(), this->Values.begin() + at);
+  Q_EMIT this->rowsChanged();
+}
+
+QStringList pqRadiosityAreaLightsWidget::newLamp() const
+{
+  double bounds[6] = { -0.5, 0.5, -0.5, 0.5, -0.5, 0.5 };
+  auto* input = vtkSMSourceProxy::SafeDownCast(vtkSMPropertyHelper(this->proxy(), "Input").GetAsProxy());
+  vtkPVDataInformation* info = input ? input->GetDataInformation(0) : nullptr;
+  if (info && info->GetNumberOfCells() > 0)
+  {
+    info->GetBounds(bounds);
+  }
+  // Most scenes stand on their shortest side: a ceiling lamp just under the top, facing down.
+  int up = 0;
+  for (int a = 1; a < 3; ++a)
+  {
+    up = bounds[2 * a + 1] - bounds[2 * a] < bounds[2 * up + 1] - bounds[2 * up] ? a : up;
+  }
+  double centre[3], facing[3] = { 0, 0, 0 };
+  for (int a = 0; a < 3; ++a)
+  {
+    centre[a] = 0.5 * (bounds[2 * a] + bounds[2 * a + 1]);
+  }
+  const double height = bounds[2 * up + 1] - bounds[2 * up];
+  centre[up] = bounds[2 * up + 1] - 0.01 * height;
+  facing[up] = -1;
+  const double diagonal =
+    std::sqrt(std::pow(bounds[1] - bounds[0], 2) + std::pow(bounds[3] - bounds[2], 2) + std::pow(bounds[5] - bounds[4], 2));
+  const QString size = QString::number(std::max(diagonal / 20.0, 1e-6), 'g', 3);
+  QStringList lamp{ QString("Lamp%1").arg(this->Values.size() / kPerLamp + 1), "0" };
+  for (double v : centre)
+  {
+    lamp << QString::number(v, 'g', 6);
+  }
+  for (double v : facing)
+  {
+    lamp << QString::number(v);
+  }
+  lamp << size << size << "1" << "1" << "1";
+  return lamp;
+}
+
+void pqRadiosityAreaLightsWidget::addLamp()
+{
+  this->Values << this->newLamp();
+  this->fill();
+  Q_EMIT this->rowsChanged();
+}
+
+void pqRadiosityAreaLightsWidget::removeLamps()
+{
+  QList<int> rows;
+  for (const QModelIndex& index : this->Table->selectionModel()->selectedRows())
+  {
+    rows << index.row();
+  }
+  if (rows.isEmpty() && this->Table->rowCount() > 0)
+  {
+    rows << this->Table->rowCount() - 1; // nothing selected: the last lamp
+  }
+  std::sort(rows.begin(), rows.end(), std::greater<int>());
+  for (int row : rows)
+  {
+    for (int k = 0; k < kPerLamp; ++k)
+    {
+      this->Values.removeAt(row * kPerLamp);
+    }
+  }
+  this->fill();
+  Q_EMIT this->rowsChanged();
+}
+
+void pqRadiosityAreaLightsWidget::fitHeight()
+{
+  // Six columns rarely fit the panel's width: room for the horizontal scroll bar too.
+  this->Table->resizeRowsToContents();
+  int height = this->Table->horizontalHeader()->sizeHint().height() + 2 * this->Table->frameWidth() +
+    this->Table->horizontalScrollBar()->sizeHint().height();
+  for (int row = 0; row < std::min(this->Table->rowCount(), 8); ++row)
+  {
+    height += this->Table->rowHeight(row);
+  }
+  this->Table->setFixedHeight(height + 2);
+}
