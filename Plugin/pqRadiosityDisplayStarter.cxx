@@ -4,6 +4,7 @@
 #include "pqDataRepresentation.h"
 #include "pqOutputPort.h"
 #include "pqPipelineSource.h"
+#include "pqRenderView.h"
 #include "pqServerManagerModel.h"
 #include "pqView.h"
 #include "vtkDataObject.h"
@@ -172,6 +173,21 @@ void pqRadiosityDisplayStarter::ShowConvergence(pqDataRepresentation* representa
     chart->UpdateVTKObjects();
   }
   representation->renderViewEventually();
+  // The chart took half of the render view's place: frame the scene again in what is left
+  // (it was framed for the whole width and would be cut off).
+  pqPipelineSource* solver = representation->getOutputPortFromInput()->getSource();
+  QTimer::singleShot(0, representation, [solver]() {
+    for (pqRenderView* view : pqApplicationCore::instance()->getServerManagerModel()->findItems<pqRenderView*>())
+    {
+      if (pqDataRepresentation* shown = solver->getOutputPort(0)->getRepresentation(view))
+      {
+        if (shown->isVisible())
+        {
+          view->resetDisplay();
+        }
+      }
+    }
+  });
 }
 
 void pqRadiosityDisplayStarter::StyleRadiosityColorMap(pqDataRepresentation* representation)

@@ -237,10 +237,14 @@ void pqRadiosityLightsWidget::paintColorButton(int row)
 {
   auto* button = qobject_cast<QPushButton*>(this->Table->cellWidget(row, 1));
   const Light& light = this->Lights[row];
-  const QColor shown = QColor::fromRgbF(
-    std::min(1.0, light.Color[0]), std::min(1.0, light.Color[1]), std::min(1.0, light.Color[2]));
-  button->setText(light.ColorEdited ? "" : "default");
-  button->setStyleSheet(light.ColorEdited ? QString("background-color: %1").arg(shown.name()) : QString());
+  // A default color is the light's Emission, often brighter than 1: its hue is shown.
+  const double brightest = std::max({ light.Color[0], light.Color[1], light.Color[2], 1.0 });
+  const QColor shown = QColor::fromRgbF(std::max(0.0, light.Color[0] / brightest),
+    std::max(0.0, light.Color[1] / brightest), std::max(0.0, light.Color[2] / brightest));
+  button->setText(QString());
+  button->setStyleSheet(QString("background-color: %1").arg(shown.name()));
+  button->setToolTip(light.ColorEdited ? QString("Color %1 (click to change)").arg(shown.name())
+                                       : QString("The light's own color, from its Emission (click to change)"));
 }
 
 void pqRadiosityLightsWidget::push()
