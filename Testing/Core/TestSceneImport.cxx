@@ -1,5 +1,6 @@
 #include "Import/SceneImport.h"
 #include "Import/Wavefront.h"
+#include "Base/Text.h"
 
 #include <gtest/gtest.h>
 
@@ -27,6 +28,19 @@ RawScene FloorAndLamp()
 }
 
 } // namespace
+
+TEST(SceneImport, TextFromAFileBecomesValidUtf8ByteForByte)
+{
+  using radiosity::ValidUtf8;
+  EXPECT_EQ(ValidUtf8("Lamp \xc3\xa9t\xc3\xa9 \xe2\x82\xac \xf0\x9f\x92\xa1"), "Lamp \xc3\xa9t\xc3\xa9 \xe2\x82\xac \xf0\x9f\x92\xa1");
+  EXPECT_EQ(ValidUtf8("ro\xa6om.mtl"), "ro?om.mtl");        // a lone continuation byte
+  EXPECT_EQ(ValidUtf8("cut \xc3"), "cut ?");                // a sequence cut at the end
+  EXPECT_EQ(ValidUtf8("\xc0\xaf"), "??");                  // an overlong '/'
+  EXPECT_EQ(ValidUtf8("\xed\xa0\x80"), "???");            // a UTF-16 surrogate
+  EXPECT_EQ(ValidUtf8("\xf4\x90\x80\x80"), "????");      // past U+10FFFF
+  EXPECT_EQ(ValidUtf8("\xe2\x82x"), "??x");                // a bad second continuation
+  EXPECT_EQ(ValidUtf8(std::string("a\0b", 3)), std::string("a\0b", 3));
+}
 
 TEST(SceneImport, MtlGivesDiffuseEmissiveAndTexture)
 {

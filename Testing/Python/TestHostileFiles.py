@@ -1,11 +1,13 @@
-"""Hostile PLY and glTF files through import_scene: never a crash, one clear error naming the file.
+"""Hostile PLY, glTF and OBJ files through import_scene: never a crash, never a NaN imported,
+one clear error naming the file.
 
 vtkPLYReader trusts a PLY's header and VTK's glTF loader the indices and lengths in the
 JSON: a count larger than the file, a list longer than its line, a face index past the
 vertices, a buffer shorter than it claims or a node that is its own child end in an
 assert, a segfault or endless recursion inside VTK. The corpus is written here (no
 binaries committed): the cases an adversarial run found, then random mutations of valid
-files (PLY header counts, truncations, flipped bytes; numbers in a .glb's JSON). All files
+files (PLY header counts, truncations, flipped bytes; numbers in a .glb's JSON; odd
+numbers, cut, repeated or endless lines in an OBJ or its material library). All files
 are read by one child process that names each file before it reads it, so a crash is
 caught and pinned on its file. For a long run:
     RELIGHT_HOSTILE_CASES=10000 ./relight python Testing/Python/TestHostileFiles.py
@@ -198,13 +200,77 @@ def mutations(count):
         yield f"mutant_{i:05d}.ply", bytes(data)
 
 
+OBJ = """# a lamp over a floor, with every corner form OBJ has
+mtllib room.mtl
+o Room
+v 0 0 0
+v 4 0 0
+v 4 0 4
+v 0 0 4
+v 1.5 2.9 1.5
+v 2.5 2.9 1.5
+v 2.5 2.9 2.5
+v 1.5 2.9 2.5
+vt 0 0
+vn 0 1 0
+usemtl Floor
+f 1/1/1 4/1/1 3/1/1 2/1/1
+g lamp
+usemtl Lamp
+f -4//1 -3//1 -2//1 -1//1
+"""
+MTL = """newmtl Floor
+Kd 0.6 0.5 0.4
+newmtl Lamp
+Kd 0 0 0
+Ke 10 9 8
+"""
+
+
+def obj_mutations(count):
+    """Random damage to a valid OBJ and its material library: a number replaced by an odd
+    one, a line cut, repeated or dropped, a truncation, flipped bytes, one very long line."""
+    odd = ["nan", "inf", "-inf", "1e308", "-1e308", "1e-320", "0", "-0", "99999999999", "-2147483649", "x", "",
+           "1/", "//", "/1/", "0/0/0", "1.5", "0x10", "+-1"]
+    for i in range(count):
+        target = rng.randrange(2)
+        lines = (OBJ if target == 0 else MTL).splitlines(keepends=True)
+        kind = rng.randrange(5)
+        if kind == 0:
+            line = rng.randrange(len(lines))
+            words = lines[line].split()
+            if len(words) > 1:
+                words[rng.randrange(1, len(words))] = rng.choice(odd)
+                lines[line] = " ".join(words) + "\n"
+        elif kind == 1:
+            line = rng.randrange(len(lines))
+            lines[line] = rng.choice([lines[line][:rng.randrange(len(lines[line]) + 1)], lines[line] * 2, ""])
+        elif kind == 2:
+            lines.insert(rng.randrange(len(lines) + 1), rng.choice(["f 1 2 3 ", "v ", "usemtl ", "Kd "]) + "1 " * 100000 + "\n")
+        data = bytearray("".join(lines).encode())
+        if kind == 3:
+            data = data[:rng.randrange(len(data) + 1)]
+        elif kind == 4 and data:
+            for _ in range(rng.randrange(1, 4)):
+                data[rng.randrange(len(data))] = rng.randrange(256)
+        obj = OBJ.encode().replace(b"room.mtl", f"mutant_{i:05d}.mtl".encode()) if target else bytes(data)
+        obj = obj if target else obj.replace(b"room.mtl", f"mutant_{i:05d}.mtl".encode())
+        yield f"mutant_{i:05d}.obj", obj
+        yield f"mutant_{i:05d}.mtl", bytes(data) if target else MTL.encode()
+
+
 CHILD = r"""
 import sys, relight
+import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
 for path in sys.argv[1:]:
     print("start", path, flush=True)
     try:
         scene = relight.import_scene(path, require_lights=False)
-        print("ok", path, scene.GetNumberOfCells(), flush=True)
+        arrays = [scene.GetPoints().GetData()] if scene.GetPoints() else []
+        arrays += [scene.GetCellData().GetArray(i) for i in range(scene.GetCellData().GetNumberOfArrays())]
+        finite = all(np.isfinite(vtk_to_numpy(a)).all() for a in arrays if a is not None)
+        print("ok" if finite else "nan", path, scene.GetNumberOfCells(), flush=True)
     except Exception as error:
         print("error", path, str(error).replace("\n", " "), flush=True)
 """
@@ -240,11 +306,13 @@ def main():
             files[name] = data
         for name, data in glb_mutations(CASES):
             files[name] = data
+        for name, data in obj_mutations(CASES):
+            files[name] = data
         paths = []
         for name, data in files.items():
             path = pathlib.Path(folder) / name
             path.write_bytes(data)
-            paths += [] if name.endswith(".bin") else [str(path)]
+            paths += [] if name.endswith((".bin", ".mtl")) else [str(path)]
         # Not regular files: a FIFO named like a scene blocks any reader for ever, /dev/zero
         # as a material library never ends, a folder as one was silently passed over.
         specials = {"fifo.obj": "is not a regular file", "zero_mtl.obj": "'/dev/zero', which is missing or not a regular file",
@@ -254,6 +322,9 @@ def main():
         triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"
         (pathlib.Path(folder) / "zero_mtl.obj").write_text("mtllib /dev/zero\n" + triangle)
         (pathlib.Path(folder) / "folder_mtl.obj").write_text("mtllib sub\n" + triangle)
+        # A stray byte in a name: the error came to Python as "None".
+        (pathlib.Path(folder) / "bad_byte_mtl.obj").write_bytes(b"mtllib ro\xa6om.mtl\n" + triangle.encode())
+        specials["bad_byte_mtl.obj"] = "'ro?om.mtl'"
         # A cut IFC: assimp read the building up to the cut without a word.
         house = pathlib.Path("/usr/share/assimp/models/IFC/AC14-FZK-Haus.ifc").read_bytes()
         (pathlib.Path(folder) / "cut_house.ifc").write_bytes(house[:300000])
@@ -270,12 +341,15 @@ def main():
                 check(status == "error" and expected in text and name in text,
                       f"{name}: one error naming the file and saying '{expected}' ({status}: {text[:160]})")
         crashed = [p for p, (s, _) in results.items() if s == "crash"]
+        silent = [p for p, (s, _) in results.items() if s == "nan"]
+        check(not silent, f"no file imports with a NaN or infinite value ({len(silent)}: "
+                          f"{[pathlib.Path(p).name for p in silent[:5]]})")
         unclear = [p for p, (s, t) in results.items() if s == "error" and pathlib.Path(p).name not in t]
         missing = [p for p in paths if p not in results]
-        check(not crashed, f"{2 * CASES} mutants and {len(known)} known files: no crash "
+        check(not crashed, f"{3 * CASES} mutants and {len(known)} known files: no crash "
                            f"({len(crashed)}: {[pathlib.Path(p).name for p in crashed[:5]]} {results.get(crashed[0]) if crashed else ''})")
         check(not unclear, f"every error names its file ({len(unclear)} do not: "
-                           f"{[results[p][1][:100] for p in unclear[:3]]})")
+                           f"{[(pathlib.Path(p).name, results[p][1][:100]) for p in unclear[:3]]})")
         check(not missing, f"every file got an answer ({len(missing)} did not)")
         errors = sum(1 for s, _ in results.values() if s == "error")
         print(f"{len(results)} files: {len(results) - errors - len(crashed)} imported, {errors} refused, {len(crashed)} crashed")

@@ -15,6 +15,35 @@ inline std::string Trimmed(const std::string& text)
   return first == std::string::npos ? std::string() : text.substr(first, last - first + 1);
 }
 
+/// `text` with every byte that is not part of a well-formed UTF-8 sequence replaced by
+/// '?': names and messages taken from a file reach Python and Qt, which refuse (or drop)
+/// the whole string otherwise.
+inline std::string ValidUtf8(const std::string& text)
+{
+  std::string out;
+  out.reserve(text.size());
+  for (size_t i = 0; i < text.size();)
+  {
+    const unsigned char lead = static_cast<unsigned char>(text[i]);
+    const int length = lead < 0x80 ? 1 : (lead >> 5) == 0x6 ? 2 : (lead >> 4) == 0xE ? 3 : (lead >> 3) == 0x1E ? 4 : 0;
+    bool whole = length > 0 && i + length <= text.size() && !(length == 2 && lead < 0xC2);
+    for (int k = 1; whole && k < length; ++k)
+    {
+      whole = (static_cast<unsigned char>(text[i + k]) >> 6) == 0x2;
+    }
+    if (whole && length >= 3)
+    {
+      // Overlong forms, UTF-16 surrogates and values past U+10FFFF are not UTF-8 either.
+      const unsigned char second = static_cast<unsigned char>(text[i + 1]);
+      whole = !(lead == 0xE0 && second < 0xA0) && !(lead == 0xED && second >= 0xA0) &&
+        !(lead == 0xF0 && second < 0x90) && !(lead == 0xF4 && second >= 0x90) && lead <= 0xF4;
+    }
+    out.append(whole ? text.substr(i, length) : std::string("?"));
+    i += whole ? length : 1;
+  }
+  return out;
+}
+
 } // namespace radiosity
 
 #endif

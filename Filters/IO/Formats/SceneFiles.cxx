@@ -119,6 +119,27 @@ std::string AllExtensions()
   return all;
 }
 
+namespace
+{
+/// The names and messages a file gave, as UTF-8 (a stray byte in a material name made the
+/// whole error unreadable from Python: "OSError: None").
+std::string WithValidText(const std::string& error, radiosity::RawScene& raw, std::vector<std::string>& warnings)
+{
+  for (radiosity::ImportMaterial& material : raw.materials)
+  {
+    material.Name = radiosity::ValidUtf8(material.Name);
+  }
+  for (std::vector<std::string>* texts : { &raw.objectNames, &warnings })
+  {
+    for (std::string& name : *texts)
+    {
+      name = radiosity::ValidUtf8(name);
+    }
+  }
+  return radiosity::ValidUtf8(error);
+}
+}
+
 std::string Read(const std::string& path, radiosity::RawScene& raw, std::vector<std::string>& warnings)
 {
   if (!RegularFile(path))
@@ -127,7 +148,7 @@ std::string Read(const std::string& path, radiosity::RawScene& raw, std::vector<
   }
   if (const Format* format = FormatOf(path))
   {
-    return format->Read(path, raw, warnings);
+    return WithValidText(format->Read(path, raw, warnings), raw, warnings);
   }
   std::string known;
   for (const Format& format : Formats())
