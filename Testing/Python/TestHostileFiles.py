@@ -1,4 +1,4 @@
-"""Hostile PLY, glTF and OBJ files through import_scene: never a crash, never a NaN imported,
+"""Hostile PLY, glTF, OBJ and VRML files through import_scene: never a crash, never a NaN imported,
 one clear error naming the file.
 
 vtkPLYReader trusts a PLY's header and VTK's glTF loader the indices and lengths in the
@@ -7,7 +7,8 @@ vertices, a buffer shorter than it claims or a node that is its own child end in
 assert, a segfault or endless recursion inside VTK. The corpus is written here (no
 binaries committed): the cases an adversarial run found, then random mutations of valid
 files (PLY header counts, truncations, flipped bytes; numbers in a .glb's JSON; odd
-numbers, cut, repeated or endless lines in an OBJ or its material library). All files
+numbers, cut, repeated or endless lines in an OBJ or its material library; odd words,
+cuts and flipped bytes in VRML97). All files
 are read by one child process that names each file before it reads it, so a crash is
 caught and pinned on its file. For a long run:
     RELIGHT_HOSTILE_CASES=10000 ./relight python Testing/Python/TestHostileFiles.py
@@ -259,6 +260,55 @@ def obj_mutations(count):
         yield f"mutant_{i:05d}.mtl", bytes(data) if target else MTL.encode()
 
 
+WRL = """#VRML V2.0 utf8
+Transform { translation 0 0 0 children [
+Shape { appearance Appearance { material DEF Wall Material { diffuseColor 0.6 0.5 0.4 } }
+  geometry IndexedFaceSet { coord Coordinate { point [ 0 0 0, 4 0 0, 4 0 4, 0 0 4 ] } coordIndex [ 0 3 2 1 -1 ] } }
+Shape { appearance Appearance { material Material { emissiveColor 10 9 8 diffuseColor 0 0 0 } }
+  geometry IndexedFaceSet { coord Coordinate { point [ 1.5 2.9 1.5, 2.5 2.9 1.5, 2.5 2.9 2.5, 1.5 2.9 2.5 ] } coordIndex [ 0 1 2 3 -1 ] } }
+Shape { appearance Appearance { material USE Wall } geometry Box { size 1 1 1 } }
+] }
+"""
+# VTK's VRML importer (9.2) crashed on all but the last of these (it goes on past a syntax
+# error); the last one it read as 'no polygons'.
+VRML = {
+    "bare_commas.wrl": (WRL.replace("4 0 4, 0 0 4", "4,0,4,0,0,4").encode(), None),
+    "material_at_the_top.wrl": (b"#VRML V2.0 utf8\nMaterial { diffuseColor 1 1 1 }\n", "a Material outside any Shape"),
+    "faces_at_the_top.wrl": (b"#VRML V2.0 utf8\nIndexedFaceSet { coord Coordinate { point [ 0 0 0, 1 0 0, 0 1 0 ] } "
+                             b"coordIndex [ 0 1 2 -1 ] }\n", "an IndexedFaceSet outside any Shape"),
+    "use_of_nothing.wrl": (WRL.replace("coord Coordinate", "coord USE Nothing", 1).encode(), "USE Nothing with no DEF"),
+    "list_without_bracket.wrl": (WRL.replace("coordIndex [ 0 1 2 3", "coordIndex 1e308 0 1 2 3").encode(),
+                                 "a ']' that closes nothing open"),
+    "two_numbers_short.wrl": (WRL.replace("0 0 4 ]", "0 ]", 1).encode(), "not a whole number of 3-vectors"),
+}
+
+
+def vrml_mutations(count):
+    """Random damage to a valid VRML97 file: odd words, a truncation, flipped bytes, a word
+    repeated many times."""
+    odd = ["nan", "inf", "1e308", "-1", "99999999", "[", "]", "{", "}", "DEF", "USE", "USE Nothing", "",
+           "-2147483649", "Shape {", "Material", "IndexedFaceSet"]
+    for i in range(count):
+        words = WRL.split(" ")
+        kind = rng.randrange(4)
+        if kind == 0:
+            for _ in range(rng.randrange(1, 4)):
+                words[rng.randrange(len(words))] = rng.choice(odd)
+            data = " ".join(words).encode()
+        elif kind == 1:
+            data = WRL.encode()[:rng.randrange(len(WRL))]
+        elif kind == 2:
+            data = bytearray(WRL.encode())
+            for _ in range(rng.randrange(1, 4)):
+                data[rng.randrange(len(data))] = rng.randrange(256)
+            data = bytes(data)
+        else:
+            k = rng.randrange(len(words))
+            words.insert(k, words[k] * rng.randrange(2, 50))
+            data = " ".join(words).encode()
+        yield f"mutant_{i:05d}.wrl", data
+
+
 CHILD = r"""
 import sys, relight
 import numpy as np
@@ -280,7 +330,8 @@ def read_all(paths):
     """{path: (status, text)}; the file that took the child down gets 'crash'."""
     results, pending = {}, list(paths)
     while pending:
-        child = subprocess.run([sys.executable, "-c", CHILD, *pending], capture_output=True, text=True, timeout=600)
+        child = subprocess.run([sys.executable, "-c", CHILD, *pending], capture_output=True, text=True,
+                               errors="replace", timeout=600)  # a reader may print raw bytes
         started = None
         for line in child.stdout.splitlines():
             status, path, *rest = line.split(" ", 2)
@@ -298,7 +349,7 @@ def read_all(paths):
 
 def main():
     with tempfile.TemporaryDirectory() as folder:
-        known = {**KNOWN, **GLTF}
+        known = {**KNOWN, **GLTF, **VRML}
         files = {"triangle.bin": triangle_gltf()[1]}
         for name, (data, _) in known.items():
             files[name] = data
@@ -307,6 +358,8 @@ def main():
         for name, data in glb_mutations(CASES):
             files[name] = data
         for name, data in obj_mutations(CASES):
+            files[name] = data
+        for name, data in vrml_mutations(CASES):
             files[name] = data
         paths = []
         for name, data in files.items():
@@ -346,7 +399,7 @@ def main():
                           f"{[pathlib.Path(p).name for p in silent[:5]]})")
         unclear = [p for p, (s, t) in results.items() if s == "error" and pathlib.Path(p).name not in t]
         missing = [p for p in paths if p not in results]
-        check(not crashed, f"{3 * CASES} mutants and {len(known)} known files: no crash "
+        check(not crashed, f"{4 * CASES} mutants and {len(known)} known files: no crash "
                            f"({len(crashed)}: {[pathlib.Path(p).name for p in crashed[:5]]} {results.get(crashed[0]) if crashed else ''})")
         check(not unclear, f"every error names its file ({len(unclear)} do not: "
                            f"{[(pathlib.Path(p).name, results[p][1][:100]) for p in unclear[:3]]})")
