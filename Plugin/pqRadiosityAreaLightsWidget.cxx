@@ -1,6 +1,8 @@
 #include "pqRadiosityAreaLightsWidget.h"
 #include "pqRadiosityRows.h"
 
+#include "vtkDataObject.h"
+#include "vtkPVArrayInformation.h"
 #include "vtkPVDataInformation.h"
 #include "vtkSMPropertyHelper.h"
 #include "vtkSMSourceProxy.h"
@@ -128,6 +130,10 @@ void pqRadiosityAreaLightsWidget::cellEdited(int row, int column)
     return;
   }
   QTableWidgetItem* item = this->Table->item(row, column);
+  if (!item)
+  {
+    return;
+  }
   const int at = row * kPerLamp + kFirst[column];
   const QString text = item ? item->text().trimmed() : QString();
   QStringList parts = column == 0 ? QStringList{ text }
@@ -136,7 +142,13 @@ void pqRadiosityAreaLightsWidget::cellEdited(int row, int column)
   for (int k = 0; usable && column > 0 && k < parts.size(); ++k)
   {
     bool number = false;
-    usable = std::isfinite(parts[k].toDouble(&number)) && number;
+    const double value = parts[k].toDouble(&number);
+    // A lamp needs a size (Mark Lights refuses one without) and a direction.
+    usable = number && std::isfinite(value) && (column != 4 || value > 0);
+  }
+  if (usable && column == 3)
+  {
+    usable = parts[0].toDouble() != 0 || parts[1].toDouble() != 0 || parts[2].toDouble() != 0;
   }
   if (!usable)
   {
@@ -151,8 +163,9 @@ void pqRadiosityAreaLightsWidget::cellEdited(int row, int column)
 QStringList pqRadiosityAreaLightsWidget::newLamp() const
 {
   double bounds[6] = { -0.5, 0.5, -0.5, 0.5, -0.5, 0.5 };
-  auto* input = vtkSMSourceProxy::SafeDownCast(vtkSMPropertyHelper(this->proxy(), "Input").GetAsProxy());
-  vtkPVDataInformation* info = input ? input->GetDataInformation(0) : nullptr;
+  vtkSMPropertyHelper inputHelper(this->proxy(), "Input");
+  auto* input = vtkSMSourceProxy::SafeDownCast(inputHelper.GetAsProxy());
+  vtkPVDataInformation* info = input ? input->GetDataInformation(inputHelper.GetOutputPort()) : nullptr;
   if (info && info->GetNumberOfCells() > 0)
   {
     info->GetBounds(bounds);
@@ -169,15 +182,16 @@ QStringList pqRadiosityAreaLightsWidget::newLamp() const
     centre[a] = 0.5 * (bounds[2 * a] + bounds[2 * a + 1]);
   }
   const double height = bounds[2 * up + 1] - bounds[2 * up];
-  centre[up] = bounds[2 * up + 1] - 0.01 * height;
-  facing[up] = -1;
   const double diagonal =
     std::sqrt(std::pow(bounds[1] - bounds[0], 2) + std::pow(bounds[3] - bounds[2], 2) + std::pow(bounds[5] - bounds[4], 2));
+  // Just under the top; above a flat scene, a tenth of its extent up.
+  centre[up] = height > 0 ? bounds[2 * up + 1] - 0.01 * height : bounds[2 * up + 1] + 0.1 * diagonal;
+  facing[up] = -1;
   const QString size = QString::number(std::max(diagonal / 20.0, 1e-6), 'g', 3);
-  QStringList lamp{ QString("Lamp%1").arg(this->Values.size() / kPerLamp + 1), "0" };
+  QStringList lamp{ this->unusedName(), "0" };
   for (double v : centre)
   {
-    lamp << QString::number(v, 'g', 6);
+    lamp << QString::number(v, 'g', 10);
   }
   for (double v : facing)
   {
@@ -185,6 +199,31 @@ QStringList pqRadiosityAreaLightsWidget::newLamp() const
   }
   lamp << size << size << "1" << "1" << "1";
   return lamp;
+}
+
+QString pqRadiosityAreaLightsWidget::unusedName() const
+{
+  // A lamp named as another light would join it: the first LampN the table and the input
+  // do not use yet.
+  QStringList taken;
+  for (int k = 0; k < this->Values.size(); k += kPerLamp)
+  {
+    taken << this->Values[k];
+  }
+  vtkSMPropertyHelper inputHelper(this->proxy(), "Input");
+  auto* input = vtkSMSourceProxy::SafeDownCast(inputHelper.GetAsProxy());
+  vtkPVDataInformation* info = input ? input->GetDataInformation(inputHelper.GetOutputPort()) : nullptr;
+  vtkPVArrayInformation* names = info ? info->GetArrayInformation("LightNames", vtkDataObject::FIELD) : nullptr;
+  for (int k = 0; names && k < names->GetNumberOfStringValues(); ++k)
+  {
+    taken << QString::fromUtf8(names->GetStringValue(k));
+  }
+  int n = 1;
+  while (taken.contains(QString("Lamp%1").arg(n)))
+  {
+    ++n;
+  }
+  return QString("Lamp%1").arg(n);
 }
 
 void pqRadiosityAreaLightsWidget::addLamp()
@@ -204,6 +243,10 @@ void pqRadiosityAreaLightsWidget::removeLamps()
   if (rows.isEmpty() && this->Table->rowCount() > 0)
   {
     rows << this->Table->rowCount() - 1; // nothing selected: the last lamp
+  }
+  if (rows.isEmpty())
+  {
+    return; // no lamp: nothing changes, nothing to Apply
   }
   std::sort(rows.begin(), rows.end(), std::greater<int>());
   for (int row : rows)

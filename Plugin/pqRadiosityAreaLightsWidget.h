@@ -40,6 +40,8 @@ private:
   void fill();
   /// A new lamp's row: at the top of the input's box, facing down along its shortest side.
   QStringList newLamp() const;
+  /// The first of Lamp1, Lamp2, ... that no lamp here and no light of the input is called.
+  QString unusedName() const;
   void fitHeight();
 
   QTableWidget* Table;

@@ -174,7 +174,12 @@ void pqRadiosityDisplayStarter::ShowConvergence(pqDataRepresentation* representa
   }
   representation->renderViewEventually();
   // The chart took half of the render view's place: frame the scene again in what is left
-  // (it was framed for the whole width and would be cut off).
+  // (it was framed for the whole width and would be cut off). Not while a state file is
+  // loading: it brings its own cameras.
+  if (pqApplicationCore::instance()->isLoadingState())
+  {
+    return;
+  }
   pqPipelineSource* solver = representation->getOutputPortFromInput()->getSource();
   QTimer::singleShot(0, representation, [solver]() {
     for (pqRenderView* view : pqApplicationCore::instance()->getServerManagerModel()->findItems<pqRenderView*>())

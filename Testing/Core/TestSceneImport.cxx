@@ -33,12 +33,16 @@ TEST(SceneImport, TextFromAFileBecomesValidUtf8ByteForByte)
 {
   using radiosity::ValidUtf8;
   EXPECT_EQ(ValidUtf8("Lamp \xc3\xa9t\xc3\xa9 \xe2\x82\xac \xf0\x9f\x92\xa1"), "Lamp \xc3\xa9t\xc3\xa9 \xe2\x82\xac \xf0\x9f\x92\xa1");
-  EXPECT_EQ(ValidUtf8("ro\xa6om.mtl"), "ro?om.mtl");        // a lone continuation byte
-  EXPECT_EQ(ValidUtf8("cut \xc3"), "cut ?");                // a sequence cut at the end
-  EXPECT_EQ(ValidUtf8("\xc0\xaf"), "??");                  // an overlong '/'
-  EXPECT_EQ(ValidUtf8("\xed\xa0\x80"), "???");            // a UTF-16 surrogate
-  EXPECT_EQ(ValidUtf8("\xf4\x90\x80\x80"), "????");      // past U+10FFFF
-  EXPECT_EQ(ValidUtf8("\xe2\x82x"), "??x");                // a bad second continuation
+  // Bytes that are not UTF-8 are read as Latin-1: K\xfc che and K\xf6 che stay two names.
+  EXPECT_EQ(ValidUtf8("K\xfc" "che"), "K\xc3\xbc" "che");
+  EXPECT_EQ(ValidUtf8("K\xf6" "che"), "K\xc3\xb6" "che");
+  EXPECT_EQ(ValidUtf8("ro\xa6om.mtl"), "ro\xc2\xa6om.mtl");     // a lone continuation byte
+  EXPECT_EQ(ValidUtf8("cut \xc3"), "cut \xc3\x83");             // a sequence cut at the end
+  EXPECT_EQ(ValidUtf8("\xc0\xaf"), "\xc3\x80\xc2\xaf");          // an overlong '/'
+  EXPECT_EQ(ValidUtf8("\xed\xa0\x80"), "\xc3\xad\xc2\xa0?");      // a UTF-16 surrogate
+  EXPECT_EQ(ValidUtf8("\xf4\x90\x80\x80"), "\xc3\xb4???");         // past U+10FFFF
+  EXPECT_EQ(ValidUtf8("\xe2\x82x"), "\xc3\xa2?x");                 // a bad second continuation
+  EXPECT_EQ(ValidUtf8("trans\x85lation"), "trans?lation");          // U+0085 would end a line
   EXPECT_EQ(ValidUtf8(std::string("a\0b", 3)), std::string("a\0b", 3));
 }
 

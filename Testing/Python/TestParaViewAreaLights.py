@@ -51,7 +51,7 @@ if result.check(len(tables) == 1, f"the Mark Lights panel shows one area-lights 
     cells = [table.item(0, c).text() if table.item(0, c) else "" for c in range(table.columnCount())]
     result.note(f"a new lamp: {cells}")
     bounds = scene.GetDataInformation().GetBounds()
-    top = max(float(v) for v in cells[2].split(", ")) if cells[2] else 0.0
+    top = float(cells[2].split(", ")[1]) if cells[2].count(",") == 2 else 0.0  # y: the paper scene stands on y
     result.check(table.rowCount() == 1 and cells[0] == "Lamp1" and cells[3] == "0, -1, 0"
                  and bounds[3] - 0.05 < top <= bounds[3],
                  f"Add Lamp makes one lamp under the top of the scene (y max {bounds[3]}) facing down: {cells}")
@@ -61,9 +61,11 @@ if result.check(len(tables) == 1, f"the Mark Lights panel shows one area-lights 
     result.check(table.item(0, 3).text() == "0, -1, 0", f"'down' as a direction is put back: {table.item(0, 3).text()}")
     table.setFocus()
     table.setCurrentCell(0, table.columnCount() - 1)
-    QTest.keyClick(table, Qt.Key_Tab)
+    QTest.keyClick(table, Qt.Key_Tab)  # ParaView's own table for such a property added a row here
     guitest.settle(0.2)
     result.check(table.rowCount() == 1, f"Tab past the last cell adds no row ({table.rowCount()} rows)")
+    table.item(0, 4).setText("0, 0.3")  # a lamp needs a size: put back
+    result.check(table.item(0, 4).text() == "0.3, 0.3", f"a width of 0 is put back: {table.item(0, 4).text()}")
     apply()
     expected = ["Lamp1", "0", "1", "2.4", "1", "0", "-1", "0", "0.3", "0.3", "1", "1", "1"]
     given = [str(v) for v in marker.AreaLights]
@@ -71,8 +73,19 @@ if result.check(len(tables) == 1, f"the Mark Lights panel shows one area-lights 
         abs(float(a) - float(b)) < 1e-9 for a, b in zip(given[2:], expected[2:]))
     result.check(numbers_match, f"the property after Apply: {given}")
     result.check("Lamp1" in light_names(), f"Apply adds the lamp as a light: {light_names()}")
+    visible(QPushButton, "AddLamp")[0].click()
+    guitest.settle(0.3)
+    result.check(table.item(1, 0).text() == "Lamp2", f"a second lamp gets a name of its own: {table.item(1, 0).text()}")
+    table.selectRow(0)
     visible(QPushButton, "RemoveLamps")[0].click()
     guitest.settle(0.3)
+    visible(QPushButton, "AddLamp")[0].click()
+    guitest.settle(0.3)
+    names = sorted(table.item(r, 0).text() for r in range(table.rowCount()))
+    result.check(names == ["Lamp1", "Lamp2"], f"after removing Lamp1 a new lamp takes Lamp1 again, not a copy: {names}")
+    for _ in range(2):
+        visible(QPushButton, "RemoveLamps")[0].click()
+        guitest.settle(0.3)
     apply()
     result.check(table.rowCount() == 0 and len(marker.AreaLights) == 0 and "Lamp1" not in light_names(),
                  f"Remove takes the lamp away: {table.rowCount()} rows, lights {light_names()}")

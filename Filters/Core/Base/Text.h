@@ -15,9 +15,10 @@ inline std::string Trimmed(const std::string& text)
   return first == std::string::npos ? std::string() : text.substr(first, last - first + 1);
 }
 
-/// `text` with every byte that is not part of a well-formed UTF-8 sequence replaced by
-/// '?': names and messages taken from a file reach Python and Qt, which refuse (or drop)
-/// the whole string otherwise.
+/// `text` with every byte that is not part of a well-formed UTF-8 sequence read as Latin-1
+/// (the likeliest older encoding; two such names stay two), '?' for its control bytes
+/// 0x80-0x9f: names and messages taken from a file reach Python and Qt, which refuse (or
+/// drop) the whole string otherwise.
 inline std::string ValidUtf8(const std::string& text)
 {
   std::string out;
@@ -38,7 +39,19 @@ inline std::string ValidUtf8(const std::string& text)
       whole = !(lead == 0xE0 && second < 0xA0) && !(lead == 0xED && second >= 0xA0) &&
         !(lead == 0xF0 && second < 0x90) && !(lead == 0xF4 && second >= 0x90) && lead <= 0xF4;
     }
-    out.append(whole ? text.substr(i, length) : std::string("?"));
+    if (whole)
+    {
+      out.append(text, i, static_cast<size_t>(length));
+    }
+    else if (lead < 0xA0)
+    {
+      out += '?'; // Latin-1's C1 controls: U+0085 alone ends a line in Python and Qt
+    }
+    else
+    {
+      out += static_cast<char>(0xC0 | (lead >> 6));
+      out += static_cast<char>(0x80 | (lead & 0x3F));
+    }
     i += whole ? length : 1;
   }
   return out;

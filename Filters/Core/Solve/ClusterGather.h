@@ -9,6 +9,14 @@
 
 #include <vector>
 
+// GCC on x86-64 Linux makes the copies and picks one at load time (an ifunc); elsewhere
+// (other processors, Clang, which refuses it on templates) there is one portable loop.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__linux__)
+#define RADIOSITY_AVX2_CLONE __attribute__((target_clones("arch=x86-64-v3", "default")))
+#else
+#define RADIOSITY_AVX2_CLONE
+#endif
+
 namespace radiosity
 {
 
@@ -138,7 +146,7 @@ private:
   /// the block runs). Float arithmetic, as the sums are float; a bounce spends most of its
   /// time here, so a copy for AVX2 and FMA is made beside the portable one and picked when
   /// the program loads (FZK-Haus: 1.95 -> 1.5 s a bounce).
-  __attribute__((target_clones("arch=x86-64-v3", "default"))) void FarBlock(int block, float* flux)
+  RADIOSITY_AVX2_CLONE void FarBlock(int block, float* flux)
   {
     const int* receivers = Links.FarReceivers.data() + static_cast<size_t>(block) * ClusterLinkSet::kBlock;
     for (size_t i = Links.FarBlockStart[block]; i < Links.FarBlockStart[block + 1]; ++i)

@@ -25,6 +25,10 @@ std::string ReadPly(const std::string& path, radiosity::RawScene& raw, std::vect
 /// Empty when every count, list and face index of the PLY file fits what the file holds;
 /// otherwise the error (vtkPLYReader would crash on such a file).
 std::string CheckPly(const std::string& path);
+
+/// What VTK's VRML importer would crash on in this (comment-free) VRML97 text, naming its
+/// line ("line 4: USE Wall with no DEF Wall before it"); empty if nothing.
+std::string CheckVrmlText(const std::string& text);
 std::string ReadVrml(const std::string& path, radiosity::RawScene& raw, std::vector<std::string>& warnings);
 std::string ReadWithAssimp(const std::string& path, radiosity::RawScene& raw, std::vector<std::string>& warnings);
 

@@ -35,8 +35,6 @@
 #include <map>
 #include <cmath>
 #include <regex>
-#include <set>
-#include <sstream>
 #include <vector>
 
 namespace SceneFiles
@@ -62,6 +60,33 @@ std::string WithoutComments(const std::string& text)
     }
     quoted = text[k] == '"' && (k == 0 || text[k - 1] != '\\') ? !quoted : quoted;
     out += !quoted && text[k] == ',' ? ' ' : text[k];
+  }
+  return out;
+}
+
+/// Each run of white space outside strings as one space (one line end if it held any):
+/// the Expander's std::regex recurses once per character it matches, and a long run of
+/// spaces overflowed the stack (words are at most a thousand characters: CheckVrmlText).
+std::string Condensed(const std::string& text)
+{
+  std::string out;
+  bool quoted = false, space = false, newline = false;
+  for (size_t k = 0; k < text.size(); ++k)
+  {
+    const char c = text[k];
+    if (!quoted && std::isspace(static_cast<unsigned char>(c)))
+    {
+      space = true;
+      newline = newline || c == '\n';
+      continue;
+    }
+    if (space)
+    {
+      out += newline ? '\n' : ' ';
+      space = newline = false;
+    }
+    quoted = c == '"' && (k == 0 || text[k - 1] != '\\') ? !quoted : quoted;
+    out += c;
   }
   return out;
 }
@@ -151,139 +176,6 @@ private:
   std::map<std::string, std::string> Definitions;
 };
 
-/// Where the text has a geometry, Material, Appearance or texture node outside any Shape,
-/// what and where ("line 3: an IndexedFaceSet ..."); empty if none. VTK's importer puts
-/// such a node into the shape it is reading, and outside one it dereferences nothing: a
-/// Material or an IndexedFaceSet at the top of a file crashed the program.
-std::string NodeOutsideShape(const std::string& text)
-{
-  static const std::set<std::string> inShape = { "Material", "Appearance", "ImageTexture", "PixelTexture",
-    "MovieTexture", "TextureTransform", "IndexedFaceSet", "IndexedLineSet", "PointSet", "ElevationGrid",
-    "Extrusion", "Box", "Cone", "Cylinder", "Sphere", "Text" };
-  std::vector<bool> shapes; // per open brace: whether it opens a Shape
-  bool quoted = false;
-  int line = 1;
-  for (size_t k = 0; k < text.size(); ++k)
-  {
-    line += text[k] == '\n' ? 1 : 0;
-    quoted = text[k] == '"' && (k == 0 || text[k - 1] != '\\') ? !quoted : quoted;
-    if (quoted || (text[k] != '{' && text[k] != '}'))
-    {
-      continue;
-    }
-    if (text[k] == '}')
-    {
-      if (!shapes.empty()) // unbalanced: VTK's parser will say where
-      {
-        shapes.pop_back();
-      }
-      continue;
-    }
-    size_t end = text.find_last_not_of(" \t\r\n", k == 0 ? 0 : k - 1);
-    size_t begin = end == std::string::npos ? 0 : end;
-    while (begin > 0 && (std::isalnum(static_cast<unsigned char>(text[begin - 1])) || text[begin - 1] == '_'))
-    {
-      --begin;
-    }
-    const std::string type = end == std::string::npos ? std::string() : text.substr(begin, end - begin + 1);
-    const bool inside = std::find(shapes.begin(), shapes.end(), true) != shapes.end();
-    if (inShape.count(type) && !inside)
-    {
-      const bool vowel = std::string("AEIOU").find(type[0]) != std::string::npos;
-      return "line " + std::to_string(line) + (vowel ? ": an " : ": a ") + type +
-        " outside any Shape (VRML97 puts it in a Shape's appearance or geometry)";
-    }
-    shapes.push_back(type == "Shape");
-  }
-  return std::string();
-}
-
-/// Where a Coordinate's, Normal's, Color's or TextureCoordinate's list is not whole
-/// vectors of numbers (7 numbers for 3-vectors), what and where; empty if none. VTK's
-/// importer reports a parse error there and then crashed.
-std::string ListProblem(const std::string& text)
-{
-  // Lists are long (a scan's points): searched by hand, as std::regex recurses per
-  // character and overflowed the stack on one.
-  static const std::regex node(R"(\b(Coordinate|TextureCoordinate|Normal|Color)\s*\{)");
-  for (auto n = std::sregex_iterator(text.begin(), text.end(), node); n != std::sregex_iterator(); ++n)
-  {
-    const size_t open = static_cast<size_t>(n->position() + n->length() - 1);
-    const size_t close = std::min(BodyEnd(text, open), text.size());
-    const int size = (*n)[1].str() == "TextureCoordinate" ? 2 : 3;
-    for (size_t from = text.find('[', open); from < close; from = text.find('[', from + 1))
-    {
-      const size_t to = std::min(text.find(']', from), close);
-      std::istringstream words(text.substr(from + 1, to - from - 1));
-      std::string word;
-      int count = 0;
-      bool numbers = true;
-      while (words >> word)
-      {
-        char* end = nullptr;
-        const double value = std::strtod(word.c_str(), &end);
-        numbers = numbers && *end == '\0' && std::isfinite(value);
-        ++count;
-      }
-      if (!numbers || count % size != 0)
-      {
-        const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(from), '\n'));
-        return "line " + std::to_string(line) + ": a list of the " + (*n)[1].str() + " " +
-          (numbers ? "has " + std::to_string(count) + " numbers, not a whole number of " + std::to_string(size) + "-vectors"
-                   : "holds something that is not a finite number");
-      }
-    }
-  }
-  return std::string();
-}
-
-/// Brackets or braces that do not pair up, or a USE of a name no DEF before it gave, as a
-/// message naming the line; empty if none. VTK's parser goes on past such a syntax error
-/// and crashed (a list without its '[', a USE of nothing followed by a body).
-std::string SyntaxProblem(const std::string& text)
-{
-  std::vector<std::pair<char, int>> open; // bracket and line
-  std::set<std::string> defined;
-  static const std::regex name(R"(\b(DEF|USE)\s+([^\s{}\[\]"]+))");
-  int line = 1;
-  bool quoted = false;
-  for (size_t k = 0; k < text.size(); ++k)
-  {
-    line += text[k] == '\n' ? 1 : 0;
-    quoted = text[k] == '"' && (k == 0 || text[k - 1] != '\\') ? !quoted : quoted;
-    const char c = quoted ? ' ' : text[k];
-    if (c == '{' || c == '[')
-    {
-      open.emplace_back(c, line);
-    }
-    else if (c == '}' || c == ']')
-    {
-      if (open.empty() || open.back().first != (c == '}' ? '{' : '['))
-      {
-        return "line " + std::to_string(line) + ": a '" + c + "' that closes nothing open";
-      }
-      open.pop_back();
-    }
-  }
-  if (!open.empty())
-  {
-    return "line " + std::to_string(open.back().second) + ": a '" + open.back().first + "' never closed";
-  }
-  for (auto m = std::sregex_iterator(text.begin(), text.end(), name); m != std::sregex_iterator(); ++m)
-  {
-    if ((*m)[1].str() == "DEF")
-    {
-      defined.insert((*m)[2].str());
-    }
-    else if (!defined.count((*m)[2].str()))
-    {
-      const int at = 1 + static_cast<int>(std::count(text.begin(), text.begin() + m->position(), '\n'));
-      return "line " + std::to_string(at) + ": USE " + (*m)[2].str() + " with no DEF " + (*m)[2].str() + " before it";
-    }
-  }
-  return std::string();
-}
-
 /// The Material a property came from (its tag), or -1 for a shape without one.
 int TagOf(vtkProperty* property, size_t count)
 {
@@ -334,15 +226,13 @@ std::string ReadVrml(const std::string& path, radiosity::RawScene& raw, std::vec
     return "'" + path + "' is not VRML97 (its first line must be '#VRML V2.0 utf8'; VRML 1.0 is not read)";
   }
   const std::string uncommented = WithoutComments(text);
-  std::string misplaced = SyntaxProblem(uncommented);
-  misplaced = misplaced.empty() ? NodeOutsideShape(uncommented) : misplaced;
-  misplaced = misplaced.empty() ? ListProblem(uncommented) : misplaced;
-  if (!misplaced.empty())
+  const std::string problem = CheckVrmlText(uncommented);
+  if (!problem.empty())
   {
-    return "'" + path + "', " + misplaced;
+    return "'" + path + "', " + problem;
   }
   MaterialTags tags;
-  const std::string prepared = "#VRML V2.0 utf8\n" + Expander(tags).Expand(uncommented);
+  const std::string prepared = "#VRML V2.0 utf8\n" + Expander(tags).Expand(Condensed(uncommented));
   TemporaryFolder folder;
   const std::string copy = folder.Path + "/scene.wrl";
   {

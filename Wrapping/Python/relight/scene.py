@@ -54,7 +54,7 @@ class ErrorCatcher:
 
 def own_words(message):
     """A VTK message without its file, line and object prefix."""
-    line = message.strip().splitlines()[-1] if message.strip() else message
+    line = message.strip().split("\n")[-1] if message.strip() else message  # not splitlines: a name may hold U+2028
     return re.sub(r"^\w+ \(0x[0-9a-fA-F]+\): ", "", line)
 
 
