@@ -381,7 +381,12 @@ int vtkRadiosityMesher::RequestData(
     const radiosity::PolygonArrays wholeArrays{ whole.points, whole.offsets, whole.connectivity };
     const radiosity::PolygonArrays* wholeScene = parallel ? &wholeArrays : nullptr;
     // Sizes from the scene are taken from all of it, so every rank meshes alike.
-    this->ResolveSizes(this->PatchSize > 0 ? 0.0 : SuggestedPatch(parallel ? &whole : nullptr, input));
+    // The information pass suggested for this very input already (the usual case).
+    vtkDataSet* given = vtkDataSet::GetData(inputVector[0]);
+    const bool suggested = !parallel && given && given->GetMTime() == this->SuggestedForInput && this->SuggestedPatchSize > 0;
+    this->ResolveSizes(this->PatchSize > 0 ? 0.0
+        : suggested                         ? this->SuggestedPatchSize
+                                            : SuggestedPatch(parallel ? &whole : nullptr, input));
     const double elementSize = parallel && this->MaximumElements > 0
       ? ElementSizeEverywhere(this, parallel, input, wholeScene, warnings)
       : this->ElementSizeInUse;
