@@ -288,6 +288,8 @@ VRML = {
                              .encode(), None),
     "texture_in_a_sound.wrl": (WRL.replace("Transform {", 'Sound { source MovieTexture { url "x.mpg" } }\nTransform {', 1)
                                .encode(), None),
+    "backslash_before_quote.wrl": (WRL.replace("Transform {", 'WorldInfo { info [ "C:\\\\" ] } # a comment, with { a brace\n'
+                                                             'Transform {', 1).encode(), None),
 }
 
 

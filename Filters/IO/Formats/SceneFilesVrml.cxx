@@ -42,6 +42,18 @@ namespace SceneFiles
 namespace
 {
 
+/// Whether text[k] opens or closes a string: a '"' after an even number of backslashes
+/// ("C:\\" ends where it seems to).
+bool IsQuote(const std::string& text, size_t k)
+{
+  size_t backslashes = 0;
+  while (backslashes < k && text[k - 1 - backslashes] == '\\')
+  {
+    ++backslashes;
+  }
+  return text[k] == '"' && backslashes % 2 == 0;
+}
+
 /// The text without its `#` comments and with its commas as spaces (strings kept whole):
 /// VRML97 counts commas as white space, and VTK's parser crashed on "4,0,4".
 std::string WithoutComments(const std::string& text)
@@ -58,7 +70,7 @@ std::string WithoutComments(const std::string& text)
         break;
       }
     }
-    quoted = text[k] == '"' && (k == 0 || text[k - 1] != '\\') ? !quoted : quoted;
+    quoted = IsQuote(text, k) ? !quoted : quoted;
     out += !quoted && text[k] == ',' ? ' ' : text[k];
   }
   return out;
@@ -85,7 +97,7 @@ std::string Condensed(const std::string& text)
       out += newline ? '\n' : ' ';
       space = newline = false;
     }
-    quoted = c == '"' && (k == 0 || text[k - 1] != '\\') ? !quoted : quoted;
+    quoted = IsQuote(text, k) ? !quoted : quoted;
     out += c;
   }
   return out;
@@ -98,7 +110,7 @@ size_t BodyEnd(const std::string& text, size_t open)
   bool quoted = false;
   for (size_t k = open; k < text.size(); ++k)
   {
-    quoted = text[k] == '"' && text[k - 1] != '\\' ? !quoted : quoted;
+    quoted = IsQuote(text, k) ? !quoted : quoted;
     depth += quoted ? 0 : text[k] == '{' ? 1 : text[k] == '}' ? -1 : 0;
     if (depth == 0)
     {
