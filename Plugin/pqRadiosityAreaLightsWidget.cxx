@@ -1,5 +1,4 @@
 #include "pqRadiosityAreaLightsWidget.h"
-#include "pqRadiosityRows.h"
 
 #include "vtkDataObject.h"
 #include "vtkPVArrayInformation.h"
@@ -69,35 +68,20 @@ pqRadiosityAreaLightsWidget::pqRadiosityAreaLightsWidget(vtkSMProxy* proxy, vtkS
   QObject::connect(add, &QPushButton::clicked, this, &pqRadiosityAreaLightsWidget::addLamp);
   QObject::connect(remove, &QPushButton::clicked, this, &pqRadiosityAreaLightsWidget::removeLamps);
   QObject::connect(this->Table, &QTableWidget::cellChanged, this, &pqRadiosityAreaLightsWidget::cellEdited);
-  this->addPropertyLink(this, "rows", SIGNAL(rowsChanged()), property);
+  this->linkRows(property);
   this->fill();
-}
-
-QList<QVariant> pqRadiosityAreaLightsWidget::rows() const
-{
-  return pqRadiosityToVariants(this->Values);
-}
-
-void pqRadiosityAreaLightsWidget::setRows(const QList<QVariant>& values)
-{
-  const QStringList rows = pqRadiosityToStrings(values);
-  if (rows != this->Values)
-  {
-    this->Values = rows;
-    this->fill();
-  }
 }
 
 void pqRadiosityAreaLightsWidget::fill()
 {
   this->Filling = true;
-  const int lamps = static_cast<int>(this->Values.size()) / kPerLamp;
+  const int lamps = static_cast<int>(this->Rows.size()) / kPerLamp;
   this->Table->setRowCount(lamps);
   for (int row = 0; row < lamps; ++row)
   {
     for (int column = 0; column < kColumns; ++column)
     {
-      const QStringList part = this->Values.mid(row * kPerLamp + kFirst[column], Count(column));
+      const QStringList part = this->Rows.mid(row * kPerLamp + kFirst[column], Count(column));
       if (column == 1)
       {
         auto* shape = new QComboBox(this->Table);
@@ -108,7 +92,7 @@ void pqRadiosityAreaLightsWidget::fill()
           {
             if (this->Table->cellWidget(r, 1) == shape)
             {
-              this->Values[r * kPerLamp + 1] = QString::number(index);
+              this->Rows[r * kPerLamp + 1] = QString::number(index);
               Q_EMIT this->rowsChanged();
             }
           }
@@ -153,19 +137,24 @@ void pqRadiosityAreaLightsWidget::cellEdited(int row, int column)
   if (!usable)
   {
     const QSignalBlocker block(this->Table);
-    item->setText(this->Values.mid(at, Count(column)).join(", ")); // what it held
+    item->setText(this->Rows.mid(at, Count(column)).join(", ")); // what it held
     return;
   }
-  std::copy(parts.begin(), parts.end(), this->Values.begin() + at);
+  std::copy(parts.begin(), parts.end(), this->Rows.begin() + at);
   Q_EMIT this->rowsChanged();
+}
+
+vtkPVDataInformation* pqRadiosityAreaLightsWidget::InputInformation() const
+{
+  vtkSMPropertyHelper input(this->proxy(), "Input");
+  auto* source = vtkSMSourceProxy::SafeDownCast(input.GetAsProxy());
+  return source ? source->GetDataInformation(input.GetOutputPort()) : nullptr;
 }
 
 QStringList pqRadiosityAreaLightsWidget::newLamp() const
 {
   double bounds[6] = { -0.5, 0.5, -0.5, 0.5, -0.5, 0.5 };
-  vtkSMPropertyHelper inputHelper(this->proxy(), "Input");
-  auto* input = vtkSMSourceProxy::SafeDownCast(inputHelper.GetAsProxy());
-  vtkPVDataInformation* info = input ? input->GetDataInformation(inputHelper.GetOutputPort()) : nullptr;
+  vtkPVDataInformation* info = this->InputInformation();
   if (info && info->GetNumberOfCells() > 0)
   {
     info->GetBounds(bounds);
@@ -206,13 +195,11 @@ QString pqRadiosityAreaLightsWidget::unusedName() const
   // A lamp named as another light would join it: the first LampN the table and the input
   // do not use yet.
   QStringList taken;
-  for (int k = 0; k < this->Values.size(); k += kPerLamp)
+  for (int k = 0; k < this->Rows.size(); k += kPerLamp)
   {
-    taken << this->Values[k];
+    taken << this->Rows[k];
   }
-  vtkSMPropertyHelper inputHelper(this->proxy(), "Input");
-  auto* input = vtkSMSourceProxy::SafeDownCast(inputHelper.GetAsProxy());
-  vtkPVDataInformation* info = input ? input->GetDataInformation(inputHelper.GetOutputPort()) : nullptr;
+  vtkPVDataInformation* info = this->InputInformation();
   vtkPVArrayInformation* names = info ? info->GetArrayInformation("LightNames", vtkDataObject::FIELD) : nullptr;
   for (int k = 0; names && k < names->GetNumberOfStringValues(); ++k)
   {
@@ -228,7 +215,7 @@ QString pqRadiosityAreaLightsWidget::unusedName() const
 
 void pqRadiosityAreaLightsWidget::addLamp()
 {
-  this->Values << this->newLamp();
+  this->Rows << this->newLamp();
   this->fill();
   Q_EMIT this->rowsChanged();
 }
@@ -253,7 +240,7 @@ void pqRadiosityAreaLightsWidget::removeLamps()
   {
     for (int k = 0; k < kPerLamp; ++k)
     {
-      this->Values.removeAt(row * kPerLamp);
+      this->Rows.removeAt(row * kPerLamp);
     }
   }
   this->fill();

@@ -3,49 +3,41 @@
 #ifndef pqRadiosityAreaLightsWidget_h
 #define pqRadiosityAreaLightsWidget_h
 
-#include "pqPropertyWidget.h"
-
-#include <QList>
-#include <QStringList>
-#include <QVariant>
+#include "pqRadiosityRowsWidget.h"
 
 class QTableWidget;
+class vtkPVDataInformation;
 
-class pqRadiosityAreaLightsWidget : public pqPropertyWidget
+class pqRadiosityAreaLightsWidget : public pqRadiosityRowsWidget
 {
   Q_OBJECT
-  typedef pqPropertyWidget Superclass;
-  /// The property's elements, 13 per lamp (name, shape, centre x y z, facing x y z, width,
-  /// height, emission r g b), linked through ParaView's property links: Apply, Reset and
-  /// undo work as for any panel widget.
-  Q_PROPERTY(QList<QVariant> rows READ rows WRITE setRows NOTIFY rowsChanged)
+  typedef pqRadiosityRowsWidget Superclass;
 
 public:
+  // Rows: 13 per lamp (name, shape, centre x y z, facing x y z, width, height, emission r g b).
   pqRadiosityAreaLightsWidget(vtkSMProxy* proxy, vtkSMProperty* property, QWidget* parent = nullptr);
 
-  QList<QVariant> rows() const;
-  void setRows(const QList<QVariant>& values);
-
-Q_SIGNALS:
-  void rowsChanged();
+protected:
+  void rowsSet() override { this->fill(); }
 
 private Q_SLOTS:
   void addLamp();
   void removeLamps();
-  /// A typed cell into the values; a cell that does not read as its numbers is put back.
+  /// A typed cell into the rows; a cell that does not read as its numbers is put back.
   void cellEdited(int row, int column);
 
 private:
-  /// The table from Values (the rows as the property links last gave or took them).
+  /// The table from Rows.
   void fill();
   /// A new lamp's row: at the top of the input's box, facing down along its shortest side.
   QStringList newLamp() const;
   /// The first of Lamp1, Lamp2, ... that no lamp here and no light of the input is called.
   QString unusedName() const;
+  /// What ParaView knows of the data on the input port (null before it has run).
+  vtkPVDataInformation* InputInformation() const;
   void fitHeight();
 
   QTableWidget* Table;
-  QStringList Values;
   bool Filling = false;
 };
 

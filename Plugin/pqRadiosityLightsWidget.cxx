@@ -1,5 +1,4 @@
 #include "pqRadiosityLightsWidget.h"
-#include "pqRadiosityRows.h"
 
 #include <algorithm>
 #include <cmath>
@@ -46,7 +45,7 @@ pqRadiosityLightsWidget::pqRadiosityLightsWidget(vtkSMProxy* proxy, vtkSMPropert
   layout->addWidget(this->Table);
   // The names are known once the filter has run: rebuild after every update of the data.
   this->Connection->Connect(proxy, vtkCommand::UpdateDataEvent, this, SLOT(rebuild()));
-  this->addPropertyLink(this, "rows", SIGNAL(rowsChanged()), property);
+  this->linkRows(property);
   this->rebuild();
 }
 
@@ -54,21 +53,6 @@ pqRadiosityLightsWidget::~pqRadiosityLightsWidget()
 {
   this->Connection->Disconnect();
   this->Connection->Delete();
-}
-
-QList<QVariant> pqRadiosityLightsWidget::rows() const
-{
-  return pqRadiosityToVariants(this->Rows);
-}
-
-void pqRadiosityLightsWidget::setRows(const QList<QVariant>& values)
-{
-  const QStringList rows = pqRadiosityToStrings(values);
-  if (rows != this->Rows)
-  {
-    this->Rows = rows;
-    this->rebuild();
-  }
 }
 
 QVector<pqRadiosityLightsWidget::Light> pqRadiosityLightsWidget::readLights(vtkSMProperty* info) const

@@ -3,7 +3,7 @@
 #ifndef pqRadiosityLightsWidget_h
 #define pqRadiosityLightsWidget_h
 
-#include "pqPropertyWidget.h"
+#include "pqRadiosityRowsWidget.h"
 
 #include <QList>
 #include <QStringList>
@@ -13,24 +13,18 @@
 class QTableWidget;
 class vtkEventQtSlotConnect;
 
-class pqRadiosityLightsWidget : public pqPropertyWidget
+class pqRadiosityLightsWidget : public pqRadiosityRowsWidget
 {
   Q_OBJECT
-  typedef pqPropertyWidget Superclass;
-  /// The property's elements (name, r, g, b, intensity, enabled per edited light), linked
-  /// to it through ParaView's property links: Apply, Reset and undo work as for any panel
-  /// widget, and a display panel applies each change at once.
-  Q_PROPERTY(QList<QVariant> rows READ rows WRITE setRows NOTIFY rowsChanged)
+  typedef pqRadiosityRowsWidget Superclass;
+  // Rows: name, r, g, b, intensity, enabled per edited light.
 
 public:
   pqRadiosityLightsWidget(vtkSMProxy* proxy, vtkSMProperty* property, QWidget* parent = nullptr);
   ~pqRadiosityLightsWidget() override;
 
-  QList<QVariant> rows() const;
-  void setRows(const QList<QVariant>& values);
-
-Q_SIGNALS:
-  void rowsChanged();
+protected:
+  void rowsSet() override { this->rebuild(); }
 
 private Q_SLOTS:
   /// Rows for the lights the filter found (its LightNamesInfo), values from the property.
@@ -58,7 +52,6 @@ private:
   void addRow(int row);
 
   vtkSMProperty* Property;
-  QStringList Rows; ///< the property's elements as the links last gave or took them
   QTableWidget* Table;
   QVector<Light> Lights;
   vtkEventQtSlotConnect* Connection;

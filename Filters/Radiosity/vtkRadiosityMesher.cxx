@@ -82,8 +82,9 @@ vtkRadiosityMesher::~vtkRadiosityMesher() = default;
 
 void vtkRadiosityMesher::ResolveSizes(double suggestedPatch)
 {
-  this->PatchSizeInUse = this->PatchSize > 0 ? this->PatchSize : (suggestedPatch > 0 ? suggestedPatch : 1.0);
-  this->ElementSizeInUse = this->ElementSize > 0 ? this->ElementSize : this->PatchSizeInUse / 4.0;
+  const auto sizes = radiosity::SizesInUse(this->PatchSize, this->ElementSize, suggestedPatch);
+  this->PatchSizeInUse = sizes.first;
+  this->ElementSizeInUse = sizes.second;
 }
 
 double vtkRadiosityMesher::EstimateElements(double patchSize, double elementSize)
@@ -95,18 +96,11 @@ double vtkRadiosityMesher::EstimateElements(double patchSize, double elementSize
     this->UpdateInformation();
   }
   const radiosity::SceneMesh& mesh = this->SeenInput->Mesh;
-  if (!(patchSize > 0))
-  {
-    patchSize = this->SuggestedPatchSize > 0 ? this->SuggestedPatchSize : 1.0;
-  }
-  if (!(elementSize > 0))
-  {
-    elementSize = patchSize / 4.0;
-  }
+  const auto sizes = radiosity::SizesInUse(patchSize, elementSize, this->SuggestedPatchSize);
   radiosity::MesherOptions options;
   options.MergeTriangles = this->MergeTriangles;
   const radiosity::ElementCounter count(mesh.points, mesh.offsets, mesh.connectivity, this->SeenInput->SurfaceKey, options);
-  return count(patchSize, elementSize);
+  return count(sizes.first, sizes.second);
 }
 
 void vtkRadiosityMesher::PrintSelf(ostream& os, vtkIndent indent)

@@ -8,6 +8,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace radiosity
@@ -117,6 +118,14 @@ struct SuggestedSizes
 /// A sixth of the scene's extent (its span, which turning does not change), rounded down to
 /// 1, 2, 2.5 or 5 times a power of ten; 0 for an empty or degenerate scene.
 double SuggestPatchSize(const std::vector<Vec3>& points, const std::vector<int>& connectivity);
+
+/// The sizes to mesh at: a patch size of 0 (or less) takes `suggestedPatch` (1 where there
+/// is none), an element size of 0 a quarter of the patch size in use.
+inline std::pair<double, double> SizesInUse(double patch, double element, double suggestedPatch)
+{
+  const double p = patch > 0 ? patch : (suggestedPatch > 0 ? suggestedPatch : 1.0);
+  return { p, element > 0 ? element : p / 4.0 };
+}
 
 /// The suggestion for a scene; the defaults (1, 0.25) for an empty or degenerate one.
 SuggestedSizes SuggestMeshSizes(const std::vector<Vec3>& points, const std::vector<int>& offsets,
