@@ -70,6 +70,10 @@ TEST(Clustered, FurnaceGivesOneOverOneMinusRho)
     ASSERT_TRUE(s.Statistics.Converged);
     EXPECT_EQ(s.Statistics.Method, SolverMethod::Clustered);
     EXPECT_GT(s.Statistics.VolumeLinks, 2 * s.Statistics.ElementLinks); // element pairs far apart count as element links
+    // Bouncing would take log(1e-7) / log(rho) gathers (153 at 0.9); the linear solve far fewer.
+    const int gathers = s.Statistics.Shots - static_cast<int>(SceneGeometry(box).patchElements.size()); // each patch emits
+    std::printf("furnace at rho %.1f: %d gathers\n", rho, gathers);
+    EXPECT_LT(gathers, 0.5 * std::log(1e-7) / std::log(rho));
     const double expected = 1.0 / (1.0 - rho);
     double mean = 0, worst = 0;
     for (const Vec3& b : s.Radiosity)

@@ -2,6 +2,7 @@
 #include "Solve/AmbientTerm.h"
 #include "Solve/Channels.h"
 #include "Solve/ClusterGather.h"
+#include "Solve/ConjugateBounces.h"
 #include "Solve/ElementTree.h"
 #include "Solve/RankTable.h"
 #include "Base/Memory.h"
@@ -250,17 +251,110 @@ private:
     }
     Normalize(tree, links, estimator);
     ClusterGather<Value> gather(G, tree, links, Pool);
-    std::vector<Value> irradiance;
+    if (!KeepGoing(IterationFraction()))
+    {
+      return;
+    }
+    std::vector<Value> sent;
+    Gather(gather, Last, sent);
+    ConjugateBounces<Value> solve(G.area, Weights(), L, static_cast<int>(Channel::Doubles));
+    solve.Start(Last, sent);
+    Row(solve.Increment());
     while (AnyActive() && KeepGoing(IterationFraction()))
     {
-      gather.Scatter(Last, L);
-      if (Group.Distributed())
-      {
-        gather.SumOverRanks(Group);
-      }
-      gather.Collect(L, irradiance);
-      Bounce(irradiance);
+      Gather(gather, solve.Direction(), sent);
+      solve.Step(sent);
+      Row(solve.Increment());
     }
+    Settle(solve);
+  }
+
+  /// What every element receives from `sending` along the links (all ranks' shares).
+  void Gather(ClusterGather<Value>& gather, const std::vector<Value>& sending, std::vector<Value>& received)
+  {
+    gather.Scatter(sending, L);
+    if (Group.Distributed())
+    {
+      gather.SumOverRanks(Group);
+    }
+    gather.Collect(L, received);
+  }
+
+  /// Per element and channel: the reflectance times the receiver scale.
+  std::vector<double> Weights() const
+  {
+    const size_t channels = Channel::Doubles;
+    std::vector<double> w(static_cast<size_t>(N) * channels);
+    for (int e = 0; e < N; ++e)
+    {
+      const Value rho = Channel::Reflect(Mesh.reflectance[e], Channel::From({ 1, 1, 1 }), ReceiverScale[e]);
+      Channel::Store(rho, w.data() + e * channels);
+    }
+    return w;
+  }
+
+  /// A history row for one iteration: what is left is what one more bounce would add.
+  void Row(const std::vector<Value>& increment)
+  {
+    for (int m = 0; m < L; ++m)
+    {
+      double left = 0;
+      for (int e = 0; e < N; ++e)
+      {
+        left += Channel::Sum(Magnitude(increment[At(e, m)])) * G.area[e];
+      }
+      RemainingPer[m] = PendingPer[m] + left;
+    }
+    Record(0, 0, true);
+  }
+
+  static double Magnitude(double v) { return std::abs(v); }
+  static Vec3 Magnitude(const Vec3& v) { return { std::abs(v.x), std::abs(v.y), std::abs(v.z) }; }
+
+  /// The radiosity from the solve: the reflected direct light plus what the links bring to
+  /// the solution. The ledger: the solution was shot along the links; what one more bounce
+  /// would add is left to travel; light added where the series would make radiosity negative
+  /// is booked as received (the method makes it), not as left to travel, which it does not
+  /// become by iterating.
+  void Settle(const ConjugateBounces<Value>& solve)
+  {
+    double shot = 0, received = 0;
+    for (int e = 0; e < N; ++e)
+    {
+      const Vec3& rho = Mesh.reflectance[e];
+      for (int m = 0; m < L; ++m)
+      {
+        const size_t i = At(e, m);
+        const Value h = solve.Sent()[i] * ReceiverScale[e];
+        const Value kept = Receivable(rho, Last[i], h);
+        const Value added = Channel::Reflect(rho, kept - h, 1.0);
+        const Value reflected = Last[i] + Channel::Reflect(rho, kept, 1.0);
+        shot += Channel::Sum(solve.Solution()[i]) * G.area[e];
+        received += Channel::Sum(kept - added) * G.area[e];
+        Radiosity[i] += reflected - Last[i];
+        Last[i] = reflected - added - solve.Solution()[i];
+      }
+    }
+    Stats.ShotPower += shot;
+    Stats.ReceivedPower += received;
+    Stats.EscapedPower += shot - received;
+    UpdateRemaining(true);
+    Stats.UnshotPower = std::accumulate(RemainingPer.begin(), RemainingPer.end(), 0.0);
+  }
+
+  /// What the links bring (h), cut where the clamped cosine's series, which dips below zero
+  /// near grazing, would take more than the direct light gave: no radiosity turns negative.
+  static Value Receivable(const Vec3& rho, const Value& direct, const Value& h)
+  {
+    double d[3], r[3], out[3];
+    Channel::Store(direct, d);
+    Channel::Store(h, out);
+    Channel::Store(Channel::Reflect(rho, Channel::From({ 1, 1, 1 }), 1.0), r);
+    for (size_t c = 0; c < Channel::Doubles; ++c)
+    {
+      out[c] = std::max(out[c], r[c] > 0 ? -d[c] / r[c] : 0.0);
+    }
+    return Channel::Load(out);
   }
 
   /// Per element, the factor that makes what it gathers from a uniformly bright closed
@@ -281,26 +375,6 @@ private:
         ReceiverScale[e] = 1 / seen[e];
       }
     }
-  }
-
-  /// Each element's irradiance into its radiosity: the new last bounce.
-  void Bounce(const std::vector<Value>& irradiance)
-  {
-    double shot = 0, received = 0;
-    for (int e = 0; e < N; ++e)
-    {
-      for (int m = 0; m < L; ++m)
-      {
-        shot += Channel::Sum(Last[At(e, m)]) * G.area[e];
-        // The clamped cosine's series dips below zero near grazing: no element takes light away.
-        const Value h = NonNegative(irradiance[At(e, m)] * ReceiverScale[e]);
-        received += Channel::Sum(h) * G.area[e];
-        Last[At(e, m)] = Channel::Reflect(Mesh.reflectance[e], h, 1.0);
-        Radiosity[At(e, m)] += Last[At(e, m)];
-      }
-    }
-    UpdateRemaining(true);
-    Record(shot, received, true);
   }
 
   /// RemainingPer: emitters not yet shot, and the last bounce where it is still to travel.
@@ -405,7 +479,7 @@ private:
       {
         left += Channel::To(Last[At(e, m)]) * G.area[e];
       }
-      Out.Ambient[m] = ambient.Of(left);
+      Out.Ambient[m] = ambient.Of(NonNegative(left)); // the remainder of a solve can overshoot a little
     }
   }
 

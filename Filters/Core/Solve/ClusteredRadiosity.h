@@ -19,10 +19,12 @@ namespace radiosity
 ///   nearer pairs split, down to element pairs, which take Lambert's formula. The links do
 ///   not depend on the lights, so their cost follows the scene's surfaces, not its polygons
 ///   times its shooters.
-/// - Each iteration gathers the last bounce along every link (sums of radiosity x area x
-///   normal pulled up the tree, irradiance vectors pushed down) until what is left to
-///   propagate is below the threshold of each solution's emitted power. Each source
-///   patch's links are scaled to deliver exactly what it sends where it sees a closed scene.
+/// - The interreflection is one linear system, solved by conjugate gradients
+///   (ConjugateBounces.h): each step gathers along every link (sums of radiosity x area x
+///   normal pulled up the tree, irradiance vectors pushed down) until what one more bounce
+///   would add is below the threshold of each solution's emitted power: about half the
+///   gathers of bouncing (the FZK-Haus: 7 instead of 13). Each element's gathering is
+///   scaled so that it views exactly a whole closed scene where it sees one.
 void SolveClustered(const SceneMesh& mesh, const SceneGeometry& geometry, const Visibility& rays,
   const std::vector<Vec3>& emission, int solutions, bool grey, const SolverOptions& options,
   std::chrono::steady_clock::time_point start, Solution& out);
