@@ -37,51 +37,45 @@ public:
   {
     X = x0;
     Carried = sent;
-    R = sent;
     Z = sent;
-    double* r = Doubles(R);
     double* z = Doubles(Z);
-    ForEachLane([&](std::size_t e, std::size_t i, double w) {
-      r[i] *= Area[e];
-      z[i] *= w;
-    });
+    ForEachLane([&](std::size_t, std::size_t i, double w) { z[i] *= w; });
     P = Z;
-    RZ = Dot(R, Z);
+    RZ = ResidualDotIncrement();
   }
 
   /// The direction whose transport Step needs next.
   const std::vector<Value>& Direction() const { return P; }
 
-  /// One step, from what the direction sends (F p, gathered).
+  /// One step, from what the direction sends (F p, gathered). The residual r of the
+  /// symmetric system is kept as the increment z = W r / A (r itself where W > 0), which
+  /// saves a vector; K p = A (p - W F p) / W.
   void Step(const std::vector<Value>& sent)
   {
-    std::vector<Value> q(P.size());
-    const double* p = Doubles(P);
     const double* g = Doubles(sent);
-    double* qd = Doubles(q);
-    ForEachLane([&](std::size_t e, std::size_t i, double w) { qd[i] = w > 0 ? Area[e] * (p[i] / w - g[i]) : 0.0; });
-    const std::vector<double> pq = Dot(P, q);
+    double* p = Doubles(P);
+    std::vector<double> pKp(Lanes, 0.0);
+    ForEachLane([&](std::size_t e, std::size_t i, double w) {
+      pKp[i % Lanes] += w > 0 ? Area[e] * p[i] * (p[i] - w * g[i]) / w : 0.0;
+    });
     std::vector<double> alpha(Lanes, 0.0);
     for (int j = 0; j < Lanes; ++j)
     {
-      alpha[j] = pq[j] > 0 && RZ[j] > 0 ? RZ[j] / pq[j] : 0.0; // a lane with nothing left stays
+      alpha[j] = pKp[j] > 0 && RZ[j] > 0 ? RZ[j] / pKp[j] : 0.0; // a lane with nothing left stays
     }
     double* x = Doubles(X);
     double* t = Doubles(Carried);
-    double* r = Doubles(R);
     double* z = Doubles(Z);
-    ForEachLane([&](std::size_t e, std::size_t i, double w) {
+    ForEachLane([&](std::size_t, std::size_t i, double w) {
       const double a = alpha[i % Lanes];
       x[i] += a * p[i];
       t[i] += a * g[i];
-      r[i] -= a * qd[i];
-      z[i] = Area[e] > 0 ? w * r[i] / Area[e] : 0.0;
+      z[i] -= w > 0 ? a * (p[i] - w * g[i]) : 0.0;
     });
-    const std::vector<double> rz = Dot(R, Z);
-    double* pd = Doubles(P);
+    const std::vector<double> rz = ResidualDotIncrement();
     ForEachLane([&](std::size_t, std::size_t i, double) {
       const int j = static_cast<int>(i % Lanes);
-      pd[i] = z[i] + (RZ[j] > 0 ? rz[j] / RZ[j] : 0.0) * pd[i];
+      p[i] = z[i] + (RZ[j] > 0 ? rz[j] / RZ[j] : 0.0) * p[i];
     });
     RZ = rz;
   }
@@ -110,20 +104,19 @@ private:
     }
   }
 
-  /// Per lane, sum over the elements of a b (in element order: the same on any thread count).
-  std::vector<double> Dot(const std::vector<Value>& a, const std::vector<Value>& b) const
+  /// Per lane, r . z = sum of A z^2 / W (in element order: the same on any thread count).
+  std::vector<double> ResidualDotIncrement() const
   {
     std::vector<double> sums(Lanes, 0.0);
-    const double* x = Doubles(a);
-    const double* y = Doubles(b);
-    ForEachLane([&](std::size_t, std::size_t i, double) { sums[i % Lanes] += x[i] * y[i]; });
+    const double* z = Doubles(Z);
+    ForEachLane([&](std::size_t e, std::size_t i, double w) { sums[i % Lanes] += w > 0 ? Area[e] * z[i] * z[i] / w : 0.0; });
     return sums;
   }
 
   const std::vector<double>& Area;
   const std::vector<double> Weight;
   const int Channels, Lanes;
-  std::vector<Value> X, Carried, R, Z, P;
+  std::vector<Value> X, Carried, Z, P;
   std::vector<double> RZ;
 };
 
