@@ -7,6 +7,7 @@
 #include "SceneFiles.h"
 #include "Geometry/Polygon.h"
 
+#include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkErrorCode.h"
 #include "vtkFieldData.h"
@@ -175,28 +176,60 @@ json AddLightAttributes(vtkPolyData* input, GlbDocument& glb, json& attributes)
   return lights;
 }
 
-/// The glTF document: one unlit, double-sided mesh whose extras list the lights.
+/// The relit radiosity of the points (`cells` false) or cells: the relight filter's
+/// `Radiosity`, or for the solver's output every light at its default color, as the relight
+/// filter starts. Null where neither is there.
+vtkSmartPointer<vtkFloatArray> RelitRadiosity(vtkPolyData* input, bool cells)
+{
+  vtkDataSetAttributes* data = cells ? static_cast<vtkDataSetAttributes*>(input->GetCellData()) : input->GetPointData();
+  vtkDataArray* relit = data->GetArray("Radiosity");
+  if (relit && relit->GetNumberOfComponents() == 3)
+  {
+    vtkSmartPointer<vtkFloatArray> values = vtkFloatArray::SafeDownCast(relit); // the relight filter's is float
+    if (!values)
+    {
+      values = vtkSmartPointer<vtkFloatArray>::New();
+      values->DeepCopy(relit);
+    }
+    return values;
+  }
+  const std::vector<std::string> names = vtkRadiosityLightNames(input->GetFieldData());
+  vtkDataArray* defaults = input->GetFieldData()->GetArray("LightDefaultColors");
+  std::vector<std::string> arrays;
+  std::vector<double> weights;
+  for (vtkIdType l = 0; l < static_cast<vtkIdType>(names.size()); ++l)
+  {
+    double color[3] = { 1, 1, 1 };
+    if (defaults && defaults->GetNumberOfComponents() == 3 && l < defaults->GetNumberOfTuples())
+    {
+      defaults->GetTuple(l, color);
+    }
+    arrays.push_back("Radiosity_" + names[l]);
+    weights.insert(weights.end(), color, color + 3);
+  }
+  auto combined = vtkSmartPointer<vtkFloatArray>::New();
+  std::string error;
+  const vtkIdType tuples = cells ? input->GetNumberOfCells() : input->GetNumberOfPoints();
+  if (arrays.empty() || !vtkRadiosityCombineSolutions(data, arrays, weights, tuples, combined, error))
+  {
+    return nullptr;
+  }
+  return combined;
+}
+
 /// Exposure 0 (the default): the relight filter's, from its field array Exposure, so the
-/// file shows what the filter showed; else metered from the relit Radiosity as it meters.
-double ExposureFor(vtkPolyData* input, double set)
+/// file shows what the filter showed; else metered as it meters (on the cells where they
+/// hold the solutions: they know which ones are lamps).
+double ExposureFor(vtkPolyData* input, vtkFloatArray* relit, double set)
 {
   vtkDataArray* used = input->GetFieldData()->GetArray("Exposure");
   if (set > 0 || (used && used->GetNumberOfTuples() > 0 && used->GetComponent(0, 0) > 0))
   {
     return set > 0 ? set : used->GetComponent(0, 0);
   }
-  vtkDataArray* relit = input->GetPointData()->GetArray("Radiosity");
-  if (!relit || relit->GetNumberOfComponents() != 3)
-  {
-    return 1.0;
-  }
-  vtkSmartPointer<vtkFloatArray> values = vtkFloatArray::SafeDownCast(relit); // the relight filter's is float
-  if (!values)
-  {
-    values = vtkSmartPointer<vtkFloatArray>::New();
-    values->DeepCopy(relit);
-  }
-  return vtkRadiosityMeteredExposure(input, values, false);
+  const vtkSmartPointer<vtkFloatArray> cells = RelitRadiosity(input, true);
+  return cells ? vtkRadiosityMeteredExposure(input, cells, true)
+               : relit ? vtkRadiosityMeteredExposure(input, relit, false) : 1.0;
 }
 
 json Document(const GlbDocument& glb, const json& primitive, const json& lights, double exposure)
@@ -268,9 +301,9 @@ void vtkRadiosityGLTFWriter::WriteData()
     positions.insert(positions.end(), { static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z) });
   }
   json attributes = { { "POSITION", glb.AddVec3(positions, true) } };
-  vtkDataArray* relit = input->GetPointData()->GetArray("Radiosity");
-  const double exposure = ExposureFor(input, this->Exposure);
-  if (relit && relit->GetNumberOfComponents() == 3)
+  const vtkSmartPointer<vtkFloatArray> relit = RelitRadiosity(input, false);
+  const double exposure = ExposureFor(input, relit, this->Exposure);
+  if (relit)
   {
     attributes["COLOR_0"] = glb.AddVec3(Floats(relit, exposure, true), false);
   }

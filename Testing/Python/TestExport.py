@@ -92,6 +92,23 @@ back = relight.import_scene(glb, require_lights=False)
 check(np.allclose(back.GetBounds(), relit.GetBounds(), atol=1e-6) and back.GetNumberOfCells() == len(indices) // 3,
       f"VTK's glTF loader reads it back: {back.GetNumberOfCells()} triangles, same bounds")
 
+# --- the solver's own output: colored as the relight filter starts (default colors, metered) --
+glb = os.path.join(folder, "solved.glb")
+relight.write_gltf(solver.GetOutput(), glb)
+document, binary = read_glb(glb)
+primitive = document["meshes"][0]["primitives"][0]
+extras = document["meshes"][0]["extras"]["relight"]
+at_defaults = relight.vtkRadiosityRelight()
+at_defaults.SetInputConnection(solver.GetOutputPort())
+at_defaults.Update()
+metered = numpy_support.vtk_to_numpy(at_defaults.GetOutput().GetFieldData().GetArray("Exposure"))[0]
+check(abs(extras["exposure"] - metered) < 1e-6 * metered and metered > 2,
+      f"its exposure is metered as the relight filter meters at its defaults: {extras['exposure']:.3f} ({metered:.3f})")
+mix = sum(np.asarray(e["defaultColor"]) * point_array(solver.GetOutput(), "Radiosity_" + e["name"]) for e in extras["lights"])
+color = accessor(document, binary, primitive["attributes"].get("COLOR_0", primitive["attributes"]["POSITION"]))
+check("COLOR_0" in primitive["attributes"] and np.allclose(color, np.clip(mix * extras["exposure"], 0, 1), atol=1e-5),
+      "its COLOR_0 is every light at its default color x that exposure, clamped")
+
 # --- a failed write leaves the old file; bad input is an error ------------------------------
 size = os.path.getsize(glb)
 os.mkdir(glb + ".part")

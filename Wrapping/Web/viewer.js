@@ -77,6 +77,30 @@ function hexToRgb(hex) {
   return [1, 3, 5].map((i) => parseInt(hex.slice(i, i + 2), 16) / 255);
 }
 
+/// A number box beside a slider, for values past the slider's end: typing one moves the
+/// end out (the slider only offers up to a few times the default).
+function numberBeside(slider, onChange) {
+  const box = document.createElement("input");
+  box.type = "number";
+  box.min = "0";
+  box.step = "any";
+  box.className = "amount";
+  const show = () => {
+    box.value = String(Number(Number(slider.value).toPrecision(4))); // 0.9, not 0.8999999761581421
+  };
+  show();
+  slider.addEventListener("input", show);
+  box.addEventListener("input", () => {
+    const wanted = Number(box.value);
+    if (!(wanted >= 0)) return;
+    if (wanted > Number(slider.max)) slider.max = String(2 * wanted);
+    slider.value = String(wanted);
+    onChange();
+  });
+  slider.after(box);
+  return box;
+}
+
 function controlRow(light, onChange) {
   const row = document.createElement("div");
   row.className = "light";
@@ -92,6 +116,7 @@ function controlRow(light, onChange) {
     return new THREE.Vector3(rgb[0] * on, rgb[1] * on, rgb[2] * on);
   };
   for (const input of [enabled, color, slider]) input.addEventListener("input", onChange);
+  numberBeside(slider, onChange);
   return { row, weight, enabled, color, slider };
 }
 
@@ -181,6 +206,7 @@ function start(gltf) {
   exposure.step = info.exposure / 100;
   exposure.value = info.exposure;
   exposure.addEventListener("input", render);
+  numberBeside(exposure, render);
   orbit.addEventListener("change", render);
   applyQuery(controls, lights);
   render();

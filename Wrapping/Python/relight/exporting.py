@@ -7,7 +7,8 @@ from .vtkRadiosityFilters import vtkRadiosityGLTFWriter
 
 def write_gltf(data, path, exposure=0.0):
     """Writes `data` (the solver's or the relight filter's output) as a .glb file:
-    geometry, `_RADIOSITY_<LIGHT>` per light, COLOR_0 from `Radiosity` x `exposure`, and
+    geometry, `_RADIOSITY_<LIGHT>` per light, COLOR_0 from `Radiosity` x `exposure` (the
+    relight filter's; for the solver's output, every light at its default color), and
     the light names, default colors and exposure in the mesh's extras.relight. Exposure 0:
     the relight filter's (its field array Exposure), else metered as it meters. Raises
     OSError."""
