@@ -196,6 +196,48 @@ TEST(Mesher, ACircleOfManyCornersIsMeshedByArea)
   }
 }
 
+TEST(Mesher, AGearOfManyCornersIsMeshedByItsConvexPieces)
+{
+  // A CAD gear: 1,000 teeth of 4 corners each around a 1 m disk, 1 cm tall. Not convex,
+  // so its ear-clipped triangles were slivers from rim to rim: 72,796 elements. Meshed by
+  // its convex pieces (the disk inside the tooth roots on a grid, each tooth one piece):
+  // about the teeth plus pi / 0.25^2, the same turned, the area kept exactly.
+  const int teeth = 1000;
+  const Vec3 axis = Normalized({ 0.3, 0.8, 0.2 });
+  const Vec3 u = Normalized(Cross(axis, { 1, 0, 0 })), v = Cross(axis, u);
+  std::vector<Vec3> points;
+  std::vector<int> connectivity;
+  for (int i = 0; i < teeth; ++i)
+  {
+    const double step = 2 * 3.14159265358979 / teeth;
+    for (auto [at, radius] : { std::pair{ 0.0, 1.0 }, { 0.25, 1.0 }, { 0.3, 1.01 }, { 0.7, 1.01 } })
+    {
+      const double t = (i + at) * step;
+      connectivity.push_back(static_cast<int>(points.size()));
+      points.push_back(Vec3{ 5, -3, 2 } + u * (radius * std::cos(t)) + v * (radius * std::sin(t)));
+    }
+  }
+  const int corners = static_cast<int>(points.size());
+  ASSERT_FALSE(IsConvex(points.data(), corners));
+  MeshedPolygons m;
+  ASSERT_EQ(MeshPolygons(points, { 0, corners }, connectivity, { 0 }, Sizes(0.5, 0.25), m), "");
+  const size_t elements = m.sourcePolygon.size();
+  std::printf("gear of %d corners: %zu elements, %d patches\n", corners, elements, m.patches);
+  EXPECT_GT(elements, static_cast<size_t>(teeth));
+  EXPECT_LT(elements, static_cast<size_t>(teeth + 200));
+  EXPECT_NEAR(TotalArea(m), PolygonArea(points.data(), corners), 1e-9);
+  EXPECT_EQ(CountElements(points, { 0, corners }, connectivity, 0.5, 0.25), static_cast<double>(elements));
+  for (size_t e = 0; e + 1 < m.offsets.size(); ++e)
+  {
+    std::vector<Vec3> element;
+    for (int k = m.offsets[e]; k < m.offsets[e + 1]; ++k)
+    {
+      element.push_back(m.points[m.connectivity[k]]);
+    }
+    ASSERT_TRUE(IsConvex(element.data(), static_cast<int>(element.size()), 1e-9)) << "element " << e;
+  }
+}
+
 TEST(Mesher, SmallPolygonsShareAPatchInTheirCell)
 {
   // Four 0.2 m squares of one material in one plane, inside one 1 m cell: one patch. A

@@ -11,16 +11,12 @@ namespace
 /// Below this fraction of its longest edge squared, an area is zero: what PolygonProblem
 /// rejects, Triangulate must not make.
 constexpr double ZeroAreaFraction = 1e-12;
+}
 
-/// Twice the area below which corner a-b-c is straight: zero area for PolygonProblem, or
-/// no more than moving its points by `noise` can make of three points in a line. So a
-/// corner that is straight stays straight when a float-stored scene is turned or scaled,
-/// and the polygon is cut into the same triangles.
 double StraightLimit(const Vec3& a, const Vec3& b, const Vec3& c, double noise)
 {
   const double longest = std::max({ Norm(b - a), Norm(c - b), Norm(a - c) });
   return 2 * ZeroAreaFraction * longest * longest + 4 * noise * longest;
-}
 }
 
 Bounds::Bounds(const std::vector<Vec3>& points)

@@ -78,6 +78,12 @@ std::vector<Vec3> GatherLoop(const std::vector<Vec3>& points, const std::vector<
 /// to `noise` as in Triangulate, turn neither way).
 bool IsConvex(const Vec3* loop, int count, double noise = 0);
 
+/// Twice the area below which corner a-b-c is straight: zero area for PolygonProblem, or
+/// no more than moving its points by `noise` can make of three points in a line. So a
+/// corner that is straight stays straight when a float-stored scene is turned or scaled,
+/// and the polygon is cut into the same triangles.
+double StraightLimit(const Vec3& a, const Vec3& b, const Vec3& c, double noise);
+
 /// Twice the largest distance of a point from the points' mean: a scene's size that turning
 /// or moving it does not change (a bounding box's diagonal turns with the axes).
 double Span(const std::vector<Vec3>& points);

@@ -1,5 +1,6 @@
 #include "Mesh/Mesher.h"
 #include "Mesh/AreaGrid.h"
+#include "Mesh/ConvexPieces.h"
 #include "Mesh/CoincidentCopies.h"
 #include "Mesh/ContactCuts.h"
 #include "Mesh/FaceClusters.h"
@@ -8,6 +9,7 @@
 #include "Mesh/TrianglePairs.h"
 
 #include <algorithm>
+#include <functional>
 #include <array>
 #include <cmath>
 #include <iomanip>
@@ -112,8 +114,35 @@ double AreaGridElements(const std::vector<Vec3>& loop, double patch, double elem
   return 2 * grid < CountLattice(loop, patch, element, noise) ? grid : -1;
 }
 
+double CountPlain(const std::vector<Vec3>& loop, double patchSize, double elementSize, double noise);
+
+/// A non-convex polygon of more than kManyCorners corners whose triangles would make more
+/// than twice the elements of its convex pieces (a gear's slivers) is meshed piece by
+/// piece: those pieces, else none.
+constexpr size_t kManyCorners = 8;
+std::vector<std::vector<Vec3>> PiecesToMesh(const std::vector<Vec3>& loop, double patch, double element, double noise)
+{
+  if (loop.size() <= kManyCorners || IsConvex(loop.data(), static_cast<int>(loop.size()), noise))
+  {
+    return {};
+  }
+  std::vector<std::vector<Vec3>> pieces;
+  double elements = 0;
+  for (const std::vector<int>& piece : ConvexPieces(loop, noise))
+  {
+    pieces.emplace_back();
+    for (int i : piece)
+    {
+      pieces.back().push_back(loop[i]);
+    }
+    elements += CountPlain(pieces.back(), patch, element, noise);
+  }
+  return 2 * elements < CountLattice(loop, patch, element, noise) ? pieces : std::vector<std::vector<Vec3>>();
+}
+
 /// Emits a polygon's elements: convex quads on a bilinear grid, convex polygons of many
-/// corners by area (AreaGridElements), others ear-clipped into triangles split on a barycentric
+/// corners by area (AreaGridElements), non-convex ones of many corners by their convex
+/// pieces (PiecesToMesh), others ear-clipped into triangles split on a barycentric
 /// lattice. Returns the number of patches.
 template <typename Emit>
 int SplitPolygon(const std::vector<Vec3>& loop, const MesherOptions& o, double noise, const Emit& emit)
@@ -125,6 +154,20 @@ int SplitPolygon(const std::vector<Vec3>& loop, const MesherOptions& o, double n
   if (AreaGridElements(loop, o.PatchSize, o.ElementSize, noise) >= 0)
   {
     return SplitByAreaGrid(loop, o.PatchSize, o.ElementSize, noise, emit);
+  }
+  const std::vector<std::vector<Vec3>> pieces = PiecesToMesh(loop, o.PatchSize, o.ElementSize, noise);
+  if (!pieces.empty())
+  {
+    int patches = 0;
+    // One Emit type for every piece (a lambda per level would instantiate without end).
+    const std::function<void(const Vec3*, int, int)> shifted = [&](const Vec3* corners, int count, int patch) {
+      emit(corners, count, patches + patch);
+    };
+    for (const std::vector<Vec3>& piece : pieces)
+    {
+      patches += SplitPolygon(piece, o, noise, shifted);
+    }
+    return patches;
   }
   const std::vector<int> corners = Triangulate(loop.data(), static_cast<int>(loop.size()), noise);
   int patches = 0;
@@ -224,7 +267,16 @@ double CountPlain(const std::vector<Vec3>& loop, double patchSize, double elemen
     return CountQuad(loop.data(), patchSize, elementSize);
   }
   const double grid = AreaGridElements(loop, patchSize, elementSize, noise);
-  return grid >= 0 ? grid : CountLattice(loop, patchSize, elementSize, noise);
+  if (grid >= 0)
+  {
+    return grid;
+  }
+  double pieces = 0;
+  for (const std::vector<Vec3>& piece : PiecesToMesh(loop, patchSize, elementSize, noise))
+  {
+    pieces += CountPlain(piece, patchSize, elementSize, noise);
+  }
+  return pieces > 0 ? pieces : CountLattice(loop, patchSize, elementSize, noise);
 }
 
 /// The elements of `loop`'s triangles' lattices.
