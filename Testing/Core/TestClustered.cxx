@@ -43,6 +43,14 @@ Solution Reference(SceneMesh mesh, int lights, int samples = 4)
   return Solve(mesh, lights, o);
 }
 
+/// What the clustered method's sums take for `lights` in RGB: 23 floats a lane per tree
+/// node (a tree of 2n - 1 nodes over n elements), 7 doubles a lane per element.
+double SumsBytes(const SceneMesh& mesh, int lights)
+{
+  const double lanes = 3.0 * lights, elements = mesh.NumberOfPolygons();
+  return (2 * elements - 1) * (23 * lanes * sizeof(float) + 3 * sizeof(double)) + elements * 7 * lanes * sizeof(double);
+}
+
 SceneMesh FurnishedRoom(double patch, double element)
 {
   SceneMesh mesh;
@@ -151,18 +159,19 @@ TEST(Clustered, AStoppedSolveKeepsTheDirectLightAndBooksTheRest)
 
 TEST(Clustered, LinksThatWouldNotFitStopTheSolveWithTheDirectLightAndSayWhy)
 {
-  // The same room under a memory limit far below what its links take: the build stops
-  // once a tenth of it shows the whole would not fit, with the direct light and the reason.
+  // The same room under a memory limit that holds the sums but far from what its links
+  // take: the build stops once a tenth of it shows the whole would not fit, with the direct
+  // light and the reason.
   const SceneMesh mesh = FurnishedRoom(0.6, 0.3);
   SolverOptions full = Options(SolverMethod::Clustered, 1e-4);
   full.SeparateDirect = true;
   SolverOptions capped = full;
   const Solution a = Solve(mesh, 8, full);
-  capped.MemoryLimit = 0.1 * a.Statistics.LinkBytes;
+  capped.MemoryLimit = SumsBytes(mesh, 8) + 0.1 * a.Statistics.LinkBytes;
   const Solution b = Solve(mesh, 8, capped);
   const SolverStatistics& t = b.Statistics;
   EXPECT_TRUE(a.Statistics.OutOfMemory.empty()) << a.Statistics.OutOfMemory;
-  EXPECT_NE(t.OutOfMemory.find("the clustered method's links needs about"), std::string::npos) << t.OutOfMemory;
+  EXPECT_NE(t.OutOfMemory.find("the clustered method's links"), std::string::npos) << t.OutOfMemory;
   EXPECT_NE(t.OutOfMemory.find("MemoryLimit"), std::string::npos) << t.OutOfMemory;
   EXPECT_FALSE(t.Converged);
   EXPECT_FALSE(t.Aborted);
@@ -174,6 +183,36 @@ TEST(Clustered, LinksThatWouldNotFitStopTheSolveWithTheDirectLightAndSayWhy)
   EXPECT_NEAR(radiosity_test::AbsorbedPower(mesh, b) + t.EscapedPower + t.UnshotPower, t.EmittedPower, 1e-9 * t.EmittedPower);
   capped.MemoryLimit = 10 * a.Statistics.LinkBytes; // room to spare: the same answer
   EXPECT_EQ(Solve(mesh, 8, capped).Radiosity[7].x, a.Radiosity[7].x);
+}
+
+TEST(Clustered, SumsThatWouldNotFitStopTheSolveBeforeItsLinks)
+{
+  // The gathering's sums per tree node (8 lights x RGB x 23 floats a node) are known before
+  // any link is: under a limit below them, the solve says so at once, keeps the direct
+  // light and books the rest; under one that holds them but not the links beside them,
+  // the build stops early and names both.
+  const SceneMesh mesh = FurnishedRoom(0.6, 0.3);
+  SolverOptions full = Options(SolverMethod::Clustered, 1e-4);
+  full.SeparateDirect = true;
+  const Solution a = Solve(mesh, 8, full);
+  const double sums = SumsBytes(mesh, 8);
+  std::printf("links %.2f MB, sums %.2f MB\n", a.Statistics.LinkBytes / 1e6, sums / 1e6);
+  SolverOptions capped = full;
+  capped.MemoryLimit = 0.5 * sums;
+  const Solution b = Solve(mesh, 8, capped);
+  const SolverStatistics& t = b.Statistics;
+  EXPECT_NE(t.OutOfMemory.find("the clustered method's sums needs about"), std::string::npos) << t.OutOfMemory;
+  EXPECT_EQ(t.VolumeLinks, 0);
+  EXPECT_FALSE(t.Converged);
+  for (size_t i = 0; i < a.Direct.size(); ++i)
+  {
+    ASSERT_NEAR(b.Radiosity[i].x, a.Direct[i].x, 1e-12 + 1e-9 * a.Direct[i].x) << i;
+  }
+  EXPECT_NEAR(radiosity_test::AbsorbedPower(mesh, b) + t.EscapedPower + t.UnshotPower, t.EmittedPower, 1e-9 * t.EmittedPower);
+  capped.MemoryLimit = 1.1 * sums + 0.5 * a.Statistics.LinkBytes; // the sums fit, not the links beside them
+  const SolverStatistics& u = Solve(mesh, 8, capped).Statistics;
+  EXPECT_NE(u.OutOfMemory.find("the clustered method's links and sums needs about"), std::string::npos) << u.OutOfMemory;
+  EXPECT_LT(u.VolumeLinks, a.Statistics.VolumeLinks / 2);
 }
 
 TEST(Clustered, HundredThousandTriangleSphereRoomSolves)

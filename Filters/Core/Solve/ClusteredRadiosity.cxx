@@ -145,21 +145,41 @@ private:
   /// Whether the links still fit, from what the first `done` of the build holds (`held`
   /// bytes on this rank): every rank agrees, and a build that would not fit stops with the
   /// direct light and says why.
-  bool LinksFit(double done, double held)
+  bool LinksFit(double done, double held, double sums)
   {
     std::string problem;
     if (done >= 0.1) // the first tasks say too little of the rest
     {
       const double all = held / done, sorted = all * ClusterLinkBuilder::kSortedBytes / ClusterLinkBuilder::kFoundBytes;
-      // Against a limit: all of it at once; against the free memory: what is still to come.
-      const double needed = Options.MemoryLimit > 0 ? all + sorted : all - held + sorted;
-      problem = CheckMemory(needed, "the clustered method's links", Options.MemoryLimit);
+      // The most held at once: the links found and sorted, or sorted beside the sums. Against
+      // a limit: all of it; against the free memory: what is still to come.
+      const double most = std::max(all + sorted, sorted + sums);
+      problem = CheckMemory(Options.MemoryLimit > 0 ? most : most - held,
+        sums > all ? "the clustered method's links and sums" : "the clustered method's links", Options.MemoryLimit);
     }
+    return EveryRankFits(problem, "another rank's links would not fit in its memory");
+  }
+
+  /// The bytes of the gathering's sums per tree node and the solve's vectors (8 lights in
+  /// RGB on a million elements: about 3 GB), known before the links are found.
+  double SumsBytes(const ElementTree& tree) const
+  {
+    const double lanes = static_cast<double>(L) * Channel::Doubles;
+    const double perNode = (ClusterGather<Value>::kVector * 2 + ClusterGather<Value>::kSourceSeries +
+                             ClusterGather<Value>::kReceiverSeries) * lanes * sizeof(float) + sizeof(Vec3);
+    const double perElement = 7 * lanes * sizeof(double); // near sums, gathered, the solve's four, its scratch
+    return static_cast<double>(tree.Nodes().size()) * perNode + static_cast<double>(N) * perElement;
+  }
+
+  /// Every rank agrees: where one has a `problem`, the solve stops with the direct light
+  /// and says why.
+  bool EveryRankFits(const std::string& problem, const std::string& elsewhere)
+  {
     double ranksShort = problem.empty() ? 0.0 : 1.0;
     Group.Sum(&ranksShort, 1);
     if (ranksShort > 0)
     {
-      Stats.OutOfMemory = problem.empty() ? "another rank's links would not fit in its memory" : problem;
+      Stats.OutOfMemory = problem.empty() ? elsewhere : problem;
       Stopped = true;
     }
     return !Stopped;
@@ -236,11 +256,17 @@ private:
   void Interreflect(ShooterFormFactors& estimator)
   {
     const ElementTree tree(Mesh, G);
+    const double sums = SumsBytes(tree);
+    if (!EveryRankFits(CheckMemory(sums, "the clustered method's sums", Options.MemoryLimit),
+          "another rank's sums would not fit in its memory"))
+    {
+      return; // said before any link is found: the direct light stands, the rest stays unshot
+    }
     ClusterLinkOptions options;
     options.Samples = Options.Visibility == EffectMode::Off ? 0 : Options.Samples;
     ClusterLinkBuilder builder(Mesh, G, tree, Rays, estimator, options);
     const ClusterLinkSet links = builder.Build(Pool, Group.Rank(), Group.Ranks(),
-      [&](double f, double held) { return KeepGoing(0.2 + 0.5 * f) && LinksFit(f, held); });
+      [&](double f, double held) { return KeepGoing(0.2 + 0.5 * f) && LinksFit(f, held, sums); });
     Stats.RayCount += links.Rays;
     Stats.VolumeLinks += static_cast<long long>(links.FarCount());
     Stats.ElementLinks += static_cast<long long>(links.NearCount());

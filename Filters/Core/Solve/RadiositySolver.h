@@ -59,9 +59,9 @@ struct SolverOptions
   double ConvergenceThreshold = 1e-3;
   /// Stop after this many seconds of shooting (0: no limit); the result stays valid.
   double TimeBudget = 0;
-  /// Bytes the clustered method's links may take (0: 90 % of the memory the system has
-  /// free when they are built). A build that would need more stops with the direct light,
-  /// the reason in SolverStatistics::OutOfMemory.
+  /// Bytes the clustered method's links, and then its links and per-node sums, may take
+  /// (0: 90 % of the memory the system has free when they are made). A solve that would
+  /// need more stops with the direct light, the reason in SolverStatistics::OutOfMemory.
   double MemoryLimit = 0;
   FormFactorMethod Method = FormFactorMethod::Analytic;
   /// Analytic: shadow rays per receiver and shot (0: ignore occlusion); Hemicube: the
