@@ -154,6 +154,8 @@ json AddLightAttributes(vtkPolyData* input, GlbDocument& glb, json& attributes)
 {
   const std::vector<std::string> names = vtkRadiosityLightNames(input->GetFieldData());
   vtkDataArray* defaults = input->GetFieldData()->GetArray("LightDefaultColors");
+  vtkDataArray* inUse = input->GetFieldData()->GetArray("LightColors");
+  vtkDataArray* enabled = input->GetFieldData()->GetArray("LightEnabled");
   json lights = json::array();
   std::set<std::string> taken;
   for (vtkIdType l = 0; l < static_cast<vtkIdType>(names.size()); ++l)
@@ -170,8 +172,17 @@ json AddLightAttributes(vtkPolyData* input, GlbDocument& glb, json& attributes)
     {
       defaults->GetTuple(l, color);
     }
-    lights.push_back(
-      { { "name", names[l] }, { "attribute", attribute }, { "defaultColor", { color[0], color[1], color[2] } } });
+    json record = { { "name", names[l] }, { "attribute", attribute },
+      { "defaultColor", { color[0], color[1], color[2] } } };
+    // The relight filter's settings, where it made the input: a viewer starts from them.
+    if (inUse && inUse->GetNumberOfComponents() == 3 && l < inUse->GetNumberOfTuples() && enabled &&
+      l < enabled->GetNumberOfTuples())
+    {
+      inUse->GetTuple(l, color);
+      record["color"] = { color[0], color[1], color[2] };
+      record["enabled"] = enabled->GetComponent(l, 0) != 0;
+    }
+    lights.push_back(record);
   }
   return lights;
 }

@@ -5,10 +5,12 @@
  * For game engines, web viewers and other tools that change baked light without baking
  * again: the geometry (polygons triangulated), one float RGB vertex attribute per light
  * holding its unit-emission solution (`_RADIOSITY_<NAME>`, from the point arrays
- * `Radiosity_<name>`), and `COLOR_0` with the current relit picture (the point array
- * `Radiosity` times Exposure, clamped to [0, 1]) where the input has it. The mesh's
- * `extras.relight` lists each light's name, attribute and default color
- * (`LightDefaultColors`) and the exposure, so a viewer computes
+ * `Radiosity_<name>`), and `COLOR_0` with the relit picture (the point array `Radiosity`
+ * times Exposure, clamped to [0, 1]; for the solver's output every light at its default
+ * color). The mesh's `extras.relight` lists each light's name, attribute and default color
+ * (`LightDefaultColors`), where the relight filter made the input its color x intensity and
+ * on/off as set there (`color`, `enabled`: a viewer starts from them), and the exposure, so
+ * a viewer computes
  * `sum_i color_i * intensity_i * _RADIOSITY_i * exposure`. The material is unlit
  * (KHR_materials_unlit): the light is in the colors. Coordinates are written as they are
  * (glTF expects metres with +Y up).

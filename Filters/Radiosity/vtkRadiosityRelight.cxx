@@ -787,6 +787,24 @@ std::string vtkRadiosityRelight::Combine(vtkPolyData* input, vtkPolyData* movers
     : error;
 }
 
+void vtkRadiosityRelight::AddSettingsInUse(vtkPolyData* output)
+{
+  // What the writers and the browser viewer start from: the lights as this filter has them.
+  vtkNew<vtkDoubleArray> colors;
+  colors->SetName("LightColors");
+  colors->SetNumberOfComponents(3);
+  vtkNew<vtkUnsignedCharArray> enabled;
+  enabled->SetName("LightEnabled");
+  for (const radiosity::LightSetting& s : this->Internal->Effective)
+  {
+    const radiosity::Vec3 c = s.Color * s.Intensity;
+    colors->InsertNextTuple3(c.x, c.y, c.z);
+    enabled->InsertNextValue(s.Enabled ? 1 : 0);
+  }
+  output->GetFieldData()->AddArray(colors);
+  output->GetFieldData()->AddArray(enabled);
+}
+
 int vtkRadiosityRelight::Relight(
   vtkPolyData* input, vtkPolyData* movers, vtkPolyData* dynamic, double time, vtkPolyData* output)
 {
@@ -831,6 +849,7 @@ int vtkRadiosityRelight::Relight(
   exposure->SetName("Exposure");
   exposure->InsertNextValue(this->ExposureInUse);
   output->GetFieldData()->AddArray(exposure);
+  this->AddSettingsInUse(output);
   if (!this->Internal->Rig.KeyframeTimes().empty())
   {
     output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);

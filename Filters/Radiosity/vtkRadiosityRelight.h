@@ -27,8 +27,9 @@
  *
  * Output: the input plus point and cell arrays `Radiosity` (3 components, linear exitance)
  * and `DisplayColors` (unsigned char RGB: Radiosity times Exposure, clamped, sRGB), the
- * latter active so a default mapper shows it directly, and the field array `Exposure`
- * (the one used: metered unless set).
+ * latter active so a default mapper shows it directly, and the field arrays `Exposure`
+ * (the one used: metered unless set), `LightColors` (each light's color x intensity) and
+ * `LightEnabled` (on/off), which the glTF writer and the browser viewer start from.
  *
  * @sa vtkLightTaggedRadiosity
  */
@@ -154,6 +155,8 @@ private:
   bool LoadSchedule(std::string& error);
   vtkSmartPointer<vtkStringArray> NamesInfo;
   vtkSmartPointer<vtkStringArray> SettingsInfo;
+  /// The field arrays LightColors (color x intensity) and LightEnabled, per light.
+  void AddSettingsInUse(vtkPolyData* output);
   /// Relights `input` (with its moving lights and dynamic objects, either may be null)
   /// into `output`; 0 with the error reported when it cannot.
   int Relight(vtkPolyData* input, vtkPolyData* movers, vtkPolyData* dynamic, double time, vtkPolyData* output);

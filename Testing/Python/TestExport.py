@@ -76,6 +76,8 @@ for entry in lights:
           f"{entry['attribute']}: the unit solution of {entry['name']}, bit for bit in float")
 defaults = numpy_support.vtk_to_numpy(relit.GetFieldData().GetArray("LightDefaultColors"))
 check(np.allclose([entry["defaultColor"] for entry in lights], defaults), "extras carry the default colors")
+check(np.allclose([entry["color"] for entry in lights], [np.asarray(c) * s for c, s in zip(COLOURS, INTENSITIES)])
+      and all(entry["enabled"] for entry in lights), "extras carry the relight filter's colors x intensities, on")
 color = accessor(document, binary, primitive["attributes"]["COLOR_0"])
 expected = np.clip(point_array(relit, "Radiosity") * EXPOSURE, 0, 1)
 check(np.allclose(color, expected, atol=1e-6), "COLOR_0 is the relit radiosity x exposure, clamped")

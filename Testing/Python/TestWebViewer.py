@@ -84,6 +84,22 @@ for i in range(len(names)):
     relit.SetLightEnabled(i, i != amber)
 others = vtk_shot(relit, "vtk_others.png")
 
+# A page exported from the filter as set (Amber boosted, WarmWhite off) starts from it.
+relit.SetLightIntensity(amber, BOOST)
+warm = names.index("WarmWhite")
+relit.SetLightEnabled(warm, False)
+relit.Update()
+set_page = relight.export_viewer(relit.GetOutput(), os.path.join(folder, "set"), CAMERA, SIZE, exposure)
+as_set = browser_shot(set_page, "controls=0", "as_set.png")
+vtk_as_set = vtk_shot(relit, "vtk_as_set.png")
+relit.SetLightIntensity(amber, 1.0)
+relit.SetLightEnabled(warm, True)
+if check(as_set is not None, "Chromium rendered the page exported from the filter as set"):
+    error = np.abs(as_set - vtk_as_set)
+    check(error.mean() < 3.0 and np.percentile(error, 95) < 12 and np.abs(as_set - before).mean() > 5,
+          f"the page starts from the filter's settings (Amber x{BOOST:g}, WarmWhite off): it matches VTK's render "
+          f"(mean {error.mean():.2f}), not the defaults (mean change {np.abs(as_set - before).mean():.1f})")
+
 if check(before is not None and after is not None, "Chromium rendered the page twice"):
     for label, browser, vtk in (("default settings", before, reference), (f"Amber x{BOOST:g}", after, boosted)):
         error = np.abs(browser - vtk)

@@ -104,8 +104,9 @@ function numberBeside(slider, onChange) {
 function controlRow(light, onChange) {
   const row = document.createElement("div");
   row.className = "light";
-  const { hex, intensity } = splitColor(light.defaultColor);
-  row.innerHTML = `<label><input type="checkbox" checked> <span></span></label>
+  // The relight filter's settings where the file has them, else the light's default.
+  const { hex, intensity } = splitColor(light.color || light.defaultColor);
+  row.innerHTML = `<label><input type="checkbox"${light.enabled === false ? "" : " checked"}> <span></span></label>
     <input type="color" value="${hex}">
     <input type="range" min="0" max="${4 * (intensity || 1)}" step="${(intensity || 1) / 100}" value="${intensity}">`;
   row.querySelector("span").textContent = light.name;
