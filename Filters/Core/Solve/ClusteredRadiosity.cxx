@@ -256,31 +256,45 @@ private:
   void Interreflect(ShooterFormFactors& estimator)
   {
     const ElementTree tree(Mesh, G);
+    ClusterLinkSet links;
+    if (!Link(tree, estimator, links))
+    {
+      return; // stopped before or while linking: the direct light stands, the rest stays unshot
+    }
+    Normalize(tree, links, estimator);
+    ClusterGather<Value> gather(G, tree, links, Pool);
+    if (KeepGoing(IterationFraction()))
+    {
+      SolveAlong(gather);
+    }
+  }
+
+  /// The links, when they and the sums beside them fit (said before any link is found
+  /// where the sums alone do not) and nothing stopped the build.
+  bool Link(const ElementTree& tree, const ShooterFormFactors& estimator, ClusterLinkSet& links)
+  {
     const double sums = SumsBytes(tree);
     if (!EveryRankFits(CheckMemory(sums, "the clustered method's sums", Options.MemoryLimit),
           "another rank's sums would not fit in its memory"))
     {
-      return; // said before any link is found: the direct light stands, the rest stays unshot
+      return false;
     }
     ClusterLinkOptions options;
     options.Samples = Options.Visibility == EffectMode::Off ? 0 : Options.Samples;
     ClusterLinkBuilder builder(Mesh, G, tree, Rays, estimator, options);
-    const ClusterLinkSet links = builder.Build(Pool, Group.Rank(), Group.Ranks(),
+    links = builder.Build(Pool, Group.Rank(), Group.Ranks(),
       [&](double f, double held) { return KeepGoing(0.2 + 0.5 * f) && LinksFit(f, held, sums); });
     Stats.RayCount += links.Rays;
     Stats.VolumeLinks += static_cast<long long>(links.FarCount());
     Stats.ElementLinks += static_cast<long long>(links.NearCount());
     Stats.LinkBytes += links.Bytes();
-    if (!links.Complete)
-    {
-      return; // stopped while linking: the direct light stands, the rest stays unshot
-    }
-    Normalize(tree, links, estimator);
-    ClusterGather<Value> gather(G, tree, links, Pool);
-    if (!KeepGoing(IterationFraction()))
-    {
-      return;
-    }
+    return links.Complete;
+  }
+
+  /// The interreflection from the reflected direct light (Last), step by step until what
+  /// one more bounce would add is below the threshold or the solve is stopped.
+  void SolveAlong(ClusterGather<Value>& gather)
+  {
     std::vector<Value> sent;
     Gather(gather, Last, sent);
     ConjugateBounces<Value> solve(G.area, Weights(), L, static_cast<int>(Channel::Doubles));
