@@ -57,6 +57,13 @@ room = relight.in_room(model, margin=1.0)
 bounds = room.GetBounds()
 check(room.GetNumberOfCells() == 12 and np.allclose(bounds, (-0.75, 0.75, 0.0, 1.0, -0.75, 0.75)),
       f"in_room adds six faces a model's extent beyond it, floor under it (bounds {bounds})")
+# A flat model facing up (a rug, a CAD plate) would lie in the floor's plane, both taking
+# the same light: the floor goes a thousandth of its size lower. One facing down sits on it.
+for facing, floor in ((1, -1e-3), (-1, 0.0)):
+    square = [(-0.5, 0, -0.5), (-0.5, 0, 0.5), (0.5, 0, 0.5), (0.5, 0, -0.5)][::facing]
+    flat = relight.in_room(relight.make_scene([square], [(0.5, 0.5, 0.5)], [-1]))
+    check(abs(flat.GetBounds()[2] - floor) < 1e-12,
+          f"a flat model facing {'up' if facing > 0 else 'down'}: the floor at {flat.GetBounds()[2]:g} ({floor:g})")
 names = lambda d: sorted(d.GetCellData().GetArrayName(i) for i in range(d.GetCellData().GetNumberOfArrays()))
 check(names(room) == names(model), f"every cell array is kept ({names(room)})")
 lit = relight.mark_lights(room, lamp)

@@ -43,7 +43,8 @@ def export_viewer(data, folder, camera=None, size=(640, 480), exposure=0.0):
     with tempfile.TemporaryDirectory() as scratch:
         glb = os.path.join(scratch, "scene.glb")
         write_gltf(data, glb, exposure)
-        encoded = base64.b64encode(open(glb, "rb").read()).decode("ascii")
+        with open(glb, "rb") as f:
+            encoded = base64.b64encode(f.read()).decode("ascii")
     view = None
     if camera is not None:
         position, focal, up, angle = camera

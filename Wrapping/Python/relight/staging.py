@@ -50,7 +50,9 @@ def mark_lights(scene, *lights, cells=(), material=None, name="Light", color=(1.
 
 def in_room(model, margin=1.0, up="y", reflectance=(0.7, 0.7, 0.7), floor_reflectance=None):
     """The model standing on the floor of a closed room: the room reaches `margin` x the
-    model's largest extent beyond it on every side and above it; its walls face inwards.
+    model's largest extent beyond it on every side and above it; its walls face inwards. A
+    model with a face in its lowest plane (flat, or on a base plate) is set a thousandth of
+    its size above the floor, so that the two do not overlap.
     Every cell array of the model is kept (the room's cells: LightId -1, no Emission, the
     given Reflectance, zeros elsewhere), and its field arrays (LightNames) too."""
     low, high = _room_box(model, margin, up)
@@ -86,7 +88,32 @@ def _room_box(model, margin, up):
     room_lo = [l - margin * extent for l in lo]
     room_hi = [h + margin * extent for h in hi]
     room_lo[axis] = lo[axis]  # the model stands on the floor
+    if _lies_in_plane(model, axis, lo[axis], 1e-9 * extent):
+        # A face up in the floor's plane (a flat model, a rug) would overlap the floor, and
+        # both would take the same light: the floor goes a thousandth of the size lower.
+        room_lo[axis] -= 1e-3 * extent
     return room_lo, room_hi
+
+
+def _lies_in_plane(model, axis, level, tolerance):
+    """Whether some polygon of `model` lies at `level` along `axis` facing along it, as the
+    floor there would (one facing down sits on the floor, as a box's base does)."""
+    import numpy as np
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+
+    points = vtk_to_numpy(model.GetPoints().GetData()).astype(float)
+    low = np.abs(points[:, axis] - level) <= tolerance
+    polys = model.GetPolys()
+    offsets = vtk_to_numpy(polys.GetOffsetsArray()).astype(np.int64)
+    corners = vtk_to_numpy(polys.GetConnectivityArray()).astype(np.int64)
+    a, b = (axis + 1) % 3, (axis + 2) % 3
+    for start, end in zip(offsets[:-1], offsets[1:]):
+        ids = corners[start:end]
+        if end - start >= 3 and low[ids].all():
+            p, q = points[ids][:, a], points[ids][:, b]
+            if np.sum(p * np.roll(q, -1) - q * np.roll(p, -1)) > 0:  # its normal along +axis
+                return True
+    return False
 
 
 def _box_faces(low, high, up, wall, floor):
