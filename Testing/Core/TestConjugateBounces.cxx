@@ -268,3 +268,27 @@ TEST(ConjugateBounces, EveryLaneIsItsOwnSystem)
     }
   }
 }
+
+TEST(ConjugateBounces, LinksFarFromReciprocalFallBackToBouncing)
+{
+  // A F far from symmetric (one element sends a hundred times what it gets back): the
+  // system is not positive along the first direction (p K p = 2 p1^2 + 2 p2^2 - 10.1 p1 p2
+  // at p = (5, 5)), and the lane takes plain bounces instead, which converge here (W F's
+  // spectral radius is 0.5). The links are reciprocal, so this guards, not a case met.
+  const std::vector<double> area = { 1.0, 1.0 }, weight = { 0.5, 0.5 };
+  const double F[2][2] = { { 0.0, 10.0 }, { 0.1, 0.0 } };
+  const auto apply = [&](const std::vector<double>& v) {
+    return std::vector<double>{ F[0][1] * v[1], F[1][0] * v[0] };
+  };
+  const std::vector<double> x0 = { 100.0, 1.0 };
+  // X = x0 + W F X: X0 = 100 + 5 X1, X1 = 1 + 0.05 X0.
+  const double x1 = (1 + 0.05 * 100) / (1 - 0.25), exact[2] = { 100 + 5 * x1, x1 };
+  ConjugateBounces<double> solve(area, weight, 1, 1);
+  solve.Start(x0, apply(x0));
+  for (int step = 0; step < 60; ++step)
+  {
+    solve.Step(apply(solve.Direction()));
+  }
+  EXPECT_NEAR(solve.Solution()[0], exact[0], 1e-9 * exact[0]);
+  EXPECT_NEAR(solve.Solution()[1], exact[1], 1e-9 * exact[0]);
+}

@@ -90,9 +90,10 @@ function numberBeside(slider, onChange) {
   };
   show();
   slider.addEventListener("input", show);
+  slider.step = "any"; // a typed value is kept as it is, not snapped to the slider's steps
   box.addEventListener("input", () => {
     const wanted = Number(box.value);
-    if (!(wanted >= 0)) return;
+    if (box.value.trim() === "" || !(wanted >= 0)) return; // cleared while retyping: no change yet
     if (wanted > Number(slider.max)) slider.max = String(2 * wanted);
     slider.value = String(wanted);
     onChange();

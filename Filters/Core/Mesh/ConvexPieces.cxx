@@ -108,9 +108,14 @@ private:
         return kNoEar; // a reflex corner inside: cutting it off would leave the loop
       }
     }
+    const double turn = Turn(a, b, c);
+    if (!(turn > 0) || !(Scale > 0))
+    {
+      return kNoEar; // a corner turned reflex by a degenerate loop folding back: no ear
+    }
     // By size to a quarter octave of the loop's area, then in the loop's order: a float-
     // stored model turned or scaled clips the same ears (sizes equal up to rounding tie).
-    return std::round(4 * std::log2(Turn(a, b, c) / Scale));
+    return std::round(4 * std::log2(turn / Scale));
   }
 
   void SetKey(int b, double key)

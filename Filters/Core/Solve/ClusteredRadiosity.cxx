@@ -378,8 +378,13 @@ private:
     Stats.ShotPower += shot;
     Stats.ReceivedPower += received;
     Stats.EscapedPower += shot - received;
+    // The ledger takes the remainder with its signs (it closes exactly so); convergence and
+    // the table keep its magnitude from the last row, so a stopped solve whose remainder
+    // cancels out is not called converged.
+    const std::vector<double> magnitude = RemainingPer;
     UpdateRemaining(true);
     Stats.UnshotPower = std::accumulate(RemainingPer.begin(), RemainingPer.end(), 0.0);
+    RemainingPer = magnitude;
   }
 
   /// What the links bring (h), cut where the clamped cosine's series, which dips below zero

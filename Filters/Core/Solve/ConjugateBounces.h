@@ -42,6 +42,7 @@ public:
     ForEachLane([&](std::size_t, std::size_t i, double w) { z[i] *= w; });
     P = Z;
     RZ = ResidualDotIncrement();
+    Bouncing.assign(Lanes, 0);
   }
 
   /// The direction whose transport Step needs next.
@@ -61,7 +62,18 @@ public:
     std::vector<double> alpha(Lanes, 0.0);
     for (int j = 0; j < Lanes; ++j)
     {
-      alpha[j] = pKp[j] > 0 && RZ[j] > 0 ? RZ[j] / pKp[j] : 0.0; // a lane with nothing left stays
+      if (Bouncing[j])
+      {
+        alpha[j] = 1.0; // along the increment, whole: one bounce
+      }
+      else if (RZ[j] > 0 && !(pKp[j] > 0))
+      {
+        Bouncing[j] = 1; // the system is not positive along p (links far from reciprocal): bounce from here
+      }
+      else
+      {
+        alpha[j] = RZ[j] > 0 ? RZ[j] / pKp[j] : 0.0; // a lane with nothing left stays
+      }
     }
     double* x = Doubles(X);
     double* t = Doubles(Carried);
@@ -75,7 +87,7 @@ public:
     const std::vector<double> rz = ResidualDotIncrement();
     ForEachLane([&](std::size_t, std::size_t i, double) {
       const int j = static_cast<int>(i % Lanes);
-      p[i] = z[i] + (RZ[j] > 0 ? rz[j] / RZ[j] : 0.0) * p[i];
+      p[i] = z[i] + (RZ[j] > 0 && !Bouncing[j] ? rz[j] / RZ[j] : 0.0) * p[i];
     });
     RZ = rz;
   }
@@ -118,6 +130,9 @@ private:
   const int Channels, Lanes;
   std::vector<Value> X, Carried, Z, P;
   std::vector<double> RZ;
+  /// Lanes whose system turned out not positive definite: they take plain bounces (Jacobi
+  /// steps along the increment), which converge wherever bouncing did.
+  std::vector<char> Bouncing;
 };
 
 } // namespace radiosity
