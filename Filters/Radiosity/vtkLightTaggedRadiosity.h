@@ -121,6 +121,9 @@ public:
   /// Solve/SolverMethods.cxx) and their names, which the XML's enumeration repeats.
   static int GetNumberOfSolverMethods();
   static const char* GetSolverMethodName(int value);
+  /// The name of the method set (what was asked: Auto stays Auto; the field array
+  /// SolverMethod says what ran).
+  const char* GetSolverMethodAsString() const { return GetSolverMethodName(this->SolverMethod); }
   ///@}
 
   ///@{

@@ -128,6 +128,13 @@ entries = {int(e.get("value")): e.get("text") for p in root.iter("IntVectorPrope
 check(entries == table, f"the XML's SolverMethod entries {entries} are the core's method table {table}")
 shortcuts = [n for n in table.values() if not hasattr(solver_class(), "SetSolverMethodTo" + n)]
 check(not shortcuts, f"SetSolverMethodTo<Name> for every method (missing: {shortcuts})")
+named = []
+for name in table.values():
+    solver = solver_class()
+    getattr(solver, "SetSolverMethodTo" + name)()
+    named.append(solver.GetSolverMethodAsString())
+check(named == list(table.values()) and solver_class().GetSolverMethodAsString() == "Auto",
+      f"GetSolverMethodAsString names the method set ({named}; Auto by default)")
 guide = open(os.path.join(ROOT, "docs", "design.md"), encoding="utf-8").read()
 check(all(n in guide for n in table.values()), "docs/design.md names every solver method")
 
