@@ -205,18 +205,12 @@ vtkSmartPointer<vtkFloatArray> RelitRadiosity(vtkPolyData* input, bool cells)
     return values;
   }
   const std::vector<std::string> names = vtkRadiosityLightNames(input->GetFieldData());
-  vtkDataArray* defaults = input->GetFieldData()->GetArray("LightDefaultColors");
+  // The colors the relight filter starts from (vtkRadiosityRelight::ResolveWeights).
+  const std::vector<double> weights = vtkRadiosityDefaultLightColors(input, static_cast<int>(names.size()));
   std::vector<std::string> arrays;
-  std::vector<double> weights;
-  for (vtkIdType l = 0; l < static_cast<vtkIdType>(names.size()); ++l)
+  for (const std::string& name : names)
   {
-    double color[3] = { 1, 1, 1 };
-    if (defaults && defaults->GetNumberOfComponents() == 3 && l < defaults->GetNumberOfTuples())
-    {
-      defaults->GetTuple(l, color);
-    }
-    arrays.push_back("Radiosity_" + names[l]);
-    weights.insert(weights.end(), color, color + 3);
+    arrays.push_back("Radiosity_" + name);
   }
   auto combined = vtkSmartPointer<vtkFloatArray>::New();
   std::string error;

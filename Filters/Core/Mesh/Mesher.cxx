@@ -118,16 +118,17 @@ double CountPlain(const std::vector<Vec3>& loop, double patchSize, double elemen
 
 /// A non-convex polygon of more than kManyCorners corners whose triangles would make more
 /// than twice the elements of its convex pieces (a gear's slivers) is meshed piece by
-/// piece: those pieces, else none.
+/// piece: those pieces (and in `elements`, what they make), else none.
 constexpr size_t kManyCorners = 8;
-std::vector<std::vector<Vec3>> PiecesToMesh(const std::vector<Vec3>& loop, double patch, double element, double noise)
+std::vector<std::vector<Vec3>> PiecesToMesh(
+  const std::vector<Vec3>& loop, double patch, double element, double noise, double* elements = nullptr)
 {
   if (loop.size() <= kManyCorners || IsConvex(loop.data(), static_cast<int>(loop.size()), noise))
   {
     return {};
   }
   std::vector<std::vector<Vec3>> pieces;
-  double elements = 0;
+  double made = 0;
   for (const std::vector<int>& piece : ConvexPieces(loop, noise))
   {
     pieces.emplace_back();
@@ -135,9 +136,17 @@ std::vector<std::vector<Vec3>> PiecesToMesh(const std::vector<Vec3>& loop, doubl
     {
       pieces.back().push_back(loop[i]);
     }
-    elements += CountPlain(pieces.back(), patch, element, noise);
+    made += CountPlain(pieces.back(), patch, element, noise);
   }
-  return 2 * elements < CountLattice(loop, patch, element, noise) ? pieces : std::vector<std::vector<Vec3>>();
+  if (!(2 * made < CountLattice(loop, patch, element, noise)))
+  {
+    return {};
+  }
+  if (elements)
+  {
+    *elements = made;
+  }
+  return pieces;
 }
 
 /// Emits a polygon's elements: convex quads on a bilinear grid, convex polygons of many
@@ -272,11 +281,9 @@ double CountPlain(const std::vector<Vec3>& loop, double patchSize, double elemen
     return grid;
   }
   double pieces = 0;
-  for (const std::vector<Vec3>& piece : PiecesToMesh(loop, patchSize, elementSize, noise))
-  {
-    pieces += CountPlain(piece, patchSize, elementSize, noise);
-  }
-  return pieces > 0 ? pieces : CountLattice(loop, patchSize, elementSize, noise);
+  return !PiecesToMesh(loop, patchSize, elementSize, noise, &pieces).empty()
+    ? pieces
+    : CountLattice(loop, patchSize, elementSize, noise);
 }
 
 /// The elements of `loop`'s triangles' lattices.

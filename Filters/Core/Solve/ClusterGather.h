@@ -34,6 +34,12 @@ public:
   static constexpr int kVector = 3, kSourceSeries = 7, kReceiverSeries = 10;
   static constexpr int kChannels = sizeof(Value) / sizeof(double);
 
+  /// What the sums of one tree node take for `lanes` lanes (sent and received, the centre).
+  static double BytesPerNode(double lanes)
+  {
+    return (2 * kVector + kSourceSeries + kReceiverSeries) * lanes * sizeof(float) + sizeof(Vec3);
+  }
+
   ClusterGather(const SceneGeometry& g, const ElementTree& tree, const ClusterLinkSet& links, const WorkerPool& pool)
     : G(g)
     , Tree(tree)

@@ -165,8 +165,7 @@ private:
   double SumsBytes(const ElementTree& tree) const
   {
     const double lanes = static_cast<double>(L) * Channel::Doubles;
-    const double perNode = (ClusterGather<Value>::kVector * 2 + ClusterGather<Value>::kSourceSeries +
-                             ClusterGather<Value>::kReceiverSeries) * lanes * sizeof(float) + sizeof(Vec3);
+    const double perNode = ClusterGather<Value>::BytesPerNode(lanes);
     const double perElement = 7 * lanes * sizeof(double); // near sums, gathered, the solve's four, its scratch
     return static_cast<double>(tree.Nodes().size()) * perNode + static_cast<double>(N) * perElement;
   }
