@@ -1,6 +1,7 @@
 """A real third-party building: KIT's FZK-Haus (IFC from Debian's assimp-testmodels, read by
 relight.import_scene through assimp), 6 ceiling lamps, Hierarchical solve, two pictures from inside. Run:
-./relight python Testing/Benchmark/house.py [--element 0.25] [--patch 0.5] [--time-budget 0] [--out out/bench]"""
+./relight python Testing/Benchmark/house.py [--element 0.25] [--patch 0.5] [--time-budget 0] [--out out/bench]
+    [--reference]  (error against Mitsuba 3 at 600 probe points; needs out/mitsuba-venv)"""
 
 import argparse, pathlib, resource, subprocess
 import numpy as np
@@ -142,6 +143,19 @@ def render(solver, shots, out):
     return relit.GetExposure()
 
 
+def accuracy(result, out, python, names):
+    """Mean per-light error against Mitsuba at probe points, and how ours compares where the
+    house is lit (median ratio)."""
+    import house_reference
+    scene, csv = out / "house_room.json", out / "house_reference.csv"
+    cells = house_reference.export(result, scene)
+    house_reference.render(scene, csv, python)
+    errors, median, lit = house_reference.compare(result, cells, csv, names)
+    print("error against Mitsuba: " + ", ".join(f"{n} {100 * e:.1f} %" for n, e in errors.items()))
+    return dict(mean_error_pct=round(100 * float(np.mean(list(errors.values()))), 2),
+                lit_median_ratio=round(median, 3), lit_probes=lit)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--element", type=float, default=0.25, help="ElementSize, m (0.1 gives ~830k elements)")
@@ -150,6 +164,8 @@ def main():
     parser.add_argument("--cluster-angle", type=float, default=30.0, help="the mesher's ClusterAngle (0: no face clusters)")
     parser.add_argument("--time-budget", type=float, default=0.0, help="the solver's TimeBudget, s (0: solve to convergence)")
     parser.add_argument("--method", default="Auto", help="SolverMethod: Auto, ProgressiveRefinement, Hierarchical, Clustered")
+    parser.add_argument("--reference", action="store_true", help="compare with Mitsuba 3 at probe points (rendered once per mesh)")
+    parser.add_argument("--mitsuba-python", default="out/mitsuba-venv/bin/python", help="a Python with mitsuba installed")
     args = parser.parse_args()
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
@@ -172,6 +188,8 @@ def main():
                shots=solver.GetLastShots(), converged=bool(solver.GetLastConverged()),
                peak_mib=round(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024),
                warnings=len(warnings))
+    if args.reference:
+        row.update(accuracy(result, out, args.mitsuba_python, [f"Lamp{i}" for i in range(k)]))
     exposure = render(solver, [camera(rays, *lamps[0]), camera(rays, *lamps[-1])], out)  # one per storey
     summary = "\n".join([f"{key}: {value}" for key, value in row.items()] + [f"SolverMethod: {method}",
                          f"exposure: {exposure:.4g}"] + [f"warning: {w.strip().splitlines()[-1]}" for w in warnings])

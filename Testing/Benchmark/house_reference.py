@@ -1,0 +1,80 @@
+"""An independent check of a solved scene: Mitsuba 3 (mitsuba_reference.py) at probe points
+on element centroids, drawn by area with a fixed seed, every element sent as its own polygon
+so both renderers see the same geometry. Used by house.py --reference."""
+
+import json, pathlib, subprocess
+import numpy as np
+import relight
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+HERE = pathlib.Path(__file__).resolve().parent
+
+
+def _loops(mesh):
+    polys = mesh.GetPolys()
+    offsets = vtk_to_numpy(polys.GetOffsetsArray())
+    ids = vtk_to_numpy(polys.GetConnectivityArray())
+    return [ids[offsets[c]:offsets[c + 1]] for c in range(len(offsets) - 1)]
+
+
+def _centroids_normals_areas(points, loops):
+    cents, normals, areas = [], [], []
+    for loop in loops:
+        p = points[loop]
+        twice = np.cross(p, np.roll(p, -1, axis=0)).sum(axis=0)  # the loop's doubled area vector
+        size = np.linalg.norm(twice)
+        cents.append(p.mean(axis=0)), normals.append(twice / size if size > 0 else twice), areas.append(0.5 * size)
+    return np.array(cents), np.array(normals), np.array(areas)
+
+
+def export(mesh, path, probes=600, seed=7):
+    """The solver's output (polygons only) as mitsuba_reference.py's JSON; probes on
+    non-emitting elements, by area. Returns the probes' cell ids."""
+    points = vtk_to_numpy(mesh.GetPoints().GetData()).astype(float)
+    loops = _loops(mesh)
+    light = np.asarray(relight.cell_array(mesh, "LightId")).astype(int)
+    reflectance = np.asarray(relight.cell_array(mesh, "Reflectance"), float).reshape(len(loops), -1)
+    reflectance = np.repeat(reflectance, 3 // reflectance.shape[1], axis=1)
+    cents, normals, areas = _centroids_normals_areas(points, loops)
+    candidates = np.flatnonzero((light < 0) & (areas > 0))
+    pick = np.random.default_rng(seed).choice(candidates, min(probes, len(candidates)), replace=False,
+                                              p=areas[candidates] / areas[candidates].sum())
+    scene = {"lights": int(light.max()) + 1,
+             "polygons": [{"points": points[l].tolist(), "reflectance": reflectance[c].tolist(), "light": int(light[c])}
+                          for c, l in enumerate(loops)],
+             "probes": [{"point": cents[c].tolist(), "normal": normals[c].tolist(), "seen": True, "cell": int(c)}
+                        for c in pick]}
+    text = json.dumps(scene)
+    if not path.exists() or path.read_text() != text:  # an unchanged scene keeps its reference
+        path.write_text(text)
+    return pick
+
+
+def render(scene_path, csv_path, python, spp=8192):
+    """Mitsuba's radiosity at the probes, rendered once per scene (kept while the JSON is
+    unchanged: its copy beside the csv says which scene the csv belongs to)."""
+    rendered = csv_path.with_suffix(".json")
+    if csv_path.exists() and rendered.exists() and rendered.read_text() == scene_path.read_text():
+        return
+    subprocess.run([str(python), str(HERE / "mitsuba_reference.py"), str(scene_path), str(csv_path), "--spp", str(spp)],
+                   check=True)
+    rendered.write_text(scene_path.read_text())
+
+
+def compare(mesh, cells, csv_path, names):
+    """Per light, the mean |ours - Mitsuba| over the probes over Mitsuba's mean (ours at a
+    centroid: the mean of the element's corner values), and over the probes Mitsuba finds
+    lit (above a fifth of the mean, all lights on) the median of ours / Mitsuba."""
+    loops = _loops(mesh)
+    table = np.loadtxt(csv_path, delimiter=",", skiprows=1, ndmin=2)
+    errors, ours_all, ref_all = {}, 0.0, 0.0
+    for k, name in enumerate(names):
+        rows = table[table[:, 1] == k]
+        want = np.zeros(len(cells))
+        want[rows[:, 0].astype(int)] = rows[:, 2:5].mean(axis=1)
+        values = relight.point_array(mesh, f"Radiosity_{name}").reshape(mesh.GetNumberOfPoints(), -1)
+        got = np.array([values[loops[c]].mean() for c in cells])
+        errors[name] = float(np.abs(got - want).mean() / want.mean())
+        ours_all, ref_all = ours_all + got, ref_all + want
+    lit = ref_all > 0.2 * ref_all.mean()
+    return errors, float(np.median(ours_all[lit] / ref_all[lit])), int(lit.sum())
