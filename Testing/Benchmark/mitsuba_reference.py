@@ -20,7 +20,8 @@ Why the setup is equivalent to the radiosity model:
     the right-hand-rule front side of the JSON quads.
   * An `area` emitter emits from the front face only; radiance 1/pi gives
     unit exitance (M = pi * L).
-  * A `radiancemeter` a hair (1e-4) above the point, looking along -normal,
+  * A `radiancemeter` a hair (2e-5 of the scene's diagonal; 1e-4 in the self-test)
+    above the point, looking along -normal,
     records the radiance leaving the surface there; a diffuse surface has
     B = pi * L. Probes on an emitting quad would include its emission (1).
   * The `path` integrator runs with unlimited depth (Russian roulette keeps it
@@ -35,7 +36,9 @@ import mitsuba as mi
 
 mi.set_variant("scalar_rgb")
 
-EPS = 1e-4
+EPS = 1e-4  # the self-test's lift; a scene's is LIFT x its diagonal
+LIFT = 2e-5  # relative: at a fixed 1e-4, a scene in millimetres lifts the meter by a few
+# float steps and Mitsuba's ray misses the surface below it (0 on the Cornell box's blocks)
 
 
 def make_mesh(name, loops, reflectance, radiance=None):
@@ -76,11 +79,11 @@ def make_scene(polygons, active_light):
     return mi.load_dict(scene)
 
 
-def meter(point, normal, seed, spp):
-    """Radiancemeter just above `point`, looking down at it."""
+def meter(point, normal, seed, spp, eps=EPS):
+    """Radiancemeter `eps` above `point`, looking down at it."""
     n = mi.ScalarVector3f(normal)
     n = n / math.sqrt(n[0] ** 2 + n[1] ** 2 + n[2] ** 2)
-    origin = mi.ScalarPoint3f(point) + EPS * n
+    origin = mi.ScalarPoint3f(point) + eps * n
     return mi.load_dict({
         "type": "radiancemeter",
         "origin": list(origin), "direction": list(-n),
@@ -96,7 +99,15 @@ def radiosity(scene, point, normal, spp, seed=0):
     return [math.pi * float(arr[c]) for c in range(3)]
 
 
-def batch_radiosity(scene, probes, spp, seed):
+def lift(polygons):
+    """How far above its point each meter sits: LIFT x the scene's diagonal."""
+    corners = [c for poly in polygons for c in poly["points"]]
+    low = [min(c[i] for c in corners) for i in range(3)]
+    high = [max(c[i] for c in corners) for i in range(3)]
+    return LIFT * math.sqrt(sum((h - l) ** 2 for l, h in zip(low, high)))
+
+
+def batch_radiosity(scene, probes, spp, seed, eps=EPS):
     """All probes in one render: a `batch` sensor of radiancemeters, one film
     pixel each. mi.render already spreads the film's blocks over all cores, and
     one render per light avoids the per-render overhead (measured ~2x faster
@@ -106,7 +117,7 @@ def batch_radiosity(scene, probes, spp, seed):
                        "rfilter": {"type": "box"}, "pixel_format": "rgb"},
               "sampler": {"type": "independent", "sample_count": spp}}
     for k, pr in enumerate(probes):
-        sensor["m%06d" % k] = meter(pr["point"], pr["normal"], seed, spp)
+        sensor["m%06d" % k] = meter(pr["point"], pr["normal"], seed, spp, eps)
     arr = mi.render(scene, sensor=mi.load_dict(sensor), spp=spp, seed=seed).array
     return [[math.pi * float(arr[3 * k + c]) for c in range(3)] for k in range(len(probes))]
 
@@ -119,13 +130,14 @@ def run(args):
     seen = [i for i, p in enumerate(probes) if p["seen"]]
     if args.probes > 0:
         seen = seen[:args.probes]
+    eps = lift(polys)
     t0 = time.time()
     with open(args.output, "w") as f:
         f.write("probe,light,r,g,b\n")
         for k in range(K):
             t = time.time()
             # Distinct seed per light so the lights' estimates are independent.
-            res = batch_radiosity(make_scene(polys, k), [probes[i] for i in seen], args.spp, seed=k)
+            res = batch_radiosity(make_scene(polys, k), [probes[i] for i in seen], args.spp, seed=k, eps=eps)
             for i, b in zip(seen, res):
                 f.write("%d,%d,%.7g,%.7g,%.7g\n" % (i, k, *b))
             print("light %d: %.1f s" % (k, time.time() - t), flush=True)
