@@ -3,7 +3,7 @@ an error and an empty output, and pvbatch carries on, where VTK's loaders crashe
 whole application. The files are a few of TestHostileFiles.py's known cases.
 
 Usage:
-    pvbatch Testing/Python/TestHostileFilesParaView.py <plugin.so>
+    pvbatch Plugin/Testing/Python/TestHostileFilesParaView.py <plugin.so>
 """
 
 import os
@@ -13,7 +13,7 @@ import tempfile
 from paraview.simple import *  # noqa: F401,F403  (LoadPlugin, RadiositySceneReader, ...)
 from paraview import servermanager
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "Filters", "Testing", "Python"))  # the filters' test helpers
 import TestHostileFiles as corpus  # noqa: E402  (its corpus only: importing it runs no test)
 
 LoadPlugin(sys.argv[1], ns=globals())

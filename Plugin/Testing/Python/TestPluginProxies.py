@@ -1,7 +1,7 @@
 """End-to-end test of the RadiosityRelight ParaView plugin proxies.
 
 Usage:
-    pvbatch Testing/Python/TestPluginProxies.py <plugin.so> <cornell_box.vtp> [screenshot.png]
+    pvbatch Plugin/Testing/Python/TestPluginProxies.py <plugin.so> <cornell_box.vtp> [screenshot.png]
 
 Loads the plugin, runs reader -> RadiosityMesher -> LightTaggedRadiosity ->
 RadiosityRelight on the Cornell box (millimetres), fetches the results and
@@ -17,7 +17,7 @@ import tempfile
 from paraview.simple import *  # noqa: F401,F403  (LoadPlugin, Show, Render, ...)
 from paraview import servermanager
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "Filters", "Testing", "Python"))  # the filters' test helpers
 from settingstable import setting_rows  # noqa: E402
 
 import numpy as np

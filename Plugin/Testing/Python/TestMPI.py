@@ -8,6 +8,7 @@ of the elements, whichever rank holds them."""
 import os
 import re
 import shutil
+import sys
 import subprocess
 import tempfile
 
@@ -17,7 +18,8 @@ from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter
 
 import relight
 from relight import cell_array, cell_centroids, light_names, point_array, read_polydata
-from testlib import check, finish
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "Filters", "Testing", "Python"))
+from testlib import check, finish  # noqa: E402  (the filters' test helpers)
 
 vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_OFF)
 ROOT = os.environ.get("RELIGHT_ROOT", ".")
@@ -31,7 +33,7 @@ def parallel_run(mode, ranks=2, extra=()):
     env = dict(os.environ, PV_PLUGIN_PATH=PLUGIN_DIR)
     # A hang (a rank left waiting in a collective) fails by the timeout.
     run = subprocess.run([shutil.which("mpiexec"), "--allow-run-as-root", "--oversubscribe", "-np", str(ranks),
-                          "pvbatch", "--mpi", os.path.join(ROOT, "Testing", "Python", "mpi_solve.py"), SCENE, out, mode, *extra],
+                          "pvbatch", "--mpi", os.path.join(os.path.dirname(os.path.abspath(__file__)), "mpi_solve.py"), SCENE, out, mode, *extra],
                          capture_output=True, text=True, env=env, timeout=300)
     errors = [line for line in (run.stdout + run.stderr).splitlines() if "ERR|" in line or "Traceback" in line]
     reader = vtkXMLPolyDataReader()
