@@ -78,6 +78,7 @@ void vtkLightTaggedRadiosity::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumShots: " << this->MaximumShots << "\n";
   os << indent << "ConvergenceThreshold: " << this->ConvergenceThreshold << "\n";
   os << indent << "TimeBudget: " << this->TimeBudget << "\n";
+  os << indent << "ClusterSeparation: " << this->ClusterSeparation << "\n";
   os << indent << "AmbientTerm: " << this->AmbientTerm << "\n";
   os << indent << "SeparateDirect: " << this->SeparateDirect << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
@@ -205,6 +206,7 @@ radiosity::SolverOptions vtkLightTaggedRadiosity::Options(int threads, const rad
   options.MaximumShots = this->MaximumShots;
   options.ConvergenceThreshold = this->ConvergenceThreshold;
   options.TimeBudget = this->TimeBudget;
+  options.Clustered.Separation = this->ClusterSeparation;
   options.Method = static_cast<radiosity::FormFactorMethod>(this->FormFactorMethod);
   options.Samples = this->FormFactorSamples;
   options.Threads = threads;

@@ -100,7 +100,7 @@ def add_lamps(house, lamps, half=0.15):
     return marker.GetOutput()
 
 
-def solve(scene, patch, element, cluster_angle=30.0, time_budget=0.0, method="Auto"):
+def solve(scene, patch, element, cluster_angle=30.0, time_budget=0.0, method="Auto", separation=4.0):
     """Mesh + solve at the solver's default settings (Auto picks Hierarchical at this size);
     keeps warnings and errors."""
     mesher = relight.vtkRadiosityMesher()
@@ -109,6 +109,7 @@ def solve(scene, patch, element, cluster_angle=30.0, time_budget=0.0, method="Au
     solver = relight.vtkLightTaggedRadiosity()
     solver.SetInputConnection(mesher.GetOutputPort())
     solver.SetTimeBudget(time_budget)
+    solver.SetClusterSeparation(separation)
     getattr(solver, f"SetSolverMethodTo{method}")()
     catchers = [relight.ErrorCatcher(mesher), relight.ErrorCatcher(solver)]
     solver.Update()
@@ -164,6 +165,8 @@ def main():
     parser.add_argument("--cluster-angle", type=float, default=30.0, help="the mesher's ClusterAngle (0: no face clusters)")
     parser.add_argument("--time-budget", type=float, default=0.0, help="the solver's TimeBudget, s (0: solve to convergence)")
     parser.add_argument("--method", default="Auto", help="SolverMethod: Auto, ProgressiveRefinement, Hierarchical, Clustered")
+    parser.add_argument("--cluster-separation", type=float, default=4.0,
+                        help="ClusterSeparation (clustered method): larger is more accurate and slower")
     parser.add_argument("--reference", action="store_true", help="compare with Mitsuba 3 at probe points (rendered once per mesh)")
     parser.add_argument("--mitsuba-python", default="out/mitsuba-venv/bin/python", help="a Python with mitsuba installed")
     args = parser.parse_args()
@@ -178,13 +181,14 @@ def main():
     print("\n".join(f"Lamp{i}: {np.round(p, 2)} (floor at {f} m)" for i, (f, p) in enumerate(lamps)))
     k = len(lamps)
     scene = add_lamps(house, lamps)
-    solver, warnings = solve(scene, args.patch, args.element, args.cluster_angle, args.time_budget, args.method)
+    solver, warnings = solve(scene, args.patch, args.element, args.cluster_angle, args.time_budget, args.method,
+                             args.cluster_separation)
     result = solver.GetOutput()
     method = result.GetFieldData().GetAbstractArray("SolverMethod").GetValue(0)
     commit = subprocess.run(["git", "describe", "--always", "--dirty"], capture_output=True, text=True).stdout.strip()
     row = dict(commit=commit or "?", polygons=scene.GetNumberOfCells(), elements=result.GetNumberOfCells(),
                patches=len(np.unique(relight.cell_array(result, "PatchId"))), lights=k,
-               element=args.element, patch=args.patch, method=args.method, solve_s=round(solver.GetLastSolveSeconds(), 2),
+               element=args.element, patch=args.patch, method=args.method, separation=args.cluster_separation, solve_s=round(solver.GetLastSolveSeconds(), 2),
                shots=solver.GetLastShots(), converged=bool(solver.GetLastConverged()),
                peak_mib=round(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024),
                warnings=len(warnings))

@@ -280,6 +280,8 @@ private:
     }
     ClusterLinkOptions options;
     options.Samples = Options.Visibility == EffectMode::Off ? 0 : Options.Samples;
+    options.Separation = Options.Clustered.Separation;
+    options.MixedSeparation = 1.5 * Options.Clustered.Separation;
     ClusterLinkBuilder builder(Mesh, G, tree, Rays, estimator, options);
     links = builder.Build(Pool, Group.Rank(), Group.Ranks(),
       [&](double f, double held) { return KeepGoing(0.2 + 0.5 * f) && LinksFit(f, held, sums); });

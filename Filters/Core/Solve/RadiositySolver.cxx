@@ -90,6 +90,11 @@ std::string OptionsProblem(const SolverOptions& options)
   {
     return "TimeBudget is " + std::to_string(options.TimeBudget) + "; it is seconds, 0 for none";
   }
+  if (!std::isfinite(options.Clustered.Separation) || options.Clustered.Separation < 2)
+  {
+    return "ClusterSeparation is " + std::to_string(options.Clustered.Separation) +
+      "; it is a multiple of two groups' radii, 2 or more (4 by default)";
+  }
   return std::string();
 }
 

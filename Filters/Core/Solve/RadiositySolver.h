@@ -106,6 +106,16 @@ struct SolverOptions
     /// 0.81 % against progressive refinement at 1e-4).
     double RefinementThreshold = 0;
   } Hierarchical;
+  /// What the clustered method alone reads.
+  struct ClusteredSettings
+  {
+    /// Two groups of elements exchange light as a whole when their centres are farther
+    /// apart than this many times the sum of their radii (1.5 times it where one side
+    /// does not all face the other). Larger is more accurate and slower: the FZK-Haus at
+    /// 0.5 m elements, against Mitsuba 3, 18.3 % mean error at 3, 15.0 % at 4, 12.3 % at 6
+    /// (progressive refinement: 10.0 %), in 16, 22 and 34 s.
+    double Separation = 4.0;
+  } Clustered;
   /// Several processes solving together: each computes the transport to its own share of
   /// the receivers (OwnedPatches), and they agree on each shot through Group.SumAll. Every
   /// rank passes the whole scene and gets the whole solution. Default: one process.

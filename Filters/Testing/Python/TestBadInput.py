@@ -106,6 +106,7 @@ expect_error(solver, relight.furnace_box(rho=1.0), "no finite solution")
 # Settings that cannot mean anything: a NaN threshold ended every solve at once as "converged".
 expect_error(solver, scene(), "ConvergenceThreshold is nan", setup=lambda s: s.SetConvergenceThreshold(nan))
 expect_error(solver, scene(), "TimeBudget is nan", setup=lambda s: s.SetTimeBudget(nan))
+expect_error(solver, scene(), "ClusterSeparation is 1.5", setup=lambda s: s.SetClusterSeparation(1.5))
 expect_error(mesher, scene(), "choose a larger ElementSize", setup=lambda m: m.SetElementSize(1e-9))
 
 # Relight: no solutions, wrong array types, NaN inside a solution.

@@ -106,6 +106,43 @@ TEST(Clustered, SphereRoomEqualsProgressiveRefinement)
   }
 }
 
+TEST(Clustered, WiderSeparationComesCloserToProgressiveRefinement)
+{
+  // The separation at which groups of elements exchange light whole is the method's
+  // accuracy knob: farther means more, smaller links, and less of the far-field error.
+  const int lamps = 8;
+  const SceneMesh mesh = FurnishedRoom(1.0, 0.25);
+  const Solution reference = Reference(mesh, lamps);
+  double previous = 1, links = 0;
+  for (double separation : { 2.5, 4.0, 8.0 })
+  {
+    SolverOptions o = Options(SolverMethod::Clustered, 1e-4);
+    o.Clustered.Separation = separation;
+    const Solution s = Solve(mesh, lamps, o);
+    double mean = 0;
+    for (double d : RelativeDifference(mesh, s, reference))
+    {
+      mean += d / lamps;
+    }
+    const double made = static_cast<double>(s.Statistics.VolumeLinks + s.Statistics.ElementLinks);
+    std::printf("separation %.1f: %.3f %% from progressive refinement, %.0f links\n", separation, 100 * mean, made);
+    EXPECT_LT(mean, previous);
+    EXPECT_GT(made, links);
+    previous = mean, links = made;
+  }
+}
+
+TEST(Clustered, SeparationBelowTwoIsAnError)
+{
+  for (double separation : { 1.5, std::nan(""), -4.0 })
+  {
+    SolverOptions o = Options(SolverMethod::Clustered, 1e-3);
+    o.Clustered.Separation = separation;
+    EXPECT_NE(OptionsProblem(o).find("ClusterSeparation is"), std::string::npos) << separation;
+  }
+  EXPECT_EQ(OptionsProblem(Options(SolverMethod::Clustered, 1e-3)), "");
+}
+
 TEST(Clustered, TaggedEqualsCombinedAndTheLedgerCloses)
 {
   // The links do not depend on the lights: the sum of the k unit solutions is one solve
