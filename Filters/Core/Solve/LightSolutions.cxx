@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <set>
+#include <stdexcept>
+#include <string>
 
 namespace radiosity
 {
@@ -251,6 +253,25 @@ Solution SolveLights(const RadiositySolver& solver, const SceneMesh& mesh,
   const LightGrouping& grouping, const std::vector<Vec3>& emissionColor, SolutionMode mode,
   const SolverOptions& options)
 {
+  // A grouping of fewer lights than the scene has indexed past its end and wrote over the
+  // heap (a test that passed 3 for the furnished room's 8 lamps): said instead.
+  for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
+  {
+    if (mesh.lightId[e] >= static_cast<int>(grouping.SolutionOfLight.size()))
+    {
+      throw std::invalid_argument("polygon " + std::to_string(e) + " belongs to light " +
+        std::to_string(mesh.lightId[e]) + ", but the grouping covers " +
+        std::to_string(grouping.SolutionOfLight.size()) + " lights");
+    }
+  }
+  for (int solution : grouping.SolutionOfLight)
+  {
+    if (solution < 0 || solution >= grouping.Solutions)
+    {
+      throw std::invalid_argument("the grouping names solution " + std::to_string(solution) + " of " +
+        std::to_string(grouping.Solutions));
+    }
+  }
   Solution out = SolveInMode(solver, mesh, grouping, emissionColor, mode, options);
   out.Effects = DescribeEffects(
     mesh, options, out, grouping, static_cast<int>(grouping.SolutionOfLight.size()), mode);

@@ -37,6 +37,7 @@ std::vector<Vec3> DefaultColors(const SceneMesh& mesh, const LightGrouping& grou
   const std::vector<Vec3>& emissionColor);
 
 /// `emissionColor` (per element, may be empty) is used by StandardCombined and by banks.
+/// Throws std::invalid_argument where the grouping does not cover every light of the scene.
 /// The solution carries the solver's account of its effects (DescribeEffects); the
 /// moving-light basis row says "skipped" until SolvePatchBasis records a basis in it.
 Solution SolveLights(const RadiositySolver& solver, const SceneMesh& mesh,

@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 using namespace radiosity;
 using radiosity_test::Box;
@@ -129,6 +130,23 @@ TEST(Clustered, WiderSeparationComesCloserToProgressiveRefinement)
     EXPECT_LT(mean, previous);
     EXPECT_GT(made, links);
     previous = mean, links = made;
+  }
+}
+
+TEST(Clustered, AGroupingOfTooFewLightsIsAnError)
+{
+  // The furnished room has 8 lamps: a grouping of 3 wrote past its end before.
+  const SceneMesh mesh = FurnishedRoom(2.0, 1.0);
+  const RadiositySolver solver(mesh);
+  try
+  {
+    SolveLights(solver, mesh, LightGrouping::OnePerLight(3), {}, SolutionMode::LightTagged,
+      Options(SolverMethod::Clustered, 1e-3));
+    FAIL() << "no error";
+  }
+  catch (const std::invalid_argument& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("the grouping covers 3 lights"), std::string::npos) << e.what();
   }
 }
 
