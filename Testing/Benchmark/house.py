@@ -1,5 +1,5 @@
 """A real third-party building: KIT's FZK-Haus (IFC from Debian's assimp-testmodels, read by
-relight.import_scene through assimp), 6 ceiling lamps, Hierarchical solve, two pictures from inside. Run:
+relight.import_scene through assimp), 6 ceiling lamps, solved at the defaults (Auto picks the clustered method), two pictures from inside. Run:
 ./relight python Testing/Benchmark/house.py [--element 0.25] [--patch 0.5] [--time-budget 0] [--out out/bench]
     [--reference]  (error against Mitsuba 3 at 600 probe points; needs out/mitsuba-venv)"""
 
@@ -101,7 +101,7 @@ def add_lamps(house, lamps, half=0.15):
 
 
 def solve(scene, patch, element, cluster_angle=30.0, time_budget=0.0, method="Auto", separation=4.0):
-    """Mesh + solve at the solver's default settings (Auto picks Hierarchical at this size);
+    """Mesh + solve at the solver's default settings (Auto picks the clustered method here);
     keeps warnings and errors."""
     mesher = relight.vtkRadiosityMesher()
     mesher.SetInputData(scene)

@@ -2,7 +2,7 @@
 on element centroids, drawn by area with a fixed seed, every element sent as its own polygon
 so both renderers see the same geometry. Used by house.py --reference."""
 
-import json, pathlib, subprocess
+import hashlib, json, pathlib, subprocess
 import numpy as np
 import relight
 from vtkmodules.util.numpy_support import vtk_to_numpy
@@ -51,14 +51,15 @@ def export(mesh, path, probes=600, seed=7):
 
 
 def render(scene_path, csv_path, python, spp=8192):
-    """Mitsuba's radiosity at the probes, rendered once per scene (kept while the JSON is
-    unchanged: its copy beside the csv says which scene the csv belongs to)."""
-    rendered = csv_path.with_suffix(".json")
-    if csv_path.exists() and rendered.exists() and rendered.read_text() == scene_path.read_text():
+    """Mitsuba's radiosity at the probes, rendered once per scene, sample count and version of
+    mitsuba_reference.py (a digest of the three beside the csv says what it was made from)."""
+    script = HERE / "mitsuba_reference.py"
+    made_from = hashlib.sha256(scene_path.read_bytes() + str(spp).encode() + script.read_bytes()).hexdigest()
+    key = csv_path.with_suffix(".key")
+    if csv_path.exists() and key.exists() and key.read_text() == made_from:
         return
-    subprocess.run([str(python), str(HERE / "mitsuba_reference.py"), str(scene_path), str(csv_path), "--spp", str(spp)],
-                   check=True)
-    rendered.write_text(scene_path.read_text())
+    subprocess.run([str(python), str(script), str(scene_path), str(csv_path), "--spp", str(spp)], check=True)
+    key.write_text(made_from)
 
 
 def compare(mesh, cells, csv_path, names):

@@ -37,6 +37,29 @@ std::string LightGrouping::FromBanks(const std::vector<int>& banks, int lights, 
   return std::string();
 }
 
+void CheckGrouping(const SceneMesh& mesh, const LightGrouping& grouping)
+{
+  // A grouping of fewer lights than the scene has indexed past its end and wrote over the
+  // heap (a test that passed 3 for the furnished room's 8 lamps): said instead.
+  for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
+  {
+    if (mesh.lightId[e] >= static_cast<int>(grouping.SolutionOfLight.size()))
+    {
+      throw std::invalid_argument("polygon " + std::to_string(e) + " belongs to light " +
+        std::to_string(mesh.lightId[e]) + ", but the grouping covers " +
+        std::to_string(grouping.SolutionOfLight.size()) + " lights");
+    }
+  }
+  for (int solution : grouping.SolutionOfLight)
+  {
+    if (solution < 0 || solution >= grouping.Solutions)
+    {
+      throw std::invalid_argument("the grouping names solution " + std::to_string(solution) + " of " +
+        std::to_string(grouping.Solutions));
+    }
+  }
+}
+
 namespace
 {
 std::vector<int> LightsPerSolution(const LightGrouping& grouping)
@@ -53,6 +76,7 @@ std::vector<int> LightsPerSolution(const LightGrouping& grouping)
 std::vector<Vec3> SolutionEmission(
   const SceneMesh& mesh, const LightGrouping& grouping, const std::vector<Vec3>& emissionColor)
 {
+  CheckGrouping(mesh, grouping);
   const int n = mesh.NumberOfPolygons();
   const int L = grouping.Solutions;
   const std::vector<int> members = LightsPerSolution(grouping);
@@ -73,6 +97,7 @@ std::vector<Vec3> SolutionEmission(
 std::vector<Vec3> DefaultColors(
   const SceneMesh& mesh, const LightGrouping& grouping, const std::vector<Vec3>& emissionColor)
 {
+  CheckGrouping(mesh, grouping);
   const int L = grouping.Solutions;
   const std::vector<int> members = LightsPerSolution(grouping);
   std::vector<Vec3> sum(L);
@@ -253,25 +278,7 @@ Solution SolveLights(const RadiositySolver& solver, const SceneMesh& mesh,
   const LightGrouping& grouping, const std::vector<Vec3>& emissionColor, SolutionMode mode,
   const SolverOptions& options)
 {
-  // A grouping of fewer lights than the scene has indexed past its end and wrote over the
-  // heap (a test that passed 3 for the furnished room's 8 lamps): said instead.
-  for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
-  {
-    if (mesh.lightId[e] >= static_cast<int>(grouping.SolutionOfLight.size()))
-    {
-      throw std::invalid_argument("polygon " + std::to_string(e) + " belongs to light " +
-        std::to_string(mesh.lightId[e]) + ", but the grouping covers " +
-        std::to_string(grouping.SolutionOfLight.size()) + " lights");
-    }
-  }
-  for (int solution : grouping.SolutionOfLight)
-  {
-    if (solution < 0 || solution >= grouping.Solutions)
-    {
-      throw std::invalid_argument("the grouping names solution " + std::to_string(solution) + " of " +
-        std::to_string(grouping.Solutions));
-    }
-  }
+  CheckGrouping(mesh, grouping);
   Solution out = SolveInMode(solver, mesh, grouping, emissionColor, mode, options);
   out.Effects = DescribeEffects(
     mesh, options, out, grouping, static_cast<int>(grouping.SolutionOfLight.size()), mode);

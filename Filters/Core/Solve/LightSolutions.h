@@ -27,6 +27,11 @@ struct LightGrouping
   static std::string FromBanks(const std::vector<int>& banks, int lights, LightGrouping& out);
 };
 
+/// Throws std::invalid_argument naming the problem where `grouping` does not cover every
+/// light of `mesh` or names a solution it does not have (SolutionEmission, DefaultColors
+/// and SolveLights check it first).
+void CheckGrouping(const SceneMesh& mesh, const LightGrouping& grouping);
+
 /// Per-element emission of each solution for the tagged/separate modes.
 std::vector<Vec3> SolutionEmission(const SceneMesh& mesh, const LightGrouping& grouping,
   const std::vector<Vec3>& emissionColor);
@@ -37,7 +42,6 @@ std::vector<Vec3> DefaultColors(const SceneMesh& mesh, const LightGrouping& grou
   const std::vector<Vec3>& emissionColor);
 
 /// `emissionColor` (per element, may be empty) is used by StandardCombined and by banks.
-/// Throws std::invalid_argument where the grouping does not cover every light of the scene.
 /// The solution carries the solver's account of its effects (DescribeEffects); the
 /// moving-light basis row says "skipped" until SolvePatchBasis records a basis in it.
 Solution SolveLights(const RadiositySolver& solver, const SceneMesh& mesh,

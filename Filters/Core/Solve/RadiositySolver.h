@@ -111,9 +111,9 @@ struct SolverOptions
   {
     /// Two groups of elements exchange light as a whole when their centres are farther
     /// apart than this many times the sum of their radii (1.5 times it where one side
-    /// does not all face the other). Larger is more accurate and slower: the FZK-Haus at
-    /// 0.5 m elements, against Mitsuba 3, 18.3 % mean error at 3, 15.0 % at 4, 12.3 % at 6
-    /// (progressive refinement: 10.0 %), in 16, 22 and 34 s.
+    /// does not all face the other). Larger is more accurate and slower: the FZK-Haus
+    /// (113,002 elements) against Mitsuba 3, 20.3 % mean error at 3, 16.3 % at 4, 11.5 % at
+    /// 6, 9.1 % at 8, in 33, 40, 75 and 107 s (docs/benchmarks.md).
     double Separation = 4.0;
   } Clustered;
   /// Several processes solving together: each computes the transport to its own share of
