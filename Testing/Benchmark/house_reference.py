@@ -17,14 +17,14 @@ def _loops(mesh):
     return [ids[offsets[c]:offsets[c + 1]] for c in range(len(offsets) - 1)]
 
 
-def _centroids_normals_areas(points, loops):
-    cents, normals, areas = [], [], []
-    for loop in loops:
-        p = points[loop]
-        twice = np.cross(p, np.roll(p, -1, axis=0)).sum(axis=0)  # the loop's doubled area vector
-        size = np.linalg.norm(twice)
-        cents.append(p.mean(axis=0)), normals.append(twice / size if size > 0 else twice), areas.append(0.5 * size)
-    return np.array(cents), np.array(normals), np.array(areas)
+def _cell_normals(mesh):
+    """Each polygon's own unit normal (VTK's Newell normal, no reorienting)."""
+    from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
+    normals = vtkPolyDataNormals()
+    normals.SetInputData(mesh)
+    normals.ComputeCellNormalsOn(), normals.ComputePointNormalsOff(), normals.SplittingOff(), normals.ConsistencyOff()
+    normals.Update()
+    return relight.cell_array(normals.GetOutput(), "Normals")
 
 
 def export(mesh, path, probes=600, seed=7):
@@ -35,7 +35,7 @@ def export(mesh, path, probes=600, seed=7):
     light = np.asarray(relight.cell_array(mesh, "LightId")).astype(int)
     reflectance = np.asarray(relight.cell_array(mesh, "Reflectance"), float).reshape(len(loops), -1)
     reflectance = np.repeat(reflectance, 3 // reflectance.shape[1], axis=1)
-    cents, normals, areas = _centroids_normals_areas(points, loops)
+    cents, normals, areas = relight.cell_centroids(mesh), _cell_normals(mesh), relight.cell_areas(mesh)
     candidates = np.flatnonzero((light < 0) & (areas > 0))
     pick = np.random.default_rng(seed).choice(candidates, min(probes, len(candidates)), replace=False,
                                               p=areas[candidates] / areas[candidates].sum())

@@ -20,8 +20,7 @@ Why the setup is equivalent to the radiosity model:
     the right-hand-rule front side of the JSON quads.
   * An `area` emitter emits from the front face only; radiance 1/pi gives
     unit exitance (M = pi * L).
-  * A `radiancemeter` a hair (2e-5 of the scene's diagonal; 1e-4 in the self-test)
-    above the point, looking along -normal,
+  * A `radiancemeter` a hair (1e-4 x (1 + the largest |coordinate|)) above the point, looking along -normal,
     records the radiance leaving the surface there; a diffuse surface has
     B = pi * L. Probes on an emitting quad would include its emission (1).
   * The `path` integrator runs with unlimited depth (Russian roulette keeps it
@@ -36,9 +35,11 @@ import mitsuba as mi
 
 mi.set_variant("scalar_rgb")
 
-EPS = 1e-4  # the self-test's lift; a scene's is LIFT x its diagonal
-LIFT = 2e-5  # relative: at a fixed 1e-4, a scene in millimetres lifts the meter by a few
-# float steps and Mitsuba's ray misses the surface below it (0 on the Cornell box's blocks)
+EPS = 1e-4  # the self-test's lift; a scene's is EPS x (1 + its largest |coordinate|)
+# Mitsuba's rays ignore hits closer than an epsilon that grows with the coordinates: at a
+# fixed 1e-4 a scene in millimetres lifted the meter inside it and its ray missed the
+# surface below (0 on the Cornell box's blocks); a lift from the diagonal alone failed the
+# same box in metres.
 
 
 def make_mesh(name, loops, reflectance, radiance=None):
@@ -100,11 +101,8 @@ def radiosity(scene, point, normal, spp, seed=0):
 
 
 def lift(polygons):
-    """How far above its point each meter sits: LIFT x the scene's diagonal."""
-    corners = [c for poly in polygons for c in poly["points"]]
-    low = [min(c[i] for c in corners) for i in range(3)]
-    high = [max(c[i] for c in corners) for i in range(3)]
-    return LIFT * math.sqrt(sum((h - l) ** 2 for l, h in zip(low, high)))
+    """How far above its point each meter sits: EPS x (1 + the largest |coordinate|)."""
+    return EPS * (1 + max(abs(x) for poly in polygons for c in poly["points"] for x in c))
 
 
 def batch_radiosity(scene, probes, spp, seed, eps=EPS):
