@@ -144,14 +144,15 @@ def render(solver, shots, out):
     return relit.GetExposure()
 
 
-def accuracy(result, out, python, names):
-    """Mean per-light error against Mitsuba at probe points, and how ours compares where the
-    house is lit (median ratio)."""
+def accuracy(result, out, python, names, average):
+    """Mean per-light error against Mitsuba at probe points (or element means), and how ours
+    compares where the house is lit (median ratio)."""
     import house_reference
-    scene, csv = out / "house_room.json", out / "house_reference.csv"
-    cells = house_reference.export(result, scene)
+    stem = "house_average" if average else "house"
+    scene, csv = out / f"{stem}_room.json", out / f"{stem}_reference.csv"
+    cells = house_reference.export(result, scene, average=average)
     house_reference.render(scene, csv, python)
-    errors, median, lit = house_reference.compare(result, cells, csv, names)
+    errors, median, lit = house_reference.compare(result, cells, csv, names, average > 0)
     print("error against Mitsuba: " + ", ".join(f"{n} {100 * e:.1f} %" for n, e in errors.items()))
     return dict(mean_error_pct=round(100 * float(np.mean(list(errors.values()))), 2),
                 lit_median_ratio=round(median, 3), lit_probes=lit)
@@ -168,6 +169,9 @@ def main():
     parser.add_argument("--cluster-separation", type=float, default=4.0,
                         help="ClusterSeparation (clustered method): larger is more accurate and slower")
     parser.add_argument("--reference", action="store_true", help="compare with Mitsuba 3 at probe points (rendered once per mesh)")
+    parser.add_argument("--element-average", type=int, default=0, metavar="N",
+                        help="with --reference: compare element means (Mitsuba at N points spread over each probe's "
+                             "element, ours the element's value) instead of centroids")
     parser.add_argument("--mitsuba-python", default="out/mitsuba-venv/bin/python", help="a Python with mitsuba installed")
     args = parser.parse_args()
     out = pathlib.Path(args.out)
@@ -193,7 +197,7 @@ def main():
                peak_mib=round(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024),
                warnings=len(warnings))
     if args.reference:
-        row.update(accuracy(result, out, args.mitsuba_python, [f"Lamp{i}" for i in range(k)]))
+        row.update(accuracy(result, out, args.mitsuba_python, [f"Lamp{i}" for i in range(k)], args.element_average))
     exposure = render(solver, [camera(rays, *lamps[0]), camera(rays, *lamps[-1])], out)  # one per storey
     summary = "\n".join([f"{key}: {value}" for key, value in row.items()] + [f"SolverMethod: {method}",
                          f"exposure: {exposure:.4g}"] + [f"warning: {w.strip().splitlines()[-1]}" for w in warnings])

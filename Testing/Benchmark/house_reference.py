@@ -27,9 +27,22 @@ def _cell_normals(mesh):
     return relight.cell_array(normals.GetOutput(), "Normals")
 
 
-def export(mesh, path, probes=600, seed=7):
+def spread(corners, count, rng):
+    """`count` points uniform over a planar convex polygon (its fan triangles by area)."""
+    a, b, c = corners[0], corners[1:-1], corners[2:]
+    area = np.linalg.norm(np.cross(b - a, c - a), axis=1)
+    fan = rng.choice(len(area), count, p=area / area.sum())
+    u, v = rng.random((2, count))
+    flip = u + v > 1  # fold the square's far half back into the triangle
+    u[flip], v[flip] = 1 - u[flip], 1 - v[flip]
+    return a + u[:, None] * (b[fan] - a) + v[:, None] * (c[fan] - a)
+
+
+def export(mesh, path, probes=600, seed=7, average=0):
     """The solver's output (polygons only) as mitsuba_reference.py's JSON; probes on
-    non-emitting elements, by area. Returns the probes' cell ids."""
+    non-emitting elements, by area, at their centroids or, with `average` > 0, spread over
+    the element at that many points (Mitsuba then gives the element's mean). Returns the
+    probes' cell ids."""
     points = vtk_to_numpy(mesh.GetPoints().GetData()).astype(float)
     loops = _loops(mesh)
     light = np.asarray(relight.cell_array(mesh, "LightId")).astype(int)
@@ -44,6 +57,9 @@ def export(mesh, path, probes=600, seed=7):
                           for c, l in enumerate(loops)],
              "probes": [{"point": cents[c].tolist(), "normal": normals[c].tolist(), "seen": True, "cell": int(c)}
                         for c in pick]}
+    rng = np.random.default_rng(seed + 1)
+    for probe in scene["probes"][:len(pick) if average > 0 else 0]:
+        probe["points"] = spread(points[loops[probe["cell"]]], average, rng).tolist()
     text = json.dumps(scene)
     if not path.exists() or path.read_text() != text:  # an unchanged scene keeps its reference
         path.write_text(text)
@@ -62,10 +78,12 @@ def render(scene_path, csv_path, python, spp=8192):
     key.write_text(made_from)
 
 
-def compare(mesh, cells, csv_path, names):
+def compare(mesh, cells, csv_path, names, average=False):
     """Per light, the mean |ours - Mitsuba| over the probes over Mitsuba's mean (ours at a
-    centroid: the mean of the element's corner values), and over the probes Mitsuba finds
-    lit (above a fifth of the mean, all lights on) the median of ours / Mitsuba."""
+    centroid: the mean of the element's corner values, what a rendering shows there; with
+    `average`, the element's own value, the solver's answer for its mean), and over the
+    probes Mitsuba finds lit (above a fifth of the mean, all lights on) the median of
+    ours / Mitsuba."""
     loops = _loops(mesh)
     table = np.loadtxt(csv_path, delimiter=",", skiprows=1, ndmin=2)
     errors, ours_all, ref_all = {}, 0.0, 0.0
@@ -73,8 +91,11 @@ def compare(mesh, cells, csv_path, names):
         rows = table[table[:, 1] == k]
         want = np.zeros(len(cells))
         want[rows[:, 0].astype(int)] = rows[:, 2:5].mean(axis=1)
-        values = relight.point_array(mesh, f"Radiosity_{name}").reshape(mesh.GetNumberOfPoints(), -1)
-        got = np.array([values[loops[c]].mean() for c in cells])
+        if average:
+            got = np.asarray(relight.cell_array(mesh, f"Radiosity_{name}")).reshape(len(loops), -1)[cells].mean(axis=1)
+        else:
+            values = relight.point_array(mesh, f"Radiosity_{name}").reshape(mesh.GetNumberOfPoints(), -1)
+            got = np.array([values[loops[c]].mean() for c in cells])
         errors[name] = float(np.abs(got - want).mean() / want.mean())
         ours_all, ref_all = ours_all + got, ref_all + want
     lit = ref_all > 0.2 * ref_all.mean()

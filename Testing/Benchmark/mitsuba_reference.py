@@ -23,6 +23,8 @@ Why the setup is equivalent to the radiosity model:
   * A `radiancemeter` a hair (1e-4 x (1 + the largest |coordinate|)) above the point, looking along -normal,
     records the radiance leaving the surface there; a diffuse surface has
     B = pi * L. Probes on an emitting quad would include its emission (1).
+  * A probe with "points" (samples spread over an element) is the mean of a meter at each,
+    the element's average radiosity, which is what a radiosity solution computes.
   * The `path` integrator runs with unlimited depth (Russian roulette keeps it
     unbiased), i.e. all interreflections, like a converged radiosity solution.
 """
@@ -120,6 +122,25 @@ def batch_radiosity(scene, probes, spp, seed, eps=EPS):
     return [[math.pi * float(arr[3 * k + c]) for c in range(3)] for k in range(len(probes))]
 
 
+def meters(probes):
+    """Each probe's meter points: its "points" (samples spread over an element, whose mean is
+    the element's average radiosity) or its one "point"."""
+    return [pr.get("points", [pr["point"]]) for pr in probes]
+
+
+def probe_radiosity(scene, probes, spp, seed, eps):
+    """batch_radiosity over every meter point, averaged per probe; a probe of m points gives
+    each spp // m samples, so an element average costs what a point does."""
+    spots = meters(probes)
+    flat = [{"point": q, "normal": pr["normal"]} for pr, qs in zip(probes, spots) for q in qs]
+    per = max(1, spp // max(len(qs) for qs in spots))
+    values, out = batch_radiosity(scene, flat, per, seed, eps), []
+    for qs in spots:
+        chunk, values = values[:len(qs)], values[len(qs):]
+        out.append([sum(v[c] for v in chunk) / len(chunk) for c in range(3)])
+    return out
+
+
 def run(args):
     import json
     with open(args.input) as f:
@@ -135,7 +156,7 @@ def run(args):
         for k in range(K):
             t = time.time()
             # Distinct seed per light so the lights' estimates are independent.
-            res = batch_radiosity(make_scene(polys, k), [probes[i] for i in seen], args.spp, seed=k, eps=eps)
+            res = probe_radiosity(make_scene(polys, k), [probes[i] for i in seen], args.spp, seed=k, eps=eps)
             for i, b in zip(seen, res):
                 f.write("%d,%d,%.7g,%.7g,%.7g\n" % (i, k, *b))
             print("light %d: %.1f s" % (k, time.time() - t), flush=True)
