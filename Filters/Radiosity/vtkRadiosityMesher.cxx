@@ -99,6 +99,7 @@ double vtkRadiosityMesher::EstimateElements(double patchSize, double elementSize
   const auto sizes = radiosity::SizesInUse(patchSize, elementSize, this->SuggestedPatchSize);
   radiosity::MesherOptions options;
   options.MergeTriangles = this->MergeTriangles;
+  options.PointQuantum = mesh.pointQuantum;
   const radiosity::ElementCounter count(mesh.points, mesh.offsets, mesh.connectivity, this->SeenInput->SurfaceKey, options);
   return count(sizes.first, sizes.second);
 }
@@ -185,6 +186,7 @@ std::string MeshPiece(vtkRadiosityMesher* self, vtkPolyData* input, double eleme
   options.SharePatches = self->GetSharePatches();
   options.ClusterAngle = self->GetClusterAngle();
   options.WholeScene = wholeScene;
+  options.PointQuantum = mesh.pointQuantum;
   const vtkRadiosityAbortWatch abort(self);
   options.Progress = [self, abort](double f) {
     self->UpdateProgress(f);
@@ -208,6 +210,7 @@ double ElementSizeEverywhere(vtkRadiosityMesher* self, vtkMultiProcessController
   radiosity::MesherOptions options;
   options.MergeTriangles = self->GetMergeTriangles();
   options.WholeScene = wholeScene;
+  options.PointQuantum = mesh.pointQuantum;
   const std::vector<int> keys = usable ? SurfaceKeys(mesh, emission) : std::vector<int>();
   const radiosity::ElementCounter counter(mesh.points, mesh.offsets, mesh.connectivity, keys, options);
   auto count = [&](double size) {

@@ -199,6 +199,7 @@ SceneGeometry::SceneGeometry(const SceneMesh& mesh)
     patchArea[patch] += area[i];
   }
   sceneDiagonal = Bounds(mesh.points).Diagonal();
+  rayLift = std::max(1e-6 * sceneDiagonal, 4.0 * mesh.pointQuantum);
   enclosed.assign(n, 0);
   sheltered.assign(n, 0);
   patchOpenArea = patchArea;

@@ -62,6 +62,10 @@ struct SceneGeometry
   /// on them. Enclosed implies sheltered.
   std::vector<char> sheltered;
   double sceneDiagonal = 0;
+  /// How far off its surface a ray starts: a millionth of the scene, and above the noise
+  /// of float input far from the origin (there a flat polygon's corners can sit a float
+  /// step off its plane, and a ray lifted less starts behind its own surface).
+  double rayLift = 0;
 
   explicit SceneGeometry(const SceneMesh& mesh);
 };

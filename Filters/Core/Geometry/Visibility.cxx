@@ -372,7 +372,7 @@ namespace
 std::vector<int> SeenAcrossEdges(const Visibility& rays, const SceneMesh& mesh, const SceneGeometry& g)
 {
   const int n = mesh.NumberOfPolygons();
-  const double lift = 1e-6 * g.sceneDiagonal;
+  const double lift = g.rayLift;
   // (edge, element) pairs sorted by edge: a map of a million elements' edges is slow.
   const long long points = static_cast<long long>(mesh.points.size());
   std::vector<std::pair<long long, int>> edges;

@@ -69,8 +69,8 @@ int SplitByAreaGrid(const std::vector<Vec3>& loop, double patchSize, double elem
 {
   const GridFrame f = FrameOf(loop);
   const double lu = f.High[0] - f.Low[0], lv = f.High[1] - f.Low[1];
-  const int pu = Divisions(lu, patchSize), pv = Divisions(lv, patchSize);
-  const int eu = Divisions(lu / pu, elementSize), ev = Divisions(lv / pv, elementSize);
+  const int pu = Divisions(lu, patchSize, noise), pv = Divisions(lv, patchSize, noise);
+  const int eu = Divisions(lu / pu, elementSize, noise / pu), ev = Divisions(lv / pv, elementSize, noise / pv);
   const int nu = pu * eu, nv = pv * ev;
   const auto lineU = [&](int i) { return f.Origin + f.U * (f.Low[0] + lu * i / nu); };
   const auto lineV = [&](int j) { return f.Origin + f.V * (f.Low[1] + lv * j / nv); };

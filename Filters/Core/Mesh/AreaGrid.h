@@ -15,11 +15,13 @@ namespace radiosity
 {
 
 /// Pieces of at most `size` along `length`. A length within a millionth of a whole number
-/// of sizes counts as that number: VTK stores points as floats (7 digits), so a wall 5 m
-/// long rotated or scaled comes back 5.0000003 m, and would otherwise gain a row.
-inline int Divisions(double length, double size)
+/// of sizes, or within twice `noise` (how far its ends may be off: MeshNoise), counts as
+/// that number: VTK stores points as floats (7 digits), so a wall 5 m long rotated or
+/// scaled comes back 5.0000003 m, and 10 km from the origin 5.0001 m, and would otherwise
+/// gain a row.
+inline int Divisions(double length, double size, double noise = 0)
 {
-  return std::max(1, static_cast<int>(std::ceil(length / size * (1 - 1e-6))));
+  return std::max(1, static_cast<int>(std::ceil((length - 2 * noise) / size * (1 - 1e-6))));
 }
 
 /// Calls cell(corners, count, patch) for each cell of a grid of patches and elements (as a

@@ -26,12 +26,12 @@ namespace
 /// Emits the elements of a convex quad on a bilinear grid: emit(corners, 4, local patch).
 /// Returns the number of patches.
 template <typename Emit>
-int SplitQuad(const Vec3* q, const MesherOptions& o, const Emit& emit)
+int SplitQuad(const Vec3* q, const MesherOptions& o, double noise, const Emit& emit)
 {
   const double lu = std::max(Norm(q[1] - q[0]), Norm(q[2] - q[3]));
   const double lv = std::max(Norm(q[3] - q[0]), Norm(q[2] - q[1]));
-  const int pu = Divisions(lu, o.PatchSize), pv = Divisions(lv, o.PatchSize);
-  const int eu = Divisions(lu / pu, o.ElementSize), ev = Divisions(lv / pv, o.ElementSize);
+  const int pu = Divisions(lu, o.PatchSize, noise), pv = Divisions(lv, o.PatchSize, noise);
+  const int eu = Divisions(lu / pu, o.ElementSize, noise / pu), ev = Divisions(lv / pv, o.ElementSize, noise / pv);
   const int nu = pu * eu, nv = pv * ev;
   // Every point comes from the same bilinear formula, so neighbours share exact values.
   auto at = [&](int i, int j) {
@@ -53,20 +53,22 @@ int SplitQuad(const Vec3* q, const MesherOptions& o, const Emit& emit)
 /// triangulated walls and roofs of real models are full of) is split by its area instead:
 /// cutting a 3 m x 2 cm strip into 72 patches of nothing made a house of 16k polygons 66k
 /// patches, and every patch is a shooter.
-int TrianglePatchDivisions(const Vec3& a, const Vec3& b, const Vec3& c, double longest, double patch)
+int TrianglePatchDivisions(const Vec3& a, const Vec3& b, const Vec3& c, double longest, double patch, double noise)
 {
   const double width = Norm(Cross(b - a, c - a)) / longest; // twice the area over the base
-  return width < 0.25 * longest ? Divisions(std::sqrt(width * longest), patch) : Divisions(longest, patch);
+  return width < 0.25 * longest ? Divisions(std::sqrt(width * longest), patch, noise)
+                                : Divisions(longest, patch, noise);
 }
 
 /// Emits the elements of a triangle on a barycentric lattice, local patches counted from
 /// `firstPatch`. Returns the number of patches.
 template <typename Emit>
-int SplitTriangle(const Vec3& a, const Vec3& b, const Vec3& c, const MesherOptions& o, int firstPatch, const Emit& emit)
+int SplitTriangle(const Vec3& a, const Vec3& b, const Vec3& c, const MesherOptions& o, double noise, int firstPatch,
+  const Emit& emit)
 {
   const double longest = std::max({ Norm(b - a), Norm(c - b), Norm(a - c) });
-  const int np = TrianglePatchDivisions(a, b, c, longest, o.PatchSize);
-  const int ne = Divisions(longest / np, o.ElementSize);
+  const int np = TrianglePatchDivisions(a, b, c, longest, o.PatchSize, noise);
+  const int ne = Divisions(longest / np, o.ElementSize, noise / np);
   const int n = np * ne;
   auto at = [&](int i, int j) {
     return a + (b - a) * (static_cast<double>(i) / n) + (c - a) * (static_cast<double>(j) / n);
@@ -158,7 +160,7 @@ int SplitPolygon(const std::vector<Vec3>& loop, const MesherOptions& o, double n
 {
   if (loop.size() == 4 && IsConvex(loop.data(), 4, noise))
   {
-    return SplitQuad(loop.data(), o, emit);
+    return SplitQuad(loop.data(), o, noise, emit);
   }
   if (AreaGridElements(loop, o.PatchSize, o.ElementSize, noise) >= 0)
   {
@@ -182,7 +184,7 @@ int SplitPolygon(const std::vector<Vec3>& loop, const MesherOptions& o, double n
   int patches = 0;
   for (size_t t = 0; t + 2 < corners.size(); t += 3)
   {
-    patches += SplitTriangle(loop[corners[t]], loop[corners[t + 1]], loop[corners[t + 2]], o, patches, emit);
+    patches += SplitTriangle(loop[corners[t]], loop[corners[t + 1]], loop[corners[t + 2]], o, noise, patches, emit);
   }
   return patches;
 }
@@ -209,26 +211,27 @@ void MakePiece(const std::vector<Vec3>& loop, const MesherOptions& o, double noi
   });
 }
 
-/// Surfaces closer than this stand on each other (relative, so units do not matter).
-double ContactTolerance(double span)
+/// Surfaces closer than this stand on each other (relative, so units do not matter; and
+/// never finer than float input can place them: 10 km from the origin, a millimetre).
+double ContactTolerance(double span, double pointQuantum)
 {
-  return 1e-6 * span;
+  return std::max(1e-6 * span, 2 * pointQuantum);
 }
 
 /// What SplitQuad / SplitTriangle will make, without making it.
-double CountQuad(const Vec3* q, double patch, double element)
+double CountQuad(const Vec3* q, double patch, double element, double noise)
 {
   const double lu = std::max(Norm(q[1] - q[0]), Norm(q[2] - q[3]));
   const double lv = std::max(Norm(q[3] - q[0]), Norm(q[2] - q[1]));
-  const int pu = Divisions(lu, patch), pv = Divisions(lv, patch);
-  return static_cast<double>(pu * Divisions(lu / pu, element)) * (pv * Divisions(lv / pv, element));
+  const int pu = Divisions(lu, patch, noise), pv = Divisions(lv, patch, noise);
+  return static_cast<double>(pu * Divisions(lu / pu, element, noise / pu)) * (pv * Divisions(lv / pv, element, noise / pv));
 }
 
-double CountTriangle(const Vec3& a, const Vec3& b, const Vec3& c, double patch, double element)
+double CountTriangle(const Vec3& a, const Vec3& b, const Vec3& c, double patch, double element, double noise)
 {
   const double longest = std::max({ Norm(b - a), Norm(c - b), Norm(a - c) });
-  const int np = TrianglePatchDivisions(a, b, c, longest, patch);
-  const double n = static_cast<double>(np) * Divisions(longest / np, element);
+  const int np = TrianglePatchDivisions(a, b, c, longest, patch, noise);
+  const double n = static_cast<double>(np) * Divisions(longest / np, element, noise / np);
   return n * n;
 }
 
@@ -254,11 +257,11 @@ struct Contacts
   double Touch = 0;
 };
 
-Contacts FindSceneContacts(const PolygonArrays& polygons, const PolygonArrays* wholeScene)
+Contacts FindSceneContacts(const PolygonArrays& polygons, const PolygonArrays* wholeScene, double pointQuantum)
 {
   const PolygonArrays& whole = wholeScene ? *wholeScene : polygons;
   Contacts contacts;
-  contacts.Touch = ContactTolerance(Span(whole.Points));
+  contacts.Touch = ContactTolerance(Span(whole.Points), pointQuantum);
   contacts.Segments = FindContacts(polygons, whole, contacts.Touch);
   return contacts;
 }
@@ -273,7 +276,7 @@ double CountPlain(const std::vector<Vec3>& loop, double patchSize, double elemen
 {
   if (loop.size() == 4 && IsConvex(loop.data(), 4, noise))
   {
-    return CountQuad(loop.data(), patchSize, elementSize);
+    return CountQuad(loop.data(), patchSize, elementSize, noise);
   }
   const double grid = AreaGridElements(loop, patchSize, elementSize, noise);
   if (grid >= 0)
@@ -293,20 +296,28 @@ double CountLattice(const std::vector<Vec3>& loop, double patchSize, double elem
   const std::vector<int> corners = Triangulate(loop.data(), static_cast<int>(loop.size()), noise);
   for (size_t t = 0; t + 2 < corners.size(); t += 3)
   {
-    total += CountTriangle(loop[corners[t]], loop[corners[t + 1]], loop[corners[t + 2]], patchSize, elementSize);
+    total += CountTriangle(loop[corners[t]], loop[corners[t + 1]], loop[corners[t + 2]], patchSize, elementSize, noise);
   }
   return total;
 }
 
+/// How far the points may be off their true places: float rounding of the scene's span,
+/// or the coarser step of float input far from the origin.
+double MeshNoise(const std::vector<Vec3>& points, double pointQuantum)
+{
+  return std::max(FloatNoise(Span(points)), pointQuantum);
+}
+
 /// CountElements with the contacts found once (a budget's search counts many times).
-double CountWithContacts(const PolygonArrays& polygons, double patchSize, double elementSize, const Contacts& contacts)
+double CountWithContacts(const PolygonArrays& polygons, double patchSize, double elementSize, const Contacts& contacts,
+  double pointQuantum)
 {
   if (!(patchSize > 0) || !(elementSize > 0))
   {
     return 0;
   }
   double total = 0;
-  const double noise = FloatNoise(Span(polygons.Points)); // as MeshList decides
+  const double noise = MeshNoise(polygons.Points, pointQuantum); // as MeshPolygons decides
   MesherOptions sizes;
   sizes.PatchSize = patchSize;
   sizes.ElementSize = elementSize;
@@ -406,6 +417,7 @@ struct ElementCounter::Internals
   PairedPolygons Pairs; ///< the polygons as the mesher pairs them (when the counter pairs)
   PolygonArrays Polygons;
   Contacts Found;
+  double PointQuantum = 0; ///< MesherOptions::PointQuantum, where the counter has options
 
   Internals(const std::vector<Vec3>& points, const std::vector<int>& offsets, const std::vector<int>& connectivity)
     : Polygons{ points, offsets, connectivity }
@@ -422,21 +434,22 @@ ElementCounter::ElementCounter(const std::vector<Vec3>& points, const std::vecto
   const std::vector<int>& connectivity, const PolygonArrays* wholeScene)
   : Impl(new Internals(points, offsets, connectivity))
 {
-  Impl->Found = FindSceneContacts(Impl->Polygons, wholeScene);
+  Impl->Found = FindSceneContacts(Impl->Polygons, wholeScene, 0);
 }
 
 ElementCounter::ElementCounter(const std::vector<Vec3>& points, const std::vector<int>& offsets,
   const std::vector<int>& connectivity, const std::vector<int>& surfaceKey, const MesherOptions& options)
   : Impl(new Internals(points, Paired(points, offsets, connectivity, surfaceKey, options)))
 {
-  Impl->Found = FindSceneContacts(Impl->Polygons, options.WholeScene);
+  Impl->Found = FindSceneContacts(Impl->Polygons, options.WholeScene, options.PointQuantum);
+  Impl->PointQuantum = options.PointQuantum;
 }
 
 ElementCounter::~ElementCounter() = default;
 
 double ElementCounter::operator()(double patchSize, double elementSize) const
 {
-  return CountWithContacts(Impl->Polygons, patchSize, elementSize, Impl->Found);
+  return CountWithContacts(Impl->Polygons, patchSize, elementSize, Impl->Found, Impl->PointQuantum);
 }
 
 double CountElements(const std::vector<Vec3>& points, const std::vector<int>& offsets,
@@ -541,7 +554,7 @@ std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& of
   const int count = static_cast<int>(offsets.size()) - 1;
   const double diagonal = Span(points); // not the bounding box's: that turns with the scene
   const double quantum = std::max(diagonal, 1e-300) * 1e-9;
-  const double noise = FloatNoise(diagonal);
+  const double noise = MeshNoise(points, options.PointQuantum);
   SurfaceAssembly surfaces(quantum, Bounds(points).Centre(), options);
   std::vector<Vec3> loop;
   for (int i = 0; i < count; ++i)
@@ -614,7 +627,7 @@ void WarnAboutWarpedPolygons(const std::vector<Vec3>& points, const std::vector<
 /// ElementSize, or the size ElementBudget calls for; says which, and warns on a huge mesh.
 double ChooseElementSize(const PolygonArrays& polygons, const Contacts& contacts, const MesherOptions& o)
 {
-  auto count = [&](double size) { return CountWithContacts(polygons, o.PatchSize, size, contacts); };
+  auto count = [&](double size) { return CountWithContacts(polygons, o.PatchSize, size, contacts, o.PointQuantum); };
   const double wanted = count(o.ElementSize);
   std::ostringstream message;
   double size = o.ElementSize;
@@ -666,7 +679,7 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
   const PairedPolygons polygons = Paired(points, offsets, connectivity, surfaceKey, options, &copies);
   WarnAboutCopies(copies, options);
   const PolygonArrays paired{ points, polygons.offsets, polygons.connectivity };
-  const Contacts contacts = FindSceneContacts(paired, options.WholeScene);
+  const Contacts contacts = FindSceneContacts(paired, options.WholeScene, options.PointQuantum);
   MesherOptions sized = options;
   sized.ElementSize = ChooseElementSize(paired, contacts, options);
   const std::string error =

@@ -30,6 +30,10 @@ struct MesherOptions
   double ClusterAngle = 30;
   /// Element budget (0: none): above it the smallest larger element size that fits is used.
   double ElementBudget = 0;
+  /// How finely the coordinates were given (SceneMesh::pointQuantum: float input's step at
+  /// its farthest coordinate, 0 for double): corners may sit that far off, and the
+  /// tests of what is straight, convex or flat allow it.
+  double PointQuantum = 0;
   /// The whole scene where the polygons are one process's piece of it: surfaces of other
   /// pieces standing on these cut them too (see ContactCuts.h). Null: the polygons are all.
   const PolygonArrays* WholeScene = nullptr;

@@ -145,13 +145,19 @@ void SurfaceAssembly::Flatten(MeshedPolygons& out) const
 {
   // Patch ids of empty lattice cells are never used.
   std::map<int, int> compact;
-  for (const SurfaceMesh& mesh : Meshes)
+  for (size_t s = 0; s < Meshes.size(); ++s)
   {
+    const SurfaceMesh& mesh = Meshes[s];
+    const Plane& plane = Planes[s];
     const int base = static_cast<int>(out.points.size());
     for (auto v : mesh.vertices())
     {
-      const auto p = mesh.point(v);
-      out.points.push_back({ p[0], p[1], p[2] });
+      // Onto the surface's plane: float input far from the origin puts corners a float step
+      // off it, and the solver's tests of what is flat (a patch, a plane that blocks
+      // nothing) are relative to the scene, far finer than that step.
+      const auto q = mesh.point(v);
+      const Vec3 p{ q[0], q[1], q[2] };
+      out.points.push_back(p - plane.Normal * (Dot(plane.Normal, p - Centre) - plane.Offset));
     }
     for (auto face : mesh.faces())
     {

@@ -93,7 +93,7 @@ long long MovingLightShader::Direct(
 long long MovingLightShader::ShadeChunk(const MovingLight& light, int begin, int end, std::vector<Vec3>& irradiance) const
 {
   const SceneGeometry& g = Geometry();
-  const double eps = 1e-6 * g.sceneDiagonal;
+  const double eps = g.rayLift;
   int waiting[Visibility::PacketSize];
   double intensity[Visibility::PacketSize];
   Vec3 from[Visibility::PacketSize];

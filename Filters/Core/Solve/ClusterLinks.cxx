@@ -155,7 +155,7 @@ ClusterLinkBuilder::ClusterLinkBuilder(const SceneMesh& mesh, const SceneGeometr
   , Culling(culling)
   , Options(options)
   , AreaBefore(tree.Elements().size() + 1, 0.0)
-  , Epsilon(1e-6 * g.sceneDiagonal)
+  , Epsilon(g.rayLift)
 {
   for (size_t i = 0; i < tree.Elements().size(); ++i)
   {

@@ -30,7 +30,7 @@ ProbeHits Probe(const SceneGeometry& g, const Visibility& rays, const std::vecto
       const Vec3 d = n * std::cos(polar) + (t * std::cos(azimuth) + b * std::sin(azimuth)) * std::sin(polar);
       Visibility::Hit hit;
       ++cast;
-      const bool met = rays.Intersect(g.centroid[e] + n * (1e-6 * g.sceneDiagonal), d, hit);
+      const bool met = rays.Intersect(g.centroid[e] + n * g.rayLift, d, hit);
       any += met ? 1 : 0;
       hits += met && hit.distance < near ? 1 : 0;
     }

@@ -28,8 +28,8 @@ ShooterFormFactors::ShooterFormFactors(const SceneMesh& mesh, const SceneGeometr
   , CullVisibility(cullVisibility)
 {
   // Offsets keep rays from starting or ending inside their own surfaces; relative to the
-  // scene so the result does not depend on its units.
-  Epsilon = 1e-6 * geometry.sceneDiagonal;
+  // scene so the result does not depend on its units (SceneGeometry::rayLift).
+  Epsilon = geometry.rayLift;
   Loops.reserve(mesh.connectivity.size());
   for (int id : mesh.connectivity)
   {
