@@ -199,7 +199,11 @@ public:
       return false; // vtkPLYReader asserts on a last line without its end, and splits long ones
     }
     // It reads a line as a C string (a NUL byte ends it) and stops at a carriage return.
-    LineEnd = std::min(next, Data.find_first_of(std::string("\r\0", 2), At));
+    // Looked for in the line only: over the rest of the file, per line, a 16k-face file
+    // took 23 s.
+    const auto line = Data.begin() + static_cast<std::ptrdiff_t>(At);
+    LineEnd = At + static_cast<size_t>(std::find_if(line, Data.begin() + static_cast<std::ptrdiff_t>(next),
+                                                    [](char c) { return c == '\r' || c == '\0'; }) - line);
     After = next + 1;
     return true;
   }
