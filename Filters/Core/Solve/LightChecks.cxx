@@ -9,15 +9,16 @@ namespace radiosity
 namespace
 {
 /// Of the rays from the light's element centroids (normal, and rings at 30 and 60
-/// degrees): the fractions that hit something closer than `near`, and anything at all.
+/// degrees): the fractions that hit something closer than `near`, anything at all, and a
+/// surface's front (the side that takes light).
 struct ProbeHits
 {
-  double Near = 0, Any = 0;
+  double Near = 0, Any = 0, Front = 1;
 };
 
 ProbeHits Probe(const SceneGeometry& g, const Visibility& rays, const std::vector<int>& elements, double near)
 {
-  int hits = 0, any = 0, cast = 0;
+  int hits = 0, any = 0, front = 0, cast = 0;
   for (int e : elements)
   {
     const Vec3& n = g.normal[e];
@@ -33,9 +34,12 @@ ProbeHits Probe(const SceneGeometry& g, const Visibility& rays, const std::vecto
       const bool met = rays.Intersect(g.centroid[e] + n * g.rayLift, d, hit);
       any += met ? 1 : 0;
       hits += met && hit.distance < near ? 1 : 0;
+      front += met && Dot(g.normal[hit.polygon], d) < 0 ? 1 : 0;
     }
   }
-  return cast ? ProbeHits{ static_cast<double>(hits) / cast, static_cast<double>(any) / cast } : ProbeHits();
+  return cast ? ProbeHits{ static_cast<double>(hits) / cast, static_cast<double>(any) / cast,
+                  static_cast<double>(front) / cast }
+              : ProbeHits();
 }
 /// True when x lies inside convex element e (in its plane, within `tolerance` of it).
 bool InsideElement(const SceneMesh& mesh, const SceneGeometry& g, int e, const Vec3& x, double tolerance)
@@ -120,6 +124,14 @@ std::vector<std::string> CheckLights(const SceneMesh& mesh, const SceneGeometry&
       std::snprintf(text, sizeof(text),
         "Light '%s' faces away from every surface: none of its probe rays meets the scene, so its light leaves "
         "it. Is it wound the wrong way (its front is the right-hand side of its points' order)?", names[l].c_str());
+      messages.push_back(text);
+    }
+    if (probe.Any > 0 && probe.Front == 0)
+    {
+      std::snprintf(text, sizeof(text),
+        "Light '%s' lights nothing: every probe ray from it meets the back of a surface, which takes no light. "
+        "Is it outside the room (above the ceiling, behind a wall, in another unit than the scene), or do the "
+        "surfaces around it face away from it?", names[l].c_str());
       messages.push_back(text);
     }
     if (probe.Near > 0.5)

@@ -309,6 +309,10 @@ check("Light 'Light0' faces a surface closer than" in found, f"a lamp wound the 
 inside = [(x, y, H) for x, y, _ in down]  # in the ceiling's plane, facing down like it
 found = warnings_for(box + [inside], [-1] * 6 + [0])
 check("Light 'Light0' lies in the plane of a surface" in found, f"a lamp drawn in the ceiling: {found}")
+above = [(x, y, H + 0.5) for x, y, _ in down]  # facing down, half a metre above the closed room's ceiling
+found = warnings_for(box + [above], [-1] * 6 + [0])
+check("Light 'Light0' lights nothing" in found, f"a lamp above the ceiling (a black picture before, no word): {found}")
+check("lights nothing" not in clean, "...and the proper lamp lights something")
 floor = box[0]
 lamp_up = [(1.0, 1.0, 0.3), (2.0, 1.0, 0.3), (2.0, 2.0, 0.3), (1.0, 2.0, 0.3)]  # faces +z, nothing above it
 found = warnings_for([floor, lamp_up], [-1, 0])
