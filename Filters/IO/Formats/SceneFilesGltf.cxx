@@ -87,7 +87,7 @@ std::string Prepare(nlohmann::json& document, bool& patched)
   using json = nlohmann::json;
   if (!Has(document, "asset", &json::is_object))
   {
-    return "has no asset object (not glTF 2.0)";
+    return "it has no asset object (not glTF 2.0)";
   }
   for (auto& material : document.value("materials", json::array()))
   {
@@ -316,10 +316,10 @@ std::string ReadGltf(const std::string& path, radiosity::RawScene& raw, std::vec
   const GltfParts parts = Split(path);
   nlohmann::json document = nlohmann::json::parse(parts.Json, nullptr, false);
   bool patched = false;
-  const std::string invalid = document.is_discarded() ? "is not JSON" : Prepare(document, patched);
+  const std::string invalid = document.is_discarded() ? "it is not JSON" : Prepare(document, patched);
   if (!invalid.empty())
   {
-    return "'" + path + "' could not be read as glTF: it " + invalid;
+    return "'" + path + "' could not be read as glTF: " + invalid;
   }
   vtkNew<Loader> loader;
   std::string unsafe = Unsupported(document, loader->GetSupportedExtensions());

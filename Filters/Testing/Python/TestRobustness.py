@@ -245,6 +245,21 @@ try:
     check(False, "render_png of the solver's output raises")
 except ValueError as error:
     check("DisplayColors" in str(error), f"render_png of the solver's output (no colors) raises: {error}")
+not_updated = relight.vtkRadiosityRelight()
+not_updated.SetInputConnection(drawn_in.GetOutputPort())
+relit = relight.vtkRadiosityRelight()
+relit.SetInputConnection(drawn_in.GetOutputPort())
+relit.Update()
+nowhere = os.path.join(tempfile.gettempdir(), "no-such-folder-here", "x.png")
+for data, path, expected, why in ((not_updated.GetOutput(), os.path.join(tempfile.gettempdir(), "never.png"), "Update()",
+                                   "the relight filter's output before Update (it blamed the solver's output)"),
+                                  (relit.GetOutput(), nowhere, "does not exist",
+                                   "into a missing folder (VTK only printed 'Ran out of disk space')")):
+    try:
+        relight.render_png(data, path, ((2, 2, 1), (2, 2, 0), (0, 1, 0), 60))
+        check(False, f"render_png {why} raises")
+    except (ValueError, OSError) as error:
+        check(expected in str(error), f"render_png {why} raises: {error}")
 
 # --- a wall across a room: light does not pass through it --------------------------------------
 # The partition stands across floor, ceiling and side-wall patches (0.5 m patches): a patch

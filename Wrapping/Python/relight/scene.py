@@ -1,5 +1,6 @@
 """Helpers around the filters: reading scenes, running the pipeline, pictures."""
 
+import os
 import re
 import warnings
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (registers the OpenGL backend)
@@ -201,15 +202,22 @@ def render_png(data, path, camera, size=(640, 480)):
     (ambient 1, diffuse 0): what you see is the solution.
     `camera` = (position, focal_point, view_up, view_angle_degrees).
     """
+    if data.GetNumberOfPoints() == 0:
+        raise ValueError("render_png got empty data: Update() the relight filter before taking its output")
     if data.GetPointData().GetArray("DisplayColors") is None:
         raise ValueError("render_png shows the relight filter's DisplayColors: give it vtkRadiosityRelight's "
                          "output (the solver's output holds radiosity, not colors)")
+    folder = os.path.dirname(os.path.abspath(str(path)))
+    if not os.path.isdir(folder):  # VTK's writer only prints "Ran out of disk space"
+        raise FileNotFoundError(f"cannot write '{path}': the folder '{folder}' does not exist")
     renderer = FrameRenderer(camera, size)
     writer = vtkPNGWriter()
     writer.SetFileName(str(path))
     writer.SetInputData(renderer.render(data))
     writer.Write()
     renderer.close()
+    if writer.GetErrorCode():
+        raise OSError(f"cannot write '{path}' (VTK error code {writer.GetErrorCode()})")
 
 
 class FrameRenderer:
