@@ -8,8 +8,10 @@
  * Changing a light re-executes only this filter, and this filter only combines: cost
  * O(n k), nothing upstream is recomputed.
  *
- * A light's default color is the solver's field array `LightDefaultColors` (else the mean
- * `Emission` of its cells, else white), its default intensity 1 and it is enabled.
+ * A light's default is the solver's field array `LightDefaultColors` (else the mean
+ * `Emission` of its cells, else white): its largest channel is the default intensity and
+ * the default color is the rest (largest channel 1), so an intensity set replaces the
+ * lamp's strength and a color set keeps it. It is enabled.
  * With the solver's `Direct_<name>` arrays, IndirectScale scales indirect light alone:
  * B = Direct + IndirectScale * (Radiosity - Direct). Lights are addressed by index (SetLightColor
  * etc.) or by name (SetLightSetting, used by ParaView); index settings win.

@@ -177,7 +177,13 @@ std::string LightRig::Resolve(const std::vector<std::string>& names, const std::
   for (int i = 0; i < k; ++i)
   {
     LightSetting s;
-    s.Color = i < static_cast<int>(defaults.size()) ? defaults[i] : Vec3{ 1, 1, 1 };
+    // A default (the lamp's Emission) is its hue, brightest channel 1, times its strength:
+    // an intensity set replaces the strength and a color set keeps it (an area light of
+    // intensity 20 set to 40 shone at 800, and set to white dropped to 1).
+    const Vec3 given = i < static_cast<int>(defaults.size()) ? defaults[i] : Vec3{ 1, 1, 1 };
+    const double peak = std::max({ given.x, given.y, given.z });
+    s.Color = peak > 0 ? given * (1.0 / peak) : given;
+    s.Intensity = peak > 0 ? peak : 1.0;
     const auto byName = this->ByName.find(names[i]);
     if (byName != this->ByName.end())
     {

@@ -76,7 +76,7 @@ for getter in (point_array, cell_array):
     check(np.allclose(got, expected, rtol=1e-5, atol=1e-7), "relit = sum color*intensity*B_i")
 check(out.GetPointData().GetScalars().GetName() == "DisplayColors", "display colors are active")
 
-# Defaults: color = mean Emission of the light's cells, intensity 1.
+# Defaults: color x intensity = mean Emission of the light's cells.
 rl.ResetLights()
 rl.Update()
 emission = cell_array(solved, "Emission")
@@ -105,11 +105,14 @@ by_name = default - emission[light_ids == 2].mean(axis=0) * amber + np.array([0.
 check(np.allclose(cell_array(rl.GetOutput(), "Radiosity"), by_name, rtol=1e-5, atol=1e-7),
       "SetLightSetting by name")
 
-# 'nan' keeps a part at its default: only the intensity of Amber changes here.
+# 'nan' keeps a part at its default: only the intensity of Amber changes here. A default
+# (the mean Emission) is a hue, brightest channel 1, times a strength, and an intensity
+# replaces the strength (an area light of intensity 20 set to 40 shines at 40, not 800).
 rl.ResetLights()
 rl.SetLightSetting("Amber", float("nan"), float("nan"), float("nan"), 4.0, 1)
 rl.Update()
-keep = default - emission[light_ids == 2].mean(axis=0) * amber + 4.0 * emission[light_ids == 2].mean(axis=0) * amber
+amber_emission = emission[light_ids == 2].mean(axis=0)
+keep = default - amber_emission * amber + 4.0 * amber_emission / amber_emission.max() * amber
 check(np.allclose(cell_array(rl.GetOutput(), "Radiosity"), keep, rtol=1e-5, atol=1e-7),
       "NaN color in SetLightSetting keeps the default color")
 
@@ -143,6 +146,7 @@ scaled = relight.vtkRadiosityRelight()
 scaled.SetInputConnection(split.GetOutputPort())
 for i in range(3):
     scaled.SetLightColor(i, 1, 1, 1)
+    scaled.SetLightIntensity(i, 1)
 scaled.SetIndirectScale(2.5)
 scaled.Update()
 expected = sum(direct_i + 2.5 * (total_i - direct_i) for total_i, direct_i in (

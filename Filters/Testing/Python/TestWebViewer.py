@@ -72,11 +72,13 @@ page = relight.export_viewer(relit.GetOutput(), os.path.join(folder, "viewer"), 
 before = browser_shot(page, "controls=0", "before.png")
 reference = vtk_shot(relit, "vtk_before.png")
 defaults = numpy_support.vtk_to_numpy(relit.GetOutput().GetFieldData().GetArray("LightDefaultColors"))
-peak = defaults[amber].max()  # the slider's default value: the default color's largest channel
+# The default intensity, in the page's slider and the filter alike: the default color's
+# largest channel (its hue is the rest).
+peak = defaults[amber].max()
 after = browser_shot(page, f"controls=0&intensity.Amber={BOOST * peak:.9g}", "after.png")
-relit.SetLightIntensity(amber, BOOST)
+relit.SetLightIntensity(amber, BOOST * peak)
 boosted = vtk_shot(relit, "vtk_after.png")
-relit.SetLightIntensity(amber, 1.0)
+relit.SetLightIntensity(amber, peak)
 for i in range(len(names)):  # Amber alone, then the others alone: where does it dominate?
     relit.SetLightEnabled(i, i == amber)
 alone = vtk_shot(relit, "vtk_amber.png")
@@ -85,14 +87,14 @@ for i in range(len(names)):
 others = vtk_shot(relit, "vtk_others.png")
 
 # A page exported from the filter as set (Amber boosted, WarmWhite off) starts from it.
-relit.SetLightIntensity(amber, BOOST)
+relit.SetLightIntensity(amber, BOOST * peak)
 warm = names.index("WarmWhite")
 relit.SetLightEnabled(warm, False)
 relit.Update()
 set_page = relight.export_viewer(relit.GetOutput(), os.path.join(folder, "set"), CAMERA, SIZE, exposure)
 as_set = browser_shot(set_page, "controls=0", "as_set.png")
 vtk_as_set = vtk_shot(relit, "vtk_as_set.png")
-relit.SetLightIntensity(amber, 1.0)
+relit.SetLightIntensity(amber, peak)
 relit.SetLightEnabled(warm, True)
 if check(as_set is not None, "Chromium rendered the page exported from the filter as set"):
     error = np.abs(as_set - vtk_as_set)
