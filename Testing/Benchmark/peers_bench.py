@@ -1,26 +1,29 @@
 """./relight bench peers: our solver against the tool a user would pick instead, Blender
 Cycles baking each light's diffuse lighting to point colours, on the same mesh, both
-judged against the Mitsuba 3 reference of the scale bench at its probe points.
+judged against a Mitsuba 3 reference at probe points.
 
-The scene is the furnished room of `./relight bench scale` (66 polygons, 8 lamps; its
-JSON from `ScaleBench --export`), meshed once by vtkRadiosityMesher (patch 0.4 m,
-element 0.15 m: about 10k elements). k = 1, 3, 8 lights are the first k lamps; the other
-lamps stay as plain reflectors, as in the reference. Ours: mesh + solve, one child
-process per k (so its peak memory is its own). Cycles: blender_bake.py in the bench-only
-venv bakes every lamp alone at each sample count on exactly our points; the time for k
-lights is the sum of the first k bakes (light groups do not apply to baking).
+A scene is a JSON of polygons, lights and probes with its Mitsuba reference: the furnished
+room of `./relight bench scale` (66 polygons, 8 lamps; `ScaleBench --export`), and four
+tessellated spheres in a room (`PolygonsBench --export`: a curved scene of many small
+triangles). It is meshed once by vtkRadiosityMesher (--element, --patch). k = 1, 3, 8
+lights are the first k lamps; the other lamps stay as plain reflectors, as in the
+reference. Ours: mesh + solve, one child process per k (so its peak memory is its own),
+at the common element size and at --element-sizes (our own error against time). Cycles:
+blender_bake.py in the bench-only venv bakes every lamp alone at each sample count on
+exactly our points of the common mesh; the time for k lights is the sum of the first k
+bakes (light groups do not apply to baking).
 
 Both methods' point values are taken to a probe the same way: interpolated in the mesh
 cell that holds the probe and faces its way. Error, as in ScaleBench: per light,
 sum |B - B_ref| / sum B_ref over the probes (B the sum of R, G, B), averaged over the k
-lights. Times are process CPU seconds / 2 (the 2-core machine's time when it is quiet)
+lights. Times are process CPU seconds / 2 (the 2-core machine's time when quiet)
 with wall seconds beside them.
 
-Writes out/bench/peers.csv (every run), peers.txt (the summary) and peers.png
-(`--report-only` writes the last two again from peers.csv).
-  --room out/bench/room.json --reference out/bench/room_reference.csv
+Writes NAME.csv (every run), NAME.txt (the tables) and NAME.png in --out
+(`--report-only` writes the last two again from NAME.csv).
+  --room out/bench/room.json --reference out/bench/room_reference.csv --name peers
   --blender out/blender-venv/bin/python --samples 16,64,256,1024 --ks 1,3,8
-  --element 0.15 --patch 0.4
+  --element 0.15 --element-sizes 0.3,0.075 --patch 0.4
 """
 
 import argparse
@@ -100,10 +103,10 @@ def solve_ours(args):
              peak_rss_mb=resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0)
 
 
-def run_ours(args, k, mesh_path):
+def run_ours(args, k, mesh_path, element):
     """Runs solve_ours for k lights in a child process and loads what it saved."""
     command = [sys.executable, __file__, "--solve-only", str(k), "--mesh-out", str(mesh_path),
-               "--room", args.room, "--element", str(args.element), "--patch", str(args.patch)]
+               "--room", args.room, "--element", str(element), "--patch", str(args.patch)]
     subprocess.run(command, check=True)
     return dict(np.load(mesh_path))
 
@@ -140,10 +143,12 @@ def mesh_polydata(mesh):
 
 
 def probe_weights(mesh, probes):
-    """A (probes, points) matrix of interpolation weights: each probe's value is the point
+    """Interpolation weights, (point ids, weights), each (probes, 8): each probe's value is the point
     values interpolated in the mesh cell that holds it and faces the probe's way (a
     locator alone may give the back of a touching surface). Rows of probes that no cell
-    holds stay zero and are dropped by the caller."""
+    holds stay zero and are dropped by the caller. (Not a dense probes x points matrix: Linux
+    keeps a process's peak memory across exec, so the children started after it would
+    report it as theirs.)"""
     from vtkmodules.vtkCommonCore import reference, vtkIdList
     from vtkmodules.vtkCommonDataModel import vtkGenericCell, vtkStaticCellLocator
 
@@ -160,7 +165,7 @@ def probe_weights(mesh, probes):
         normal = np.cross(corners[1] - corners[0], corners[2] - corners[0])
         return np.dot(normal, n) > 0.9 * np.linalg.norm(normal) * np.linalg.norm(n)
 
-    weights = np.zeros((len(probes), len(points)))
+    ids, weights = np.zeros((len(probes), 8), np.int64), np.zeros((len(probes), 8))
     for i, probe in enumerate(probes):
         x, n = np.asarray(probe["point"]), np.asarray(probe["normal"])
         locator.FindCellsWithinBounds(list(np.ravel(np.column_stack((x - 1e-4, x + 1e-4)))), found)
@@ -172,9 +177,20 @@ def probe_weights(mesh, probes):
             cell.EvaluatePosition(list(x), closest, sub, pcoords, dist2, w)
             if dist2.get() < best_distance:
                 best_distance = dist2.get()
-                weights[i] = 0
-                weights[i, connectivity[offsets[c]:offsets[c + 1]]] = w[:offsets[c + 1] - offsets[c]]
-    return weights
+                corners = offsets[c + 1] - offsets[c]
+                ids[i], weights[i] = 0, 0
+                ids[i, :corners], weights[i, :corners] = connectivity[offsets[c]:offsets[c + 1]], w[:corners]
+    return ids, weights
+
+
+def some_probes(weights, keep):
+    """The weights of the probes `keep` selects."""
+    return weights[0][keep], weights[1][keep]
+
+
+def held(weights):
+    """The probes a cell holds."""
+    return weights[1].sum(axis=1) > 0
 
 
 def light_errors(values, reference):
@@ -189,10 +205,25 @@ def light_errors(values, reference):
 
 def at_probes(weights, point_values):
     """(lights, points, 3) point radiosity -> (probes, lights) R + G + B at the probes."""
-    return np.stack([weights @ b.sum(axis=1) for b in point_values], axis=1)
+    ids, w = weights
+    return np.stack([(b.sum(axis=1)[ids] * w).sum(axis=1) for b in point_values], axis=1)
 
 
 # ---------------------------------------------------------------- Cycles
+
+def ours_row(solved, k, element, weights, reference):
+    """One of our solves as a row of the report (probes no cell of this mesh holds are left
+    out of its error)."""
+    inside = held(weights)
+    errors = light_errors(at_probes(some_probes(weights, inside), solved["b"]), reference[inside, :k])
+    row = dict(method="ours", k=k, samples="", element=element, elements=len(solved["offsets"]) - 1,
+               time_s=float(solved["cpu"]) / CORES, wall_s=float(solved["wall"]), error_pct=100 * errors.mean(),
+               peak_mb=float(solved["peak_rss_mb"]), relight_ms=1e3 * float(solved["relight"]))
+    print(f"ours, k = {k}, element {element:g} m ({row['elements']:,} elements, {inside.sum():,} probes): "
+          f"{solved['method']}, {row['time_s']:.2f} s ({row['wall_s']:.2f} s wall), {row['error_pct']:.2f} % "
+          f"from Mitsuba, {row['peak_mb']:.0f} MB peak, relight {row['relight_ms']:.2f} ms", flush=True)
+    return row
+
 
 def run_cycles(args, mesh_path, lights):
     """blender_bake.py in the bench venv; returns its results (a failed bake ends the bench:
@@ -225,7 +256,7 @@ def time_to_reach(times, errors, target):
 
 # ---------------------------------------------------------------- report
 
-def cycles_runs(cycles, weights, reference, ks):
+def cycles_runs(cycles, weights, reference, ks, element, elements):
     """Per k and sample count: the 2-core time, wall time and mean error of the first k
     lights' bakes. Returns rows of dicts."""
     bakes = cycles["bakes"]  # rows: samples, light, CPU s, wall s
@@ -236,7 +267,9 @@ def cycles_runs(cycles, weights, reference, ks):
         errors = light_errors(values, reference[:, :lights])
         for k in ks:
             mine = bakes[(bakes[:, 0] == samples) & (bakes[:, 1] < k)]
-            rows.append(dict(method="Cycles", k=k, samples=samples, time_s=mine[:, 2].sum() / CORES,
+            rows.append(dict(method="Cycles", k=k, samples=samples, element=element,
+                             elements=elements,
+                             time_s=mine[:, 2].sum() / CORES,
                              wall_s=mine[:, 3].sum(), error_pct=100 * errors[:k].mean(),
                              peak_mb=float(cycles["peak_rss_mb"]), relight_ms=""))
     return rows
@@ -273,7 +306,7 @@ def summary(ours_rows, cycles_rows, fixed_error, ks):
     return "\n".join(lines)
 
 
-def plot(rows, path, ks, fixed_error):
+def plot(rows, path, ks, fixed_error, title):
     """Error against time, log-log: a line per k for Cycles (labelled with the samples per
     bake), a star per k for ours, and the fixed error of the table dashed."""
     try:
@@ -294,30 +327,44 @@ def plot(rows, path, ks, fixed_error):
             for r in c:
                 ax.annotate(str(r["samples"]), (r["time_s"], r["error_pct"]), textcoords="offset points",
                             xytext=(4, 4), fontsize=7, color=color)
-        o = [r for r in rows if r["method"] == "ours" and r["k"] == k]
-        ax.loglog([r["time_s"] for r in o], [r["error_pct"] for r in o], "*", markersize=14, color=color,
+        o = sorted((r for r in rows if r["method"] == "ours" and r["k"] == k), key=lambda r: r["time_s"])
+        ax.loglog([r["time_s"] for r in o], [r["error_pct"] for r in o], "*:", markersize=12, color=color,
                   label=f"ours, k = {k}")
+        for r in o if k == max(ks) else ():  # one set of labels: the k curves of ours lie together
+            ax.annotate(f"{r['element']:g} m", (r["time_s"], r["error_pct"]), textcoords="offset points",
+                        xytext=(6, -10), fontsize=7, color=color)
     ax.set_xlabel("time (process CPU seconds / 2: the 2-core machine's time)")
     ax.set_ylabel("mean error vs Mitsuba 3 at the probes (%)")
-    ax.set_title("Furnished room, same mesh: error against time (numbers: samples)", fontsize=10)
+    ax.set_title(f"{title}: error against time\n(numbers: Cycles' samples per bake, our element size)", fontsize=9)
     plain = FuncFormatter(lambda value, _: f"{value:g}")  # 2, 3, 10 rather than 2 x 10^0
     ax.xaxis.set_major_formatter(plain)
     ax.xaxis.set_minor_formatter(NullFormatter())
     ax.yaxis.set_major_formatter(plain)
     ax.yaxis.set_minor_formatter(plain)
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8, ncol=2)
+    ax.legend(fontsize=8, loc="upper right")
     fig.tight_layout()
     fig.savefig(path, dpi=110)
 
 
-def report(rows, out, ks, fixed_error):
-    """Prints the table, writes it to peers.txt and draws peers.png."""
+def sizes_table(ours):
+    """Ours over element sizes: the time and error of each mesh (the first table's mesh is
+    the one Cycles bakes on)."""
+    lines = ["| k | element | elements | time | mean error vs Mitsuba |", "|---|---|---|---|---|"]
+    for r in sorted(ours, key=lambda r: (r["k"], -r["element"])):
+        lines.append(f"| {r['k']} | {r['element']:g} m | {int(r['elements']):,} | {r['time_s']:.2f} s | {r['error_pct']:.2f} % |")
+    return "\n".join(lines)
+
+
+def report(rows, args):
+    """Prints the tables, writes them to NAME.txt and draws NAME.png."""
+    out, ks = pathlib.Path(args.out), sorted(int(k) for k in args.ks.split(","))
     ours = [r for r in rows if r["method"] == "ours"]
-    table = summary(ours, [r for r in rows if r["method"] == "Cycles"], fixed_error, ks)
+    table = summary([r for r in ours if r["element"] == args.element], [r for r in rows if r["method"] == "Cycles"],
+                    args.fixed_error, ks) + "\n\n" + sizes_table(ours)
     print(table)
-    (out / "peers.txt").write_text(table + "\n")
-    plot(rows, out / "peers.png", ks, fixed_error)
+    (out / f"{args.name}.txt").write_text(table + "\n")
+    plot(rows, out / f"{args.name}.png", ks, args.fixed_error, args.title)
 
 
 def write_rows(rows, path):
@@ -332,7 +379,7 @@ def write_rows(rows, path):
 
 def read_rows(path):
     """peers.csv back as the rows main() wrote."""
-    numbers = ("time_s", "wall_s", "error_pct", "peak_mb", "relight_ms")
+    numbers = ("time_s", "wall_s", "error_pct", "peak_mb", "relight_ms", "element")
     with open(path) as f:
         return [dict(r, k=int(r["k"]), **{n: float(r[n]) if r[n] else "" for n in numbers})
                 for r in csv.DictReader(f)]
@@ -346,11 +393,15 @@ def main():
     parser.add_argument("--out", default="out/bench")
     parser.add_argument("--samples", default="16,64,256,1024")
     parser.add_argument("--ks", default="1,3,8")
-    parser.add_argument("--element", type=float, default=0.15)
+    parser.add_argument("--element", type=float, default=0.15, help="the element size of the mesh both use")
+    parser.add_argument("--element-sizes", default="0.3,0.075",
+                        help="other element sizes ours is also solved at (its own error against time)")
+    parser.add_argument("--name", default="peers", help="the stem of the files written in --out")
+    parser.add_argument("--title", default="Furnished room", help="the scene, for the plot's title")
     parser.add_argument("--patch", type=float, default=0.4)
     parser.add_argument("--fixed-error", type=float, default=2.0, help="the fixed error of the table (%%)")
     parser.add_argument("--report-only", action="store_true",
-                        help="only write peers.txt and peers.png again from peers.csv")
+                        help="only write NAME.txt and NAME.png again from NAME.csv")
     parser.add_argument("--solve-only", type=int, default=0, help=argparse.SUPPRESS)
     parser.add_argument("--mesh-out", default="", help=argparse.SUPPRESS)
     args = parser.parse_args()
@@ -359,7 +410,7 @@ def main():
         return
     ks = sorted(int(k) for k in args.ks.split(","))
     if args.report_only:
-        report(read_rows(pathlib.Path(args.out) / "peers.csv"), pathlib.Path(args.out), ks, args.fixed_error)
+        report(read_rows(pathlib.Path(args.out) / f"{args.name}.csv"), args)
         return
     room = json.loads(pathlib.Path(args.room).read_text())
     probes = room["probes"]
@@ -370,41 +421,40 @@ def main():
         reference = np.full((len(probes), max(ks)), np.nan)
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
+    sizes = sorted({args.element, *(float(e) for e in args.element_sizes.split(",") if e)}, reverse=True)
     with tempfile.TemporaryDirectory() as tmp:
-        ours = {k: run_ours(args, k, pathlib.Path(tmp) / f"ours{k}.npz") for k in ks}
+        ours = {k: run_ours(args, k, pathlib.Path(tmp) / f"ours{k}.npz", args.element) for k in ks}
         mesh = ours[max(ks)]  # every lamp marked: Blender's scene
         for k in ks:
             if not np.array_equal(ours[k]["connectivity"], mesh["connectivity"]):
                 sys.exit(f"the mesh with {k} lights differs from the one with {max(ks)}: no common points to compare on")
         weights = probe_weights(mesh, probes)
-        used = (weights.sum(axis=1) > 0) & (~np.isnan(reference).all(axis=1) | np.isnan(reference).all())
+        used = held(weights) & (~np.isnan(reference).all(axis=1) | np.isnan(reference).all())
         print(f"{len(mesh['offsets']) - 1:,} elements, {len(mesh['points']):,} points; {used.sum():,} of "
               f"{sum(p['seen'] for p in probes):,} seen probes lie in a cell facing their way", flush=True)
-        weights, reference = weights[used], reference[used]
+        weights, reference = some_probes(weights, used), reference[used]
         rows = []
-        for k in ks:
-            errors = light_errors(at_probes(weights, ours[k]["b"]), reference[:, :k])
-            rows.append(dict(method="ours", k=k, samples="", time_s=float(ours[k]["cpu"]) / CORES,
-                             wall_s=float(ours[k]["wall"]), error_pct=100 * errors.mean(),
-                             peak_mb=float(ours[k]["peak_rss_mb"]), relight_ms=1e3 * float(ours[k]["relight"])))
-            print(f"ours, k = {k}: {ours[k]['method']}, {rows[-1]['time_s']:.2f} s "
-                  f"({rows[-1]['wall_s']:.2f} s wall), {rows[-1]['error_pct']:.2f} % from Mitsuba, "
-                  f"{rows[-1]['peak_mb']:.0f} MB peak, relight {rows[-1]['relight_ms']:.2f} ms", flush=True)
+        for element in sizes:  # ours over element sizes: what accuracy costs us in time
+            for k in ks:
+                solved = ours[k] if element == args.element else run_ours(
+                    args, k, pathlib.Path(tmp) / f"ours{k}_{element:g}.npz", element)
+                rows.append(ours_row(solved, k, element, weights if element == args.element else
+                                     some_probes(probe_weights(solved, probes), used), reference))
         cycles = run_cycles(args, pathlib.Path(tmp) / f"ours{max(ks)}.npz", max(ks)) if args.blender else None
     if cycles is None:
         print("Cycles: not run (no --blender python given); ours only")
         cycles_rows = []
     else:
-        cycles_rows = cycles_runs(cycles, weights, reference, ks)
+        cycles_rows = cycles_runs(cycles, weights, reference, ks, args.element, len(mesh["offsets"]) - 1)
         for r in cycles_rows:
             print(f"Cycles, k = {r['k']}, {r['samples']} samples per bake: {r['time_s']:.1f} s "
                   f"({r['wall_s']:.1f} s wall), {r['error_pct']:.2f} % from Mitsuba", flush=True)
         print(f"Cycles: {float(cycles['setup_s']):.1f} s (CPU / {CORES}) to load bpy and build the scene once, "
               f"not counted above", flush=True)
     rows += cycles_rows
-    write_rows(rows, out / "peers.csv")
-    report(rows, out, ks, args.fixed_error)
-    print(f"wrote {out / 'peers.csv'}, {out / 'peers.txt'} and {out / 'peers.png'}")
+    write_rows(rows, out / f"{args.name}.csv")
+    report(rows, args)
+    print(f"wrote {args.name}.csv, .txt and .png in {out}")
 
 
 if __name__ == "__main__":
