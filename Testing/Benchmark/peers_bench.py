@@ -23,7 +23,7 @@ Writes NAME.csv (every run), NAME.txt (the tables) and NAME.png in --out
 (`--report-only` writes the last two again from NAME.csv).
   --room out/bench/room.json --reference out/bench/room_reference.csv --name peers
   --blender out/blender-venv/bin/python --samples 16,64,256,1024 --ks 1,3,8
-  --element 0.15 --element-sizes 0.3,0.075 --patch 0.4
+  --element 0.15 --element-sizes 0.3,0.075 --patch 0.4 --method Auto
 """
 
 import argparse
@@ -86,6 +86,7 @@ def solve_ours(args):
     mesher.SetElementSize(args.element)
     solver = relight.vtkLightTaggedRadiosity()
     solver.SetInputConnection(mesher.GetOutputPort())
+    getattr(solver, "SetSolverMethodTo" + args.method)()
     cpu, wall = time.process_time(), time.perf_counter()
     solver.Update()
     cpu, wall = time.process_time() - cpu, time.perf_counter() - wall
@@ -106,7 +107,7 @@ def solve_ours(args):
 def run_ours(args, k, mesh_path, element):
     """Runs solve_ours for k lights in a child process and loads what it saved."""
     command = [sys.executable, __file__, "--solve-only", str(k), "--mesh-out", str(mesh_path),
-               "--room", args.room, "--element", str(element), "--patch", str(args.patch)]
+               "--room", args.room, "--element", str(element), "--patch", str(args.patch), "--method", args.method]
     subprocess.run(command, check=True)
     return dict(np.load(mesh_path))
 
@@ -396,6 +397,7 @@ def main():
     parser.add_argument("--element", type=float, default=0.15, help="the element size of the mesh both use")
     parser.add_argument("--element-sizes", default="0.3,0.075",
                         help="other element sizes ours is also solved at (its own error against time)")
+    parser.add_argument("--method", default="Auto", help="our SolverMethod (Auto, Hierarchical, Clustered, ...)")
     parser.add_argument("--name", default="peers", help="the stem of the files written in --out")
     parser.add_argument("--title", default="Furnished room", help="the scene, for the plot's title")
     parser.add_argument("--patch", type=float, default=0.4)
