@@ -20,6 +20,10 @@ namespace SceneFiles
 std::string Read(const std::string& path, radiosity::RawScene& raw, std::vector<std::string>& warnings);
 
 std::string ReadObj(const std::string& path, radiosity::RawScene& raw, std::vector<std::string>& warnings);
+/// ReadObj with the material libraries' textures looked for in `textureFolder` (the model's
+/// own folder for a file assimp converted into a temporary one).
+std::string ReadObjTexturedFrom(const std::string& path, const std::string& textureFolder, radiosity::RawScene& raw,
+  std::vector<std::string>& warnings);
 std::string ReadGltf(const std::string& path, radiosity::RawScene& raw, std::vector<std::string>& warnings);
 std::string ReadPly(const std::string& path, radiosity::RawScene& raw, std::vector<std::string>& warnings);
 /// Empty when every count, list and face index of the PLY file fits what the file holds;

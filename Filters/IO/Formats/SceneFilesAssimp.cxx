@@ -110,7 +110,9 @@ std::string ReadWithAssimp(const std::string& path, radiosity::RawScene& raw, st
   {
     return "'" + path + "' could not be converted (" + error + ")";
   }
-  const std::string read = ReadObj(converted, raw, warnings);
+  // Textures stay beside the model; the OBJ is in a temporary folder.
+  const std::string model = vtksys::SystemTools::GetFilenamePath(vtksys::SystemTools::CollapseFullPath(path));
+  const std::string read = ReadObjTexturedFrom(converted, model, raw, warnings);
   return read.empty() ? read : "'" + path + "' converted by assimp: " + read;
 }
 

@@ -42,10 +42,34 @@ std::string ReadLibraries(const std::string& path, const std::vector<std::string
   return std::string();
 }
 
+/// Where a texture named in a material library is: its path from `folder` (with Windows'
+/// backslashes as slashes: FBX and 3DS files carry them), else its file name in `folder`
+/// (models often name a path on their author's machine); empty when neither is a file.
+std::string FindTexture(const std::string& named, const std::string& folder)
+{
+  std::string path = named;
+  std::replace(path.begin(), path.end(), '\\', '/');
+  for (const std::string& file : { vtksys::SystemTools::CollapseFullPath(path, folder),
+         vtksys::SystemTools::CollapseFullPath(vtksys::SystemTools::GetFilenameName(path), folder) })
+  {
+    if (vtksys::SystemTools::FileExists(file, true))
+    {
+      return file;
+    }
+  }
+  return std::string();
+}
+
 /// The diffuse color times its texture's mean color, where the texture can be read.
 void ApplyTexture(const std::string& folder, radiosity::ImportMaterial& m, std::vector<std::string>& warnings)
 {
-  const std::string file = vtksys::SystemTools::CollapseFullPath(m.DiffuseTexture, folder);
+  const std::string file = FindTexture(m.DiffuseTexture, folder);
+  if (file.empty()) // not handed to VTK's image readers, which log an error of their own
+  {
+    warnings.push_back("the texture '" + m.DiffuseTexture + "' of material '" + m.Name + "' is not in '" + folder +
+      "'; its Kd alone is used");
+    return;
+  }
   vtkSmartPointer<vtkImageReader2> reader =
     vtk::TakeSmartPointer(vtkImageReader2Factory::CreateImageReader2(file.c_str()));
   if (!reader)
@@ -64,6 +88,12 @@ void ApplyTexture(const std::string& folder, radiosity::ImportMaterial& m, std::
 
 std::string ReadObj(const std::string& path, radiosity::RawScene& raw, std::vector<std::string>& warnings)
 {
+  return ReadObjTexturedFrom(path, vtksys::SystemTools::GetFilenamePath(path), raw, warnings);
+}
+
+std::string ReadObjTexturedFrom(const std::string& path, const std::string& textureFolder, radiosity::RawScene& raw,
+  std::vector<std::string>& warnings)
+{
   std::string text;
   if (!ReadText(path, text))
   {
@@ -80,7 +110,6 @@ std::string ReadObj(const std::string& path, radiosity::RawScene& raw, std::vect
   {
     return error;
   }
-  const std::string folder = vtksys::SystemTools::GetFilenamePath(path);
   for (radiosity::ImportMaterial& used : raw.materials)
   {
     const auto found = std::find_if(definitions.begin(), definitions.end(),
@@ -93,7 +122,7 @@ std::string ReadObj(const std::string& path, radiosity::RawScene& raw, std::vect
     used = *found;
     if (!used.DiffuseTexture.empty())
     {
-      ApplyTexture(folder, used, warnings);
+      ApplyTexture(textureFolder, used, warnings);
     }
   }
   return raw.NumberOfPolygons() ? std::string() : "'" + path + "' has no faces";

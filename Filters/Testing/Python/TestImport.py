@@ -6,6 +6,7 @@ import base64
 import json
 import os
 import re
+import shutil
 import struct
 import subprocess
 import sys
@@ -329,6 +330,21 @@ size = [house.GetBounds()[2 * i + 1] - house.GetBounds()[2 * i] for i in range(3
 check(house.GetNumberOfCells() > 10000 and "Ziegel" in materials and "Glas" in materials,
       f"FZK-Haus through assimp: {house.GetNumberOfCells()} polygons, materials {materials}")
 check(14 < max(size) < 20 and min(size) > 5, f"FZK-Haus in metres: {size}")
+
+# A texture beside a model that assimp converts (into a temporary folder) is found there: the
+# Collada duck's duckCM.tga (a yellow duck with an orange beak) was looked for in the
+# temporary folder and the duck came out white.
+duck = relight.import_scene("/usr/share/assimp/models/Collada/duck.dae", require_lights=False)
+rgb = np.asarray(cell_array(duck, "Reflectance")).reshape(-1, 3).mean(axis=0)
+said = fields(duck, "Warnings")
+check(rgb[0] > 0.8 and rgb[2] < 0.2 and not any("texture" in w for w in said),
+      f"the Collada duck takes its texture from beside it: reflectance {np.round(rgb, 3)}, warnings {said}")
+copied = os.path.join(folder, "untextured")
+os.makedirs(copied, exist_ok=True)
+shutil.copy("/usr/share/assimp/models/Collada/duck.dae", copied)
+said = fields(relight.import_scene(os.path.join(copied, "duck.dae"), require_lights=False), "Warnings")
+check(any("duckCM.tga'" in w and "is not in" in w and copied in w for w in said),
+      f"...and without it, the warning names the texture and where it was looked for: {said}")
 
 # --- Mark Lights: by material pattern, cell id, selection; area lights ---------------------------
 def marked(scene, name="Light", pattern=None, ids=(), areas=(), selection=None, emission=(1, 1, 1)):
