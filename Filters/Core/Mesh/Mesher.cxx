@@ -348,9 +348,60 @@ double CountWithContacts(const PolygonArrays& polygons, double patchSize, double
 
 namespace
 {
-/// The polygons the mesher meshes: triangle pairs joined into quads where MergeTriangles.
+/// How far the loop's farthest corner is off its (Newell) plane, over its longest edge.
+double Warp(const std::vector<Vec3>& loop)
+{
+  const Vec3 n = Normalized(NewellVector(loop.data(), static_cast<int>(loop.size())));
+  const Vec3 c = PolygonCentroid(loop.data(), static_cast<int>(loop.size()));
+  double offset = 0, size = 0;
+  for (size_t v = 0; v < loop.size(); ++v)
+  {
+    offset = std::max(offset, std::fabs(Dot(n, loop[v] - c)));
+    size = std::max(size, Norm(loop[(v + 1) % loop.size()] - loop[v]));
+  }
+  return size > 0 ? offset / size : 0.0;
+}
+
+/// Polygons of four or more corners farther off flat than this are meshed as their
+/// triangles: meshed as if flat, each was laid in its own plane and neighbours parted at
+/// their shared edges (cracks through the Collada duck).
+constexpr double kMostWarp = 1e-3;
+
+/// `polygons` with each warped one replaced by its triangles (same source).
+PairedPolygons SplitWarped(const std::vector<Vec3>& points, const PairedPolygons& polygons, double noise)
+{
+  PairedPolygons out;
+  out.merged = polygons.merged;
+  std::vector<Vec3> loop;
+  for (size_t i = 0; i < polygons.source.size(); ++i)
+  {
+    const int* ids = polygons.connectivity.data() + polygons.offsets[i];
+    const int count = polygons.offsets[i + 1] - polygons.offsets[i];
+    loop.clear();
+    for (int v = 0; v < count; ++v)
+    {
+      loop.push_back(points[ids[v]]);
+    }
+    const std::vector<int> corners =
+      count >= 4 && Warp(loop) > kMostWarp ? Triangulate(loop.data(), count, noise) : std::vector<int>();
+    for (size_t t = 0; t + 2 < corners.size(); t += 3)
+    {
+      out.connectivity.insert(out.connectivity.end(), { ids[corners[t]], ids[corners[t + 1]], ids[corners[t + 2]] });
+      out.offsets.push_back(static_cast<int>(out.connectivity.size()));
+      out.source.push_back(polygons.source[i]);
+    }
+    if (corners.empty())
+    {
+      out.connectivity.insert(out.connectivity.end(), ids, ids + count);
+      out.offsets.push_back(static_cast<int>(out.connectivity.size()));
+      out.source.push_back(polygons.source[i]);
+    }
+  }
+  return out;
+}
+
 /// The polygons the mesher meshes: coincident copies left out (said in `copies`), then
-/// triangle pairs joined where the options ask.
+/// triangle pairs joined where the options ask, and warped polygons split into triangles.
 PairedPolygons Paired(const std::vector<Vec3>& points, const std::vector<int>& offsets,
   const std::vector<int>& connectivity, const std::vector<int>& surfaceKey, const MesherOptions& options,
   CoincidentCopies* copies = nullptr)
@@ -368,9 +419,10 @@ PairedPolygons Paired(const std::vector<Vec3>& points, const std::vector<int>& o
   {
     *copies = found;
   }
+  const double noise = MeshNoise(points, options.PointQuantum);
   if (!options.MergeTriangles)
   {
-    return polygons;
+    return SplitWarped(points, polygons, noise);
   }
   std::vector<int> keys(polygons.source.size(), 0);
   for (size_t i = 0; i < keys.size(); ++i)
@@ -382,7 +434,7 @@ PairedPolygons Paired(const std::vector<Vec3>& points, const std::vector<int>& o
   {
     source = polygons.source[source]; // back to the input's numbering
   }
-  return merged;
+  return SplitWarped(points, merged, noise);
 }
 
 /// Says which input polygons were left out as copies, or kept though they coincide.
@@ -587,39 +639,26 @@ void WarnAboutWarpedPolygons(const std::vector<Vec3>& points, const std::vector<
   const std::vector<int>& connectivity, const MesherOptions& options)
 {
   int warped = 0, worst = -1;
-  double worstOffset = 0, worstRatio = 0;
+  double worstRatio = 0;
   for (size_t i = 0; i + 1 < offsets.size(); ++i)
   {
     const std::vector<Vec3> loop = GatherLoop(points, offsets, connectivity, static_cast<int>(i));
-    if (loop.size() < 4)
-    {
-      continue;
-    }
-    const Vec3 n = Normalized(NewellVector(loop.data(), static_cast<int>(loop.size())));
-    const Vec3 c = PolygonCentroid(loop.data(), static_cast<int>(loop.size()));
-    double offset = 0, size = 0;
-    for (size_t v = 0; v < loop.size(); ++v)
-    {
-      offset = std::max(offset, std::fabs(Dot(n, loop[v] - c)));
-      size = std::max(size, Norm(loop[(v + 1) % loop.size()] - loop[v]));
-    }
-    if (offset > 1e-3 * size)
+    const double warp = loop.size() < 4 ? 0.0 : Warp(loop);
+    if (warp > kMostWarp)
     {
       ++warped;
-      if (offset / size > worstRatio)
+      if (warp > worstRatio)
       {
         worst = static_cast<int>(i);
-        worstOffset = offset;
-        worstRatio = offset / size;
+        worstRatio = warp;
       }
     }
   }
   if (warped > 0 && options.Warning)
   {
     std::ostringstream text;
-    text << warped << " polygon(s) are not flat and are meshed as if they were; the worst, cell " << worst
-         << ", has a corner " << worstOffset << " off its plane (" << 100 * worstRatio
-         << " % of its size). Split them into triangles or flat polygons.";
+    text << warped << " polygon(s) are not flat and are meshed as their triangles; the worst, cell " << worst
+         << ", has a corner " << 100 * worstRatio << " % of its longest edge off its plane.";
     options.Warning(text.str());
   }
 }

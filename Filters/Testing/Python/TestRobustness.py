@@ -338,6 +338,21 @@ check("faces away" not in found, f"...and facing the floor, no such warning ({fo
 twisted = [box[0][0], box[0][1], (W, D, 0.1), box[0][3]]  # a floor corner 10 cm up
 found = warnings_for([twisted] + box[1:] + [down], [-1] * 6 + [0])
 check("are not flat" in found and "cell 0" in found, f"a twisted floor: {found}")
+# Two twisted panels sharing an edge (a tessellated model's warped quads): each was meshed in
+# its own plane and their elements parted along the shared edge (cracks through the Collada
+# duck); meshed as their triangles, every element corner on that edge has its twin across.
+panels = [[(0, 0, 0), (1, 0, 0), (1, 1, 0.15), (0, 1, 0)], [(1, 0, 0), (2, 0, 0.1), (2, 1, 0), (1, 1, 0.15)]]
+crease = relight.vtkRadiosityMesher()
+crease.SetInputData(relight.make_scene(panels, [(0.5,) * 3] * 2, [-1, -1]))
+crease.SetPatchSize(0.5)
+crease.SetElementSize(0.25)
+crease.Update()
+meshed = crease.GetOutput()
+corners = np.array([meshed.GetPoint(i) for i in range(meshed.GetNumberOfPoints())])
+on_edge = corners[np.abs(corners[:, 0] - 1) < 0.01]  # the two panels' points along x = 1
+twin = [np.sort(np.linalg.norm(on_edge - p, axis=1))[1] for p in on_edge]  # nearest other point
+check(len(on_edge) >= 8 and max(twin) < 1e-9, f"warped panels meet along their shared edge: {len(on_edge)} points "
+                                              f"there, each {max(twin):.1e} or less from its twin across")
 
 # --- the light schedule file: a real CSV reader --------------------------------------------------
 two = relight.make_scene([[(0, 0, 1), (0, 0.4, 1), (0.4, 0.4, 1), (0.4, 0, 1)], [(0.6, 0, 1), (0.6, 0.4, 1), (1, 0.4, 1), (1, 0, 1)],
