@@ -284,10 +284,16 @@ void WarningList::Add(vtkObject* self, const std::string& message)
   this->Messages.push_back(message);
 }
 
-void WarningList::AddTo(vtkFieldData* fields) const
+void WarningList::AddTo(vtkFieldData* fields, const std::string& superseded) const
 {
   vtkStringArray* upstream = vtkStringArray::SafeDownCast(fields->GetAbstractArray("Warnings"));
-  if (this->Messages.empty())
+  const auto kept = [&](vtkIdType i) { return superseded.empty() || upstream->GetValue(i).rfind(superseded, 0) != 0; };
+  bool dropped = false;
+  for (vtkIdType i = 0; upstream && i < upstream->GetNumberOfValues(); ++i)
+  {
+    dropped = dropped || !kept(i);
+  }
+  if (this->Messages.empty() && !dropped)
   {
     return;
   }
@@ -295,7 +301,10 @@ void WarningList::AddTo(vtkFieldData* fields) const
   all->SetName("Warnings");
   for (vtkIdType i = 0; upstream && i < upstream->GetNumberOfValues(); ++i)
   {
-    all->InsertNextValue(upstream->GetValue(i));
+    if (kept(i))
+    {
+      all->InsertNextValue(upstream->GetValue(i));
+    }
   }
   for (const std::string& message : this->Messages)
   {

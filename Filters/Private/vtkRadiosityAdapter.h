@@ -87,7 +87,9 @@ public:
   void Add(vtkObject* self, const std::string& message);
   /// Sets Warnings on `fields` to the upstream ones it holds plus ours, in a new array so
   /// that the input's (shared by a shallow copy) stays as it was; adds nothing if none.
-  void AddTo(vtkFieldData* fields) const;
+  /// Upstream ones that begin with `superseded` (non-empty) are left out: this filter checked
+  /// the same again (the solver checks the lights on its mesh after Mark Lights did).
+  void AddTo(vtkFieldData* fields, const std::string& superseded = std::string()) const;
 
 private:
   bool Quiet;

@@ -328,6 +328,15 @@ above = [(x, y, H + 0.5) for x, y, _ in down]  # facing down, half a metre above
 found = warnings_for(box + [above], [-1] * 6 + [0])
 check("Light 'Light0' lights nothing" in found, f"a lamp above the ceiling (a black picture before, no word): {found}")
 check("lights nothing" not in clean, "...and the proper lamp lights something")
+# Placed with Mark Lights, the lamp is checked there (on the scene) and by the solver (on its
+# mesh): the solver's Warnings held both, once with the scene's element numbers.
+marked = relight.mark_lights(relight.make_scene(box, [(0.7,) * 3] * 6, [-1] * 6),
+                             relight.area_light("Key", centre=(0.8, 1.5, H + 0.5), normal=(0, 0, -1), size=0.4))
+with warnings.catch_warnings():
+    warnings.simplefilter("ignore")
+    listed = relight.solve(marked, 0.5, 0.25, MaximumShots=50).GetOutput().GetFieldData().GetAbstractArray("Warnings")
+listed = [listed.GetValue(i) for i in range(listed.GetNumberOfValues())]
+check(sum("lights nothing" in w for w in listed) == 1, f"Mark Lights, then the solver: the lamp's warning once ({listed})")
 floor = box[0]
 lamp_up = [(1.0, 1.0, 0.3), (2.0, 1.0, 0.3), (2.0, 2.0, 0.3), (1.0, 2.0, 0.3)]  # faces +z, nothing above it
 found = warnings_for([floor, lamp_up], [-1, 0])
