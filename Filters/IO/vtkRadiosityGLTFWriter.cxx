@@ -313,6 +313,11 @@ void vtkRadiosityGLTFWriter::WriteData()
     attributes["COLOR_0"] = glb.AddVec3(Floats(relit, exposure, true), false);
   }
   const json lights = AddLightAttributes(input, glb, attributes);
+  if (lights.empty())
+  {
+    vtkWarningMacro(<< "The input holds no radiosity (no Radiosity_<light> arrays): " << this->FileName
+                    << " gets the geometry alone. Give the writer the solver's or the relight filter's output.");
+  }
   const json primitive = { { "attributes", attributes }, { "indices", glb.AddIndices(Triangles(mesh)) },
     { "material", 0 }, { "mode", 4 } };
   std::string bytes;

@@ -261,6 +261,13 @@ for data, path, expected, why in ((not_updated.GetOutput(), os.path.join(tempfil
     except (ValueError, OSError) as error:
         check(expected in str(error), f"render_png {why} raises: {error}")
 
+# A .glb of a mesh that was never solved holds geometry alone: said, not silent (116 kB and
+# no lights, no word).
+with warnings.catch_warnings(record=True) as caught:
+    warnings.simplefilter("always")
+    relight.write_gltf(drawn_in.GetInputAlgorithm().GetOutput(), os.path.join(tempfile.gettempdir(), "unsolved.glb"))
+check(any("no radiosity" in str(w.message) for w in caught), f"write_gltf of an unsolved mesh warns: {[str(w.message) for w in caught]}")
+
 # --- a wall across a room: light does not pass through it --------------------------------------
 # The partition stands across floor, ceiling and side-wall patches (0.5 m patches): a patch
 # spanning both sides had shot light received on one side from the other (dark side at

@@ -1,7 +1,9 @@
 """Solutions out: ``write_gltf`` writes a solved (and optionally relit) scene as binary
 glTF with one vertex attribute per light, for relighting outside VTK."""
 
-from .scene import ErrorCatcher
+import warnings
+
+from .scene import ErrorCatcher, own_words
 from .vtkRadiosityFilters import vtkRadiosityGLTFWriter
 
 
@@ -11,7 +13,7 @@ def write_gltf(data, path, exposure=0.0):
     relight filter's; for the solver's output, every light at its default color), and
     the light names, default colors and exposure in the mesh's extras.relight. Exposure 0:
     the relight filter's (its field array Exposure), else metered as it meters. Raises
-    OSError."""
+    OSError; the writer's warnings (an input without radiosity) come as RuntimeWarnings."""
     writer = vtkRadiosityGLTFWriter()
     writer.SetInputData(data)
     writer.SetFileName(str(path))
@@ -19,6 +21,8 @@ def write_gltf(data, path, exposure=0.0):
     catcher = ErrorCatcher(writer)
     if not writer.Write():
         raise OSError(f"could not write {path!r}: {catcher.first_error()}")
+    for message in catcher.warnings:  # as relight.solve passes the filters' warnings on
+        warnings.warn(own_words(message), RuntimeWarning, stacklevel=2)
 
 
 def export_viewer(data, folder, camera=None, size=(640, 480), exposure=0.0):
