@@ -313,7 +313,7 @@ void vtkRadiosityGLTFWriter::WriteData()
     attributes["COLOR_0"] = glb.AddVec3(Floats(relit, exposure, true), false);
   }
   const json lights = AddLightAttributes(input, glb, attributes);
-  if (lights.empty())
+  if (lights.empty() && !input->GetPointData()->GetArray("Radiosity")) // StandardCombined writes this alone
   {
     vtkWarningMacro(<< "The input holds no radiosity (no Radiosity_<light> arrays): " << this->FileName
                     << " gets the geometry alone. Give the writer the solver's or the relight filter's output.");

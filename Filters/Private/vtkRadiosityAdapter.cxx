@@ -284,10 +284,15 @@ void WarningList::Add(vtkObject* self, const std::string& message)
   this->Messages.push_back(message);
 }
 
-void WarningList::AddTo(vtkFieldData* fields, const std::string& superseded) const
+void WarningList::AddTo(vtkFieldData* fields, bool replaceRepeats) const
 {
   vtkStringArray* upstream = vtkStringArray::SafeDownCast(fields->GetAbstractArray("Warnings"));
-  const auto kept = [&](vtkIdType i) { return superseded.empty() || upstream->GetValue(i).rfind(superseded, 0) != 0; };
+  const auto gist = [](const std::string& message) { return message.substr(0, std::min(message.find(':'), message.find(" ("))); };
+  const auto kept = [&](vtkIdType i) {
+    const std::string said = gist(upstream->GetValue(i));
+    return !replaceRepeats ||
+      std::none_of(this->Messages.begin(), this->Messages.end(), [&](const std::string& m) { return gist(m) == said; });
+  };
   bool dropped = false;
   for (vtkIdType i = 0; upstream && i < upstream->GetNumberOfValues(); ++i)
   {

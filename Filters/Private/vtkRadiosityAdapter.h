@@ -87,9 +87,10 @@ public:
   void Add(vtkObject* self, const std::string& message);
   /// Sets Warnings on `fields` to the upstream ones it holds plus ours, in a new array so
   /// that the input's (shared by a shallow copy) stays as it was; adds nothing if none.
-  /// Upstream ones that begin with `superseded` (non-empty) are left out: this filter checked
-  /// the same again (the solver checks the lights on its mesh after Mark Lights did).
-  void AddTo(vtkFieldData* fields, const std::string& superseded = std::string()) const;
+  /// With `replaceRepeats`, an upstream one that ours repeat (the same text up to its first
+  /// ':' or ' (', so element numbers aside) is left out: the solver checks the lights on its
+  /// mesh after Mark Lights checked them on the scene.
+  void AddTo(vtkFieldData* fields, bool replaceRepeats = false) const;
 
 private:
   bool Quiet;

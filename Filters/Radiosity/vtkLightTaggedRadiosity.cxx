@@ -315,7 +315,7 @@ int vtkLightTaggedRadiosity::WriteResult(vtkPolyData* input, vtkPolyData* output
   }
   steps::AddStatusFields(fields, effects, stats, aborted);
   steps::LogSolve(stats, this->LastSolveSeconds, scene.Mesh.NumberOfPolygons(), rank, effects);
-  warnings.AddTo(fields, "Light '"); // the lights checked here again, on the mesh
+  warnings.AddTo(fields, true); // the lights checked here again, on the mesh
   output->SetFieldData(fields);
   steps::FillHistory(history, stats, names, result.Solutions, combined);
   return 1;

@@ -353,7 +353,8 @@ def sizes_table(ours):
     the one Cycles bakes on)."""
     lines = ["| k | element | elements | time | mean error vs Mitsuba |", "|---|---|---|---|---|"]
     for r in sorted(ours, key=lambda r: (r["k"], -r["element"])):
-        lines.append(f"| {r['k']} | {r['element']:g} m | {int(r['elements']):,} | {r['time_s']:.2f} s | {r['error_pct']:.2f} % |")
+        elements = f"{int(r['elements']):,}" if r["elements"] != "" else "?"
+        lines.append(f"| {r['k']} | {r['element']:g} m | {elements} | {r['time_s']:.2f} s | {r['error_pct']:.2f} % |")
     return "\n".join(lines)
 
 
@@ -361,7 +362,8 @@ def report(rows, args):
     """Prints the tables, writes them to NAME.txt and draws NAME.png."""
     out, ks = pathlib.Path(args.out), sorted(int(k) for k in args.ks.split(","))
     ours = [r for r in rows if r["method"] == "ours"]
-    table = summary([r for r in ours if r["element"] == args.element], [r for r in rows if r["method"] == "Cycles"],
+    common = [r for r in ours if r["element"] == args.element or math.isnan(r["element"])]
+    table = summary(common, [r for r in rows if r["method"] == "Cycles"],
                     args.fixed_error, ks) + "\n\n" + sizes_table(ours)
     print(table)
     (out / f"{args.name}.txt").write_text(table + "\n")
@@ -381,9 +383,15 @@ def write_rows(rows, path):
 def read_rows(path):
     """peers.csv back as the rows main() wrote."""
     numbers = ("time_s", "wall_s", "error_pct", "peak_mb", "relight_ms", "element")
+    # A csv written before ours ran over element sizes has no element column: its runs
+    # were at the common mesh's.
+    older = {"element": "nan", "elements": ""}
     with open(path) as f:
-        return [dict(r, k=int(r["k"]), **{n: float(r[n]) if r[n] else "" for n in numbers})
-                for r in csv.DictReader(f)]
+        rows = []
+        for r in csv.DictReader(f):
+            r = dict(older, **r)
+            rows.append(dict(r, k=int(r["k"]), **{n: float(r[n]) if r[n] else "" for n in numbers}))
+        return rows
 
 
 def main():

@@ -59,20 +59,14 @@ std::vector<PatchSummary> Summarise(const MeshedPolygons& mesh, const std::vecto
 /// by the position of the input's points (a small patch holds whole input polygons, and
 /// the mesher's own points along split edges are computed, so they may differ in the last
 /// bits, where the input's are copies of each other).
-std::vector<std::vector<int>> Neighbours(
-  const MeshedPolygons& mesh, const PolygonArrays& input, const std::vector<int>& source, double quantum)
+std::vector<std::vector<int>> Neighbours(const MeshedPolygons& mesh, const PolygonArrays& input, double quantum)
 {
   const std::vector<int> welded = WeldedPointIds(input.Points, quantum);
-  const int cells = source.empty() ? 0 : *std::max_element(source.begin(), source.end()) + 1;
-  std::vector<int> polygonOf(std::max(cells, 1), -1);
-  for (size_t i = 0; i < source.size(); ++i)
-  {
-    polygonOf[source[i]] = static_cast<int>(i);
-  }
+  // By the mesher's polygon, not the input's: a warped input polygon is several triangles.
   std::vector<int> cellPatch(input.Offsets.size() - 1, -1);
-  for (size_t e = 0; e < mesh.sourcePolygon.size(); ++e)
+  for (size_t e = 0; e < mesh.meshedPolygon.size(); ++e)
   {
-    cellPatch[polygonOf[mesh.sourcePolygon[e]]] = mesh.patchId[e];
+    cellPatch[mesh.meshedPolygon[e]] = mesh.patchId[e];
   }
   std::vector<std::pair<std::uint64_t, int>> edges;
   for (size_t c = 0; c < cellPatch.size(); ++c)
@@ -116,15 +110,15 @@ std::vector<std::vector<int>> Neighbours(
 }
 } // namespace
 
-int ClusterFaces(MeshedPolygons& mesh, const PolygonArrays& input, const std::vector<int>& source,
-  const std::vector<int>& surfaceKey, double patchSize, double coneDegrees)
+int ClusterFaces(
+  MeshedPolygons& mesh, const PolygonArrays& input, const std::vector<int>& surfaceKey, double patchSize, double coneDegrees)
 {
   if (!(coneDegrees > 0) || !(patchSize > 0) || mesh.patches < 2)
   {
     return 0;
   }
   const std::vector<PatchSummary> patches = Summarise(mesh, surfaceKey);
-  const std::vector<std::vector<int>> next = Neighbours(mesh, input, source, std::max(Span(input.Points), 1e-300) * 1e-9);
+  const std::vector<std::vector<int>> next = Neighbours(mesh, input, std::max(Span(input.Points), 1e-300) * 1e-9);
   // Models come in whole sizes, so limits are met exactly; slack above float noise (VTK's
   // float points 1 km away: 1e-5 of a 5 m patch) keeps it from deciding which side they fall.
   const double slack = 1 + 1e-4;

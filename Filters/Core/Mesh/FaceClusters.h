@@ -13,13 +13,13 @@ namespace radiosity
 
 /// Merges small patches (at most half of `patchSize` across) of `mesh` into face clusters:
 /// grown from each patch in order over the edges its `input` polygons share (the polygons
-/// MeshPolygons meshed into `mesh`, polygon i from input cell `source[i]`, the cell
-/// `mesh.sourcePolygon` names), through patches of the same
+/// MeshPolygons meshed into `mesh`, `mesh.meshedPolygon` naming each element's), through
+/// patches of the same
 /// `surfaceKey` (per input polygon, as MeshPolygons takes it) whose normals are within
 /// `coneDegrees` of the first one's, while every corner stays within `patchSize` / 2 of its
 /// centre. Patch ids are made 0..patches-1 again. Returns the number of patches merged away.
-int ClusterFaces(MeshedPolygons& mesh, const PolygonArrays& input, const std::vector<int>& source,
-  const std::vector<int>& surfaceKey, double patchSize, double coneDegrees);
+int ClusterFaces(
+  MeshedPolygons& mesh, const PolygonArrays& input, const std::vector<int>& surfaceKey, double patchSize, double coneDegrees);
 
 } // namespace radiosity
 

@@ -607,7 +607,7 @@ std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& of
   const double diagonal = Span(points); // not the bounding box's: that turns with the scene
   const double quantum = std::max(diagonal, 1e-300) * 1e-9;
   const double noise = MeshNoise(points, options.PointQuantum);
-  SurfaceAssembly surfaces(quantum, Bounds(points).Centre(), options);
+  SurfaceAssembly surfaces(quantum, noise, Bounds(points).Centre(), options);
   std::vector<Vec3> loop;
   for (int i = 0; i < count; ++i)
   {
@@ -623,7 +623,7 @@ std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& of
     const Vec3 normal = Normalized(NewellVector(loop.data(), static_cast<int>(loop.size())));
     Piece piece;
     MakePiece(loop, options, noise, ContactCutter(contacts.Segments[i], normal, contacts.Touch), piece);
-    surfaces.Add(loop, normal, piece, source[i], surfaceKey[source[i]]);
+    surfaces.Add(loop, normal, piece, i, source[i], surfaceKey[source[i]]);
   }
   surfaces.Flatten(out);
   return std::string();
@@ -728,7 +728,7 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
   if (error.empty())
   {
     out.clusteredPatches =
-      ClusterFaces(out, paired, polygons.source, surfaceKey, sized.PatchSize, options.ClusterAngle);
+      ClusterFaces(out, paired, surfaceKey, sized.PatchSize, options.ClusterAngle);
   }
   return error;
 }

@@ -48,6 +48,7 @@ struct MeshedPolygons
   std::vector<int> offsets{ 0 };
   std::vector<int> connectivity;
   std::vector<int> sourcePolygon; ///< input polygon each element came from
+  std::vector<int> meshedPolygon; ///< the mesher's polygon (input paired, warped split) it came from
   std::vector<int> patchId;       ///< 0..patches-1
   int patches = 0;
   int mergedTrianglePairs = 0; ///< triangle pairs meshed as one quad
@@ -55,8 +56,9 @@ struct MeshedPolygons
   double elementSize = 0;      ///< the element size used (see ElementBudget)
 };
 
-/// The number of elements MeshPolygons makes at these sizes (exactly, for valid input),
-/// without meshing: for a warning or a budget before the work.
+/// The number of elements MeshPolygons makes at these sizes without meshing, for a warning
+/// or a budget before the work: exact for valid input of flat polygons where MeshPolygons
+/// merges no triangle pairs (ElementCounter with the options counts what it makes always).
 /// `wholeScene`: as MesherOptions::WholeScene.
 double CountElements(const std::vector<Vec3>& points, const std::vector<int>& offsets,
   const std::vector<int>& connectivity, double patchSize, double elementSize,

@@ -16,18 +16,20 @@ namespace
 constexpr double kNormalTolerance = 1e-6;
 } // namespace
 
-SurfaceAssembly::SurfaceAssembly(double quantum, const Vec3& centre, const MesherOptions& options)
+SurfaceAssembly::SurfaceAssembly(double quantum, double noise, const Vec3& centre, const MesherOptions& options)
   : Quantum(quantum)
+  , Noise(noise)
   , Centre(centre)
   , Options(options)
 {
 }
 
-void SurfaceAssembly::Add(const std::vector<Vec3>& loop, const Vec3& normal, const Piece& piece, int source, int key)
+void SurfaceAssembly::Add(
+  const std::vector<Vec3>& loop, const Vec3& normal, const Piece& piece, int polygon, int source, int key)
 {
   const int s = SurfaceOf(loop, normal, key);
   const std::pair<int, int> patches = PatchesOf(s, loop, piece);
-  Stitch(s, piece, source, patches.first);
+  Stitch(s, piece, polygon, source, patches.first);
   Patches += patches.second;
 }
 
@@ -102,7 +104,7 @@ std::pair<int, int> SurfaceAssembly::PatchesOf(int surface, const std::vector<Ve
   return { shared.first->second, shared.second ? 1 : 0 };
 }
 
-void SurfaceAssembly::Stitch(int surface, const Piece& piece, int source, int firstPatch)
+void SurfaceAssembly::Stitch(int surface, const Piece& piece, int polygon, int source, int firstPatch)
 {
   SurfaceMesh& mesh = Meshes[surface];
   size_t corner = 0;
@@ -137,6 +139,7 @@ void SurfaceAssembly::Stitch(int surface, const Piece& piece, int source, int fi
       face = mesh.add_face(handles);
     }
     mesh.data(face).Source = source;
+    mesh.data(face).Polygon = polygon;
     mesh.data(face).Patch = firstPatch + piece.localPatch[e];
   }
 }
@@ -152,12 +155,15 @@ void SurfaceAssembly::Flatten(MeshedPolygons& out) const
     const int base = static_cast<int>(out.points.size());
     for (auto v : mesh.vertices())
     {
-      // Onto the surface's plane: float input far from the origin puts corners a float step
-      // off it, and the solver's tests of what is flat (a patch, a plane that blocks
-      // nothing) are relative to the scene, far finer than that step.
+      // Onto the surface's plane where it is off by noise: float input far from the origin
+      // puts corners a float step off it, and the solver's tests of what is flat (a patch, a
+      // plane that blocks nothing) are relative to the scene, far finer than that step. A
+      // point off by more stays (a slightly bent polygon's corner, shared with a neighbour
+      // of another plane: moving it would open a crack).
       const auto q = mesh.point(v);
       const Vec3 p{ q[0], q[1], q[2] };
-      out.points.push_back(p - plane.Normal * (Dot(plane.Normal, p - Centre) - plane.Offset));
+      const double off = Dot(plane.Normal, p - Centre) - plane.Offset;
+      out.points.push_back(std::fabs(off) <= 4 * Noise ? p - plane.Normal * off : p);
     }
     for (auto face : mesh.faces())
     {
@@ -167,6 +173,7 @@ void SurfaceAssembly::Flatten(MeshedPolygons& out) const
       }
       out.offsets.push_back(static_cast<int>(out.connectivity.size()));
       out.sourcePolygon.push_back(mesh.data(face).Source);
+      out.meshedPolygon.push_back(mesh.data(face).Polygon);
       out.patchId.push_back(compact.emplace(mesh.data(face).Patch, static_cast<int>(compact.size())).first->second);
     }
   }

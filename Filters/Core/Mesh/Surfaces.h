@@ -28,13 +28,14 @@ struct Piece
 class SurfaceAssembly
 {
 public:
-  /// `quantum`: points closer than this are one point; `centre`: the scene's, which plane
-  /// offsets are measured from (so they stay small wherever the scene is placed).
-  SurfaceAssembly(double quantum, const Vec3& centre, const MesherOptions& options);
+  /// `quantum`: points closer than this are one point; `noise`: how far points may be off
+  /// their places (MeshNoise); `centre`: the scene's, which plane offsets are measured from
+  /// (so they stay small wherever the scene is placed).
+  SurfaceAssembly(double quantum, double noise, const Vec3& centre, const MesherOptions& options);
 
-  /// Polygon `loop` (distinct corners, unit `normal`) cut into `piece`, from input cell
-  /// `source` whose caller key is `key`.
-  void Add(const std::vector<Vec3>& loop, const Vec3& normal, const Piece& piece, int source, int key);
+  /// Polygon `polygon` of the mesher's list, `loop` (distinct corners, unit `normal`), cut
+  /// into `piece`, from input cell `source` whose caller key is `key`.
+  void Add(const std::vector<Vec3>& loop, const Vec3& normal, const Piece& piece, int polygon, int source, int key);
 
   /// Every surface's points and elements into `out`, patch ids compacted to 0..patches-1.
   void Flatten(MeshedPolygons& out) const;
@@ -50,6 +51,7 @@ private:
     {
       int Source = -1;
       int Patch = -1;
+      int Polygon = -1; ///< in the mesher's list (a warped input polygon is several)
     };
   };
   using SurfaceMesh = OpenMesh::PolyMesh_ArrayKernelT<DoublePrecision>;
@@ -70,9 +72,9 @@ private:
   /// fits in one patch shares it with its surface's others in the same PatchSize cell.
   std::pair<int, int> PatchesOf(int surface, const std::vector<Vec3>& loop, const Piece& piece);
   /// The piece's elements into the surface, welded to the corners already there.
-  void Stitch(int surface, const Piece& piece, int source, int firstPatch);
+  void Stitch(int surface, const Piece& piece, int polygon, int source, int firstPatch);
 
-  const double Quantum;
+  const double Quantum, Noise;
   const Vec3 Centre;
   const MesherOptions& Options;
   int Patches = 0;

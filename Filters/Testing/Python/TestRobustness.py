@@ -370,6 +370,23 @@ twin = [np.sort(np.linalg.norm(on_edge - p, axis=1))[1] for p in on_edge]  # nea
 check(len(on_edge) >= 8 and max(twin) < 1e-9, f"warped panels meet along their shared edge: {len(on_edge)} points "
                                               f"there, each {max(twin):.1e} or less from its twin across")
 
+# A bumpy 0.4 m grid of 16 warped quads (corners 2 mm off; each meshed as its 2 triangles):
+# its small patches gather into face clusters over their shared edges. Taken by input cell,
+# only one triangle of each quad found its neighbours: 38 patches (2 merged) instead of 11.
+rng = np.random.default_rng(3)
+bump = rng.uniform(-0.002, 0.002, (5, 5))
+grid = [[(i * 0.1, j * 0.1, bump[i, j]), ((i + 1) * 0.1, j * 0.1, bump[i + 1, j]),
+         ((i + 1) * 0.1, (j + 1) * 0.1, bump[i + 1, j + 1]), (i * 0.1, (j + 1) * 0.1, bump[i, j + 1])]
+        for i in range(4) for j in range(4)]
+bumpy = relight.vtkRadiosityMesher()
+bumpy.SetInputData(relight.make_scene(grid + [[(-1, -1, -0.5), (2, -1, -0.5), (2, 2, -0.5), (-1, 2, -0.5)]],
+                                      [(0.5,) * 3] * 17, [-1] * 17))
+bumpy.SetPatchSize(1.0)
+bumpy.SetElementSize(0.25)
+bumpy.Update()
+patches = len(np.unique(relight.cell_array(bumpy.GetOutput(), "PatchId")))
+check(patches <= 12, f"a bumpy grid of warped quads gathers into face clusters: {patches} patches (9 of them the floor's)")
+
 # --- the light schedule file: a real CSV reader --------------------------------------------------
 two = relight.make_scene([[(0, 0, 1), (0, 0.4, 1), (0.4, 0.4, 1), (0.4, 0, 1)], [(0.6, 0, 1), (0.6, 0.4, 1), (1, 0.4, 1), (1, 0, 1)],
                           [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)]],

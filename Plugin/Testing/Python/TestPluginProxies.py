@@ -175,7 +175,7 @@ def main(argv):
     check(n_lights == len(names),
           "NumberOfLights is %d but LightNamesInfo lists %d names" % (n_lights, len(names)))
     # The settings in effect read back, defaults included: ours for LIGHT, the filter's
-    # (solver's default color, intensity 1, on) for any other light.
+    # (the solver's default color split into a hue and an intensity, on) for any other light.
     effective = list(relight.LightSettingsInfo)
     rows = {effective[i]: effective[i + 1:i + 6] for i in range(0, len(effective), 6)}
     check(sorted(rows) == sorted(names), "LightSettingsInfo has rows for %s, expected %s" % (sorted(rows), names))

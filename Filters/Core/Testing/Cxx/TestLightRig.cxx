@@ -44,6 +44,32 @@ TEST(LightRig, PrecedenceIsDefaultsNameScheduleIndex)
   EXPECT_EQ(rig.KeyframeTimes(), (std::vector<double>{ 0, 10 }));
 }
 
+TEST(LightRig, ADefaultIsAHueTimesAnIntensity)
+{
+  // An area light of intensity 20 (Emission 20 x its color): set to 40 it shines at 40, set
+  // to white it keeps 20 (it shone at 800 and dropped to 1 when the default was a color).
+  LightRig rig;
+  const std::vector<std::string> names = { "Key" };
+  const std::vector<Vec3> defaults = { { 20, 10, 5 } };
+  std::vector<LightSetting> effective;
+  std::vector<std::string> warnings;
+  ASSERT_EQ(rig.Resolve(names, defaults, 0, effective, warnings), "");
+  EXPECT_DOUBLE_EQ(effective[0].Intensity, 20);
+  EXPECT_DOUBLE_EQ(effective[0].Color.y, 0.5);
+  EXPECT_DOUBLE_EQ(effective[0].Weight().x, 20); // the picture at the defaults is the Emission
+  rig.ByIndex[0] = Intensity(40);
+  ASSERT_EQ(rig.Resolve(names, defaults, 0, effective, warnings), "");
+  EXPECT_DOUBLE_EQ(effective[0].Weight().y, 20);
+  LightSetting white;
+  white.HasColor = true;
+  rig.ByIndex[0] = white;
+  ASSERT_EQ(rig.Resolve(names, defaults, 0, effective, warnings), "");
+  EXPECT_DOUBLE_EQ(effective[0].Weight().z, 20);
+  const std::vector<Vec3> dark = { { 0, 0, 0 } };
+  ASSERT_EQ(LightRig().Resolve(names, dark, 0, effective, warnings), "");
+  EXPECT_DOUBLE_EQ(effective[0].Weight().x, 0); // no Emission: dark until given a color
+}
+
 TEST(LightRig, WeightsSplitIndirectLight)
 {
   LightSetting on, off;
