@@ -10,17 +10,20 @@ namespace
 {
 /// Of the rays from the light's element centroids (normal, and rings at 30 and 60
 /// degrees): the fractions that hit something closer than `near`, anything at all, and a
-/// surface's front (the side that takes light).
+/// surface's front (the side that takes light); and the share of the light's area whose
+/// rays met only backs (it lies behind a wall or past the room).
 struct ProbeHits
 {
-  double Near = 0, Any = 0, Front = 1;
+  double Near = 0, Any = 0, Front = 1, Behind = 0;
 };
 
 ProbeHits Probe(const SceneGeometry& g, const Visibility& rays, const std::vector<int>& elements, double near)
 {
   int hits = 0, any = 0, front = 0, cast = 0;
+  double area = 0, behind = 0;
   for (int e : elements)
   {
+    int met = 0, fronts = 0;
     const Vec3& n = g.normal[e];
     Vec3 t, b;
     TangentFrame(n, t, b);
@@ -31,14 +34,18 @@ ProbeHits Probe(const SceneGeometry& g, const Visibility& rays, const std::vecto
       const Vec3 d = n * std::cos(polar) + (t * std::cos(azimuth) + b * std::sin(azimuth)) * std::sin(polar);
       Visibility::Hit hit;
       ++cast;
-      const bool met = rays.Intersect(g.centroid[e] + n * g.rayLift, d, hit);
-      any += met ? 1 : 0;
-      hits += met && hit.distance < near ? 1 : 0;
-      front += met && Dot(g.normal[hit.polygon], d) < 0 ? 1 : 0;
+      const bool found = rays.Intersect(g.centroid[e] + n * g.rayLift, d, hit);
+      met += found ? 1 : 0;
+      hits += found && hit.distance < near ? 1 : 0;
+      fronts += found && Dot(g.normal[hit.polygon], d) < 0 ? 1 : 0;
     }
+    any += met;
+    front += fronts;
+    area += g.area[e];
+    behind += met > 0 && fronts == 0 ? g.area[e] : 0.0;
   }
   return cast ? ProbeHits{ static_cast<double>(hits) / cast, static_cast<double>(any) / cast,
-                  static_cast<double>(front) / cast }
+                  static_cast<double>(front) / cast, area > 0 ? behind / area : 0.0 }
               : ProbeHits();
 }
 /// True when x lies inside convex element e (in its plane, within `tolerance` of it).
@@ -132,6 +139,14 @@ std::vector<std::string> CheckLights(const SceneMesh& mesh, const SceneGeometry&
         "Light '%s' lights nothing: every probe ray from it meets the back of a surface, which takes no light. "
         "Is it outside the room (above the ceiling, behind a wall, in another unit than the scene), or do the "
         "surfaces around it face away from it?", names[l].c_str());
+      messages.push_back(text);
+    }
+    if (probe.Front > 0 && probe.Behind >= 0.01)
+    {
+      std::snprintf(text, sizeof(text),
+        "Light '%s' lights nothing from %.0f %% of its area: there its probe rays meet only the backs of "
+        "surfaces (it reaches through a wall or past the room: is it larger than the ceiling it hangs from?).",
+        names[l].c_str(), 100 * probe.Behind);
       messages.push_back(text);
     }
     if (probe.Near > 0.5)

@@ -335,6 +335,10 @@ above = [(x, y, H + 0.5) for x, y, _ in down]  # facing down, half a metre above
 found = warnings_for(box + [above], [-1] * 6 + [0])
 check("Light 'Light0' lights nothing" in found, f"a lamp above the ceiling (a black picture before, no word): {found}")
 check("lights nothing" not in clean, "...and the proper lamp lights something")
+wide = [(-1.0, -1.0, H - 0.1), (-1.0, D + 1.0, H - 0.1), (W + 1.0, D + 1.0, H - 0.1), (W + 1.0, -1.0, H - 0.1)]
+found = warnings_for(box + [wide], [-1] * 6 + [0])  # a lamp a metre wider than the room on each side
+check("Light 'Light0' lights nothing from" in found and "% of its area" in found,
+      f"a lamp larger than the ceiling it hangs from, through the walls (unsaid before): {found}")
 # Placed with Mark Lights, the lamp is checked there (on the scene) and by the solver (on its
 # mesh): the solver's Warnings held both, once with the scene's element numbers.
 marked = relight.mark_lights(relight.make_scene(box, [(0.7,) * 3] * 6, [-1] * 6),
