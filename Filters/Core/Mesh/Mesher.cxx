@@ -372,16 +372,11 @@ PairedPolygons SplitWarped(const std::vector<Vec3>& points, const PairedPolygons
 {
   PairedPolygons out;
   out.merged = polygons.merged;
-  std::vector<Vec3> loop;
   for (size_t i = 0; i < polygons.source.size(); ++i)
   {
     const int* ids = polygons.connectivity.data() + polygons.offsets[i];
     const int count = polygons.offsets[i + 1] - polygons.offsets[i];
-    loop.clear();
-    for (int v = 0; v < count; ++v)
-    {
-      loop.push_back(points[ids[v]]);
-    }
+    const std::vector<Vec3> loop = GatherLoop(points, polygons.offsets, polygons.connectivity, static_cast<int>(i));
     const std::vector<int> corners =
       count >= 4 && Warp(loop) > kMostWarp ? Triangulate(loop.data(), count, noise) : std::vector<int>();
     for (size_t t = 0; t + 2 < corners.size(); t += 3)
