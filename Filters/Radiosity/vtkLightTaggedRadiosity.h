@@ -108,9 +108,10 @@ public:
   /// of any size, found once for the scene and gathered along for every light; direct
   /// light per element with its own shadow rays. Its cost follows the surfaces, not the
   /// polygons: for models of many small polygons (CAD, scans, BIM).
-  /// Auto (default): Clustered from 20,000 patches of fewer than 8 elements each, else
-  /// Hierarchical from 5,000 element-patch pairs (elements x patches, with Analytic
-  /// factors), otherwise ProgressiveRefinement; SolverMethod says why.
+  /// Auto (default): ProgressiveRefinement below 5,000 element-patch pairs (elements x
+  /// patches) or with Hemicube/MonteCarlo factors, else whichever of Hierarchical and
+  /// Clustered a cost model fitted on measured solves expects to be faster (Clustered
+  /// where there are many patches of few elements); SolverMethod says which and why.
   vtkSetClampMacro(SolverMethod, int, SOLVER_AUTO, CLUSTERED);
   vtkGetMacro(SolverMethod, int);
   void SetSolverMethodToAuto() { this->SetSolverMethod(SOLVER_AUTO); }

@@ -29,7 +29,7 @@ const char* MethodName(SolverMethod m)
 int main(int argc, char** argv)
 {
   int triangles = 20000, spheres = 1, lamps = 3;
-  double patch = 0.5, element = 0.1, cone = 30, budget = 0;
+  double patch = 0.5, element = 0.1, cone = 30, budget = 0, threshold = 1e-3;
   SolverMethod method = SolverMethod::Auto;
   std::vector<std::string> models; // OFF meshes to stand in the room beside the spheres
   bool compare = false;             // also solve by progressive refinement and print the difference
@@ -47,6 +47,7 @@ int main(int argc, char** argv)
     else if (flag == "--element") element = std::atof(value);
     else if (flag == "--cluster-angle") cone = std::atof(value);
     else if (flag == "--time-budget") budget = std::atof(value);
+    else if (flag == "--threshold") threshold = std::atof(value);
     else if (flag == "--off") models.push_back(value);
     else if (flag == "--compare") compare = std::strcmp(value, "progressive") == 0;
     else if (flag == "--export") exportPath = value;
@@ -87,6 +88,7 @@ int main(int argc, char** argv)
   SolverOptions options;
   options.Solver = method;
   options.TimeBudget = budget;
+  options.ConvergenceThreshold = threshold;
   const SolutionMode mode = combined ? SolutionMode::StandardCombined : SolutionMode::LightTagged;
   const Solution s = SolveLights(solver, mesh, LightGrouping::OnePerLight(lamps), {}, mode, options);
   const double t3 = Now();

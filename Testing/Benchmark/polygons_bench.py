@@ -21,6 +21,7 @@ parser.add_argument("--plain-up-to", type=int, default=20000, help="largest size
 parser.add_argument("--spheres", type=int, default=4)
 parser.add_argument("--clustered-up-to", type=int, default=200000, help="largest size also solved by the clustered method")
 parser.add_argument("--reference", default="", help="Mitsuba's probe,light,r,g,b CSV")
+parser.add_argument("--replot", action="store_true", help="only plot out/bench/polygons.csv again")
 args = parser.parse_args()
 
 
@@ -41,24 +42,28 @@ def run(triangles, angle, combined=False, method="auto"):
     return row
 
 
-rows = []
-for size in (int(s) for s in args.sizes.split(",")):
-    rows.append(run(size, 30))
-    if size <= args.clustered_up_to:
-        auto, clustered = rows[-1], run(size, 30, method="clustered")
-        rows.append(clustered)
-        if args.reference:
-            print(f"  clustered: {float(clustered['total_s']) / float(auto['total_s']):.1f}x the time, error "
-                  f"{float(clustered['error_pct']):.2f} % against {float(auto['error_pct']):.2f} %")
-    if size <= args.plain_up_to:
-        rows.append(run(size, 0))
-        faced, plain = [r for r in rows if r["asked"] == "auto"][-2:]
-        print(f"  clusters: {float(plain['total_s']) / float(faced['total_s']):.1f}x faster, "
-              f"{float(plain['peak_mb']) / float(faced['peak_mb']):.1f}x less memory")
-largest = [r for r in rows if r["asked"] == "auto" and float(r["cluster_angle"]) > 0][-1]
-one = run(int(largest["triangles"]) and max(int(s) for s in args.sizes.split(",")), 30, combined=True)
-rows.append(one)
-print(f"  k = {args.lamps} costs {float(largest['solve_s']) / float(one['solve_s']):.2f}x k = 1 (solve)")
+if args.replot:  # plot the csv of the last run again
+    with open(pathlib.Path(args.out) / "polygons.csv") as f:
+        rows = [dict(r, k=int(r["k"])) for r in csv.DictReader(f)]
+else:
+    rows = []
+    for size in (int(s) for s in args.sizes.split(",")):
+        rows.append(run(size, 30))
+        if size <= args.clustered_up_to:
+            auto, clustered = rows[-1], run(size, 30, method="clustered")
+            rows.append(clustered)
+            if args.reference:
+                print(f"  clustered: {float(clustered['total_s']) / float(auto['total_s']):.1f}x the time, error "
+                      f"{float(clustered['error_pct']):.2f} % against {float(auto['error_pct']):.2f} %")
+        if size <= args.plain_up_to:
+            rows.append(run(size, 0))
+            faced, plain = [r for r in rows if r["asked"] == "auto"][-2:]
+            print(f"  clusters: {float(plain['total_s']) / float(faced['total_s']):.1f}x faster, "
+                  f"{float(plain['peak_mb']) / float(faced['peak_mb']):.1f}x less memory")
+    largest = [r for r in rows if r["asked"] == "auto" and float(r["cluster_angle"]) > 0][-1]
+    one = run(int(largest["triangles"]) and max(int(s) for s in args.sizes.split(",")), 30, combined=True)
+    rows.append(one)
+    print(f"  k = {args.lamps} costs {float(largest['solve_s']) / float(one['solve_s']):.2f}x k = 1 (solve)")
 out = pathlib.Path(args.out)
 out.mkdir(parents=True, exist_ok=True)
 with open(out / "polygons.csv", "w", newline="") as f:
@@ -89,12 +94,12 @@ ax.set_ylabel("mesh + prepare + solve (s), 2 cores")
 ax.set_title(f"k = {args.lamps} lights, Auto")
 ax.grid(True, which="both", alpha=0.3)
 ax.legend()
-for asked, label, style, colour in (("auto", "Auto (hierarchical here)", "o-", "C0"), ("clustered", "clustered method", "^:", "C2")):
+for asked, label, style, color in (("auto", "Auto (by estimated cost)", "o-", "C0"), ("clustered", "clustered method", "^:", "C2")):
     sel = [r for r in rows if r["asked"] == asked and float(r["cluster_angle"]) > 0 and r["k"] == args.lamps
            and r["error_pct"] not in ("", "nan")]
     if sel:
         acc.semilogx([float(r["total_s"]) for r in sel], [float(r["error_pct"]) for r in sel], style, label=label,
-                     color=colour)
+                     color=color)
         for r in sel:
             acc.annotate(f"{int(r['triangles']) // 1000}k", (float(r["total_s"]), float(r["error_pct"])), fontsize=7,
                          textcoords="offset points", xytext=(4, 3))

@@ -11,13 +11,13 @@
 namespace radiosity
 {
 
-/// Merges small patches (at most half of `patchSize` across) of `mesh` into face clusters:
+/// Merges small patches (at most 0.3 `patchSize` across) of `mesh` into face clusters:
 /// grown from each patch in order over the edges its `input` polygons share (the polygons
 /// MeshPolygons meshed into `mesh`, `mesh.meshedPolygon` naming each element's), through
 /// patches of the same
 /// `surfaceKey` (per input polygon, as MeshPolygons takes it) whose normals are within
-/// `coneDegrees` of the first one's, while every corner stays within `patchSize` / 2 of its
-/// centre. Patch ids are made 0..patches-1 again. Returns the number of patches merged away.
+/// `coneDegrees` of the first one's, while every corner stays within 0.3 `patchSize` of its
+/// centre (a curved cluster shoots one value, so it is kept smaller than a flat patch). Patch ids are made 0..patches-1 again. Returns the number of patches merged away.
 int ClusterFaces(
   MeshedPolygons& mesh, const PolygonArrays& input, const std::vector<int>& surfaceKey, double patchSize, double coneDegrees);
 

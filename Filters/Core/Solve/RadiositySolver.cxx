@@ -21,14 +21,25 @@ namespace
 /// this many element-patch pairs a solve takes milliseconds either way, and progressive
 /// refinement's exact per-element shots are kept.
 constexpr double kHierarchicalPairs = 5000;
-/// Where the polygons themselves are the patches (many patches of a few elements: a BIM
-/// model's window frames, sills and strips), every shooter links to thousands of them and
-/// the clustered method's links between groups win: measured on the FZK-Haus, 186.7 s
-/// against 535.6 s at 53,695 patches of 2.9 elements, 77.4 s against 192.1 s at 35,118 of
-/// 2.1; on a curved model of 1,637 face clusters (57 elements each) the hierarchical method
-/// was 2.1 x faster.
-constexpr int kClusteredPatches = 20000;
-constexpr double kClusteredElementsPerPatch = 8;
+
+/// Auto's cost model, fitted on 17 solves (the paper scene, the Cornell box, the furnished
+/// room, the sphere rooms and the FZK-Haus; 1.7k to 512k elements, 115 to 53,695 patches;
+/// 2026-12-03, docs/benchmarks.md): the hierarchical method's links cost about 100 ns per
+/// element-patch pair, less where a patch holds many elements (a far patch takes them as a
+/// whole); the clustered method about 120 us per element, more above 100k elements, where
+/// its node sums no longer stay in the caches. The models were within 0.5-2x of each solve,
+/// and both methods cost about the same where they cross (about 1,200 patches of 16
+/// elements), so a wrong pick there costs little.
+double HierarchicalSeconds(double elements, double patches)
+{
+  const double perPatch = elements / std::max(1.0, patches);
+  return 100e-9 * elements * patches * std::pow(16.0 / std::max(16.0, perPatch), 0.3);
+}
+
+double ClusteredSeconds(double elements)
+{
+  return 120e-6 * elements * std::pow(std::max(1.0, elements / 1e5), 0.25);
+}
 
 /// Auto's choice, and why, in `reason`; the hemicube and Monte Carlo estimators exist only
 /// in progressive refinement.
@@ -46,21 +57,21 @@ SolverMethod ResolveMethod(const SolverOptions& options, int elements, int patch
     reason = "chosen by Auto: the hemicube and Monte Carlo estimators are progressive only";
     return SolverMethod::ProgressiveRefinement;
   }
+  if (pairs < kHierarchicalPairs)
+  {
+    std::snprintf(text, sizeof(text), "chosen by Auto: %d elements x %d patches = %.3g, < %.0f", elements, patches,
+      pairs, kHierarchicalPairs);
+    reason = text;
+    return SolverMethod::ProgressiveRefinement;
+  }
+  const double linked = HierarchicalSeconds(elements, patches), clustered = ClusteredSeconds(elements);
   // Not for the moving-light basis (every patch emits, one solution each: DirectToElements
   // off), whose solutions the clustered method's node sums could not hold.
-  if (patches >= kClusteredPatches && elements < kClusteredElementsPerPatch * patches &&
-    options.Hierarchical.DirectToElements)
-  {
-    std::snprintf(text, sizeof(text), "chosen by Auto: %d patches of %.1f elements (>= %d, < %.0f): polygons are the patches",
-      patches, static_cast<double>(elements) / patches, kClusteredPatches, kClusteredElementsPerPatch);
-    reason = text;
-    return SolverMethod::Clustered;
-  }
-  const bool linked = pairs >= kHierarchicalPairs;
-  std::snprintf(text, sizeof(text), "chosen by Auto: %d elements x %d patches = %.3g, %s %.0f", elements, patches,
-    pairs, pairs >= kHierarchicalPairs ? ">=" : "<", kHierarchicalPairs);
+  const bool cluster = clustered < linked && options.Hierarchical.DirectToElements;
+  std::snprintf(text, sizeof(text), "chosen by Auto: %d elements, %d patches; estimated %.3g s clustered, %.3g s hierarchical",
+    elements, patches, clustered, linked);
   reason = text;
-  return linked ? SolverMethod::Hierarchical : SolverMethod::ProgressiveRefinement;
+  return cluster ? SolverMethod::Clustered : SolverMethod::Hierarchical;
 }
 
 int CountFaceClusters(const SceneGeometry& g)
