@@ -2,6 +2,7 @@
 #include "Mesh/AreaGrid.h"
 #include "Mesh/ConvexPieces.h"
 #include "Mesh/CoincidentCopies.h"
+#include "Mesh/OverlapCuts.h"
 #include "Mesh/ContactCuts.h"
 #include "Mesh/FaceClusters.h"
 #include "Mesh/Surfaces.h"
@@ -372,6 +373,7 @@ PairedPolygons SplitWarped(const std::vector<Vec3>& points, const PairedPolygons
 {
   PairedPolygons out;
   out.merged = polygons.merged;
+  out.points = polygons.points;
   for (size_t i = 0; i < polygons.source.size(); ++i)
   {
     const int* ids = polygons.connectivity.data() + polygons.offsets[i];
@@ -395,11 +397,13 @@ PairedPolygons SplitWarped(const std::vector<Vec3>& points, const PairedPolygons
   return out;
 }
 
-/// The polygons the mesher meshes: coincident copies left out (said in `copies`), then
-/// triangle pairs joined where the options ask, and warped polygons split into triangles.
+/// The polygons the mesher meshes: coincident copies left out (said in `copies`), faces
+/// of one surface cut where they overlap in one plane (said in `overlaps`; their new
+/// corners in the result's points), then triangle pairs joined where the options ask, and
+/// warped polygons split into triangles.
 PairedPolygons Paired(const std::vector<Vec3>& points, const std::vector<int>& offsets,
   const std::vector<int>& connectivity, const std::vector<int>& surfaceKey, const MesherOptions& options,
-  CoincidentCopies* copies = nullptr)
+  CoincidentCopies* copies = nullptr, OverlapCuts* overlaps = nullptr)
 {
   PairedPolygons polygons;
   polygons.offsets = offsets;
@@ -415,35 +419,63 @@ PairedPolygons Paired(const std::vector<Vec3>& points, const std::vector<int>& o
     *copies = found;
   }
   const double noise = MeshNoise(points, options.PointQuantum);
+  // Not the box's diagonal: that turns with the scene, and which faces count as overlapping must not.
+  OverlapCuts cuts = CutOverlaps(points, surfaceKey, std::max(1e-7 * Span(points), 4 * noise), polygons);
+  polygons.points = std::move(cuts.Points);
+  if (overlaps)
+  {
+    *overlaps = std::move(cuts);
+  }
+  const std::vector<Vec3>& at = PointsOf(polygons, points);
   if (!options.MergeTriangles)
   {
-    return SplitWarped(points, polygons, noise);
+    return SplitWarped(at, polygons, noise);
   }
   std::vector<int> keys(polygons.source.size(), 0);
   for (size_t i = 0; i < keys.size(); ++i)
   {
     keys[i] = polygons.source[i] < static_cast<int>(surfaceKey.size()) ? surfaceKey[polygons.source[i]] : 0;
   }
-  PairedPolygons merged = MergeTrianglePairs(points, polygons.offsets, polygons.connectivity, keys, tolerance);
+  PairedPolygons merged = MergeTrianglePairs(at, polygons.offsets, polygons.connectivity, keys, tolerance);
   for (int& source : merged.source)
   {
     source = polygons.source[source]; // back to the input's numbering
   }
-  return SplitWarped(points, merged, noise);
+  merged.points = std::move(polygons.points);
+  return SplitWarped(PointsOf(merged, points), merged, noise);
+}
+
+/// Up to five cell ids, for a warning.
+std::string CellList(const std::vector<int>& cells)
+{
+  std::ostringstream text;
+  for (size_t i = 0; i < cells.size() && i < 5; ++i)
+  {
+    text << (i ? ", " : "") << cells[i];
+  }
+  text << (cells.size() > 5 ? ", ..." : "");
+  return text.str();
+}
+
+/// Says which input polygons were cut or left out where earlier ones of their surface cover them.
+void WarnAboutOverlaps(const OverlapCuts& overlaps, const MesherOptions& options)
+{
+  if (options.Warning && !overlaps.Trimmed.empty())
+  {
+    options.Warning(std::to_string(overlaps.Trimmed.size()) + " cells overlap earlier cells of their surface in one plane (cells " +
+      CellList(overlaps.Trimmed) + "): meshed only where nothing else lies, as each layer would receive the full light");
+  }
+  if (options.Warning && !overlaps.Covered.empty())
+  {
+    options.Warning(std::to_string(overlaps.Covered.size()) + " cells lie wholly under earlier cells of their surface in one plane (cells " +
+      CellList(overlaps.Covered) + "): left out, as each layer would receive the full light");
+  }
 }
 
 /// Says which input polygons were left out as copies, or kept though they coincide.
 void WarnAboutCopies(const CoincidentCopies& copies, const MesherOptions& options)
 {
-  const auto list = [](const std::vector<int>& cells) {
-    std::ostringstream text;
-    for (size_t i = 0; i < cells.size() && i < 5; ++i)
-    {
-      text << (i ? ", " : "") << cells[i];
-    }
-    text << (cells.size() > 5 ? ", ..." : "");
-    return text.str();
-  };
+  const auto list = CellList;
   if (options.Warning && !copies.Dropped.empty())
   {
     options.Warning(std::to_string(copies.Dropped.size()) + " cells repeat another cell's corners on the same side (cells " +
@@ -472,7 +504,7 @@ struct ElementCounter::Internals
   }
   Internals(const std::vector<Vec3>& points, PairedPolygons pairs)
     : Pairs(std::move(pairs))
-    , Polygons{ points, Pairs.offsets, Pairs.connectivity }
+    , Polygons{ PointsOf(Pairs, points), Pairs.offsets, Pairs.connectivity }
   {
   }
 };
@@ -710,14 +742,17 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
   }
   WarnAboutWarpedPolygons(points, offsets, connectivity, options);
   CoincidentCopies copies;
-  const PairedPolygons polygons = Paired(points, offsets, connectivity, surfaceKey, options, &copies);
+  OverlapCuts overlaps;
+  const PairedPolygons polygons = Paired(points, offsets, connectivity, surfaceKey, options, &copies, &overlaps);
   WarnAboutCopies(copies, options);
-  const PolygonArrays paired{ points, polygons.offsets, polygons.connectivity };
+  WarnAboutOverlaps(overlaps, options);
+  const std::vector<Vec3>& corners = PointsOf(polygons, points);
+  const PolygonArrays paired{ corners, polygons.offsets, polygons.connectivity };
   const Contacts contacts = FindSceneContacts(paired, options.WholeScene, options.PointQuantum);
   MesherOptions sized = options;
   sized.ElementSize = ChooseElementSize(paired, contacts, options);
   const std::string error =
-    MeshList(points, polygons.offsets, polygons.connectivity, polygons.source, surfaceKey, contacts, sized, out);
+    MeshList(corners, polygons.offsets, polygons.connectivity, polygons.source, surfaceKey, contacts, sized, out);
   out.mergedTrianglePairs = polygons.merged;
   out.elementSize = sized.ElementSize;
   if (error.empty())

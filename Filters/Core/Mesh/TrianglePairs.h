@@ -16,7 +16,16 @@ struct PairedPolygons
   std::vector<int> connectivity;
   std::vector<int> source; ///< the input polygon each output polygon came from (the first)
   int merged = 0;          ///< triangle pairs joined into quads
+  /// The points the polygons index where overlap cuts made new corners (the input's, then
+  /// those); empty where they index the input's points.
+  std::vector<Vec3> points;
 };
+
+/// The points `polygons` index: their own where they have them, else `input`.
+inline const std::vector<Vec3>& PointsOf(const PairedPolygons& polygons, const std::vector<Vec3>& input)
+{
+  return polygons.points.empty() ? input : polygons.points;
+}
 
 /// Joins triangles that share an edge (by position, so split vertices count), have the same
 /// `surfaceKey`, lie in one plane (within `tolerance`, a length) and form a convex quad;

@@ -1,0 +1,318 @@
+#include "Mesh/OverlapCuts.h"
+#include "Geometry/Polygon.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+
+namespace radiosity
+{
+namespace
+{
+using Loop = std::vector<Vec3>;
+
+/// A convex polygon of a plane group: its corners, unit normal and box in the plane.
+struct Face
+{
+  int Index = 0;   ///< in the polygons
+  int Surface = 0; ///< its surface key
+  Loop Corners;
+  Vec3 Normal;
+  Bounds Box;
+};
+
+/// How wide a convex loop is across (twice its area over its perimeter): a sliver along a
+/// shared edge, left by rounding, is narrower than the tolerance.
+double Width(const Loop& loop)
+{
+  if (loop.size() < 3)
+  {
+    return 0;
+  }
+  double perimeter = 0;
+  for (size_t k = 0; k < loop.size(); ++k)
+  {
+    perimeter += Norm(loop[(k + 1) % loop.size()] - loop[k]);
+  }
+  return perimeter > 0 ? 2 * PolygonArea(loop.data(), static_cast<int>(loop.size())) / perimeter : 0;
+}
+
+/// The loop without corners repeated within `tolerance` (clipping through a corner makes them).
+Loop Distinct(const Loop& loop, double tolerance)
+{
+  Loop out;
+  for (const Vec3& p : loop)
+  {
+    if (out.empty() || Norm(p - out.back()) > tolerance)
+    {
+      out.push_back(p);
+    }
+  }
+  while (out.size() > 1 && Norm(out.front() - out.back()) <= tolerance)
+  {
+    out.pop_back();
+  }
+  return out;
+}
+
+/// The loop without corners that lie within `tolerance` of the line through their
+/// neighbours: where a cut passes a corner, float rounding decides whether it adds one
+/// beside it, and the mesher would grid the piece otherwise as the scene is turned.
+Loop WithoutStraightCorners(Loop loop, double tolerance)
+{
+  for (size_t k = 0; loop.size() > 3 && k < loop.size();)
+  {
+    const Vec3& a = loop[(k + loop.size() - 1) % loop.size()];
+    const Vec3& c = loop[(k + 1) % loop.size()];
+    const Vec3 along = c - a;
+    const double length = Norm(along);
+    if (length > 0 && Norm(Cross(along, loop[k] - a)) / length <= tolerance)
+    {
+      loop.erase(loop.begin() + static_cast<long>(k));
+      continue;
+    }
+    ++k;
+  }
+  return loop;
+}
+
+/// The half-plane inside edge k of convex `q` (normal `n`), as an origin and an inward direction.
+std::pair<Vec3, Vec3> InsideEdge(const Loop& q, const Vec3& n, size_t k)
+{
+  const Vec3 edge = q[(k + 1) % q.size()] - q[k];
+  return { q[k], Cross(n, edge) };
+}
+
+/// What of convex `p` lies inside convex `q`.
+Loop Intersection(const Loop& p, const Face& q)
+{
+  Loop rest = p, next;
+  for (size_t k = 0; k < q.Corners.size() && rest.size() >= 3; ++k)
+  {
+    const auto [origin, inward] = InsideEdge(q.Corners, q.Normal, k);
+    ClipToHalfSpace(rest.data(), static_cast<int>(rest.size()), origin, inward, next);
+    rest.swap(next);
+  }
+  return rest;
+}
+
+/// Convex `p` less convex `q`: the part outside each edge of q and inside the ones before
+/// it, so the pieces do not overlap. Pieces narrower than `tolerance` are left out.
+std::vector<Loop> Difference(const Loop& p, const Face& q, double tolerance)
+{
+  std::vector<Loop> pieces;
+  Loop rest = p, outside, inside;
+  for (size_t k = 0; k < q.Corners.size() && rest.size() >= 3; ++k)
+  {
+    const auto [origin, inward] = InsideEdge(q.Corners, q.Normal, k);
+    ClipToHalfSpace(rest.data(), static_cast<int>(rest.size()), origin, -1.0 * inward, outside);
+    outside = WithoutStraightCorners(Distinct(outside, 1e-3 * tolerance), tolerance);
+    if (Width(outside) > tolerance)
+    {
+      pieces.push_back(outside);
+    }
+    ClipToHalfSpace(rest.data(), static_cast<int>(rest.size()), origin, inward, inside);
+    rest.swap(inside);
+  }
+  return pieces;
+}
+
+/// The convex polygons of `polygons`, each with its surface, normal and box.
+std::vector<Face> ConvexFaces(
+  const std::vector<Vec3>& points, const std::vector<int>& surfaceKey, double tolerance, const PairedPolygons& polygons)
+{
+  std::vector<Face> faces;
+  for (size_t i = 0; i < polygons.source.size(); ++i)
+  {
+    Face face;
+    face.Index = static_cast<int>(i);
+    face.Corners = GatherLoop(points, polygons.offsets, polygons.connectivity, static_cast<int>(i));
+    const Vec3 newell = NewellVector(face.Corners.data(), static_cast<int>(face.Corners.size()));
+    const double length = Norm(newell);
+    if (!(length > 0) || !IsConvex(face.Corners.data(), static_cast<int>(face.Corners.size()), tolerance))
+    {
+      continue;
+    }
+    face.Normal = newell * (1.0 / length);
+    const int source = polygons.source[i];
+    face.Surface = source < static_cast<int>(surfaceKey.size()) ? surfaceKey[source] : 0;
+    for (const Vec3& p : face.Corners)
+    {
+      face.Box.Add(p);
+    }
+    faces.push_back(std::move(face));
+  }
+  return faces;
+}
+
+/// True when every corner of `a` lies within `tolerance` of `b`'s plane and they face the same side.
+bool InPlaneOf(const Face& a, const Face& b, double tolerance)
+{
+  if (Dot(a.Normal, b.Normal) < 0.999)
+  {
+    return false;
+  }
+  for (const Vec3& p : a.Corners)
+  {
+    if (std::fabs(Dot(b.Normal, p - b.Corners[0])) > tolerance)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// Faces whose boxes span more than this many grid cells along an axis are checked against
+/// every face rather than binned (a wall among a scan's small triangles).
+constexpr double kMostCells = 8;
+
+/// For each face (by position in `faces`), the earlier ones of its surface in its plane whose
+/// boxes meet its own: small faces found through a grid of cells twice the median box size,
+/// large ones against all. The decision is the pair's own geometry, so it does not depend
+/// on how the scene is turned or moved.
+std::vector<std::vector<int>> EarlierNeighbours(const std::vector<Face>& faces, double tolerance)
+{
+  std::vector<double> sizes;
+  for (const Face& f : faces)
+  {
+    sizes.push_back(f.Box.Diagonal());
+  }
+  std::nth_element(sizes.begin(), sizes.begin() + sizes.size() / 2, sizes.end());
+  const double cell = std::max(2 * sizes[sizes.size() / 2], 4 * tolerance);
+  const auto index = [&](double x) { return static_cast<long long>(std::floor(x / cell)); };
+  std::map<std::array<long long, 3>, std::vector<int>> grid;
+  std::vector<int> large;
+  std::vector<std::vector<int>> candidates(faces.size());
+  for (size_t i = 0; i < faces.size(); ++i)
+  {
+    const Bounds& b = faces[i].Box;
+    const Vec3 lo = b.Lo - Vec3{ tolerance, tolerance, tolerance }, hi = b.Hi + Vec3{ tolerance, tolerance, tolerance };
+    if ((hi.x - lo.x) > kMostCells * cell || (hi.y - lo.y) > kMostCells * cell || (hi.z - lo.z) > kMostCells * cell)
+    {
+      large.push_back(static_cast<int>(i));
+      continue;
+    }
+    for (long long x = index(lo.x); x <= index(hi.x); ++x)
+      for (long long y = index(lo.y); y <= index(hi.y); ++y)
+        for (long long z = index(lo.z); z <= index(hi.z); ++z)
+        {
+          std::vector<int>& here = grid[{ x, y, z }];
+          candidates[i].insert(candidates[i].end(), here.begin(), here.end());
+          here.push_back(static_cast<int>(i));
+        }
+  }
+  for (size_t i = 0; i < faces.size(); ++i)
+  {
+    for (int j : large)
+    {
+      if (faces[i].Surface == faces[j].Surface && Dot(faces[i].Normal, faces[j].Normal) >= 0.999)
+      {
+        candidates[std::max<int>(i, j)].push_back(std::min<int>(i, j));
+      }
+    }
+  }
+  std::vector<std::vector<int>> earlier(faces.size());
+  for (size_t i = 0; i < faces.size(); ++i)
+  {
+    std::vector<int>& list = candidates[i];
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+    for (int j : list)
+    {
+      const Face& a = faces[i];
+      const Face& b = faces[j];
+      if (j < static_cast<int>(i) && a.Surface == b.Surface && a.Box.Overlaps(b.Box, tolerance) &&
+        InPlaneOf(a, b, tolerance) && InPlaneOf(b, a, tolerance))
+      {
+        earlier[i].push_back(j);
+      }
+    }
+  }
+  return earlier;
+}
+
+/// Cuts each face by the earlier ones that overlap it; returns each face's pieces (its own
+/// corners where nothing overlaps it, none where it is covered) and marks in `cut` (by
+/// polygon) those that changed.
+std::vector<std::vector<Loop>> CutFaces(const std::vector<Face>& faces, double tolerance, std::vector<char>& cut)
+{
+  const std::vector<std::vector<int>> earlier = EarlierNeighbours(faces, tolerance);
+  std::vector<std::vector<Loop>> pieces(faces.size());
+  for (size_t i = 0; i < faces.size(); ++i)
+  {
+    pieces[i] = { faces[i].Corners };
+    for (int j : earlier[i])
+    {
+      if (Width(Intersection(faces[i].Corners, faces[j])) <= tolerance)
+      {
+        continue; // neighbours along an edge
+      }
+      std::vector<Loop> left;
+      for (const Loop& piece : pieces[i])
+      {
+        for (Loop& rest : Difference(piece, faces[j], tolerance))
+        {
+          left.push_back(std::move(rest));
+        }
+      }
+      pieces[i].swap(left);
+      cut[faces[i].Index] = 1;
+    }
+  }
+  return pieces;
+}
+} // namespace
+
+OverlapCuts CutOverlaps(
+  const std::vector<Vec3>& points, const std::vector<int>& surfaceKey, double tolerance, PairedPolygons& polygons)
+{
+  OverlapCuts found;
+  std::vector<char> cut(polygons.source.size(), 0);
+  std::vector<std::vector<Loop>> pieces(polygons.source.size());
+  const std::vector<Face> faces = ConvexFaces(points, surfaceKey, tolerance, polygons);
+  if (faces.size() < 2)
+  {
+    return found;
+  }
+  std::vector<std::vector<Loop>> cutPieces = CutFaces(faces, tolerance, cut);
+  for (size_t f = 0; f < faces.size(); ++f)
+  {
+    pieces[faces[f].Index] = std::move(cutPieces[f]);
+  }
+  if (std::find(cut.begin(), cut.end(), 1) == cut.end())
+  {
+    return found;
+  }
+  found.Points = points;
+  PairedPolygons kept;
+  kept.merged = polygons.merged;
+  for (size_t i = 0; i < polygons.source.size(); ++i)
+  {
+    const int source = polygons.source[i];
+    if (!cut[i])
+    {
+      kept.connectivity.insert(kept.connectivity.end(), polygons.connectivity.begin() + polygons.offsets[i],
+        polygons.connectivity.begin() + polygons.offsets[i + 1]);
+      kept.offsets.push_back(static_cast<int>(kept.connectivity.size()));
+      kept.source.push_back(source);
+      continue;
+    }
+    (pieces[i].empty() ? found.Covered : found.Trimmed).push_back(source);
+    for (const Loop& piece : pieces[i])
+    {
+      for (const Vec3& p : piece)
+      {
+        kept.connectivity.push_back(static_cast<int>(found.Points.size()));
+        found.Points.push_back(p);
+      }
+      kept.offsets.push_back(static_cast<int>(kept.connectivity.size()));
+      kept.source.push_back(source);
+    }
+  }
+  polygons = std::move(kept);
+  return found;
+}
+
+} // namespace radiosity
+

@@ -1,0 +1,35 @@
+// Coplanar faces of one surface that overlap without being copies (a slab drawn over a
+// floor, a panel traced twice with other corners, two exports of one wall merged): each
+// would receive the full light where they overlap, so the surfaces around them would get
+// more than was emitted. A later face keeps only what the earlier ones leave uncovered.
+#ifndef RadiosityCore_OverlapCuts_h
+#define RadiosityCore_OverlapCuts_h
+
+#include "Mesh/TrianglePairs.h"
+#include "Base/Vec3.h"
+
+#include <vector>
+
+namespace radiosity
+{
+
+struct OverlapCuts
+{
+  std::vector<int> Trimmed; ///< input polygons (source ids) cut to what earlier faces leave
+  std::vector<int> Covered; ///< input polygons wholly under earlier ones: left out
+  /// The points of the cut polygons' new corners, after the input's (empty: none cut, the
+  /// polygons still index the input's points).
+  std::vector<Vec3> Points;
+};
+
+/// Cuts every convex polygon of `polygons` by the earlier convex polygons of the same
+/// `surfaceKey` (per source id) that lie in its plane (within `tolerance`, a length), face
+/// the same side and overlap it by more than `tolerance` across; each cut polygon becomes
+/// the convex pieces of what they leave (new corners appended to a copy of `points`).
+/// Faces of other surfaces are left as they are (which one is meant cannot be told).
+OverlapCuts CutOverlaps(
+  const std::vector<Vec3>& points, const std::vector<int>& surfaceKey, double tolerance, PairedPolygons& polygons);
+
+} // namespace radiosity
+
+#endif
