@@ -215,7 +215,7 @@ radiosity::SolverOptions vtkLightTaggedRadiosity::Options(int threads, const rad
   options.Visibility = this->Effect(this->VisibilityEffect);
   options.Interreflection = this->Effect(this->InterreflectionEffect);
   options.Color = this->Effect(this->ColorEffect);
-  options.ConvergedSolutions = this->Effect(this->ConvergedLightsEffect);
+  options.ConvergedLights = this->Effect(this->ConvergedLightsEffect);
   options.Group = group;
   return options;
 }

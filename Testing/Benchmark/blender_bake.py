@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Blender Cycles (bpy from PyPI) baking each light's diffuse lighting to point colours:
+"""Blender Cycles (bpy from PyPI) baking each light's diffuse lighting to point colors:
 the peer of `./relight bench peers`. Runs in its own venv (out/blender-venv), never with
 the product.
 
@@ -22,7 +22,7 @@ mitsuba_reference.py):
     (Lambert: roughness 0) of the polygon's reflectance plus, on the baked light's
     polygons, an Emission. Cycles' own Diffuse BSDF and Emission are two-sided.
   * Emission strength S is the radiance leaving the surface (Blender: strength 1 makes a
-    surface show exactly its colour), so unit exitance M = pi L is S = 1/pi.
+    surface show exactly its color), so unit exitance M = pi L is S = 1/pi.
   * A DIFFUSE bake with pass_filter {DIRECT, INDIRECT} is the diffuse *light* pass,
     reflected radiance divided by the albedo: E / pi for irradiance E. With COLOR as well
     it is the reflected radiance rho E / pi, so the radiosity of a non-emitting surface
@@ -105,7 +105,7 @@ def one_sided_material(name, reflectance):
 
 def make_object(points, offsets, connectivity, material_of_polygon, materials):
     """One mesh object holding exactly these points and polygons (no welding), with a
-    float point-domain colour attribute as the active bake target."""
+    float point-domain color attribute as the active bake target."""
     mesh = bpy.data.meshes.new("scene")
     faces = [connectivity[offsets[i]:offsets[i + 1]].tolist() for i in range(len(offsets) - 1)]
     mesh.from_pydata(np.asarray(points, dtype=float).tolist(), [], faces)
@@ -124,7 +124,7 @@ def make_object(points, offsets, connectivity, material_of_polygon, materials):
 
 
 def bake(obj, samples, seed, with_color=True):
-    """One DIFFUSE bake into the point colours; returns (pi x bake as an (n, 3) array,
+    """One DIFFUSE bake into the point colors; returns (pi x bake as an (n, 3) array,
     process CPU seconds, wall seconds)."""
     scene = bpy.context.scene
     scene.cycles.samples = samples
@@ -245,8 +245,8 @@ def selftest(samples=4096, threads=2):
         return receiver
 
     receiver = emitter_over(1.0, -1)
-    check(f"irradiance E = F = {F:.4f} (pi x bake, colour off)", bake_centres(receiver, samples, False)[0], F, tol)
-    check("radiosity B = 0.5 F (pi x bake, colour on)", bake_centres(receiver, samples)[0], 0.5 * F, tol / 2)
+    check(f"irradiance E = F = {F:.4f} (pi x bake, color off)", bake_centres(receiver, samples, False)[0], F, tol)
+    check("radiosity B = 0.5 F (pi x bake, color on)", bake_centres(receiver, samples)[0], 0.5 * F, tol / 2)
     check("emitter facing away from the receiver: B = 0", bake_centres(emitter_over(1.0, +1), samples)[0], 0.0, 1e-6)
     check("emitter under the receiver, facing up: B = 0", bake_centres(emitter_over(-1.0, +1), samples)[0], 0.0, 1e-6)
 

@@ -1,5 +1,5 @@
 """./relight bench peers: our solver against the tool a user would pick instead, Blender
-Cycles baking each light's diffuse lighting to point colours, on the same mesh, both
+Cycles baking each light's diffuse lighting to point colors, on the same mesh, both
 judged against a Mitsuba 3 reference at probe points.
 
 A scene is a JSON of polygons, lights and probes with its Mitsuba reference: the furnished
@@ -56,7 +56,7 @@ def room_scene(room, lights):
 
 
 def relight_seconds(solver, lights, repeats=21):
-    """Median wall time of one relight after a light's intensity changes (what a colour,
+    """Median wall time of one relight after a light's intensity changes (what a color,
     intensity or on/off change costs once solved)."""
     import relight
 

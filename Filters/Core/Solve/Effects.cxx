@@ -167,8 +167,8 @@ EffectDecision SeparationRow(const LightGrouping& grouping, int lights, Solution
 
 EffectDecision ConvergedRow(const SolverOptions& options, const SolverStatistics& s, double polygons)
 {
-  EffectDecision row{ "ConvergedSolutions", s.DistributionsSkipped == 0, "" };
-  if (options.ConvergedSolutions == EffectMode::On)
+  EffectDecision row{ "ConvergedLights", s.DistributionsSkipped == 0, "" };
+  if (options.ConvergedLights == EffectMode::On)
   {
     row.Reason = "simulated: forced on, every solution shot until all converge";
   }

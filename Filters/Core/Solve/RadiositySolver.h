@@ -87,7 +87,7 @@ struct SolverOptions
   /// Shooting a solution whose remaining unshot power is already below the threshold of
   /// its own emitted power. Auto and Off stop shooting it; On keeps it going until every
   /// solution has converged.
-  EffectMode ConvergedSolutions = EffectMode::Auto;
+  EffectMode ConvergedLights = EffectMode::Auto;
   /// Called between shots with the fraction done; returning false aborts the solve, which
   /// then keeps the valid partial result of the shots made so far.
   std::function<bool(double)> Progress;

@@ -515,13 +515,13 @@ private:
     return true;
   }
 
-  /// The solutions a shot carries: those still being shot (all with ConvergedSolutions On).
+  /// The solutions a shot carries: those still being shot (all with ConvergedLights On).
   std::vector<char> Mask() const
   {
     std::vector<char> mask(L);
     for (int m = 0; m < L; ++m)
     {
-      mask[m] = Options.ConvergedSolutions != EffectMode::On ? Active[m] : 1;
+      mask[m] = Options.ConvergedLights != EffectMode::On ? Active[m] : 1;
     }
     return mask;
   }

@@ -30,12 +30,12 @@ room = make_scene([[c[i] for i in f] for f in faces], [(0.6, 0.6, 0.6)] * 6, [-1
                   light_names=["Ceiling"])
 auto, forced = solve(room), solve(room, force=True)
 decided = effects(auto.GetOutput())
-check(list(decided) == ["Visibility", "Interreflection", "Color", "LightSeparation", "ConvergedSolutions",
+check(list(decided) == ["Visibility", "Interreflection", "Color", "LightSeparation", "ConvergedLights",
                         "DirectIndirectSplit", "MovingLightBasis"], f"effect rows {list(decided)}")
 check(decided["Visibility"][0] == "skipped" and "convex" in decided["Visibility"][1], f"visibility: {decided['Visibility']}")
 check(decided["Color"][0] == "skipped" and "grey" in decided["Color"][1], f"color: {decided['Color']}")
 forced_decisions = effects(forced.GetOutput())
-check(all(forced_decisions[e][0] == "simulated" for e in ("Visibility", "Interreflection", "Color", "ConvergedSolutions")),
+check(all(forced_decisions[e][0] == "simulated" for e in ("Visibility", "Interreflection", "Color", "ConvergedLights")),
       f"ForceAllEffects simulates everything: {forced_decisions}")
 a, b = cell_array(auto.GetOutput(), "Radiosity_Ceiling"), cell_array(forced.GetOutput(), "Radiosity_Ceiling")
 check(np.allclose(a, b, rtol=1e-6, atol=1e-9), "Auto gives the same radiosity as ForceAllEffects")

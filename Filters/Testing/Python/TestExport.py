@@ -20,14 +20,14 @@ from testlib import check, finish
 vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_OFF)
 DATA = os.path.join(os.environ.get("RELIGHT_ROOT", "."), "Data")
 folder = tempfile.mkdtemp()
-COLOURS = [(1.0, 0.8, 0.6), (0.3, 0.6, 1.0), (1.0, 0.2, 0.1)]
+COLORS = [(1.0, 0.8, 0.6), (0.3, 0.6, 1.0), (1.0, 0.2, 0.1)]
 INTENSITIES = [3.0, 1.5, 0.5]
 EXPOSURE = 2.5
 
 solver = relight.solve(read_polydata(os.path.join(DATA, "paper_3lights.vtp")), 1.5, 0.75, ConvergenceThreshold=1e-3)
 relit_filter = relight.vtkRadiosityRelight()
 relit_filter.SetInputConnection(solver.GetOutputPort())
-for i, (color, intensity) in enumerate(zip(COLOURS, INTENSITIES)):
+for i, (color, intensity) in enumerate(zip(COLORS, INTENSITIES)):
     relit_filter.SetLightColor(i, *color)
     relit_filter.SetLightIntensity(i, intensity)
 relit_filter.Update()
@@ -76,14 +76,14 @@ for entry in lights:
           f"{entry['attribute']}: the unit solution of {entry['name']}, bit for bit in float")
 defaults = numpy_support.vtk_to_numpy(relit.GetFieldData().GetArray("LightDefaultColors"))
 check(np.allclose([entry["defaultColor"] for entry in lights], defaults), "extras carry the default colors")
-check(np.allclose([entry["color"] for entry in lights], [np.asarray(c) * s for c, s in zip(COLOURS, INTENSITIES)])
+check(np.allclose([entry["color"] for entry in lights], [np.asarray(c) * s for c, s in zip(COLORS, INTENSITIES)])
       and all(entry["enabled"] for entry in lights), "extras carry the relight filter's colors x intensities, on")
 color = accessor(document, binary, primitive["attributes"]["COLOR_0"])
 expected = np.clip(point_array(relit, "Radiosity") * EXPOSURE, 0, 1)
 check(np.allclose(color, expected, atol=1e-6), "COLOR_0 is the relit radiosity x exposure, clamped")
 # The sum a viewer computes from the light attributes gives the relit picture back.
 mix = sum(np.asarray(c) * s * accessor(document, binary, primitive["attributes"][e["attribute"]])
-          for c, s, e in zip(COLOURS, INTENSITIES, lights))
+          for c, s, e in zip(COLORS, INTENSITIES, lights))
 check(np.allclose(mix, point_array(relit, "Radiosity"), rtol=1e-5, atol=1e-7), "sum of color x intensity x attribute = relit")
 indices = accessor(document, binary, primitive["indices"])
 positions = accessor(document, binary, primitive["attributes"]["POSITION"]).astype(float)
@@ -144,7 +144,7 @@ def picture(array):
     return numpy_support.vtk_to_numpy(image).astype(float)
 
 
-layers = sum(np.asarray(c) * s * picture("Radiosity_" + n) for c, s, n in zip(COLOURS, INTENSITIES, names))
+layers = sum(np.asarray(c) * s * picture("Radiosity_" + n) for c, s, n in zip(COLORS, INTENSITIES, names))
 check(np.allclose(layers, picture("Radiosity"), rtol=1e-5, atol=1e-6), "the relit picture is the sum of the light layers")
 # The ray scene is kept between renders of the same points and polygons (an animation's
 # frames), and built again when they change: a moved copy is drawn where it now is, and

@@ -25,7 +25,7 @@ from vtkmodules.util import numpy_support
 from vtkmodules.util.vtkConstants import VTK_UNSIGNED_CHAR
 
 LIGHT = "Ceiling"
-COLOUR = (1.0, 0.8, 0.6)
+COLOR = (1.0, 0.8, 0.6)
 INTENSITY = 2.0
 ENABLED = 1
 REL_TOL = 1e-5
@@ -160,7 +160,7 @@ def main(argv):
                        (scene_reader, MarkLights(Input=scene_reader), mesher, solver, relight))
     # One row of the repeatable string-vector property:
     # Name, Red, Green, Blue, Intensity, Enabled (all passed as strings).
-    relight.LightSettings = [LIGHT] + [repr(float(c)) for c in COLOUR] + [
+    relight.LightSettings = [LIGHT] + [repr(float(c)) for c in COLOR] + [
         repr(float(INTENSITY)), str(int(ENABLED))]
     check(len(relight.LightSettings) == 6,
           "LightSettings has %d elements, expected 6" % len(relight.LightSettings))
@@ -180,7 +180,7 @@ def main(argv):
     rows = {effective[i]: effective[i + 1:i + 6] for i in range(0, len(effective), 6)}
     check(sorted(rows) == sorted(names), "LightSettingsInfo has rows for %s, expected %s" % (sorted(rows), names))
     ours = [float(v) for v in rows.get(LIGHT, ["nan"] * 5)]
-    check(np.allclose(ours, list(COLOUR) + [INTENSITY, ENABLED]),
+    check(np.allclose(ours, list(COLOR) + [INTENSITY, ENABLED]),
           "LightSettingsInfo reads back %s for %s, expected what was set" % (ours, LIGHT))
     relight.GetProperty("LightSettings").SMProperty.ResetToDomainDefaults()
     check(list(relight.LightSettings) == effective,
@@ -278,7 +278,7 @@ def main(argv):
     base = numpy_support.vtk_to_numpy(solved_cells).astype(np.float64)
     relit_cells = numpy_support.vtk_to_numpy(
         relit.GetCellData().GetArray("Radiosity")).astype(np.float64)
-    expected = base * (np.asarray(COLOUR, dtype=np.float64) * INTENSITY)[np.newaxis, :]
+    expected = base * (np.asarray(COLOR, dtype=np.float64) * INTENSITY)[np.newaxis, :]
     scale = max(float(np.max(np.abs(expected))), 1e-300)
     error = np.abs(relit_cells - expected)
     allowed = REL_TOL * np.abs(expected) + 1e-12 * scale

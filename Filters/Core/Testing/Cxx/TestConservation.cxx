@@ -1,4 +1,4 @@
-// Transport never creates energy, and in a closed scene it loses none: the issue-13 room
+// Transport never creates energy, and in a closed scene it loses none: the hard room
 // (a 0.2 m lamp under the ceiling of a closed unit room, 0.5 m elements) where a point
 // rule near the lamp once delivered 113.6 % of its power, and a closed room at rho = 0.999
 // (with the ambient term asked for, and at the defaults).

@@ -19,7 +19,7 @@ SolverOptions With(EffectMode mode, double threshold = 1e-6)
   SolverOptions o;
   o.MaximumShots = 100000;
   o.ConvergenceThreshold = threshold;
-  o.Visibility = o.Interreflection = o.Color = o.ConvergedSolutions = mode;
+  o.Visibility = o.Interreflection = o.Color = o.ConvergedLights = mode;
   return o;
 }
 
