@@ -49,7 +49,6 @@ vtkStandardNewMacro(vtkRadiosityRelight);
 
 struct vtkRadiosityRelight::Internals
 {
-  radiosity::LightRig Rig;
   std::vector<std::string> Names;                  ///< the lights the last execution found
   std::vector<radiosity::LightSetting> Effective; ///< and their settings in effect
   vtkRadiosityPieces::GatheredScene Gathered;      ///< the whole scene on an MPI server, kept
@@ -65,8 +64,23 @@ struct vtkRadiosityRelight::MovingState
 
 vtkRadiosityRelight::vtkRadiosityRelight()
   : Internal(new Internals)
+  , Lights(vtkSmartPointer<vtkRadiosityLights>::New())
 {
   this->SetNumberOfInputPorts(3);
+}
+
+void vtkRadiosityRelight::SetLights(vtkRadiosityLights* lights)
+{
+  if (lights && lights != this->Lights)
+  {
+    this->Lights = lights;
+    this->Modified();
+  }
+}
+
+vtkMTimeType vtkRadiosityRelight::GetMTime()
+{
+  return std::max(this->Superclass::GetMTime(), this->Lights->GetMTime());
 }
 
 vtkRadiosityRelight::~vtkRadiosityRelight()
@@ -331,37 +345,6 @@ bool vtkRadiosityRelight::AddMovingLights(vtkPolyData* scene, vtkPolyData* light
   return true;
 }
 
-void vtkRadiosityRelight::AddScheduleEntry(
-  double time, const char* light, double r, double g, double b, double intensity, int enabled)
-{
-  if (!light)
-  {
-    return;
-  }
-  radiosity::LightKeyframe key;
-  key.Time = time;
-  key.Light = light;
-  key.Color = { r, g, b };
-  key.Intensity = intensity;
-  key.Enabled = enabled != 0;
-  this->Internal->Rig.Schedule.push_back(key);
-  this->Modified();
-}
-
-void vtkRadiosityRelight::ClearSchedule()
-{
-  if (!this->Internal->Rig.Schedule.empty())
-  {
-    this->Internal->Rig.Schedule.clear();
-    this->Modified();
-  }
-}
-
-int vtkRadiosityRelight::GetNumberOfScheduleEntries() const
-{
-  return static_cast<int>(this->Internal->Rig.Schedule.size());
-}
-
 namespace
 {
 /// When the file was last written (0 when it cannot be read): a change re-reads it.
@@ -381,7 +364,7 @@ bool vtkRadiosityRelight::LoadSchedule(std::string& error)
   {
     return true;
   }
-  std::vector<radiosity::LightKeyframe>& keys = this->Internal->Rig.FileSchedule;
+  std::vector<radiosity::LightKeyframe>& keys = this->Lights->Rig().FileSchedule;
   keys.clear();
   this->LoadedScheduleFile.clear();
   if (file.empty())
@@ -449,7 +432,7 @@ int vtkRadiosityRelight::RequestInformation(
   }
   // Time steps: the schedule's keyframes and those of a time-varying moving-light source.
   // Without either, the scene's own (copied by the pipeline) stay as they are.
-  std::vector<double> times = this->Internal->Rig.KeyframeTimes();
+  std::vector<double> times = this->Lights->Rig().KeyframeTimes();
   if (this->GetNumberOfInputConnections(1) > 0)
   {
     vtkInformation* lights = inputVector[1]->GetInformationObject(0);
@@ -469,51 +452,6 @@ int vtkRadiosityRelight::RequestInformation(
   const double range[2] = { times.front(), times.back() };
   info->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
   return 1;
-}
-
-void vtkRadiosityRelight::SetLightColor(int light, double r, double g, double b)
-{
-  this->Internal->Rig.SetColor(light, { r, g, b });
-  this->Modified();
-}
-
-void vtkRadiosityRelight::SetLightIntensity(int light, double intensity)
-{
-  this->Internal->Rig.SetIntensity(light, intensity);
-  this->Modified();
-}
-
-void vtkRadiosityRelight::SetLightEnabled(int light, bool enabled)
-{
-  this->Internal->Rig.SetEnabled(light, enabled);
-  this->Modified();
-}
-
-void vtkRadiosityRelight::SetLightSetting(
-  const char* name, double r, double g, double b, double intensity, int enabled)
-{
-  if (!name)
-  {
-    return;
-  }
-  this->Internal->Rig.SetByName(name, { r, g, b }, intensity, enabled != 0);
-  this->Modified();
-}
-
-void vtkRadiosityRelight::ClearLightSettings()
-{
-  if (!this->Internal->Rig.ByName.empty())
-  {
-    this->Internal->Rig.ByName.clear();
-    this->Modified();
-  }
-}
-
-void vtkRadiosityRelight::ResetLights()
-{
-  this->Internal->Rig.ByName.clear();
-  this->Internal->Rig.ByIndex.clear();
-  this->Modified();
 }
 
 int vtkRadiosityRelight::GetNumberOfLights() const
@@ -639,7 +577,7 @@ int vtkRadiosityRelight::RequestData(
           return this->Relight(whole, movers ? allMovers.Get() : nullptr, dynamic ? allDynamic.Get() : nullptr, time, result);
         },
         &this->Internal->Gathered);
-      if (ok && !this->Internal->Rig.KeyframeTimes().empty())
+      if (ok && !this->Lights->Rig().KeyframeTimes().empty())
       {
         output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);
       }
@@ -749,7 +687,7 @@ std::string vtkRadiosityRelight::ResolveWeights(
   }
   std::vector<radiosity::LightSetting> effective;
   std::vector<std::string> warnings;
-  const std::string invalid = this->Internal->Rig.Resolve(names, defaultColors, time, effective, warnings);
+  const std::string invalid = this->Lights->Rig().Resolve(names, defaultColors, time, effective, warnings);
   if (!invalid.empty())
   {
     return invalid;
@@ -850,7 +788,7 @@ int vtkRadiosityRelight::Relight(
   exposure->InsertNextValue(this->ExposureInUse);
   output->GetFieldData()->AddArray(exposure);
   this->AddSettingsInUse(output);
-  if (!this->Internal->Rig.KeyframeTimes().empty())
+  if (!this->Lights->Rig().KeyframeTimes().empty())
   {
     output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);
   }

@@ -40,6 +40,7 @@
 
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkRadiosityFiltersModule.h" // for export macro
+#include "vtkRadiosityLights.h"        // for the shortcuts to the light settings
 #include "vtkSmartPointer.h"             // for the info arrays
 
 class vtkFloatArray;
@@ -57,21 +58,28 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
-  /// Per-light settings by index (0..k-1, in LightNames order).
-  void SetLightColor(int light, double r, double g, double b);
-  void SetLightIntensity(int light, double intensity);
-  void SetLightEnabled(int light, bool enabled);
+  /// The lights' settings (vtkRadiosityLights): color, intensity and on/off by index or by
+  /// name, and the schedule. Give a GPU mapper the same object and both follow one set of
+  /// settings. Never null; setting null is ignored.
+  vtkRadiosityLights* GetLights() { return this->Lights; }
+  void SetLights(vtkRadiosityLights* lights);
   ///@}
 
   ///@{
-  /// Per-light settings by name, all at once (ParaView's repeatable property). A NaN
-  /// color component or intensity keeps that part at its default.
-  void SetLightSetting(const char* name, double r, double g, double b, double intensity, int enabled);
-  void ClearLightSettings();
+  /// Shortcuts to GetLights()'s settings (ParaView's properties call these).
+  void SetLightColor(int light, double r, double g, double b) { this->Lights->SetLightColor(light, r, g, b); }
+  void SetLightIntensity(int light, double intensity) { this->Lights->SetLightIntensity(light, intensity); }
+  void SetLightEnabled(int light, bool enabled) { this->Lights->SetLightEnabled(light, enabled); }
+  void SetLightSetting(const char* name, double r, double g, double b, double intensity, int enabled)
+  {
+    this->Lights->SetLightSetting(name, r, g, b, intensity, enabled);
+  }
+  void ClearLightSettings() { this->Lights->ClearLightSettings(); }
+  void ResetLights() { this->Lights->ResetLights(); }
   ///@}
 
-  /// Forget every setting made by index or by name (the schedule stays).
-  void ResetLights();
+  /// Also changed when the lights' settings change.
+  vtkMTimeType GetMTime() override;
 
   ///@{
   /**
@@ -85,12 +93,14 @@ public:
    * yes/no or 1/0; re-read when the file changes).
    * Precedence: defaults, then SetLightSetting, then the schedule, then index settings.
    */
-  void AddScheduleEntry(double time, const char* light, double r, double g, double b, double intensity,
-    int enabled);
-  void ClearSchedule();
+  void AddScheduleEntry(double time, const char* light, double r, double g, double b, double intensity, int enabled)
+  {
+    this->Lights->AddScheduleEntry(time, light, r, g, b, intensity, enabled);
+  }
+  void ClearSchedule() { this->Lights->ClearSchedule(); }
   vtkSetStringMacro(ScheduleFileName);
   vtkGetStringMacro(ScheduleFileName);
-  int GetNumberOfScheduleEntries() const;
+  int GetNumberOfScheduleEntries() const { return this->Lights->GetNumberOfScheduleEntries(); }
   ///@}
 
   ///@{
@@ -150,7 +160,8 @@ private:
   void operator=(const vtkRadiosityRelight&) = delete;
 
   struct Internals;
-  std::unique_ptr<Internals> Internal; ///< the light rig, and the lights the last execution resolved
+  std::unique_ptr<Internals> Internal; ///< the lights the last execution resolved
+  vtkSmartPointer<vtkRadiosityLights> Lights;
   std::string LoadedScheduleFile;
   long long LoadedScheduleStamp = 0; ///< its last write time when read: a newer one re-reads it
   char* ScheduleFileName = nullptr;

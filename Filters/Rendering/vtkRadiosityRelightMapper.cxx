@@ -1,6 +1,7 @@
 #include "vtkRadiosityRelightMapper.h"
 
 #include "Relight/LightRig.h"
+#include "vtkRadiosityLights.h"
 #include "vtkRadiosityCombine.h"
 #include "vtkRadiosityLightDefaults.h"
 
@@ -31,7 +32,7 @@ vtkStandardNewMacro(vtkRadiosityRelightMapper);
 
 struct vtkRadiosityRelightMapper::Internals
 {
-  radiosity::LightRig Rig;
+  vtkSmartPointer<vtkRadiosityLights> Lights = vtkSmartPointer<vtkRadiosityLights>::New();
   double Time = 0;
   double Exposure = 0;
   double Metered = 1;                 ///< the metered exposure, for the weights and data below
@@ -127,54 +128,17 @@ vtkRadiosityRelightMapper::vtkRadiosityRelightMapper()
 
 vtkRadiosityRelightMapper::~vtkRadiosityRelightMapper() = default;
 
-void vtkRadiosityRelightMapper::SetLightColor(int light, double r, double g, double b)
+vtkRadiosityLights* vtkRadiosityRelightMapper::GetLights()
 {
-  this->Internal->Rig.SetColor(light, { r, g, b });
+  return this->Internal->Lights;
 }
 
-void vtkRadiosityRelightMapper::SetLightIntensity(int light, double intensity)
+void vtkRadiosityRelightMapper::SetLights(vtkRadiosityLights* lights)
 {
-  this->Internal->Rig.SetIntensity(light, intensity);
-}
-
-void vtkRadiosityRelightMapper::SetLightEnabled(int light, bool enabled)
-{
-  this->Internal->Rig.SetEnabled(light, enabled);
-}
-
-void vtkRadiosityRelightMapper::SetLightSetting(
-  const char* name, double r, double g, double b, double intensity, int enabled)
-{
-  if (!name)
+  if (lights)
   {
-    return;
+    this->Internal->Lights = lights;
   }
-  this->Internal->Rig.SetByName(name, { r, g, b }, intensity, enabled != 0);
-}
-
-void vtkRadiosityRelightMapper::ClearLightSettings()
-{
-  this->Internal->Rig.ByName.clear();
-}
-
-void vtkRadiosityRelightMapper::ResetLights()
-{
-  this->Internal->Rig.ByName.clear();
-  this->Internal->Rig.ByIndex.clear();
-}
-
-void vtkRadiosityRelightMapper::AddScheduleEntry(
-  double time, const char* light, double r, double g, double b, double intensity, int enabled)
-{
-  if (light)
-  {
-    this->Internal->Rig.Schedule.push_back({ time, light, { r, g, b }, intensity, enabled != 0 });
-  }
-}
-
-void vtkRadiosityRelightMapper::ClearSchedule()
-{
-  this->Internal->Rig.Schedule.clear();
 }
 
 void vtkRadiosityRelightMapper::SetTime(double time)
@@ -299,7 +263,7 @@ void vtkRadiosityRelightMapper::DescribeLights(vtkPolyData* data, vtkStringArray
   const std::vector<std::string> lights = vtkRadiosityLightNames(data->GetFieldData());
   std::vector<radiosity::LightSetting> effective;
   std::vector<std::string> warnings;
-  if (!this->Internal->Rig.Resolve(lights, DefaultColors(data, lights.size()), this->Internal->Time, effective, warnings)
+  if (!this->Internal->Lights->Rig().Resolve(lights, DefaultColors(data, lights.size()), this->Internal->Time, effective, warnings)
          .empty())
   {
     return;
@@ -349,7 +313,7 @@ std::vector<float> vtkRadiosityRelightMapper::CurrentWeights()
   Internals& in = *this->Internal;
   std::vector<radiosity::LightSetting> effective;
   std::vector<std::string> warnings;
-  const std::string invalid = in.Rig.Resolve(in.Names, in.Defaults, in.Time, effective, warnings);
+  const std::string invalid = in.Lights->Rig().Resolve(in.Names, in.Defaults, in.Time, effective, warnings);
   if (!invalid.empty())
   {
     in.Problem = invalid;

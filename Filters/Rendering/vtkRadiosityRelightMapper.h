@@ -8,9 +8,10 @@
  * color x intensity (zero when off), then applies Exposure, the clamp and the sRGB curve
  * of vtkRadiosityRelight's DisplayColors, and the surface is drawn unlit with that color.
  *
- * Light settings have the relight filter's meaning and precedence (defaults, by name, the
- * schedule at Time, by index), but changing them does not modify the mapper: no pipeline
- * execution, no upload, only the uniforms of the next Render(). New input data is
+ * Light settings (GetLights(), the relight filter's vtkRadiosityLights) have the filter's
+ * meaning and precedence (defaults, by name, the schedule at Time, by index), but changing
+ * them does not modify the mapper: no pipeline execution, no upload, only the uniforms of
+ * the next Render(). New input data is
  * uploaded again on the next render.
  *
  * @sa vtkRadiosityRelight vtkLightTaggedRadiosity
@@ -20,6 +21,8 @@
 
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkRadiosityRenderingModule.h" // for export macro
+
+class vtkRadiosityLights;
 
 #include <memory> // for the internals
 #include <vector> // for the weights
@@ -36,26 +39,16 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
-  /// Per-light settings by index (0..k-1, in LightNames order): take effect at the next
-  /// Render(), without modifying the mapper.
-  void SetLightColor(int light, double r, double g, double b);
-  void SetLightIntensity(int light, double intensity);
-  void SetLightEnabled(int light, bool enabled);
+  /// The lights' settings (vtkRadiosityLights: color, intensity, on/off by index or by
+  /// name, the schedule), read at each Render(): a change costs no pipeline execution and
+  /// no upload. Give it the relight filter's (SetLights(filter->GetLights())) and both
+  /// follow the same settings. Never null; setting null is ignored.
+  vtkRadiosityLights* GetLights();
+  void SetLights(vtkRadiosityLights* lights);
   ///@}
 
   ///@{
-  /// Per-light settings by name (NaN keeps a default), as vtkRadiosityRelight's.
-  void SetLightSetting(const char* name, double r, double g, double b, double intensity, int enabled);
-  void ClearLightSettings();
-  ///@}
-
-  /// Forget every setting made by index or by name (the schedule stays).
-  void ResetLights();
-
-  ///@{
-  /// Keyframes (time, light by name or index, r, g, b, intensity, enabled) evaluated at Time.
-  void AddScheduleEntry(double time, const char* light, double r, double g, double b, double intensity, int enabled);
-  void ClearSchedule();
+  /// The time at which the lights' schedule is evaluated.
   void SetTime(double time);
   double GetTime() const;
   ///@}

@@ -1,4 +1,5 @@
 #include "vtkRadiosityRelitRepresentation.h"
+#include "vtkRadiosityLights.h"
 
 #include "vtkRadiosityRelightMapper.h"
 
@@ -51,12 +52,12 @@ vtkRadiosityRelitRepresentation::~vtkRadiosityRelitRepresentation() = default;
 void vtkRadiosityRelitRepresentation::SetLightSetting(
   const char* name, double r, double g, double b, double intensity, int enabled)
 {
-  this->Mapper->SetLightSetting(name, r, g, b, intensity, enabled);
+  this->Mapper->GetLights()->SetLightSetting(name, r, g, b, intensity, enabled);
 }
 
 void vtkRadiosityRelitRepresentation::ClearLightSettings()
 {
-  this->Mapper->ClearLightSettings();
+  this->Mapper->GetLights()->ClearLightSettings();
 }
 
 void vtkRadiosityRelitRepresentation::SetRelightExposure(double exposure)

@@ -120,7 +120,7 @@ def main():
     rows = []
     pictures = []
     for label, mapper, light in (("CPU: relight filter + DisplayColors", cpu_mapper, relit),
-                                 ("GPU: vtkRadiosityRelightMapper", gpu_mapper, gpu_mapper)):
+                                 ("GPU: vtkRadiosityRelightMapper", gpu_mapper, gpu_mapper.GetLights())):
         window, renderer = view(mapper, args.size)
         camera = renderer.GetActiveCamera()
         move = milliseconds_per_frame(window, lambda frame: camera.Azimuth(0.5), args.frames)

@@ -96,6 +96,20 @@ for step in range(5):
     rl.Update()
 check(executions == {"solver": 0, "relight": 5}, f"only the combination re-runs: {executions}")
 
+# One vtkRadiosityLights object holds the settings: a change made on it (or on another
+# filter's, once shared) re-runs the filter as its own shortcuts do.
+shared = relight.vtkRadiosityRelight()
+shared.SetInputData(solved)
+shared.SetLights(rl.GetLights())
+shared.Update()
+before = cell_array(shared.GetOutput(), "Radiosity").copy()
+rl.GetLights().SetLightIntensity(1, 7.0)
+shared.Update()
+rl.Update()
+check(not np.allclose(cell_array(shared.GetOutput(), "Radiosity"), before)
+      and np.allclose(cell_array(shared.GetOutput(), "Radiosity"), cell_array(rl.GetOutput(), "Radiosity")),
+      "a filter sharing another's lights follows a change made on them")
+
 # By name, as ParaView does it; index settings are cleared first.
 rl.ResetLights()
 rl.SetLightSetting("Amber", 0.0, 1.0, 0.0, 4.0, 1)

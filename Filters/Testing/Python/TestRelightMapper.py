@@ -28,11 +28,12 @@ def both_paths(solved, settings, camera, exposure):
     filter_.SetInputData(solved)
     mapper = relight.vtkRadiosityRelightMapper()
     mapper.SetInputData(solved)
+    mapper.SetLights(filter_.GetLights())  # one set of settings, read by both
+    for i, (color, intensity, enabled) in settings.items():
+        filter_.SetLightColor(i, *color)
+        filter_.SetLightIntensity(i, intensity)
+        filter_.SetLightEnabled(i, enabled)
     for target in (filter_, mapper):
-        for i, (color, intensity, enabled) in settings.items():
-            target.SetLightColor(i, *color)
-            target.SetLightIntensity(i, intensity)
-            target.SetLightEnabled(i, enabled)
         target.SetExposure(exposure)
     filter_.Update()
     cpu = FrameRenderer(camera, SIZE)
@@ -49,13 +50,13 @@ difference = np.abs(cpu - gpu)
 check(difference.mean() < 1.0 and not mapper.GetLastProblem(),
       f"3 lights: GPU = CPU within {difference.mean():.3f} / 255 mean (max {difference.max():.0f})")
 time_before = mapper.GetMTime()
-mapper.SetLightEnabled(0, False)
+mapper.GetLights().SetLightEnabled(0, False)
 changed = pixels(view.render())
 check(mapper.GetUploadCount() == 1 and mapper.GetMTime() == time_before and np.abs(changed - gpu).mean() > 2,
       f"a light change re-renders without upload or modification (uploads {mapper.GetUploadCount()}, "
       f"mean change {np.abs(changed - gpu).mean():.1f})")
-mapper.SetLightIntensity(0, -1.0)
-mapper.SetLightEnabled(0, True)
+mapper.GetLights().SetLightIntensity(0, -1.0)
+mapper.GetLights().SetLightEnabled(0, True)
 view.render()
 check("light 'WarmWhite' has intensity -1" in mapper.GetLastProblem(), f"a bad setting is reported: {mapper.GetLastProblem()}")
 
@@ -64,9 +65,9 @@ cpu_mapper = relight.vtkRadiosityRelightMapper()
 cpu_mapper.SetInputData(solved)
 cpu_mapper.SetUseGPU(False)
 for i, (color, intensity, enabled) in settings.items():
-    cpu_mapper.SetLightColor(i, *color)
-    cpu_mapper.SetLightIntensity(i, intensity)
-    cpu_mapper.SetLightEnabled(i, enabled)
+    cpu_mapper.GetLights().SetLightColor(i, *color)
+    cpu_mapper.GetLights().SetLightIntensity(i, intensity)
+    cpu_mapper.GetLights().SetLightEnabled(i, enabled)
 cpu_mapper.SetExposure(2.0)
 catcher = relight.ErrorCatcher(cpu_mapper)
 cpu_view = FrameRenderer(ROOM_CAMERA, SIZE, cpu_mapper)
@@ -74,7 +75,7 @@ on_cpu = pixels(cpu_view.render())
 check(cpu_mapper.GetRelitOnCPU() and np.abs(on_cpu - cpu).mean() < 1.0 and len(catcher.warnings) == 1,
       f"UseGPU off: relit on the CPU, = the filter's picture within {np.abs(on_cpu - cpu).mean():.3f} / 255, "
       f"said once ({len(catcher.warnings)} warning)")
-cpu_mapper.SetLightEnabled(0, False)
+cpu_mapper.GetLights().SetLightEnabled(0, False)
 check(np.abs(pixels(cpu_view.render()) - on_cpu).mean() > 2 and len(catcher.warnings) == 1,
       "the CPU path follows a light change too, without saying so again")
 
@@ -135,7 +136,7 @@ weak_floor = numpy_support.vtk_to_numpy(sixty_four.GetPointData().GetArray("Radi
 exposure = 0.5 / (1e-4 * np.percentile(weak_floor[weak_floor > 0], 90))  # the weak box's floor mid-grey
 ABOVE = ((4.25, 2.0, 9.0), (4.25, 2.0, 0.0), (0.0, 1.0, 0.0), 60.0)
 cpu, gpu, mapper, view = both_paths(sixty_four, only, ABOVE, exposure)
-mapper.SetLightEnabled(weak, False)
+mapper.GetLights().SetLightEnabled(weak, False)
 without = pixels(view.render())
 change = np.abs(gpu - without).sum(axis=1)
 check(mapper.GetNumberOfLights() == 64 and np.abs(cpu - gpu).mean() < 1.0,

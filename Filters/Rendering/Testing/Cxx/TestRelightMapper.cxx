@@ -4,6 +4,7 @@
 // pipeline: the mapper must not upload again, and the picture must change.
 #include "CornellScene.h"
 
+#include "vtkRadiosityLights.h"
 #include "vtkRadiosityRelightMapper.h"
 #include "vtkRegressionTestImage.h"
 
@@ -18,8 +19,8 @@ int TestRelightMapper(int argc, char* argv[])
   }
   vtkNew<vtkRadiosityRelightMapper> mapper;
   mapper->SetInputConnection(solver->GetOutputPort());
-  mapper->SetLightColor(0, 1.0, 0.85, 0.6);
-  mapper->SetLightIntensity(0, 12.0);
+  mapper->GetLights()->SetLightColor(0, 1.0, 0.85, 0.6);
+  mapper->GetLights()->SetLightIntensity(0, 12.0);
   vtkSmartPointer<vtkRenderWindow> window = CornellView(mapper);
   const int result = vtkRegressionTestImage(window);
   if (mapper->GetUploadCount() != 1 || *mapper->GetLastProblem())
@@ -28,7 +29,7 @@ int TestRelightMapper(int argc, char* argv[])
     return EXIT_FAILURE;
   }
   const vtkMTimeType before = mapper->GetMTime();
-  mapper->SetLightIntensity(0, 0.0); // the only light off: the box goes black
+  mapper->GetLights()->SetLightIntensity(0, 0.0); // the only light off: the box goes black
   window->Render();
   unsigned char* pixel = window->GetPixelData(150, 150, 150, 150, 0);
   const int lit = pixel[0] + pixel[1] + pixel[2];

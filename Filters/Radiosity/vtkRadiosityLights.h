@@ -1,0 +1,79 @@
+/**
+ * @class   vtkRadiosityLights
+ * @brief   the lights' settings: color, intensity and on/off by index or by name, and a schedule
+ *
+ * One object holds what a user sets about the lights, and the relight filter, the GPU mapper
+ * and ParaView's Relit Surface read it: a new light setting is added here (and to the core's
+ * radiosity::LightRig, which resolves it), nowhere else. Share one object between a filter
+ * and a mapper (SetLights) and both follow the same changes.
+ *
+ * Precedence, as the core resolves it: each light's default (from the solver's output),
+ * then settings by name, then the schedule at the reader's time, then settings by index.
+ * A NaN color component or intensity in a setting by name keeps that part at its default.
+ * Every change modifies this object; readers take its modification time as their own.
+ *
+ * @sa vtkRadiosityRelight vtkRadiosityRelightMapper
+ */
+#ifndef vtkRadiosityLights_h
+#define vtkRadiosityLights_h
+
+#include "vtkObject.h"
+#include "vtkRadiosityFiltersModule.h" // for export macro
+
+#include <memory> // for the rig
+
+namespace radiosity
+{
+struct LightRig;
+}
+
+class VTKRADIOSITYFILTERS_EXPORT vtkRadiosityLights : public vtkObject
+{
+public:
+  static vtkRadiosityLights* New();
+  vtkTypeMacro(vtkRadiosityLights, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// Per-light settings by index (0..k-1, in LightNames order).
+  void SetLightColor(int light, double r, double g, double b);
+  void SetLightIntensity(int light, double intensity);
+  void SetLightEnabled(int light, bool enabled);
+  ///@}
+
+  ///@{
+  /// Per-light settings by name, all at once (ParaView's repeatable property).
+  void SetLightSetting(const char* name, double r, double g, double b, double intensity, int enabled);
+  void ClearLightSettings();
+  ///@}
+
+  /// Forget every setting made by index or by name (the schedule stays).
+  void ResetLights();
+
+  ///@{
+  /// Keyframes (time, light by name or index, r, g, b, intensity, enabled): color and
+  /// intensity interpolated linearly between them, `enabled` held from the one before.
+  void AddScheduleEntry(double time, const char* light, double r, double g, double b, double intensity, int enabled);
+  void ClearSchedule();
+  int GetNumberOfScheduleEntries() const;
+  ///@}
+
+#ifndef __VTK_WRAP__
+  /// The settings for the core to resolve (C++ only). A caller that changes them calls
+  /// Modified().
+  radiosity::LightRig& Rig() { return *this->Settings; }
+  const radiosity::LightRig& Rig() const { return *this->Settings; }
+#endif
+
+protected:
+  vtkRadiosityLights();
+  ~vtkRadiosityLights() override;
+
+private:
+  vtkRadiosityLights(const vtkRadiosityLights&) = delete;
+  void operator=(const vtkRadiosityLights&) = delete;
+
+  std::unique_ptr<radiosity::LightRig> Settings;
+};
+
+#endif
