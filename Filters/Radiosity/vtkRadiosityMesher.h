@@ -76,7 +76,7 @@ public:
 
   ///@{
   /// Small patches of a curved surface (a tessellated CAD part, a scan: each triangle on
-  /// its own plane) are grouped into face clusters about PatchSize across whose normals
+  /// its own plane) are grouped into face clusters about 0.6 PatchSize across whose normals
   /// stay within this many degrees, so that the solver shoots from groups of polygons,
   /// not from each one. 0 turns it off; default 30, at most 60.
   vtkSetClampMacro(ClusterAngle, double, 0.0, 60.0);

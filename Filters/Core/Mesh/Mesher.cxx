@@ -419,9 +419,8 @@ PairedPolygons Paired(const std::vector<Vec3>& points, const std::vector<int>& o
     *copies = found;
   }
   const double noise = MeshNoise(points, options.PointQuantum);
-  // Not the box's diagonal: that turns with the scene, and which faces count as overlapping must not.
-  OverlapCuts cuts = CutOverlaps(points, surfaceKey, std::max(1e-7 * Span(points), 4 * noise), polygons);
-  polygons.points = std::move(cuts.Points);
+  // From the scene's span (MeshNoise), not its box: which faces overlap must not turn with it.
+  OverlapCuts cuts = CutOverlaps(points, surfaceKey, 4 * noise, polygons);
   if (overlaps)
   {
     *overlaps = std::move(cuts);

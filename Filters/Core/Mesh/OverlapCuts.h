@@ -17,15 +17,13 @@ struct OverlapCuts
 {
   std::vector<int> Trimmed; ///< input polygons (source ids) cut to what earlier faces leave
   std::vector<int> Covered; ///< input polygons wholly under earlier ones: left out
-  /// The points of the cut polygons' new corners, after the input's (empty: none cut, the
-  /// polygons still index the input's points).
-  std::vector<Vec3> Points;
 };
 
 /// Cuts every convex polygon of `polygons` by the earlier convex polygons of the same
 /// `surfaceKey` (per source id) that lie in its plane (within `tolerance`, a length), face
 /// the same side and overlap it by more than `tolerance` across; each cut polygon becomes
-/// the convex pieces of what they leave (new corners appended to a copy of `points`).
+/// the convex pieces of what they leave. Where any is cut, `polygons.points` becomes a copy
+/// of `points` with the new corners after them (PointsOf), and the polygons index it.
 /// Faces of other surfaces are left as they are (which one is meant cannot be told).
 OverlapCuts CutOverlaps(
   const std::vector<Vec3>& points, const std::vector<int>& surfaceKey, double tolerance, PairedPolygons& polygons);

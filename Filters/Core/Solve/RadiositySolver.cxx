@@ -22,14 +22,17 @@ namespace
 /// refinement's exact per-element shots are kept.
 constexpr double kHierarchicalPairs = 5000;
 
-/// Auto's cost model, fitted on 17 solves (the paper scene, the Cornell box, the furnished
-/// room, the sphere rooms and the FZK-Haus; 1.7k to 512k elements, 115 to 53,695 patches;
-/// 2026-12-03, docs/benchmarks.md): the hierarchical method's links cost about 100 ns per
-/// element-patch pair, less where a patch holds many elements (a far patch takes them as a
-/// whole); the clustered method about 120 us per element, more above 100k elements, where
-/// its node sums no longer stay in the caches. The models were within 0.5-2x of each solve,
-/// and both methods cost about the same where they cross (about 1,200 patches of 16
-/// elements), so a wrong pick there costs little.
+/// Auto's cost model, fitted on 15 solves of the paper scene, the Cornell box, the furnished
+/// room and the sphere room (1.7k to 78k elements, 115 to 4,834 patches, each at the
+/// suggested sizes and 2x and 4x finer; 2026-12-03, docs/benchmarks.md) and checked on the
+/// sphere rooms of `bench polygons` up to 512k elements: the hierarchical method's links
+/// cost about 100 ns per element-patch pair, less where a patch holds many elements (a far
+/// patch takes them as a whole); the clustered method about 120 us per element, more above
+/// 100k elements, where its node sums no longer stay in the caches. The estimates are
+/// within 0.3-2x of those solves, and where the two cross (about 1,200 patches of 16
+/// elements) both cost about the same, so a wrong pick there costs little. On the FZK-Haus
+/// (113k elements, 45k patches of 2.5) both run slower than estimated (clustered 42.5 s
+/// against 14 s, 3x: many near links among small parts) but the pick is right by 10x.
 double HierarchicalSeconds(double elements, double patches)
 {
   const double perPatch = elements / std::max(1.0, patches);

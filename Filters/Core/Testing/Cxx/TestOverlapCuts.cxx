@@ -1,0 +1,146 @@
+// Coplanar faces of one surface that overlap: the later is cut to what the earlier leave.
+// Reference: the exact area of the faces' union, and their own corners where nothing overlaps.
+#include "Mesh/OverlapCuts.h"
+#include "Geometry/Polygon.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+
+using namespace radiosity;
+
+namespace
+{
+struct Faces
+{
+  std::vector<Vec3> points;
+  PairedPolygons polygons;
+  std::vector<int> keys;
+
+  void Add(const std::vector<Vec3>& loop, int key = 0)
+  {
+    for (const Vec3& p : loop)
+    {
+      polygons.connectivity.push_back(static_cast<int>(points.size()));
+      points.push_back(p);
+    }
+    polygons.offsets.push_back(static_cast<int>(polygons.connectivity.size()));
+    polygons.source.push_back(static_cast<int>(keys.size()));
+    keys.push_back(key);
+  }
+
+  /// An axis-aligned rectangle at height z, wound to face +z.
+  void Rectangle(double x0, double x1, double y0, double y1, int key = 0, double z = 0)
+  {
+    Add({ { x0, y0, z }, { x1, y0, z }, { x1, y1, z }, { x0, y1, z } }, key);
+  }
+
+  OverlapCuts Cut() { return CutOverlaps(points, keys, 1e-9, polygons); }
+
+  double Area() const
+  {
+    const std::vector<Vec3>& at = PointsOf(polygons, points);
+    double area = 0;
+    for (size_t i = 0; i + 1 < polygons.offsets.size(); ++i)
+    {
+      const std::vector<Vec3> loop = GatherLoop(at, polygons.offsets, polygons.connectivity, static_cast<int>(i));
+      area += PolygonArea(loop.data(), static_cast<int>(loop.size()));
+    }
+    return area;
+  }
+
+  /// The sum of the faces' normals times their areas: all face +z when equal to the area.
+  double FacingUp() const
+  {
+    const std::vector<Vec3>& at = PointsOf(polygons, points);
+    double up = 0;
+    for (size_t i = 0; i + 1 < polygons.offsets.size(); ++i)
+    {
+      const std::vector<Vec3> loop = GatherLoop(at, polygons.offsets, polygons.connectivity, static_cast<int>(i));
+      up += 0.5 * NewellVector(loop.data(), static_cast<int>(loop.size())).z;
+    }
+    return up;
+  }
+};
+} // namespace
+
+TEST(OverlapCuts, TheLaterFaceKeepsWhatTheEarlierLeaves)
+{
+  Faces f;
+  f.Rectangle(0, 2, 0, 1);
+  f.Rectangle(1, 3, 0, 1);
+  const OverlapCuts cuts = f.Cut();
+  EXPECT_EQ(cuts.Trimmed, std::vector<int>{ 1 });
+  EXPECT_TRUE(cuts.Covered.empty());
+  EXPECT_NEAR(f.Area(), 3.0, 1e-12); // the union, not 4
+  EXPECT_NEAR(f.FacingUp(), 3.0, 1e-12);
+}
+
+TEST(OverlapCuts, RepeatedCornersOfTheEarlierFaceCutTheSame)
+{
+  // A zero-length edge has no inside: taken as it is, it kept the whole overlap.
+  for (int repeat = 0; repeat < 4; ++repeat)
+  {
+    Faces f;
+    std::vector<Vec3> earlier{ { 0, 0, 0 }, { 2, 0, 0 }, { 2, 1, 0 }, { 0, 1, 0 } };
+    earlier.insert(earlier.begin() + repeat, earlier[repeat]);
+    f.Add(earlier);
+    f.Rectangle(1, 3, 0, 1);
+    f.Cut();
+    EXPECT_NEAR(f.Area(), 3.0, 1e-12) << "corner " << repeat << " repeated";
+  }
+}
+
+TEST(OverlapCuts, CoveredFacesAreLeftOutAndThreeLayersLeaveOne)
+{
+  Faces f;
+  f.Rectangle(0, 4, 0, 4);
+  f.Rectangle(1, 2, 1, 2); // wholly under the first
+  f.Rectangle(0, 4, 0, 4); // a copy the copies pass would drop, here cut away
+  f.Rectangle(3, 5, 3, 5); // a corner outside
+  const OverlapCuts cuts = f.Cut();
+  EXPECT_EQ(cuts.Covered, (std::vector<int>{ 1, 2 }));
+  EXPECT_EQ(cuts.Trimmed, std::vector<int>{ 3 });
+  EXPECT_NEAR(f.Area(), 16.0 + 4.0 - 1.0, 1e-12);
+}
+
+TEST(OverlapCuts, ANonConvexEarlierFaceCutsByItsOutline)
+{
+  Faces f;
+  f.Add({ { 0, 0, 0 }, { 3, 0, 0 }, { 3, 1, 0 }, { 1, 1, 0 }, { 1, 3, 0 }, { 0, 3, 0 } }); // an L of area 5
+  f.Rectangle(0.5, 2.5, 0.5, 2.5);                                                       // 4, of which 1.75 under the L
+  f.Cut();
+  EXPECT_NEAR(f.Area(), 5.0 + 4.0 - 1.75, 1e-12);
+}
+
+TEST(OverlapCuts, OtherSurfacesSidesAndPlanesAreLeftAlone)
+{
+  Faces f;
+  f.Rectangle(0, 2, 0, 1, 0);
+  f.Rectangle(1, 3, 0, 1, 1);          // another material: which is meant cannot be told
+  f.Rectangle(1, 3, 0, 1, 0, 1e-3);    // a millimetre above: a layer of its own
+  f.Add({ { 1, 0, 0 }, { 1, 1, 0 }, { 3, 1, 0 }, { 3, 0, 0 } }); // facing down: the other side
+  const std::vector<int> before = f.polygons.connectivity;
+  const OverlapCuts cuts = f.Cut();
+  EXPECT_TRUE(cuts.Trimmed.empty() && cuts.Covered.empty() && f.polygons.points.empty());
+  EXPECT_EQ(f.polygons.connectivity, before);
+}
+
+TEST(OverlapCuts, AFanOfNeighboursIsNotCutAndTakesLittleTime)
+{
+  // 4,000 triangles around one centre (a CAD disk): every box holds the centre, so the
+  // grid cannot part them; only their edges can.
+  Faces f;
+  const int n = 4000;
+  for (int k = 0; k < n; ++k)
+  {
+    const double a = 2 * M_PI * k / n, b = 2 * M_PI * (k + 1) / n;
+    f.Add({ { 0, 0, 0 }, { std::cos(a), std::sin(a), 0 }, { std::cos(b), std::sin(b), 0 } });
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const OverlapCuts cuts = f.Cut();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_TRUE(cuts.Trimmed.empty() && cuts.Covered.empty());
+  std::printf("fan of %d triangles: %.2f s\n", n, seconds); // printed, not asserted
+}
