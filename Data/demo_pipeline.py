@@ -35,8 +35,8 @@ relit = RadiosityRelight(Input=solver)
 RenameSource("Relit", relit)
 names = ["WarmWhite", "CoolWhite", "Amber", "Rose", "Teal", "Lime", "Violet", "DimWhite"]
 settings = []
-for name in names:
-    settings += [name, "1", "1", "1", "25", "1"]
+for name in names:  # each lamp white at its default strength; the picture is metered on it
+    settings += [name, "1", "1", "1", "nan", "1"]
 relit.LightSettings = settings
 # To animate, add keyframes (they take precedence over Light Settings for their lights):
 # relit.ScheduleEntries = ["0", "WarmWhite", "1", "0.8", "0.6", "5", "1",

@@ -111,11 +111,11 @@ std::vector<char> Emitters(vtkPolyData* data, bool cells)
 }
 } // namespace
 
-double vtkRadiosityMeteredExposure(vtkPolyData* data, vtkFloatArray* relit, bool cells)
+double vtkRadiosityMeteredExposure(vtkPolyData* data, vtkFloatArray* relit, bool cells, double unlit)
 {
   const std::vector<char> emits = Emitters(data, cells);
   return radiosity::MeteredExposure(relit->GetPointer(0), static_cast<size_t>(relit->GetNumberOfTuples()),
-    emits.size() == static_cast<size_t>(relit->GetNumberOfTuples()) ? emits : std::vector<char>());
+    emits.size() == static_cast<size_t>(relit->GetNumberOfTuples()) ? emits : std::vector<char>(), unlit);
 }
 
 vtkIdType vtkRadiosityFirstNonFinite(vtkFloatArray* values)

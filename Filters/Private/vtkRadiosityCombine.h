@@ -23,8 +23,9 @@ VTKRADIOSITYFILTERS_EXPORT bool vtkRadiosityCombineSolutions(vtkFieldData* data,
 
 /// The exposure a camera would meter for `relit`, the relit values of `data`'s cells
 /// (`cells` true) or points (radiosity::MeteredExposure): those of cells with a `LightId`
-/// of 0 or more emit and are left out.
-VTKRADIOSITYFILTERS_EXPORT double vtkRadiosityMeteredExposure(vtkPolyData* data, vtkFloatArray* relit, bool cells);
+/// of 0 or more emit and are left out. `unlit` where nothing is lit.
+VTKRADIOSITYFILTERS_EXPORT double vtkRadiosityMeteredExposure(
+  vtkPolyData* data, vtkFloatArray* relit, bool cells, double unlit = 1.0);
 
 /// The first tuple of a 3-component array holding a value that is not finite, or -1.
 VTKRADIOSITYFILTERS_EXPORT vtkIdType vtkRadiosityFirstNonFinite(vtkFloatArray* values);

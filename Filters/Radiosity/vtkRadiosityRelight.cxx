@@ -52,6 +52,9 @@ struct vtkRadiosityRelight::Internals
   std::vector<std::string> Names;                  ///< the lights the last execution found
   std::vector<radiosity::LightSetting> Effective; ///< and their settings in effect
   vtkRadiosityPieces::GatheredScene Gathered;      ///< the whole scene on an MPI server, kept
+  double Metered = 0;           ///< the exposure metered at the lights' defaults
+  vtkMTimeType MeteredFor = 0;  ///< for this input
+  bool MeteredCells = false;    ///< on its cells (else its points)
 };
 
 struct vtkRadiosityRelight::MovingState
@@ -725,6 +728,36 @@ std::string vtkRadiosityRelight::Combine(vtkPolyData* input, vtkPolyData* movers
     : error;
 }
 
+double vtkRadiosityRelight::MeterAtDefaults(
+  vtkPolyData* input, const std::vector<std::string>& names, bool cells, vtkFloatArray* current)
+{
+  // A camera meters the scene as its lights are by default (no setting, no schedule, no
+  // moving light), once per solution: a light turned up then brightens the picture, one
+  // turned off darkens it, and an animation keeps one exposure. Metered on the current
+  // picture instead, every change was undone by the meter (all lights at half: the same
+  // picture).
+  Internals& in = *this->Internal;
+  if (in.MeteredFor == input->GetMTime() && in.MeteredCells == cells && in.Metered > 0)
+  {
+    return in.Metered;
+  }
+  std::vector<std::string> arrays;
+  for (const std::string& name : names)
+  {
+    arrays.push_back("Radiosity_" + name);
+  }
+  const std::vector<double> defaults = vtkRadiosityDefaultLightColors(input, static_cast<int>(names.size()));
+  vtkDataSetAttributes* data = cells ? static_cast<vtkDataSetAttributes*>(input->GetCellData()) : input->GetPointData();
+  vtkNew<vtkFloatArray> sum;
+  std::string error;
+  const bool summed = !names.empty() &&
+    vtkRadiosityCombineSolutions(data, arrays, defaults, cells ? input->GetNumberOfCells() : input->GetNumberOfPoints(), sum, error);
+  in.Metered = summed ? vtkRadiosityMeteredExposure(input, sum, cells, 0.0) : 0.0;
+  in.MeteredFor = input->GetMTime();
+  in.MeteredCells = cells;
+  return in.Metered > 0 ? in.Metered : vtkRadiosityMeteredExposure(input, current, cells);
+}
+
 void vtkRadiosityRelight::AddSettingsInUse(vtkPolyData* output)
 {
   // What the writers and the browser viewer start from: the lights as this filter has them.
@@ -782,7 +815,7 @@ int vtkRadiosityRelight::Relight(
   // Metered on the cells where there are some: they know which ones are lamps.
   this->ExposureInUse = this->Exposure > 0
     ? this->Exposure
-    : vtkRadiosityMeteredExposure(output, hasCells ? cellResult.Get() : pointResult.Get(), hasCells);
+    : this->MeterAtDefaults(input, names, hasCells, hasCells ? cellResult.Get() : pointResult.Get());
   vtkNew<vtkDoubleArray> exposure;
   exposure->SetName("Exposure");
   exposure->InsertNextValue(this->ExposureInUse);

@@ -104,9 +104,11 @@ public:
   ///@}
 
   ///@{
-  /// Multiplier applied before clamping to display colors. 0 (the default): metered from
-  /// the relit result as a camera would (radiosity::MeteredExposure: the brightest 1 % of
-  /// the surfaces that do not emit at 80 % of white); the value used is in the output's
+  /// Multiplier applied before clamping to display colors. 0 (the default): metered as a
+  /// camera would (radiosity::MeteredExposure: the brightest 1 % of the surfaces that do
+  /// not emit at 80 % of white), once per input, on the scene with its lights at their
+  /// defaults: a light turned up brightens the picture, an animation keeps one exposure
+  /// (where the defaults light nothing, the result itself is metered); the value used is in the output's
   /// field array `Exposure` and GetExposureInUse. A negative or NaN one is an error at the
   /// update.
   vtkSetMacro(Exposure, double);
@@ -179,6 +181,9 @@ private:
   /// why they are invalid. Keeps the names and settings in effect for the Info properties.
   std::string ResolveWeights(
     vtkPolyData* input, const std::vector<std::string>& names, double time, std::vector<double>& weights);
+  /// The exposure metered on `input` with its lights at their defaults; `current` (the
+  /// result, of the cells where `cells`, else of the points) is metered where they light nothing.
+  double MeterAtDefaults(vtkPolyData* input, const std::vector<std::string>& names, bool cells, vtkFloatArray* current);
   /// The weighted sum of `arrays` into `points` and `cells` (either may be null), plus the
   /// moving lights; "" or the problem.
   std::string Combine(vtkPolyData* input, vtkPolyData* movers, vtkPolyData* dynamic,

@@ -36,7 +36,7 @@ struct vtkRadiosityRelightMapper::Internals
   double Time = 0;
   double Exposure = 0;
   double Metered = 1;                 ///< the metered exposure, for the weights and data below
-  std::vector<float> MeteredWeights;
+  std::vector<float> MeteredWeights;  ///< empty where metered at the lights' defaults
   vtkMTimeType MeteredFor = 0;
   std::vector<std::string> Names;       ///< of the data uploaded
   std::vector<radiosity::Vec3> Defaults; ///< their default colors
@@ -349,10 +349,6 @@ vtkPolyData* vtkRadiosityRelightMapper::CpuColored()
   const vtkIdType points = data->GetNumberOfPoints();
   vtkNew<vtkFloatArray> linear;
   this->SumOnCpu(weights, linear);
-  if (in.Exposure <= 0)
-  {
-    this->Meter(weights, linear); // from this sum, not another
-  }
   vtkNew<vtkUnsignedCharArray> colors;
   colors->SetName("RelitDisplayColors");
   colors->SetNumberOfComponents(3);
@@ -391,28 +387,36 @@ void vtkRadiosityRelightMapper::SumOnCpu(const std::vector<float>& weights, vtkF
 
 double vtkRadiosityRelightMapper::GetExposureInUse()
 {
+  // Metered as the relight filter meters: once per solution, with the lights at their
+  // defaults, so that a light turned up brightens the picture; on the current lights only
+  // where the defaults light nothing.
   Internals& in = *this->Internal;
   vtkPolyData* data = in.UploadedData;
   if (in.Exposure > 0 || !data)
   {
     return in.Exposure > 0 ? in.Exposure : in.Metered;
   }
-  const std::vector<float> weights = this->CurrentWeights();
-  if (in.MeteredFor != data->GetMTime() || in.MeteredWeights != weights)
+  if (in.MeteredFor == data->GetMTime() && in.MeteredWeights.empty())
   {
-    vtkNew<vtkFloatArray> linear;
-    this->SumOnCpu(weights, linear);
-    this->Meter(weights, linear);
+    return in.Metered;
+  }
+  std::vector<float> defaults;
+  for (const radiosity::Vec3& c : in.Defaults)
+  {
+    defaults.insert(defaults.end(), { static_cast<float>(c.x), static_cast<float>(c.y), static_cast<float>(c.z) });
+  }
+  vtkNew<vtkFloatArray> linear;
+  this->SumOnCpu(defaults, linear);
+  in.Metered = vtkRadiosityMeteredExposure(data, linear, false, 0.0);
+  in.MeteredFor = data->GetMTime();
+  in.MeteredWeights.clear();
+  if (!(in.Metered > 0))
+  {
+    in.MeteredWeights = this->CurrentWeights();
+    this->SumOnCpu(in.MeteredWeights, linear);
+    in.Metered = vtkRadiosityMeteredExposure(data, linear, false);
   }
   return in.Metered;
-}
-
-void vtkRadiosityRelightMapper::Meter(const std::vector<float>& weights, vtkFloatArray* linear)
-{
-  Internals& in = *this->Internal;
-  in.Metered = vtkRadiosityMeteredExposure(in.UploadedData, linear, false);
-  in.MeteredFor = in.UploadedData->GetMTime();
-  in.MeteredWeights = weights;
 }
 
 vtkUnsignedCharArray* vtkRadiosityRelightMapper::MapScalars(double alpha)

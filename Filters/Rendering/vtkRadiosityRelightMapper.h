@@ -55,8 +55,9 @@ public:
 
   ///@{
   /// Multiplier before the clamp to display colors, as the relight filter's: 0 (the
-  /// default) meters it from the relit picture at each change of the lights (a sum on the
-  /// CPU), GetExposureInUse says the value drawn with.
+  /// default) meters it once per input, with the lights at their defaults (a sum on the
+  /// CPU), so that changing a light changes the picture; GetExposureInUse says the value
+  /// drawn with.
   void SetExposure(double exposure);
   double GetExposure() const;
   double GetExposureInUse();
@@ -118,8 +119,6 @@ private:
   vtkPolyData* CpuColored();
   /// The weighted sum of the uploaded data's solutions, on the CPU.
   void SumOnCpu(const std::vector<float>& weights, vtkFloatArray* linear);
-  /// Meters the exposure of `linear`, that sum for `weights`, and keeps it for them.
-  void Meter(const std::vector<float>& weights, vtkFloatArray* linear);
 
   struct Internals;
   std::unique_ptr<Internals> Internal;

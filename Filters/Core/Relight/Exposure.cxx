@@ -6,7 +6,7 @@
 namespace radiosity
 {
 
-double MeteredExposure(const float* rgb, std::size_t count, const std::vector<char>& skip)
+double MeteredExposure(const float* rgb, std::size_t count, const std::vector<char>& skip, double unlit)
 {
   std::vector<double> luminance;
   luminance.reserve(count);
@@ -21,7 +21,7 @@ double MeteredExposure(const float* rgb, std::size_t count, const std::vector<ch
   }
   if (luminance.empty())
   {
-    return 1.0;
+    return unlit;
   }
   const auto at = luminance.begin() + static_cast<std::ptrdiff_t>(kMeteredPercentile * (luminance.size() - 1));
   std::nth_element(luminance.begin(), at, luminance.end());

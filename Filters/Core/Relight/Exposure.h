@@ -16,8 +16,8 @@ namespace radiosity
 constexpr double kMeteredPercentile = 0.99, kMeteredWhite = 0.8;
 
 /// The exposure that shows `rgb` (count linear triples) so; `skip` (empty, or one flag per
-/// item) marks the items to leave out. 1 where nothing is lit.
-double MeteredExposure(const float* rgb, std::size_t count, const std::vector<char>& skip);
+/// item) marks the items to leave out. `unlit` where nothing is lit.
+double MeteredExposure(const float* rgb, std::size_t count, const std::vector<char>& skip, double unlit = 1.0);
 
 } // namespace radiosity
 

@@ -7,7 +7,8 @@ import numpy as np
 
 import relight
 from testlib import check, finish
-from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+from vtkmodules.vtkCommonDataModel import vtkPolyData
 from relight import cell_areas, cell_array, light_names, point_array, read_polydata
 
 DATA = os.path.join(os.environ.get("RELIGHT_ROOT", "."), "Data")
@@ -197,13 +198,25 @@ check(abs(mesher_mm.GetPatchSize() - 1000 * mesher_m.GetPatchSize()) < 1e-9 and
       f"{metres.GetOutput().GetNumberOfCells()} elements both")
 
 # --- the exposure a camera would meter, by default ---------------------------------------
-# The paper scene at intensity 1 and at 20: the brightest 1 % of the surfaces that do not
-# emit come out at 80 % of white either way (exposure 1 left the first nearly black and
-# the second burnt out); a set exposure is used as it is.
-def display(intensity, exposure=None):
+# Lamps authored at 1 and at 20 times the strength (the solver's LightDefaultColors): the
+# brightest 1 % of the surfaces that do not emit come out at 80 % of white either way
+# (exposure 1 left the first nearly black and the second burnt out). The meter reads the
+# lights at their defaults, once: lights turned to half then give half the picture, not the
+# same one again; a set exposure is used as it is.
+def authored(scale):
+    data = vtkPolyData()
+    data.ShallowCopy(bank_solver.GetOutput())
+    defaults = vtk_to_numpy(bank_solver.GetOutput().GetFieldData().GetArray("LightDefaultColors")).astype(float)
+    scaled = numpy_to_vtk(np.ascontiguousarray(defaults * scale), deep=True)
+    scaled.SetName("LightDefaultColors")
+    data.GetFieldData().AddArray(scaled)
+    return data, defaults.reshape(-1, 3).max(axis=1) * scale
+
+
+def display(data, intensities=(), exposure=None):
     relit = relight.vtkRadiosityRelight()
-    relit.SetInputConnection(bank_solver.GetOutputPort())
-    for light in range(2):
+    relit.SetInputData(data)
+    for light, intensity in enumerate(intensities):
         relit.SetLightIntensity(light, intensity)
     if exposure is not None:
         relit.SetExposure(exposure)
@@ -215,14 +228,19 @@ def display(intensity, exposure=None):
     return relit, used, np.percentile(luminance, 99) * used, cell_array(out, "DisplayColors")
 
 
-for intensity in (1.0, 20.0):
-    relit, used, white, colors = display(intensity)
-    print(f"intensity {intensity:g}: metered exposure {used:.4g}, 99th percentile at {white:.3f}, "
+for scale in (1.0, 20.0):
+    data, peaks = authored(scale)
+    relit, used, white, colors = display(data)
+    print(f"lamps at {scale:g}x: metered exposure {used:.4g}, 99th percentile at {white:.3f}, "
           f"mean display value {colors.mean():.1f}")
     check(abs(white - 0.8) < 0.01 and relit.GetExposureInUse() == used,
-          f"intensity {intensity:g}: the brightest 1 % of the lit surfaces at 80 % of white")
-    check(40 < colors.mean() < 220, f"intensity {intensity:g}: the picture is neither black nor burnt out")
-_, used, _, _ = display(1.0, exposure=2.5)
+          f"lamps at {scale:g}x: the brightest 1 % of the lit surfaces at 80 % of white")
+    check(40 < colors.mean() < 220, f"lamps at {scale:g}x: the picture is neither black nor burnt out")
+    _, half_used, half_white, half_colors = display(data, 0.5 * peaks)
+    check(half_used == used and abs(half_white - 0.4) < 0.01 and half_colors.mean() < colors.mean() - 10,
+          f"lamps at {scale:g}x turned to half: the same exposure ({half_used:.4g}), the brightest 1 % at "
+          f"{half_white:.3f} of white, a darker picture ({half_colors.mean():.1f} against {colors.mean():.1f})")
+_, used, _, _ = display(authored(1.0)[0], exposure=2.5)
 check(used == 2.5, "a set exposure is used as it is")
 
 finish("TestPipeline")

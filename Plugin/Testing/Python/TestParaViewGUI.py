@@ -88,7 +88,7 @@ if result.check(len(boxes) == 8 and len(apply_buttons) == 1, "found %d On boxes 
 settings = list(relit.LightSettings)
 # Turn the warm light off and make the amber one strong and red.
 settings[5] = "0"
-settings[12:18] = ["Amber", "1", "0.1", "0.05", "80", "1"]
+settings[12:18] = ["Amber", "1", "0.1", "0.05", "6", "1"]
 if not os.environ.get("RELIGHT_GUI_UNCHANGED"):  # set only to check the test can fail
     relit.LightSettings = settings
     relit.UpdatePipeline()

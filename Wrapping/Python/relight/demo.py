@@ -22,7 +22,7 @@ from . import (
 
 # Inside the 4 x 2.5 x 4 m room, near the z = 0 wall, looking across it.
 CAMERA = ((2.0, 1.5, 0.05), (2.0, 0.9, 4.0), (0.0, 1.0, 0.0), 80.0)
-INTENSITY = 25.0  # the lamps are 0.3 m squares: unit exitance lights the room dimly
+INTENSITY = 1.0  # the lamps' default (unit exitance); the pictures are metered on it
 
 
 def light_sequence(names):

@@ -20,7 +20,6 @@ int TestRelightMapper(int argc, char* argv[])
   vtkNew<vtkRadiosityRelightMapper> mapper;
   mapper->SetInputConnection(solver->GetOutputPort());
   mapper->GetLights()->SetLightColor(0, 1.0, 0.85, 0.6);
-  mapper->GetLights()->SetLightIntensity(0, 12.0);
   vtkSmartPointer<vtkRenderWindow> window = CornellView(mapper);
   const int result = vtkRegressionTestImage(window);
   if (mapper->GetUploadCount() != 1 || *mapper->GetLastProblem())

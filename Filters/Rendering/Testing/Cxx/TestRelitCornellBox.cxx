@@ -12,7 +12,6 @@ int TestRelitCornellBox(int argc, char* argv[])
   vtkNew<vtkRadiosityRelight> relight;
   relight->SetInputConnection(solver->GetOutputPort());
   relight->SetLightColor(0, 1.0, 0.85, 0.6);
-  relight->SetLightIntensity(0, 12.0);
   relight->Update();
   if (relight->GetOutput()->GetNumberOfCells() == 0)
   {
