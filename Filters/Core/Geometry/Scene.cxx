@@ -154,7 +154,8 @@ std::string ValidateScene(const SceneMesh& mesh, int& numberOfLights)
   }
   if (maxLight < 0)
   {
-    return "no cell has a LightId >= 0: the scene has no lights (k = 0)";
+    return "no cell has a LightId >= 0: the scene has no lights (k = 0); add lamps (Mark Lights in ParaView, "
+           "relight.mark_lights with relight.area_light in Python)";
   }
   if (!(problem = LightGap(mesh, maxLight)).empty())
   {

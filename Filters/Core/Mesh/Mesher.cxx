@@ -462,6 +462,12 @@ PairedPolygons Paired(const std::vector<Vec3>& points, const std::vector<int>& o
   return SplitWarped(PointsOf(merged, points), merged, noise);
 }
 
+/// "1 cell is" or "3 cells are", for a warning.
+std::string Counted(size_t count, const char* one, const char* many)
+{
+  return std::to_string(count) + " " + (count == 1 ? one : many);
+}
+
 /// Up to five cell ids, for a warning.
 std::string CellList(const std::vector<int>& cells)
 {
@@ -479,12 +485,12 @@ void WarnAboutOverlaps(const OverlapCuts& overlaps, const MesherOptions& options
 {
   if (options.Warning && !overlaps.Trimmed.empty())
   {
-    options.Warning(std::to_string(overlaps.Trimmed.size()) + " cells overlap earlier cells of their surface in one plane (cells " +
+    options.Warning(Counted(overlaps.Trimmed.size(), "cell overlaps", "cells overlap") + " earlier cells of their surface in one plane (cells " +
       CellList(overlaps.Trimmed) + "): meshed only where nothing else lies, as each layer would receive the full light");
   }
   if (options.Warning && !overlaps.Covered.empty())
   {
-    options.Warning(std::to_string(overlaps.Covered.size()) + " cells lie wholly under earlier cells of their surface in one plane (cells " +
+    options.Warning(Counted(overlaps.Covered.size(), "cell lies", "cells lie") + " wholly under earlier cells of their surface in one plane (cells " +
       CellList(overlaps.Covered) + "): left out, as each layer would receive the full light");
   }
 }
@@ -495,13 +501,13 @@ void WarnAboutCopies(const CoincidentCopies& copies, const MesherOptions& option
   const auto list = CellList;
   if (options.Warning && !copies.Dropped.empty())
   {
-    options.Warning(std::to_string(copies.Dropped.size()) + " cells repeat another cell's corners on the same side (cells " +
+    options.Warning(Counted(copies.Dropped.size(), "cell repeats", "cells repeat") + " another cell's corners on the same side (cells " +
       list(copies.Dropped) + "): left out, as each copy would receive the full light");
   }
   if (options.Warning && !copies.Differing.empty())
   {
     const std::pair<int, int>& p = copies.Differing.front();
-    options.Warning(std::to_string(copies.Differing.size()) + " pairs of cells coincide with different materials or lights (cells " +
+    options.Warning(Counted(copies.Differing.size(), "pair of cells coincides", "pairs of cells coincide") + " with different materials or lights (cells " +
       std::to_string(p.first) + " and " + std::to_string(p.second) +
       " first): both kept, and each receives the full light; remove one of each pair");
   }

@@ -1,6 +1,8 @@
 """Scene files in: ``import_scene`` reads OBJ+MTL, glTF/GLB, PLY (and IFC, FBX, DAE,
 3DS, ... through Debian's ``assimp``) into a scene ready for the mesher."""
 
+import warnings
+
 from .scene import ErrorCatcher
 from .vtkRadiosityFilters import vtkRadiositySceneReader
 
@@ -39,6 +41,12 @@ def import_scene(path, unit="m", lights_per_object=False, require_lights=True):
         raise OSError(catcher.first_error())
     scene = reader.GetOutput()
     if require_lights and not scene.GetFieldData().GetAbstractArray("LightNames").GetNumberOfValues():
-        raise ValueError(f"{path}: no emissive material, so no lights; mark lights "
-                         "(relight.vtkRadiosityLightMarker) or import with require_lights=False")
+        raise ValueError(f"{path}: no emissive material, so no lights; import with require_lights=False, "
+                         "then add lamps with relight.mark_lights(scene, relight.area_light(...)) or mark "
+                         "materials or cells as lights (relight.mark_lights)")
+    # What the reader noticed (a PLY without colors, an unknown material) is said in Python
+    # too, not only kept in the field array Warnings.
+    noticed = scene.GetFieldData().GetAbstractArray("Warnings")
+    for i in range(noticed.GetNumberOfValues() if noticed is not None else 0):
+        warnings.warn(f"{path}: {noticed.GetValue(i)}", RuntimeWarning, stacklevel=2)
     return scene
