@@ -1,6 +1,7 @@
 #include "vtkRadiosityCombine.h"
 #include "vtkRadiosityAdapter.h"
 
+#include "Geometry/Polygon.h"
 #include "Relight/Exposure.h"
 #include "Relight/Relight.h"
 
@@ -11,6 +12,7 @@
 #include "vtkFieldData.h"
 #include "vtkPolyData.h"
 #include "vtkFloatArray.h"
+#include "vtkPoints.h"
 
 #include <cmath>
 
@@ -75,6 +77,46 @@ bool vtkRadiosityCombineSolutions(vtkFieldData* data, const std::vector<std::str
 
 namespace
 {
+/// Each polygon's area (`cells`), or each point's share of its polygons' (a third of each
+/// triangle's, a quarter of each quad's); other cells count nothing.
+std::vector<double> Areas(vtkPolyData* data, bool cells)
+{
+  std::vector<double> area(cells ? data->GetNumberOfCells() : data->GetNumberOfPoints(), 0.0);
+  vtkPoints* points = data->GetPoints();
+  if (!points)
+  {
+    return {};
+  }
+  const vtkIdType first = data->GetNumberOfVerts() + data->GetNumberOfLines();
+  auto polygons = vtk::TakeSmartPointer(data->GetPolys()->NewIterator());
+  vtkIdType c = first;
+  std::vector<radiosity::Vec3> loop;
+  for (polygons->GoToFirstCell(); !polygons->IsDoneWithTraversal(); polygons->GoToNextCell(), ++c)
+  {
+    vtkIdType count;
+    const vtkIdType* ids;
+    polygons->GetCurrentCell(count, ids);
+    loop.clear();
+    for (vtkIdType k = 0; k < count; ++k)
+    {
+      double p[3];
+      points->GetPoint(ids[k], p);
+      loop.push_back({ p[0], p[1], p[2] });
+    }
+    const double a = count >= 3 ? radiosity::PolygonArea(loop.data(), static_cast<int>(count)) : 0.0;
+    if (cells)
+    {
+      area[c] = a;
+      continue;
+    }
+    for (vtkIdType k = 0; k < count; ++k)
+    {
+      area[ids[k]] += a / static_cast<double>(count);
+    }
+  }
+  return area;
+}
+
 /// Per cell (or per point, for the points of such cells) whether it emits (LightId >= 0).
 std::vector<char> Emitters(vtkPolyData* data, bool cells)
 {
@@ -114,8 +156,9 @@ std::vector<char> Emitters(vtkPolyData* data, bool cells)
 double vtkRadiosityMeteredExposure(vtkPolyData* data, vtkFloatArray* relit, bool cells, double unlit)
 {
   const std::vector<char> emits = Emitters(data, cells);
-  return radiosity::MeteredExposure(relit->GetPointer(0), static_cast<size_t>(relit->GetNumberOfTuples()),
-    emits.size() == static_cast<size_t>(relit->GetNumberOfTuples()) ? emits : std::vector<char>(), unlit);
+  const size_t n = static_cast<size_t>(relit->GetNumberOfTuples());
+  return radiosity::MeteredExposure(relit->GetPointer(0), n, emits.size() == n ? emits : std::vector<char>(), unlit,
+    Areas(data, cells));
 }
 
 vtkIdType vtkRadiosityFirstNonFinite(vtkFloatArray* values)

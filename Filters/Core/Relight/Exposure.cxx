@@ -6,26 +6,38 @@
 namespace radiosity
 {
 
-double MeteredExposure(const float* rgb, std::size_t count, const std::vector<char>& skip, double unlit)
+double MeteredExposure(
+  const float* rgb, std::size_t count, const std::vector<char>& skip, double unlit, const std::vector<double>& area)
 {
-  std::vector<double> luminance;
-  luminance.reserve(count);
+  std::vector<std::pair<double, double>> lit; // luminance, weight
+  lit.reserve(count);
+  double total = 0;
   for (std::size_t i = 0; i < count; ++i)
   {
     const float* c = rgb + 3 * i;
     const double y = 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]; // Rec. 709
-    if ((skip.empty() || !skip[i]) && y > 0 && std::isfinite(y))
+    const double w = area.size() == count ? area[i] : 1.0;
+    if ((skip.empty() || !skip[i]) && y > 0 && std::isfinite(y) && w > 0 && std::isfinite(w))
     {
-      luminance.push_back(y);
+      lit.emplace_back(y, w);
+      total += w;
     }
   }
-  if (luminance.empty())
+  if (lit.empty())
   {
     return unlit;
   }
-  const auto at = luminance.begin() + static_cast<std::ptrdiff_t>(kMeteredPercentile * (luminance.size() - 1));
-  std::nth_element(luminance.begin(), at, luminance.end());
-  return kMeteredWhite / *at;
+  std::sort(lit.begin(), lit.end());
+  double below = 0;
+  for (const auto& [y, w] : lit)
+  {
+    below += w;
+    if (below >= kMeteredPercentile * total)
+    {
+      return kMeteredWhite / y;
+    }
+  }
+  return kMeteredWhite / lit.back().first;
 }
 
 } // namespace radiosity

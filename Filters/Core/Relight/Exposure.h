@@ -16,8 +16,12 @@ namespace radiosity
 constexpr double kMeteredPercentile = 0.99, kMeteredWhite = 0.8;
 
 /// The exposure that shows `rgb` (count linear triples) so; `skip` (empty, or one flag per
-/// item) marks the items to leave out. `unlit` where nothing is lit.
-double MeteredExposure(const float* rgb, std::size_t count, const std::vector<char>& skip, double unlit = 1.0);
+/// item) marks the items to leave out; `area` (empty, or one per item) weighs them, as a
+/// camera's pixels weigh surfaces: counted alike, many small bright parts (a BIM model's
+/// fittings near a lamp) set the meter and the large walls burnt out. `unlit` where
+/// nothing is lit.
+double MeteredExposure(const float* rgb, std::size_t count, const std::vector<char>& skip, double unlit = 1.0,
+  const std::vector<double>& area = {});
 
 } // namespace radiosity
 

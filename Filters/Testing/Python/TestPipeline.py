@@ -223,9 +223,13 @@ def display(data, intensities=(), exposure=None):
     relit.Update()
     out = relit.GetOutput()
     used = vtk_to_numpy(out.GetFieldData().GetArray("Exposure"))[0]
-    lit = cell_array(out, "Radiosity")[cell_array(out, "LightId") < 0]
-    luminance = lit @ np.array([0.2126, 0.7152, 0.0722])
-    return relit, used, np.percentile(luminance, 99) * used, cell_array(out, "DisplayColors")
+    surfaces = (cell_array(out, "LightId") < 0).ravel()
+    luminance = cell_array(out, "Radiosity")[surfaces] @ np.array([0.2126, 0.7152, 0.0722])
+    area = cell_areas(out)[surfaces]
+    order = np.argsort(luminance)  # the 99th percentile by area, as a camera's pixels weigh surfaces
+    below = np.cumsum(area[order])
+    white = luminance[order][np.searchsorted(below, 0.99 * below[-1])]
+    return relit, used, white * used, cell_array(out, "DisplayColors")
 
 
 for scale in (1.0, 20.0):

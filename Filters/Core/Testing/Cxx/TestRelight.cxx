@@ -1,3 +1,4 @@
+#include "Relight/Exposure.h"
 #include "Relight/Relight.h"
 
 #include <gtest/gtest.h>
@@ -22,6 +23,20 @@ TEST(Relight, IsTheWeightedSumAndIgnoresDisabledLights)
       EXPECT_NEAR(out[3 * j + c], expected, 1e-6 * expected);
     }
   }
+}
+
+TEST(Relight, TheMeterWeighsSurfacesByArea)
+{
+  // A 99.5 m^2 wall at luminance 1 and a hundred 0.01 m^2 fittings at 10: by count the
+  // fittings are the brightest 99 %, so the wall came out at 8 % of white; by area they are
+  // under 1 %, and the wall is metered to 80 % of white.
+  std::vector<float> rgb(3 * 101, 10.0f);
+  std::fill(rgb.begin(), rgb.begin() + 3, 1.0f);
+  std::vector<double> area(101, 0.01);
+  area[0] = 99.5;
+  EXPECT_NEAR(radiosity::MeteredExposure(rgb.data(), 101, {}, 1.0, area), 0.8, 1e-12);
+  EXPECT_NEAR(radiosity::MeteredExposure(rgb.data(), 101, {}), 0.08, 1e-12);
+  EXPECT_EQ(radiosity::MeteredExposure(rgb.data(), 0, {}, 0.0, {}), 0.0); // nothing lit: `unlit`
 }
 
 TEST(Relight, DisplayCurveIsMonotoneAndClamped)
