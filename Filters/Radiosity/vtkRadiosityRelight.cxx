@@ -55,6 +55,9 @@ struct vtkRadiosityRelight::Internals
   double Metered = 0;           ///< the exposure metered at the lights' defaults
   vtkMTimeType MeteredFor = 0;  ///< for this input
   bool MeteredCells = false;    ///< on its cells (else its points)
+  /// The light settings' warnings said last: an animation updates every frame, and the
+  /// same words each frame would bury everything else in the log.
+  std::vector<std::string> Said;
 };
 
 struct vtkRadiosityRelight::MovingState
@@ -695,10 +698,11 @@ std::string vtkRadiosityRelight::ResolveWeights(
   {
     return invalid;
   }
-  for (const std::string& warning : warnings)
+  for (size_t i = 0; warnings != this->Internal->Said && i < warnings.size(); ++i)
   {
-    vtkWarningMacro(<< warning);
+    vtkWarningMacro(<< warnings[i]);
   }
+  this->Internal->Said = warnings;
   this->Internal->Names = names;
   this->Internal->Effective = effective;
   weights = radiosity::LightWeights(effective, this->IndirectScale);

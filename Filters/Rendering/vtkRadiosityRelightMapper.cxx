@@ -48,6 +48,7 @@ struct vtkRadiosityRelightMapper::Internals
   int ShaderLights = -1; ///< the k the current shader was built for
   std::string Problem;
   std::string Reported; ///< the problem last reported, so each is said once
+  std::vector<std::string> ReportedSettings; ///< the light settings' warnings said last
   bool UseGPU = true;
   bool OnCPU = false;       ///< this data is relit on the CPU (asked for, or fallen back to)
   std::string WhyCPU;       ///< the reason, said once
@@ -328,6 +329,11 @@ std::vector<float> vtkRadiosityRelightMapper::CurrentWeights()
       in.Reported = invalid;
     }
   }
+  for (size_t i = 0; warnings != in.ReportedSettings && i < warnings.size(); ++i)
+  {
+    vtkWarningMacro(<< warnings[i]); // a light index or name the data does not have
+  }
+  in.ReportedSettings = warnings;
   std::vector<float> weights;
   for (double w : radiosity::LightWeights(effective, 1.0))
   {

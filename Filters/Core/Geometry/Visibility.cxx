@@ -1,4 +1,6 @@
 #include "Geometry/Visibility.h"
+
+#include "Geometry/FaceContact.h"
 #include "Geometry/Polygon.h"
 #include "Base/WorkerPool.h"
 
@@ -482,10 +484,22 @@ void MarkEnclosed(const Visibility& rays, const SceneMesh& mesh, SceneGeometry& 
     }
   });
   ranks.Sum(blocked);
+  std::vector<int> mostlyBlocked;
   for (int e = 0; e < n; ++e)
   {
     g.enclosed[e] = blocked[e] == 17;
     g.sheltered[e] = blocked[e] >= 9;
+    if (g.sheltered[e] && !g.enclosed[e])
+    {
+      mostlyBlocked.push_back(e);
+    }
+  }
+  // The floor under a box with a lamp inside: its probes start past the box's bottom and
+  // see the lamp. Face to face with another surface, with most of the view closed, an
+  // element is closed off; a thin wall drawn as two faces back to back sees the room.
+  for (int e : FaceToFace(mesh, g, mostlyBlocked, 2 * touching))
+  {
+    g.enclosed[e] = 1;
   }
   // Summed, not subtracted: a wholly enclosed patch gets exactly 0.
   g.patchOpenArea.assign(g.patchArea.size(), 0.0);

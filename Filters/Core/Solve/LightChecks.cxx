@@ -1,5 +1,9 @@
 #include "Solve/LightChecks.h"
 
+#include "Geometry/FaceContact.h"
+#include "Geometry/Polygon.h"
+
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -37,7 +41,8 @@ ProbeHits Probe(const SceneGeometry& g, const Visibility& rays, const std::vecto
       const bool found = rays.Intersect(g.centroid[e] + n * g.rayLift, d, hit);
       met += found ? 1 : 0;
       hits += found && hit.distance < near ? 1 : 0;
-      fronts += found && Dot(g.normal[hit.polygon], d) < 0 ? 1 : 0;
+      // An element closed off (the floor under a box the lamp is in) takes no light either.
+      fronts += found && Dot(g.normal[hit.polygon], d) < 0 && !g.enclosed[hit.polygon] ? 1 : 0;
     }
     any += met;
     front += fronts;
@@ -48,25 +53,51 @@ ProbeHits Probe(const SceneGeometry& g, const Visibility& rays, const std::vecto
                   static_cast<double>(front) / cast, area > 0 ? behind / area : 0.0 }
               : ProbeHits();
 }
-/// True when x lies inside convex element e (in its plane, within `tolerance` of it).
-bool InsideElement(const SceneMesh& mesh, const SceneGeometry& g, int e, const Vec3& x, double tolerance)
+/// The bounds of every element that is no light's: the scene the lights are meant for.
+Bounds SurfaceBounds(const SceneMesh& mesh)
 {
-  const Vec3& n = g.normal[e];
-  if (std::fabs(Dot(n, x - g.centroid[e])) > tolerance)
+  Bounds b;
+  for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
   {
-    return false;
-  }
-  const int* ids = mesh.Polygon(e);
-  for (int v = 0; v < mesh.PolygonSize(e); ++v)
-  {
-    const Vec3& a = mesh.points[ids[v]];
-    const Vec3& b = mesh.points[ids[(v + 1) % mesh.PolygonSize(e)]];
-    if (Dot(Cross(b - a, x - a), n) < 0)
+    for (int v = 0; mesh.lightId[e] < 0 && v < mesh.PolygonSize(e); ++v)
     {
-      return false;
+      b.Add(mesh.points[mesh.Polygon(e)[v]]);
     }
   }
-  return true;
+  return b;
+}
+
+/// Empty, or how the light sits apart from the scene's surfaces: far outside their bounds, or
+/// larger than all of them together (a lamp given in millimetres in a scene in metres).
+std::string Apart(const SceneMesh& mesh, const std::vector<int>& lamp, const Bounds& surfaces)
+{
+  Bounds b;
+  for (int e : lamp)
+  {
+    for (int v = 0; v < mesh.PolygonSize(e); ++v)
+    {
+      b.Add(mesh.points[mesh.Polygon(e)[v]]);
+    }
+  }
+  char text[320] = "";
+  const Vec3 c = b.Centre(), &lo = surfaces.Lo, &hi = surfaces.Hi;
+  Vec3 gap;
+  for (int a = 0; a < 3; ++a)
+  {
+    gap[a] = std::max({ 0.0, b.Lo[a] - hi[a], lo[a] - b.Hi[a] });
+  }
+  if (Norm(gap) > surfaces.Diagonal()) // just outside (above the ceiling) is said by the probes
+  {
+    std::snprintf(text, sizeof(text), "lies far outside the scene: its centre (%.4g, %.4g, %.4g) is past the "
+      "surfaces' bounds (%.4g..%.4g, %.4g..%.4g, %.4g..%.4g) by more than their size", c.x, c.y, c.z, lo.x, hi.x,
+      lo.y, hi.y, lo.z, hi.z);
+  }
+  else if (b.Diagonal() > surfaces.Diagonal())
+  {
+    std::snprintf(text, sizeof(text), "is %.4g across, larger than all the other surfaces together (%.4g)",
+      b.Diagonal(), surfaces.Diagonal());
+  }
+  return text;
 }
 
 /// An element of another surface whose face the light's element lies on (same plane,
@@ -96,8 +127,9 @@ std::vector<std::string> CheckLights(const SceneMesh& mesh, const SceneGeometry&
       elements[mesh.lightId[e]].push_back(e);
     }
   }
+  const Bounds surfaces = SurfaceBounds(mesh);
   std::vector<std::string> messages;
-  char text[512];
+  char text[768];
   for (size_t l = 0; l < names.size(); ++l)
   {
     double area = 0;
@@ -126,6 +158,17 @@ std::vector<std::string> CheckLights(const SceneMesh& mesh, const SceneGeometry&
     }
     const double near = 0.05 * std::sqrt(area);
     const ProbeHits probe = elements[l].empty() ? ProbeHits{ 0, 1 } : Probe(g, rays, elements[l], near);
+    const bool astray = probe.Any == 0 || probe.Front == 0 || probe.Near > 0.5;
+    const std::string apart = astray && surfaces.Lo.x <= surfaces.Hi.x ? Apart(mesh, elements[l], surfaces) : "";
+    if (!apart.empty()) // its winding is not the first suspect then
+    {
+      std::snprintf(text, sizeof(text),
+        "Light '%s' %s, and %s. Is it in another unit than the scene, or are its coordinates off?",
+        names[l].c_str(), apart.c_str(), probe.Any == 0 ? "none of its probe rays meets the scene"
+          : probe.Front == 0 ? "it lights nothing" : "most of its light lands on a surface right in front of it");
+      messages.push_back(text);
+      continue;
+    }
     if (probe.Any == 0)
     {
       std::snprintf(text, sizeof(text),
@@ -137,8 +180,8 @@ std::vector<std::string> CheckLights(const SceneMesh& mesh, const SceneGeometry&
     {
       std::snprintf(text, sizeof(text),
         "Light '%s' lights nothing: every probe ray from it meets the back of a surface, which takes no light. "
-        "Is it outside the room (above the ceiling, behind a wall, in another unit than the scene), or do the "
-        "surfaces around it face away from it?", names[l].c_str());
+        "Is it outside the room (above the ceiling, behind a wall, in another unit than the scene), inside a "
+        "closed object, or do the surfaces around it face away from it?", names[l].c_str());
       messages.push_back(text);
     }
     if (probe.Front > 0 && probe.Behind >= 0.01)

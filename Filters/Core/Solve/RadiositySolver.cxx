@@ -159,6 +159,34 @@ bool AddsAmbient(const SolverOptions& options, SolverStatistics& stats)
   return options.AmbientTerm || stats.AmbientAtCap;
 }
 
+namespace
+{
+/// Rays reach an element closed off by a face lying on it (the floor under a box, through
+/// the box's bottom drawn in the same plane), but no light does: it shows only its own
+/// emission, and what it absorbed counts as escaped, as light on a back face does.
+void KeepClosedOffDark(const SceneMesh& mesh, const SceneGeometry& g, const std::vector<Vec3>& emission, Solution& out)
+{
+  const size_t solutions = static_cast<size_t>(out.Solutions);
+  for (size_t e = 0; e < g.enclosed.size(); ++e)
+  {
+    for (size_t m = 0; g.enclosed[e] && m < solutions; ++m)
+    {
+      const size_t i = e * solutions + m;
+      for (int c = 0; c < 3; ++c)
+      {
+        const double rho = mesh.reflectance[e][c];
+        out.Statistics.EscapedPower += rho > 0 ? (out.Radiosity[i][c] - emission[i][c]) / rho * (1 - rho) * g.area[e] : 0.0;
+      }
+      out.Radiosity[i] = emission[i];
+      if (!out.Direct.empty())
+      {
+        out.Direct[i] = emission[i];
+      }
+    }
+  }
+}
+} // namespace
+
 RadiositySolver::RadiositySolver(const SceneMesh& mesh, int threads, const ProcessGroup& group)
   : Mesh(mesh)
 {
@@ -216,6 +244,7 @@ Solution RadiositySolver::Solve(
       v = Vec3{ std::max(v.x, 0.0), std::max(v.y, 0.0), std::max(v.z, 0.0) };
     }
   }
+  KeepClosedOffDark(Mesh, Geometry(), emission, out);
   return out;
 }
 

@@ -157,7 +157,8 @@ struct SolverStatistics
   double ShotPower = 0;
   double ReceivedPower = 0;
   /// Energy ledger (channel-summed): what the emitters put in, what left the scene
-  /// (shot but received by no element: openings, back faces), and what is still unshot.
+  /// (shot but received by no element: openings, back faces, closed-off elements), and
+  /// what is still unshot.
   /// Emitted = absorbed + escaped + unshot, where absorbed follows from the radiosity.
   double EmittedPower = 0;
   double EscapedPower = 0;

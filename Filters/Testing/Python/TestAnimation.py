@@ -67,4 +67,20 @@ from_file.SetScheduleFileName(f.name)
 run(from_file, "CSV schedule")
 os.unlink(f.name)
 
+# A schedule naming a light the data lacks is said once, not at every frame of an animation
+# (it was said at each update, burying the rest of the log); a new mistake is said again.
+misnamed = relight.vtkRadiosityRelight()
+misnamed.AddScheduleEntry(0.0, "Nobody", 1.0, 0.0, 0.0, 1.0, 1)
+misnamed.AddScheduleEntry(10.0, "Nobody", 1.0, 0.0, 0.0, 2.0, 1)
+misnamed.SetInputConnection(solver.GetOutputPort())
+catcher = relight.ErrorCatcher(misnamed)
+for t in (0.0, 2.5, 5.0, 7.5):
+    misnamed.UpdateTimeStep(t)
+said = [w for w in catcher.warnings if "Nobody" in w]
+check(len(said) == 1, f"an unknown light in the schedule: said {len(said)} times over 4 frames")
+misnamed.SetLightIntensity(7, 2.0)
+misnamed.UpdateTimeStep(0.0)
+said = [w for w in catcher.warnings if "index 7" in w]
+check(len(said) == 1, f"...and a light index past the lights, said once more when set ({len(said)})")
+
 finish("TestAnimation")

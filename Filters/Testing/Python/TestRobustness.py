@@ -335,10 +335,54 @@ above = [(x, y, H + 0.5) for x, y, _ in down]  # facing down, half a metre above
 found = warnings_for(box + [above], [-1] * 6 + [0])
 check("Light 'Light0' lights nothing" in found, f"a lamp above the ceiling (a black picture before, no word): {found}")
 check("lights nothing" not in clean, "...and the proper lamp lights something")
+in_mm = [(x + 799.2, y + 1498.5, z + 2397.6) for x, y, z in down]  # the same lamp, its place in millimetres
+found = warnings_for(box + [in_mm], [-1] * 6 + [0])
+check("Light 'Light0' lies far outside the scene" in found and "another unit" in found and "wound" not in found,
+      f"a lamp placed in millimetres in a room in metres: the unit named, not the winding (blamed before): {found}")
 wide = [(-1.0, -1.0, H - 0.1), (-1.0, D + 1.0, H - 0.1), (W + 1.0, D + 1.0, H - 0.1), (W + 1.0, -1.0, H - 0.1)]
 found = warnings_for(box + [wide], [-1] * 6 + [0])  # a lamp a metre wider than the room on each side
 check("Light 'Light0' lights nothing from" in found and "% of its area" in found,
       f"a lamp larger than the ceiling it hangs from, through the walls (unsaid before): {found}")
+# A lamp shut inside a closed box that rests on the floor: the floor under the box and the
+# box's bottom lie face to face, so rays pass between them. Before, 16 floor elements under
+# the box took the lamp's light (up to 0.016 of it) and nothing was said.
+c = [(1 + x, 1 + y, z) for z in (0.0, 1.0) for y in (0.0, 1.0) for x in (0.0, 1.0)]
+closed = [[c[i] for i in f] for f in ((0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (1, 3, 7, 5), (3, 2, 6, 7), (2, 0, 4, 6))]
+shut = relight.mark_lights(relight.make_scene(box + closed, [(0.7,) * 3] * 12, [-1] * 12),
+                           relight.area_light("Shut", centre=(1.5, 1.5, 0.9), normal=(0, 0, -1), size=0.3),
+                           relight.area_light("Room", centre=(3.0, 2.0, H - 0.1), normal=(0, 0, -1), size=0.4))
+with warnings.catch_warnings(record=True) as said:
+    warnings.simplefilter("always")
+    out = relight.solve(shut, 0.5, 0.25).GetOutput()
+said = " | ".join(str(w.message) for w in said)
+check("Light 'Shut' lights nothing" in said and "closed object" in said, f"a lamp shut in a box is said: {said}")
+centres, ids = relight.cell_centroids(out), relight.cell_array(out, "LightId")
+under = [i for i, x in enumerate(centres) if abs(x[2]) < 1e-9 and 1 < x[0] < 2 and 1 < x[1] < 2 and ids[i] < 0]
+for name in ("Shut", "Room"):
+    values = relight.cell_array(out, "Radiosity_" + name)
+    check(len(under) == 32 and max(values[i].max() for i in under) == 0,
+          f"light {name}: the floor under the box and the box's bottom stay dark ({len(under)} elements, "
+          f"up to {max(values[i].max() for i in under):.3g})")
+outside = [i for i in range(len(ids)) if ids[i] < 0 and i not in under]
+check(max(relight.cell_array(out, "Radiosity_Shut")[i].max() for i in outside) == 0,
+      "...and the shut lamp lights nothing else")
+check(max(relight.cell_array(out, "Radiosity_Room")[i].max() for i in outside) > 0.01, "...while the room's lamp does")
+# Two faces drawn back to back as a thin partition also lie face to face, but each sees the
+# room: both stay lit (the closing-off above must not take them).
+front = [(2.0, 0.5, 0.0), (2.0, 2.5, 0.0), (2.0, 2.5, 2.0), (2.0, 0.5, 2.0)]  # faces -x
+back = [front[0], front[3], front[2], front[1]]  # faces +x
+thin = relight.mark_lights(relight.make_scene(box + [front, back], [(0.7,) * 3] * 8, [-1] * 8),
+                           relight.area_light("West", centre=(1.0, 1.5, H - 0.1), normal=(0, 0, -1), size=0.4),
+                           relight.area_light("East", centre=(3.0, 1.5, H - 0.1), normal=(0, 0, -1), size=0.4))
+with warnings.catch_warnings():
+    warnings.simplefilter("ignore")
+    out = relight.solve(thin, 0.5, 0.25).GetOutput()
+centres, ids = relight.cell_centroids(out), relight.cell_array(out, "LightId")
+sheet = [i for i, x in enumerate(centres) if abs(x[0] - 2.0) < 1e-9 and ids[i] < 0]
+west, east = relight.cell_array(out, "Radiosity_West"), relight.cell_array(out, "Radiosity_East")
+check(len(sheet) == 128 and min(max(west[i].max(), east[i].max()) for i in sheet) > 0.002,
+      f"a partition drawn as two faces back to back: every element of both lit "
+      f"({len(sheet)} elements, least {min(max(west[i].max(), east[i].max()) for i in sheet):.3g})")
 # Placed with Mark Lights, the lamp is checked there (on the scene) and by the solver (on its
 # mesh): the solver's Warnings held both, once with the scene's element numbers.
 marked = relight.mark_lights(relight.make_scene(box, [(0.7,) * 3] * 6, [-1] * 6),

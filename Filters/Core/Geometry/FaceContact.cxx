@@ -1,0 +1,126 @@
+#include "Geometry/FaceContact.h"
+
+#include "Geometry/Polygon.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace radiosity
+{
+
+bool InsideElement(const SceneMesh& mesh, const SceneGeometry& g, int e, const Vec3& x, double tolerance)
+{
+  const Vec3& n = g.normal[e];
+  if (std::fabs(Dot(n, x - g.centroid[e])) > tolerance)
+  {
+    return false;
+  }
+  const int* ids = mesh.Polygon(e);
+  for (int v = 0; v < mesh.PolygonSize(e); ++v)
+  {
+    const Vec3& a = mesh.points[ids[v]];
+    const Vec3& b = mesh.points[ids[(v + 1) % mesh.PolygonSize(e)]];
+    if (Dot(Cross(b - a, x - a), n) < 0)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+namespace
+{
+Bounds ElementBounds(const SceneMesh& mesh, int e)
+{
+  Bounds b;
+  for (int v = 0; v < mesh.PolygonSize(e); ++v)
+  {
+    b.Add(mesh.points[mesh.Polygon(e)[v]]);
+  }
+  return b;
+}
+
+/// The candidates' centroids hashed on a grid of cells about as large as the largest of
+/// them, so that a query visits few cells per element.
+struct CentroidGrid
+{
+  double Step = 0;
+  Bounds All;
+  std::map<std::array<long long, 3>, std::vector<int>> Cells;
+
+  CentroidGrid(const SceneMesh& mesh, const SceneGeometry& g, const std::vector<int>& candidates)
+  {
+    for (int c : candidates)
+    {
+      Step = std::max(Step, ElementBounds(mesh, c).Diagonal());
+      All.Add(g.centroid[c]);
+    }
+    Step = std::max(Step, 1e-12 * std::max(1.0, g.sceneDiagonal));
+    for (int c : candidates)
+    {
+      Cells[QuantizedPoint(g.centroid[c], Step)].push_back(c);
+    }
+  }
+
+  /// Calls visit(c) for every candidate whose centroid may lie in `box`.
+  template <typename Visit>
+  void Near(const Bounds& box, const std::vector<int>& candidates, Visit visit) const
+  {
+    const auto lo = QuantizedPoint(box.Lo, Step), hi = QuantizedPoint(box.Hi, Step);
+    double cells = 1;
+    for (int a = 0; a < 3; ++a)
+    {
+      cells *= static_cast<double>(hi[a] - lo[a] + 1);
+    }
+    if (cells > static_cast<double>(candidates.size())) // a large element: cheaper to try them all
+    {
+      std::for_each(candidates.begin(), candidates.end(), visit);
+      return;
+    }
+    for (long long x = lo[0]; x <= hi[0]; ++x)
+      for (long long y = lo[1]; y <= hi[1]; ++y)
+        for (long long z = lo[2]; z <= hi[2]; ++z)
+        {
+          const auto found = Cells.find({ x, y, z });
+          if (found != Cells.end())
+          {
+            std::for_each(found->second.begin(), found->second.end(), visit);
+          }
+        }
+  }
+};
+} // namespace
+
+std::vector<int> FaceToFace(const SceneMesh& mesh, const SceneGeometry& g, const std::vector<int>& candidates,
+  double tolerance)
+{
+  if (candidates.empty())
+  {
+    return {};
+  }
+  const CentroidGrid grid(mesh, g, candidates);
+  std::vector<char> touching(g.normal.size(), 0);
+  for (int f = 0; f < mesh.NumberOfPolygons(); ++f)
+  {
+    Bounds box = ElementBounds(mesh, f);
+    if (!box.Overlaps(grid.All, tolerance))
+    {
+      continue;
+    }
+    box.Lo = box.Lo - Vec3{ tolerance, tolerance, tolerance };
+    box.Hi = box.Hi + Vec3{ tolerance, tolerance, tolerance };
+    grid.Near(box, candidates, [&](int c) {
+      if (!touching[c] && c != f && Dot(g.normal[c], g.normal[f]) < -1 + 1e-6 &&
+        InsideElement(mesh, g, f, g.centroid[c], tolerance))
+      {
+        touching[c] = 1;
+      }
+    });
+  }
+  std::vector<int> found;
+  std::copy_if(candidates.begin(), candidates.end(), std::back_inserter(found), [&](int c) { return touching[c]; });
+  return found;
+}
+
+} // namespace radiosity
