@@ -480,18 +480,20 @@ std::string CellList(const std::vector<int>& cells)
   return text.str();
 }
 
-/// Says which input polygons were cut or left out where earlier ones of their surface cover them.
+/// Says which input polygons were cut or left out where others in their plane cover them.
 void WarnAboutOverlaps(const OverlapCuts& overlaps, const MesherOptions& options)
 {
   if (options.Warning && !overlaps.Trimmed.empty())
   {
-    options.Warning(Counted(overlaps.Trimmed.size(), "cell overlaps", "cells overlap") + " earlier cells of their surface in one plane (cells " +
-      CellList(overlaps.Trimmed) + "): meshed only where nothing else lies, as each layer would receive the full light");
+    options.Warning(Counted(overlaps.Trimmed.size(), "cell overlaps", "cells overlap") + " others in one plane, facing the same side (cells " +
+      CellList(overlaps.Trimmed) + "): meshed only where the other does not lie (of one material the earlier is kept, "
+      "of two the smaller), as each layer would receive the full light");
   }
   if (options.Warning && !overlaps.Covered.empty())
   {
-    options.Warning(Counted(overlaps.Covered.size(), "cell lies", "cells lie") + " wholly under earlier cells of their surface in one plane (cells " +
-      CellList(overlaps.Covered) + "): left out, as each layer would receive the full light");
+    options.Warning(Counted(overlaps.Covered.size(), "cell lies", "cells lie") + " wholly under others in one plane, facing the same side (cells " +
+      CellList(overlaps.Covered) + "): left out (of one material the earlier is kept, of two the smaller), as each "
+      "layer would receive the full light");
   }
 }
 
@@ -509,7 +511,7 @@ void WarnAboutCopies(const CoincidentCopies& copies, const MesherOptions& option
     const std::pair<int, int>& p = copies.Differing.front();
     options.Warning(Counted(copies.Differing.size(), "pair of cells coincides", "pairs of cells coincide") + " with different materials or lights (cells " +
       std::to_string(p.first) + " and " + std::to_string(p.second) +
-      " first): both kept, and each receives the full light; remove one of each pair");
+      " first): the first of each pair is kept, as each would receive the full light");
   }
 }
 } // namespace
@@ -645,7 +647,8 @@ std::string CheckSizes(const std::vector<Vec3>& points, const std::vector<int>& 
 /// the output's sourcePolygon), with the surfaces standing on them.
 std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& offsets,
   const std::vector<int>& connectivity, const std::vector<int>& source, const std::vector<int>& surfaceKey,
-  const Contacts& contacts, const MesherOptions& options, MeshedPolygons& out)
+  const Contacts& contacts, const MesherOptions& options, MeshedPolygons& out,
+  const std::map<int, std::vector<Vec3>>& outlines = {})
 {
   out = MeshedPolygons();
   const std::string problem = CheckSizes(points, offsets, connectivity, options);
@@ -673,7 +676,9 @@ std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& of
     const Vec3 normal = Normalized(NewellVector(loop.data(), static_cast<int>(loop.size())));
     Piece piece;
     MakePiece(loop, options, noise, ContactCutter(contacts.Segments[i], normal, contacts.Touch), piece);
-    surfaces.Add(loop, normal, piece, i, source[i], surfaceKey[source[i]]);
+    const auto outline = outlines.find(source[i]);
+    surfaces.Add(loop, normal, piece, i, source[i], surfaceKey[source[i]],
+      outline == outlines.end() ? std::vector<Vec3>() : outline->second);
   }
   surfaces.Flatten(out);
   return std::string();
@@ -774,8 +779,13 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
   const Contacts contacts = FindSceneContacts(paired, options.WholeScene, options.PointQuantum);
   MesherOptions sized = options;
   sized.ElementSize = ChooseElementSize(paired, contacts, options);
-  const std::string error =
-    MeshList(corners, polygons.offsets, polygons.connectivity, polygons.source, surfaceKey, contacts, sized, out);
+  std::map<int, std::vector<Vec3>> outlines; // of the cells the overlaps cut
+  for (int cell : overlaps.Trimmed)
+  {
+    DistinctCorners(points, offsets, connectivity, cell, cell, 1e-9 * std::max(Span(points), 1e-300), outlines[cell]);
+  }
+  const std::string error = MeshList(
+    corners, polygons.offsets, polygons.connectivity, polygons.source, surfaceKey, contacts, sized, out, outlines);
   out.mergedTrianglePairs = polygons.merged;
   out.elementSize = sized.ElementSize;
   if (error.empty())

@@ -18,6 +18,7 @@ struct Face
 {
   int Index = 0;   ///< in the polygons
   int Surface = 0; ///< its surface key
+  double Area = 0; ///< of its whole polygon (a non-convex one is several faces)
   Loop Corners;
   Vec3 Normal;
   Bounds Box;
@@ -119,12 +120,13 @@ std::vector<Loop> Difference(const Loop& p, const Face& q, double tolerance)
   return pieces;
 }
 
-/// A face of polygon `index` with `corners` (convex), its surface, normal and box.
-Face MakeFace(int index, int surface, Loop corners, const Vec3& normal)
+/// A face of polygon `index` (of `area`) with `corners` (convex), its surface, normal and box.
+Face MakeFace(int index, int surface, double area, Loop corners, const Vec3& normal)
 {
   Face face;
   face.Index = index;
   face.Surface = surface;
+  face.Area = area;
   face.Corners = std::move(corners);
   face.Normal = normal;
   for (const Vec3& p : face.Corners)
@@ -155,7 +157,7 @@ std::vector<Face> ConvexFaces(
     const Vec3 normal = newell * (1.0 / length);
     if (IsConvex(loop.data(), static_cast<int>(loop.size()), tolerance))
     {
-      faces.push_back(MakeFace(static_cast<int>(i), surface, loop, normal));
+      faces.push_back(MakeFace(static_cast<int>(i), surface, 0.5 * length, loop, normal));
       continue;
     }
     for (const std::vector<int>& piece : ConvexPieces(loop, tolerance))
@@ -165,7 +167,7 @@ std::vector<Face> ConvexFaces(
       {
         corners.push_back(loop[k]);
       }
-      faces.push_back(MakeFace(static_cast<int>(i), surface, std::move(corners), normal));
+      faces.push_back(MakeFace(static_cast<int>(i), surface, 0.5 * length, std::move(corners), normal));
     }
   }
   return faces;
@@ -226,11 +228,11 @@ bool InPlaneOf(const Face& a, const Face& b, double tolerance)
 /// every face rather than binned (a wall among a scan's small triangles).
 constexpr double kMostCells = 8;
 
-/// True when faces `a` and `b` are of one surface, in one plane, facing one side, and
-/// overlap by more than `tolerance` as far as their boxes and edges tell.
+/// True when faces `a` and `b` are of different polygons, in one plane, facing one side,
+/// and overlap by more than `tolerance` as far as their boxes and edges tell.
 bool Candidates(const Face& a, const Face& b, double tolerance)
 {
-  return a.Index != b.Index && a.Surface == b.Surface && Dot(a.Normal, b.Normal) >= 0.999 &&
+  return a.Index != b.Index && Dot(a.Normal, b.Normal) >= 0.999 &&
     a.Box.Overlaps(b.Box, tolerance) && InPlaneOf(a, b, tolerance) && InPlaneOf(b, a, tolerance) &&
     MayOverlap(a, b, tolerance);
 }
@@ -293,17 +295,52 @@ std::vector<std::vector<int>> EarlierNeighbours(const std::vector<Face>& faces, 
   return earlier;
 }
 
-/// Cuts each face by the earlier ones that overlap it; returns each face's pieces (its own
-/// corners where nothing overlaps it, none where it is covered) and marks in `cut` (by
-/// polygon) those that changed.
-std::vector<std::vector<Loop>> CutFaces(const std::vector<Face>& faces, double tolerance, std::vector<char>& cut)
+/// True when face `a`, earlier, cuts the later `b` where they overlap. Of one surface the
+/// earlier is kept. Of two, the smaller (a poster on a wall, a rug on a floor, a lamp drawn
+/// on its ceiling, a slab's edge over a wall's top), or the earlier if they are as large
+/// (up to float noise, so that a turned scene decides the same).
+bool Cuts(const Face& a, const Face& b)
+{
+  return a.Surface == b.Surface || a.Area <= b.Area + 1e-5 * std::max(a.Area, b.Area);
+}
+
+/// For each face, the faces that cut it (see Cuts), in order.
+std::vector<std::vector<int>> CuttersOf(const std::vector<Face>& faces, double tolerance)
 {
   const std::vector<std::vector<int>> earlier = EarlierNeighbours(faces, tolerance);
+  std::vector<std::vector<int>> cutters(faces.size());
+  for (size_t i = 0; i < faces.size(); ++i)
+  {
+    for (int j : earlier[i])
+    {
+      if (Cuts(faces[j], faces[i]))
+      {
+        cutters[i].push_back(j);
+      }
+      else
+      {
+        cutters[j].push_back(static_cast<int>(i));
+      }
+    }
+  }
+  for (std::vector<int>& list : cutters)
+  {
+    std::sort(list.begin(), list.end());
+  }
+  return cutters;
+}
+
+/// Cuts each face by those that cut it; returns each face's pieces (its own corners where
+/// nothing overlaps it, none where it is covered) and marks in `cut` (by polygon) those
+/// that changed.
+std::vector<std::vector<Loop>> CutFaces(const std::vector<Face>& faces, double tolerance, std::vector<char>& cut)
+{
+  const std::vector<std::vector<int>> cutters = CuttersOf(faces, tolerance);
   std::vector<std::vector<Loop>> pieces(faces.size());
   for (size_t i = 0; i < faces.size(); ++i)
   {
     pieces[i] = { faces[i].Corners };
-    for (int j : earlier[i])
+    for (int j : cutters[i])
     {
       if (Width(Intersection(faces[i].Corners, faces[j])) <= tolerance)
       {

@@ -24,16 +24,16 @@ SurfaceAssembly::SurfaceAssembly(double quantum, double noise, const Vec3& centr
 {
 }
 
-void SurfaceAssembly::Add(
-  const std::vector<Vec3>& loop, const Vec3& normal, const Piece& piece, int polygon, int source, int key)
+void SurfaceAssembly::Add(const std::vector<Vec3>& loop, const Vec3& normal, const Piece& piece, int polygon,
+  int source, int key, const std::vector<Vec3>& outline)
 {
-  const int s = SurfaceOf(loop, normal, key);
+  const int s = SurfaceOf(loop, normal, key, outline);
   const std::pair<int, int> patches = PatchesOf(s, loop, piece);
   Stitch(s, piece, polygon, source, patches.first);
   Patches += patches.second;
 }
 
-int SurfaceAssembly::SurfaceOf(const std::vector<Vec3>& loop, const Vec3& normal, int key)
+int SurfaceAssembly::SurfaceOf(const std::vector<Vec3>& loop, const Vec3& normal, int key, const std::vector<Vec3>& outline)
 {
   const Vec3 centroid = PolygonCentroid(loop.data(), static_cast<int>(loop.size()));
   const double planeOffset = Dot(normal, centroid - Centre);
@@ -49,9 +49,10 @@ int SurfaceAssembly::SurfaceOf(const std::vector<Vec3>& loop, const Vec3& normal
     Welds.emplace_back();
     // The sharing grid hangs from the surface's first polygon, not from world axes, so a
     // moved or rotated scene groups its small polygons the same way.
-    const Vec3 edge = loop[1] - loop[0];
+    const std::vector<Vec3>& hang = outline.size() >= 3 ? outline : loop;
+    const Vec3 edge = hang[1] - hang[0];
     const Vec3 t = Normalized(edge - normal * Dot(edge, normal));
-    GridFrames.push_back({ loop[0], t, Cross(normal, t) });
+    GridFrames.push_back({ hang[0], t, Cross(normal, t) });
   }
   return s;
 }

@@ -34,8 +34,12 @@ public:
   SurfaceAssembly(double quantum, double noise, const Vec3& centre, const MesherOptions& options);
 
   /// Polygon `polygon` of the mesher's list, `loop` (distinct corners, unit `normal`), cut
-  /// into `piece`, from input cell `source` whose caller key is `key`.
-  void Add(const std::vector<Vec3>& loop, const Vec3& normal, const Piece& piece, int polygon, int source, int key);
+  /// into `piece`, from input cell `source` whose caller key is `key`. `outline`: the input
+  /// cell's own corners where overlaps cut it (else empty): the first polygon of a surface
+  /// hangs the surface's patch grid from its first edge, and a cut's corners are float
+  /// noise away from where a turned scene puts them.
+  void Add(const std::vector<Vec3>& loop, const Vec3& normal, const Piece& piece, int polygon, int source, int key,
+    const std::vector<Vec3>& outline = {});
 
   /// Every surface's points and elements into `out`, patch ids compacted to 0..patches-1.
   void Flatten(MeshedPolygons& out) const;
@@ -64,7 +68,7 @@ private:
   using SurfaceId = std::tuple<int, long long, long long, long long, long long>;
 
   /// The surface of the polygon's plane and key, made where there is none yet.
-  int SurfaceOf(const std::vector<Vec3>& loop, const Vec3& normal, int key);
+  int SurfaceOf(const std::vector<Vec3>& loop, const Vec3& normal, int key, const std::vector<Vec3>& outline);
   /// Of the surfaces keyed `id` or one step off in any quantised part, the nearest within
   /// tolerance of `plane`, else -1.
   int FindSurface(const SurfaceId& id, const Plane& plane) const;
