@@ -16,10 +16,17 @@ SETTINGS = os.path.join(ROOT, "docs", "settings.md")
 
 
 def plugin_xml():
-    """The plugin's XML files (one per proxy, Plugin/ServerManager) as one configuration."""
+    """The plugin's XML files (one per proxy, Plugin/ServerManager) as one configuration,
+    each proxy with the properties of its base (base_proxygroup, base_proxyname) as
+    ParaView gives them to it."""
     root = ElementTree.Element("ServerManagerConfiguration")
     for path in XML_FILES:
         root.extend(ElementTree.parse(path).getroot())
+    bases = {(group.get("name"), proxy.get("name")): proxy for group in root.iter("ProxyGroup") for proxy in group}
+    for proxy in root.iter():
+        base = bases.get((proxy.get("base_proxygroup"), proxy.get("base_proxyname")))
+        if base is not None:
+            proxy.extend(list(base))
     return root
 
 
