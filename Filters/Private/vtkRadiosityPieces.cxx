@@ -206,6 +206,13 @@ radiosity::ProcessGroup Group(vtkMultiProcessController* controller)
   return group;
 }
 
+double MaxOverRanks(vtkMultiProcessController* controller, double value)
+{
+  double largest = value;
+  controller->AllReduce(&value, &largest, 1, vtkCommunicator::MAX_OP);
+  return largest;
+}
+
 long long SumOverRanks(vtkMultiProcessController* controller, long long value, long long* before)
 {
   std::vector<long long> all(controller->GetNumberOfProcesses(), 0);

@@ -56,6 +56,9 @@ radiosity::ProcessGroup Group(vtkMultiProcessController* controller);
 /// The sum of `value` over the ranks, and the sum over the ranks before this one.
 long long SumOverRanks(vtkMultiProcessController* controller, long long value, long long* before = nullptr);
 
+/// The largest `value` of any rank.
+double MaxOverRanks(vtkMultiProcessController* controller, double value);
+
 }
 
 #endif

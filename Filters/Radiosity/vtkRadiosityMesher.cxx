@@ -162,9 +162,17 @@ namespace
 
 /// Meshes the polygons of `input` with `self`'s settings into `meshed`; an empty string
 /// or what is wrong.
+/// On MPI, what every rank needs of the whole scene: its polygons (surfaces of other pieces
+/// standing on this one cut it) and how far float input can be off (the largest of the
+/// ranks': a piece near the origin would take its float noise for finer than the scene's).
+struct WholeScene
+{
+  const radiosity::PolygonArrays* Polygons = nullptr;
+  double PointQuantum = 0;
+};
+
 std::string MeshPiece(vtkRadiosityMesher* self, vtkPolyData* input, double elementSize, double budget,
-  const radiosity::PolygonArrays* wholeScene, radiosity::MeshedPolygons& meshed,
-  vtkRadiosityAdapter::WarningList& warnings)
+  const WholeScene& whole, radiosity::MeshedPolygons& meshed, vtkRadiosityAdapter::WarningList& warnings)
 {
   radiosity::SceneMesh mesh;
   std::vector<radiosity::Vec3> emission;
@@ -185,8 +193,8 @@ std::string MeshPiece(vtkRadiosityMesher* self, vtkPolyData* input, double eleme
   options.MergeTriangles = self->GetMergeTriangles();
   options.SharePatches = self->GetSharePatches();
   options.ClusterAngle = self->GetClusterAngle();
-  options.WholeScene = wholeScene;
-  options.PointQuantum = mesh.pointQuantum;
+  options.WholeScene = whole.Polygons;
+  options.PointQuantum = std::max(mesh.pointQuantum, whole.PointQuantum);
   const vtkRadiosityAbortWatch abort(self);
   options.Progress = [self, abort](double f) {
     self->UpdateProgress(f);
@@ -198,7 +206,7 @@ std::string MeshPiece(vtkRadiosityMesher* self, vtkPolyData* input, double eleme
 /// On MPI, MaximumElements bounds the whole scene: every rank searches the same element
 /// size over the sum of the ranks' counts (a rank without usable polygons counts none).
 double ElementSizeEverywhere(vtkRadiosityMesher* self, vtkMultiProcessController* parallel, vtkPolyData* input,
-  const radiosity::PolygonArrays* wholeScene, vtkRadiosityAdapter::WarningList& warnings)
+  const WholeScene& whole, vtkRadiosityAdapter::WarningList& warnings)
 {
   radiosity::SceneMesh mesh;
   std::string error;
@@ -209,8 +217,8 @@ double ElementSizeEverywhere(vtkRadiosityMesher* self, vtkMultiProcessController
   // Counted as the rank will mesh its piece: triangle pairs merged, contacts cut.
   radiosity::MesherOptions options;
   options.MergeTriangles = self->GetMergeTriangles();
-  options.WholeScene = wholeScene;
-  options.PointQuantum = mesh.pointQuantum;
+  options.WholeScene = whole.Polygons;
+  options.PointQuantum = std::max(mesh.pointQuantum, whole.PointQuantum);
   const std::vector<int> keys = usable ? SurfaceKeys(mesh, emission) : std::vector<int>();
   const radiosity::ElementCounter counter(mesh.points, mesh.offsets, mesh.connectivity, keys, options);
   auto count = [&](double size) {
@@ -238,6 +246,20 @@ double ElementSizeEverywhere(vtkRadiosityMesher* self, vtkMultiProcessController
 
 namespace
 {
+/// How far this rank's float points can be off their places (0 for none or double ones).
+double OwnQuantum(vtkPolyData* input, bool upstream)
+{
+  if (upstream || !input || input->GetNumberOfPoints() == 0)
+  {
+    return 0.0;
+  }
+  double bounds[6];
+  input->GetBounds(bounds);
+  const double farthest = std::max({ std::fabs(bounds[0]), std::fabs(bounds[1]), std::fabs(bounds[2]),
+    std::fabs(bounds[3]), std::fabs(bounds[4]), std::fabs(bounds[5]) });
+  return vtkRadiosityAdapter::PointQuantum(input, farthest);
+}
+
 /// Every rank's polygons (no arrays: the other ranks need none), so that surfaces of other
 /// pieces that stand on this piece's cut it (ContactCuts.h).
 radiosity::SceneMesh GatherWholeScene(vtkMultiProcessController* parallel, vtkPolyData* input, bool upstream)
@@ -301,7 +323,7 @@ double SuggestedPatch(const radiosity::SceneMesh* whole, vtkPolyData* input)
 /// The elements as the output's points and polygons, each with its source polygon's cell
 /// data and PatchId (offset by `firstPatch`), and the mesher's field arrays.
 void WriteMeshed(vtkPolyData* output, vtkPolyData* input, const radiosity::MeshedPolygons& meshed,
-  long long firstPatch, double patchSize, const vtkRadiosityAdapter::WarningList& warnings)
+  long long firstPatch, double patchSize, double wholeQuantum, const vtkRadiosityAdapter::WarningList& warnings)
 {
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -347,13 +369,9 @@ void WriteMeshed(vtkPolyData* output, vtkPolyData* input, const radiosity::Meshe
   patch->SetName("MesherPatchSize");
   patch->InsertNextValue(patchSize);
   fields->AddArray(patch);
-  double bounds[6];
-  input->GetBounds(bounds);
-  const double farthest = std::max({ std::fabs(bounds[0]), std::fabs(bounds[1]), std::fabs(bounds[2]),
-    std::fabs(bounds[3]), std::fabs(bounds[4]), std::fabs(bounds[5]) });
   vtkNew<vtkDoubleArray> quantum;
   quantum->SetName(vtkRadiosityAdapter::PointQuantumName);
-  quantum->InsertNextValue(vtkRadiosityAdapter::PointQuantum(input, farthest));
+  quantum->InsertNextValue(std::max(OwnQuantum(input, false), wholeQuantum));
   fields->AddArray(quantum);
   warnings.AddTo(fields);
 }
@@ -376,7 +394,8 @@ int vtkRadiosityMesher::RequestData(
     vtkRadiosityAdapter::WarningList warnings;
     const radiosity::SceneMesh whole = parallel ? GatherWholeScene(parallel, input, upstream) : radiosity::SceneMesh();
     const radiosity::PolygonArrays wholeArrays{ whole.points, whole.offsets, whole.connectivity };
-    const radiosity::PolygonArrays* wholeScene = parallel ? &wholeArrays : nullptr;
+    const WholeScene wholeScene{ parallel ? &wholeArrays : nullptr,
+      parallel ? vtkRadiosityPieces::MaxOverRanks(parallel, OwnQuantum(input, upstream)) : 0.0 };
     // Sizes from the scene are taken from all of it, so every rank meshes alike.
     // The information pass suggested for this very input already (the usual case).
     vtkDataSet* given = vtkDataSet::GetData(inputVector[0]);
@@ -412,7 +431,7 @@ int vtkRadiosityMesher::RequestData(
       output->GetFieldData()->ShallowCopy(input->GetFieldData());
       return 1;
     }
-    WriteMeshed(output, input, meshed, firstPatch, this->PatchSizeInUse, warnings);
+    WriteMeshed(output, input, meshed, firstPatch, this->PatchSizeInUse, wholeScene.PointQuantum, warnings);
     return 1;
   });
 }

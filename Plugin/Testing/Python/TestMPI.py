@@ -28,12 +28,12 @@ PLUGIN_DIR = os.environ["RELIGHT_PLUGIN_DIR"]
 folder = tempfile.mkdtemp()
 
 
-def parallel_run(mode, ranks=2, extra=()):
+def parallel_run(mode, ranks=2, extra=(), scene=SCENE):
     out = os.path.join(folder, f"{mode}.vtp")
     env = dict(os.environ, PV_PLUGIN_PATH=PLUGIN_DIR)
     # A hang (a rank left waiting in a collective) fails by the timeout.
     run = subprocess.run([shutil.which("mpiexec"), "--allow-run-as-root", "--oversubscribe", "-np", str(ranks),
-                          "pvbatch", "--mpi", os.path.join(os.path.dirname(os.path.abspath(__file__)), "mpi_solve.py"), SCENE, out, mode, *extra],
+                          "pvbatch", "--mpi", os.path.join(os.path.dirname(os.path.abspath(__file__)), "mpi_solve.py"), scene, out, mode, *extra],
                          capture_output=True, text=True, env=env, timeout=300)
     errors = [line for line in (run.stdout + run.stderr).splitlines() if "ERR|" in line or "Traceback" in line]
     reader = vtkXMLPolyDataReader()
@@ -142,4 +142,49 @@ check(code == 0 and not errors and "Desk" in light_names(result), f"Mark Lights 
 result, errors, code = parallel_run("broken")
 check(result.GetNumberOfCells() == 0 and any("MaterialPattern needs" in e for e in errors) and any("another rank could not mesh" in e for e in errors),
       f"a Mark Lights error on rank 0 ends the run on both ranks: {[e[-90:] for e in errors][:3]}")
+# Float points of a scene in two parts, one room at the origin and one 50 km away (a site
+# model): the ranks mesh with the float noise of the whole scene, not each of its own piece
+# (the piece at the origin took its noise for 1e4 times finer; the solver then used the
+# first piece's).
+from vtkmodules.vtkFiltersCore import vtkAppendPolyData  # noqa: E402
+from vtkmodules.vtkFiltersGeneral import vtkTransformPolyDataFilter  # noqa: E402
+from vtkmodules.vtkCommonTransforms import vtkTransform  # noqa: E402
+room, pieces, declared = read_polydata(SCENE), [], []
+for n, shift in enumerate((0.0, 5e4)):  # one piece per rank, as a parallel file gives them
+    move = vtkTransform()
+    move.Translate(shift, 0.0, 0.0)
+    moved = vtkTransformPolyDataFilter()
+    moved.SetTransform(move)
+    moved.SetInputData(room)
+    moved.SetOutputPointsPrecision(0)  # float (SINGLE_PRECISION), as most files give
+    moved.Update()
+    pieces.append(os.path.join(folder, f"far_{n}.vtp"))
+    writer = vtkXMLPolyDataWriter()
+    writer.SetInputData(moved.GetOutput())
+    writer.SetFileName(pieces[-1])
+    writer.SetDataModeToAscii()
+    writer.Write()
+cells = moved.GetOutput().GetCellData()
+for i in range(cells.GetNumberOfArrays()):
+    array = cells.GetAbstractArray(i)
+    declared.append(f'<PDataArray type="{array.GetDataTypeAsString().replace("double", "Float64").replace("float", "Float32").replace("int", "Int32")}" '
+                    f'Name="{array.GetName()}" NumberOfComponents="{array.GetNumberOfComponents()}"/>')
+far = os.path.join(folder, "far.pvtp")
+with open(far, "w") as f:
+    f.write('<?xml version="1.0"?>\n<VTKFile type="PPolyData" version="0.1" byte_order="LittleEndian">\n'
+            '<PPolyData GhostLevel="0">\n<PPoints><PDataArray type="Float32" NumberOfComponents="3"/></PPoints>\n'
+            f'<PCellData>{"".join(declared)}</PCellData>\n'
+            + "".join(f'<Piece Source="{os.path.basename(p)}"/>\n' for p in pieces) + "</PPolyData>\n</VTKFile>\n")
+whole = vtkAppendPolyData()
+for path in pieces:
+    whole.AddInputData(read_polydata(path))
+whole.Update()
+result, errors, code = parallel_run("pieces", scene=far)
+alone = relight.solve(whole.GetOutput(), 1.0, 0.5).GetOutput()
+quanta = [d.GetFieldData().GetArray("PointQuantum").GetValue(0) if d.GetFieldData().GetArray("PointQuantum") else None
+          for d in (result, alone)]
+ranks = point_array(result, "ProcessId").astype(int).ravel() if result.GetNumberOfPoints() else np.array([])
+check(code == 0 and not errors and len(set(ranks.tolist())) == 2 and quanta[0] == quanta[1] and quanta[1] > 1e-3,
+      f"a float scene 50 km wide on 2 ranks: the float noise of the whole, {quanta[0]}, as one process ({quanta[1]}); "
+      f"errors {errors[:1]}")
 finish("TestMPI")
