@@ -27,8 +27,10 @@ std::string ReadObjTexturedFrom(const std::string& path, const std::string& text
 std::string ReadGltf(const std::string& path, radiosity::RawScene& raw, std::vector<std::string>& warnings);
 std::string ReadPly(const std::string& path, radiosity::RawScene& raw, std::vector<std::string>& warnings);
 /// Empty when every count, list and face index of the PLY file fits what the file holds;
-/// otherwise the error (vtkPLYReader would crash on such a file).
-std::string CheckPly(const std::string& path);
+/// otherwise the error (vtkPLYReader would crash on such a file). `realColors` (optional):
+/// set when a color property (red, green, blue) is a float or double, which vtkPLYReader
+/// takes as an 8-bit value (1.0 as 1 of 255).
+std::string CheckPly(const std::string& path, bool* realColors = nullptr);
 
 /// What VTK's VRML importer would crash on in this (comment-free) VRML97 text, naming its
 /// line ("line 4: USE Wall with no DEF Wall before it"); empty if nothing.

@@ -9,6 +9,7 @@
 #include "vtkImageReader2Factory.h"
 #include "vtkSmartPointer.h"
 
+#include <vtksys/Directory.hxx>
 #include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
@@ -42,22 +43,67 @@ std::string ReadLibraries(const std::string& path, const std::vector<std::string
   return std::string();
 }
 
-/// Where a texture named in a material library is: its path from `folder` (with Windows'
-/// backslashes as slashes: FBX and 3DS files carry them), else its file name in `folder`
-/// (models often name a path on their author's machine); empty when neither is a file.
-std::string FindTexture(const std::string& named, const std::string& folder)
+/// The file in `folder` named `name`, else named so up to case (a 3DS file asks for
+/// IMAGE1.JPG beside IMAGE1.jpg: names from DOS and Windows); empty when there is none.
+std::string AnyCase(const std::string& name, const std::string& folder)
 {
-  std::string path = named;
-  std::replace(path.begin(), path.end(), '\\', '/');
-  for (const std::string& file : { vtksys::SystemTools::CollapseFullPath(path, folder),
-         vtksys::SystemTools::CollapseFullPath(vtksys::SystemTools::GetFilenameName(path), folder) })
+  vtksys::Directory listing;
+  if (vtksys::SystemTools::FileExists(folder + "/" + name, true) || !listing.Load(folder))
   {
-    if (vtksys::SystemTools::FileExists(file, true))
+    return vtksys::SystemTools::FileExists(folder + "/" + name, true) ? folder + "/" + name : std::string();
+  }
+  const std::string wanted = vtksys::SystemTools::LowerCase(name);
+  for (unsigned long i = 0; i < listing.GetNumberOfFiles(); ++i)
+  {
+    const std::string file = folder + "/" + listing.GetFile(i);
+    if (vtksys::SystemTools::LowerCase(listing.GetFile(i)) == wanted && vtksys::SystemTools::FileExists(file, true))
     {
       return file;
     }
   }
   return std::string();
+}
+
+/// Where a texture named in a material library is, its name in any case: at its path from
+/// `folder` (Windows' backslashes as slashes: FBX and 3DS files carry them; a leading one
+/// taken as relative, as in "\\..\\maps\\x.jpg"), else in `folder` (models often name a path
+/// on their author's machine), else in its last folder beside `folder` (a model's FBX and
+/// OBJ folders sharing textures); empty when none is a file.
+std::string FindTexture(const std::string& named, const std::string& folder)
+{
+  std::string path = named;
+  std::replace(path.begin(), path.end(), '\\', '/');
+  const std::string name = vtksys::SystemTools::GetFilenameName(path);
+  const std::string last = vtksys::SystemTools::GetFilenameName(vtksys::SystemTools::GetFilenamePath(path));
+  const size_t start = path.find_first_not_of('/');
+  const std::string relative = start == std::string::npos ? path : path.substr(start);
+  for (const std::string& place : { vtksys::SystemTools::CollapseFullPath(path, folder),
+         vtksys::SystemTools::CollapseFullPath(relative, folder), folder + "/" + name,
+         vtksys::SystemTools::GetFilenamePath(folder) + "/" + last + "/" + name })
+  {
+    const std::string file = name.empty() ? std::string() : AnyCase(name, vtksys::SystemTools::GetFilenamePath(place));
+    if (!file.empty())
+    {
+      return file;
+    }
+  }
+  return std::string();
+}
+
+/// A white diffuse color (all channels 1) would reflect all light that reaches it, and
+/// none is meant: it is what a textured material or an exporter's placeholder leaves.
+bool White(const radiosity::Vec3& diffuse)
+{
+  return diffuse.x >= 1 && diffuse.y >= 1 && diffuse.z >= 1;
+}
+
+/// The texture missing or unreadable: the diffuse color alone, 0.8 where that is white.
+void WithoutTexture(radiosity::ImportMaterial& m, const std::string& why, std::vector<std::string>& warnings)
+{
+  const bool white = White(m.Diffuse);
+  m.Diffuse = white ? radiosity::Vec3{ 0.8, 0.8, 0.8 } : m.Diffuse;
+  warnings.push_back("the texture '" + m.DiffuseTexture + "' of material '" + m.Name + "' " + why +
+    (white ? "; its Kd is white (it would reflect all light): reflectance 0.8" : "; its Kd alone is used"));
 }
 
 /// The diffuse color times its texture's mean color, where the texture can be read.
@@ -66,16 +112,14 @@ void ApplyTexture(const std::string& folder, radiosity::ImportMaterial& m, std::
   const std::string file = FindTexture(m.DiffuseTexture, folder);
   if (file.empty()) // not handed to VTK's image readers, which log an error of their own
   {
-    warnings.push_back("the texture '" + m.DiffuseTexture + "' of material '" + m.Name + "' is not in '" + folder +
-      "'; its Kd alone is used");
+    WithoutTexture(m, "is not in '" + folder + "'", warnings);
     return;
   }
   vtkSmartPointer<vtkImageReader2> reader =
     vtk::TakeSmartPointer(vtkImageReader2Factory::CreateImageReader2(file.c_str()));
   if (!reader)
   {
-    warnings.push_back("the texture '" + m.DiffuseTexture + "' of material '" + m.Name +
-      "' could not be read; its Kd alone is used");
+    WithoutTexture(m, "could not be read", warnings);
     return;
   }
   reader->SetFileName(file.c_str());
@@ -123,6 +167,12 @@ std::string ReadObjTexturedFrom(const std::string& path, const std::string& text
     if (!used.DiffuseTexture.empty())
     {
       ApplyTexture(textureFolder, used, warnings);
+    }
+    else if (used.Name == "DefaultMaterial" && White(used.Diffuse)) // assimp's, for a file without materials
+    {
+      used.Diffuse = { 0.8, 0.8, 0.8 };
+      warnings.push_back("the file gives no material (assimp's default is white, which would reflect all light): "
+                         "reflectance 0.8");
     }
   }
   return raw.NumberOfPolygons() ? std::string() : "'" + path + "' has no faces";

@@ -79,7 +79,8 @@ std::vector<radiosity::Vec3> PolygonColors(vtkPolyData* data)
 
 std::string ReadPly(const std::string& path, radiosity::RawScene& raw, std::vector<std::string>& warnings)
 {
-  const std::string unsafe = CheckPly(path);
+  bool realColors = false;
+  const std::string unsafe = CheckPly(path, &realColors);
   if (!unsafe.empty())
   {
     return unsafe;
@@ -97,11 +98,14 @@ std::string ReadPly(const std::string& path, radiosity::RawScene& raw, std::vect
   radiosity::ImportMaterial material;
   material.Name = vtksys::SystemTools::GetFilenameWithoutLastExtension(path);
   material.Diffuse = { 1, 1, 1 };
-  const std::vector<radiosity::Vec3> colors = PolygonColors(data);
+  const std::vector<radiosity::Vec3> colors = realColors ? std::vector<radiosity::Vec3>() : PolygonColors(data);
   if (colors.empty())
   {
     material.Diffuse = { 0.8, 0.8, 0.8 };
-    warnings.push_back("the PLY has no colors: reflectance 0.8");
+    warnings.push_back(realColors ? "the PLY's colors are floating-point numbers, which VTK's PLY reader takes "
+                                    "as 8-bit values (1.0 as 1 of 255): reflectance 0.8; write them as 8-bit "
+                                    "colors (uchar red, green, blue) to use them"
+                                  : "the PLY has no colors: reflectance 0.8");
   }
   raw.materials.push_back(material);
   const int first = raw.NumberOfPolygons();

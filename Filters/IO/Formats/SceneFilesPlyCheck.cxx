@@ -397,12 +397,34 @@ std::string CheckLayout(const Header& header)
   return std::string();
 }
 
-std::string CheckPly(const std::string& path)
+namespace
+{
+bool RealColors(const Header& header)
+{
+  for (const Element& e : header.Elements)
+  {
+    for (const Property& p : e.Properties)
+    {
+      if ((p.Name == "red" || p.Name == "green" || p.Name == "blue") && !p.Integer)
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+} // namespace
+
+std::string CheckPly(const std::string& path, bool* realColors)
 {
   std::string data;
   ReadText(path, data);
   Header header;
   std::string error = ParseHeader(data, header);
+  if (realColors)
+  {
+    *realColors = error.empty() && RealColors(header);
+  }
   error = error.empty() ? CheckLayout(header) : error;
   long long vertices = 0;
   for (const Element& e : header.Elements)

@@ -346,6 +346,26 @@ said = fields(relight.import_scene(os.path.join(copied, "duck.dae"), require_lig
 check(any("duckCM.tga'" in w and "is not in" in w and copied in w for w in said),
       f"...and without it, the warning names the texture and where it was looked for: {said}")
 
+# Textures named otherwise than they lie (found by a new user's trial): a 3DS file names
+# IMAGE1.JPG beside IMAGE1.jpg, a Collada file "\\..\\LWO\\...\\EarthCylindric.jpg" for
+# ../LWO/.../earthCylindric.jpg, the FBX spider its author's D:\\...\\OBJ\\ folder, which sits
+# beside the FBX folder. Each was white before, said as not found.
+for model in ("3DS/test1.3ds", "Collada/earthCylindrical.DAE", "FBX/spider.fbx"):
+    said = fields(relight.import_scene("/usr/share/assimp/models/" + model, require_lights=False), "Warnings")
+    check(not any("texture" in w for w in said), f"{model}: its textures found ({said})")
+spiders = [np.asarray(cell_array(relight.import_scene("/usr/share/assimp/models/" + m, require_lights=False),
+                                 "Reflectance")).mean(axis=0) for m in ("FBX/spider.fbx", "OBJ/spider.obj")]
+check(np.allclose(spiders[0], spiders[1], atol=1e-6) and spiders[0].max() < 0.2,
+      f"the FBX spider as colored as the OBJ beside it: {np.round(spiders[0], 4)} and {np.round(spiders[1], 4)}")
+# Nothing known of a surface's color: white (a perfect reflector) came in silently; now 0.8,
+# said. An STL (assimp's white default material); a PLY whose colors are floats, which
+# VTK's reader takes as 8-bit values (its blue 1.0 came in as 0.0003).
+for model, words in (("STL/Spider_ascii.stl", "gives no material"), ("PLY/float-color.ply", "floating-point")):
+    scene = relight.import_scene("/usr/share/assimp/models/" + model, require_lights=False)
+    said, rho = fields(scene, "Warnings"), np.asarray(cell_array(scene, "Reflectance"))
+    check(np.allclose(rho, 0.8) and any(words in w and "reflectance 0.8" in w for w in said),
+          f"{model}: reflectance {np.unique(rho)}, said ({said})")
+
 # --- Mark Lights: by material pattern, cell id, selection; area lights ---------------------------
 def marked(scene, name="Light", pattern=None, ids=(), areas=(), selection=None, emission=(1, 1, 1)):
     marker = relight.vtkRadiosityLightMarker()

@@ -1,6 +1,7 @@
 """Scene files in: ``import_scene`` reads OBJ+MTL, glTF/GLB, PLY (and IFC, FBX, DAE,
 3DS, ... through Debian's ``assimp``) into a scene ready for the mesher."""
 
+import os
 import warnings
 
 from .scene import ErrorCatcher
@@ -45,8 +46,13 @@ def import_scene(path, unit="m", lights_per_object=False, require_lights=True):
                          "then add lamps with relight.mark_lights(scene, relight.area_light(...)) or mark "
                          "materials or cells as lights (relight.mark_lights)")
     # What the reader noticed (a PLY without colors, an unknown material) is said in Python
-    # too, not only kept in the field array Warnings.
+    # too, not only kept in the field array Warnings; that there are no lights only where
+    # the caller did not say it will add them.
     noticed = scene.GetFieldData().GetAbstractArray("Warnings")
+    named = os.path.basename(str(path)) + ": "
     for i in range(noticed.GetNumberOfValues() if noticed is not None else 0):
-        warnings.warn(f"{path}: {noticed.GetValue(i)}", RuntimeWarning, stacklevel=2)
+        text = noticed.GetValue(i)
+        if require_lights or "no emissive material" not in text:
+            text = text[len(named):] if text.startswith(named) else text  # the reader names the file too
+            warnings.warn(f"{path}: {text}", RuntimeWarning, stacklevel=2)
     return scene
