@@ -698,8 +698,12 @@ std::string vtkRadiosityRelight::ResolveWeights(
   {
     return invalid;
   }
-  for (size_t i = 0; warnings != this->Internal->Said && i < warnings.size(); ++i)
+  for (size_t i = 0; i < warnings.size(); ++i)
   {
+    if (std::find(this->Internal->Said.begin(), this->Internal->Said.end(), warnings[i]) != this->Internal->Said.end())
+    {
+      continue; // said at an earlier update
+    }
     vtkWarningMacro(<< warnings[i]);
   }
   this->Internal->Said = warnings;

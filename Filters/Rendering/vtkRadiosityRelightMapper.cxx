@@ -23,6 +23,7 @@
 #include "Relight/Relight.h"
 #include "vtk_glew.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -329,8 +330,12 @@ std::vector<float> vtkRadiosityRelightMapper::CurrentWeights()
       in.Reported = invalid;
     }
   }
-  for (size_t i = 0; warnings != in.ReportedSettings && i < warnings.size(); ++i)
+  for (size_t i = 0; i < warnings.size(); ++i)
   {
+    if (std::find(in.ReportedSettings.begin(), in.ReportedSettings.end(), warnings[i]) != in.ReportedSettings.end())
+    {
+      continue; // said at an earlier update
+    }
     vtkWarningMacro(<< warnings[i]); // a light index or name the data does not have
   }
   in.ReportedSettings = warnings;

@@ -21,7 +21,9 @@ bool InsideElement(const SceneMesh& mesh, const SceneGeometry& g, int e, const V
   {
     const Vec3& a = mesh.points[ids[v]];
     const Vec3& b = mesh.points[ids[(v + 1) % mesh.PolygonSize(e)]];
-    if (Dot(Cross(b - a, x - a), n) < 0)
+    // Within `tolerance` of an edge counts as inside: a centroid on the edge two elements
+    // share would otherwise fall, by rounding, in neither.
+    if (Dot(Cross(b - a, x - a), n) < -tolerance * Norm(b - a))
     {
       return false;
     }
@@ -41,8 +43,9 @@ Bounds ElementBounds(const SceneMesh& mesh, int e)
   return b;
 }
 
-/// The candidates' centroids hashed on a grid of cells about as large as the largest of
-/// them, so that a query visits few cells per element.
+/// The candidates' centroids hashed on a grid of cells as large as the median of them: a
+/// query visits few cells per element (the largest would put every candidate in one cell
+/// when one of them is a whole floor).
 struct CentroidGrid
 {
   double Step = 0;
@@ -51,12 +54,14 @@ struct CentroidGrid
 
   CentroidGrid(const SceneMesh& mesh, const SceneGeometry& g, const std::vector<int>& candidates)
   {
+    std::vector<double> sizes;
     for (int c : candidates)
     {
-      Step = std::max(Step, ElementBounds(mesh, c).Diagonal());
+      sizes.push_back(ElementBounds(mesh, c).Diagonal());
       All.Add(g.centroid[c]);
     }
-    Step = std::max(Step, 1e-12 * std::max(1.0, g.sceneDiagonal));
+    std::nth_element(sizes.begin(), sizes.begin() + sizes.size() / 2, sizes.end());
+    Step = std::max(sizes[sizes.size() / 2], 1e-12 * std::max(1.0, g.sceneDiagonal));
     for (int c : candidates)
     {
       Cells[QuantizedPoint(g.centroid[c], Step)].push_back(c);

@@ -9,7 +9,8 @@
 namespace radiosity
 {
 
-/// True when x lies inside convex element e (in its plane, within `tolerance` of it).
+/// True when x lies inside convex element e (in its plane and inside its edges, within
+/// `tolerance`). A concave element can only be missed, never found where x is not.
 bool InsideElement(const SceneMesh& mesh, const SceneGeometry& g, int e, const Vec3& x, double tolerance);
 
 /// Of `candidates`, the elements that lie face to face on another element: in its plane

@@ -327,9 +327,11 @@ bool Visibility::Decode(
 namespace
 {
 /// How many of 17 hemisphere probes from the element's centroid are blocked at once (a back
-/// face, or a surface touching it); counting stops once 9 are open, since then the
-/// element is neither enclosed (all 17) nor sheltered (most).
-int BlockedProbes(const Visibility& rays, const SceneMesh& mesh, const SceneGeometry& g, double touching, int e)
+/// face, or a surface touching it), and in `lit` how many end on a lamp's front; counting
+/// stops once the element can be neither sheltered (9 blocked) nor shut in with a lamp
+/// (every probe blocked or on a lamp).
+int BlockedProbes(const Visibility& rays, const SceneMesh& mesh, const SceneGeometry& g, double touching, int e,
+  int& lit)
 {
   // The frame follows the element's first edge, not the world axes, so a rotated scene
   // probes the same directions relative to its geometry and is marked the same.
@@ -338,16 +340,24 @@ int BlockedProbes(const Visibility& rays, const SceneMesh& mesh, const SceneGeom
   const Vec3 t = Normalized(edge - n * Dot(edge, n)), b = Cross(n, t);
   const Vec3 origin = g.centroid[e] + n * touching;
   int blocked = 0;
-  for (int r = 0; r < 17 && r - blocked < 9; ++r)
+  lit = 0;
+  for (int r = 0; r < 17 && (r - blocked < 9 || r == blocked + lit); ++r)
   {
     const double polar = r == 0 ? 0.0 : (r <= 8 ? 0.785398 : 1.396263);
     const double azimuth = 0.785398 * (r % 8);
     const Vec3 direction = n * std::cos(polar) + (t * std::cos(azimuth) + b * std::sin(azimuth)) * std::sin(polar);
     Visibility::Hit hit;
-    if (rays.Intersect(origin, direction, hit) &&
-      (Dot(g.normal[hit.polygon], direction) > 0 || hit.distance <= 2 * touching))
+    if (!rays.Intersect(origin, direction, hit))
+    {
+      continue;
+    }
+    if (Dot(g.normal[hit.polygon], direction) > 0 || hit.distance <= 2 * touching)
     {
       ++blocked;
+    }
+    else if (mesh.lightId[hit.polygon] >= 0)
+    {
+      ++lit;
     }
   }
   return blocked;
@@ -475,29 +485,33 @@ void MarkEnclosed(const Visibility& rays, const SceneMesh& mesh, SceneGeometry& 
   const WorkerPool pool(threads);
   Collective ranks(group);
   const int n = static_cast<int>(g.normal.size()), step = ranks.Ranks();
-  std::vector<double> blocked(n, 0.0); // counts, summed over the ranks that probed them
+  // Counts (blocked, then on a lamp), summed over the ranks that probed them.
+  std::vector<double> counts(2 * static_cast<size_t>(n), 0.0);
   pool.For((n - ranks.Rank() + step - 1) / step, 256, [&](int begin, int end) {
     for (int i = begin; i < end; ++i)
     {
       const int e = ranks.Rank() + i * step;
-      blocked[e] = BlockedProbes(rays, mesh, g, touching, e);
+      int lit = 0;
+      counts[2 * e] = BlockedProbes(rays, mesh, g, touching, e, lit);
+      counts[2 * e + 1] = lit;
     }
   });
-  ranks.Sum(blocked);
-  std::vector<int> mostlyBlocked;
+  ranks.Sum(counts);
+  std::vector<int> shutIn;
   for (int e = 0; e < n; ++e)
   {
-    g.enclosed[e] = blocked[e] == 17;
-    g.sheltered[e] = blocked[e] >= 9;
-    if (g.sheltered[e] && !g.enclosed[e])
+    g.enclosed[e] = counts[2 * e] == 17;
+    g.sheltered[e] = counts[2 * e] >= 9;
+    if (!g.enclosed[e] && (g.sheltered[e] || counts[2 * e] + counts[2 * e + 1] == 17))
     {
-      mostlyBlocked.push_back(e);
+      shutIn.push_back(e);
     }
   }
   // The floor under a box with a lamp inside: its probes start past the box's bottom and
-  // see the lamp. Face to face with another surface, with most of the view closed, an
-  // element is closed off; a thin wall drawn as two faces back to back sees the room.
-  for (int e : FaceToFace(mesh, g, mostlyBlocked, 2 * touching))
+  // see the lamp. Face to face with another surface, its view mostly closed or closed but
+  // for lamps, an element is closed off; a thin wall drawn as two faces back to back sees
+  // the room.
+  for (int e : FaceToFace(mesh, g, shutIn, 2 * touching))
   {
     g.enclosed[e] = 1;
   }

@@ -70,9 +70,12 @@ int SplitSeparatedPatches(const Visibility& rays, const SceneMesh& mesh, SceneGe
 
 /// Marks the elements that every one of 17 rays over their hemisphere (the normal, and 8
 /// each at 45 and 80 degrees from it) finds closed off: each ray hits a back face (it
-/// started inside an object) or a surface touching the element. Such an element can
-/// neither receive nor send light; it leaves its patch's open area. Elements where at least
-/// 9 of them are closed off are marked sheltered (SceneGeometry::sheltered).
+/// started inside an object) or a surface touching the element. Elements where at least
+/// 9 of them are closed off are marked sheltered (SceneGeometry::sheltered). An element
+/// lying face to face on another surface (FaceToFace) is closed off too where at least 9
+/// rays are, or all but those ending on a lamp: the rays start past the face on it (the
+/// floor under a box, with a lamp shut in the box). Closed-off elements neither send
+/// light nor show any (RadiositySolver::Solve); they leave their patch's open area.
 /// With `threads` (0: all) per process; a group's ranks probe every Ranks-th element each.
 void MarkEnclosed(const Visibility& rays, const SceneMesh& mesh, SceneGeometry& geometry, int threads = 0,
   const ProcessGroup& group = ProcessGroup());

@@ -18,7 +18,6 @@ struct Face
 {
   int Index = 0;   ///< in the polygons
   int Surface = 0; ///< its surface key
-  double Area = 0; ///< of its whole polygon (a non-convex one is several faces)
   Loop Corners;
   Vec3 Normal;
   Bounds Box;
@@ -120,13 +119,12 @@ std::vector<Loop> Difference(const Loop& p, const Face& q, double tolerance)
   return pieces;
 }
 
-/// A face of polygon `index` (of `area`) with `corners` (convex), its surface, normal and box.
-Face MakeFace(int index, int surface, double area, Loop corners, const Vec3& normal)
+/// A face of polygon `index` with `corners` (convex), its surface, normal and box.
+Face MakeFace(int index, int surface, Loop corners, const Vec3& normal)
 {
   Face face;
   face.Index = index;
   face.Surface = surface;
-  face.Area = area;
   face.Corners = std::move(corners);
   face.Normal = normal;
   for (const Vec3& p : face.Corners)
@@ -157,7 +155,7 @@ std::vector<Face> ConvexFaces(
     const Vec3 normal = newell * (1.0 / length);
     if (IsConvex(loop.data(), static_cast<int>(loop.size()), tolerance))
     {
-      faces.push_back(MakeFace(static_cast<int>(i), surface, 0.5 * length, loop, normal));
+      faces.push_back(MakeFace(static_cast<int>(i), surface, loop, normal));
       continue;
     }
     for (const std::vector<int>& piece : ConvexPieces(loop, tolerance))
@@ -167,7 +165,7 @@ std::vector<Face> ConvexFaces(
       {
         corners.push_back(loop[k]);
       }
-      faces.push_back(MakeFace(static_cast<int>(i), surface, 0.5 * length, std::move(corners), normal));
+      faces.push_back(MakeFace(static_cast<int>(i), surface, std::move(corners), normal));
     }
   }
   return faces;
@@ -295,56 +293,31 @@ std::vector<std::vector<int>> EarlierNeighbours(const std::vector<Face>& faces, 
   return earlier;
 }
 
-/// True when face `a`, earlier, cuts the later `b` where they overlap. Of one surface the
-/// earlier is kept. Of two, the smaller (a poster on a wall, a rug on a floor, a lamp drawn
-/// on its ceiling, a slab's edge over a wall's top), or the earlier if they are as large
-/// (up to float noise, so that a turned scene decides the same).
-bool Cuts(const Face& a, const Face& b)
-{
-  return a.Surface == b.Surface || a.Area <= b.Area + 1e-5 * std::max(a.Area, b.Area);
-}
-
-/// For each face, the faces that cut it (see Cuts), in order.
-std::vector<std::vector<int>> CuttersOf(const std::vector<Face>& faces, double tolerance)
+/// Cuts each face by the earlier ones of its surface that overlap it; returns each face's
+/// pieces (its own corners where nothing overlaps it, none where it is covered), marks in
+/// `cut` (by polygon) those that changed, and lists the overlapping pairs of different
+/// surfaces (by polygon) in `differing`. Those are not cut: a rule that let the smaller of
+/// two materials win made cycles with the earlier-wins rule of one material (a wall, a
+/// patch of it drawn again, a poster over both: a hole where none kept the overlap), and
+/// could cut a lamp drawn over its ceiling tile away.
+std::vector<std::vector<Loop>> CutFaces(const std::vector<Face>& faces, double tolerance, std::vector<char>& cut,
+  std::vector<std::pair<int, int>>& differing)
 {
   const std::vector<std::vector<int>> earlier = EarlierNeighbours(faces, tolerance);
-  std::vector<std::vector<int>> cutters(faces.size());
-  for (size_t i = 0; i < faces.size(); ++i)
-  {
-    for (int j : earlier[i])
-    {
-      if (Cuts(faces[j], faces[i]))
-      {
-        cutters[i].push_back(j);
-      }
-      else
-      {
-        cutters[j].push_back(static_cast<int>(i));
-      }
-    }
-  }
-  for (std::vector<int>& list : cutters)
-  {
-    std::sort(list.begin(), list.end());
-  }
-  return cutters;
-}
-
-/// Cuts each face by those that cut it; returns each face's pieces (its own corners where
-/// nothing overlaps it, none where it is covered) and marks in `cut` (by polygon) those
-/// that changed.
-std::vector<std::vector<Loop>> CutFaces(const std::vector<Face>& faces, double tolerance, std::vector<char>& cut)
-{
-  const std::vector<std::vector<int>> cutters = CuttersOf(faces, tolerance);
   std::vector<std::vector<Loop>> pieces(faces.size());
   for (size_t i = 0; i < faces.size(); ++i)
   {
     pieces[i] = { faces[i].Corners };
-    for (int j : cutters[i])
+    for (int j : earlier[i])
     {
       if (Width(Intersection(faces[i].Corners, faces[j])) <= tolerance)
       {
         continue; // neighbours along an edge
+      }
+      if (faces[j].Surface != faces[i].Surface)
+      {
+        differing.emplace_back(faces[j].Index, faces[i].Index);
+        continue;
       }
       // Every piece is split along j's edges, also those clear of it: deciding piece by
       // piece let float noise decide a sliver's fate, and the FZK-Haus turned 37 degrees
@@ -377,7 +350,14 @@ OverlapCuts CutOverlaps(
   {
     return found;
   }
-  std::vector<std::vector<Loop>> cutPieces = CutFaces(faces, tolerance, cut);
+  std::vector<std::pair<int, int>> differing;
+  std::vector<std::vector<Loop>> cutPieces = CutFaces(faces, tolerance, cut, differing);
+  std::sort(differing.begin(), differing.end());
+  differing.erase(std::unique(differing.begin(), differing.end()), differing.end()); // convex pieces of one polygon
+  for (const std::pair<int, int>& pair : differing)
+  {
+    found.Differing.emplace_back(polygons.source[pair.first], polygons.source[pair.second]);
+  }
   for (size_t f = 0; f < faces.size(); ++f)
   {
     for (Loop& piece : cutPieces[f])

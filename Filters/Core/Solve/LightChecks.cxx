@@ -71,6 +71,10 @@ Bounds SurfaceBounds(const SceneMesh& mesh)
 /// larger than all of them together (a lamp given in millimetres in a scene in metres).
 std::string Apart(const SceneMesh& mesh, const std::vector<int>& lamp, const Bounds& surfaces)
 {
+  if (lamp.empty() || surfaces.Lo.x > surfaces.Hi.x)
+  {
+    return std::string();
+  }
   Bounds b;
   for (int e : lamp)
   {
@@ -116,17 +120,76 @@ int CoplanarCover(const SceneMesh& mesh, const SceneGeometry& g, int lamp, doubl
 }
 } // namespace
 
-std::vector<std::string> CheckLights(const SceneMesh& mesh, const SceneGeometry& g, const Visibility& rays,
-  const std::vector<std::string>& names)
+namespace
 {
-  std::vector<std::vector<int>> elements(names.size());
+/// What the probe rays from light `name` say of it (none where they find nothing amiss);
+/// `apart` (Apart) where it sits far from the scene: then its unit or place, not its
+/// winding, is the first suspect.
+std::vector<std::string> ProbeMessages(const std::string& name, const ProbeHits& probe, double near,
+  const std::string& apart)
+{
+  const char* n = name.c_str();
+  char text[768];
+  std::vector<std::string> messages;
+  const auto say = [&]() { messages.push_back(text); };
+  if (!apart.empty())
+  {
+    std::snprintf(text, sizeof(text), "Light '%s' %s, and %s. Is it in another unit than the scene, or are its "
+      "coordinates off?", n, apart.c_str(), probe.Any == 0 ? "none of its probe rays meets the scene"
+        : probe.Front == 0 ? "it lights nothing" : "most of its light lands on a surface right in front of it");
+    say();
+    return messages;
+  }
+  if (probe.Any == 0)
+  {
+    std::snprintf(text, sizeof(text), "Light '%s' faces away from every surface: none of its probe rays meets the "
+      "scene, so its light leaves it. Is it wound the wrong way (its front is the right-hand side of its points' "
+      "order)?", n);
+    say();
+  }
+  if (probe.Any > 0 && probe.Front == 0)
+  {
+    std::snprintf(text, sizeof(text), "Light '%s' lights nothing: every probe ray from it meets the back of a "
+      "surface, which takes no light. Is it outside the room (above the ceiling, behind a wall, in another unit "
+      "than the scene), inside a closed object, or do the surfaces around it face away from it?", n);
+    say();
+  }
+  if (probe.Front > 0 && probe.Behind >= 0.01)
+  {
+    std::snprintf(text, sizeof(text), "Light '%s' lights nothing from %.0f %% of its area: there its probe rays "
+      "meet only the backs of surfaces (it reaches through a wall or past the room: is it larger than the ceiling "
+      "it hangs from?).", n, 100 * probe.Behind);
+    say();
+  }
+  if (probe.Near > 0.5)
+  {
+    std::snprintf(text, sizeof(text), "Light '%s' faces a surface closer than %.3g (5 %% of its size): most of its "
+      "light lands there. Is it wound the wrong way (its front is the right-hand side of its points' order)?",
+      n, near);
+    say();
+  }
+  return messages;
+}
+
+/// Each light's elements (ids past `lights` left out).
+std::vector<std::vector<int>> LightElements(const SceneMesh& mesh, size_t lights)
+{
+  std::vector<std::vector<int>> elements(lights);
   for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
   {
-    if (mesh.lightId[e] >= 0 && mesh.lightId[e] < static_cast<int>(names.size()))
+    if (mesh.lightId[e] >= 0 && mesh.lightId[e] < static_cast<int>(lights))
     {
       elements[mesh.lightId[e]].push_back(e);
     }
   }
+  return elements;
+}
+} // namespace
+
+std::vector<std::string> CheckLights(const SceneMesh& mesh, const SceneGeometry& g, const Visibility& rays,
+  const std::vector<std::string>& names)
+{
+  const std::vector<std::vector<int>> elements = LightElements(mesh, names.size());
   const Bounds surfaces = SurfaceBounds(mesh);
   std::vector<std::string> messages;
   char text[768];
@@ -159,45 +222,9 @@ std::vector<std::string> CheckLights(const SceneMesh& mesh, const SceneGeometry&
     const double near = 0.05 * std::sqrt(area);
     const ProbeHits probe = elements[l].empty() ? ProbeHits{ 0, 1 } : Probe(g, rays, elements[l], near);
     const bool astray = probe.Any == 0 || probe.Front == 0 || probe.Near > 0.5;
-    const std::string apart = astray && surfaces.Lo.x <= surfaces.Hi.x ? Apart(mesh, elements[l], surfaces) : "";
-    if (!apart.empty()) // its winding is not the first suspect then
+    for (std::string& said : ProbeMessages(names[l], probe, near, astray ? Apart(mesh, elements[l], surfaces) : ""))
     {
-      std::snprintf(text, sizeof(text),
-        "Light '%s' %s, and %s. Is it in another unit than the scene, or are its coordinates off?",
-        names[l].c_str(), apart.c_str(), probe.Any == 0 ? "none of its probe rays meets the scene"
-          : probe.Front == 0 ? "it lights nothing" : "most of its light lands on a surface right in front of it");
-      messages.push_back(text);
-      continue;
-    }
-    if (probe.Any == 0)
-    {
-      std::snprintf(text, sizeof(text),
-        "Light '%s' faces away from every surface: none of its probe rays meets the scene, so its light leaves "
-        "it. Is it wound the wrong way (its front is the right-hand side of its points' order)?", names[l].c_str());
-      messages.push_back(text);
-    }
-    if (probe.Any > 0 && probe.Front == 0)
-    {
-      std::snprintf(text, sizeof(text),
-        "Light '%s' lights nothing: every probe ray from it meets the back of a surface, which takes no light. "
-        "Is it outside the room (above the ceiling, behind a wall, in another unit than the scene), inside a "
-        "closed object, or do the surfaces around it face away from it?", names[l].c_str());
-      messages.push_back(text);
-    }
-    if (probe.Front > 0 && probe.Behind >= 0.01)
-    {
-      std::snprintf(text, sizeof(text),
-        "Light '%s' lights nothing from %.0f %% of its area: there its probe rays meet only the backs of "
-        "surfaces (it reaches through a wall or past the room: is it larger than the ceiling it hangs from?).",
-        names[l].c_str(), 100 * probe.Behind);
-      messages.push_back(text);
-    }
-    if (probe.Near > 0.5)
-    {
-      std::snprintf(text, sizeof(text),
-        "Light '%s' faces a surface closer than %.3g (5 %% of its size): most of its light lands there. Is it "
-        "wound the wrong way (its front is the right-hand side of its points' order)?", names[l].c_str(), near);
-      messages.push_back(text);
+      messages.push_back(std::move(said));
     }
   }
   return messages;

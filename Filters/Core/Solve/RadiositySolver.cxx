@@ -163,19 +163,22 @@ namespace
 {
 /// Rays reach an element closed off by a face lying on it (the floor under a box, through
 /// the box's bottom drawn in the same plane), but no light does: it shows only its own
-/// emission, and what it absorbed counts as escaped, as light on a back face does.
+/// emission, and what reached it counts as escaped, as light on a back face does: all of
+/// it where its patch is closed off too (that patch never shoots), else the part it did
+/// not reflect (its patch's open elements shoot the rest on).
 void KeepClosedOffDark(const SceneMesh& mesh, const SceneGeometry& g, const std::vector<Vec3>& emission, Solution& out)
 {
   const size_t solutions = static_cast<size_t>(out.Solutions);
   for (size_t e = 0; e < g.enclosed.size(); ++e)
   {
+    const bool shut = g.patchOpenArea[g.elementPatch[e]] <= 0;
     for (size_t m = 0; g.enclosed[e] && m < solutions; ++m)
     {
       const size_t i = e * solutions + m;
       for (int c = 0; c < 3; ++c)
       {
-        const double rho = mesh.reflectance[e][c];
-        out.Statistics.EscapedPower += rho > 0 ? (out.Radiosity[i][c] - emission[i][c]) / rho * (1 - rho) * g.area[e] : 0.0;
+        const double rho = mesh.reflectance[e][c], reached = (out.Radiosity[i][c] - emission[i][c]) / rho;
+        out.Statistics.EscapedPower += rho > 0 ? reached * (shut ? 1.0 : 1 - rho) * g.area[e] : 0.0;
       }
       out.Radiosity[i] = emission[i];
       if (!out.Direct.empty())

@@ -81,6 +81,8 @@ check(len(said) == 1, f"an unknown light in the schedule: said {len(said)} times
 misnamed.SetLightIntensity(7, 2.0)
 misnamed.UpdateTimeStep(0.0)
 said = [w for w in catcher.warnings if "index 7" in w]
-check(len(said) == 1, f"...and a light index past the lights, said once more when set ({len(said)})")
+again = [w for w in catcher.warnings if "Nobody" in w]
+check(len(said) == 1 and len(again) == 1,
+      f"...and a light index past the lights, said when set ({len(said)}), the name not again ({len(again)})")
 
 finish("TestAnimation")

@@ -667,3 +667,47 @@ TEST(HardDegenerate, OpenBoxConvergesAndCountsWhatEscapes)
   EXPECT_GT(t.EscapedPower, 0.2 * t.EmittedPower);
   EXPECT_LT(t.EscapedPower, t.EmittedPower);
 }
+
+namespace
+{
+/// The 4 m room (0.25 m elements) with a closed 1 m box on its floor, faces outwards, and a
+/// `size` lamp facing down at `height` inside it: the box's bottom lies on the floor.
+SceneMesh LampShutInABox(double size, double height)
+{
+  SceneMesh mesh = Box(4.0, 16, 2, { 0.7, 0.7, 0.7 }, [](int) { return -1; });
+  int patch = 1000;
+  const Vec3 X{ 1, 0, 0 }, Y{ 0, 1, 0 }, Z{ 0, 0, 1 }, O{ 1, 1, 0 };
+  const Vec3 rho{ 0.7, 0.7, 0.7 };
+  AddGrid(mesh, O, Y, X, 4, 2, rho, -1, patch);                 // bottom, facing down onto the floor
+  AddGrid(mesh, O + Z, X, Y, 4, 2, rho, -1, patch);             // top
+  AddGrid(mesh, O, X, Z, 4, 2, rho, -1, patch);                 // y = 1
+  AddGrid(mesh, O + Y, Z, X, 4, 2, rho, -1, patch);             // y = 2
+  AddGrid(mesh, O, Z, Y, 4, 2, rho, -1, patch);                 // x = 1
+  AddGrid(mesh, O + X, Y, Z, 4, 2, rho, -1, patch);             // x = 2
+  const Vec3 corner{ 1.5 - size / 2, 1.5 - size / 2, height };
+  AddGrid(mesh, corner, Y * size, X * size, 1, 1, rho, 0, patch); // the lamp, facing down
+  return mesh;
+}
+} // namespace
+
+TEST(HardCases, ALampShutInABoxOnTheFloorLightsNothingAndTheLedgerCloses)
+{
+  // The box's bottom lies on the floor, so rays from the lamp pass between them to the
+  // floor under the box (its 16 elements took up to 0.016 of a small lamp's light; with a
+  // 0.9 m lamp 0.1 m up, nearly all of it). No surface outside the lamp takes any light,
+  // and what the rays brought there is booked as escaped, so the ledger closes.
+  for (const auto& lamp : { std::pair<double, double>{ 0.3, 0.9 }, { 0.9, 0.1 }, { 0.9, 0.5 } })
+  {
+    const SceneMesh mesh = LampShutInABox(lamp.first, lamp.second);
+    const Solution s = SolveOne(mesh, Converged(1e-4));
+    double lit = 0;
+    for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
+    {
+      lit = std::max(lit, mesh.lightId[e] < 0 ? s.Radiosity[e].x : 0.0);
+    }
+    EXPECT_EQ(lit, 0.0) << "lamp " << lamp.first << " m at " << lamp.second << " m";
+    const SolverStatistics& t = s.Statistics;
+    EXPECT_NEAR(radiosity_test::AbsorbedPower(mesh, s) + t.EscapedPower + t.UnshotPower, t.EmittedPower,
+      1e-9 * t.EmittedPower) << "lamp " << lamp.first << " m at " << lamp.second << " m";
+  }
+}
