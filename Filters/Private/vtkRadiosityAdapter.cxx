@@ -35,6 +35,13 @@ double PointQuantum(vtkPolyData* input, double farthest)
   return written >= 0 && written <= VTK_DOUBLE_MAX ? std::max(quantum, written) : quantum;
 }
 
+double SizingSpan(vtkDataObject* input)
+{
+  vtkDataArray* given = input ? input->GetFieldData()->GetArray(SizingSpanName) : nullptr;
+  const double span = given && given->GetNumberOfTuples() > 0 ? given->GetTuple1(0) : 0.0;
+  return span > 0 && span <= VTK_DOUBLE_MAX ? span : 0.0;
+}
+
 bool CopyPolygons(vtkPolyData* input, radiosity::SceneMesh& mesh, std::string& error)
 {
   if (!input || input->GetNumberOfPolys() == 0)

@@ -30,6 +30,11 @@ namespace vtkRadiosityAdapter
 bool CopyPolygons(vtkPolyData* input, radiosity::SceneMesh& mesh, std::string& error);
 /// The field array that carries SceneMesh::pointQuantum past the mesher.
 constexpr const char* PointQuantumName = "PointQuantum";
+/// The field array a model set in a room or on a ground carries (relight.in_room): its own
+/// span, which the mesher suggests sizes from instead of the whole scene's.
+constexpr const char* SizingSpanName = "SizingSpan";
+/// The SizingSpan of `input`, 0 where it has none (or not a positive finite one).
+double SizingSpan(vtkDataObject* input);
 /// SceneMesh::pointQuantum of `input`: its PointQuantum field, or from its points' type.
 double PointQuantum(vtkPolyData* input, double farthest);
 

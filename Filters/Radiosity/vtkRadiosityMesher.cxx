@@ -139,7 +139,7 @@ int vtkRadiosityMesher::RequestInformation(
   radiosity::SuggestedSizes sizes{ 0.0, 0.0, 0.0, 0.0 };
   if (input && input->GetNumberOfCells() > 0 && vtkRadiosityAdapter::CopyPolygons(input, mesh, error))
   {
-    sizes = radiosity::SuggestMeshSizes(mesh.points, mesh.offsets, mesh.connectivity);
+    sizes = radiosity::SuggestMeshSizes(mesh.points, mesh.offsets, mesh.connectivity, vtkRadiosityAdapter::SizingSpan(input));
     std::vector<radiosity::Vec3> emission;
     // Without valid arrays the mesher will refuse the input; the estimate then pairs all.
     vtkRadiosityAdapter::ReadSceneArrays(input, mesh, emission, error);
@@ -309,6 +309,10 @@ void AddFieldInt(vtkFieldData* fields, const char* name, int value)
 /// where it has no usable polygons.
 double SuggestedPatch(const radiosity::SceneMesh* whole, vtkPolyData* input)
 {
+  if (vtkRadiosityAdapter::SizingSpan(input) > 0) // every piece carries the model's span
+  {
+    return radiosity::PatchSizeForSpan(vtkRadiosityAdapter::SizingSpan(input));
+  }
   if (whole)
   {
     return radiosity::SuggestPatchSize(whole->points, whole->connectivity);

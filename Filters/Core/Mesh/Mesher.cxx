@@ -811,12 +811,16 @@ double SuggestPatchSize(const std::vector<Vec3>& points, const std::vector<int>&
   {
     corners.push_back(points[id]);
   }
-  const double diagonal = Span(corners); // unlike a bounding box's diagonal, turning does not change it
-  if (!(diagonal > 0) || !std::isfinite(diagonal))
+  return PatchSizeForSpan(Span(corners)); // unlike a bounding box's diagonal, turning does not change it
+}
+
+double PatchSizeForSpan(double span)
+{
+  if (!(span > 0) || !std::isfinite(span))
   {
     return 0.0;
   }
-  const double target = diagonal / 6.0;
+  const double target = span / 6.0;
   const double decade = std::pow(10.0, std::floor(std::log10(target)));
   double nice = decade;
   for (double step : { 2.0, 2.5, 5.0 })
@@ -827,7 +831,7 @@ double SuggestPatchSize(const std::vector<Vec3>& points, const std::vector<int>&
 }
 
 SuggestedSizes SuggestMeshSizes(const std::vector<Vec3>& points, const std::vector<int>& offsets,
-  const std::vector<int>& connectivity)
+  const std::vector<int>& connectivity, double span)
 {
   SuggestedSizes sizes;
   for (size_t i = 0; i + 1 < offsets.size(); ++i)
@@ -836,7 +840,7 @@ SuggestedSizes SuggestMeshSizes(const std::vector<Vec3>& points, const std::vect
     const double area = loop.size() >= 3 ? PolygonArea(loop.data(), static_cast<int>(loop.size())) : 0.0;
     sizes.Area += std::isfinite(area) ? area : 0.0;
   }
-  const double patch = SuggestPatchSize(points, connectivity);
+  const double patch = span > 0 ? PatchSizeForSpan(span) : SuggestPatchSize(points, connectivity);
   if (patch > 0)
   {
     sizes.PatchSize = patch;

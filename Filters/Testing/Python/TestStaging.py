@@ -90,6 +90,26 @@ ids = relight.cell_array(housed, "MaterialIds")
 check(materials.GetValue(materials.GetNumberOfValues() - 1) == "(room)" and set(ids[-6:]) == {materials.GetNumberOfValues() - 1}
       and set(ids[:-6]) == {0}, "the room's cells are a material '(room)'; the model's keep theirs")
 
+# Sizes from the model, not from its room (a new user's 1.5 m figure got 0.6 m elements
+# from its 4.5 m room, and a blocky shadow): a 1 m cube (span 1.73 m) in its room is
+# meshed at patch 0.25 m, as the cube alone would be, not at the room's 0.5 m.
+from vtkmodules.vtkFiltersSources import vtkCubeSource  # noqa: E402
+cube_source = vtkCubeSource()
+cube_source.Update()
+cube = relight.make_scene([[cube_source.GetOutput().GetPoint(cube_source.GetOutput().GetCell(c).GetPointId(k))
+                            for k in range(4)] for c in range(6)], [(0.5, 0.5, 0.5)] * 6, [-1] * 6)
+sized = relight.vtkRadiosityMesher()
+for data, expected in ((cube, 0.25), (relight.in_room(cube), 0.25), (relight.on_ground(cube), 0.25)):
+    sized.SetInputData(data)
+    sized.UpdateInformation()
+    check(sized.GetSuggestedPatchSize() == expected and sized.GetSuggestedElementSize() == expected / 4,
+          f"suggested sizes {sized.GetSuggestedPatchSize()} / {sized.GetSuggestedElementSize()} for "
+          f"{data.GetNumberOfCells()} cells (the cube's {expected})")
+sized.SetInputData(relight.make_scene([[(-1.5, -1.5, -1.5), (2.5, -1.5, -1.5), (2.5, 2.5, -1.5)]], [(0.5,) * 3], [-1]))
+sized.UpdateInformation()
+check(sized.GetSuggestedPatchSize() > 0.25, f"...while a room-sized scene of its own gets {sized.GetSuggestedPatchSize()}")
+
+
 def plain_plane():
     from vtkmodules.vtkFiltersSources import vtkPlaneSource
     plane = vtkPlaneSource()

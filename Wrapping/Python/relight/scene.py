@@ -112,8 +112,9 @@ def solve(scene, patch_size=None, element_size=None, **solver_settings):
     """Meshes and solves `scene` (vtkPolyData); returns the updated solver (its
     GetOutput() has the solutions, GetInputAlgorithm() is the mesher).
 
-    Sizes left out are the mesher's suggestion for the scene (a sixth of its extent,
-    rounded; the element a quarter of the patch), whatever its unit.
+    Sizes left out are the mesher's suggestion for the scene (a sixth of its extent, or of
+    the model's for a model set in a room by in_room or on_ground, rounded; the element a
+    quarter of the patch), whatever its unit.
     `solver_settings` are vtkLightTaggedRadiosity properties, e.g. MaximumShots=500.
     Raises RuntimeError with the filters' message if meshing or solving fails; their
     warnings (a lamp drawn in a surface, an early stop) come as Python RuntimeWarnings.

@@ -136,7 +136,7 @@ def _box_faces(low, high, up, wall, floor):
 
 
 def _merged(model, faces):
-    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
     from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
     from vtkmodules.vtkFiltersCore import vtkAppendPolyData
 
@@ -157,9 +157,26 @@ def _merged(model, faces):
     out = vtkPolyData()
     out.ShallowCopy(append.GetOutput())
     out.GetFieldData().DeepCopy(model.GetFieldData())
+    # The mesher suggests sizes from the model, not from the room around it: a figure in
+    # its room got elements a tenth of its height, and a blocky shadow.
+    span = vtkDoubleArray()
+    span.SetName("SizingSpan")
+    span.InsertNextValue(_span(model))
+    out.GetFieldData().AddArray(span)
     if names:
         out.GetFieldData().GetAbstractArray("MaterialNames").InsertNextValue("(room)")
     return out
+
+
+def _span(model):
+    """The model's span as the mesher measures a scene's: twice the largest distance of a
+    corner from the corners' mean (turning the model does not change it)."""
+    import numpy as np
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+
+    points = vtk_to_numpy(model.GetPoints().GetData()).astype(float)
+    used = points[np.unique(vtk_to_numpy(model.GetPolys().GetConnectivityArray()))]
+    return float(2 * np.linalg.norm(used - used.mean(axis=0), axis=1).max())
 
 
 def _same_arrays(source, target, reflectance, count=None, materials=0):
