@@ -8,6 +8,10 @@
 #include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
 #include <fstream>
 
 
@@ -57,6 +61,58 @@ std::string RunAssimp(const std::string& program, const std::string& in, const s
     }
   }
   return reason.empty() ? "assimp failed" : "assimp: " + reason;
+}
+
+/// The double after the name's three string fields in a binary FBX property record
+/// (S type, S label, S flags, D value); 0 where the bytes are not laid out so.
+double BinaryFbxValue(const std::string& data, size_t at)
+{
+  for (int field = 0; field < 3; ++field)
+  {
+    std::uint32_t length = 0;
+    if (at + 5 > data.size() || data[at] != 'S')
+    {
+      return 0.0;
+    }
+    std::memcpy(&length, data.data() + at + 1, 4);
+    at += 5 + static_cast<size_t>(length);
+  }
+  double value = 0;
+  if (at + 9 > data.size() || data[at] != 'D')
+  {
+    return 0.0;
+  }
+  std::memcpy(&value, data.data() + at + 1, 8); // FBX is little-endian, as this machine
+  return value;
+}
+
+/// Metres per unit of an FBX file from its UnitScaleFactor (centimetres per unit), which
+/// assimp's export leaves unapplied (Collada's unit it applies); 0 where the file says none.
+double FbxMetresPerUnit(const std::string& path)
+{
+  std::string data;
+  if (!ReadText(path, data))
+  {
+    return 0.0;
+  }
+  double centimetres = 0;
+  const std::string binary = std::string("S\x0f\0\0\0", 5) + "UnitScaleFactor";
+  const size_t at = data.find(binary);
+  if (at != std::string::npos)
+  {
+    centimetres = BinaryFbxValue(data, at + binary.size());
+  }
+  else if ((data.find("\"UnitScaleFactor\"")) != std::string::npos)
+  {
+    // P: "UnitScaleFactor", "double", "Number", "",2.54
+    size_t comma = data.find("\"UnitScaleFactor\"");
+    for (int field = 0; field < 4 && comma != std::string::npos; ++field)
+    {
+      comma = data.find(',', comma + 1);
+    }
+    centimetres = comma == std::string::npos ? 0.0 : std::strtod(data.c_str() + comma + 1, nullptr);
+  }
+  return std::isfinite(centimetres) && centimetres > 0 && centimetres < 1e9 ? centimetres / 100.0 : 0.0;
 }
 
 } // namespace
@@ -113,7 +169,17 @@ std::string ReadWithAssimp(const std::string& path, radiosity::RawScene& raw, st
   // Textures stay beside the model; the OBJ is in a temporary folder.
   const std::string model = vtksys::SystemTools::GetFilenamePath(vtksys::SystemTools::CollapseFullPath(path));
   const std::string read = ReadObjTexturedFrom(converted, model, raw, warnings);
-  return read.empty() ? read : "'" + path + "' converted by assimp: " + read;
+  if (!read.empty())
+  {
+    return "'" + path + "' converted by assimp: " + read;
+  }
+  const bool fbx = vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(path)) == ".fbx";
+  const double metres = fbx ? FbxMetresPerUnit(path) : 0.0;
+  for (radiosity::Vec3& p : raw.points)
+  {
+    p = metres > 0 ? p * metres : p;
+  }
+  return std::string();
 }
 
 }

@@ -357,6 +357,11 @@ spiders = [np.asarray(cell_array(relight.import_scene("/usr/share/assimp/models/
                                  "Reflectance")).mean(axis=0) for m in ("FBX/spider.fbx", "OBJ/spider.obj")]
 check(np.allclose(spiders[0], spiders[1], atol=1e-6) and spiders[0].max() < 0.2,
       f"the FBX spider as colored as the OBJ beside it: {np.round(spiders[0], 4)} and {np.round(spiders[1], 4)}")
+# The FBX's own unit (UnitScaleFactor: centimetres per unit), which assimp leaves unapplied:
+# the FBX spider came in 100 times the OBJ beside it.
+sizes = [relight.import_scene("/usr/share/assimp/models/" + m, require_lights=False).GetBounds()
+         for m in ("FBX/spider.fbx", "OBJ/spider.obj")]
+check(np.allclose(sizes[0], sizes[1], rtol=1e-6), f"the FBX spider in metres as the OBJ: {np.round(sizes[0], 2)} and {np.round(sizes[1], 2)}")
 # Nothing known of a surface's color: white (a perfect reflector) came in silently; now 0.8,
 # said. An STL (assimp's white default material); a PLY whose colors are floats, which
 # VTK's reader takes as 8-bit values (its blue 1.0 came in as 0.0003).
