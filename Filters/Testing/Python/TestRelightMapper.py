@@ -78,6 +78,13 @@ check(cpu_mapper.GetRelitOnCPU() and np.abs(on_cpu - cpu).mean() < 1.0 and len(c
 cpu_mapper.GetLights().SetLightEnabled(0, False)
 check(np.abs(pixels(cpu_view.render()) - on_cpu).mean() > 2 and len(catcher.warnings) == 1,
       "the CPU path follows a light change too, without saying so again")
+# A light index past the lights is said once, not at every frame (it was not said at all).
+cpu_mapper.GetLights().SetLightIntensity(9, 2.0)
+for _ in range(3):
+    cpu_view.render()
+said = [w for w in catcher.warnings if "index 9" in w]
+check(len(said) == 1, f"a light index past the lights, over 3 frames: said {len(said)} time(s)")
+cpu_mapper.GetLights().SetLightEnabled(0, True)
 
 # --- a room with 40 lamps (a 5 x 8 grid in the ceiling) and 64 lamps (8 x 8) ----------------------
 def lamp_room(columns, rows, size=8.0, height=3.0):
