@@ -100,7 +100,6 @@ double vtkRadiosityMesher::EstimateElements(double patchSize, double elementSize
   radiosity::MesherOptions options;
   options.MergeTriangles = this->MergeTriangles;
   options.PointQuantum = mesh.pointQuantum;
-  options.LightIds = mesh.lightId;
   const radiosity::ElementCounter count(mesh.points, mesh.offsets, mesh.connectivity, this->SeenInput->SurfaceKey, options);
   return count(sizes.first, sizes.second);
 }
@@ -196,7 +195,6 @@ std::string MeshPiece(vtkRadiosityMesher* self, vtkPolyData* input, double eleme
   options.ClusterAngle = self->GetClusterAngle();
   options.WholeScene = whole.Polygons;
   options.PointQuantum = std::max(mesh.pointQuantum, whole.PointQuantum);
-  options.LightIds = mesh.lightId;
   const vtkRadiosityAbortWatch abort(self);
   options.Progress = [self, abort](double f) {
     self->UpdateProgress(f);
@@ -221,7 +219,6 @@ double ElementSizeEverywhere(vtkRadiosityMesher* self, vtkMultiProcessController
   options.MergeTriangles = self->GetMergeTriangles();
   options.WholeScene = whole.Polygons;
   options.PointQuantum = std::max(mesh.pointQuantum, whole.PointQuantum);
-  options.LightIds = mesh.lightId;
   const std::vector<int> keys = usable ? SurfaceKeys(mesh, emission) : std::vector<int>();
   const radiosity::ElementCounter counter(mesh.points, mesh.offsets, mesh.connectivity, keys, options);
   auto count = [&](double size) {

@@ -18,8 +18,8 @@ struct CoincidentCopies
   /// Input polygons (source ids) left out: a later copy of a polygon with the same corners,
   /// facing the same side, of the same surface (material and light).
   std::vector<int> Dropped;
-  /// Pairs of input polygons with the same corners and side but other surfaces: kept here
-  /// and said; the overlap cuts (OverlapCuts.h) then keep one of each pair.
+  /// Pairs of input polygons with the same corners and side but other surfaces: kept both
+  /// (which one is meant cannot be told), and said.
   std::vector<std::pair<int, int>> Differing;
 };
 

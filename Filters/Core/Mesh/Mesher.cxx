@@ -438,7 +438,7 @@ PairedPolygons Paired(const std::vector<Vec3>& points, const std::vector<int>& o
   }
   const double noise = MeshNoise(points, options.PointQuantum);
   // From the scene's span (MeshNoise), not its box: which faces overlap must not turn with it.
-  OverlapCuts cuts = CutOverlaps(points, surfaceKey, options.LightIds, 4 * noise, polygons);
+  OverlapCuts cuts = CutOverlaps(points, surfaceKey, 4 * noise, polygons);
   if (overlaps)
   {
     *overlaps = std::move(cuts);
@@ -480,21 +480,27 @@ std::string CellList(const std::vector<int>& cells)
   return text.str();
 }
 
-/// Says which input polygons were cut or left out where others in their plane keep the overlap.
+/// Says which input polygons were cut or left out where earlier ones of their surface cover
+/// them, and which overlap others'.
 void WarnAboutOverlaps(const OverlapCuts& overlaps, const MesherOptions& options)
 {
-  const std::string who = "(a lamp keeps the overlap, else the smaller surface, else the earlier cell), as each "
-                          "layer would receive the full light";
   if (options.Warning && !overlaps.Trimmed.empty())
   {
-    options.Warning(Counted(overlaps.Trimmed.size(), "cell overlaps", "cells overlap") +
-      " others in one plane, facing the same side (cells " + CellList(overlaps.Trimmed) +
-      "): meshed only where the other does not lie " + who);
+    options.Warning(Counted(overlaps.Trimmed.size(), "cell overlaps", "cells overlap") + " earlier cells of their surface in one plane (cells " +
+      CellList(overlaps.Trimmed) + "): meshed only where nothing else lies, as each layer would receive the full light");
   }
   if (options.Warning && !overlaps.Covered.empty())
   {
-    options.Warning(Counted(overlaps.Covered.size(), "cell lies", "cells lie") +
-      " wholly under others in one plane, facing the same side (cells " + CellList(overlaps.Covered) + "): left out " + who);
+    options.Warning(Counted(overlaps.Covered.size(), "cell lies", "cells lie") + " wholly under earlier cells of their surface in one plane (cells " +
+      CellList(overlaps.Covered) + "): left out, as each layer would receive the full light");
+  }
+  if (options.Warning && !overlaps.Differing.empty())
+  {
+    const std::pair<int, int>& p = overlaps.Differing.front();
+    options.Warning(Counted(overlaps.Differing.size(), "pair of cells overlaps", "pairs of cells overlap") +
+      " in one plane, facing the same side, with different materials or lights (cells " + std::to_string(p.first) +
+      " and " + std::to_string(p.second) + " first): both kept, so each receives the full light where they overlap; "
+      "cut one, or move it a little in front of the other");
   }
 }
 
@@ -512,7 +518,7 @@ void WarnAboutCopies(const CoincidentCopies& copies, const MesherOptions& option
     const std::pair<int, int>& p = copies.Differing.front();
     options.Warning(Counted(copies.Differing.size(), "pair of cells coincides", "pairs of cells coincide") + " with different materials or lights (cells " +
       std::to_string(p.first) + " and " + std::to_string(p.second) +
-      " first): the first of each pair is kept (a lamp before a surface), as each would receive the full light");
+      " first): both kept, and each receives the full light; remove one of each pair");
   }
 }
 } // namespace

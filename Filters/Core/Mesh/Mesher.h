@@ -37,9 +37,6 @@ struct MesherOptions
   /// The whole scene where the polygons are one process's piece of it: surfaces of other
   /// pieces standing on these cut them too (see ContactCuts.h). Null: the polygons are all.
   const PolygonArrays* WholeScene = nullptr;
-  /// Each input polygon's light (-1 for none; empty: no lights): where faces overlap in
-  /// one plane a lamp keeps the overlap (OverlapCuts.h).
-  std::vector<int> LightIds;
   std::function<bool(double)> Progress; ///< return false to abort
   /// Told, before meshing, when the budget changed the element size or the mesh is huge.
   std::function<void(const std::string&)> Warning;

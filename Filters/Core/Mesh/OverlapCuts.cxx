@@ -5,8 +5,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <numeric>
-#include <tuple>
 #include <unordered_map>
 
 namespace radiosity
@@ -20,7 +18,6 @@ struct Face
 {
   int Index = 0;   ///< in the polygons
   int Surface = 0; ///< its surface key
-  long long Rank = 0; ///< its polygon's place in the order of who keeps an overlap
   Loop Corners;
   Vec3 Normal;
   Bounds Box;
@@ -296,42 +293,31 @@ std::vector<std::vector<int>> EarlierNeighbours(const std::vector<Face>& faces, 
   return earlier;
 }
 
-/// For each face, the faces before it in the order (Face::Rank) that overlap it: one total
-/// order, so no three faces can cut each other round in a circle and leave a hole.
-std::vector<std::vector<int>> CuttersOf(const std::vector<Face>& faces, double tolerance)
+/// Cuts each face by the earlier ones of its surface that overlap it; returns each face's
+/// pieces (its own corners where nothing overlaps it, none where it is covered), marks in
+/// `cut` (by polygon) those that changed, and lists the overlapping pairs of different
+/// surfaces (by polygon) in `differing`. Those are not cut: a rule that let the smaller of
+/// two materials win made cycles with the earlier-wins rule of one material (a wall, a
+/// patch of it drawn again, a poster over both: a hole where none kept the overlap), and
+/// could cut a lamp drawn over its ceiling tile away.
+std::vector<std::vector<Loop>> CutFaces(const std::vector<Face>& faces, double tolerance, std::vector<char>& cut,
+  std::vector<std::pair<int, int>>& differing)
 {
   const std::vector<std::vector<int>> earlier = EarlierNeighbours(faces, tolerance);
-  std::vector<std::vector<int>> cutters(faces.size());
-  for (size_t i = 0; i < faces.size(); ++i)
-  {
-    for (int j : earlier[i])
-    {
-      const bool jFirst = faces[j].Rank < faces[i].Rank;
-      (jFirst ? cutters[i] : cutters[j]).push_back(jFirst ? j : static_cast<int>(i));
-    }
-  }
-  for (std::vector<int>& list : cutters)
-  {
-    std::sort(list.begin(), list.end());
-  }
-  return cutters;
-}
-
-/// Cuts each face by those before it that overlap it; returns each face's pieces (its own
-/// corners where nothing overlaps it, none where it is covered) and marks in `cut` (by
-/// polygon) those that changed.
-std::vector<std::vector<Loop>> CutFaces(const std::vector<Face>& faces, double tolerance, std::vector<char>& cut)
-{
-  const std::vector<std::vector<int>> cutters = CuttersOf(faces, tolerance);
   std::vector<std::vector<Loop>> pieces(faces.size());
   for (size_t i = 0; i < faces.size(); ++i)
   {
     pieces[i] = { faces[i].Corners };
-    for (int j : cutters[i])
+    for (int j : earlier[i])
     {
       if (Width(Intersection(faces[i].Corners, faces[j])) <= tolerance)
       {
         continue; // neighbours along an edge
+      }
+      if (faces[j].Surface != faces[i].Surface)
+      {
+        differing.emplace_back(faces[j].Index, faces[i].Index);
+        continue;
       }
       // Every piece is split along j's edges, also those clear of it: deciding piece by
       // piece let float noise decide a sliver's fate, and the FZK-Haus turned 37 degrees
@@ -351,107 +337,27 @@ std::vector<std::vector<Loop>> CutFaces(const std::vector<Face>& faces, double t
   return pieces;
 }
 
-int Root(std::vector<int>& parent, int i)
-{
-  while (parent[i] != i)
-  {
-    i = parent[i] = parent[parent[i]];
-  }
-  return i;
-}
-
-/// Each polygon's surface area: the summed area of the polygons of its surface key and
-/// plane that it reaches across shared edges (a wall tessellated into triangles is one).
-std::vector<double> RegionAreas(
-  const std::vector<Vec3>& points, const std::vector<int>& surfaceKey, const PairedPolygons& polygons)
-{
-  const int n = static_cast<int>(polygons.source.size());
-  std::vector<double> area(n, 0.0);
-  std::vector<Vec3> normal(n);
-  std::vector<std::pair<std::pair<int, int>, int>> edges; // (sorted corner ids, polygon)
-  for (int i = 0; i < n; ++i)
-  {
-    const std::vector<Vec3> loop = GatherLoop(points, polygons.offsets, polygons.connectivity, i);
-    const Vec3 newell = loop.size() >= 3 ? NewellVector(loop.data(), static_cast<int>(loop.size())) : Vec3();
-    area[i] = 0.5 * Norm(newell);
-    normal[i] = area[i] > 0 ? newell * (0.5 / area[i]) : Vec3();
-    const int first = polygons.offsets[i], count = polygons.offsets[i + 1] - first;
-    for (int k = 0; k < count; ++k)
-    {
-      const int a = polygons.connectivity[first + k], b = polygons.connectivity[first + (k + 1) % count];
-      edges.push_back({ { std::min(a, b), std::max(a, b) }, i });
-    }
-  }
-  std::sort(edges.begin(), edges.end());
-  std::vector<int> parent(n);
-  std::iota(parent.begin(), parent.end(), 0);
-  const auto key = [&](int i) { return polygons.source[i] < static_cast<int>(surfaceKey.size()) ? surfaceKey[polygons.source[i]] : 0; };
-  for (size_t k = 0; k + 1 < edges.size(); ++k)
-  {
-    const int a = edges[k].second, b = edges[k + 1].second;
-    if (edges[k].first == edges[k + 1].first && key(a) == key(b) && Dot(normal[a], normal[b]) >= 0.999)
-    {
-      parent[Root(parent, a)] = Root(parent, b);
-    }
-  }
-  std::vector<double> region(n, 0.0);
-  for (int i = 0; i < n; ++i)
-  {
-    region[Root(parent, i)] += area[i];
-  }
-  for (int i = 0; i < n; ++i)
-  {
-    area[i] = region[Root(parent, i)];
-  }
-  return area;
-}
-
-/// Each polygon's place in the order of who keeps an overlap: lamps first, then smaller
-/// surfaces, then earlier polygons. Areas count in steps of 1e-4 of themselves, so that
-/// float noise does not reorder two surfaces drawn alike.
-std::vector<long long> Ranks(const std::vector<Vec3>& points, const std::vector<int>& surfaceKey,
-  const std::vector<int>& lightIds, const PairedPolygons& polygons)
-{
-  const std::vector<double> area = RegionAreas(points, surfaceKey, polygons);
-  const int n = static_cast<int>(polygons.source.size());
-  std::vector<std::tuple<int, long long, int>> keys(n);
-  for (int i = 0; i < n; ++i)
-  {
-    const int source = polygons.source[i];
-    const bool lamp = source < static_cast<int>(lightIds.size()) && lightIds[source] >= 0;
-    const long long step = area[i] > 0 ? static_cast<long long>(std::floor(std::log(area[i]) / std::log1p(1e-4))) : 0;
-    keys[i] = { lamp ? 0 : 1, step, i };
-  }
-  std::vector<int> order(n);
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return keys[a] < keys[b]; });
-  std::vector<long long> rank(n);
-  for (int r = 0; r < n; ++r)
-  {
-    rank[order[r]] = r;
-  }
-  return rank;
-}
-
 } // namespace
 
-OverlapCuts CutOverlaps(const std::vector<Vec3>& points, const std::vector<int>& surfaceKey,
-  const std::vector<int>& lightIds, double tolerance, PairedPolygons& polygons)
+OverlapCuts CutOverlaps(
+  const std::vector<Vec3>& points, const std::vector<int>& surfaceKey, double tolerance, PairedPolygons& polygons)
 {
   OverlapCuts found;
   std::vector<char> cut(polygons.source.size(), 0);
   std::vector<std::vector<Loop>> pieces(polygons.source.size());
-  std::vector<Face> faces = ConvexFaces(points, surfaceKey, tolerance, polygons);
+  const std::vector<Face> faces = ConvexFaces(points, surfaceKey, tolerance, polygons);
   if (faces.size() < 2)
   {
     return found;
   }
-  const std::vector<long long> rank = Ranks(points, surfaceKey, lightIds, polygons);
-  for (Face& face : faces)
+  std::vector<std::pair<int, int>> differing;
+  std::vector<std::vector<Loop>> cutPieces = CutFaces(faces, tolerance, cut, differing);
+  std::sort(differing.begin(), differing.end());
+  differing.erase(std::unique(differing.begin(), differing.end()), differing.end()); // convex pieces of one polygon
+  for (const std::pair<int, int>& pair : differing)
   {
-    face.Rank = rank[face.Index];
+    found.Differing.emplace_back(polygons.source[pair.first], polygons.source[pair.second]);
   }
-  std::vector<std::vector<Loop>> cutPieces = CutFaces(faces, tolerance, cut);
   for (size_t f = 0; f < faces.size(); ++f)
   {
     for (Loop& piece : cutPieces[f])
