@@ -779,6 +779,13 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
   CoincidentCopies copies;
   OverlapCuts overlaps;
   const PairedPolygons polygons = Paired(points, offsets, connectivity, surfaceKey, options, &copies, &overlaps);
+  // A copy in another material is said once, as a copy, not again as an overlap.
+  std::vector<std::pair<int, int>>& differing = overlaps.Differing;
+  differing.erase(std::remove_if(differing.begin(), differing.end(), [&](const std::pair<int, int>& p) {
+    return std::find_if(copies.Differing.begin(), copies.Differing.end(), [&](const std::pair<int, int>& c) {
+      return std::minmax(c.first, c.second) == std::minmax(p.first, p.second);
+    }) != copies.Differing.end();
+  }), differing.end());
   WarnAboutCopies(copies, options);
   WarnAboutOverlaps(overlaps, options);
   const std::vector<Vec3>& corners = PointsOf(polygons, points);

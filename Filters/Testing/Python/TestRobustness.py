@@ -593,6 +593,9 @@ def lit_quad(lift):
 drawn, said = solved_with_panels([(0, 4, 0, 2.5), (1.0, 2.0, 1.0, 2.0)], last_reflectance=(0.1, 0.1, 0.1))
 check(any("1 pair of cells overlaps" in w and "different materials" in w and "cells 5 and" in w for w in said),
       f"a poster of another material on the panel is said (silent before): {said}")
+_, said = solved_with_panels([(0, 4, 0, 2.5), (0, 4, 0, 2.5)], last_reflectance=(0.1, 0.1, 0.1))
+check(sum("coincide" in w for w in said) == 1 and not any("overlaps in one plane" in w for w in said),
+      f"a copy of the panel in another material is said once, as a copy (twice before): {said}")
 
 flat, bent = lit_quad(0.0), lit_quad(2e-5)
 check(bent > 0.9 * flat, f"a quad bent by 2e-5 m is lit as the flat one: {bent:.4f} against {flat:.4f} (0.0001 before)")
