@@ -55,9 +55,7 @@ struct vtkRadiosityRelight::Internals
   double Metered = 0;           ///< the exposure metered at the lights' defaults
   vtkMTimeType MeteredFor = 0;  ///< for this input
   bool MeteredCells = false;    ///< on its cells (else its points)
-  /// The light settings' warnings said last: an animation updates every frame, and the
-  /// same words each frame would bury everything else in the log.
-  std::vector<std::string> Said;
+  radiosity::SaidOnce Said; ///< the light settings' warnings, each said once
 };
 
 struct vtkRadiosityRelight::MovingState
@@ -698,15 +696,10 @@ std::string vtkRadiosityRelight::ResolveWeights(
   {
     return invalid;
   }
-  for (size_t i = 0; i < warnings.size(); ++i)
+  for (const std::string& warning : this->Internal->Said.New(warnings))
   {
-    if (std::find(this->Internal->Said.begin(), this->Internal->Said.end(), warnings[i]) != this->Internal->Said.end())
-    {
-      continue; // said at an earlier update
-    }
-    vtkWarningMacro(<< warnings[i]);
+    vtkWarningMacro(<< warning);
   }
-  this->Internal->Said = warnings;
   this->Internal->Names = names;
   this->Internal->Effective = effective;
   weights = radiosity::LightWeights(effective, this->IndirectScale);

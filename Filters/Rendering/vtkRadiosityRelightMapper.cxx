@@ -49,7 +49,7 @@ struct vtkRadiosityRelightMapper::Internals
   int ShaderLights = -1; ///< the k the current shader was built for
   std::string Problem;
   std::string Reported; ///< the problem last reported, so each is said once
-  std::vector<std::string> ReportedSettings; ///< the light settings' warnings said last
+  radiosity::SaidOnce ReportedSettings; ///< the light settings' warnings, each said once
   bool UseGPU = true;
   bool OnCPU = false;       ///< this data is relit on the CPU (asked for, or fallen back to)
   std::string WhyCPU;       ///< the reason, said once
@@ -330,15 +330,10 @@ std::vector<float> vtkRadiosityRelightMapper::CurrentWeights()
       in.Reported = invalid;
     }
   }
-  for (size_t i = 0; i < warnings.size(); ++i)
+  for (const std::string& warning : in.ReportedSettings.New(warnings))
   {
-    if (std::find(in.ReportedSettings.begin(), in.ReportedSettings.end(), warnings[i]) != in.ReportedSettings.end())
-    {
-      continue; // said at an earlier update
-    }
-    vtkWarningMacro(<< warnings[i]); // a light index or name the data does not have
+    vtkWarningMacro(<< warning); // a light index or name the data does not have
   }
-  in.ReportedSettings = warnings;
   std::vector<float> weights;
   for (double w : radiosity::LightWeights(effective, 1.0))
   {

@@ -31,8 +31,6 @@ bool InsideElement(const SceneMesh& mesh, const SceneGeometry& g, int e, const V
   return true;
 }
 
-namespace
-{
 Bounds ElementBounds(const SceneMesh& mesh, int e)
 {
   Bounds b;
@@ -42,6 +40,9 @@ Bounds ElementBounds(const SceneMesh& mesh, int e)
   }
   return b;
 }
+
+namespace
+{
 
 /// The candidates' centroids hashed on a grid of cells as large as the median of them: a
 /// query visits few cells per element (the largest would put every candidate in one cell

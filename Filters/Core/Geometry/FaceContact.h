@@ -2,12 +2,16 @@
 #ifndef RadiosityCore_FaceContact_h
 #define RadiosityCore_FaceContact_h
 
+#include "Geometry/Polygon.h"
 #include "Geometry/Scene.h"
 
 #include <vector>
 
 namespace radiosity
 {
+
+/// The bounds of element e's corners.
+Bounds ElementBounds(const SceneMesh& mesh, int e);
 
 /// True when x lies inside convex element e (in its plane and inside its edges, within
 /// `tolerance`). A concave element can only be missed, never found where x is not.

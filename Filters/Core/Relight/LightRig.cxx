@@ -2,6 +2,7 @@
 #include "Base/Text.h"
 
 #include <algorithm>
+#include <iterator>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -292,6 +293,15 @@ std::vector<double> LightWeights(const std::vector<LightSetting>& effective, dou
     }
   }
   return weights;
+}
+
+std::vector<std::string> SaidOnce::New(const std::vector<std::string>& warnings)
+{
+  std::vector<std::string> fresh;
+  std::copy_if(warnings.begin(), warnings.end(), std::back_inserter(fresh),
+    [&](const std::string& w) { return std::find(Said.begin(), Said.end(), w) == Said.end(); });
+  Said = warnings;
+  return fresh;
 }
 
 } // namespace radiosity

@@ -92,6 +92,19 @@ std::vector<Vec3> DefaultLightColors(int lights, const std::vector<double>& give
 /// parts, for B = s B_total + (1 - s) B_direct.
 std::vector<double> LightWeights(const std::vector<LightSetting>& effective, double indirectScale);
 
+/// A reader's memory of the light-setting warnings it said (LightRig::Resolve's): an
+/// animation resolves the settings every frame, and the same words each frame would bury
+/// the rest of the log.
+class SaidOnce
+{
+public:
+  /// Of `warnings`, those not among the ones passed last time; remembers `warnings`.
+  std::vector<std::string> New(const std::vector<std::string>& warnings);
+
+private:
+  std::vector<std::string> Said;
+};
+
 } // namespace radiosity
 
 #endif

@@ -59,10 +59,7 @@ Bounds SurfaceBounds(const SceneMesh& mesh)
   Bounds b;
   for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
   {
-    for (int v = 0; mesh.lightId[e] < 0 && v < mesh.PolygonSize(e); ++v)
-    {
-      b.Add(mesh.points[mesh.Polygon(e)[v]]);
-    }
+    b.Add(mesh.lightId[e] < 0 ? ElementBounds(mesh, e) : Bounds());
   }
   return b;
 }
@@ -78,10 +75,7 @@ std::string Apart(const SceneMesh& mesh, const std::vector<int>& lamp, const Bou
   Bounds b;
   for (int e : lamp)
   {
-    for (int v = 0; v < mesh.PolygonSize(e); ++v)
-    {
-      b.Add(mesh.points[mesh.Polygon(e)[v]]);
-    }
+    b.Add(ElementBounds(mesh, e));
   }
   char text[320] = "";
   const Vec3 c = b.Centre(), &lo = surfaces.Lo, &hi = surfaces.Hi;
