@@ -33,7 +33,7 @@ def plugin_xml():
 def proxies_with_classes(root):
     """The XML's proxies of the plugin's C++ classes: sources, filters, the writers wrapped by
     ParaView's vtkParallelSerialWriter (its own properties are ParaView's) and their helper."""
-    tags = ("SourceProxy", "WriterProxy", "Proxy")
+    tags = ("SourceProxy", "RadiosityRelightProxy", "WriterProxy", "Proxy")
     return [p for tag in tags for p in root.iter(tag) if (p.get("class") or "").startswith("vtkRadiosity")
             or p.get("class") == "vtkLightTaggedRadiosity"]
 

@@ -186,6 +186,23 @@ def main(argv):
     check(list(relight.LightSettings) == effective,
           "LightSettings reset to the settings in effect reads %s" % list(relight.LightSettings))
 
+    # --- a script reads the data's lights back after the first update, as a reader's
+    # arrays; they are not sent back as settings (which would pin today's defaults and
+    # modify the filter), and a setting of the user's is kept.
+    unset = RadiosityRelight(Input=solver)
+    check(list(unset.LightSettings) == [], "a new relight filter holds settings %s" % list(unset.LightSettings))
+    UpdatePipeline(proxy=unset)
+    stamp = unset.GetClientSideObject().GetMTime()
+    unset.UpdatePropertyInformation()
+    check(len(unset.LightSettings) == 6 and list(unset.LightSettings) == list(unset.LightSettingsInfo),
+          "after an update LightSettings reads %s, the data's lights are %s"
+          % (list(unset.LightSettings), list(unset.LightSettingsInfo)))
+    UpdatePipeline(proxy=unset)
+    check(unset.GetClientSideObject().GetMTime() == stamp, "reading the lights back modified the filter")
+    Delete(unset)
+    check(len(relight.LightSettings) == 6 and float(relight.LightSettings[4]) == INTENSITY,
+          "the user's setting reads back %s after updates" % list(relight.LightSettings))
+
     # --- sizes that follow the scene in a script too: a mesher on a reader that has not
     # run keeps 0 and meshes at the sizes the GUI would suggest (100 and 25 mm).
     fresh = XMLPolyDataReader(FileName=[data_path])

@@ -1,0 +1,21 @@
+#include "vtkSMRadiosityRelitRepresentationProxy.h"
+#include "vtkSMRadiosityRelightProxy.h"
+
+#include "vtkObjectFactory.h"
+
+vtkStandardNewMacro(vtkSMRadiosityRelitRepresentationProxy);
+
+vtkSMRadiosityRelitRepresentationProxy::vtkSMRadiosityRelitRepresentationProxy() = default;
+
+vtkSMRadiosityRelitRepresentationProxy::~vtkSMRadiosityRelitRepresentationProxy() = default;
+
+void vtkSMRadiosityRelitRepresentationProxy::ViewUpdated(vtkSMProxy* view)
+{
+  this->Superclass::ViewUpdated(view);
+  vtkSMRadiosityRelightProxy::ShowDataLights(this, this->Copied);
+}
+
+void vtkSMRadiosityRelitRepresentationProxy::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+}
