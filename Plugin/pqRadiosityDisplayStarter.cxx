@@ -105,7 +105,10 @@ void pqRadiosityDisplayStarter::Configure(pqDataRepresentation* representation)
     ShowRelitSurface(representation);
     StyleRadiosityColorMap(representation);
     QObject::connect(representation, &pqDataRepresentation::colorArrayNameModified, representation,
-      [representation]() { StyleRadiosityColorMap(representation); });
+      [representation]() {
+        LeaveRelitSurfaceToColor(representation);
+        StyleRadiosityColorMap(representation);
+      });
   }
 }
 
@@ -134,6 +137,22 @@ void pqRadiosityDisplayStarter::ShowRelitSurface(pqDataRepresentation* represent
   }
   vtkSMPropertyHelper(proxy, "Representation").Set("Relit Surface");
   proxy->UpdateVTKObjects();
+}
+
+void pqRadiosityDisplayStarter::LeaveRelitSurfaceToColor(pqDataRepresentation* representation)
+{
+  // Relit Surface draws the relit picture whatever the coloring says (the toolbar reads
+  // Solid Color, ParaView's "no array"): an array picked while it is shown would change
+  // nothing, so it is shown on the plain Surface. Relit Surface is one choice away again.
+  vtkSMProxy* proxy = representation->getProxy();
+  vtkSMPropertyHelper type(proxy, "Representation", /*quiet=*/true);
+  if (!type.GetAsString() || QString::fromUtf8(type.GetAsString()) != QLatin1String("Relit Surface"))
+  {
+    return;
+  }
+  type.Set("Surface");
+  proxy->UpdateVTKObjects();
+  representation->renderViewEventually();
 }
 
 void pqRadiosityDisplayStarter::ShowConvergence(pqDataRepresentation* representation)

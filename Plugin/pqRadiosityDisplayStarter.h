@@ -32,6 +32,7 @@ private:
   static void ShowRelitSurface(pqDataRepresentation* representation);
   static void ShowConvergence(pqDataRepresentation* representation);
   static void StyleRadiosityColorMap(pqDataRepresentation* representation);
+  static void LeaveRelitSurfaceToColor(pqDataRepresentation* representation);
 };
 
 #endif

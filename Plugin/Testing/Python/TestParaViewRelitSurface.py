@@ -11,7 +11,7 @@ sys.path.insert(0, os.environ["RELIGHT_TEST_DIR"])
 import guitest  # noqa: E402
 from paraview import servermanager  # noqa: E402
 from paraview.simple import (  # noqa: E402
-    GetActiveView, LightTaggedRadiosity, RadiosityMesher, Render, SaveScreenshot, SetActiveSource, Show,
+    ColorBy, GetActiveView, LightTaggedRadiosity, RadiosityMesher, Render, SaveScreenshot, SetActiveSource, Show,
     XMLPolyDataReader)
 from PyQt5.QtCore import Qt  # noqa: E402
 from PyQt5.QtTest import QTest  # noqa: E402
@@ -81,4 +81,10 @@ if result.check(len(boxes) == 3, "the display panel shows %d light boxes, expect
     settings = list(display.RelitLightSettings)
     result.check(settings[:1] == ["WarmWhite"] and settings[5] == "0", "the property holds %s" % settings)
     result.note("mean change %.2f / 255; property %s" % (change, settings))
+# Relit Surface ignores the coloring (the toolbar reads Solid Color, ParaView's "no array"):
+# an array picked there would change nothing, so the display moves to Surface to show it.
+ColorBy(display, ("POINTS", "Radiosity_WarmWhite"))
+guitest.settle(0.5)
+result.check(display.Representation == "Surface",
+             "an array picked under Relit Surface left the display as '%s'" % display.Representation)
 result.finish()
