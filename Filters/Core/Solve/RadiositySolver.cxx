@@ -1,6 +1,7 @@
 #include "Solve/RadiositySolver.h"
 #include "Base/WorkerPool.h"
 #include "Geometry/ClusterTree.h"
+#include "Solve/MethodCost.h"
 #include "Solve/ShooterFormFactors.h"
 #include "Solve/SolverMethods.h"
 
@@ -22,38 +23,19 @@ namespace
 /// refinement's exact per-element shots are kept.
 constexpr double kHierarchicalPairs = 5000;
 
-/// Auto's cost model, fitted on 15 solves of the paper scene, the Cornell box, the furnished
-/// room and the sphere room (1.7k to 78k elements, 115 to 4,834 patches, each at the
-/// suggested sizes and 2x and 4x finer; 2026-12-03, docs/benchmarks.md) and checked on the
-/// sphere rooms of `bench polygons` up to 512k elements: the hierarchical method's links
-/// cost about 100 ns per element-patch pair, less where a patch holds many elements (a far
-/// patch takes them as a whole); the clustered method about 120 us per element, more above
-/// 100k elements, where its node sums no longer stay in the caches. The estimates are
-/// within 0.3-2x of those solves, and where the two cross (about 1,200 patches of 16
-/// elements) both cost about the same, so a wrong pick there costs little. On the FZK-Haus
-/// (113k elements, 45k patches of 2.5) both run slower than estimated (clustered 42.5 s
-/// against 14 s, 3x: many near links among small parts) but the pick is right by 10x.
-double HierarchicalSeconds(double elements, double patches)
-{
-  const double perPatch = elements / std::max(1.0, patches);
-  return 100e-9 * elements * patches * std::pow(16.0 / std::max(16.0, perPatch), 0.3);
-}
-
-double ClusteredSeconds(double elements)
-{
-  return 120e-6 * elements * std::pow(std::max(1.0, elements / 1e5), 0.25);
-}
-
 /// Auto's choice, and why, in `reason`; the hemicube and Monte Carlo estimators exist only
 /// in progressive refinement.
-SolverMethod ResolveMethod(const SolverOptions& options, int elements, int patches, std::string& reason)
+SolverMethod ResolveMethod(
+  const SolverOptions& options, const SceneMesh& mesh, const SceneGeometry& g, std::string& reason)
 {
+  const int elements = static_cast<int>(g.centroid.size());
+  const int patches = static_cast<int>(g.patchElements.size());
   if (options.Solver != SolverMethod::Auto && FindSolverMethod(options.Solver))
   {
     reason = "as set";
     return options.Solver;
   }
-  char text[200];
+  char text[256];
   const double pairs = static_cast<double>(elements) * patches;
   if (options.Method != FormFactorMethod::Analytic)
   {
@@ -67,12 +49,14 @@ SolverMethod ResolveMethod(const SolverOptions& options, int elements, int patch
     reason = text;
     return SolverMethod::ProgressiveRefinement;
   }
-  const double linked = HierarchicalSeconds(elements, patches), clustered = ClusteredSeconds(elements);
+  const double near = EstimateNearPairs(mesh, g, options.Clustered.Separation);
+  const double linked = HierarchicalSeconds(elements, patches), clustered = ClusteredSeconds(elements, near);
   // Not for the moving-light basis (every patch emits, one solution each: DirectToElements
   // off), whose solutions the clustered method's node sums could not hold.
   const bool cluster = clustered < linked && options.Hierarchical.DirectToElements;
-  std::snprintf(text, sizeof(text), "chosen by Auto: %d elements, %d patches; estimated %.3g s clustered, %.3g s hierarchical",
-    elements, patches, clustered, linked);
+  std::snprintf(text, sizeof(text),
+    "chosen by Auto: %d elements, %d patches, about %.3g near pairs; estimated %.3g s clustered, %.3g s hierarchical",
+    elements, patches, near, clustered, linked);
   reason = text;
   return cluster ? SolverMethod::Clustered : SolverMethod::Hierarchical;
 }
@@ -235,7 +219,7 @@ Solution RadiositySolver::Solve(
   }
   out.Statistics.SingleChannel = grey;
   const SolverMethod method =
-    ResolveMethod(options, n, static_cast<int>(Geometry().patchElements.size()), out.Statistics.MethodReason);
+    ResolveMethod(options, Mesh, Geometry(), out.Statistics.MethodReason);
   out.Statistics.FaceClusters = CountFaceClusters(Geometry());
   FindSolverMethod(method)->Solve(Mesh, Geometry(), Rays(), emission, solutions, grey, options, start, out);
   // Sums of float links and conjugate-gradient steps leave a few values a hair below zero

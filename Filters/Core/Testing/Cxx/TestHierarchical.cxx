@@ -186,7 +186,7 @@ TEST(Hierarchical, HundredThousandElementsConverge)
   SolverOptions defaults;
   defaults.MaximumShots = 1000000;
   const Solution s = SolveRoom(mesh, defaults);
-  EXPECT_EQ(s.Statistics.Method, SolverMethod::Hierarchical);
+  EXPECT_EQ(s.Statistics.Method, SolverMethod::Hierarchical) << s.Statistics.MethodReason;
   EXPECT_TRUE(s.Statistics.Converged);
   for (const Vec3& b : s.Radiosity)
   {

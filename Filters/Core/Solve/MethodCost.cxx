@@ -1,0 +1,159 @@
+#include "Solve/MethodCost.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
+
+namespace radiosity
+{
+
+namespace
+{
+/// Each element's bounding radius about its centroid, as the element tree's leaves have.
+std::vector<double> ElementRadii(const SceneMesh& mesh, const SceneGeometry& g)
+{
+  std::vector<double> radius(g.centroid.size(), 0.0);
+  for (size_t e = 0; e < radius.size(); ++e)
+  {
+    const int* ids = mesh.Polygon(static_cast<int>(e));
+    for (int i = 0; i < mesh.PolygonSize(static_cast<int>(e)); ++i)
+    {
+      radius[e] = std::max(radius[e], Norm(mesh.points[ids[i]] - g.centroid[e]));
+    }
+  }
+  return radius;
+}
+
+double Quantile(std::vector<double> values, double q)
+{
+  const size_t at = std::min(values.size() - 1, static_cast<size_t>(q * values.size()));
+  std::nth_element(values.begin(), values.begin() + at, values.end());
+  return values[at];
+}
+
+/// The centroids hashed into cubes of side `cell`.
+class CentroidGrid
+{
+public:
+  CentroidGrid(const std::vector<Vec3>& centroids, double cell)
+    : Cell(cell)
+  {
+    for (size_t e = 0; e < centroids.size(); ++e)
+    {
+      Cells[Key(Index(centroids[e]))].push_back(static_cast<int>(e));
+    }
+  }
+
+  struct Triple
+  {
+    int64_t x, y, z;
+  };
+
+  Triple Index(const Vec3& p) const
+  {
+    return { static_cast<int64_t>(std::floor(p.x / Cell)), static_cast<int64_t>(std::floor(p.y / Cell)),
+      static_cast<int64_t>(std::floor(p.z / Cell)) };
+  }
+
+  const std::vector<int>* Find(const Triple& t) const
+  {
+    auto it = Cells.find(Key(t));
+    return it == Cells.end() ? nullptr : &it->second;
+  }
+
+private:
+  static uint64_t Key(const Triple& t)
+  {
+    const uint64_t mask = (1u << 21) - 1;
+    return (static_cast<uint64_t>(t.x) & mask) | ((static_cast<uint64_t>(t.y) & mask) << 21) |
+      ((static_cast<uint64_t>(t.z) & mask) << 42);
+  }
+
+  double Cell;
+  std::unordered_map<uint64_t, std::vector<int>> Cells;
+};
+
+/// Whether element b rises in front of element a's plane (its centroid, or its radius
+/// where it is tilted): the element tree's test for leaves, on centroids and radii.
+bool InFront(const SceneGeometry& g, const std::vector<double>& radius, int a, int b)
+{
+  const double lift = Dot(g.centroid[b] - g.centroid[a], g.normal[a]);
+  const bool parallel = std::abs(Dot(g.normal[a], g.normal[b])) > 1 - 1e-9;
+  return lift + (parallel ? 0.0 : radius[b]) > 1e-9 * (radius[a] + radius[b]);
+}
+
+/// The elements near element a that face it and that it faces, in the cubes within `span`.
+int NearAround(const SceneGeometry& g, const std::vector<double>& radius, const CentroidGrid& grid, int a,
+  int64_t span, double separation)
+{
+  int pairs = 0;
+  const CentroidGrid::Triple at = grid.Index(g.centroid[a]);
+  for (int64_t x = at.x - span; x <= at.x + span; ++x)
+    for (int64_t y = at.y - span; y <= at.y + span; ++y)
+      for (int64_t z = at.z - span; z <= at.z + span; ++z)
+      {
+        const std::vector<int>* cube = grid.Find({ x, y, z });
+        for (size_t i = 0; cube && i < cube->size(); ++i)
+        {
+          const int b = (*cube)[i];
+          const bool near = b != a && Norm(g.centroid[b] - g.centroid[a]) <= separation * (radius[a] + radius[b]);
+          pairs += near && InFront(g, radius, a, b) && InFront(g, radius, b, a) ? 1 : 0;
+        }
+      }
+  return pairs;
+}
+} // namespace
+
+double EstimateNearPairs(const SceneMesh& mesh, const SceneGeometry& g, double separation)
+{
+  const int n = static_cast<int>(g.centroid.size());
+  if (n < 2)
+  {
+    return 0;
+  }
+  const std::vector<double> radius = ElementRadii(mesh, g);
+  const double typical = std::max(Quantile(radius, 0.5), 1e-12 * g.sceneDiagonal);
+  const double large = std::max(Quantile(radius, 0.99), typical);
+  const double cell = 2 * separation * typical;
+  const CentroidGrid grid(g.centroid, cell);
+  const int stride = std::max(1, n / 4000);
+  // Around an element far larger than the rest only nearby cubes are searched: an
+  // estimate, bounded in time.
+  const int64_t widest = 6;
+  double pairs = 0;
+  int sampled = 0;
+  for (int a = 0; a < n; a += stride, ++sampled)
+  {
+    const int64_t span = std::min(widest, static_cast<int64_t>(std::ceil(separation * (radius[a] + large) / cell)));
+    pairs += NearAround(g, radius, grid, a, span, separation);
+  }
+  return pairs * n / sampled;
+}
+
+/// Fitted on 15 solves of the paper scene, the Cornell box, the furnished room and the
+/// sphere room (1.7k to 78k elements, 115 to 4,834 patches, each at the suggested sizes and
+/// 2x and 4x finer; 2026-12-03, docs/benchmarks.md): the links cost about 100 ns per
+/// element-patch pair, less where a patch holds many elements (a far patch takes them as a
+/// whole). Where the two methods cross (about 1,200 patches of 16 elements) both cost about
+/// the same, so a wrong pick there costs little.
+double HierarchicalSeconds(double elements, double patches)
+{
+  const double perPatch = elements / std::max(1.0, patches);
+  return 100e-9 * elements * patches * std::pow(16.0 / std::max(16.0, perPatch), 0.3);
+}
+
+/// Fitted (2026-12-03) on five clustered solves of this machine, 62k to 149k elements
+/// with 9 to 1,300 estimated near pairs per element: the FZK-Haus at element 0.25 and 0.5 m
+/// (36.5 s, 19.5 s), the 2CylinderEngine in a room (88.4 s), the 100k-triangle sphere room
+/// (6.8 s), the furnished room of 102k elements (about 9.5 s); the estimates fall within
+/// 0.9-1.5x of them. By elements alone the model before was 3-5x low on the house and the
+/// engine. Above 100k elements the node sums no longer stay in the caches (the
+/// 1M-triangle sphere room: 139 s at 512k elements).
+double ClusteredSeconds(double elements, double nearPairs)
+{
+  const double caches = std::pow(std::max(1.0, elements / 1e5), 0.25);
+  return (80e-6 * elements + 0.45e-6 * nearPairs) * caches;
+}
+
+} // namespace radiosity
