@@ -94,6 +94,8 @@ void pqRadiosityDisplayStarter::Configure(pqDataRepresentation* representation)
   if (source == QLatin1String("RadiosityRelight") && type == QLatin1String("GeometryRepresentation"))
   {
     ShowRelitColors(representation);
+    QObject::connect(representation, &pqDataRepresentation::colorArrayNameModified, representation,
+      [representation]() { LeaveRelitToColor(representation); });
   }
   else if (source == QLatin1String("LightTaggedRadiosity") && port == 1 &&
     type == QLatin1String("XYChartRepresentation"))
@@ -106,7 +108,7 @@ void pqRadiosityDisplayStarter::Configure(pqDataRepresentation* representation)
     StyleRadiosityColorMap(representation);
     QObject::connect(representation, &pqDataRepresentation::colorArrayNameModified, representation,
       [representation]() {
-        LeaveRelitSurfaceToColor(representation);
+        LeaveRelitToColor(representation);
         StyleRadiosityColorMap(representation);
       });
   }
@@ -139,14 +141,18 @@ void pqRadiosityDisplayStarter::ShowRelitSurface(pqDataRepresentation* represent
   proxy->UpdateVTKObjects();
 }
 
-void pqRadiosityDisplayStarter::LeaveRelitSurfaceToColor(pqDataRepresentation* representation)
+void pqRadiosityDisplayStarter::LeaveRelitToColor(pqDataRepresentation* representation)
 {
   // Relit Surface draws the relit picture whatever the coloring says (the toolbar reads
-  // Solid Color, ParaView's "no array"): an array picked while it is shown would change
-  // nothing, so it is shown on the plain Surface. Relit Surface is one choice away again.
+  // Solid Color, ParaView's "no array"), Relit Colors the filter's DisplayColors: another
+  // coloring picked while they are shown would change nothing, so it is shown on the plain
+  // Surface. The relit picture is one choice away again.
   vtkSMProxy* proxy = representation->getProxy();
   vtkSMPropertyHelper type(proxy, "Representation", /*quiet=*/true);
-  if (!type.GetAsString() || QString::fromUtf8(type.GetAsString()) != QLatin1String("Relit Surface"))
+  const QString shown = QString::fromUtf8(type.GetAsString() ? type.GetAsString() : "");
+  const char* array = vtkSMPropertyHelper(proxy, "ColorArrayName", /*quiet=*/true).GetInputArrayNameToProcess();
+  const bool relitColors = shown == QLatin1String("Relit Colors") && QString::fromUtf8(array ? array : "") != RelitArray;
+  if (shown != QLatin1String("Relit Surface") && !relitColors)
   {
     return;
   }

@@ -32,7 +32,7 @@ private:
   static void ShowRelitSurface(pqDataRepresentation* representation);
   static void ShowConvergence(pqDataRepresentation* representation);
   static void StyleRadiosityColorMap(pqDataRepresentation* representation);
-  static void LeaveRelitSurfaceToColor(pqDataRepresentation* representation);
+  static void LeaveRelitToColor(pqDataRepresentation* representation);
 };
 
 #endif

@@ -11,7 +11,7 @@ sys.path.insert(0, os.environ["RELIGHT_TEST_DIR"])
 import guitest  # noqa: E402
 from paraview import servermanager  # noqa: E402
 from paraview.simple import (  # noqa: E402
-    ColorBy, GetActiveView, LightTaggedRadiosity, RadiosityMesher, Render, SaveScreenshot, SetActiveSource, Show,
+    ColorBy, GetActiveView, LightTaggedRadiosity, RadiosityRelight, RadiosityMesher, Render, SaveScreenshot, SetActiveSource, Show,
     XMLPolyDataReader)
 from PyQt5.QtCore import Qt  # noqa: E402
 from PyQt5.QtTest import QTest  # noqa: E402
@@ -87,4 +87,12 @@ ColorBy(display, ("POINTS", "Radiosity_WarmWhite"))
 guitest.settle(0.5)
 result.check(display.Representation == "Surface",
              "an array picked under Relit Surface left the display as '%s'" % display.Representation)
+# The same under Relit Colors (the relight filter's DisplayColors as they are).
+relit = Show(RadiosityRelight(Input=solver), view)
+guitest.settle(1.0)
+result.check(relit.Representation == "Relit Colors", "the relight output is shown as '%s'" % relit.Representation)
+ColorBy(relit, ("POINTS", "Radiosity"))
+guitest.settle(0.5)
+result.check(relit.Representation == "Surface",
+             "an array picked under Relit Colors left the display as '%s'" % relit.Representation)
 result.finish()
