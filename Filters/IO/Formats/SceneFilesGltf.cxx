@@ -1,7 +1,7 @@
 // glTF 2.0 (.gltf, .glb) through VTK's document loader: node transforms applied,
 // baseColorFactor (times the base color texture's mean) as the diffuse color, and
-// emissiveFactor times KHR_materials_emissive_strength (read from the JSON: the loader
-// skips that extension) as the emission.
+// emissiveFactor (times the emissive texture's mean) times KHR_materials_emissive_strength
+// (read from the JSON: the loader skips that extension) as the emission.
 #include "SceneFiles.h"
 #include "SceneFilesErrors.h"
 #include "SceneFilesGltfCheck.h"
@@ -214,6 +214,24 @@ radiosity::Vec3 Rgb(const std::vector<double>& factor, const radiosity::Vec3& ot
   return factor.size() >= 3 ? radiosity::Vec3{ factor[0], factor[1], factor[2] } : otherwise;
 }
 
+/// The mean linear color of a material's texture, white where there is none (glTF
+/// multiplies each factor by its texture).
+radiosity::Vec3 TextureMean(const Loader::Model& model, int texture)
+{
+  if (texture < 0 || texture >= static_cast<int>(model.Textures.size()))
+  {
+    return { 1, 1, 1 };
+  }
+  const int image = model.Textures[texture].Source;
+  return image >= 0 && image < static_cast<int>(model.Images.size()) ? MeanColor(model.Images[image].ImageData)
+                                                                      : radiosity::Vec3{ 1, 1, 1 };
+}
+
+radiosity::Vec3 Times(const radiosity::Vec3& a, const radiosity::Vec3& b)
+{
+  return { a.x * b.x, a.y * b.y, a.z * b.z };
+}
+
 void ReadMaterials(const nlohmann::json& document, const Loader::Model& model, radiosity::RawScene& raw)
 {
   const std::vector<double> strength = EmissiveStrengths(document, model.Materials.size());
@@ -222,19 +240,11 @@ void ReadMaterials(const nlohmann::json& document, const Loader::Model& model, r
     const Loader::Material& source = model.Materials[m];
     radiosity::ImportMaterial material;
     material.Name = source.Name.empty() ? "material " + std::to_string(m) : source.Name;
-    // glTF's default base color is white.
-    material.Diffuse = Rgb(source.PbrMetallicRoughness.BaseColorFactor, { 1, 1, 1 });
-    const int texture = source.PbrMetallicRoughness.BaseColorTexture.Index;
-    if (texture >= 0 && texture < static_cast<int>(model.Textures.size()))
-    {
-      const int image = model.Textures[texture].Source;
-      if (image >= 0 && image < static_cast<int>(model.Images.size()))
-      {
-        const radiosity::Vec3 mean = MeanColor(model.Images[image].ImageData);
-        material.Diffuse = { material.Diffuse.x * mean.x, material.Diffuse.y * mean.y, material.Diffuse.z * mean.z };
-      }
-    }
-    material.Emissive = Rgb(source.EmissiveFactor, {}) * strength[m];
+    // glTF's default base color is white. A texture counts by its mean: radiosity holds one
+    // color per element (an emissive texture's dark parts dim the lamp, as they would).
+    material.Diffuse = Times(Rgb(source.PbrMetallicRoughness.BaseColorFactor, { 1, 1, 1 }),
+      TextureMean(model, source.PbrMetallicRoughness.BaseColorTexture.Index));
+    material.Emissive = Times(Rgb(source.EmissiveFactor, {}), TextureMean(model, source.EmissiveTexture.Index)) * strength[m];
     raw.materials.push_back(material);
   }
 }

@@ -14,9 +14,10 @@ import tempfile
 
 import numpy as np
 from vtkmodules.util import numpy_support
-from vtkmodules.vtkCommonCore import vtkLogger
-from vtkmodules.vtkCommonDataModel import vtkSelection, vtkSelectionNode
+from vtkmodules.vtkCommonCore import VTK_UNSIGNED_CHAR, vtkLogger
+from vtkmodules.vtkCommonDataModel import vtkImageData, vtkSelection, vtkSelectionNode
 from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
+from vtkmodules.vtkIOImage import vtkPNGWriter
 
 import relight
 from relight import cell_areas, cell_array, cell_centroids, light_names, read_polydata
@@ -167,6 +168,25 @@ for path in (gltf_path, glb_path):
     check(np.allclose(cell_array(scene, "Reflectance")[0], [0.5, 0.4, 0.3]), f"{kind}: baseColorFactor as reflectance")
     check(abs(scene.GetBounds()[5] - 2.0) < 1e-6 and abs(scene.GetBounds()[1] - 1.0) < 1e-6,
           f"{kind}: the parent's scale puts the lamp at z = 2 (bounds {scene.GetBounds()})")
+
+# An emissive texture dims its factor by its mean: a 2 x 1 PNG, one pixel black, one white,
+# is half the light in linear values (glTF multiplies factor and texture).
+png = vtkPNGWriter()
+pixels = vtkImageData()
+pixels.SetDimensions(2, 1, 1)
+pixels.AllocateScalars(VTK_UNSIGNED_CHAR, 3)
+for i, v in enumerate((0, 0, 0, 255, 255, 255)):
+    pixels.GetPointData().GetScalars().SetValue(i, v)
+png.SetInputData(pixels)
+png.WriteToMemoryOn()
+png.Write()
+document, _ = gltf_document(binary=False)
+document["images"] = [{"uri": "data:image/png;base64," + base64.b64encode(bytes(png.GetResult())).decode()}]
+document["textures"] = [{"source": 0}]
+document["materials"][1]["emissiveTexture"] = {"index": 0}
+textured = relight.import_scene(write("textured.gltf", json.dumps(document)))
+emission = cell_array(textured, "Emission")[cell_array(textured, "LightId") == 0]
+check(np.allclose(emission, [2, 1, 0.5]), f"an emissive texture half white: (4, 2, 1) x 0.5 = (2, 1, 0.5), got {emission[0]}")
 
 # A file without scenes lists every node; children must come once, with their parent. A
 # mirroring scale turns faces inside out unless the corners are reversed (glTF 2.0, 3.7.4).
