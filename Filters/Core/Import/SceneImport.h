@@ -19,6 +19,7 @@ struct ImportMaterial
   Vec3 Diffuse{ 0.8, 0.8, 0.8 }; ///< linear RGB, as written (clamped later)
   Vec3 Emissive;                 ///< emitted color; any positive channel makes a light
   std::string DiffuseTexture;    ///< texture file the diffuse color is multiplied by, if any
+  std::string EmissiveTexture;   ///< texture file the emitted color is multiplied by, if any
 };
 
 /// Polygons as read from a file, before they become a radiosity scene.

@@ -187,7 +187,7 @@ std::string ParseMtl(const std::string& text, std::vector<ImportMaterial>& mater
       current = known ? &ignored : &materials.back();
       return std::string();
     }
-    if (keyword != "Kd" && keyword != "Ke" && keyword != "map_Kd")
+    if (keyword != "Kd" && keyword != "Ke" && keyword != "map_Kd" && keyword != "map_Ke")
     {
       return std::string();
     }
@@ -195,12 +195,13 @@ std::string ParseMtl(const std::string& text, std::vector<ImportMaterial>& mater
     {
       return where + keyword + " before any newmtl";
     }
-    if (keyword == "map_Kd")
+    if (keyword == "map_Kd" || keyword == "map_Ke")
     {
       // Options (-s, -o, ...) come before the file name; the name is the last word.
       const std::string path = Rest(words);
       const size_t space = path.find_last_of(" \t");
-      current->DiffuseTexture = space == std::string::npos ? path : path.substr(space + 1);
+      (keyword == "map_Kd" ? current->DiffuseTexture : current->EmissiveTexture) =
+        space == std::string::npos ? path : path.substr(space + 1);
       return std::string();
     }
     Vec3& target = keyword == "Kd" ? current->Diffuse : current->Emissive;

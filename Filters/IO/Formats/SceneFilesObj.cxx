@@ -97,35 +97,58 @@ bool White(const radiosity::Vec3& diffuse)
   return diffuse.x >= 1 && diffuse.y >= 1 && diffuse.z >= 1;
 }
 
-/// The texture missing or unreadable: the diffuse color alone, 0.8 where that is white.
-void WithoutTexture(radiosity::ImportMaterial& m, const std::string& why, std::vector<std::string>& warnings)
+/// The mean color of the texture `named`, or a warning saying why there is none.
+bool TextureMean(const std::string& folder, const std::string& named, radiosity::Vec3& mean, std::string& why)
 {
+  const std::string file = FindTexture(named, folder);
+  if (file.empty()) // not handed to VTK's image readers, which log an error of their own
+  {
+    why = "is not in '" + folder + "'";
+    return false;
+  }
+  vtkSmartPointer<vtkImageReader2> reader =
+    vtk::TakeSmartPointer(vtkImageReader2Factory::CreateImageReader2(file.c_str()));
+  if (!reader)
+  {
+    why = "could not be read";
+    return false;
+  }
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  mean = MeanColor(reader->GetOutput());
+  return true;
+}
+
+/// The diffuse color times its texture's mean color, where the texture can be read; else
+/// the diffuse color alone, 0.8 where that is white.
+void ApplyTexture(const std::string& folder, radiosity::ImportMaterial& m, std::vector<std::string>& warnings)
+{
+  radiosity::Vec3 mean;
+  std::string why;
+  if (TextureMean(folder, m.DiffuseTexture, mean, why))
+  {
+    m.Diffuse = { m.Diffuse.x * mean.x, m.Diffuse.y * mean.y, m.Diffuse.z * mean.z };
+    return;
+  }
   const bool white = White(m.Diffuse);
   m.Diffuse = white ? radiosity::Vec3{ 0.8, 0.8, 0.8 } : m.Diffuse;
   warnings.push_back("the texture '" + m.DiffuseTexture + "' of material '" + m.Name + "' " + why +
     (white ? "; its Kd is white (it would reflect all light): reflectance 0.8" : "; its Kd alone is used"));
 }
 
-/// The diffuse color times its texture's mean color, where the texture can be read.
-void ApplyTexture(const std::string& folder, radiosity::ImportMaterial& m, std::vector<std::string>& warnings)
+/// The emitted color times its texture's mean (a lamp's dark parts dim it), where the
+/// texture can be read; else the emitted color alone.
+void ApplyEmissiveTexture(const std::string& folder, radiosity::ImportMaterial& m, std::vector<std::string>& warnings)
 {
-  const std::string file = FindTexture(m.DiffuseTexture, folder);
-  if (file.empty()) // not handed to VTK's image readers, which log an error of their own
+  radiosity::Vec3 mean;
+  std::string why;
+  if (TextureMean(folder, m.EmissiveTexture, mean, why))
   {
-    WithoutTexture(m, "is not in '" + folder + "'", warnings);
+    m.Emissive = { m.Emissive.x * mean.x, m.Emissive.y * mean.y, m.Emissive.z * mean.z };
     return;
   }
-  vtkSmartPointer<vtkImageReader2> reader =
-    vtk::TakeSmartPointer(vtkImageReader2Factory::CreateImageReader2(file.c_str()));
-  if (!reader)
-  {
-    WithoutTexture(m, "could not be read", warnings);
-    return;
-  }
-  reader->SetFileName(file.c_str());
-  reader->Update();
-  const radiosity::Vec3 mean = MeanColor(reader->GetOutput());
-  m.Diffuse = { m.Diffuse.x * mean.x, m.Diffuse.y * mean.y, m.Diffuse.z * mean.z };
+  warnings.push_back("the emissive texture '" + m.EmissiveTexture + "' of material '" + m.Name + "' " + why +
+    "; its Ke alone is used");
 }
 
 } // namespace
@@ -164,6 +187,10 @@ std::string ReadObjTexturedFrom(const std::string& path, const std::string& text
       continue;
     }
     used = *found;
+    if (!used.EmissiveTexture.empty())
+    {
+      ApplyEmissiveTexture(textureFolder, used, warnings);
+    }
     if (!used.DiffuseTexture.empty())
     {
       ApplyTexture(textureFolder, used, warnings);

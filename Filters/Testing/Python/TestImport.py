@@ -187,6 +187,15 @@ document["materials"][1]["emissiveTexture"] = {"index": 0}
 textured = relight.import_scene(write("textured.gltf", json.dumps(document)))
 emission = cell_array(textured, "Emission")[cell_array(textured, "LightId") == 0]
 check(np.allclose(emission, [2, 1, 0.5]), f"an emissive texture half white: (4, 2, 1) x 0.5 = (2, 1, 0.5), got {emission[0]}")
+# The same for an OBJ's map_Ke, the texture beside the file.
+with open(os.path.join(folder, "glow.png"), "wb") as f:
+    f.write(bytes(png.GetResult()))
+write("glow.mtl", "newmtl Floor\nKd 0.5 0.5 0.5\nnewmtl Glow\nKe 4 2 1\nmap_Ke glow.png\n")
+glowing = relight.import_scene(write("glow.obj", "mtllib glow.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                                     "v 0.2 0.2 1\nv 0.2 0.3 1\nv 0.3 0.3 1\nusemtl Floor\nf 1 2 3 4\n"
+                                     "usemtl Glow\nf 5 6 7\n"))
+emission = cell_array(glowing, "Emission")[cell_array(glowing, "LightId") == 0]
+check(np.allclose(emission, [2, 1, 0.5]), f"an OBJ's map_Ke half white: Ke (4, 2, 1) x 0.5, got {emission}")
 
 # A file without scenes lists every node; children must come once, with their parent. A
 # mirroring scale turns faces inside out unless the corners are reversed (glTF 2.0, 3.7.4).

@@ -46,11 +46,12 @@ TEST(SceneImport, TextFromAFileBecomesValidUtf8ByteForByte)
   EXPECT_EQ(ValidUtf8(std::string("a\0b", 3)), std::string("a\0b", 3));
 }
 
-TEST(SceneImport, MtlGivesDiffuseEmissiveAndTexture)
+TEST(SceneImport, MtlGivesDiffuseEmissiveAndTextures)
 {
   std::vector<ImportMaterial> m;
   const std::string text = "# comment\r\nnewmtl Kiefer, glänzend\r\nKd 0.5 0.4 0.3\r\nKs 1 1 1\r\n"
-                           "newmtl Lamp\nKe 4 4 3\nKd 0.2\nmap_Kd -s 1 1 1 wood grain.png\nnewmtl Kiefer, glänzend\nKd 0 0 0\n";
+                           "newmtl Lamp\nKe 4 4 3\nKd 0.2\nmap_Kd -s 1 1 1 wood grain.png\nmap_Ke -o 0 0 0 glow.png\n"
+                           "newmtl Kiefer, glänzend\nKd 0 0 0\n";
   ASSERT_EQ(ParseMtl(text, m), "");
   ASSERT_EQ(m.size(), 2u);
   EXPECT_EQ(m[0].Name, "Kiefer, glänzend");
@@ -58,6 +59,8 @@ TEST(SceneImport, MtlGivesDiffuseEmissiveAndTexture)
   EXPECT_DOUBLE_EQ(m[1].Emissive.z, 3);
   EXPECT_DOUBLE_EQ(m[1].Diffuse.x, 0.2);            // one number: grey
   EXPECT_EQ(m[1].DiffuseTexture, "grain.png");      // the last word after the options
+  EXPECT_EQ(m[1].EmissiveTexture, "glow.png");
+  EXPECT_EQ(m[0].EmissiveTexture, "");
   EXPECT_NE(ParseMtl("newmtl a\nKd 0.5 nan 0.5\n", m).find("line 2"), std::string::npos);
   EXPECT_NE(ParseMtl("Kd 1 1 1\n", m).find("before any newmtl"), std::string::npos);
   EXPECT_NE(ParseMtl("newmtl a\nKd 0.5 0.5\n", m).find("one or three"), std::string::npos);
