@@ -6,6 +6,8 @@ elements), while on an open ground most of it escapes."""
 import os
 import tempfile
 
+import warnings
+
 import numpy as np
 
 import relight
@@ -64,6 +66,19 @@ for facing, floor in ((1, -1e-3), (-1, 0.0)):
     flat = relight.in_room(relight.make_scene([square], [(0.5, 0.5, 0.5)], [-1]))
     check(abs(flat.GetBounds()[2] - floor) < 1e-12,
           f"a flat model facing {'up' if facing > 0 else 'down'}: the floor at {flat.GetBounds()[2]:g} ({floor:g})")
+# A lamp typed in another unit (cm for a model in m: 99 up, 30 wide) is not a wall of the
+# room: the room is made around the model's surfaces, and the lamp outside it is said.
+with warnings.catch_warnings(record=True) as said:
+    warnings.simplefilter("always")
+    astray = relight.in_room(relight.mark_lights(model, relight.area_light("Key", centre=(0, 99, 0), normal=(0, -1, 0),
+                                                                           size=30)))
+check(np.allclose(astray.GetBounds(), (-15, 15, 0, 99, -15, 15)) and len(said) == 1 and "'Key'" in str(said[0].message)
+      and "another unit" in str(said[0].message) and np.allclose(relight.cell_array(astray, "LightId")[-6:], -1),
+      "a lamp 99 m over a 0.5 m model: the room around the model, the lamp said "
+      f"({[str(w.message)[:90] for w in said]})")
+room_of_model = [astray.GetCell(c) for c in range(astray.GetNumberOfCells() - 6, astray.GetNumberOfCells())]
+top = max(astray.GetPoint(cell.GetPointId(k))[1] for cell in room_of_model for k in range(4))
+check(abs(top - 1.0) < 1e-9, f"the room's ceiling is the model's room's (1.0), not the lamp's: {top}")
 names = lambda d: sorted(d.GetCellData().GetArrayName(i) for i in range(d.GetCellData().GetNumberOfArrays()))
 check(names(room) == names(model), f"every cell array is kept ({names(room)})")
 lit = relight.mark_lights(room, lamp)

@@ -54,8 +54,11 @@ def in_room(model, margin=1.0, up="y", reflectance=(0.7, 0.7, 0.7), floor_reflec
     model with a face in its lowest plane (flat, or on a base plate) is set a thousandth of
     its size above the floor, so that the two do not overlap.
     Every cell array of the model is kept (the room's cells: LightId -1, no Emission, the
-    given Reflectance, zeros elsewhere), and its field arrays (LightNames) too."""
+    given Reflectance, zeros elsewhere), and its field arrays (LightNames) too. The room is
+    made around the model's surfaces; a lamp of the model outside it is said (a
+    RuntimeWarning: in another unit?)."""
     low, high = _room_box(model, margin, up)
+    _say_lamps_outside(model, low, high)
     room = _box_faces(low, high, AXES[up], reflectance, floor_reflectance or reflectance)
     return _merged(model, room)
 
@@ -79,8 +82,7 @@ def _room_box(model, margin, up):
     if not model.GetCellData().GetArray("Reflectance"):
         raise ValueError("the model has no cell array 'Reflectance' (import it with relight.import_scene "
                          "or build it with relight.make_scene)")
-    b = model.GetBounds()
-    lo, hi = [b[0], b[2], b[4]], [b[1], b[3], b[5]]
+    lo, hi = _surface_bounds(model)
     extent = max(h - l for l, h in zip(lo, hi))
     if not extent > 0:
         raise ValueError("the model has no extent")
@@ -93,6 +95,53 @@ def _room_box(model, margin, up):
         # both would take the same light: the floor goes a thousandth of the size lower.
         room_lo[axis] -= 1e-3 * extent
     return room_lo, room_hi
+
+
+def _points_and_cells(model, lamps):
+    """The model's points (numpy) and the corner ids of each of its lamps' cells (LightId >=
+    0; `lamps` True) or of each of its surfaces' cells, with each cell's LightId."""
+    import numpy as np
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+
+    points = vtk_to_numpy(model.GetPoints().GetData()).astype(float)
+    polys = model.GetPolys()
+    offsets = vtk_to_numpy(polys.GetOffsetsArray()).astype(np.int64)
+    corners = vtk_to_numpy(polys.GetConnectivityArray()).astype(np.int64)
+    ids = model.GetCellData().GetArray("LightId")
+    if model.GetNumberOfCells() != len(offsets) - 1 or not ids:  # not polygons alone, or no lights
+        return points, ([] if lamps else [np.arange(len(points))]), []
+    light = vtk_to_numpy(ids).reshape(-1).astype(int)
+    chosen = [c for c in range(len(light)) if (light[c] >= 0) == lamps]
+    return points, [corners[offsets[c]:offsets[c + 1]] for c in chosen], [light[c] for c in chosen]
+
+
+def _surface_bounds(model):
+    """The bounds of the model's surfaces, its lamps left out: a lamp placed in another unit
+    would otherwise blow the room up around it."""
+    import numpy as np
+
+    points, cells, _ = _points_and_cells(model, lamps=False)
+    used = np.unique(np.concatenate(cells)) if cells else np.arange(len(points))
+    return list(points[used].min(axis=0)), list(points[used].max(axis=0))
+
+
+def _say_lamps_outside(model, low, high):
+    """Warns of the model's lamps that lie outside the room [low, high]: they would light
+    its outside only."""
+    import warnings
+    import numpy as np
+
+    points, cells, ids = _points_and_cells(model, lamps=True)
+    low, high = np.array(low) - 1e-9, np.array(high) + 1e-9
+    outside = sorted({i for i, cell in zip(ids, cells) if (points[cell] < low).any() or (points[cell] > high).any()})
+    if not outside:
+        return
+    names = model.GetFieldData().GetAbstractArray("LightNames")
+    named = ", ".join(repr(names.GetValue(i) if names and i < names.GetNumberOfValues() else str(i)) for i in outside)
+    span = ", ".join(f"{a:.4g}..{b:.4g}" for a, b in zip(low, high))
+    warnings.warn(f"light {named} lies outside the room made around the model ({span}) and would light its "
+                  "outside only. Is it in another unit than the model, or are its coordinates off?",
+                  RuntimeWarning, stacklevel=3)
 
 
 def _lies_in_plane(model, axis, level, tolerance):
@@ -172,10 +221,9 @@ def _span(model):
     """The model's span as the mesher measures a scene's: twice the largest distance of a
     corner from the corners' mean (turning the model does not change it)."""
     import numpy as np
-    from vtkmodules.util.numpy_support import vtk_to_numpy
 
-    points = vtk_to_numpy(model.GetPoints().GetData()).astype(float)
-    used = points[np.unique(vtk_to_numpy(model.GetPolys().GetConnectivityArray()))]
+    points, cells, _ = _points_and_cells(model, lamps=False)
+    used = points[np.unique(np.concatenate(cells))] if cells else points
     return float(2 * np.linalg.norm(used - used.mean(axis=0), axis=1).max())
 
 
