@@ -120,15 +120,21 @@ int vtkRadiosityMesher::FillInputPortInformation(int, vtkInformation* info)
 int vtkRadiosityMesher::RequestInformation(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
-  // The input has data here only if it executed before (a reader applied in ParaView).
-  // Every property change runs this pass; the suggestion changes only with the input.
-  vtkDataSet* given = vtkDataSet::GetData(inputVector[0]);
+  // The input has data here only if it executed before (a reader applied in ParaView);
+  // otherwise RequestData suggests, so that a script reads the suggestion after an update.
+  this->SuggestFor(vtkDataSet::GetData(inputVector[0]));
+  return 1;
+}
+
+void vtkRadiosityMesher::SuggestFor(vtkDataSet* given)
+{
+  // Every property change runs the information pass; the suggestion changes only with the input.
   vtkSmartPointer<vtkPolyData> surface = given && given->GetMTime() != this->SuggestedForInput ? AsPolyData(given) : nullptr;
   vtkPolyData* input = surface ? surface.Get() : vtkPolyData::SafeDownCast(given);
   const vtkMTimeType inputTime = given ? given->GetMTime() : 0;
   if (inputTime == this->SuggestedForInput)
   {
-    return 1;
+    return;
   }
   this->SuggestedForInput = inputTime;
   radiosity::SceneMesh& mesh = this->SeenInput->Mesh;
@@ -154,7 +160,6 @@ int vtkRadiosityMesher::RequestInformation(
   this->SuggestedElementSize = sizes.ElementSize;
   this->InputArea = sizes.Area;
   this->SuggestedElements = sizes.Elements;
-  return 1;
 }
 
 namespace
@@ -403,10 +408,15 @@ int vtkRadiosityMesher::RequestData(
     // Sizes from the scene are taken from all of it, so every rank meshes alike.
     // The information pass suggested for this very input already (the usual case).
     vtkDataSet* given = vtkDataSet::GetData(inputVector[0]);
+    if (!parallel)
+    {
+      this->SuggestFor(given);
+    }
     const bool suggested = !parallel && given && given->GetMTime() == this->SuggestedForInput && this->SuggestedPatchSize > 0;
     this->ResolveSizes(this->PatchSize > 0 ? 0.0
         : suggested                         ? this->SuggestedPatchSize
                                             : SuggestedPatch(parallel ? &whole : nullptr, input));
+    this->MesherPatchSize = this->MesherElementSize = 0.0; // until this run has meshed
     const double elementSize = parallel && this->MaximumElements > 0
       ? ElementSizeEverywhere(this, parallel, input, wholeScene, warnings)
       : this->ElementSizeInUse;
@@ -436,6 +446,8 @@ int vtkRadiosityMesher::RequestData(
       return 1;
     }
     WriteMeshed(output, input, meshed, firstPatch, this->PatchSizeInUse, wholeScene.PointQuantum, warnings);
+    this->MesherPatchSize = this->PatchSizeInUse;
+    this->MesherElementSize = meshed.elementSize;
     return 1;
   });
 }

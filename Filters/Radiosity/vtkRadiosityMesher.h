@@ -54,6 +54,11 @@ public:
   /// before any MaximumElements cut, which the field array MesherElementSize reports).
   vtkGetMacro(PatchSizeInUse, double);
   vtkGetMacro(ElementSizeInUse, double);
+  /// The sizes the last run meshed with (its field arrays MesherPatchSize and
+  /// MesherElementSize; the element coarser than ElementSizeInUse where MaximumElements
+  /// asked for it); 0 before a run.
+  vtkGetMacro(MesherPatchSize, double);
+  vtkGetMacro(MesherElementSize, double);
   ///@}
 
   ///@{
@@ -126,6 +131,11 @@ private:
   double ElementSize = 0.0;
   double PatchSizeInUse = 0.0;
   double ElementSizeInUse = 0.0;
+  double MesherPatchSize = 0.0;
+  double MesherElementSize = 0.0;
+  /// The suggested sizes, area and element count for `given` (all 0 where it has no data
+  /// yet), once per input.
+  void SuggestFor(vtkDataSet* given);
   /// PatchSizeInUse and ElementSizeInUse, given the scene's suggested patch size (0: none).
   void ResolveSizes(double suggestedPatch);
   vtkIdType MaximumElements = 0;

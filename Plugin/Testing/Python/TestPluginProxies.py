@@ -212,6 +212,13 @@ def main(argv):
     check([unsized.PatchSize, unsized.ElementSize] == [0.0, 0.0] and used == [100.0, 25.0],
           "a mesher on a reader that has not run meshes at %s (properties %s, %s); expected 100, 25 mm"
           % (used, unsized.PatchSize, unsized.ElementSize))
+    # ...and after the update the script reads what was suggested and what was used.
+    unsized.UpdatePropertyInformation()
+    check([unsized.SuggestedPatchSize, unsized.SuggestedElementSize, unsized.MesherPatchSize,
+           unsized.MesherElementSize] == [100.0, 25.0, 100.0, 25.0] and unsized.SuggestedElements > 0,
+          "after an update the mesher reads suggested %s, %s (%s elements), used %s, %s; expected 100, 25 mm"
+          % (unsized.SuggestedPatchSize, unsized.SuggestedElementSize, unsized.SuggestedElements,
+             unsized.MesherPatchSize, unsized.MesherElementSize))
     for proxy in (unsized, fresh):
         Delete(proxy)
 
