@@ -204,7 +204,7 @@ void AddLightFields(vtkAlgorithm* self, vtkFieldData* fields, const SceneInput& 
 }
 
 void AddStatusFields(vtkFieldData* fields, const std::vector<radiosity::EffectDecision>& effects,
-  const radiosity::SolverStatistics& stats, bool aborted)
+  const radiosity::SolverStatistics& stats, bool aborted, double seconds)
 {
   std::vector<std::string> names, decisions, reasons;
   for (const radiosity::EffectDecision& e : effects)
@@ -218,6 +218,10 @@ void AddStatusFields(vtkFieldData* fields, const std::vector<radiosity::EffectDe
   AddStrings(fields, "EffectReasons", reasons);
   AddStrings(fields, "SolverMethod", { radiosity::DescribeSolve(stats) });
   AddStrings(fields, "SolverStatus", { DescribeStatus(stats, aborted) });
+  vtkNew<vtkDoubleArray> took;
+  took->SetName("SolveSeconds");
+  took->InsertNextValue(seconds);
+  fields->AddArray(took);
   vtkNew<vtkDoubleArray> unshot;
   unshot->SetName("UnshotHistory");
   for (double r : stats.RemainingHistory)

@@ -51,9 +51,10 @@ void AddSolutionArrays(vtkPolyData* output, const SceneInput& scene, const radio
 void AddLightFields(vtkAlgorithm* self, vtkFieldData* fields, const SceneInput& scene,
   const std::vector<std::string>& names, vtkRadiosityAdapter::WarningList& warnings);
 
-/// Effects, EffectDecisions, EffectReasons, SolverMethod, SolverStatus and UnshotHistory.
+/// Effects, EffectDecisions, EffectReasons, SolverMethod, SolverStatus, SolveSeconds (what
+/// the solve took, beside the estimate in SolverMethod) and UnshotHistory.
 void AddStatusFields(vtkFieldData* fields, const std::vector<radiosity::EffectDecision>& effects,
-  const radiosity::SolverStatistics& stats, bool aborted);
+  const radiosity::SolverStatistics& stats, bool aborted, double seconds);
 
 /// The convergence table: Shot, Time, Remaining and Remaining_<name> per solution.
 void FillHistory(vtkTable* history, const radiosity::SolverStatistics& stats, const std::vector<std::string>& names,

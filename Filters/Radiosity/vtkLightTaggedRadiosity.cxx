@@ -313,7 +313,7 @@ int vtkLightTaggedRadiosity::WriteResult(vtkPolyData* input, vtkPolyData* output
     output->Initialize();
     return 0;
   }
-  steps::AddStatusFields(fields, effects, stats, aborted);
+  steps::AddStatusFields(fields, effects, stats, aborted, this->LastSolveSeconds);
   steps::LogSolve(stats, this->LastSolveSeconds, scene.Mesh.NumberOfPolygons(), rank, effects);
   warnings.AddTo(fields, true); // the lights checked here again, on the mesh
   output->SetFieldData(fields);

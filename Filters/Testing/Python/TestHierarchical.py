@@ -142,8 +142,12 @@ check(watched.GetLastConverged() and max(solver_reports) > 0.9 and progress == s
 
 # Auto: the links from a few thousand element-patch pairs (the paper scene at 1.0 / 0.5:
 # 476 elements, 130 patches, 4.5 x faster than progressive refinement), progressive below.
-auto = relight.solve(scene, 1.0, 0.5).GetOutput().GetFieldData().GetAbstractArray("SolverMethod").GetValue(0)
+chosen = relight.solve(scene, 1.0, 0.5)
+auto = chosen.GetOutput().GetFieldData().GetAbstractArray("SolverMethod").GetValue(0)
 check(auto.startswith("Hierarchical") and "chosen by Auto" in auto, f"Auto on the paper scene: '{auto}'")
+took = chosen.GetOutput().GetFieldData().GetArray("SolveSeconds")
+check(took is not None and took.GetValue(0) == chosen.GetLastSolveSeconds() > 0,
+      "SolveSeconds says what the solve took, beside the estimate in SolverMethod")
 tiny = relight.solve(scene, 8.0, 8.0).GetOutput().GetFieldData().GetAbstractArray("SolverMethod").GetValue(0)
 check(tiny.startswith("Progressive") and "< 5000" in tiny, f"Auto on a few dozen elements: '{tiny}'")
 finish("TestHierarchical")
