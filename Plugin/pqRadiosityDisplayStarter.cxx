@@ -144,15 +144,17 @@ void pqRadiosityDisplayStarter::ShowRelitSurface(pqDataRepresentation* represent
 void pqRadiosityDisplayStarter::LeaveRelitToColor(pqDataRepresentation* representation)
 {
   // Relit Surface draws the relit picture whatever the coloring says (the toolbar reads
-  // Solid Color, ParaView's "no array"), Relit Colors the filter's DisplayColors: another
-  // coloring picked while they are shown would change nothing, so it is shown on the plain
-  // Surface. The relit picture is one choice away again.
+  // Solid Color, ParaView's "no array"), Relit Colors the filter's DisplayColors: an array
+  // picked while they are shown would change nothing, so it is shown on the plain Surface.
+  // The relit picture is one choice away again.
   vtkSMProxy* proxy = representation->getProxy();
   vtkSMPropertyHelper type(proxy, "Representation", /*quiet=*/true);
   const QString shown = QString::fromUtf8(type.GetAsString() ? type.GetAsString() : "");
   const char* array = vtkSMPropertyHelper(proxy, "ColorArrayName", /*quiet=*/true).GetInputArrayNameToProcess();
-  const bool relitColors = shown == QLatin1String("Relit Colors") && QString::fromUtf8(array ? array : "") != RelitArray;
-  if (shown != QLatin1String("Relit Surface") && !relitColors)
+  const QString picked = QString::fromUtf8(array ? array : "");
+  // Solid Color ("no array") is what these representations show anyway: it stays.
+  const bool relit = shown == QLatin1String("Relit Surface") || shown == QLatin1String("Relit Colors");
+  if (!relit || picked.isEmpty() || picked == RelitArray)
   {
     return;
   }

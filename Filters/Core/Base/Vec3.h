@@ -35,6 +35,8 @@ inline Vec3& operator+=(Vec3& a, const Vec3& b)
   a.z += b.z;
   return a;
 }
+/// Channel by channel: a color times a filter (a reflectance, a texture's mean).
+inline Vec3 Times(const Vec3& a, const Vec3& b) { return { a.x * b.x, a.y * b.y, a.z * b.z }; }
 inline double Dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 inline Vec3 Cross(const Vec3& a, const Vec3& b)
 {

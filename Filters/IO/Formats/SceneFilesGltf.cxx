@@ -227,11 +227,6 @@ radiosity::Vec3 TextureMean(const Loader::Model& model, int texture)
                                                                       : radiosity::Vec3{ 1, 1, 1 };
 }
 
-radiosity::Vec3 Times(const radiosity::Vec3& a, const radiosity::Vec3& b)
-{
-  return { a.x * b.x, a.y * b.y, a.z * b.z };
-}
-
 void ReadMaterials(const nlohmann::json& document, const Loader::Model& model, radiosity::RawScene& raw)
 {
   const std::vector<double> strength = EmissiveStrengths(document, model.Materials.size());
@@ -242,9 +237,9 @@ void ReadMaterials(const nlohmann::json& document, const Loader::Model& model, r
     material.Name = source.Name.empty() ? "material " + std::to_string(m) : source.Name;
     // glTF's default base color is white. A texture counts by its mean: radiosity holds one
     // color per element (an emissive texture's dark parts dim the lamp, as they would).
-    material.Diffuse = Times(Rgb(source.PbrMetallicRoughness.BaseColorFactor, { 1, 1, 1 }),
+    material.Diffuse = radiosity::Times(Rgb(source.PbrMetallicRoughness.BaseColorFactor, { 1, 1, 1 }),
       TextureMean(model, source.PbrMetallicRoughness.BaseColorTexture.Index));
-    material.Emissive = Times(Rgb(source.EmissiveFactor, {}), TextureMean(model, source.EmissiveTexture.Index)) * strength[m];
+    material.Emissive = radiosity::Times(Rgb(source.EmissiveFactor, {}), TextureMean(model, source.EmissiveTexture.Index)) * strength[m];
     raw.materials.push_back(material);
   }
 }

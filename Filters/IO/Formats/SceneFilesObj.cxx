@@ -127,7 +127,7 @@ void ApplyTexture(const std::string& folder, radiosity::ImportMaterial& m, std::
   std::string why;
   if (TextureMean(folder, m.DiffuseTexture, mean, why))
   {
-    m.Diffuse = { m.Diffuse.x * mean.x, m.Diffuse.y * mean.y, m.Diffuse.z * mean.z };
+    m.Diffuse = radiosity::Times(m.Diffuse, mean);
     return;
   }
   const bool white = White(m.Diffuse);
@@ -144,7 +144,7 @@ void ApplyEmissiveTexture(const std::string& folder, radiosity::ImportMaterial& 
   std::string why;
   if (TextureMean(folder, m.EmissiveTexture, mean, why))
   {
-    m.Emissive = { m.Emissive.x * mean.x, m.Emissive.y * mean.y, m.Emissive.z * mean.z };
+    m.Emissive = radiosity::Times(m.Emissive, mean);
     return;
   }
   warnings.push_back("the emissive texture '" + m.EmissiveTexture + "' of material '" + m.Name + "' " + why +

@@ -76,6 +76,11 @@ check(np.allclose(astray.GetBounds(), (-15, 15, 0, 99, -15, 15)) and len(said) =
       and "another unit" in str(said[0].message) and np.allclose(relight.cell_array(astray, "LightId")[-6:], -1),
       "a lamp 99 m over a 0.5 m model: the room around the model, the lamp said "
       f"({[str(w.message)[:90] for w in said]})")
+with warnings.catch_warnings(record=True) as said:  # a lamp 2 m over the 0.5 m model is meant: the room holds it
+    warnings.simplefilter("always")
+    over = relight.in_room(relight.mark_lights(model, relight.area_light("Over", centre=(0, 2.5, 0), normal=(0, -1, 0),
+                                                                         size=0.2)))
+check(not said and over.GetBounds()[3] > 2.5, f"a lamp 2 m over the model: in the room ({over.GetBounds()}), unsaid")
 room_of_model = [astray.GetCell(c) for c in range(astray.GetNumberOfCells() - 6, astray.GetNumberOfCells())]
 top = max(astray.GetPoint(cell.GetPointId(k))[1] for cell in room_of_model for k in range(4))
 check(abs(top - 1.0) < 1e-9, f"the room's ceiling is the model's room's (1.0), not the lamp's: {top}")

@@ -55,10 +55,11 @@ def in_room(model, margin=1.0, up="y", reflectance=(0.7, 0.7, 0.7), floor_reflec
     its size above the floor, so that the two do not overlap.
     Every cell array of the model is kept (the room's cells: LightId -1, no Emission, the
     given Reflectance, zeros elsewhere), and its field arrays (LightNames) too. The room is
-    made around the model's surfaces; a lamp of the model outside it is said (a
-    RuntimeWarning: in another unit?)."""
+    made around the model's surfaces and the lamps near them; a lamp far outside (more than
+    ten times the model's extent away: in another unit?) is left out and said (a
+    RuntimeWarning)."""
     low, high = _room_box(model, margin, up)
-    _say_lamps_outside(model, low, high)
+    _say_lamps_outside(model, _room_bounds(model)[2], low, high)
     room = _box_faces(low, high, AXES[up], reflectance, floor_reflectance or reflectance)
     return _merged(model, room)
 
@@ -82,7 +83,7 @@ def _room_box(model, margin, up):
     if not model.GetCellData().GetArray("Reflectance"):
         raise ValueError("the model has no cell array 'Reflectance' (import it with relight.import_scene "
                          "or build it with relight.make_scene)")
-    lo, hi = _surface_bounds(model)
+    lo, hi, _ = _room_bounds(model)
     extent = max(h - l for l, h in zip(lo, hi))
     if not extent > 0:
         raise ValueError("the model has no extent")
@@ -97,9 +98,9 @@ def _room_box(model, margin, up):
     return room_lo, room_hi
 
 
-def _points_and_cells(model, lamps):
-    """The model's points (numpy) and the corner ids of each of its lamps' cells (LightId >=
-    0; `lamps` True) or of each of its surfaces' cells, with each cell's LightId."""
+def _corners_by_light(model):
+    """The model's points (numpy), its cells' corner ids, and each corner's cell's LightId
+    (-1 for all where the model has no LightId or holds more than polygons)."""
     import numpy as np
     from vtkmodules.util.numpy_support import vtk_to_numpy
 
@@ -108,39 +109,44 @@ def _points_and_cells(model, lamps):
     offsets = vtk_to_numpy(polys.GetOffsetsArray()).astype(np.int64)
     corners = vtk_to_numpy(polys.GetConnectivityArray()).astype(np.int64)
     ids = model.GetCellData().GetArray("LightId")
-    if model.GetNumberOfCells() != len(offsets) - 1 or not ids:  # not polygons alone, or no lights
-        return points, ([] if lamps else [np.arange(len(points))]), []
-    light = vtk_to_numpy(ids).reshape(-1).astype(int)
-    chosen = [c for c in range(len(light)) if (light[c] >= 0) == lamps]
-    return points, [corners[offsets[c]:offsets[c + 1]] for c in chosen], [light[c] for c in chosen]
+    if ids is None or model.GetNumberOfCells() != len(offsets) - 1:
+        return points, corners, np.full(len(corners), -1)
+    return points, corners, np.repeat(vtk_to_numpy(ids).reshape(-1).astype(np.int64), np.diff(offsets))
 
 
-def _surface_bounds(model):
-    """The bounds of the model's surfaces, its lamps left out: a lamp placed in another unit
-    would otherwise blow the room up around it."""
+def _room_bounds(model, reach=10.0):
+    """The bounds the room is made around: the model's surfaces, and its lamps that lie
+    within `reach` x the surfaces' extent of them (a lamp over a small part); the lamps
+    farther out (typed in another unit) are left out and returned as [(id, lo, hi)]."""
     import numpy as np
 
-    points, cells, _ = _points_and_cells(model, lamps=False)
-    used = np.unique(np.concatenate(cells)) if cells else np.arange(len(points))
-    return list(points[used].min(axis=0)), list(points[used].max(axis=0))
+    points, corners, light = _corners_by_light(model)
+    surface = corners[light < 0] if (light < 0).any() else corners
+    lo, hi = points[surface].min(axis=0), points[surface].max(axis=0)
+    extent = float((hi - lo).max())
+    astray = []
+    for lamp in np.unique(light[light >= 0]):
+        at = points[corners[light == lamp]]
+        if (at.min(axis=0) < lo - reach * extent).any() or (at.max(axis=0) > hi + reach * extent).any():
+            astray.append((int(lamp), at.min(axis=0), at.max(axis=0)))
+        else:
+            lo, hi = np.minimum(lo, at.min(axis=0)), np.maximum(hi, at.max(axis=0))
+    return list(lo), list(hi), astray
 
 
-def _say_lamps_outside(model, low, high):
-    """Warns of the model's lamps that lie outside the room [low, high]: they would light
-    its outside only."""
+def _say_lamps_outside(model, astray, low, high):
+    """Warns of the model's lamps left out of the room [low, high]: they would light its
+    outside only."""
     import warnings
-    import numpy as np
 
-    points, cells, ids = _points_and_cells(model, lamps=True)
-    low, high = np.array(low) - 1e-9, np.array(high) + 1e-9
-    outside = sorted({i for i, cell in zip(ids, cells) if (points[cell] < low).any() or (points[cell] > high).any()})
-    if not outside:
+    if not astray:
         return
     names = model.GetFieldData().GetAbstractArray("LightNames")
-    named = ", ".join(repr(names.GetValue(i) if names and i < names.GetNumberOfValues() else str(i)) for i in outside)
+    named = ", ".join(repr(names.GetValue(i) if names and i < names.GetNumberOfValues() else str(i))
+                      for i, _, _ in astray)
     span = ", ".join(f"{a:.4g}..{b:.4g}" for a, b in zip(low, high))
-    warnings.warn(f"light {named} lies outside the room made around the model ({span}) and would light its "
-                  "outside only. Is it in another unit than the model, or are its coordinates off?",
+    warnings.warn(f"light {named} lies far outside the model and the room made around it ({span}) and would light "
+                  "its outside only. Is it in another unit than the model, or are its coordinates off?",
                   RuntimeWarning, stacklevel=3)
 
 
@@ -219,11 +225,12 @@ def _merged(model, faces):
 
 def _span(model):
     """The model's span as the mesher measures a scene's: twice the largest distance of a
-    corner from the corners' mean (turning the model does not change it)."""
+    corner from the corners' mean (turning the model does not change it); its lamps left
+    out, so that a lamp's size does not set the model's elements."""
     import numpy as np
 
-    points, cells, _ = _points_and_cells(model, lamps=False)
-    used = points[np.unique(np.concatenate(cells))] if cells else points
+    points, corners, light = _corners_by_light(model)
+    used = points[np.unique(corners[light < 0] if (light < 0).any() else corners)]
     return float(2 * np.linalg.norm(used - used.mean(axis=0), axis=1).max())
 
 

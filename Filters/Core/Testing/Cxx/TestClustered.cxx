@@ -284,7 +284,7 @@ TEST(Clustered, HundredThousandTriangleSphereRoomSolves)
 TEST(Clustered, AutoPicksItWhereItsEstimatedCostIsLower)
 {
   // 21,600 patches of one element each: every polygon would be a shooter (about 47 s of
-  // links against 1.4 s of clusters by Auto's estimate). A box of as many elements in 600
+  // links against about 2 s of clusters by Auto's estimate). A box of as many elements in 600
   // patches stays hierarchical. (A budget of nothing: only the choice counts.)
   SolverOptions automatic = Converged(1e-3);
   automatic.TimeBudget = 1e-9;
