@@ -12,6 +12,7 @@
 #include "vtkPVDataInformation.h"
 #include "vtkPVDataSetAttributesInformation.h"
 #include "vtkSMPVRepresentationProxy.h"
+#include "vtkSMRadiosityRelightProxy.h"
 #include "vtkSMSession.h"
 #include "vtkSMPropertyHelper.h"
 #include "vtkSMTransferFunctionManager.h"
@@ -51,6 +52,9 @@ pqRadiosityDisplayStarter::pqRadiosityDisplayStarter(QObject* parent)
 
 void pqRadiosityDisplayStarter::startup()
 {
+  // The lights panel shows the settings in effect and stores only the user's changes: no
+  // copy of the data's lights into the property (that is for scripts).
+  vtkSMRadiosityRelightProxy::SetShowDataLights(false);
   pqServerManagerModel* model = pqApplicationCore::instance()->getServerManagerModel();
   QObject::connect(model, &pqServerManagerModel::representationAdded, this,
     &pqRadiosityDisplayStarter::onRepresentationAdded);

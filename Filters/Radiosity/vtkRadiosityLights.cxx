@@ -31,6 +31,11 @@ void vtkRadiosityLights::SetLightEnabled(int light, bool enabled)
   this->Modified();
 }
 
+int vtkRadiosityLights::GetNumberOfLightSettings() const
+{
+  return static_cast<int>(this->Settings->ByName.size());
+}
+
 void vtkRadiosityLights::SetLightSetting(const char* name, double r, double g, double b, double intensity, int enabled)
 {
   if (!name)

@@ -45,6 +45,8 @@ public:
   /// Per-light settings by name, all at once (ParaView's repeatable property).
   void SetLightSetting(const char* name, double r, double g, double b, double intensity, int enabled);
   void ClearLightSettings();
+  /// How many lights have a setting by name (the rest keep their defaults).
+  int GetNumberOfLightSettings() const;
   ///@}
 
   /// Forget every setting made by index or by name (the schedule stays).

@@ -463,6 +463,11 @@ int vtkRadiosityRelight::GetNumberOfLights() const
   return static_cast<int>(this->Internal->Names.size());
 }
 
+int vtkRadiosityRelight::GetNumberOfLightSettings() const
+{
+  return this->Lights->GetNumberOfLightSettings();
+}
+
 const char* vtkRadiosityRelight::GetLightName(int light) const
 {
   return light >= 0 && light < this->GetNumberOfLights() ? this->Internal->Names[light].c_str() : nullptr;

@@ -138,6 +138,8 @@ public:
   ///@{
   /// The lights found by the last execution and their effective settings.
   int GetNumberOfLights() const;
+  /// How many lights have a setting by name of their own (the rest keep their defaults).
+  int GetNumberOfLightSettings() const;
   const char* GetLightName(int light) const;
   /// The names as a string array (ParaView's LightNamesInfo).
   vtkStringArray* GetLightNames();

@@ -25,8 +25,39 @@ vtkSMRadiosityRelightProxy::vtkSMRadiosityRelightProxy() = default;
 
 vtkSMRadiosityRelightProxy::~vtkSMRadiosityRelightProxy() = default;
 
+namespace
+{
+bool Showing = true;
+}
+
+void vtkSMRadiosityRelightProxy::SetShowDataLights(bool show)
+{
+  Showing = show;
+}
+
+std::vector<std::string> vtkSMRadiosityRelightProxy::QuietSet(
+  vtkSMProxy* proxy, const std::vector<std::string>& from, const std::vector<std::string>& to)
+{
+  auto* settings = vtkSMStringVectorProperty::SafeDownCast(proxy->GetProperty("LightSettings"));
+  if (!settings || from.empty() || settings->GetElements() != from)
+  {
+    return {};
+  }
+  QuietProperty::Set(settings, to);
+  return from;
+}
+
+vtkPVXMLElement* vtkSMRadiosityRelightProxy::SaveXMLState(vtkPVXMLElement* root, vtkSMPropertyIterator* iter)
+{
+  return SaveWithoutCopy(this, this->Copied, [&]() { return this->Superclass::SaveXMLState(root, iter); });
+}
+
 void vtkSMRadiosityRelightProxy::ShowDataLights(vtkSMProxy* proxy, std::vector<std::string>& copied)
 {
+  if (!Showing)
+  {
+    return;
+  }
   auto* settings = vtkSMStringVectorProperty::SafeDownCast(proxy->GetProperty("LightSettings"));
   auto* info = settings ? vtkSMStringVectorProperty::SafeDownCast(settings->GetInformationProperty()) : nullptr;
   if (!info || settings->GetElements() != copied)

@@ -10,6 +10,10 @@
  * lights stay at their defaults there: a new solve with new emission still shows its own
  * colors, and the copy follows it. vtkSMRadiosityRelitRepresentationProxy does the same for
  * Relit Surface's RelitLightSettings.
+ *
+ * Not in the GUI, whose lights panel shows the settings in effect itself and stores only
+ * what the user changes (the plugin's GUI part turns the copy off); and a copy is not
+ * saved in a state file (it would come back as settings of the user's).
  */
 #ifndef vtkSMRadiosityRelightProxy_h
 #define vtkSMRadiosityRelightProxy_h
@@ -31,6 +35,22 @@ public:
   /// `copied` (the last copy: anything else is the user's), without telling the filter.
   static void ShowDataLights(vtkSMProxy* proxy, std::vector<std::string>& copied);
 
+  /// Whether ShowDataLights copies (on by default; the GUI turns it off).
+  static void SetShowDataLights(bool show);
+
+  /// Saves `proxy`'s state as `save` does, without Light Settings where they still hold
+  /// only the copy `copied`.
+  template <typename Save>
+  static vtkPVXMLElement* SaveWithoutCopy(vtkSMProxy* proxy, const std::vector<std::string>& copied, Save save);
+
+  using Superclass::SaveXMLState;
+  vtkPVXMLElement* SaveXMLState(vtkPVXMLElement* root, vtkSMPropertyIterator* iter) override;
+
+  /// Where `proxy`'s Light Settings equal `from`, sets them to `to` without ModifiedEvent
+  /// and returns `from`; else changes nothing and returns an empty list.
+  static std::vector<std::string> QuietSet(
+    vtkSMProxy* proxy, const std::vector<std::string>& from, const std::vector<std::string>& to);
+
 protected:
   vtkSMRadiosityRelightProxy();
   ~vtkSMRadiosityRelightProxy() override;
@@ -44,5 +64,15 @@ private:
   /// What was last copied from the data: Light Settings still equal to it are not the user's.
   std::vector<std::string> Copied;
 };
+
+template <typename Save>
+vtkPVXMLElement* vtkSMRadiosityRelightProxy::SaveWithoutCopy(
+  vtkSMProxy* proxy, const std::vector<std::string>& copied, Save save)
+{
+  const std::vector<std::string> kept = QuietSet(proxy, copied, {});
+  vtkPVXMLElement* saved = save();
+  QuietSet(proxy, {}, kept);
+  return saved;
+}
 
 #endif

@@ -15,6 +15,13 @@ void vtkSMRadiosityRelitRepresentationProxy::ViewUpdated(vtkSMProxy* view)
   vtkSMRadiosityRelightProxy::ShowDataLights(this, this->Copied);
 }
 
+vtkPVXMLElement* vtkSMRadiosityRelitRepresentationProxy::SaveXMLState(
+  vtkPVXMLElement* root, vtkSMPropertyIterator* iter)
+{
+  return vtkSMRadiosityRelightProxy::SaveWithoutCopy(
+    this, this->Copied, [&]() { return this->Superclass::SaveXMLState(root, iter); });
+}
+
 void vtkSMRadiosityRelitRepresentationProxy::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

@@ -22,6 +22,8 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   void ViewUpdated(vtkSMProxy* view) override;
+  using Superclass::SaveXMLState;
+  vtkPVXMLElement* SaveXMLState(vtkPVXMLElement* root, vtkSMPropertyIterator* iter) override;
 
 protected:
   vtkSMRadiosityRelitRepresentationProxy();

@@ -11,6 +11,7 @@ prints a line containing 'passed' on success.
 
 import math
 import os
+import xml.etree.ElementTree as ET
 import sys
 import tempfile
 
@@ -199,6 +200,18 @@ def main(argv):
           % (list(unset.LightSettings), list(unset.LightSettingsInfo)))
     UpdatePipeline(proxy=unset)
     check(unset.GetClientSideObject().GetMTime() == stamp, "reading the lights back modified the filter")
+    unset.Exposure = 2.0  # another property pushed: the copy must not go with it
+    UpdatePipeline(proxy=unset)
+    unset.UpdatePropertyInformation()
+    check(unset.NumberOfLightSettings == 0, "the copy reached the filter as %d settings of its own"
+          % unset.NumberOfLightSettings)
+    # A state file keeps what the user set, not the copy (it would come back as settings).
+    state = os.path.join(tempfile.mkdtemp(), "relight.pvsm")
+    SaveState(state)
+    saved = [p for p in ET.parse(state).getroot().iter("Property") if p.get("name") == "LightSettings"
+             and p.get("id", "").startswith(unset.GetGlobalIDAsString() + ".")]
+    values = [e.get("value") for p in saved for e in p.iter("Element")]
+    check(len(saved) == 1 and not values, "the state file holds the copied lights: %s" % values)
     Delete(unset)
     check(len(relight.LightSettings) == 6 and float(relight.LightSettings[4]) == INTENSITY,
           "the user's setting reads back %s after updates" % list(relight.LightSettings))
