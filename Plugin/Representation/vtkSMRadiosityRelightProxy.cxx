@@ -7,6 +7,8 @@ vtkStandardNewMacro(vtkSMRadiosityRelightProxy);
 
 namespace
 {
+bool Showing = true;
+
 /// Sets a property's values without its ModifiedEvent. ParaView keeps the switch for its
 /// own classes (protected); a member pointer taken through a subclass may call it.
 struct QuietProperty : vtkSMStringVectorProperty
@@ -19,66 +21,56 @@ struct QuietProperty : vtkSMStringVectorProperty
     (property->*block)(blocked);
   }
 };
+
+vtkSMStringVectorProperty* Settings(vtkSMProxy* proxy)
+{
+  return vtkSMStringVectorProperty::SafeDownCast(proxy->GetProperty("LightSettings"));
+}
 } // namespace
 
 vtkSMRadiosityRelightProxy::vtkSMRadiosityRelightProxy() = default;
 
 vtkSMRadiosityRelightProxy::~vtkSMRadiosityRelightProxy() = default;
 
-namespace
-{
-bool Showing = true;
-}
-
 void vtkSMRadiosityRelightProxy::SetShowDataLights(bool show)
 {
   Showing = show;
 }
 
-std::vector<std::string> vtkSMRadiosityRelightProxy::QuietSet(
-  vtkSMProxy* proxy, const std::vector<std::string>& from, const std::vector<std::string>& to)
-{
-  auto* settings = vtkSMStringVectorProperty::SafeDownCast(proxy->GetProperty("LightSettings"));
-  if (!settings || from.empty() || settings->GetElements() != from)
-  {
-    return {};
-  }
-  QuietProperty::Set(settings, to);
-  return from;
-}
-
 vtkPVXMLElement* vtkSMRadiosityRelightProxy::SaveXMLState(vtkPVXMLElement* root, vtkSMPropertyIterator* iter)
 {
-  return SaveWithoutCopy(this, this->Copied, [&]() { return this->Superclass::SaveXMLState(root, iter); });
-}
-
-void vtkSMRadiosityRelightProxy::ShowDataLights(vtkSMProxy* proxy, std::vector<std::string>& copied)
-{
-  if (!Showing)
+  vtkSMStringVectorProperty* settings = Settings(this);
+  const bool copy = settings && !this->Copied.empty() && settings->GetElements() == this->Copied;
+  if (copy)
   {
-    return;
+    QuietProperty::Set(settings, {});
   }
-  auto* settings = vtkSMStringVectorProperty::SafeDownCast(proxy->GetProperty("LightSettings"));
-  auto* info = settings ? vtkSMStringVectorProperty::SafeDownCast(settings->GetInformationProperty()) : nullptr;
-  if (!info || settings->GetElements() != copied)
+  vtkPVXMLElement* saved = this->Superclass::SaveXMLState(root, iter);
+  if (copy)
   {
-    return; // the user's own settings stay as they are
+    QuietProperty::Set(settings, this->Copied);
   }
-  proxy->UpdatePropertyInformation(info);
-  if (info->GetElements() == copied)
-  {
-    return;
-  }
-  copied = info->GetElements();
-  // Unannounced, so the proxy does not push the rows to the filter as settings of its own
-  // (which would pin today's defaults) and the GUI does not ask for an Apply.
-  QuietProperty::Set(settings, copied);
+  return saved;
 }
 
 void vtkSMRadiosityRelightProxy::PostUpdateData(bool usingCache)
 {
   this->Superclass::PostUpdateData(usingCache);
-  ShowDataLights(this, this->Copied);
+  vtkSMStringVectorProperty* settings = Settings(this);
+  auto* info = settings ? vtkSMStringVectorProperty::SafeDownCast(settings->GetInformationProperty()) : nullptr;
+  if (!Showing || !info || settings->GetElements() != this->Copied)
+  {
+    return; // the user's own settings stay as they are
+  }
+  this->UpdatePropertyInformation(info);
+  if (info->GetElements() == this->Copied)
+  {
+    return;
+  }
+  this->Copied = info->GetElements();
+  // Unannounced, so the proxy does not push the rows to the filter as settings of its own
+  // (which would pin today's defaults) and the GUI does not ask for an Apply.
+  QuietProperty::Set(settings, this->Copied);
 }
 
 void vtkSMRadiosityRelightProxy::PrintSelf(ostream& os, vtkIndent indent)

@@ -8,8 +8,8 @@
  * this proxy copies the settings in effect (LightSettingsInfo) into Light Settings, as
  * long as nobody has set that property. The copy is not sent back to the filter, so the
  * lights stay at their defaults there: a new solve with new emission still shows its own
- * colors, and the copy follows it. vtkSMRadiosityRelitRepresentationProxy does the same for
- * Relit Surface's RelitLightSettings.
+ * colors, and the copy follows it. (Not for Relit Surface's RelitLightSettings: the
+ * display's state is saved by ParaView's representation, which would keep the copy.)
  *
  * Not in the GUI, whose lights panel shows the settings in effect itself and stores only
  * what the user changes (the plugin's GUI part turns the copy off); and a copy is not
@@ -31,30 +31,19 @@ public:
   vtkTypeMacro(vtkSMRadiosityRelightProxy, vtkSMSourceProxy);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /// Copies `proxy`'s LightSettingsInfo into its LightSettings unless they differ from
-  /// `copied` (the last copy: anything else is the user's), without telling the filter.
-  static void ShowDataLights(vtkSMProxy* proxy, std::vector<std::string>& copied);
-
-  /// Whether ShowDataLights copies (on by default; the GUI turns it off).
+  /// Whether the data's lights are copied (on by default; the GUI turns it off).
   static void SetShowDataLights(bool show);
 
-  /// Saves `proxy`'s state as `save` does, without Light Settings where they still hold
-  /// only the copy `copied`.
-  template <typename Save>
-  static vtkPVXMLElement* SaveWithoutCopy(vtkSMProxy* proxy, const std::vector<std::string>& copied, Save save);
-
+  /// Saves the state without Light Settings where they still hold only the copy.
   using Superclass::SaveXMLState;
   vtkPVXMLElement* SaveXMLState(vtkPVXMLElement* root, vtkSMPropertyIterator* iter) override;
-
-  /// Where `proxy`'s Light Settings equal `from`, sets them to `to` without ModifiedEvent
-  /// and returns `from`; else changes nothing and returns an empty list.
-  static std::vector<std::string> QuietSet(
-    vtkSMProxy* proxy, const std::vector<std::string>& from, const std::vector<std::string>& to);
 
 protected:
   vtkSMRadiosityRelightProxy();
   ~vtkSMRadiosityRelightProxy() override;
 
+  /// Copies LightSettingsInfo into Light Settings unless they differ from the last copy
+  /// (anything else is the user's), without telling the filter.
   void PostUpdateData(bool usingCache) override;
 
 private:
@@ -64,15 +53,5 @@ private:
   /// What was last copied from the data: Light Settings still equal to it are not the user's.
   std::vector<std::string> Copied;
 };
-
-template <typename Save>
-vtkPVXMLElement* vtkSMRadiosityRelightProxy::SaveWithoutCopy(
-  vtkSMProxy* proxy, const std::vector<std::string>& copied, Save save)
-{
-  const std::vector<std::string> kept = QuietSet(proxy, copied, {});
-  vtkPVXMLElement* saved = save();
-  QuietSet(proxy, {}, kept);
-  return saved;
-}
 
 #endif

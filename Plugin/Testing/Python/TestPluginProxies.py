@@ -345,9 +345,6 @@ def main(argv):
     solved_display = Show(solver, view)
     check(solved_display.Representation == "Relit Surface",
           "Show(solver) in pvbatch is '%s', not the relit picture ('Relit Surface')" % solved_display.Representation)
-    Render(view)
-    check(len(solved_display.RelitLightSettings) == 6 and solved_display.RelitLightSettings[0] == LIGHT,
-          "after a render RelitLightSettings reads %s, not the data's light" % list(solved_display.RelitLightSettings))
     Hide(solver, view)
     display = Show(relight, view)
     check(display.Representation == "Relit Colors",
