@@ -110,10 +110,18 @@ void pqRadiosityDisplayStarter::Configure(pqDataRepresentation* representation)
   {
     ShowRelitSurface(representation);
     StyleRadiosityColorMap(representation);
+    // After ParaView's own steps for the new coloring (its lookup table and legend come
+    // after the array name: styled at once, the toolbar's pick kept ParaView's defaults).
     QObject::connect(representation, &pqDataRepresentation::colorArrayNameModified, representation,
       [representation]() {
-        LeaveRelitToColor(representation);
-        StyleRadiosityColorMap(representation);
+        QPointer<pqDataRepresentation> later = representation;
+        QTimer::singleShot(0, representation, [later]() {
+          if (later)
+          {
+            LeaveRelitToColor(later);
+            StyleRadiosityColorMap(later);
+          }
+        });
       });
   }
 }

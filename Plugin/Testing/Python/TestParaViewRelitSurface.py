@@ -15,7 +15,7 @@ from paraview.simple import (  # noqa: E402
     XMLPolyDataReader)
 from PyQt5.QtCore import Qt  # noqa: E402
 from PyQt5.QtTest import QTest  # noqa: E402
-from PyQt5.QtWidgets import QApplication, QCheckBox, QScrollArea, QTableWidget  # noqa: E402
+from PyQt5.QtWidgets import QApplication, QCheckBox, QComboBox, QScrollArea, QTableWidget  # noqa: E402
 from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
 from vtkmodules.vtkIOImage import vtkPNGReader  # noqa: E402
 
@@ -88,6 +88,21 @@ ColorBy(display, ("POINTS", "Radiosity_WarmWhite"))
 guitest.settle(0.5)
 result.check(display.Representation == "Surface",
              "an array picked under Relit Surface left the display as '%s'" % display.Representation)
+# The same from the toolbar's coloring box, as a user picks it: the legend then carries the
+# unit (the toolbar's own steps came after ours and left ParaView's title).
+display.Representation = "Relit Surface"
+guitest.settle(0.5)
+boxes = [b for b in app.allWidgets() if isinstance(b, QComboBox) and b.objectName() == "Variables" and b.isVisible()]
+pick = boxes[0].findText("Radiosity_CoolWhite") if boxes else -1
+if result.check(pick >= 0, "the toolbar's coloring box lists no Radiosity_CoolWhite (%d boxes)" % len(boxes)):
+    boxes[0].setCurrentIndex(pick)
+    boxes[0].activated[int].emit(pick)
+    guitest.settle(1.0)
+    bar = servermanager.vtkSMTransferFunctionProxy.FindScalarBarRepresentation(display.LookupTable.SMProxy, view.SMProxy)
+    title = servermanager._getPyProxy(bar).Title if bar else "(no legend)"
+    result.check(display.Representation == "Surface" and "W/m" in title,
+                 "picked in the toolbar: shown as '%s', legend '%s'" % (display.Representation, title))
+    result.note("toolbar pick: %s, legend '%s'" % (display.Representation, title))
 # The same under Relit Colors (the relight filter's DisplayColors as they are).
 relit = Show(RadiosityRelight(Input=solver), view)
 guitest.settle(1.0)
