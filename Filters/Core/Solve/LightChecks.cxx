@@ -137,8 +137,8 @@ std::vector<std::string> ProbeMessages(const std::string& name, const ProbeHits&
   if (probe.Any == 0)
   {
     std::snprintf(text, sizeof(text), "Light '%s' faces away from every surface: none of its probe rays meets the "
-      "scene, so its light leaves it. Is it wound the wrong way (its front is the right-hand side of its points' "
-      "order)?", n);
+      "scene, so its light leaves it. Does it face the wrong way (an area light emits along its normal; a "
+      "polygon to the right-hand side of its points' order)?", n);
     say();
   }
   if (probe.Any > 0 && probe.Front == 0)
@@ -158,8 +158,8 @@ std::vector<std::string> ProbeMessages(const std::string& name, const ProbeHits&
   if (probe.Near > 0.5)
   {
     std::snprintf(text, sizeof(text), "Light '%s' faces a surface closer than %.3g (5 %% of its size): most of its "
-      "light lands there. Is it wound the wrong way (its front is the right-hand side of its points' order)?",
-      n, near);
+      "light lands there. Does it face the wrong way (an area light emits along its normal; a polygon to the "
+      "right-hand side of its points' order)?", n, near);
     say();
   }
   return messages;

@@ -134,12 +134,14 @@ def solve(scene, patch_size=None, element_size=None, **solver_settings):
         getattr(solver, "Set" + name)(value)
     catchers = [ErrorCatcher(mesher), ErrorCatcher(solver)]
     solver.Update()
-    failed = [c for c in catchers if c.errors]
-    if failed:
-        raise RuntimeError(failed[0].first_error())  # the filter's own words, not VTK's prefix
+    # Warnings first, also before an error: they often say why (a lamp above the ceiling
+    # "lights nothing" before the solve fails on a scene that emits nothing).
     for catcher in catchers:
         for message in catcher.warnings:
             warnings.warn(own_words(message), RuntimeWarning, stacklevel=2)
+    failed = [c for c in catchers if c.errors]
+    if failed:
+        raise RuntimeError(failed[0].first_error())  # the filter's own words, not VTK's prefix
     return solver
 
 

@@ -6,9 +6,10 @@ Lights filter, ``in_room`` and ``on_ground`` set the model in a closed room or o
 plane sized from the model itself (so in the model's unit), keeping every array it has.
 """
 
+import warnings
 from collections import namedtuple
 
-from .scene import ErrorCatcher
+from .scene import ErrorCatcher, own_words
 from .vtkRadiosityFilters import vtkRadiosityLightMarker
 
 AreaLight = namedtuple("AreaLight", "name centre normal width height color disk")
@@ -29,7 +30,9 @@ def area_light(name, centre, normal, size, color=(1.0, 1.0, 1.0), intensity=1.0,
 def mark_lights(scene, *lights, cells=(), material=None, name="Light", color=(1.0, 1.0, 1.0), intensity=1.0):
     """The scene with `lights` (area_light descriptions) added and, where given, the cells
     with ids `cells` or of materials matching `material` (a wildcard pattern) made the
-    light `name` emitting `color` x `intensity`. Raises ValueError naming the problem."""
+    light `name` emitting `color` x `intensity`. Raises ValueError naming the problem; the
+    lights' checks (a lamp that lights nothing, faces away, lies in a surface) come as
+    RuntimeWarnings."""
     marker = vtkRadiosityLightMarker()
     marker.SetInputData(scene)
     marker.SetLightName(name)
@@ -45,6 +48,8 @@ def mark_lights(scene, *lights, cells=(), material=None, name="Light", color=(1.
     marker.Update()
     if catcher.errors:
         raise ValueError(catcher.first_error())
+    for message in catcher.warnings:  # a lamp that lights nothing, faces away, sits in a surface
+        warnings.warn(own_words(message), RuntimeWarning, stacklevel=2)
     return marker.GetOutput()
 
 
@@ -56,10 +61,9 @@ def in_room(model, margin=1.0, up="y", reflectance=(0.7, 0.7, 0.7), floor_reflec
     Every cell array of the model is kept (the room's cells: LightId -1, no Emission, the
     given Reflectance, zeros elsewhere), and its field arrays (LightNames) too. The room is
     made around the model's surfaces and the lamps near them; a lamp far outside (more than
-    ten times the model's extent away: in another unit?) is left out and said (a
-    RuntimeWarning)."""
+    ten times the model's extent away: in another unit?) is a ValueError naming it."""
     low, high = _room_box(model, margin, up)
-    _say_lamps_outside(model, _room_bounds(model)[2], low, high)
+    _refuse_lamps_outside(model, _room_bounds(model)[2], low, high)
     room = _box_faces(low, high, AXES[up], reflectance, floor_reflectance or reflectance)
     return _merged(model, room)
 
@@ -134,20 +138,19 @@ def _room_bounds(model, reach=10.0):
     return list(lo), list(hi), astray
 
 
-def _say_lamps_outside(model, astray, low, high):
-    """Warns of the model's lamps left out of the room [low, high]: they would light its
-    outside only."""
-    import warnings
-
+def _refuse_lamps_outside(model, astray, low, high):
+    """Raises ValueError for the model's lamps far outside the room [low, high]: a closed
+    room lets none of their light in, and a lamp typed in another unit would cost a long
+    solve before anything said so."""
     if not astray:
         return
     names = model.GetFieldData().GetAbstractArray("LightNames")
     named = ", ".join(repr(names.GetValue(i) if names and i < names.GetNumberOfValues() else str(i))
                       for i, _, _ in astray)
     span = ", ".join(f"{a:.4g}..{b:.4g}" for a, b in zip(low, high))
-    warnings.warn(f"light {named} lies far outside the model and the room made around it ({span}) and would light "
-                  "its outside only. Is it in another unit than the model, or are its coordinates off?",
-                  RuntimeWarning, stacklevel=3)
+    raise ValueError(f"light {named} lies far outside the model and the room made around it ({span}), so the "
+                     "closed room would let none of its light in. Is it in another unit than the model, or are its "
+                     "coordinates off?")
 
 
 def _lies_in_plane(model, axis, level, tolerance):
