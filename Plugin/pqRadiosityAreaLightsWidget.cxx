@@ -1,4 +1,6 @@
 #include "pqRadiosityAreaLightsWidget.h"
+#include "pqActiveObjects.h"
+#include "pqView.h"
 
 #include "vtkDataObject.h"
 #include "vtkPVArrayInformation.h"
@@ -159,11 +161,31 @@ QStringList pqRadiosityAreaLightsWidget::newLamp() const
   {
     info->GetBounds(bounds);
   }
-  // Most scenes stand on their shortest side: a ceiling lamp just under the top, facing down.
+  // A ceiling lamp just under the top, facing down; "up" is the view's, as the user sees the
+  // scene (the shortest side, as most rooms stand, where there is no view: a scanned
+  // figure is narrower than it is tall, and got its lamp on its flank).
   int up = 0;
+  double sign = 1;
+  double viewUp[3] = { 0, 0, 0 };
+  pqView* view = pqActiveObjects::instance().activeView();
+  if (view && view->getProxy()->GetProperty("CameraViewUp"))
+  {
+    vtkSMPropertyHelper(view->getProxy(), "CameraViewUp").Get(viewUp, 3);
+  }
   for (int a = 1; a < 3; ++a)
   {
-    up = bounds[2 * a + 1] - bounds[2 * a] < bounds[2 * up + 1] - bounds[2 * up] ? a : up;
+    up = std::fabs(viewUp[a]) > std::fabs(viewUp[up]) ? a : up;
+  }
+  if (std::fabs(viewUp[up]) > 0)
+  {
+    sign = viewUp[up] > 0 ? 1 : -1;
+  }
+  else
+  {
+    for (int a = 1; a < 3; ++a)
+    {
+      up = bounds[2 * a + 1] - bounds[2 * a] < bounds[2 * up + 1] - bounds[2 * up] ? a : up;
+    }
   }
   double centre[3], facing[3] = { 0, 0, 0 };
   for (int a = 0; a < 3; ++a)
@@ -174,8 +196,9 @@ QStringList pqRadiosityAreaLightsWidget::newLamp() const
   const double diagonal =
     std::sqrt(std::pow(bounds[1] - bounds[0], 2) + std::pow(bounds[3] - bounds[2], 2) + std::pow(bounds[5] - bounds[4], 2));
   // Just under the top; above a flat scene, a tenth of its extent up.
-  centre[up] = height > 0 ? bounds[2 * up + 1] - 0.01 * height : bounds[2 * up + 1] + 0.1 * diagonal;
-  facing[up] = -1;
+  const double top = sign > 0 ? bounds[2 * up + 1] : bounds[2 * up];
+  centre[up] = height > 0 ? top - sign * 0.01 * height : top + sign * 0.1 * diagonal;
+  facing[up] = -sign;
   const QString size = QString::number(std::max(diagonal / 20.0, 1e-6), 'g', 3);
   QStringList lamp{ this->unusedName(), "0" };
   for (double v : centre)

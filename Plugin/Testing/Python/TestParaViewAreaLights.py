@@ -10,7 +10,7 @@ import sys
 sys.path.insert(0, os.environ["RELIGHT_TEST_DIR"])
 import guitest  # noqa: E402
 from paraview import servermanager  # noqa: E402
-from paraview.simple import MarkLights, SetActiveSource, XMLPolyDataReader  # noqa: E402
+from paraview.simple import GetActiveView, MarkLights, SetActiveSource, XMLPolyDataReader  # noqa: E402
 from PyQt5.QtCore import Qt  # noqa: E402
 from PyQt5.QtTest import QTest  # noqa: E402
 from PyQt5.QtWidgets import QApplication, QPushButton, QTableWidget  # noqa: E402
@@ -89,4 +89,15 @@ if result.check(len(tables) == 1, f"the Mark Lights panel shows one area-lights 
     apply()
     result.check(table.rowCount() == 0 and len(marker.AreaLights) == 0 and "Lamp1" not in light_names(),
                  f"Remove takes the lamp away: {table.rowCount()} rows, lights {light_names()}")
+    # "Up" is the view's: with the camera's up along +z the lamp hangs under the top in z,
+    # facing -z (a scan narrower than it is tall got its lamp on its flank by the shortest side).
+    view = GetActiveView()
+    view.CameraViewUp = [0, 0, 1]
+    visible(QPushButton, "AddLamp")[0].click()
+    guitest.settle(0.3)
+    cells = [table.item(0, c).text() if table.item(0, c) else "" for c in range(table.columnCount())]
+    along = float(cells[2].split(", ")[2]) if cells[2].count(",") == 2 else 0.0
+    result.check(cells[3] == "0, 0, -1" and bounds[5] - 0.05 * (bounds[5] - bounds[4]) < along <= bounds[5],
+                 f"with the view's up along z, Add Lamp hangs it under the top in z (z max {bounds[5]}): {cells}")
+    view.CameraViewUp = [0, 1, 0]
 result.finish()
