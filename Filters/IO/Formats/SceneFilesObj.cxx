@@ -97,8 +97,9 @@ bool White(const radiosity::Vec3& diffuse)
   return diffuse.x >= 1 && diffuse.y >= 1 && diffuse.z >= 1;
 }
 
-/// The mean color of the texture `named`, or a warning saying why there is none.
-bool TextureMean(const std::string& folder, const std::string& named, radiosity::Vec3& mean, std::string& why)
+/// `color` times the mean color of the texture `named` (glTF and MTL multiply the two), or
+/// false and why there is none.
+bool TimesTexture(const std::string& folder, const std::string& named, radiosity::Vec3& color, std::string& why)
 {
   const std::string file = FindTexture(named, folder);
   if (file.empty()) // not handed to VTK's image readers, which log an error of their own
@@ -115,7 +116,7 @@ bool TextureMean(const std::string& folder, const std::string& named, radiosity:
   }
   reader->SetFileName(file.c_str());
   reader->Update();
-  mean = MeanColor(reader->GetOutput());
+  color = radiosity::Times(color, MeanColor(reader->GetOutput()));
   return true;
 }
 
@@ -123,11 +124,9 @@ bool TextureMean(const std::string& folder, const std::string& named, radiosity:
 /// the diffuse color alone, 0.8 where that is white.
 void ApplyTexture(const std::string& folder, radiosity::ImportMaterial& m, std::vector<std::string>& warnings)
 {
-  radiosity::Vec3 mean;
   std::string why;
-  if (TextureMean(folder, m.DiffuseTexture, mean, why))
+  if (TimesTexture(folder, m.DiffuseTexture, m.Diffuse, why))
   {
-    m.Diffuse = radiosity::Times(m.Diffuse, mean);
     return;
   }
   const bool white = White(m.Diffuse);
@@ -140,15 +139,12 @@ void ApplyTexture(const std::string& folder, radiosity::ImportMaterial& m, std::
 /// texture can be read; else the emitted color alone.
 void ApplyEmissiveTexture(const std::string& folder, radiosity::ImportMaterial& m, std::vector<std::string>& warnings)
 {
-  radiosity::Vec3 mean;
   std::string why;
-  if (TextureMean(folder, m.EmissiveTexture, mean, why))
+  if (!TimesTexture(folder, m.EmissiveTexture, m.Emissive, why))
   {
-    m.Emissive = radiosity::Times(m.Emissive, mean);
-    return;
+    warnings.push_back("the emissive texture '" + m.EmissiveTexture + "' of material '" + m.Name + "' " + why +
+      "; its Ke alone is used");
   }
-  warnings.push_back("the emissive texture '" + m.EmissiveTexture + "' of material '" + m.Name + "' " + why +
-    "; its Ke alone is used");
 }
 
 } // namespace
