@@ -18,7 +18,7 @@
 #ifndef vtkRadiosityEXRWriter_h
 #define vtkRadiosityEXRWriter_h
 
-#include "vtkRadiosityFiltersModule.h" // for export macro
+#include "vtkRadiosityIOModule.h" // for export macro
 #include "vtkWriter.h"
 
 #include <string> // for layer names
@@ -32,7 +32,7 @@ struct Vec3;
 struct PinholeCamera;
 }
 
-class VTKRADIOSITYFILTERS_EXPORT vtkRadiosityEXRWriter : public vtkWriter
+class VTKRADIOSITYIO_EXPORT vtkRadiosityEXRWriter : public vtkWriter
 {
 public:
   static vtkRadiosityEXRWriter* New();

@@ -89,7 +89,7 @@ std::vector<std::uint32_t> Triangles(const radiosity::SceneMesh& mesh)
   std::vector<std::uint32_t> indices;
   for (int i = 0; i < mesh.NumberOfPolygons(); ++i)
   {
-    const std::vector<radiosity::Vec3> loop = radiosity::GatherLoop(mesh.points, mesh.offsets, mesh.connectivity, i);
+    const std::vector<radiosity::Vec3> loop = radiosity::GatherLoop(mesh.Points, mesh.Offsets, mesh.Connectivity, i);
     for (int corner : radiosity::Triangulate(loop.data(), static_cast<int>(loop.size())))
     {
       indices.push_back(static_cast<std::uint32_t>(mesh.Polygon(i)[corner]));
@@ -301,7 +301,7 @@ void vtkRadiosityGLTFWriter::WriteData()
   }
   GlbDocument glb;
   std::vector<float> positions;
-  for (const radiosity::Vec3& p : mesh.points)
+  for (const radiosity::Vec3& p : mesh.Points)
   {
     positions.insert(positions.end(), { static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z) });
   }

@@ -23,10 +23,10 @@
 #ifndef vtkRadiosityGLTFWriter_h
 #define vtkRadiosityGLTFWriter_h
 
-#include "vtkRadiosityFiltersModule.h" // for export macro
+#include "vtkRadiosityIOModule.h" // for export macro
 #include "vtkWriter.h"
 
-class VTKRADIOSITYFILTERS_EXPORT vtkRadiosityGLTFWriter : public vtkWriter
+class VTKRADIOSITYIO_EXPORT vtkRadiosityGLTFWriter : public vtkWriter
 {
 public:
   static vtkRadiosityGLTFWriter* New();

@@ -64,13 +64,13 @@ void Fill(const radiosity::ImportedScene& scene, vtkPolyData* output)
   const radiosity::SceneMesh& mesh = scene.Mesh;
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.points.size()));
-  for (size_t p = 0; p < mesh.points.size(); ++p)
+  points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.Points.size()));
+  for (size_t p = 0; p < mesh.Points.size(); ++p)
   {
-    points->SetPoint(static_cast<vtkIdType>(p), mesh.points[p].x, mesh.points[p].y, mesh.points[p].z);
+    points->SetPoint(static_cast<vtkIdType>(p), mesh.Points[p].x, mesh.Points[p].y, mesh.Points[p].z);
   }
   vtkNew<vtkCellArray> polys;
-  polys->AllocateExact(mesh.NumberOfPolygons(), static_cast<vtkIdType>(mesh.connectivity.size()));
+  polys->AllocateExact(mesh.NumberOfPolygons(), static_cast<vtkIdType>(mesh.Connectivity.size()));
   for (int i = 0; i < mesh.NumberOfPolygons(); ++i)
   {
     polys->InsertNextCell(mesh.PolygonSize(i));
@@ -81,17 +81,17 @@ void Fill(const radiosity::ImportedScene& scene, vtkPolyData* output)
   }
   output->SetPoints(points);
   output->SetPolys(polys);
-  output->GetCellData()->AddArray(Colors("Reflectance", mesh.reflectance));
-  output->GetCellData()->AddArray(Ints("LightId", mesh.lightId));
+  output->GetCellData()->AddArray(Colors("Reflectance", mesh.Reflectance));
+  output->GetCellData()->AddArray(Ints("LightId", mesh.LightId));
   output->GetCellData()->AddArray(Colors("Emission", scene.Emission));
   output->GetCellData()->AddArray(Ints("MaterialIds", scene.Material));
   output->GetFieldData()->AddArray(Strings("LightNames", scene.LightNames));
   output->GetFieldData()->AddArray(Strings("MaterialNames", scene.MaterialNames));
-  if (mesh.pointQuantum > 0) // the file's coordinates were float, though the output's are double
+  if (mesh.PointQuantum > 0) // the file's coordinates were float, though the output's are double
   {
     vtkNew<vtkDoubleArray> quantum;
     quantum->SetName(vtkRadiosityAdapter::PointQuantumName);
-    quantum->InsertNextValue(mesh.pointQuantum);
+    quantum->InsertNextValue(mesh.PointQuantum);
     output->GetFieldData()->AddArray(quantum);
   }
 }

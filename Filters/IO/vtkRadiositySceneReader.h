@@ -23,11 +23,11 @@
 #define vtkRadiositySceneReader_h
 
 #include "vtkPolyDataAlgorithm.h"
-#include "vtkRadiosityFiltersModule.h" // for export macro
+#include "vtkRadiosityIOModule.h" // for export macro
 
 #include <string> // for GetFileExtensions
 
-class VTKRADIOSITYFILTERS_EXPORT vtkRadiositySceneReader : public vtkPolyDataAlgorithm
+class VTKRADIOSITYIO_EXPORT vtkRadiositySceneReader : public vtkPolyDataAlgorithm
 {
 public:
   static vtkRadiositySceneReader* New();

@@ -54,11 +54,11 @@ std::vector<int> SurfaceKeys(const radiosity::SceneMesh& mesh, const std::vector
 {
   std::map<std::tuple<double, double, double, int, double, double, double>, int> materials;
   std::vector<int> surfaceKey(mesh.NumberOfPolygons(), 0);
-  for (int i = 0; i < mesh.NumberOfPolygons() && i < static_cast<int>(mesh.reflectance.size()); ++i)
+  for (int i = 0; i < mesh.NumberOfPolygons() && i < static_cast<int>(mesh.Reflectance.size()); ++i)
   {
-    const radiosity::Vec3& r = mesh.reflectance[i];
+    const radiosity::Vec3& r = mesh.Reflectance[i];
     const radiosity::Vec3 e = emission.empty() ? radiosity::Vec3() : emission[i];
-    const int light = i < static_cast<int>(mesh.lightId.size()) ? mesh.lightId[i] : -1;
+    const int light = i < static_cast<int>(mesh.LightId.size()) ? mesh.LightId[i] : -1;
     const auto key = std::make_tuple(r.x, r.y, r.z, light, e.x, e.y, e.z);
     surfaceKey[i] = materials.emplace(key, static_cast<int>(materials.size())).first->second;
   }
@@ -99,8 +99,8 @@ double vtkRadiosityMesher::EstimateElements(double patchSize, double elementSize
   const auto sizes = radiosity::SizesInUse(patchSize, elementSize, this->SuggestedPatchSize);
   radiosity::MesherOptions options;
   options.MergeTriangles = this->MergeTriangles;
-  options.PointQuantum = mesh.pointQuantum;
-  const radiosity::ElementCounter count(mesh.points, mesh.offsets, mesh.connectivity, this->SeenInput->SurfaceKey, options);
+  options.PointQuantum = mesh.PointQuantum;
+  const radiosity::ElementCounter count(mesh.Points, mesh.Offsets, mesh.Connectivity, this->SeenInput->SurfaceKey, options);
   return count(sizes.first, sizes.second);
 }
 
@@ -145,7 +145,7 @@ void vtkRadiosityMesher::SuggestFor(vtkDataSet* given)
   radiosity::SuggestedSizes sizes{ 0.0, 0.0, 0.0, 0.0 };
   if (input && input->GetNumberOfCells() > 0 && vtkRadiosityAdapter::CopyPolygons(input, mesh, error))
   {
-    sizes = radiosity::SuggestMeshSizes(mesh.points, mesh.offsets, mesh.connectivity, vtkRadiosityAdapter::SizingSpan(input));
+    sizes = radiosity::SuggestMeshSizes(mesh.Points, mesh.Offsets, mesh.Connectivity, vtkRadiosityAdapter::SizingSpan(input));
     std::vector<radiosity::Vec3> emission;
     // Without valid arrays the mesher will refuse the input; the estimate then pairs all.
     vtkRadiosityAdapter::ReadSceneArrays(input, mesh, emission, error);
@@ -199,13 +199,13 @@ std::string MeshPiece(vtkRadiosityMesher* self, vtkPolyData* input, double eleme
   options.SharePatches = self->GetSharePatches();
   options.ClusterAngle = self->GetClusterAngle();
   options.WholeScene = whole.Polygons;
-  options.PointQuantum = std::max(mesh.pointQuantum, whole.PointQuantum);
+  options.PointQuantum = std::max(mesh.PointQuantum, whole.PointQuantum);
   const vtkRadiosityAbortWatch abort(self);
   options.Progress = [self, abort](double f) {
     self->UpdateProgress(f);
     return !abort.Stop();
   };
-  return radiosity::MeshPolygons(mesh.points, mesh.offsets, mesh.connectivity, surfaceKey, options, meshed);
+  return radiosity::MeshPolygons(mesh.Points, mesh.Offsets, mesh.Connectivity, surfaceKey, options, meshed);
 }
 
 /// On MPI, MaximumElements bounds the whole scene: every rank searches the same element
@@ -223,9 +223,9 @@ double ElementSizeEverywhere(vtkRadiosityMesher* self, vtkMultiProcessController
   radiosity::MesherOptions options;
   options.MergeTriangles = self->GetMergeTriangles();
   options.WholeScene = whole.Polygons;
-  options.PointQuantum = std::max(mesh.pointQuantum, whole.PointQuantum);
+  options.PointQuantum = std::max(mesh.PointQuantum, whole.PointQuantum);
   const std::vector<int> keys = usable ? SurfaceKeys(mesh, emission) : std::vector<int>();
-  const radiosity::ElementCounter counter(mesh.points, mesh.offsets, mesh.connectivity, keys, options);
+  const radiosity::ElementCounter counter(mesh.Points, mesh.Offsets, mesh.Connectivity, keys, options);
   auto count = [&](double size) {
     const double here = usable ? counter(self->GetPatchSizeInUse(), size) : 0;
     return static_cast<double>(vtkRadiosityPieces::SumOverRanks(parallel, static_cast<long long>(here)));
@@ -290,7 +290,7 @@ std::string AgreeOnPieces(vtkMultiProcessController* parallel, const std::string
 {
   const long long failures = vtkRadiosityPieces::SumOverRanks(parallel, error.empty() ? 0 : 1);
   const long long cells = vtkRadiosityPieces::SumOverRanks(parallel, empty ? 0 : input->GetNumberOfCells());
-  vtkRadiosityPieces::SumOverRanks(parallel, error.empty() ? meshed.patches : 0, &firstPatch);
+  vtkRadiosityPieces::SumOverRanks(parallel, error.empty() ? meshed.Patches : 0, &firstPatch);
   if (!error.empty())
   {
     return error;
@@ -320,13 +320,13 @@ double SuggestedPatch(const radiosity::SceneMesh* whole, vtkPolyData* input)
   }
   if (whole)
   {
-    return radiosity::SuggestPatchSize(whole->points, whole->connectivity);
+    return radiosity::SuggestPatchSize(whole->Points, whole->Connectivity);
   }
   radiosity::SceneMesh mesh;
   std::string error;
   const bool usable = input && input->GetNumberOfCells() > 0 && !vtkRadiosityAdapter::FailedUpstream(input) &&
     vtkRadiosityAdapter::CopyPolygons(input, mesh, error);
-  return usable ? radiosity::SuggestPatchSize(mesh.points, mesh.connectivity) : 0.0;
+  return usable ? radiosity::SuggestPatchSize(mesh.Points, mesh.Connectivity) : 0.0;
 }
 
 /// The elements as the output's points and polygons, each with its source polygon's cell
@@ -336,21 +336,21 @@ void WriteMeshed(vtkPolyData* output, vtkPolyData* input, const radiosity::Meshe
 {
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(meshed.points.size()));
-  for (size_t p = 0; p < meshed.points.size(); ++p)
+  points->SetNumberOfPoints(static_cast<vtkIdType>(meshed.Points.size()));
+  for (size_t p = 0; p < meshed.Points.size(); ++p)
   {
-    const radiosity::Vec3& x = meshed.points[p];
+    const radiosity::Vec3& x = meshed.Points[p];
     points->SetPoint(static_cast<vtkIdType>(p), x.x, x.y, x.z);
   }
   vtkNew<vtkCellArray> polys;
-  const vtkIdType elements = static_cast<vtkIdType>(meshed.sourcePolygon.size());
-  polys->AllocateExact(elements, static_cast<vtkIdType>(meshed.connectivity.size()));
+  const vtkIdType elements = static_cast<vtkIdType>(meshed.SourcePolygon.size());
+  polys->AllocateExact(elements, static_cast<vtkIdType>(meshed.Connectivity.size()));
   for (vtkIdType e = 0; e < elements; ++e)
   {
-    polys->InsertNextCell(meshed.offsets[e + 1] - meshed.offsets[e]);
-    for (int k = meshed.offsets[e]; k < meshed.offsets[e + 1]; ++k)
+    polys->InsertNextCell(meshed.Offsets[e + 1] - meshed.Offsets[e]);
+    for (int k = meshed.Offsets[e]; k < meshed.Offsets[e + 1]; ++k)
     {
-      polys->InsertCellPoint(meshed.connectivity[k]);
+      polys->InsertCellPoint(meshed.Connectivity[k]);
     }
   }
   output->SetPoints(points);
@@ -362,17 +362,17 @@ void WriteMeshed(vtkPolyData* output, vtkPolyData* input, const radiosity::Meshe
   patchId->SetNumberOfValues(elements);
   for (vtkIdType e = 0; e < elements; ++e)
   {
-    outCD->CopyData(input->GetCellData(), meshed.sourcePolygon[e], e);
-    patchId->SetValue(e, static_cast<int>(firstPatch + meshed.patchId[e]));
+    outCD->CopyData(input->GetCellData(), meshed.SourcePolygon[e], e);
+    patchId->SetValue(e, static_cast<int>(firstPatch + meshed.PatchId[e]));
   }
   outCD->AddArray(patchId);
   vtkFieldData* fields = output->GetFieldData();
   fields->ShallowCopy(input->GetFieldData());
-  AddFieldInt(fields, "MergedTrianglePairs", meshed.mergedTrianglePairs);
-  AddFieldInt(fields, "ClusteredPatches", meshed.clusteredPatches);
+  AddFieldInt(fields, "MergedTrianglePairs", meshed.MergedTrianglePairs);
+  AddFieldInt(fields, "ClusteredPatches", meshed.ClusteredPatches);
   vtkNew<vtkDoubleArray> used;
   used->SetName("MesherElementSize");
-  used->InsertNextValue(meshed.elementSize);
+  used->InsertNextValue(meshed.ElementSize);
   fields->AddArray(used);
   vtkNew<vtkDoubleArray> patch;
   patch->SetName("MesherPatchSize");
@@ -402,7 +402,7 @@ int vtkRadiosityMesher::RequestData(
     const bool empty = !input || input->GetNumberOfCells() == 0;
     vtkRadiosityAdapter::WarningList warnings;
     const radiosity::SceneMesh whole = parallel ? GatherWholeScene(parallel, input, upstream) : radiosity::SceneMesh();
-    const radiosity::PolygonArrays wholeArrays{ whole.points, whole.offsets, whole.connectivity };
+    const radiosity::PolygonArrays wholeArrays{ whole.Points, whole.Offsets, whole.Connectivity };
     const WholeScene wholeScene{ parallel ? &wholeArrays : nullptr,
       parallel ? vtkRadiosityPieces::MaxOverRanks(parallel, OwnQuantum(input, upstream)) : 0.0 };
     // Sizes from the scene are taken from all of it, so every rank meshes alike.
@@ -447,7 +447,7 @@ int vtkRadiosityMesher::RequestData(
     }
     WriteMeshed(output, input, meshed, firstPatch, this->PatchSizeInUse, wholeScene.PointQuantum, warnings);
     this->MesherPatchSize = this->PatchSizeInUse;
-    this->MesherElementSize = meshed.elementSize;
+    this->MesherElementSize = meshed.ElementSize;
     return 1;
   });
 }

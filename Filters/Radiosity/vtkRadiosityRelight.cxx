@@ -325,7 +325,7 @@ bool vtkRadiosityRelight::AddMovingLights(vtkPolyData* scene, vtkPolyData* light
   const radiosity::SceneGeometry& g = state.Shader->Geometry();
   radiosity::BasisView basis;
   std::vector<radiosity::MovingLight> movers;
-  if (!ReadBasis(scene, static_cast<int>(g.patchElements.size()), basis, error) ||
+  if (!ReadBasis(scene, static_cast<int>(g.PatchElements.size()), basis, error) ||
     !ReadMovingLights(lights, movers, error))
   {
     return false;

@@ -101,7 +101,7 @@ int main(int argc, char** argv)
   }
   std::printf("triangles,elements,patches,lights,cluster_angle,method,shots,converged,rays,patch_links,element_links,link_mb,mesh_s,prepare_s,solve_s,total_s,peak_mb,error_pct,worst_light_pct,cluster_links\n");
   std::printf("%d,%d,%zu,%d,%g,%s,%d,%d,%lld,%lld,%lld,%.1f,%.2f,%.2f,%.2f,%.2f,%.0f,%.2f,%.2f,%lld\n", inputTriangles, mesh.NumberOfPolygons(),
-    solver.Geometry().patchElements.size(), lamps, cone, MethodName(st.Method), st.Shots, st.Converged ? 1 : 0,
+    solver.Geometry().PatchElements.size(), lamps, cone, MethodName(st.Method), st.Shots, st.Converged ? 1 : 0,
     st.RayCount, st.PatchLinks, st.ElementLinks, st.LinkBytes / 1e6, t1 - t0, t2 - t1, t3 - t2, t3 - t0, PeakMemoryMB(),
     100 * probeError, 100 * worst, st.VolumeLinks);
   if (compare)
@@ -116,8 +116,8 @@ int main(int argc, char** argv)
       {
         const Vec3& a = s.Radiosity[static_cast<size_t>(e) * lamps + m];
         const Vec3& b = p.Radiosity[static_cast<size_t>(e) * lamps + m];
-        diff += (std::fabs(a.x - b.x) + std::fabs(a.y - b.y) + std::fabs(a.z - b.z)) * g.area[e];
-        sum += (b.x + b.y + b.z) * g.area[e];
+        diff += (std::fabs(a.x - b.x) + std::fabs(a.y - b.y) + std::fabs(a.z - b.z)) * g.Area[e];
+        sum += (b.x + b.y + b.z) * g.Area[e];
       }
       std::printf("light %d: %s differs from progressive refinement by %.3f %% (mean, area-weighted)\n", m,
         MethodName(st.Method), 100 * diff / sum);

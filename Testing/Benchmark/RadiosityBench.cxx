@@ -76,7 +76,7 @@ bool LoadMeshed(const std::string& path, double patch, double element, Scene& sc
   {
     double x[3];
     data->GetPoint(p, x);
-    m.points.push_back({ x[0], x[1], x[2] });
+    m.Points.push_back({ x[0], x[1], x[2] });
   }
   vtkIdType npts;
   const vtkIdType* ids;
@@ -97,9 +97,9 @@ bool LoadMeshed(const std::string& path, double patch, double element, Scene& sc
     {
       emission->GetTuple(c, e);
     }
-    m.reflectance.push_back({ r[0], r[1], r[2] });
-    m.lightId.push_back(static_cast<int>(light->GetComponent(c, 0)));
-    m.patchId.push_back(static_cast<int>(patchId->GetComponent(c, 0)));
+    m.Reflectance.push_back({ r[0], r[1], r[2] });
+    m.LightId.push_back(static_cast<int>(light->GetComponent(c, 0)));
+    m.PatchId.push_back(static_cast<int>(patchId->GetComponent(c, 0)));
     scene.Emission.push_back({ e[0], e[1], e[2] });
   }
   const std::string error = ValidateScene(m, scene.Lights);
@@ -117,13 +117,13 @@ double RawOcclusionRate(const Visibility& rays, const SceneGeometry& g, const Wo
 {
   std::vector<Vec3> from(count), to(count);
   std::mt19937 rng(7);
-  std::uniform_int_distribution<int> pick(0, static_cast<int>(g.centroid.size()) - 1);
+  std::uniform_int_distribution<int> pick(0, static_cast<int>(g.Centroid.size()) - 1);
   for (int i = 0; i < count; ++i)
   {
     // Element centroid to element centroid, like the solver's rays (both ends on surfaces).
     const int a = pick(rng), b = pick(rng);
-    from[i] = g.centroid[a] + g.normal[a] * (1e-6 * g.sceneDiagonal);
-    to[i] = g.centroid[b] + g.normal[b] * (1e-6 * g.sceneDiagonal);
+    from[i] = g.Centroid[a] + g.Normal[a] * (1e-6 * g.SceneDiagonal);
+    to[i] = g.Centroid[b] + g.Normal[b] * (1e-6 * g.SceneDiagonal);
   }
   std::vector<char> blocked(count);
   const double t = Best(3, [&] {
@@ -194,7 +194,7 @@ int main(int argc, char* argv[])
     const auto separate = run(SolutionMode::StandardSeparate);
     const auto tagged = run(SolutionMode::LightTagged);
     std::printf("%3d %9d %9zu | %10.4f %10.4f %10.4f | %8.2fx %8.3fx\n", k, scene.Mesh.NumberOfPolygons(),
-      solver.Geometry().patchElements.size(), combined.first, separate.first, tagged.first,
+      solver.Geometry().PatchElements.size(), combined.first, separate.first, tagged.first,
       separate.first / tagged.first, tagged.first / combined.first);
     const std::string K = "k=" + std::to_string(k);
     rows.push_back({ "table1", K + " combined", combined.first, "s" });
@@ -308,7 +308,7 @@ int main(int argc, char* argv[])
     RadiositySolver solver(scene.Mesh);
     const SceneGeometry& g = solver.Geometry();
     const int n = scene.Mesh.NumberOfPolygons();
-    const int P = static_cast<int>(g.patchElements.size());
+    const int P = static_cast<int>(g.PatchElements.size());
     // The paper's size keeps a basis per element; the larger scene stores it per patch node
     // (what Auto picks once an element basis passes its budget).
     const BasisLevel level = n > 100000 ? BasisLevel::Patches : BasisLevel::Elements;

@@ -83,7 +83,7 @@ struct Csv
 void MeasureBasis(const RadiositySolver& solver, const SceneMesh& mesh)
 {
   const SceneGeometry& g = solver.Geometry();
-  const double n = static_cast<double>(g.normal.size()), P = static_cast<double>(g.patchElements.size());
+  const double n = static_cast<double>(g.Normal.size()), P = static_cast<double>(g.PatchElements.size());
   ResetPeakMemory();
   const double t0 = Now();
   SolverStatistics stats;
@@ -204,7 +204,7 @@ int main(int argc, char* argv[])
     const Run reference = SolveRoom(referenceSolver, referenceMesh, lights, SolutionMode::LightTagged, converged);
     referenceValues = Sample(referenceSolver, referenceMesh, reference.Result, probes);
     Print("reference (progressive 1e-5)", referenceMesh,
-      static_cast<int>(referenceSolver.Geometry().patchElements.size()), reference, 0, 0);
+      static_cast<int>(referenceSolver.Geometry().PatchElements.size()), reference, 0, 0);
   }
 
   Csv csv;
@@ -224,7 +224,7 @@ int main(int argc, char* argv[])
     const double t1 = Now();
     RadiositySolver solver(mesh); // geometry and the Embree scene, shared by the solves
     const double t2 = Now();
-    const int patches = static_cast<int>(solver.Geometry().patchElements.size());
+    const int patches = static_cast<int>(solver.Geometry().PatchElements.size());
     SolverOptions options;
     options.Solver = SolverMethod::Hierarchical;
     options.MaximumShots = 1000000;

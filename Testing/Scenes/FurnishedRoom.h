@@ -122,14 +122,14 @@ inline std::string MeshWithKeys(const RoomPolygons& r, const std::vector<int>& k
     return error;
   }
   mesh = radiosity::SceneMesh();
-  mesh.points = out.points;
-  mesh.offsets = out.offsets;
-  mesh.connectivity = out.connectivity;
-  mesh.patchId = out.patchId;
-  for (int source : out.sourcePolygon)
+  mesh.Points = out.Points;
+  mesh.Offsets = out.Offsets;
+  mesh.Connectivity = out.Connectivity;
+  mesh.PatchId = out.PatchId;
+  for (int source : out.SourcePolygon)
   {
-    mesh.reflectance.push_back(r.Reflectance[source]);
-    mesh.lightId.push_back(r.LightId[source]);
+    mesh.Reflectance.push_back(r.Reflectance[source]);
+    mesh.LightId.push_back(r.LightId[source]);
   }
   return std::string();
 }

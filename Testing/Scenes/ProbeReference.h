@@ -52,17 +52,17 @@ inline std::vector<double> Sample(const RadiositySolver& solver, const SceneMesh
   for (size_t i = 0; i < probes.Origin.size(); ++i)
   {
     Visibility::Hit hit;
-    if (!solver.Rays().Intersect(probes.Origin[i], probes.Direction[i], hit) || mesh.lightId[hit.polygon] >= 0)
+    if (!solver.Rays().Intersect(probes.Origin[i], probes.Direction[i], hit) || mesh.LightId[hit.Polygon] >= 0)
     {
       continue;
     }
-    const double w[3] = { 1 - hit.u - hit.v, hit.u, hit.v };
+    const double w[3] = { 1 - hit.U - hit.V, hit.U, hit.V };
     for (int m = 0; m < L; ++m)
     {
       double v = 0;
       for (int c = 0; c < 3; ++c)
       {
-        const Vec3& b = points[static_cast<size_t>(hit.corner[c]) * L + m];
+        const Vec3& b = points[static_cast<size_t>(hit.Corner[c]) * L + m];
         v += w[c] * (b.x + b.y + b.z);
       }
       values[i * L + m] = v;
@@ -117,10 +117,10 @@ inline void ExportRoom(const RoomPolygons& room, const RadiositySolver& solver, 
   for (size_t i = 0; i < probes.Origin.size(); ++i)
   {
     Visibility::Hit hit;
-    const bool seen = solver.Rays().Intersect(probes.Origin[i], probes.Direction[i], hit) && mesh.lightId[hit.polygon] < 0;
-    const Vec3& n = solver.Geometry().normal[seen ? hit.polygon : 0];
-    const Vec3 a = mesh.points[hit.corner[0]], b = mesh.points[hit.corner[1]], c = mesh.points[hit.corner[2]];
-    const Vec3 x = seen ? a * (1 - hit.u - hit.v) + b * hit.u + c * hit.v : Vec3();
+    const bool seen = solver.Rays().Intersect(probes.Origin[i], probes.Direction[i], hit) && mesh.LightId[hit.Polygon] < 0;
+    const Vec3& n = solver.Geometry().Normal[seen ? hit.Polygon : 0];
+    const Vec3 a = mesh.Points[hit.Corner[0]], b = mesh.Points[hit.Corner[1]], c = mesh.Points[hit.Corner[2]];
+    const Vec3 x = seen ? a * (1 - hit.U - hit.V) + b * hit.U + c * hit.V : Vec3();
     out << (i ? ",\n" : "") << "{\"seen\": " << (seen ? "true" : "false") << ", \"point\": [" << x.x << ", " << x.y
         << ", " << x.z << "], \"normal\": [" << n.x << ", " << n.y << ", " << n.z << "]}";
   }

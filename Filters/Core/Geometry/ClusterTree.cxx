@@ -46,7 +46,7 @@ NormalCone ConeOf(const SceneGeometry& g, const std::vector<int>& elements)
   Vec3 sum;
   for (int e : elements)
   {
-    sum += g.normal[e] * g.area[e];
+    sum += g.Normal[e] * g.Area[e];
   }
   const Vec3 axis = Normalized(sum);
   if (Norm(axis) == 0)
@@ -56,7 +56,7 @@ NormalCone ConeOf(const SceneGeometry& g, const std::vector<int>& elements)
   double spread = 0;
   for (int e : elements)
   {
-    spread = std::max(spread, std::acos(std::max(-1.0, std::min(1.0, Dot(axis, g.normal[e])))));
+    spread = std::max(spread, std::acos(std::max(-1.0, std::min(1.0, Dot(axis, g.Normal[e])))));
   }
   return NormalCone(axis, spread);
 }
@@ -102,10 +102,10 @@ int ClusterTree::Build(int first, int count)
     return index;
   }
   // Median split of the centroids along their longest extent.
-  Vec3 lo = G.centroid[Order[first]], hi = lo;
+  Vec3 lo = G.Centroid[Order[first]], hi = lo;
   for (int i = first; i < first + count; ++i)
   {
-    const Vec3& c = G.centroid[Order[i]];
+    const Vec3& c = G.Centroid[Order[i]];
     for (int k = 0; k < 3; ++k)
     {
       lo[k] = std::min(lo[k], c[k]);
@@ -117,7 +117,7 @@ int ClusterTree::Build(int first, int count)
   const auto begin = Order.begin() + first;
   const int half = count / 2;
   std::nth_element(begin, begin + half, begin + count, [&](int a, int b) {
-    return G.centroid[a][axis] < G.centroid[b][axis] || (G.centroid[a][axis] == G.centroid[b][axis] && a < b);
+    return G.Centroid[a][axis] < G.Centroid[b][axis] || (G.Centroid[a][axis] == G.Centroid[b][axis] && a < b);
   });
   const int left = Build(first, half);
   const int right = Build(first + half, count - half);
@@ -132,28 +132,28 @@ void ClusterTree::Summarise(Node& node) const
   std::vector<int> members(Order.begin() + node.First, Order.begin() + node.First + node.Count);
   for (int e : members)
   {
-    node.Centre += G.centroid[e] * G.area[e];
-    node.AreaVector += G.normal[e] * G.area[e];
-    area += G.area[e];
+    node.Centre += G.Centroid[e] * G.Area[e];
+    node.AreaVector += G.Normal[e] * G.Area[e];
+    area += G.Area[e];
   }
-  node.Centre = area > 0 ? node.Centre * (1.0 / area) : G.centroid[members.front()];
+  node.Centre = area > 0 ? node.Centre * (1.0 / area) : G.Centroid[members.front()];
   for (int e : members)
   {
     for (int v = 0; v < Mesh.PolygonSize(e); ++v)
     {
-      node.Radius = std::max(node.Radius, Norm(Mesh.points[Mesh.Polygon(e)[v]] - node.Centre));
+      node.Radius = std::max(node.Radius, Norm(Mesh.Points[Mesh.Polygon(e)[v]] - node.Centre));
     }
   }
   node.Cone = ConeOf(G, members);
   for (int e : members)
   {
-    const Vec3 offset = G.centroid[e] - node.Centre;
-    const double along = G.area[e] * Dot(G.normal[e], offset);
+    const Vec3 offset = G.Centroid[e] - node.Centre;
+    const double along = G.Area[e] * Dot(G.Normal[e], offset);
     node.Moment += along;
     node.OffsetMoment += offset * along;
     for (int row = 0; row < 3; ++row)
     {
-      node.Spread[row] += G.normal[e] * (G.area[e] * offset[row]);
+      node.Spread[row] += G.Normal[e] * (G.Area[e] * offset[row]);
     }
   }
 }
@@ -205,9 +205,9 @@ double ClusterTree::NodeFactor(int index, const Vec3& x, const Vec3& normal, std
   for (int i = node.First; i < node.First + node.Count; ++i)
   {
     const int e = Order[i];
-    if (Dot(G.normal[e], x - G.centroid[e]) > 0)
+    if (Dot(G.Normal[e], x - G.Centroid[e]) > 0)
     {
-      f += PointToPolygonFormFactor(x, normal, Loops.data() + Mesh.offsets[e], Mesh.PolygonSize(e), scratch);
+      f += PointToPolygonFormFactor(x, normal, Loops.data() + Mesh.Offsets[e], Mesh.PolygonSize(e), scratch);
     }
   }
   return f;
@@ -253,11 +253,11 @@ bool ClusterTree::NodeVectorFor(
   for (int i = node.First; i < node.First + node.Count; ++i)
   {
     const int e = Order[i];
-    if (Dot(G.normal[e], c - G.centroid[e]) <= 0)
+    if (Dot(G.Normal[e], c - G.Centroid[e]) <= 0)
     {
       continue;
     }
-    ClipToHalfSpace(Loops.data() + Mesh.offsets[e], Mesh.PolygonSize(e), c, cone.Axis, clipped);
+    ClipToHalfSpace(Loops.data() + Mesh.Offsets[e], Mesh.PolygonSize(e), c, cone.Axis, clipped);
     if (clipped.size() >= 3)
     {
       sum += PolygonFactorVector(c, clipped.data(), static_cast<int>(clipped.size()));
@@ -291,9 +291,9 @@ void ClusterTree::NodeVector(int index, const Vec3& x, Vec3& sum) const
   for (int i = node.First; i < node.First + node.Count; ++i)
   {
     const int e = Order[i];
-    if (Dot(G.normal[e], x - G.centroid[e]) > 0)
+    if (Dot(G.Normal[e], x - G.Centroid[e]) > 0)
     {
-      sum += PolygonFactorVector(x, Loops.data() + Mesh.offsets[e], Mesh.PolygonSize(e));
+      sum += PolygonFactorVector(x, Loops.data() + Mesh.Offsets[e], Mesh.PolygonSize(e));
     }
   }
 }

@@ -11,16 +11,16 @@ namespace radiosity
 
 bool InsideElement(const SceneMesh& mesh, const SceneGeometry& g, int e, const Vec3& x, double tolerance)
 {
-  const Vec3& n = g.normal[e];
-  if (std::fabs(Dot(n, x - g.centroid[e])) > tolerance)
+  const Vec3& n = g.Normal[e];
+  if (std::fabs(Dot(n, x - g.Centroid[e])) > tolerance)
   {
     return false;
   }
   const int* ids = mesh.Polygon(e);
   for (int v = 0; v < mesh.PolygonSize(e); ++v)
   {
-    const Vec3& a = mesh.points[ids[v]];
-    const Vec3& b = mesh.points[ids[(v + 1) % mesh.PolygonSize(e)]];
+    const Vec3& a = mesh.Points[ids[v]];
+    const Vec3& b = mesh.Points[ids[(v + 1) % mesh.PolygonSize(e)]];
     // Within `tolerance` of an edge counts as inside: a centroid on the edge two elements
     // share would otherwise fall, by rounding, in neither.
     if (Dot(Cross(b - a, x - a), n) < -tolerance * Norm(b - a))
@@ -36,7 +36,7 @@ Bounds ElementBounds(const SceneMesh& mesh, int e)
   Bounds b;
   for (int v = 0; v < mesh.PolygonSize(e); ++v)
   {
-    b.Add(mesh.points[mesh.Polygon(e)[v]]);
+    b.Add(mesh.Points[mesh.Polygon(e)[v]]);
   }
   return b;
 }
@@ -59,13 +59,13 @@ struct CentroidGrid
     for (int c : candidates)
     {
       sizes.push_back(ElementBounds(mesh, c).Diagonal());
-      All.Add(g.centroid[c]);
+      All.Add(g.Centroid[c]);
     }
     std::nth_element(sizes.begin(), sizes.begin() + sizes.size() / 2, sizes.end());
-    Step = std::max(sizes[sizes.size() / 2], 1e-12 * std::max(1.0, g.sceneDiagonal));
+    Step = std::max(sizes[sizes.size() / 2], 1e-12 * std::max(1.0, g.SceneDiagonal));
     for (int c : candidates)
     {
-      Cells[QuantizedPoint(g.centroid[c], Step)].push_back(c);
+      Cells[QuantizedPoint(g.Centroid[c], Step)].push_back(c);
     }
   }
 
@@ -106,7 +106,7 @@ std::vector<int> FaceToFace(const SceneMesh& mesh, const SceneGeometry& g, const
     return {};
   }
   const CentroidGrid grid(mesh, g, candidates);
-  std::vector<char> touching(g.normal.size(), 0);
+  std::vector<char> touching(g.Normal.size(), 0);
   for (int f = 0; f < mesh.NumberOfPolygons(); ++f)
   {
     Bounds box = ElementBounds(mesh, f);
@@ -117,8 +117,8 @@ std::vector<int> FaceToFace(const SceneMesh& mesh, const SceneGeometry& g, const
     box.Lo = box.Lo - Vec3{ tolerance, tolerance, tolerance };
     box.Hi = box.Hi + Vec3{ tolerance, tolerance, tolerance };
     grid.Near(box, candidates, [&](int c) {
-      if (!touching[c] && c != f && Dot(g.normal[c], g.normal[f]) < -1 + 1e-6 &&
-        InsideElement(mesh, g, f, g.centroid[c], tolerance))
+      if (!touching[c] && c != f && Dot(g.Normal[c], g.Normal[f]) < -1 + 1e-6 &&
+        InsideElement(mesh, g, f, g.Centroid[c], tolerance))
       {
         touching[c] = 1;
       }

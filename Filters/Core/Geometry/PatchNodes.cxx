@@ -79,8 +79,8 @@ std::vector<std::pair<size_t, double>> FanShares(size_t fan, const double* w, si
 
 PatchNodes::PatchNodes(const SceneGeometry& g, const std::vector<std::vector<Vec3>>& loops, const std::vector<Vec3>& centres)
 {
-  WeightBegin.assign(g.normal.size(), 0);
-  for (size_t p = 0; p < g.patchElements.size(); ++p)
+  WeightBegin.assign(g.Normal.size(), 0);
+  for (size_t p = 0; p < g.PatchElements.size(); ++p)
   {
     AddNodes(static_cast<int>(p), g, loops[p], centres[p]);
   }
@@ -88,8 +88,8 @@ PatchNodes::PatchNodes(const SceneGeometry& g, const std::vector<std::vector<Vec
 
 void PatchNodes::AddNodes(int patch, const SceneGeometry& g, std::vector<Vec3> loop, const Vec3& centre)
 {
-  const std::vector<int>& elements = g.patchElements[patch];
-  const Vec3 normal = elements.empty() ? Vec3() : g.normal[elements[0]];
+  const std::vector<int>& elements = g.PatchElements[patch];
+  const Vec3 normal = elements.empty() ? Vec3() : g.Normal[elements[0]];
   // Mean value coordinates need the point inside a simple loop seen from the front; where
   // that is not sure (no loop, or the loop winds backwards), one node at the centre.
   double winding = 0;
@@ -124,24 +124,24 @@ void PatchNodes::AddNodes(int patch, const SceneGeometry& g, std::vector<Vec3> l
     double* w = WeightData.data() + WeightBegin[e];
     if (corners.empty())
     {
-      w[0] = g.sheltered[e] ? 0 : 1;
+      w[0] = g.Sheltered[e] ? 0 : 1;
     }
     else
     {
-      const size_t fan = FanCoordinates(g.centroid[e], normal, corners, centre, w);
+      const size_t fan = FanCoordinates(g.Centroid[e], normal, corners, centre, w);
       for (const auto& [shared, part] : FanShares(fan, w, corners.size()))
       {
-        fanTotal[shared] += part * g.area[e];
-        fanOpen[shared] += g.sheltered[e] ? 0.0 : part * g.area[e];
+        fanTotal[shared] += part * g.Area[e];
+        fanOpen[shared] += g.Sheltered[e] ? 0.0 : part * g.Area[e];
       }
-      if (g.sheltered[e])
+      if (g.Sheltered[e])
       {
         std::fill(w, w + loop.size(), 0.0); // what reaches the patch as a whole lands on its open part
       }
     }
     for (size_t j = 0; j < loop.size(); ++j)
     {
-      Area[first + j] += w[j] * g.area[e];
+      Area[first + j] += w[j] * g.Area[e];
     }
   }
   for (size_t i = 0; i < corners.size(); ++i)

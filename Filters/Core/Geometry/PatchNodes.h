@@ -26,7 +26,7 @@ public:
   int End(int patch) const { return NodeBegin[patch + 1]; }
   const Vec3& Node(int node) const { return Position[node]; }
   /// Sum over the patch's elements of weight x area: what a unit value at the node covers.
-  /// Sheltered elements (SceneGeometry::sheltered) have weight 0: what reaches a patch as a
+  /// Sheltered elements (SceneGeometry::Sheltered) have weight 0: what reaches a patch as a
   /// whole lands on its open part.
   double CoveredArea(int node) const { return Area[node]; }
   /// The fan triangles (centre, corner i, corner i+1) of a patch with corners: node

@@ -6,7 +6,7 @@ namespace radiosity
 std::vector<Vec3> AverageToPoints(
   const SceneMesh& mesh, const SceneGeometry& geometry, const std::vector<Vec3>& cells, int columns)
 {
-  const size_t points = mesh.points.size();
+  const size_t points = mesh.Points.size();
   std::vector<Vec3> sums(points * columns);
   std::vector<double> weights(points, 0.0);
   // A sheltered element (under furniture, above a ceiling lamp's back) is dark because its
@@ -16,7 +16,7 @@ std::vector<Vec3> AverageToPoints(
   std::vector<char> open(points, 0);
   for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
   {
-    for (int v = 0; !geometry.sheltered[e] && v < mesh.PolygonSize(e); ++v)
+    for (int v = 0; !geometry.Sheltered[e] && v < mesh.PolygonSize(e); ++v)
     {
       open[mesh.Polygon(e)[v]] = 1;
     }
@@ -24,10 +24,10 @@ std::vector<Vec3> AverageToPoints(
   for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
   {
     const int* ids = mesh.Polygon(e);
-    const double w = geometry.area[e];
+    const double w = geometry.Area[e];
     for (int v = 0; v < mesh.PolygonSize(e); ++v)
     {
-      if (geometry.sheltered[e] && open[ids[v]])
+      if (geometry.Sheltered[e] && open[ids[v]])
       {
         continue;
       }

@@ -16,16 +16,16 @@ std::string PrepareRays(const SceneMesh& mesh, int threads, PreparedScene& scene
   }
   scene = PreparedScene();
   scene.Rays = std::move(rays);
-  scene.Points = static_cast<long long>(mesh.points.size());
+  scene.Points = static_cast<long long>(mesh.Points.size());
   scene.Polygons = mesh.NumberOfPolygons();
-  scene.Corners = static_cast<long long>(mesh.connectivity.size());
+  scene.Corners = static_cast<long long>(mesh.Connectivity.size());
   return "";
 }
 
 bool PreparedScene::Fits(const SceneMesh& mesh, bool transport) const
 {
-  return Rays && (!transport || Geometry) && Points == static_cast<long long>(mesh.points.size()) &&
-    Polygons == mesh.NumberOfPolygons() && Corners == static_cast<long long>(mesh.connectivity.size());
+  return Rays && (!transport || Geometry) && Points == static_cast<long long>(mesh.Points.size()) &&
+    Polygons == mesh.NumberOfPolygons() && Corners == static_cast<long long>(mesh.Connectivity.size());
 }
 
 std::string PrepareTransport(const SceneMesh& mesh, int threads, const ProcessGroup& group, PreparedScene& scene)

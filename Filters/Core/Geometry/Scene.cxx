@@ -11,8 +11,8 @@ namespace radiosity
 
 void SceneMesh::AddPolygon(const std::vector<int>& ids)
 {
-  connectivity.insert(connectivity.end(), ids.begin(), ids.end());
-  offsets.push_back(static_cast<int>(connectivity.size()));
+  Connectivity.insert(Connectivity.end(), ids.begin(), ids.end());
+  Offsets.push_back(static_cast<int>(Connectivity.size()));
 }
 
 namespace
@@ -24,7 +24,7 @@ bool Finite(const Vec3& v)
 
 std::vector<Vec3> Loop(const SceneMesh& mesh, int i)
 {
-  return GatherLoop(mesh.points, mesh.offsets, mesh.connectivity, i);
+  return GatherLoop(mesh.Points, mesh.Offsets, mesh.Connectivity, i);
 }
 } // namespace
 
@@ -53,17 +53,17 @@ std::string ArraysProblem(const SceneMesh& mesh)
   {
     return "the input has no polygons";
   }
-  if (static_cast<int>(mesh.reflectance.size()) != n || static_cast<int>(mesh.lightId.size()) != n)
+  if (static_cast<int>(mesh.Reflectance.size()) != n || static_cast<int>(mesh.LightId.size()) != n)
   {
     return "Reflectance and LightId must have one tuple per polygon";
   }
-  if (!mesh.patchId.empty() && static_cast<int>(mesh.patchId.size()) != n)
+  if (!mesh.PatchId.empty() && static_cast<int>(mesh.PatchId.size()) != n)
   {
     return "PatchId must have one tuple per polygon";
   }
-  for (size_t p = 0; p < mesh.points.size(); ++p)
+  for (size_t p = 0; p < mesh.Points.size(); ++p)
   {
-    if (!Finite(mesh.points[p]))
+    if (!Finite(mesh.Points[p]))
     {
       return "point " + std::to_string(p) + " has a non-finite coordinate";
     }
@@ -85,7 +85,7 @@ std::string CellProblem(const SceneMesh& mesh, int i)
   for (int v = 0; v < size; ++v)
   {
     const int id = mesh.Polygon(i)[v];
-    if (id < 0 || id >= static_cast<int>(mesh.points.size()))
+    if (id < 0 || id >= static_cast<int>(mesh.Points.size()))
     {
       err << "cell " << i << " refers to missing point " << id;
       return err.str();
@@ -97,20 +97,20 @@ std::string CellProblem(const SceneMesh& mesh, int i)
   {
     return "cell " + std::to_string(i) + " " + problem;
   }
-  const std::string reflectance = ReflectanceProblem(mesh.reflectance[i], i);
+  const std::string reflectance = ReflectanceProblem(mesh.Reflectance[i], i);
   if (!reflectance.empty())
   {
     return reflectance;
   }
-  if (mesh.lightId[i] >= n)
+  if (mesh.LightId[i] >= n)
   {
-    err << "LightId of cell " << i << " is " << mesh.lightId[i] << "; there are only " << n
+    err << "LightId of cell " << i << " is " << mesh.LightId[i] << "; there are only " << n
         << " cells, so ids must be -1 or 0..k-1 with k <= " << n;
     return err.str();
   }
-  if (mesh.lightId[i] < -1)
+  if (mesh.LightId[i] < -1)
   {
-    err << "LightId of cell " << i << " is " << mesh.lightId[i] << "; use -1 or 0..k-1";
+    err << "LightId of cell " << i << " is " << mesh.LightId[i] << "; use -1 or 0..k-1";
     return err.str();
   }
   return "";
@@ -120,7 +120,7 @@ std::string CellProblem(const SceneMesh& mesh, int i)
 std::string LightGap(const SceneMesh& mesh, int maxLight)
 {
   std::vector<char> seen(maxLight + 1, 0);
-  for (int id : mesh.lightId)
+  for (int id : mesh.LightId)
   {
     if (id >= 0)
     {
@@ -146,7 +146,7 @@ std::string ValidateScene(const SceneMesh& mesh, int& numberOfLights)
   for (int i = 0; i < mesh.NumberOfPolygons() && problem.empty(); ++i)
   {
     problem = CellProblem(mesh, i);
-    maxLight = std::max(maxLight, mesh.lightId[i]);
+    maxLight = std::max(maxLight, mesh.LightId[i]);
   }
   if (!problem.empty())
   {
@@ -168,42 +168,42 @@ std::string ValidateScene(const SceneMesh& mesh, int& numberOfLights)
 SceneGeometry::SceneGeometry(const SceneMesh& mesh)
 {
   const int n = mesh.NumberOfPolygons();
-  normal.resize(n);
-  area.resize(n);
-  centroid.resize(n);
-  elementPatch.resize(n);
+  Normal.resize(n);
+  Area.resize(n);
+  Centroid.resize(n);
+  ElementPatch.resize(n);
   // Patches numbered in the order of their ids, not of their first elements: the solver's
   // PatchId output (split patches last) then numbers them as the solver did, however the
   // cells are ordered (ranks append their pieces in another order than one process).
   std::map<int, int> compact;
   for (int i = 0; i < n; ++i)
   {
-    compact.emplace(mesh.patchId.empty() ? i : mesh.patchId[i], 0);
+    compact.emplace(mesh.PatchId.empty() ? i : mesh.PatchId[i], 0);
   }
   int next = 0;
   for (auto& id : compact)
   {
     id.second = next++;
   }
-  patchElements.assign(compact.size(), {});
-  patchArea.assign(compact.size(), 0.0);
+  PatchElements.assign(compact.size(), {});
+  PatchArea.assign(compact.size(), 0.0);
   for (int i = 0; i < n; ++i)
   {
     const std::vector<Vec3> loop = Loop(mesh, i);
     const Vec3 newell = NewellVector(loop.data(), static_cast<int>(loop.size()));
-    normal[i] = Normalized(newell);
-    area[i] = 0.5 * Norm(newell);
-    centroid[i] = PolygonCentroid(loop.data(), static_cast<int>(loop.size()));
-    const int patch = compact[mesh.patchId.empty() ? i : mesh.patchId[i]];
-    elementPatch[i] = patch;
-    patchElements[patch].push_back(i);
-    patchArea[patch] += area[i];
+    Normal[i] = Normalized(newell);
+    Area[i] = 0.5 * Norm(newell);
+    Centroid[i] = PolygonCentroid(loop.data(), static_cast<int>(loop.size()));
+    const int patch = compact[mesh.PatchId.empty() ? i : mesh.PatchId[i]];
+    ElementPatch[i] = patch;
+    PatchElements[patch].push_back(i);
+    PatchArea[patch] += Area[i];
   }
-  sceneDiagonal = Bounds(mesh.points).Diagonal();
-  rayLift = std::max(1e-6 * sceneDiagonal, 4.0 * mesh.pointQuantum);
-  enclosed.assign(n, 0);
-  sheltered.assign(n, 0);
-  patchOpenArea = patchArea;
+  SceneDiagonal = Bounds(mesh.Points).Diagonal();
+  RayLift = std::max(1e-6 * SceneDiagonal, 4.0 * mesh.PointQuantum);
+  Enclosed.assign(n, 0);
+  Sheltered.assign(n, 0);
+  PatchOpenArea = PatchArea;
 }
 
 } // namespace radiosity

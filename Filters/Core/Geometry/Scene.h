@@ -17,19 +17,19 @@ namespace radiosity
 /// - a polygon's front side is given by the right-hand rule; emitters emit only forward.
 struct SceneMesh
 {
-  std::vector<Vec3> points;
-  std::vector<int> offsets{ 0 }; ///< polygon i uses connectivity[offsets[i], offsets[i+1])
-  std::vector<int> connectivity;
-  std::vector<Vec3> reflectance; ///< per polygon, RGB in [0, 1]
-  std::vector<int> lightId;      ///< per polygon, -1 or 0..k-1
-  std::vector<int> patchId;      ///< per polygon; empty: every polygon is its own patch
+  std::vector<Vec3> Points;
+  std::vector<int> Offsets{ 0 }; ///< polygon i uses connectivity[offsets[i], offsets[i+1])
+  std::vector<int> Connectivity;
+  std::vector<Vec3> Reflectance; ///< per polygon, RGB in [0, 1]
+  std::vector<int> LightId;      ///< per polygon, -1 or 0..k-1
+  std::vector<int> PatchId;      ///< per polygon; empty: every polygon is its own patch
   /// How finely the coordinates were given: float input's spacing at its farthest
   /// coordinate (a surface there can sit that far off another it touches), 0 for double.
-  double pointQuantum = 0;
+  double PointQuantum = 0;
 
-  int NumberOfPolygons() const { return static_cast<int>(offsets.size()) - 1; }
-  int PolygonSize(int i) const { return offsets[i + 1] - offsets[i]; }
-  const int* Polygon(int i) const { return connectivity.data() + offsets[i]; }
+  int NumberOfPolygons() const { return static_cast<int>(Offsets.size()) - 1; }
+  int PolygonSize(int i) const { return Offsets[i + 1] - Offsets[i]; }
+  const int* Polygon(int i) const { return Connectivity.data() + Offsets[i]; }
   void AddPolygon(const std::vector<int>& ids);
 };
 
@@ -44,28 +44,28 @@ std::string ValidateScene(const SceneMesh& mesh, int& numberOfLights);
 /// Geometry derived once per solve: element normals, areas, centroids and patch groups.
 struct SceneGeometry
 {
-  std::vector<Vec3> normal; ///< unit, per element
-  std::vector<double> area;
-  std::vector<Vec3> centroid;
-  std::vector<std::vector<int>> patchElements; ///< elements of each (compacted) patch
-  std::vector<int> elementPatch;               ///< compacted patch index of each element
-  std::vector<double> patchArea;
+  std::vector<Vec3> Normal; ///< unit, per element
+  std::vector<double> Area;
+  std::vector<Vec3> Centroid;
+  std::vector<std::vector<int>> PatchElements; ///< elements of each (compacted) patch
+  std::vector<int> ElementPatch;               ///< compacted patch index of each element
+  std::vector<double> PatchArea;
   /// Elements no light can reach or leave (inside a closed object, e.g. floor under a
   /// cabinet), and each patch's area without them: a patch's unshot energy is spread over
   /// its open area, or a patch straddling a footprint would shoot part of its power into
   /// the object and lose it (see MarkEnclosed). All open until marked.
-  std::vector<char> enclosed;
-  std::vector<double> patchOpenArea;
+  std::vector<char> Enclosed;
+  std::vector<double> PatchOpenArea;
   /// Elements most of whose hemisphere is blocked at once (the ceiling just above a lamp's
   /// back, the floor at a cabinet's foot): dark for a reason that stops at their edge, so
   /// vertex averages leave them out where open neighbours exist, and patch links do not land
   /// on them. Enclosed implies sheltered.
-  std::vector<char> sheltered;
-  double sceneDiagonal = 0;
+  std::vector<char> Sheltered;
+  double SceneDiagonal = 0;
   /// How far off its surface a ray starts: a millionth of the scene, and above the noise
   /// of float input far from the origin (there a flat polygon's corners can sit a float
   /// step off its plane, and a ray lifted less starts behind its own surface).
-  double rayLift = 0;
+  double RayLift = 0;
 
   explicit SceneGeometry(const SceneMesh& mesh);
 };
@@ -76,15 +76,15 @@ struct SceneGeometry
 template <typename PointValue>
 double FanAverage(const SceneMesh& mesh, const SceneGeometry& g, int e, PointValue value)
 {
-  const Vec3& c = g.centroid[e];
+  const Vec3& c = g.Centroid[e];
   const int* ids = mesh.Polygon(e);
   const int count = mesh.PolygonSize(e);
   double sum = 0, area = 0;
   for (int i = 0; i < count; ++i)
   {
-    const Vec3& a = mesh.points[ids[i]];
-    const Vec3& b = mesh.points[ids[(i + 1) % count]];
-    const double part = 0.5 * Dot(Cross(a - c, b - c), g.normal[e]);
+    const Vec3& a = mesh.Points[ids[i]];
+    const Vec3& b = mesh.Points[ids[(i + 1) % count]];
+    const double part = 0.5 * Dot(Cross(a - c, b - c), g.Normal[e]);
     if (part > 0)
     {
       sum += part * value((c + a + b) * (1.0 / 3.0));

@@ -58,7 +58,7 @@ RTCGeometry TriangleGeometry(RTCDevice device, const SceneMesh& mesh, const Vec3
     loop.clear();
     for (int v = 0; v < mesh.PolygonSize(i); ++v)
     {
-      loop.push_back(mesh.points[ids[v]]);
+      loop.push_back(mesh.Points[ids[v]]);
     }
     const std::vector<int> triangle = Triangulate(loop.data(), static_cast<int>(loop.size()));
     for (size_t t = 0; t + 2 < triangle.size(); t += 3)
@@ -71,14 +71,14 @@ RTCGeometry TriangleGeometry(RTCDevice device, const SceneMesh& mesh, const Vec3
   }
   RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
   auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0,
-    RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.points.size()));
+    RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.Points.size()));
   auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0,
     RTC_FORMAT_UINT3, 3 * sizeof(unsigned), polygonOf.size()));
   if (vertices && indices)
   {
-    for (size_t p = 0; p < mesh.points.size(); ++p)
+    for (size_t p = 0; p < mesh.Points.size(); ++p)
     {
-      const Vec3 q = mesh.points[p] - origin;
+      const Vec3 q = mesh.Points[p] - origin;
       vertices[3 * p + 0] = static_cast<float>(q.x);
       vertices[3 * p + 1] = static_cast<float>(q.y);
       vertices[3 * p + 2] = static_cast<float>(q.z);
@@ -111,7 +111,7 @@ Visibility::Visibility(const SceneMesh& mesh)
 {
   Internals& d = *Impl;
   // Embree works in float: center the scene so large coordinates keep their precision.
-  d.Origin = Bounds(mesh.points).Centre();
+  d.Origin = Bounds(mesh.Points).Centre();
   d.Device = SharedDevice();
   if (!d.Device)
   {
@@ -307,19 +307,19 @@ bool Visibility::Decode(
   {
     return Impl->Fixed->Decode(RTC_INVALID_GEOMETRY_ID, geometry, triangle, u, v, distance, hit);
   }
-  hit.distance = distance;
-  hit.u = u;
-  hit.v = v;
+  hit.Distance = distance;
+  hit.U = u;
+  hit.V = v;
   if (geometry != Impl->MeshId) // a dynamic object: no polygon of the mesh
   {
-    hit.polygon = -1;
-    hit.corner[0] = hit.corner[1] = hit.corner[2] = -1;
+    hit.Polygon = -1;
+    hit.Corner[0] = hit.Corner[1] = hit.Corner[2] = -1;
     return true;
   }
-  hit.polygon = Impl->TrianglePolygon[triangle];
+  hit.Polygon = Impl->TrianglePolygon[triangle];
   for (int c = 0; c < 3; ++c)
   {
-    hit.corner[c] = static_cast<int>(Impl->TriangleCorners[3 * triangle + c]);
+    hit.Corner[c] = static_cast<int>(Impl->TriangleCorners[3 * triangle + c]);
   }
   return true;
 }
@@ -335,10 +335,10 @@ int BlockedProbes(const Visibility& rays, const SceneMesh& mesh, const SceneGeom
 {
   // The frame follows the element's first edge, not the world axes, so a rotated scene
   // probes the same directions relative to its geometry and is marked the same.
-  const Vec3& n = g.normal[e];
-  const Vec3 edge = mesh.points[mesh.Polygon(e)[1]] - mesh.points[mesh.Polygon(e)[0]];
+  const Vec3& n = g.Normal[e];
+  const Vec3 edge = mesh.Points[mesh.Polygon(e)[1]] - mesh.Points[mesh.Polygon(e)[0]];
   const Vec3 t = Normalized(edge - n * Dot(edge, n)), b = Cross(n, t);
-  const Vec3 origin = g.centroid[e] + n * touching;
+  const Vec3 origin = g.Centroid[e] + n * touching;
   int blocked = 0;
   lit = 0;
   for (int r = 0; r < 17 && (r - blocked < 9 || r == blocked + lit); ++r)
@@ -351,11 +351,11 @@ int BlockedProbes(const Visibility& rays, const SceneMesh& mesh, const SceneGeom
     {
       continue;
     }
-    if (Dot(g.normal[hit.polygon], direction) > 0 || hit.distance <= 2 * touching)
+    if (Dot(g.Normal[hit.Polygon], direction) > 0 || hit.Distance <= 2 * touching)
     {
       ++blocked;
     }
-    else if (mesh.lightId[hit.polygon] >= 0)
+    else if (mesh.LightId[hit.Polygon] >= 0)
     {
       ++lit;
     }
@@ -384,11 +384,11 @@ namespace
 std::vector<int> SeenAcrossEdges(const Visibility& rays, const SceneMesh& mesh, const SceneGeometry& g)
 {
   const int n = mesh.NumberOfPolygons();
-  const double lift = g.rayLift;
+  const double lift = g.RayLift;
   // (edge, element) pairs sorted by edge: a map of a million elements' edges is slow.
-  const long long points = static_cast<long long>(mesh.points.size());
+  const long long points = static_cast<long long>(mesh.Points.size());
   std::vector<std::pair<long long, int>> edges;
-  edges.reserve(mesh.connectivity.size());
+  edges.reserve(mesh.Connectivity.size());
   for (int e = 0; e < n; ++e)
   {
     const int* ids = mesh.Polygon(e);
@@ -404,9 +404,9 @@ std::vector<int> SeenAcrossEdges(const Visibility& rays, const SceneMesh& mesh, 
   for (size_t i = 0; i + 1 < edges.size(); ++i)
   {
     const int a = edges[i].second, b = edges[i + 1].second;
-    if (edges[i].first == edges[i + 1].first && g.elementPatch[a] == g.elementPatch[b] &&
+    if (edges[i].first == edges[i + 1].first && g.ElementPatch[a] == g.ElementPatch[b] &&
       Root(parent, a) != Root(parent, b) &&
-      !rays.Occluded(g.centroid[a] + g.normal[a] * lift, g.centroid[b] + g.normal[b] * lift, 1e-6))
+      !rays.Occluded(g.Centroid[a] + g.Normal[a] * lift, g.Centroid[b] + g.Normal[b] * lift, 1e-6))
     {
       parent[Root(parent, a)] = Root(parent, b);
     }
@@ -419,10 +419,10 @@ std::vector<int> SeenAcrossEdges(const Visibility& rays, const SceneMesh& mesh, 
 /// points of their own per plane, so they share no edge by id.
 bool OnSeveralPlanes(const SceneGeometry& g, const std::vector<int>& members)
 {
-  const Vec3& n = g.normal[members[0]];
-  const Vec3& c = g.centroid[members[0]];
+  const Vec3& n = g.Normal[members[0]];
+  const Vec3& c = g.Centroid[members[0]];
   return std::any_of(members.begin(), members.end(), [&](int e) {
-    return Dot(g.normal[e], n) < 1 - 1e-9 || std::fabs(Dot(n, g.centroid[e] - c)) > 1e-9 * g.sceneDiagonal;
+    return Dot(g.Normal[e], n) < 1 - 1e-9 || std::fabs(Dot(n, g.Centroid[e] - c)) > 1e-9 * g.SceneDiagonal;
   });
 }
 
@@ -430,7 +430,7 @@ bool OnSeveralPlanes(const SceneGeometry& g, const std::vector<int>& members)
 int SplitPatch(int p, std::vector<int>& parent, SceneGeometry& g)
 {
   std::map<int, std::vector<int>> groups;
-  for (int e : g.patchElements[p])
+  for (int e : g.PatchElements[p])
   {
     groups[Root(parent, e)].push_back(e);
   }
@@ -438,13 +438,13 @@ int SplitPatch(int p, std::vector<int>& parent, SceneGeometry& g)
   {
     return 0;
   }
-  const int keep = Root(parent, g.patchElements[p][0]);
-  g.patchElements[p] = groups[keep];
+  const int keep = Root(parent, g.PatchElements[p][0]);
+  g.PatchElements[p] = groups[keep];
   for (auto& group : groups)
   {
     if (group.first != keep)
     {
-      g.patchElements.push_back(group.second);
+      g.PatchElements.push_back(group.second);
     }
   }
   return static_cast<int>(groups.size()) - 1;
@@ -455,25 +455,25 @@ int SplitSeparatedPatches(const Visibility& rays, const SceneMesh& mesh, SceneGe
 {
   std::vector<int> parent = SeenAcrossEdges(rays, mesh, g);
   int added = 0;
-  const size_t patches = g.patchElements.size();
+  const size_t patches = g.PatchElements.size();
   for (size_t p = 0; p < patches; ++p)
   {
-    added += OnSeveralPlanes(g, g.patchElements[p]) ? 0 : SplitPatch(static_cast<int>(p), parent, g);
+    added += OnSeveralPlanes(g, g.PatchElements[p]) ? 0 : SplitPatch(static_cast<int>(p), parent, g);
   }
   if (added == 0)
   {
     return 0;
   }
-  g.patchArea.assign(g.patchElements.size(), 0.0);
-  for (size_t p = 0; p < g.patchElements.size(); ++p)
+  g.PatchArea.assign(g.PatchElements.size(), 0.0);
+  for (size_t p = 0; p < g.PatchElements.size(); ++p)
   {
-    for (int e : g.patchElements[p])
+    for (int e : g.PatchElements[p])
     {
-      g.elementPatch[e] = static_cast<int>(p);
-      g.patchArea[p] += g.area[e];
+      g.ElementPatch[e] = static_cast<int>(p);
+      g.PatchArea[p] += g.Area[e];
     }
   }
-  return added; // MarkEnclosed derives patchOpenArea from these
+  return added; // MarkEnclosed derives PatchOpenArea from these
 }
 
 void MarkEnclosed(const Visibility& rays, const SceneMesh& mesh, SceneGeometry& g, int threads, const ProcessGroup& group)
@@ -481,10 +481,10 @@ void MarkEnclosed(const Visibility& rays, const SceneMesh& mesh, SceneGeometry& 
   // Touching, relative to the scene, and never finer than float input can place a surface
   // far from the origin (a leg standing on a floor 500 km away can float 3 cm above it).
   // Double input keeps its precision wherever it is: site coordinates are not float noise.
-  const double touching = std::max(1e-6 * g.sceneDiagonal, 8.4 * mesh.pointQuantum);
+  const double touching = std::max(1e-6 * g.SceneDiagonal, 8.4 * mesh.PointQuantum);
   const WorkerPool pool(threads);
   Collective ranks(group);
-  const int n = static_cast<int>(g.normal.size()), step = ranks.Ranks();
+  const int n = static_cast<int>(g.Normal.size()), step = ranks.Ranks();
   // Counts (blocked, then on a lamp), summed over the ranks that probed them.
   std::vector<double> counts(2 * static_cast<size_t>(n), 0.0);
   pool.For((n - ranks.Rank() + step - 1) / step, 256, [&](int begin, int end) {
@@ -500,9 +500,9 @@ void MarkEnclosed(const Visibility& rays, const SceneMesh& mesh, SceneGeometry& 
   std::vector<int> shutIn;
   for (int e = 0; e < n; ++e)
   {
-    g.enclosed[e] = counts[2 * e] == 17;
-    g.sheltered[e] = counts[2 * e] >= 9;
-    if (!g.enclosed[e] && (g.sheltered[e] || counts[2 * e] + counts[2 * e + 1] == 17))
+    g.Enclosed[e] = counts[2 * e] == 17;
+    g.Sheltered[e] = counts[2 * e] >= 9;
+    if (!g.Enclosed[e] && (g.Sheltered[e] || counts[2 * e] + counts[2 * e + 1] == 17))
     {
       shutIn.push_back(e);
     }
@@ -513,13 +513,13 @@ void MarkEnclosed(const Visibility& rays, const SceneMesh& mesh, SceneGeometry& 
   // the room.
   for (int e : FaceToFace(mesh, g, shutIn, 2 * touching))
   {
-    g.enclosed[e] = 1;
+    g.Enclosed[e] = 1;
   }
   // Summed, not subtracted: a wholly enclosed patch gets exactly 0.
-  g.patchOpenArea.assign(g.patchArea.size(), 0.0);
-  for (size_t e = 0; e < g.normal.size(); ++e)
+  g.PatchOpenArea.assign(g.PatchArea.size(), 0.0);
+  for (size_t e = 0; e < g.Normal.size(); ++e)
   {
-    g.patchOpenArea[g.elementPatch[e]] += g.enclosed[e] ? 0.0 : g.area[e];
+    g.PatchOpenArea[g.ElementPatch[e]] += g.Enclosed[e] ? 0.0 : g.Area[e];
   }
 }
 

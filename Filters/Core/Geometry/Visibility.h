@@ -37,10 +37,10 @@ public:
   /// in that triangle; returns false on a miss. Used to render images of a solution.
   struct Hit
   {
-    int polygon = -1;
-    int corner[3] = { -1, -1, -1 }; ///< point ids of the hit triangle
-    double u = 0, v = 0;            ///< weights of corner[1] and corner[2]
-    double distance = 0;            ///< from the origin, in world units
+    int Polygon = -1;
+    int Corner[3] = { -1, -1, -1 }; ///< point ids of the hit triangle
+    double U = 0, V = 0;            ///< weights of corner[1] and corner[2]
+    double Distance = 0;            ///< from the origin, in world units
   };
   bool Intersect(const Vec3& origin, const Vec3& direction, Hit& hit) const;
 
@@ -71,7 +71,7 @@ int SplitSeparatedPatches(const Visibility& rays, const SceneMesh& mesh, SceneGe
 /// Marks the elements that every one of 17 rays over their hemisphere (the normal, and 8
 /// each at 45 and 80 degrees from it) finds closed off: each ray hits a back face (it
 /// started inside an object) or a surface touching the element. Elements where at least
-/// 9 of them are closed off are marked sheltered (SceneGeometry::sheltered). An element
+/// 9 of them are closed off are marked sheltered (SceneGeometry::Sheltered). An element
 /// lying face to face on another surface (FaceToFace) is closed off too where at least 9
 /// rays are, or all but those ending on a lamp: the rays start past the face on it (the
 /// floor under a box, with a lamp shut in the box). Closed-off elements neither send

@@ -69,11 +69,11 @@ namespace
 void Shade(const Visibility::Hit& hit, const std::vector<const std::vector<Vec3>*>& layers,
   std::vector<std::vector<float>>& images, size_t at)
 {
-  const double w0 = 1.0 - hit.u - hit.v;
+  const double w0 = 1.0 - hit.U - hit.V;
   for (size_t l = 0; l < layers.size(); ++l)
   {
     const std::vector<Vec3>& values = *layers[l];
-    const Vec3 value = values[hit.corner[0]] * w0 + values[hit.corner[1]] * hit.u + values[hit.corner[2]] * hit.v;
+    const Vec3 value = values[hit.Corner[0]] * w0 + values[hit.Corner[1]] * hit.U + values[hit.Corner[2]] * hit.V;
     float* px = &images[l][at];
     px[0] = static_cast<float>(value.x);
     px[1] = static_cast<float>(value.y);
@@ -113,7 +113,7 @@ std::vector<std::vector<float>> RenderLayers(const Visibility& scene,
       scene.IntersectPacket(camera.Position, directions, count, hits, found);
       for (int i = 0; i < count; ++i)
       {
-        if (found[i] && hits[i].polygon >= 0) // a miss, or a dynamic object: no values there
+        if (found[i] && hits[i].Polygon >= 0) // a miss, or a dynamic object: no values there
         {
           Shade(hits[i], layers, images, 3 * (static_cast<size_t>(y) * w + x0 + i));
         }

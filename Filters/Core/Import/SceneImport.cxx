@@ -54,9 +54,9 @@ bool Emits(const ImportMaterial& m)
 std::vector<int> CornerIds(const RawScene& raw, int i)
 {
   std::vector<int> ids;
-  for (int k = raw.offsets[i]; k < raw.offsets[i + 1]; ++k)
+  for (int k = raw.Offsets[i]; k < raw.Offsets[i + 1]; ++k)
   {
-    const int id = raw.connectivity[k];
+    const int id = raw.Connectivity[k];
     if (ids.empty() || ids.back() != id)
     {
       ids.push_back(id);
@@ -72,18 +72,18 @@ std::vector<int> CornerIds(const RawScene& raw, int i)
 /// Drops points no polygon uses (files share vertex lists between meshes), renumbering.
 void KeepUsedPoints(SceneMesh& mesh)
 {
-  std::vector<int> newId(mesh.points.size(), -1);
+  std::vector<int> newId(mesh.Points.size(), -1);
   std::vector<Vec3> used;
-  for (int& id : mesh.connectivity)
+  for (int& id : mesh.Connectivity)
   {
     if (newId[id] < 0)
     {
       newId[id] = static_cast<int>(used.size());
-      used.push_back(mesh.points[id]);
+      used.push_back(mesh.Points[id]);
     }
     id = newId[id];
   }
-  mesh.points.swap(used);
+  mesh.Points.swap(used);
 }
 
 /// A unique light name: the wanted one, or with " (2)", " (3)"... when taken.
@@ -108,26 +108,26 @@ void AssignLights(const RawScene& raw, const std::vector<int>& kept, const Impor
   for (size_t p = 0; p < kept.size(); ++p)
   {
     const int i = kept[p];
-    const int m = raw.material[i];
-    if (m < 0 || !Emits(raw.materials[m]))
+    const int m = raw.Material[i];
+    if (m < 0 || !Emits(raw.Materials[m]))
     {
-      out.Mesh.lightId.push_back(-1);
+      out.Mesh.LightId.push_back(-1);
       out.Emission.push_back(Vec3());
       continue;
     }
-    const int object = options.LightPerObject ? raw.object[i] : -1;
+    const int object = options.LightPerObject ? raw.Object[i] : -1;
     auto found = lightOf.find({ object, m });
     if (found == lightOf.end())
     {
-      const std::string& material = raw.materials[m].Name;
-      const std::string wanted = object >= 0 && object < static_cast<int>(raw.objectNames.size())
-        ? raw.objectNames[object]
+      const std::string& material = raw.Materials[m].Name;
+      const std::string wanted = object >= 0 && object < static_cast<int>(raw.ObjectNames.size())
+        ? raw.ObjectNames[object]
         : material;
       found = lightOf.emplace(std::make_pair(object, m), static_cast<int>(out.LightNames.size())).first;
       out.LightNames.push_back(UniqueName(wanted, taken));
     }
-    out.Mesh.lightId.push_back(found->second);
-    out.Emission.push_back(raw.materials[m].Emissive);
+    out.Mesh.LightId.push_back(found->second);
+    out.Emission.push_back(raw.Materials[m].Emissive);
   }
 }
 
@@ -146,40 +146,40 @@ namespace
 /// The raw scene's lists against each other and its numbers finite: the file said it.
 std::string CheckRawScene(const RawScene& raw)
 {
-  const std::string error = CheckMaterials(raw.materials);
+  const std::string error = CheckMaterials(raw.Materials);
   if (!error.empty())
   {
     return error;
   }
   const size_t polygons = static_cast<size_t>(raw.NumberOfPolygons());
-  if (raw.material.size() != polygons || raw.object.size() != polygons || (!raw.color.empty() && raw.color.size() != polygons))
+  if (raw.Material.size() != polygons || raw.Object.size() != polygons || (!raw.Color.empty() && raw.Color.size() != polygons))
   {
     return "internal: material and object lists do not match the polygons";
   }
-  for (int id : raw.connectivity)
+  for (int id : raw.Connectivity)
   {
-    if (id < 0 || id >= static_cast<int>(raw.points.size()))
+    if (id < 0 || id >= static_cast<int>(raw.Points.size()))
     {
       return "a polygon refers to point " + std::to_string(id) + ", which does not exist";
     }
   }
-  for (int m : raw.material)
+  for (int m : raw.Material)
   {
-    if (m >= static_cast<int>(raw.materials.size()))
+    if (m >= static_cast<int>(raw.Materials.size()))
     {
       return "internal: a polygon refers to material " + std::to_string(m) + ", which does not exist";
     }
   }
-  for (const Vec3& c : raw.color)
+  for (const Vec3& c : raw.Color)
   {
     if (!Finite(c))
     {
       return "a polygon color is not a finite number";
     }
   }
-  for (size_t p = 0; p < raw.points.size(); ++p)
+  for (size_t p = 0; p < raw.Points.size(); ++p)
   {
-    if (!Finite(raw.points[p]))
+    if (!Finite(raw.Points[p]))
     {
       return "point " + std::to_string(p) + " has a coordinate that is not a finite number";
     }
@@ -191,19 +191,19 @@ std::string CheckRawScene(const RawScene& raw)
 /// `kept`; the others counted in out.Dropped).
 void KeepPolygons(const RawScene& raw, double unitScale, ImportedScene& out, std::vector<int>& kept)
 {
-  out.Mesh.points.reserve(raw.points.size());
-  for (const Vec3& p : raw.points)
+  out.Mesh.Points.reserve(raw.Points.size());
+  for (const Vec3& p : raw.Points)
   {
-    out.Mesh.points.push_back(p * unitScale);
+    out.Mesh.Points.push_back(p * unitScale);
   }
-  out.Mesh.pointQuantum = raw.pointQuantum * unitScale;
+  out.Mesh.PointQuantum = raw.PointQuantum * unitScale;
   for (int i = 0; i < raw.NumberOfPolygons(); ++i)
   {
     const std::vector<int> ids = CornerIds(raw, i);
     std::vector<Vec3> loop;
     for (int id : ids)
     {
-      loop.push_back(out.Mesh.points[id]);
+      loop.push_back(out.Mesh.Points[id]);
     }
     if (ids.size() < 3 || !PolygonProblem(loop.data(), static_cast<int>(loop.size())).empty())
     {
@@ -223,21 +223,21 @@ void AssignMaterials(const RawScene& raw, const std::vector<int>& kept, Imported
   int unassigned = 0;
   for (int i : kept)
   {
-    const int m = raw.material[i];
-    Vec3 diffuse = m >= 0 ? raw.materials[m].Diffuse : Vec3{ 0.8, 0.8, 0.8 };
-    if (!raw.color.empty())
+    const int m = raw.Material[i];
+    Vec3 diffuse = m >= 0 ? raw.Materials[m].Diffuse : Vec3{ 0.8, 0.8, 0.8 };
+    if (!raw.Color.empty())
     {
-      diffuse = { diffuse.x * raw.color[i].x, diffuse.y * raw.color[i].y, diffuse.z * raw.color[i].z };
+      diffuse = { diffuse.x * raw.Color[i].x, diffuse.y * raw.Color[i].y, diffuse.z * raw.Color[i].z };
     }
-    out.Mesh.reflectance.push_back(Clamped(diffuse));
+    out.Mesh.Reflectance.push_back(Clamped(diffuse));
     if (m >= 0 && !InUnitRange(diffuse))
     {
-      clamped.insert(raw.materials[m].Name);
+      clamped.insert(raw.Materials[m].Name);
     }
     unassigned += m < 0;
-    out.Material.push_back(m < 0 ? static_cast<int>(raw.materials.size()) : m);
+    out.Material.push_back(m < 0 ? static_cast<int>(raw.Materials.size()) : m);
   }
-  for (const ImportMaterial& m : raw.materials)
+  for (const ImportMaterial& m : raw.Materials)
   {
     out.MaterialNames.push_back(m.Name);
   }

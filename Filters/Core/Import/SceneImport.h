@@ -25,18 +25,18 @@ struct ImportMaterial
 /// Polygons as read from a file, before they become a radiosity scene.
 struct RawScene
 {
-  std::vector<Vec3> points;
-  std::vector<int> offsets{ 0 };
-  std::vector<int> connectivity;
-  std::vector<int> material; ///< per polygon: index into materials, or -1 for none
-  std::vector<int> object;   ///< per polygon: index into objectNames, or -1
-  std::vector<Vec3> color;  ///< per polygon, multiplies its material's diffuse; empty: none
-  std::vector<ImportMaterial> materials;
-  std::vector<std::string> objectNames;
+  std::vector<Vec3> Points;
+  std::vector<int> Offsets{ 0 };
+  std::vector<int> Connectivity;
+  std::vector<int> Material; ///< per polygon: index into materials, or -1 for none
+  std::vector<int> Object;   ///< per polygon: index into objectNames, or -1
+  std::vector<Vec3> Color;  ///< per polygon, multiplies its material's diffuse; empty: none
+  std::vector<ImportMaterial> Materials;
+  std::vector<std::string> ObjectNames;
   /// How finely the source gave the coordinates (float data: its spacing at the farthest
-  /// point; 0 for double): see SceneMesh::pointQuantum.
-  double pointQuantum = 0;
-  int NumberOfPolygons() const { return static_cast<int>(offsets.size()) - 1; }
+  /// point; 0 for double): see SceneMesh::PointQuantum.
+  double PointQuantum = 0;
+  int NumberOfPolygons() const { return static_cast<int>(Offsets.size()) - 1; }
 };
 
 struct ImportOptions

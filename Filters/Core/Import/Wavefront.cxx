@@ -121,7 +121,7 @@ std::string ParseObj(const std::string& text, RawScene& raw, std::vector<std::st
           return where + "a vertex coordinate is not a finite number ('" + word + "')";
         }
       }
-      raw.points.push_back({ x[0], x[1], x[2] });
+      raw.Points.push_back({ x[0], x[1], x[2] });
     }
     else if (keyword == "f")
     {
@@ -129,21 +129,21 @@ std::string ParseObj(const std::string& text, RawScene& raw, std::vector<std::st
       int corners = 0;
       while (words >> word)
       {
-        const int index = CornerIndex(word, static_cast<int>(raw.points.size()));
+        const int index = CornerIndex(word, static_cast<int>(raw.Points.size()));
         if (index < 0)
         {
           return where + "face corner '" + word + "' is not a vertex defined before it";
         }
-        raw.connectivity.push_back(index);
+        raw.Connectivity.push_back(index);
         ++corners;
       }
       if (corners < 3)
       {
         return where + "a face needs at least three corners";
       }
-      raw.offsets.push_back(static_cast<int>(raw.connectivity.size()));
-      raw.material.push_back(material);
-      raw.object.push_back(object);
+      raw.Offsets.push_back(static_cast<int>(raw.Connectivity.size()));
+      raw.Material.push_back(material);
+      raw.Object.push_back(object);
     }
     else if (keyword == "usemtl")
     {
@@ -151,7 +151,7 @@ std::string ParseObj(const std::string& text, RawScene& raw, std::vector<std::st
     }
     else if (keyword == "o" || keyword == "g")
     {
-      object = IndexOf(Rest(words), objects, raw.objectNames);
+      object = IndexOf(Rest(words), objects, raw.ObjectNames);
     }
     else if (keyword == "mtllib")
     {
@@ -161,7 +161,7 @@ std::string ParseObj(const std::string& text, RawScene& raw, std::vector<std::st
   });
   for (const std::string& name : materialNames)
   {
-    raw.materials.push_back(ImportMaterial{ name });
+    raw.Materials.push_back(ImportMaterial{ name });
   }
   return error;
 }

@@ -15,7 +15,7 @@ namespace radiosity
 /// Parses OBJ text: `v` (extra color or w values ignored), `f` with any of v, v/vt,
 /// v//vn, v/vt/vn and negative (relative) indices, `usemtl`, `mtllib`, `o` and `g`;
 /// other statements are ignored. Polygons get the material named by the last `usemtl`
-/// (an index into raw.materials, which lists the names in order of first use, colors
+/// (an index into raw.Materials, which lists the names in order of first use, colors
 /// still at their defaults) and the object of the last `o` or `g`. Returns an empty
 /// string or "line N: what is wrong".
 std::string ParseObj(const std::string& text, RawScene& raw, std::vector<std::string>& libraries);

@@ -41,12 +41,12 @@ CoincidentCopies DropCoincidentCopies(
   CoincidentCopies found;
   std::map<std::vector<long long>, int> first; // key -> polygon kept
   PairedPolygons kept;
-  kept.merged = polygons.merged;
-  for (size_t i = 0; i < polygons.source.size(); ++i)
+  kept.Merged = polygons.Merged;
+  for (size_t i = 0; i < polygons.Source.size(); ++i)
   {
-    const int* ids = polygons.connectivity.data() + polygons.offsets[i];
-    const int count = polygons.offsets[i + 1] - polygons.offsets[i];
-    const int source = polygons.source[i];
+    const int* ids = polygons.Connectivity.data() + polygons.Offsets[i];
+    const int count = polygons.Offsets[i + 1] - polygons.Offsets[i];
+    const int source = polygons.Source[i];
     const auto [at, isNew] = first.emplace(Key(points, ids, count, tolerance), source);
     const auto surface = [&](int s) { return s < static_cast<int>(surfaceKey.size()) ? surfaceKey[s] : 0; };
     if (!isNew && surface(at->second) == surface(source))
@@ -58,9 +58,9 @@ CoincidentCopies DropCoincidentCopies(
     {
       found.Differing.emplace_back(at->second, source);
     }
-    kept.connectivity.insert(kept.connectivity.end(), ids, ids + count);
-    kept.offsets.push_back(static_cast<int>(kept.connectivity.size()));
-    kept.source.push_back(source);
+    kept.Connectivity.insert(kept.Connectivity.end(), ids, ids + count);
+    kept.Offsets.push_back(static_cast<int>(kept.Connectivity.size()));
+    kept.Source.push_back(source);
   }
   polygons = std::move(kept);
   return found;

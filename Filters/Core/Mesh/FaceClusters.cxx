@@ -21,23 +21,23 @@ struct PatchSummary
 
 std::vector<PatchSummary> Summarise(const MeshedPolygons& mesh, const std::vector<int>& surfaceKey)
 {
-  std::vector<PatchSummary> patches(mesh.patches);
-  const int n = static_cast<int>(mesh.offsets.size()) - 1;
+  std::vector<PatchSummary> patches(mesh.Patches);
+  const int n = static_cast<int>(mesh.Offsets.size()) - 1;
   std::vector<Vec3> loop;
   for (int e = 0; e < n; ++e)
   {
-    loop.assign(mesh.offsets[e + 1] - mesh.offsets[e], Vec3());
-    for (int v = mesh.offsets[e]; v < mesh.offsets[e + 1]; ++v)
+    loop.assign(mesh.Offsets[e + 1] - mesh.Offsets[e], Vec3());
+    for (int v = mesh.Offsets[e]; v < mesh.Offsets[e + 1]; ++v)
     {
-      loop[v - mesh.offsets[e]] = mesh.points[mesh.connectivity[v]];
+      loop[v - mesh.Offsets[e]] = mesh.Points[mesh.Connectivity[v]];
     }
     const Vec3 newell = NewellVector(loop.data(), static_cast<int>(loop.size()));
     const double area = 0.5 * Norm(newell);
-    PatchSummary& p = patches[mesh.patchId[e]];
+    PatchSummary& p = patches[mesh.PatchId[e]];
     p.Centre += PolygonCentroid(loop.data(), static_cast<int>(loop.size())) * area;
     p.Normal += newell * 0.5;
     p.Area += area;
-    p.Key = surfaceKey[mesh.sourcePolygon[e]];
+    p.Key = surfaceKey[mesh.SourcePolygon[e]];
   }
   for (PatchSummary& p : patches)
   {
@@ -46,10 +46,10 @@ std::vector<PatchSummary> Summarise(const MeshedPolygons& mesh, const std::vecto
   }
   for (int e = 0; e < n; ++e)
   {
-    PatchSummary& p = patches[mesh.patchId[e]];
-    for (int v = mesh.offsets[e]; v < mesh.offsets[e + 1]; ++v)
+    PatchSummary& p = patches[mesh.PatchId[e]];
+    for (int v = mesh.Offsets[e]; v < mesh.Offsets[e + 1]; ++v)
     {
-      p.Radius = std::max(p.Radius, Norm(mesh.points[mesh.connectivity[v]] - p.Centre));
+      p.Radius = std::max(p.Radius, Norm(mesh.Points[mesh.Connectivity[v]] - p.Centre));
     }
   }
   return patches;
@@ -64,9 +64,9 @@ std::vector<std::vector<int>> Neighbours(const MeshedPolygons& mesh, const Polyg
   const std::vector<int> welded = WeldedPointIds(input.Points, quantum);
   // By the mesher's polygon, not the input's: a warped input polygon is several triangles.
   std::vector<int> cellPatch(input.Offsets.size() - 1, -1);
-  for (size_t e = 0; e < mesh.meshedPolygon.size(); ++e)
+  for (size_t e = 0; e < mesh.MeshedPolygon.size(); ++e)
   {
-    cellPatch[mesh.meshedPolygon[e]] = mesh.patchId[e];
+    cellPatch[mesh.MeshedPolygon[e]] = mesh.PatchId[e];
   }
   std::vector<std::pair<std::uint64_t, int>> edges;
   for (size_t c = 0; c < cellPatch.size(); ++c)
@@ -80,7 +80,7 @@ std::vector<std::vector<int>> Neighbours(const MeshedPolygons& mesh, const Polyg
     }
   }
   std::sort(edges.begin(), edges.end());
-  std::vector<std::vector<int>> next(mesh.patches);
+  std::vector<std::vector<int>> next(mesh.Patches);
   for (size_t i = 0; i < edges.size();)
   {
     size_t j = i;
@@ -119,7 +119,7 @@ constexpr double kClusterReach = 0.3;
 int ClusterFaces(
   MeshedPolygons& mesh, const PolygonArrays& input, const std::vector<int>& surfaceKey, double patchSize, double coneDegrees)
 {
-  if (!(coneDegrees > 0) || !(patchSize > 0) || mesh.patches < 2)
+  if (!(coneDegrees > 0) || !(patchSize > 0) || mesh.Patches < 2)
   {
     return 0;
   }
@@ -130,9 +130,9 @@ int ClusterFaces(
   const double slack = 1 + 1e-4;
   const double cosCone = std::cos(coneDegrees * Pi / 180.0) - 1e-4, reach = kClusterReach * patchSize * slack;
   auto small = [&](int p) { return patches[p].Radius <= 0.5 * reach && patches[p].Area > 0; };
-  std::vector<int> cluster(mesh.patches, -1);
+  std::vector<int> cluster(mesh.Patches, -1);
   std::deque<int> frontier;
-  for (int seed = 0; seed < mesh.patches; ++seed)
+  for (int seed = 0; seed < mesh.Patches; ++seed)
   {
     if (cluster[seed] >= 0)
     {
@@ -161,21 +161,21 @@ int ClusterFaces(
       }
     }
   }
-  std::vector<int> compact(mesh.patches, -1);
+  std::vector<int> compact(mesh.Patches, -1);
   int count = 0;
-  for (int p = 0; p < mesh.patches; ++p)
+  for (int p = 0; p < mesh.Patches; ++p)
   {
     if (compact[cluster[p]] < 0)
     {
       compact[cluster[p]] = count++;
     }
   }
-  for (int& id : mesh.patchId)
+  for (int& id : mesh.PatchId)
   {
     id = compact[cluster[id]];
   }
-  const int merged = mesh.patches - count;
-  mesh.patches = count;
+  const int merged = mesh.Patches - count;
+  mesh.Patches = count;
   return merged;
 }
 

@@ -13,7 +13,7 @@ namespace radiosity
 
 /// Merges small patches (at most 0.3 `patchSize` across) of `mesh` into face clusters:
 /// grown from each patch in order over the edges its `input` polygons share (the polygons
-/// MeshPolygons meshed into `mesh`, `mesh.meshedPolygon` naming each element's), through
+/// MeshPolygons meshed into `mesh`, `mesh.MeshedPolygon` naming each element's), through
 /// patches of the same
 /// `surfaceKey` (per input polygon, as MeshPolygons takes it) whose normals are within
 /// `coneDegrees` of the first one's, while every corner stays within 0.3 `patchSize` of its

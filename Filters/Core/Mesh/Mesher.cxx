@@ -195,19 +195,19 @@ void MakePiece(const std::vector<Vec3>& loop, const MesherOptions& o, double noi
   Piece& piece)
 {
   std::vector<std::vector<Vec3>> parts;
-  piece.patchCount = SplitPolygon(loop, o, noise, [&](const Vec3* corners, int count, int patch) {
+  piece.PatchCount = SplitPolygon(loop, o, noise, [&](const Vec3* corners, int count, int patch) {
     if (cutter.Cut(corners, count, parts) == 0)
     {
-      piece.corners.insert(piece.corners.end(), corners, corners + count);
-      piece.sides.push_back(count);
-      piece.localPatch.push_back(patch);
+      piece.Corners.insert(piece.Corners.end(), corners, corners + count);
+      piece.Sides.push_back(count);
+      piece.LocalPatch.push_back(patch);
       return;
     }
     for (const std::vector<Vec3>& part : parts)
     {
-      piece.corners.insert(piece.corners.end(), part.begin(), part.end());
-      piece.sides.push_back(static_cast<int>(part.size()));
-      piece.localPatch.push_back(patch);
+      piece.Corners.insert(piece.Corners.end(), part.begin(), part.end());
+      piece.Sides.push_back(static_cast<int>(part.size()));
+      piece.LocalPatch.push_back(patch);
     }
   });
 }
@@ -390,26 +390,26 @@ constexpr double kMostWarp = 1e-3;
 PairedPolygons SplitWarped(const std::vector<Vec3>& points, const PairedPolygons& polygons, double noise)
 {
   PairedPolygons out;
-  out.merged = polygons.merged;
-  out.points = polygons.points;
-  for (size_t i = 0; i < polygons.source.size(); ++i)
+  out.Merged = polygons.Merged;
+  out.Points = polygons.Points;
+  for (size_t i = 0; i < polygons.Source.size(); ++i)
   {
-    const int* ids = polygons.connectivity.data() + polygons.offsets[i];
-    const int count = polygons.offsets[i + 1] - polygons.offsets[i];
-    const std::vector<Vec3> loop = GatherLoop(points, polygons.offsets, polygons.connectivity, static_cast<int>(i));
+    const int* ids = polygons.Connectivity.data() + polygons.Offsets[i];
+    const int count = polygons.Offsets[i + 1] - polygons.Offsets[i];
+    const std::vector<Vec3> loop = GatherLoop(points, polygons.Offsets, polygons.Connectivity, static_cast<int>(i));
     const std::vector<int> corners =
       count >= 4 && WarpOffset(loop) > 4 * noise ? Triangulate(loop.data(), count, noise) : std::vector<int>();
     for (size_t t = 0; t + 2 < corners.size(); t += 3)
     {
-      out.connectivity.insert(out.connectivity.end(), { ids[corners[t]], ids[corners[t + 1]], ids[corners[t + 2]] });
-      out.offsets.push_back(static_cast<int>(out.connectivity.size()));
-      out.source.push_back(polygons.source[i]);
+      out.Connectivity.insert(out.Connectivity.end(), { ids[corners[t]], ids[corners[t + 1]], ids[corners[t + 2]] });
+      out.Offsets.push_back(static_cast<int>(out.Connectivity.size()));
+      out.Source.push_back(polygons.Source[i]);
     }
     if (corners.empty())
     {
-      out.connectivity.insert(out.connectivity.end(), ids, ids + count);
-      out.offsets.push_back(static_cast<int>(out.connectivity.size()));
-      out.source.push_back(polygons.source[i]);
+      out.Connectivity.insert(out.Connectivity.end(), ids, ids + count);
+      out.Offsets.push_back(static_cast<int>(out.Connectivity.size()));
+      out.Source.push_back(polygons.Source[i]);
     }
   }
   return out;
@@ -424,11 +424,11 @@ PairedPolygons Paired(const std::vector<Vec3>& points, const std::vector<int>& o
   CoincidentCopies* copies = nullptr, OverlapCuts* overlaps = nullptr)
 {
   PairedPolygons polygons;
-  polygons.offsets = offsets;
-  polygons.connectivity = connectivity;
+  polygons.Offsets = offsets;
+  polygons.Connectivity = connectivity;
   for (size_t i = 0; i + 1 < offsets.size(); ++i)
   {
-    polygons.source.push_back(static_cast<int>(i));
+    polygons.Source.push_back(static_cast<int>(i));
   }
   const double tolerance = 1e-7 * std::max(Bounds(points).Diagonal(), 1e-300);
   const CoincidentCopies found = DropCoincidentCopies(points, surfaceKey, tolerance, polygons);
@@ -448,17 +448,17 @@ PairedPolygons Paired(const std::vector<Vec3>& points, const std::vector<int>& o
   {
     return SplitWarped(at, polygons, noise);
   }
-  std::vector<int> keys(polygons.source.size(), 0);
+  std::vector<int> keys(polygons.Source.size(), 0);
   for (size_t i = 0; i < keys.size(); ++i)
   {
-    keys[i] = polygons.source[i] < static_cast<int>(surfaceKey.size()) ? surfaceKey[polygons.source[i]] : 0;
+    keys[i] = polygons.Source[i] < static_cast<int>(surfaceKey.size()) ? surfaceKey[polygons.Source[i]] : 0;
   }
-  PairedPolygons merged = MergeTrianglePairs(at, polygons.offsets, polygons.connectivity, keys, tolerance);
-  for (int& source : merged.source)
+  PairedPolygons merged = MergeTrianglePairs(at, polygons.Offsets, polygons.Connectivity, keys, tolerance);
+  for (int& source : merged.Source)
   {
-    source = polygons.source[source]; // back to the input's numbering
+    source = polygons.Source[source]; // back to the input's numbering
   }
-  merged.points = std::move(polygons.points);
+  merged.Points = std::move(polygons.Points);
   return SplitWarped(PointsOf(merged, points), merged, noise);
 }
 
@@ -536,7 +536,7 @@ struct ElementCounter::Internals
   }
   Internals(const std::vector<Vec3>& points, PairedPolygons pairs)
     : Pairs(std::move(pairs))
-    , Polygons{ PointsOf(Pairs, points), Pairs.offsets, Pairs.connectivity }
+    , Polygons{ PointsOf(Pairs, points), Pairs.Offsets, Pairs.Connectivity }
   {
   }
 };
@@ -789,7 +789,7 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
   WarnAboutCopies(copies, options);
   WarnAboutOverlaps(overlaps, options);
   const std::vector<Vec3>& corners = PointsOf(polygons, points);
-  const PolygonArrays paired{ corners, polygons.offsets, polygons.connectivity };
+  const PolygonArrays paired{ corners, polygons.Offsets, polygons.Connectivity };
   const Contacts contacts = FindSceneContacts(paired, options.WholeScene, options.PointQuantum);
   MesherOptions sized = options;
   sized.ElementSize = ChooseElementSize(paired, contacts, options);
@@ -799,12 +799,12 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
     DistinctCorners(points, offsets, connectivity, cell, cell, 1e-9 * std::max(Span(points), 1e-300), outlines[cell]);
   }
   const std::string error = MeshList(
-    corners, polygons.offsets, polygons.connectivity, polygons.source, surfaceKey, contacts, sized, out, outlines);
-  out.mergedTrianglePairs = polygons.merged;
-  out.elementSize = sized.ElementSize;
+    corners, polygons.Offsets, polygons.Connectivity, polygons.Source, surfaceKey, contacts, sized, out, outlines);
+  out.MergedTrianglePairs = polygons.Merged;
+  out.ElementSize = sized.ElementSize;
   if (error.empty())
   {
-    out.clusteredPatches =
+    out.ClusteredPatches =
       ClusterFaces(out, paired, surfaceKey, sized.PatchSize, options.ClusterAngle);
   }
   return error;

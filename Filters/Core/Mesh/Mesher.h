@@ -30,7 +30,7 @@ struct MesherOptions
   double ClusterAngle = 30;
   /// Element budget (0: none): above it the smallest larger element size that fits is used.
   double ElementBudget = 0;
-  /// How finely the coordinates were given (SceneMesh::pointQuantum: float input's step at
+  /// How finely the coordinates were given (SceneMesh::PointQuantum: float input's step at
   /// its farthest coordinate, 0 for double): corners may sit that far off, and the
   /// tests of what is straight, convex or flat allow it.
   double PointQuantum = 0;
@@ -44,16 +44,16 @@ struct MesherOptions
 
 struct MeshedPolygons
 {
-  std::vector<Vec3> points;
-  std::vector<int> offsets{ 0 };
-  std::vector<int> connectivity;
-  std::vector<int> sourcePolygon; ///< input polygon each element came from
-  std::vector<int> meshedPolygon; ///< the mesher's polygon (input paired, warped split) it came from
-  std::vector<int> patchId;       ///< 0..patches-1
-  int patches = 0;
-  int mergedTrianglePairs = 0; ///< triangle pairs meshed as one quad
-  int clusteredPatches = 0;    ///< small patches merged into face clusters
-  double elementSize = 0;      ///< the element size used (see ElementBudget)
+  std::vector<Vec3> Points;
+  std::vector<int> Offsets{ 0 };
+  std::vector<int> Connectivity;
+  std::vector<int> SourcePolygon; ///< input polygon each element came from
+  std::vector<int> MeshedPolygon; ///< the mesher's polygon (input paired, warped split) it came from
+  std::vector<int> PatchId;       ///< 0..patches-1
+  int Patches = 0;
+  int MergedTrianglePairs = 0; ///< triangle pairs meshed as one quad
+  int ClusteredPatches = 0;    ///< small patches merged into face clusters
+  double ElementSize = 0;      ///< the element size used (see ElementBudget)
 };
 
 /// The number of elements MeshPolygons makes at these sizes without meshing, for a warning

@@ -141,16 +141,16 @@ std::vector<Face> ConvexFaces(
   const std::vector<Vec3>& points, const std::vector<int>& surfaceKey, double tolerance, const PairedPolygons& polygons)
 {
   std::vector<Face> faces;
-  for (size_t i = 0; i < polygons.source.size(); ++i)
+  for (size_t i = 0; i < polygons.Source.size(); ++i)
   {
-    const Loop loop = Distinct(GatherLoop(points, polygons.offsets, polygons.connectivity, static_cast<int>(i)), tolerance);
+    const Loop loop = Distinct(GatherLoop(points, polygons.Offsets, polygons.Connectivity, static_cast<int>(i)), tolerance);
     const Vec3 newell = loop.size() >= 3 ? NewellVector(loop.data(), static_cast<int>(loop.size())) : Vec3();
     const double length = Norm(newell);
     if (!(length > 0))
     {
       continue;
     }
-    const int source = polygons.source[i];
+    const int source = polygons.Source[i];
     const int surface = source < static_cast<int>(surfaceKey.size()) ? surfaceKey[source] : 0;
     const Vec3 normal = newell * (1.0 / length);
     if (IsConvex(loop.data(), static_cast<int>(loop.size()), tolerance))
@@ -343,8 +343,8 @@ OverlapCuts CutOverlaps(
   const std::vector<Vec3>& points, const std::vector<int>& surfaceKey, double tolerance, PairedPolygons& polygons)
 {
   OverlapCuts found;
-  std::vector<char> cut(polygons.source.size(), 0);
-  std::vector<std::vector<Loop>> pieces(polygons.source.size());
+  std::vector<char> cut(polygons.Source.size(), 0);
+  std::vector<std::vector<Loop>> pieces(polygons.Source.size());
   const std::vector<Face> faces = ConvexFaces(points, surfaceKey, tolerance, polygons);
   if (faces.size() < 2)
   {
@@ -356,7 +356,7 @@ OverlapCuts CutOverlaps(
   differing.erase(std::unique(differing.begin(), differing.end()), differing.end()); // convex pieces of one polygon
   for (const std::pair<int, int>& pair : differing)
   {
-    found.Differing.emplace_back(polygons.source[pair.first], polygons.source[pair.second]);
+    found.Differing.emplace_back(polygons.Source[pair.first], polygons.Source[pair.second]);
   }
   for (size_t f = 0; f < faces.size(); ++f)
   {
@@ -370,17 +370,17 @@ OverlapCuts CutOverlaps(
     return found;
   }
   PairedPolygons kept;
-  kept.points = points;
-  kept.merged = polygons.merged;
-  for (size_t i = 0; i < polygons.source.size(); ++i)
+  kept.Points = points;
+  kept.Merged = polygons.Merged;
+  for (size_t i = 0; i < polygons.Source.size(); ++i)
   {
-    const int source = polygons.source[i];
+    const int source = polygons.Source[i];
     if (!cut[i])
     {
-      kept.connectivity.insert(kept.connectivity.end(), polygons.connectivity.begin() + polygons.offsets[i],
-        polygons.connectivity.begin() + polygons.offsets[i + 1]);
-      kept.offsets.push_back(static_cast<int>(kept.connectivity.size()));
-      kept.source.push_back(source);
+      kept.Connectivity.insert(kept.Connectivity.end(), polygons.Connectivity.begin() + polygons.Offsets[i],
+        polygons.Connectivity.begin() + polygons.Offsets[i + 1]);
+      kept.Offsets.push_back(static_cast<int>(kept.Connectivity.size()));
+      kept.Source.push_back(source);
       continue;
     }
     (pieces[i].empty() ? found.Covered : found.Trimmed).push_back(source);
@@ -388,11 +388,11 @@ OverlapCuts CutOverlaps(
     {
       for (const Vec3& p : piece)
       {
-        kept.connectivity.push_back(static_cast<int>(kept.points.size()));
-        kept.points.push_back(p);
+        kept.Connectivity.push_back(static_cast<int>(kept.Points.size()));
+        kept.Points.push_back(p);
       }
-      kept.offsets.push_back(static_cast<int>(kept.connectivity.size()));
-      kept.source.push_back(source);
+      kept.Offsets.push_back(static_cast<int>(kept.Connectivity.size()));
+      kept.Source.push_back(source);
     }
   }
   polygons = std::move(kept);

@@ -27,7 +27,7 @@ struct OverlapCuts
 /// Cuts every convex polygon of `polygons` by the earlier convex polygons of the same
 /// `surfaceKey` (per source id) that lie in its plane (within `tolerance`, a length), face
 /// the same side and overlap it by more than `tolerance` across; each cut polygon becomes
-/// the convex pieces of what they leave. Where any is cut, `polygons.points` becomes a copy
+/// the convex pieces of what they leave. Where any is cut, `polygons.Points` becomes a copy
 /// of `points` with the new corners after them (PointsOf), and the polygons index it.
 /// Overlapping faces of different surfaces are listed in Differing, not cut.
 OverlapCuts CutOverlaps(

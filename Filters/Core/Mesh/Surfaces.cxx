@@ -91,9 +91,9 @@ std::pair<int, int> SurfaceAssembly::PatchesOf(int surface, const std::vector<Ve
 {
   // A model's many small parts would otherwise each be a shooter (a house's 16k polygons
   // made 59k patches).
-  if (!Options.SharePatches || piece.patchCount != 1)
+  if (!Options.SharePatches || piece.PatchCount != 1)
   {
-    return { Patches, piece.patchCount };
+    return { Patches, piece.PatchCount };
   }
   const std::array<Vec3, 3>& frame = GridFrames[surface];
   const Vec3 c = PolygonCentroid(loop.data(), static_cast<int>(loop.size())) - frame[0];
@@ -109,12 +109,12 @@ void SurfaceAssembly::Stitch(int surface, const Piece& piece, int polygon, int s
 {
   SurfaceMesh& mesh = Meshes[surface];
   size_t corner = 0;
-  for (size_t e = 0; e < piece.sides.size(); ++e)
+  for (size_t e = 0; e < piece.Sides.size(); ++e)
   {
     std::vector<SurfaceMesh::VertexHandle> handles;
-    for (int v = 0; v < piece.sides[e]; ++v, ++corner)
+    for (int v = 0; v < piece.Sides[e]; ++v, ++corner)
     {
-      const Vec3& p = piece.corners[corner];
+      const Vec3& p = piece.Corners[corner];
       const std::array<long long, 3> key = QuantizedPoint(p, Quantum);
       auto weld = Welds[surface].find(key);
       if (weld == Welds[surface].end())
@@ -141,7 +141,7 @@ void SurfaceAssembly::Stitch(int surface, const Piece& piece, int polygon, int s
     }
     mesh.data(face).Source = source;
     mesh.data(face).Polygon = polygon;
-    mesh.data(face).Patch = firstPatch + piece.localPatch[e];
+    mesh.data(face).Patch = firstPatch + piece.LocalPatch[e];
   }
 }
 
@@ -153,7 +153,7 @@ void SurfaceAssembly::Flatten(MeshedPolygons& out) const
   {
     const SurfaceMesh& mesh = Meshes[s];
     const Plane& plane = Planes[s];
-    const int base = static_cast<int>(out.points.size());
+    const int base = static_cast<int>(out.Points.size());
     for (auto v : mesh.vertices())
     {
       // Onto the surface's plane where it is off by noise: float input far from the origin
@@ -164,21 +164,21 @@ void SurfaceAssembly::Flatten(MeshedPolygons& out) const
       const auto q = mesh.point(v);
       const Vec3 p{ q[0], q[1], q[2] };
       const double off = Dot(plane.Normal, p - Centre) - plane.Offset;
-      out.points.push_back(std::fabs(off) <= 4 * Noise ? p - plane.Normal * off : p);
+      out.Points.push_back(std::fabs(off) <= 4 * Noise ? p - plane.Normal * off : p);
     }
     for (auto face : mesh.faces())
     {
       for (auto v : mesh.fv_range(face))
       {
-        out.connectivity.push_back(base + v.idx());
+        out.Connectivity.push_back(base + v.idx());
       }
-      out.offsets.push_back(static_cast<int>(out.connectivity.size()));
-      out.sourcePolygon.push_back(mesh.data(face).Source);
-      out.meshedPolygon.push_back(mesh.data(face).Polygon);
-      out.patchId.push_back(compact.emplace(mesh.data(face).Patch, static_cast<int>(compact.size())).first->second);
+      out.Offsets.push_back(static_cast<int>(out.Connectivity.size()));
+      out.SourcePolygon.push_back(mesh.data(face).Source);
+      out.MeshedPolygon.push_back(mesh.data(face).Polygon);
+      out.PatchId.push_back(compact.emplace(mesh.data(face).Patch, static_cast<int>(compact.size())).first->second);
     }
   }
-  out.patches = static_cast<int>(compact.size());
+  out.Patches = static_cast<int>(compact.size());
 }
 
 } // namespace radiosity

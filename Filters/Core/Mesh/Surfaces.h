@@ -19,10 +19,10 @@ namespace radiosity
 /// The elements of one input polygon before they are stitched into a surface.
 struct Piece
 {
-  std::vector<Vec3> corners; // flattened, `sides` per element
-  std::vector<int> sides;
-  std::vector<int> localPatch;
-  int patchCount = 0;
+  std::vector<Vec3> Corners; // flattened, `sides` per element
+  std::vector<int> Sides;
+  std::vector<int> LocalPatch;
+  int PatchCount = 0;
 };
 
 class SurfaceAssembly

@@ -79,9 +79,9 @@ PairedPolygons MergeTrianglePairs(const std::vector<Vec3>& points, const std::ve
   std::vector<char> used(count, 0);
   PairedPolygons out;
   auto emit = [&](const std::vector<int>& loop, int source) {
-    out.connectivity.insert(out.connectivity.end(), loop.begin(), loop.end());
-    out.offsets.push_back(static_cast<int>(out.connectivity.size()));
-    out.source.push_back(source);
+    out.Connectivity.insert(out.Connectivity.end(), loop.begin(), loop.end());
+    out.Offsets.push_back(static_cast<int>(out.Connectivity.size()));
+    out.Source.push_back(source);
   };
   for (int t = 0; t < count; ++t)
   {
@@ -111,7 +111,7 @@ PairedPolygons MergeTrianglePairs(const std::vector<Vec3>& points, const std::ve
           {
             loop = quad;
             used[u] = 1;
-            ++out.merged;
+            ++out.Merged;
             joined = true;
             break;
           }

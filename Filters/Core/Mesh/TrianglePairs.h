@@ -12,19 +12,19 @@ namespace radiosity
 
 struct PairedPolygons
 {
-  std::vector<int> offsets{ 0 };
-  std::vector<int> connectivity;
-  std::vector<int> source; ///< the input polygon each output polygon came from (the first)
-  int merged = 0;          ///< triangle pairs joined into quads
+  std::vector<int> Offsets{ 0 };
+  std::vector<int> Connectivity;
+  std::vector<int> Source; ///< the input polygon each output polygon came from (the first)
+  int Merged = 0;          ///< triangle pairs joined into quads
   /// The points the polygons index where overlap cuts made new corners (the input's, then
   /// those); empty where they index the input's points.
-  std::vector<Vec3> points;
+  std::vector<Vec3> Points;
 };
 
 /// The points `polygons` index: their own where they have them, else `input`.
 inline const std::vector<Vec3>& PointsOf(const PairedPolygons& polygons, const std::vector<Vec3>& input)
 {
-  return polygons.points.empty() ? input : polygons.points;
+  return polygons.Points.empty() ? input : polygons.Points;
 }
 
 /// Joins triangles that share an edge (by position, so split vertices count), have the same

@@ -16,15 +16,15 @@ namespace
 /// light's own falloff (its Normal) is taken at the centroid.
 double NearFieldFactor(const SceneMesh& mesh, const SceneGeometry& g, int e, const MovingLight& light)
 {
-  const Vec3& c = g.centroid[e];
-  if (Norm(light.Position - c) > 2 * std::sqrt(g.area[e]))
+  const Vec3& c = g.Centroid[e];
+  if (Norm(light.Position - c) > 2 * std::sqrt(g.Area[e]))
   {
     return 0;
   }
   const double mean = FanAverage(mesh, g, e, [&](const Vec3& x) {
     const Vec3 d = light.Position - x;
     const double r2 = Dot(d, d);
-    return r2 > 0 ? std::max(0.0, Dot(g.normal[e], d)) / (std::sqrt(r2) * r2) : 0.0;
+    return r2 > 0 ? std::max(0.0, Dot(g.Normal[e], d)) / (std::sqrt(r2) * r2) : 0.0;
   });
   return std::isnan(mean) ? 0 : mean;
 }
@@ -67,7 +67,7 @@ long long MovingLightShader::Direct(
   const std::vector<MovingLight>& lights, const WorkerPool& pool, std::vector<Vec3>& direct) const
 {
   const SceneGeometry& g = Geometry();
-  const int n = static_cast<int>(g.normal.size());
+  const int n = static_cast<int>(g.Normal.size());
   direct.assign(n, Vec3());
   std::atomic<long long> rays{ 0 };
   pool.For(n, 128, [&](int begin, int end) {
@@ -81,7 +81,7 @@ long long MovingLightShader::Direct(
     }
     for (int e = begin; e < end; ++e)
     {
-      const Vec3& rho = Scene.reflectance[e];
+      const Vec3& rho = Scene.Reflectance[e];
       const Vec3& in = irradiance[e - begin];
       direct[e] = { rho.x * in.x, rho.y * in.y, rho.z * in.z };
     }
@@ -93,7 +93,7 @@ long long MovingLightShader::Direct(
 long long MovingLightShader::ShadeChunk(const MovingLight& light, int begin, int end, std::vector<Vec3>& irradiance) const
 {
   const SceneGeometry& g = Geometry();
-  const double eps = g.rayLift;
+  const double eps = g.RayLift;
   int waiting[Visibility::PacketSize];
   double intensity[Visibility::PacketSize];
   Vec3 from[Visibility::PacketSize];
@@ -114,9 +114,9 @@ long long MovingLightShader::ShadeChunk(const MovingLight& light, int begin, int
   };
   for (int e = begin; e < end; ++e)
   {
-    const Vec3 d = light.Position - g.centroid[e];
+    const Vec3 d = light.Position - g.Centroid[e];
     const double r2 = Dot(d, d);
-    if (!(r2 > 0) || Dot(g.normal[e], d) <= 0)
+    if (!(r2 > 0) || Dot(g.Normal[e], d) <= 0)
     {
       continue;
     }
@@ -132,7 +132,7 @@ long long MovingLightShader::ShadeChunk(const MovingLight& light, int begin, int
     ++cast;
     waiting[count] = e;
     intensity[count] = strength;
-    from[count] = g.centroid[e] + g.normal[e] * eps;
+    from[count] = g.Centroid[e] + g.Normal[e] * eps;
     if (++count == Visibility::PacketSize)
     {
       flush();
@@ -148,11 +148,11 @@ long long MovingLightShader::ShadeChunk(const MovingLight& light, int begin, int
 double MovingLightShader::Unoccluded(const MovingLight& light, int e, double intensity) const
 {
   const SceneGeometry& g = Geometry();
-  const Vec3 d = light.Position - g.centroid[e];
+  const Vec3 d = light.Position - g.Centroid[e];
   const double r2 = Dot(d, d);
   const double r = std::sqrt(r2);
   const double near = NearFieldFactor(Scene, g, e, light);
-  return intensity * (near > 0 ? near : (Dot(g.normal[e], d) / r) / r2);
+  return intensity * (near > 0 ? near : (Dot(g.Normal[e], d) / r) / r2);
 }
 
 } // namespace radiosity

@@ -19,8 +19,8 @@ public:
     Vec3 meanRho;
     for (int e = 0; e < elements; ++e)
     {
-      meanRho += mesh.reflectance[e] * g.area[e];
-      Area += g.area[e];
+      meanRho += mesh.Reflectance[e] * g.Area[e];
+      Area += g.Area[e];
     }
     meanRho = meanRho * (1.0 / Area);
     for (int c = 0; c < 3; ++c)

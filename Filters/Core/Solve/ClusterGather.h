@@ -68,7 +68,7 @@ public:
     const size_t nodes = Tree.Nodes().size();
     ReceivedVector.assign(nodes * kVector * W, 0.0f);
     ReceivedSeries.assign(nodes * kReceiverSeries * W, 0.0f);
-    Near.assign(G.normal.size() * W, 0.0);
+    Near.assign(G.Normal.size() * W, 0.0);
     Pool.For(static_cast<int>(Links.FarBlockStart.size()) - 1, 1, [&](int begin, int end) {
       std::vector<float> flux(W);
       for (int block = begin; block < end; ++block)
@@ -106,9 +106,9 @@ public:
     W = L * kChannels;
     PushDown(ReceivedVector, static_cast<size_t>(kVector) * W);
     PushDown(ReceivedSeries, static_cast<size_t>(kReceiverSeries) * W);
-    irradiance.assign(G.normal.size() * L, Value());
+    irradiance.assign(G.Normal.size() * L, Value());
     double* out = reinterpret_cast<double*>(irradiance.data());
-    Pool.For(static_cast<int>(G.normal.size()), 512, [&](int begin, int end) {
+    Pool.For(static_cast<int>(G.Normal.size()), 512, [&](int begin, int end) {
       for (int e = begin; e < end; ++e)
       {
         const int leaf = Tree.LeafOf(e);
@@ -259,7 +259,7 @@ private:
   /// What element e of normal n receives from its leaf's sums, per lane.
   void AtElement(int leaf, int e, double* out) const
   {
-    const Vec3& n = G.normal[e];
+    const Vec3& n = G.Normal[e];
     const float* v = ReceivedVector.data() + static_cast<size_t>(leaf) * kVector * W;
     const float* r = ReceivedSeries.data() + static_cast<size_t>(leaf) * kReceiverSeries * W;
     const double* near = Near.data() + static_cast<size_t>(e) * W;
@@ -280,8 +280,8 @@ private:
   void PullUpLeaf(int n, const double* sending)
   {
     const int e = Tree.ElementOf(n);
-    const Vec3& v = G.normal[e];
-    const double a = G.area[e];
+    const Vec3& v = G.Normal[e];
+    const double a = G.Area[e];
     const double vector[kVector] = { a * v.x, a * v.y, a * v.z };
     const double moments[kSourceSeries] = { a, a * v.x * v.x, a * v.x * v.y, a * v.x * v.z, a * v.y * v.y, a * v.y * v.z,
       a * v.z * v.z };

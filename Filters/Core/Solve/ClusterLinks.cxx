@@ -35,7 +35,7 @@ void ClusterLinkBuilder::SortByReceiver(
   // once placed, so the links are held at most twice.
   std::vector<size_t>& near = links.NearStart;
   far.assign(Tree.Nodes().size() + 1, 0);
-  near.assign(G.normal.size() + 1, 0);
+  near.assign(G.Normal.size() + 1, 0);
   for (const Found& f : found)
   {
     for (int r : f.Receiver)
@@ -155,11 +155,11 @@ ClusterLinkBuilder::ClusterLinkBuilder(const SceneMesh& mesh, const SceneGeometr
   , Culling(culling)
   , Options(options)
   , AreaBefore(tree.Elements().size() + 1, 0.0)
-  , Epsilon(g.rayLift)
+  , Epsilon(g.RayLift)
 {
   for (size_t i = 0; i < tree.Elements().size(); ++i)
   {
-    AreaBefore[i + 1] = AreaBefore[i] + g.area[tree.Elements()[i]];
+    AreaBefore[i + 1] = AreaBefore[i] + g.Area[tree.Elements()[i]];
   }
   PackSampleData();
 }
@@ -178,15 +178,15 @@ void ClusterLinkBuilder::PackSampleData()
     const int e = order[i];
     const int* ids = Mesh.Polygon(e);
     const int count = Mesh.PolygonSize(e);
-    const Vec3& c = G.centroid[e];
+    const Vec3& c = G.Centroid[e];
     double* r = SampleData.data() + SampleAt[i];
-    const double head[6] = { c.x, c.y, c.z, G.normal[e].x, G.normal[e].y, G.normal[e].z };
+    const double head[6] = { c.x, c.y, c.z, G.Normal[e].x, G.Normal[e].y, G.Normal[e].z };
     std::copy(head, head + 6, r);
     r[6] = 0;
     for (int k = 0; k < count; ++k)
     {
-      const Vec3& p = Mesh.points[ids[k]];
-      const double fan = Norm(Cross(p - c, Mesh.points[ids[(k + 1) % count]] - c));
+      const Vec3& p = Mesh.Points[ids[k]];
+      const double fan = Norm(Cross(p - c, Mesh.Points[ids[(k + 1) % count]] - c));
       const double corner[4] = { fan, p.x, p.y, p.z };
       std::copy(corner, corner + 4, r + 7 + 4 * k);
       r[6] += fan;
@@ -354,8 +354,8 @@ void ClusterLinkBuilder::AddNear(int a, int b, Found& found) const
   const int ea = Tree.ElementOf(a), eb = Tree.ElementOf(b);
   // The point rule at either end estimates the same A_a F_ab = A_b F_ba: their mean, made
   // reciprocal, errs less than either (measured against progressive refinement).
-  const double exchange = 0.5 * (NearFactor(ea, eb, found) * G.area[ea] + NearFactor(eb, ea, found) * G.area[eb]);
-  const double fromA = exchange / G.area[ea], fromB = exchange / G.area[eb];
+  const double exchange = 0.5 * (NearFactor(ea, eb, found) * G.Area[ea] + NearFactor(eb, ea, found) * G.Area[eb]);
+  const double fromA = exchange / G.Area[ea], fromB = exchange / G.Area[eb];
   if (exchange <= 0)
   {
     return;
@@ -386,19 +386,19 @@ double ClusterLinkBuilder::NearFactor(int from, int to, Found& found) const
   loop.clear();
   for (int i = 0; i < Mesh.PolygonSize(to); ++i)
   {
-    loop.push_back(Mesh.points[Mesh.Polygon(to)[i]]);
+    loop.push_back(Mesh.Points[Mesh.Polygon(to)[i]]);
   }
-  const Vec3& n = G.normal[from];
+  const Vec3& n = G.Normal[from];
   const auto value = [&](const Vec3& x) {
     // Only the front of `to` sends; Lambert's formula alone would count its back too.
-    return Dot(G.normal[to], x - G.centroid[to]) > Tree.Tolerance()
+    return Dot(G.Normal[to], x - G.Centroid[to]) > Tree.Tolerance()
       ? PointToPolygonFormFactor(x, n, loop.data(), static_cast<int>(loop.size()), scratch)
       : 0.0;
   };
   const double reach = Tree.ElementRadius(from) + Tree.ElementRadius(to);
-  if (Norm(G.centroid[from] - G.centroid[to]) > 2 * reach)
+  if (Norm(G.Centroid[from] - G.Centroid[to]) > 2 * reach)
   {
-    return value(G.centroid[from]);
+    return value(G.Centroid[from]);
   }
   const double mean = FanAverage(Mesh, G, from, value); // adjacent: the centroid alone misjudges
   return std::isfinite(mean) ? mean : 0.0;
@@ -412,7 +412,7 @@ bool ClusterLinkBuilder::NeedsRays(int a, int b) const
   }
   if (Tree.IsLeaf(a) && Tree.IsLeaf(b))
   {
-    const int pa = G.elementPatch[Tree.ElementOf(a)], pb = G.elementPatch[Tree.ElementOf(b)];
+    const int pa = G.ElementPatch[Tree.ElementOf(a)], pb = G.ElementPatch[Tree.ElementOf(b)];
     return Culling.MayBeBlockedBetweenPatches(pa, pb);
   }
   return true;

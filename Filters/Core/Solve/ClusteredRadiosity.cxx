@@ -41,8 +41,8 @@ public:
     , G(g)
     , Rays(rays)
     , L(solutions)
-    , N(static_cast<int>(g.normal.size()))
-    , P(static_cast<int>(g.patchElements.size()))
+    , N(static_cast<int>(g.Normal.size()))
+    , P(static_cast<int>(g.PatchElements.size()))
     , Options(options)
     , Start(start)
     , Out(out)
@@ -79,14 +79,14 @@ private:
     Unshot.assign(static_cast<size_t>(P) * L, Value());
     for (int e = 0; e < N; ++e)
     {
-      const int p = G.elementPatch[e];
+      const int p = G.ElementPatch[e];
       for (int m = 0; m < L; ++m)
       {
         const Value v = Channel::From(emission[At(e, m)]);
         Radiosity[At(e, m)] = v;
-        if (G.patchOpenArea[p] > 0 && !G.enclosed[e]) // enclosed emission never gets out
+        if (G.PatchOpenArea[p] > 0 && !G.Enclosed[e]) // enclosed emission never gets out
         {
-          Unshot[At(p, m)] += v * (G.area[e] / G.patchOpenArea[p]);
+          Unshot[At(p, m)] += v * (G.Area[e] / G.PatchOpenArea[p]);
         }
       }
     }
@@ -96,7 +96,7 @@ private:
     {
       for (int m = 0; m < L; ++m)
       {
-        const double w = Channel::Sum(Unshot[At(p, m)]) * G.patchOpenArea[p];
+        const double w = Channel::Sum(Unshot[At(p, m)]) * G.PatchOpenArea[p];
         InitialPer[m] += w;
         power[p] += w;
       }
@@ -213,8 +213,8 @@ private:
       double receiving = 0;
       for (int e = 0; e < N; ++e)
       {
-        factors[e] = Owned[G.elementPatch[e]] ? factors[e] : 0.0;
-        receiving += factors[e] * G.area[e];
+        factors[e] = Owned[G.ElementPatch[e]] ? factors[e] : 0.0;
+        receiving += factors[e] * G.Area[e];
       }
       Group.Sum(&receiving, 1);
       const double scale = estimator.ConservationScale(p, receiving);
@@ -223,19 +223,19 @@ private:
         {
           for (int m = 0; m < L && factors[e] > 0; ++m)
           {
-            Last[At(e, m)] += Channel::Reflect(Mesh.reflectance[e], Unshot[At(p, m)], factors[e] * scale);
+            Last[At(e, m)] += Channel::Reflect(Mesh.Reflectance[e], Unshot[At(p, m)], factors[e] * scale);
           }
         }
       });
       double shot = 0;
       for (int m = 0; m < L; ++m)
       {
-        const double power = Channel::Sum(Unshot[At(p, m)]) * G.patchOpenArea[p];
+        const double power = Channel::Sum(Unshot[At(p, m)]) * G.PatchOpenArea[p];
         PendingPer[m] -= power;
         shot += power;
         Unshot[At(p, m)] = Value();
       }
-      Record(shot, shot / std::max(G.patchOpenArea[p], 1e-300) * receiving * scale, false);
+      Record(shot, shot / std::max(G.PatchOpenArea[p], 1e-300) * receiving * scale, false);
     }
     if (Group.Distributed())
     {
@@ -298,7 +298,7 @@ private:
   {
     std::vector<Value> sent;
     Gather(gather, Last, sent);
-    ConjugateBounces<Value> solve(G.area, Weights(), L, static_cast<int>(Channel::Doubles));
+    ConjugateBounces<Value> solve(G.Area, Weights(), L, static_cast<int>(Channel::Doubles));
     solve.Start(Last, sent);
     Row(solve.Increment());
     while (AnyActive() && KeepGoing(IterationFraction()))
@@ -328,7 +328,7 @@ private:
     std::vector<double> w(static_cast<size_t>(N) * channels);
     for (int e = 0; e < N; ++e)
     {
-      const Value rho = Channel::Reflect(Mesh.reflectance[e], Channel::From({ 1, 1, 1 }), ReceiverScale[e]);
+      const Value rho = Channel::Reflect(Mesh.Reflectance[e], Channel::From({ 1, 1, 1 }), ReceiverScale[e]);
       Channel::Store(rho, w.data() + e * channels);
     }
     return w;
@@ -342,7 +342,7 @@ private:
       double left = 0;
       for (int e = 0; e < N; ++e)
       {
-        left += Channel::Sum(Magnitude(increment[At(e, m)])) * G.area[e];
+        left += Channel::Sum(Magnitude(increment[At(e, m)])) * G.Area[e];
       }
       RemainingPer[m] = PendingPer[m] + left;
     }
@@ -362,7 +362,7 @@ private:
     double shot = 0, received = 0;
     for (int e = 0; e < N; ++e)
     {
-      const Vec3& rho = Mesh.reflectance[e];
+      const Vec3& rho = Mesh.Reflectance[e];
       for (int m = 0; m < L; ++m)
       {
         const size_t i = At(e, m);
@@ -370,8 +370,8 @@ private:
         const Value kept = Receivable(rho, Last[i], h);
         const Value added = Channel::Reflect(rho, kept - h, 1.0);
         const Value reflected = Last[i] + Channel::Reflect(rho, kept, 1.0);
-        shot += Channel::Sum(solve.Solution()[i]) * G.area[e];
-        received += Channel::Sum(kept - added) * G.area[e];
+        shot += Channel::Sum(solve.Solution()[i]) * G.Area[e];
+        received += Channel::Sum(kept - added) * G.Area[e];
         Radiosity[i] += reflected - Last[i];
         Last[i] = reflected - added - solve.Solution()[i];
       }
@@ -416,7 +416,7 @@ private:
     unit.Collect(1, seen);
     for (int e = 0; e < N; ++e)
     {
-      if (seen[e] > 1 || (seen[e] > 0 && estimator.ViewIsClosed(G.elementPatch[e])))
+      if (seen[e] > 1 || (seen[e] > 0 && estimator.ViewIsClosed(G.ElementPatch[e])))
       {
         ReceiverScale[e] = 1 / seen[e];
       }
@@ -429,9 +429,9 @@ private:
     std::vector<double> last(L, 0.0);
     for (int e = 0; e < N && Reflect; ++e)
     {
-      for (int m = 0; m < L && (shared || Owned[G.elementPatch[e]]); ++m)
+      for (int m = 0; m < L && (shared || Owned[G.ElementPatch[e]]); ++m)
       {
-        last[m] += Channel::Sum(Last[At(e, m)]) * G.area[e];
+        last[m] += Channel::Sum(Last[At(e, m)]) * G.Area[e];
       }
     }
     if (!shared)
@@ -490,8 +490,8 @@ private:
     }
     for (int e = 0; e < N; ++e)
     {
-      const Vec3& rho = Mesh.reflectance[e];
-      for (int m = 0; m < L && Owned[G.elementPatch[e]]; ++m)
+      const Vec3& rho = Mesh.Reflectance[e];
+      for (int m = 0; m < L && Owned[G.ElementPatch[e]]; ++m)
       {
         const Vec3& a = Out.Ambient[m];
         Out.Radiosity[At(e, m)] = Channel::To(Radiosity[At(e, m)]) + Vec3{ rho.x * a.x, rho.y * a.y, rho.z * a.z };
@@ -500,7 +500,7 @@ private:
           Out.Direct[At(e, m)] = Channel::To(DirectPart.empty() ? Radiosity[At(e, m)] : DirectPart[At(e, m)]);
         }
       }
-      Stats.ReceivingElements += Owned[G.elementPatch[e]] ? 1 : 0;
+      Stats.ReceivingElements += Owned[G.ElementPatch[e]] ? 1 : 0;
     }
     Stats.OwnRays = Stats.RayCount;
     if (Group.Distributed())
@@ -519,11 +519,11 @@ private:
       Vec3 left;
       for (int p = 0; p < P; ++p)
       {
-        left += Channel::To(Unshot[At(p, m)]) * G.patchOpenArea[p];
+        left += Channel::To(Unshot[At(p, m)]) * G.PatchOpenArea[p];
       }
       for (int e = 0; e < N; ++e)
       {
-        left += Channel::To(Last[At(e, m)]) * G.area[e];
+        left += Channel::To(Last[At(e, m)]) * G.Area[e];
       }
       Out.Ambient[m] = ambient.Of(NonNegative(left)); // the remainder of a solve can overshoot a little
     }

@@ -99,7 +99,7 @@ EffectDecision VisibilityRow(const SolverOptions& options, const SolverStatistic
 EffectDecision InterreflectionRow(const SceneMesh& mesh, const SolverOptions& options, const SolverStatistics& s)
 {
   bool reflects = false;
-  for (const Vec3& r : mesh.reflectance)
+  for (const Vec3& r : mesh.Reflectance)
   {
     reflects = reflects || r.x > 0 || r.y > 0 || r.z > 0;
   }

@@ -10,16 +10,16 @@ namespace radiosity
 
 ElementTree::ElementTree(const SceneMesh& mesh, const SceneGeometry& g)
   : G(g)
-  , Leaf(g.normal.size(), -1)
-  , Reach(g.normal.size(), 0.0)
+  , Leaf(g.Normal.size(), -1)
+  , Reach(g.Normal.size(), 0.0)
 {
-  for (int e = 0; e < static_cast<int>(g.normal.size()); ++e)
+  for (int e = 0; e < static_cast<int>(g.Normal.size()); ++e)
   {
     for (int i = 0; i < mesh.PolygonSize(e); ++i)
     {
-      Reach[e] = std::max(Reach[e], Norm(mesh.points[mesh.Polygon(e)[i]] - g.centroid[e]));
+      Reach[e] = std::max(Reach[e], Norm(mesh.Points[mesh.Polygon(e)[i]] - g.Centroid[e]));
     }
-    if (!g.enclosed[e] && g.area[e] > 0)
+    if (!g.Enclosed[e] && g.Area[e] > 0)
     {
       Order.push_back(e);
     }
@@ -28,12 +28,12 @@ ElementTree::ElementTree(const SceneMesh& mesh, const SceneGeometry& g)
   Vec3 mean;
   for (int e : Order)
   {
-    mean += g.centroid[e] * (1.0 / Order.size());
+    mean += g.Centroid[e] * (1.0 / Order.size());
   }
   double size = 0;
   for (int e : Order)
   {
-    size = std::max(size, Norm(g.centroid[e] - mean));
+    size = std::max(size, Norm(g.Centroid[e] - mean));
   }
   Quantum = 1e-7 * std::max(size, 1e-300);
   Tol = 1e-6 * std::max(size, 1e-300);
@@ -77,14 +77,14 @@ std::vector<long long> ElementTree::SplitKeys(int first, int count) const
   Vec3 mean;
   for (int i = first; i < first + count; ++i)
   {
-    mean += G.centroid[Order[i]] * (1.0 / count);
+    mean += G.Centroid[Order[i]] * (1.0 / count);
   }
   const auto farthest = [&](const Vec3& from) {
     int best = Order[first];
     long long far = -1;
     for (int i = first; i < first + count; ++i)
     {
-      const long long d = std::llround(Norm(G.centroid[Order[i]] - from) / Quantum);
+      const long long d = std::llround(Norm(G.Centroid[Order[i]] - from) / Quantum);
       if (d > far || (d == far && Order[i] < best))
       {
         far = d;
@@ -93,12 +93,12 @@ std::vector<long long> ElementTree::SplitKeys(int first, int count) const
     }
     return best;
   };
-  const Vec3 a = G.centroid[farthest(mean)];
-  const Vec3 axis = Normalized(G.centroid[farthest(a)] - a);
+  const Vec3 a = G.Centroid[farthest(mean)];
+  const Vec3 axis = Normalized(G.Centroid[farthest(a)] - a);
   std::vector<long long> key(count);
   for (int i = 0; i < count; ++i)
   {
-    key[i] = std::llround(Dot(G.centroid[Order[first + i]] - a, axis) / Quantum);
+    key[i] = std::llround(Dot(G.Centroid[Order[first + i]] - a, axis) / Quantum);
   }
   return key;
 }
@@ -109,14 +109,14 @@ void ElementTree::Summarise(Node& node) const
   for (int i = node.First; i < node.First + node.Count; ++i)
   {
     const int e = Order[i];
-    centre += G.centroid[e] * G.area[e];
-    node.Area += G.area[e];
-    node.AreaVector += G.normal[e] * G.area[e];
-    const Vec3& n = G.normal[e];
+    centre += G.Centroid[e] * G.Area[e];
+    node.Area += G.Area[e];
+    node.AreaVector += G.Normal[e] * G.Area[e];
+    const Vec3& n = G.Normal[e];
     const double m[6] = { n.x * n.x, n.x * n.y, n.x * n.z, n.y * n.y, n.y * n.z, n.z * n.z };
     for (int k = 0; k < 6; ++k)
     {
-      node.NormalMoment[k] += G.area[e] * m[k];
+      node.NormalMoment[k] += G.Area[e] * m[k];
     }
   }
   node.Centre = centre * (1.0 / node.Area);
@@ -125,10 +125,10 @@ void ElementTree::Summarise(Node& node) const
   for (int i = node.First; i < node.First + node.Count; ++i)
   {
     const int e = Order[i];
-    node.Radius = std::max(node.Radius, Norm(G.centroid[e] - node.Centre) + Reach[e]);
-    spread = std::max(spread, std::acos(std::max(-1.0, std::min(1.0, Dot(axis, G.normal[e])))));
-    lowest = std::min(lowest, Dot(axis, G.centroid[e]));
-    highest = std::max(highest, Dot(axis, G.centroid[e]));
+    node.Radius = std::max(node.Radius, Norm(G.Centroid[e] - node.Centre) + Reach[e]);
+    spread = std::max(spread, std::acos(std::max(-1.0, std::min(1.0, Dot(axis, G.Normal[e])))));
+    lowest = std::min(lowest, Dot(axis, G.Centroid[e]));
+    highest = std::max(highest, Dot(axis, G.Centroid[e]));
   }
   node.Cone = Norm(axis) == 0 || spread >= Pi ? NormalCone(axis, Pi) : NormalCone(axis, spread);
   node.Flat = Norm(axis) > 0 && spread < 1e-6 && highest - lowest <= Tol;

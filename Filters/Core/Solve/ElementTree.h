@@ -47,7 +47,7 @@ public:
     int Left = -1, Right = -1;
   };
 
-  /// Every element not enclosed (SceneGeometry::enclosed), one per leaf.
+  /// Every element not enclosed (SceneGeometry::Enclosed), one per leaf.
   ElementTree(const SceneMesh& mesh, const SceneGeometry& g);
 
   /// The root first, each parent before its children.

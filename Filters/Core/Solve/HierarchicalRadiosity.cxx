@@ -91,7 +91,7 @@ public:
     , Pool(pool)
     , Samples(samples)
     , Threshold(threshold)
-    , Patches(static_cast<int>(g.patchElements.size()))
+    , Patches(static_cast<int>(g.PatchElements.size()))
     , Kind(Patches)
     , NodeFactor(nodes.Count())
     , SharedVisibility(Patches, -1.0)
@@ -147,7 +147,7 @@ public:
     for (int i = node.First; i < node.First + node.Count; ++i)
     {
       const int q = Tree.Patches()[i];
-      if (!Owned[q] || G.patchOpenArea[q] <= 0)
+      if (!Owned[q] || G.PatchOpenArea[q] <= 0)
       {
         continue;
       }
@@ -159,7 +159,7 @@ public:
       const double factor = Dot(Factors.Normal(q), v);
       if (factor > 0)
       {
-        state.GatherPatchUniform(q, factor, factor * PatchCovered[q] / G.patchOpenArea[q], meanReflectance[q]);
+        state.GatherPatchUniform(q, factor, factor * PatchCovered[q] / G.PatchOpenArea[q], meanReflectance[q]);
       }
     }
   }
@@ -193,7 +193,7 @@ private:
     for (int i = node.First; i < node.First + node.Count; ++i)
     {
       const int q = Tree.Patches()[i];
-      if ((owned && !Owned[q]) || G.patchOpenArea[q] <= 0)
+      if ((owned && !Owned[q]) || G.PatchOpenArea[q] <= 0)
       {
         continue;
       }
@@ -222,7 +222,7 @@ private:
       links.NodeFactors.push_back(f);
       covered += f * Nodes.CoveredArea(j);
     }
-    links.MeanFactors.push_back(covered / G.patchOpenArea[q]); // unshot spreads over the open area
+    links.MeanFactors.push_back(covered / G.PatchOpenArea[q]); // unshot spreads over the open area
     links.ReceivingArea += covered;
   }
 
@@ -344,7 +344,7 @@ private:
   {
     const Vec3 v = Factors.FactorVector(s, Tree.Nodes()[n].Centre);
     const double covered = VolumeReceiving(n, v, false, s);
-    if (covered < 0 || shotFraction * covered / G.patchArea[s] >= Threshold)
+    if (covered < 0 || shotFraction * covered / G.PatchArea[s] >= Threshold)
     {
       return false;
     }
@@ -394,12 +394,12 @@ private:
       return LinkKind::Elements; // near, or partly behind a plane: resolve per element
     }
     const double covered = NodeFactors(s, q, scratch);
-    if (covered <= 0 || G.patchOpenArea[q] <= 0)
+    if (covered <= 0 || G.PatchOpenArea[q] <= 0)
     {
       return LinkKind::None;
     }
     // Power fraction reaching q: F(s -> q) = F(q -> s) A_q / A_s.
-    if (shotFraction * covered / G.patchArea[s] >= Threshold)
+    if (shotFraction * covered / G.PatchArea[s] >= Threshold)
     {
       return LinkKind::Elements; // strong transfer: worth element resolution
     }
@@ -419,7 +419,7 @@ private:
     const Vec3 &cs = Factors.Centre(s), &cq = Factors.Centre(q);
     const double rs = Factors.Radius(s), rq = Factors.Radius(q);
     if (BehindBall(cs, rs, Factors.Cone(s), cq, rq) || BehindBall(cq, rq, Factors.Cone(q), cs, rs) ||
-      G.patchOpenArea[q] <= 0)
+      G.PatchOpenArea[q] <= 0)
     {
       return LinkKind::None;
     }
@@ -582,7 +582,7 @@ private:
   /// is cut off inside `a`, which one value per node cannot represent).
   bool Straddles(int a, int b) const
   {
-    const double tolerance = 1e-9 * G.sceneDiagonal;
+    const double tolerance = 1e-9 * G.SceneDiagonal;
     if (Nodes.End(a) - Nodes.Begin(a) < 3)
     {
       return Dot(Factors.Normal(b), Factors.Centre(a) - Factors.Centre(b)) - Factors.Radius(a) <= 0;
@@ -617,9 +617,9 @@ private:
         groupSize.push_back(static_cast<int>(NodeElements[q].size()));
         continue;
       }
-      elements.insert(elements.end(), G.patchElements[q].begin(), G.patchElements[q].end());
-      ElementVisibility.insert(ElementVisibility.end(), G.patchElements[q].size(), SharedVisibility[q]);
-      groupSize.push_back(static_cast<int>(G.patchElements[q].size()));
+      elements.insert(elements.end(), G.PatchElements[q].begin(), G.PatchElements[q].end());
+      ElementVisibility.insert(ElementVisibility.end(), G.PatchElements[q].size(), SharedVisibility[q]);
+      groupSize.push_back(static_cast<int>(G.PatchElements[q].size()));
     }
     if (Ranks.Distributed())
     {
@@ -641,7 +641,7 @@ private:
         {
           links.Elements.push_back(elements[k]);
           links.ElementFactors.push_back(f);
-          links.ReceivingArea += static_cast<double>(f) * G.area[elements[k]];
+          links.ReceivingArea += static_cast<double>(f) * G.Area[elements[k]];
         }
       }
       links.GroupEnd.push_back(static_cast<int>(links.Elements.size()));
@@ -735,12 +735,12 @@ private:
 
 std::vector<Vec3> MeanReflectance(const SceneMesh& mesh, const SceneGeometry& g)
 {
-  std::vector<Vec3> mean(g.patchElements.size());
+  std::vector<Vec3> mean(g.PatchElements.size());
   for (size_t p = 0; p < mean.size(); ++p)
   {
-    for (int e : g.patchElements[p])
+    for (int e : g.PatchElements[p])
     {
-      mean[p] += mesh.reflectance[e] * (g.area[e] / g.patchArea[p]);
+      mean[p] += mesh.Reflectance[e] * (g.Area[e] / g.PatchArea[p]);
     }
   }
   return mean;

@@ -28,7 +28,7 @@ ProbeHits Probe(const SceneGeometry& g, const Visibility& rays, const std::vecto
   for (int e : elements)
   {
     int met = 0, fronts = 0;
-    const Vec3& n = g.normal[e];
+    const Vec3& n = g.Normal[e];
     Vec3 t, b;
     TangentFrame(n, t, b);
     for (int r = 0; r < 9; ++r)
@@ -38,16 +38,16 @@ ProbeHits Probe(const SceneGeometry& g, const Visibility& rays, const std::vecto
       const Vec3 d = n * std::cos(polar) + (t * std::cos(azimuth) + b * std::sin(azimuth)) * std::sin(polar);
       Visibility::Hit hit;
       ++cast;
-      const bool found = rays.Intersect(g.centroid[e] + n * g.rayLift, d, hit);
+      const bool found = rays.Intersect(g.Centroid[e] + n * g.RayLift, d, hit);
       met += found ? 1 : 0;
-      hits += found && hit.distance < near ? 1 : 0;
+      hits += found && hit.Distance < near ? 1 : 0;
       // An element closed off (the floor under a box the lamp is in) takes no light either.
-      fronts += found && Dot(g.normal[hit.polygon], d) < 0 && !g.enclosed[hit.polygon] ? 1 : 0;
+      fronts += found && Dot(g.Normal[hit.Polygon], d) < 0 && !g.Enclosed[hit.Polygon] ? 1 : 0;
     }
     any += met;
     front += fronts;
-    area += g.area[e];
-    behind += met > 0 && fronts == 0 ? g.area[e] : 0.0;
+    area += g.Area[e];
+    behind += met > 0 && fronts == 0 ? g.Area[e] : 0.0;
   }
   return cast ? ProbeHits{ static_cast<double>(hits) / cast, static_cast<double>(any) / cast,
                   static_cast<double>(front) / cast, area > 0 ? behind / area : 0.0 }
@@ -59,7 +59,7 @@ Bounds SurfaceBounds(const SceneMesh& mesh)
   Bounds b;
   for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
   {
-    b.Add(mesh.lightId[e] < 0 ? ElementBounds(mesh, e) : Bounds());
+    b.Add(mesh.LightId[e] < 0 ? ElementBounds(mesh, e) : Bounds());
   }
   return b;
 }
@@ -104,8 +104,8 @@ int CoplanarCover(const SceneMesh& mesh, const SceneGeometry& g, int lamp, doubl
 {
   for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
   {
-    if (mesh.lightId[e] < 0 && std::fabs(Dot(g.normal[e], g.normal[lamp])) > 1 - 1e-9 &&
-      InsideElement(mesh, g, e, g.centroid[lamp], tolerance))
+    if (mesh.LightId[e] < 0 && std::fabs(Dot(g.Normal[e], g.Normal[lamp])) > 1 - 1e-9 &&
+      InsideElement(mesh, g, e, g.Centroid[lamp], tolerance))
     {
       return e;
     }
@@ -171,9 +171,9 @@ std::vector<std::vector<int>> LightElements(const SceneMesh& mesh, size_t lights
   std::vector<std::vector<int>> elements(lights);
   for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
   {
-    if (mesh.lightId[e] >= 0 && mesh.lightId[e] < static_cast<int>(lights))
+    if (mesh.LightId[e] >= 0 && mesh.LightId[e] < static_cast<int>(lights))
     {
-      elements[mesh.lightId[e]].push_back(e);
+      elements[mesh.LightId[e]].push_back(e);
     }
   }
   return elements;
@@ -193,8 +193,8 @@ std::vector<std::string> CheckLights(const SceneMesh& mesh, const SceneGeometry&
     bool closed = !elements[l].empty();
     for (int e : elements[l])
     {
-      area += g.area[e];
-      closed = closed && g.enclosed[e];
+      area += g.Area[e];
+      closed = closed && g.Enclosed[e];
     }
     if (closed)
     {
@@ -205,7 +205,7 @@ std::vector<std::string> CheckLights(const SceneMesh& mesh, const SceneGeometry&
       messages.push_back(text);
       continue;
     }
-    const int cover = elements[l].empty() ? -1 : CoplanarCover(mesh, g, elements[l][0], 1e-9 * g.sceneDiagonal);
+    const int cover = elements[l].empty() ? -1 : CoplanarCover(mesh, g, elements[l][0], 1e-9 * g.SceneDiagonal);
     if (cover >= 0)
     {
       std::snprintf(text, sizeof(text),

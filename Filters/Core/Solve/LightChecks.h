@@ -13,7 +13,7 @@ namespace radiosity
 {
 
 /// One message per suspicious light (`names[l]` names light l):
-/// - every element closed off (SceneGeometry::enclosed): it cannot emit at all;
+/// - every element closed off (SceneGeometry::Enclosed): it cannot emit at all;
 /// - it lies on another surface, in the same plane (a lamp drawn in the ceiling);
 /// - most of its probe rays land within 5 % of its own size: it faces a surface right in
 ///   front of it (a ceiling lamp wound the wrong way), so nearly all its light stays there;

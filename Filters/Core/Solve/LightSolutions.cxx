@@ -43,10 +43,10 @@ void CheckGrouping(const SceneMesh& mesh, const LightGrouping& grouping)
   // heap (a test that passed 3 for the furnished room's 8 lamps): said instead.
   for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
   {
-    if (mesh.lightId[e] >= static_cast<int>(grouping.SolutionOfLight.size()))
+    if (mesh.LightId[e] >= static_cast<int>(grouping.SolutionOfLight.size()))
     {
       throw std::invalid_argument("polygon " + std::to_string(e) + " belongs to light " +
-        std::to_string(mesh.lightId[e]) + ", but the grouping covers " +
+        std::to_string(mesh.LightId[e]) + ", but the grouping covers " +
         std::to_string(grouping.SolutionOfLight.size()) + " lights");
     }
   }
@@ -83,11 +83,11 @@ std::vector<Vec3> SolutionEmission(
   std::vector<Vec3> emission(static_cast<size_t>(n) * L);
   for (int e = 0; e < n; ++e)
   {
-    if (mesh.lightId[e] < 0)
+    if (mesh.LightId[e] < 0)
     {
       continue;
     }
-    const int s = grouping.SolutionOfLight[mesh.lightId[e]];
+    const int s = grouping.SolutionOfLight[mesh.LightId[e]];
     const bool bank = members[s] > 1 && !emissionColor.empty();
     emission[static_cast<size_t>(e) * L + s] = bank ? emissionColor[e] : Vec3{ 1, 1, 1 };
   }
@@ -106,9 +106,9 @@ std::vector<Vec3> DefaultColors(
   {
     for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
     {
-      if (mesh.lightId[e] >= 0)
+      if (mesh.LightId[e] >= 0)
       {
-        const int s = grouping.SolutionOfLight[mesh.lightId[e]];
+        const int s = grouping.SolutionOfLight[mesh.LightId[e]];
         sum[s] += emissionColor[e];
         ++cells[s];
       }
@@ -135,7 +135,7 @@ std::vector<Vec3> CombinedEmission(const SceneMesh& mesh, const std::vector<Vec3
   std::vector<Vec3> emission(mesh.NumberOfPolygons());
   for (size_t e = 0; e < emission.size(); ++e)
   {
-    if (mesh.lightId[e] >= 0)
+    if (mesh.LightId[e] >= 0)
     {
       emission[e] = emissionColor.empty() ? Vec3{ 1, 1, 1 } : emissionColor[e];
     }
@@ -165,7 +165,7 @@ public:
       for (int m = 0; m < L; ++m)
       {
         const Vec3& v = Emission[At(e, m)];
-        InitialPower[m] += (v.x + v.y + v.z) * solver.Geometry().area[e];
+        InitialPower[m] += (v.x + v.y + v.z) * solver.Geometry().Area[e];
       }
     }
     for (double p : InitialPower)

@@ -13,13 +13,13 @@ namespace
 /// Each element's bounding radius about its centroid, as the element tree's leaves have.
 std::vector<double> ElementRadii(const SceneMesh& mesh, const SceneGeometry& g)
 {
-  std::vector<double> radius(g.centroid.size(), 0.0);
+  std::vector<double> radius(g.Centroid.size(), 0.0);
   for (size_t e = 0; e < radius.size(); ++e)
   {
     const int* ids = mesh.Polygon(static_cast<int>(e));
     for (int i = 0; i < mesh.PolygonSize(static_cast<int>(e)); ++i)
     {
-      radius[e] = std::max(radius[e], Norm(mesh.points[ids[i]] - g.centroid[e]));
+      radius[e] = std::max(radius[e], Norm(mesh.Points[ids[i]] - g.Centroid[e]));
     }
   }
   return radius;
@@ -78,8 +78,8 @@ private:
 /// where it is tilted): the element tree's test for leaves, on centroids and radii.
 bool InFront(const SceneGeometry& g, const std::vector<double>& radius, int a, int b)
 {
-  const double lift = Dot(g.centroid[b] - g.centroid[a], g.normal[a]);
-  const bool parallel = std::abs(Dot(g.normal[a], g.normal[b])) > 1 - 1e-9;
+  const double lift = Dot(g.Centroid[b] - g.Centroid[a], g.Normal[a]);
+  const bool parallel = std::abs(Dot(g.Normal[a], g.Normal[b])) > 1 - 1e-9;
   return lift + (parallel ? 0.0 : radius[b]) > 1e-9 * (radius[a] + radius[b]);
 }
 
@@ -89,7 +89,7 @@ int NearAround(const SceneGeometry& g, const std::vector<double>& radius, const 
   int64_t span, double separation, long long& scanned)
 {
   int pairs = 0;
-  const CentroidGrid::Triple at = grid.Index(g.centroid[a]);
+  const CentroidGrid::Triple at = grid.Index(g.Centroid[a]);
   for (int64_t x = at.x - span; x <= at.x + span; ++x)
     for (int64_t y = at.y - span; y <= at.y + span; ++y)
       for (int64_t z = at.z - span; z <= at.z + span; ++z)
@@ -99,7 +99,7 @@ int NearAround(const SceneGeometry& g, const std::vector<double>& radius, const 
         for (size_t i = 0; cube && i < cube->size(); ++i)
         {
           const int b = (*cube)[i];
-          const bool near = b != a && Norm(g.centroid[b] - g.centroid[a]) <= separation * (radius[a] + radius[b]);
+          const bool near = b != a && Norm(g.Centroid[b] - g.Centroid[a]) <= separation * (radius[a] + radius[b]);
           pairs += near && InFront(g, radius, a, b) && InFront(g, radius, b, a) ? 1 : 0;
         }
       }
@@ -109,9 +109,9 @@ int NearAround(const SceneGeometry& g, const std::vector<double>& radius, const 
 std::vector<int> LinkedElements(const SceneGeometry& g)
 {
   std::vector<int> linked;
-  for (size_t e = 0; e < g.centroid.size(); ++e)
+  for (size_t e = 0; e < g.Centroid.size(); ++e)
   {
-    if (!g.enclosed[e] && g.area[e] > 0)
+    if (!g.Enclosed[e] && g.Area[e] > 0)
     {
       linked.push_back(static_cast<int>(e));
     }
@@ -153,7 +153,7 @@ double EstimateNearPairs(const SceneMesh& mesh, const SceneGeometry& g, double s
   {
     return 0;
   }
-  const CentroidGrid grid(g.centroid, linked, cell);
+  const CentroidGrid grid(g.Centroid, linked, cell);
   // Around an element far larger than the rest only nearby cubes are searched, and a dense
   // knot of tiny elements stops the count early (the samples are spread, so those taken
   // stand for all): an estimate, bounded in time.

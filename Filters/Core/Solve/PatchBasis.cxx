@@ -32,13 +32,13 @@ SolverOptions BasisOptions(const SolverOptions& options)
 /// Unit exitance over each patch's open area, one solution per patch.
 std::vector<Vec3> UnitPatchEmission(const SceneGeometry& g)
 {
-  const size_t n = g.normal.size(), P = g.patchElements.size();
+  const size_t n = g.Normal.size(), P = g.PatchElements.size();
   std::vector<Vec3> emission(n * P);
   for (size_t e = 0; e < n; ++e)
   {
-    if (!g.enclosed[e])
+    if (!g.Enclosed[e])
     {
-      emission[e * P + g.elementPatch[e]] = { 1, 1, 1 };
+      emission[e * P + g.ElementPatch[e]] = { 1, 1, 1 };
     }
   }
   return emission;
@@ -57,7 +57,7 @@ std::string ElementBasis(const RadiositySolver& solver, const SolverOptions& opt
   PatchBasis& basis)
 {
   const SceneGeometry& g = solver.Geometry();
-  const int n = static_cast<int>(g.normal.size()), P = static_cast<int>(g.patchElements.size());
+  const int n = static_cast<int>(g.Normal.size()), P = static_cast<int>(g.PatchElements.size());
   const std::vector<Vec3> emission = UnitPatchEmission(g);
   const Solution s = solver.Solve(emission, P, BasisOptions(options));
   stats = s.Statistics;
@@ -86,50 +86,50 @@ constexpr double MaximumHiddenFraction = 0.05;
 /// Polygon patch ids are the fine scene's.
 SceneMesh PatchLevelMesh(const SceneMesh& mesh, const SceneGeometry& g, const PatchNodes& nodes, std::vector<char>& whole)
 {
-  const int P = static_cast<int>(g.patchElements.size());
+  const int P = static_cast<int>(g.PatchElements.size());
   SceneMesh coarse;
   whole.assign(P, 0);
   auto add = [&](const std::vector<Vec3>& corners, const Vec3& rho, int light, int patch) {
     std::vector<int> ids;
     for (const Vec3& c : corners)
     {
-      ids.push_back(static_cast<int>(coarse.points.size()));
-      coarse.points.push_back(c);
+      ids.push_back(static_cast<int>(coarse.Points.size()));
+      coarse.Points.push_back(c);
     }
     coarse.AddPolygon(ids);
-    coarse.reflectance.push_back(rho);
-    coarse.lightId.push_back(light);
-    coarse.patchId.push_back(patch);
+    coarse.Reflectance.push_back(rho);
+    coarse.LightId.push_back(light);
+    coarse.PatchId.push_back(patch);
   };
   for (int p = 0; p < P; ++p)
   {
-    const std::vector<int>& elements = g.patchElements[p];
-    whole[p] = nodes.End(p) - nodes.Begin(p) > 3 && g.patchOpenArea[p] >= (1 - MaximumHiddenFraction) * g.patchArea[p];
+    const std::vector<int>& elements = g.PatchElements[p];
+    whole[p] = nodes.End(p) - nodes.Begin(p) > 3 && g.PatchOpenArea[p] >= (1 - MaximumHiddenFraction) * g.PatchArea[p];
     if (whole[p])
     {
       Vec3 rho;
       for (int e : elements)
       {
-        rho += mesh.reflectance[e] * (g.area[e] / g.patchArea[p]);
+        rho += mesh.Reflectance[e] * (g.Area[e] / g.PatchArea[p]);
       }
       std::vector<Vec3> corners;
       for (int k = nodes.Begin(p); k + 1 < nodes.End(p); ++k)
       {
         corners.push_back(nodes.Node(k));
       }
-      add(corners, rho, mesh.lightId[elements[0]], p);
+      add(corners, rho, mesh.LightId[elements[0]], p);
       continue;
     }
     for (int e : elements)
     {
-      if (!g.enclosed[e])
+      if (!g.Enclosed[e])
       {
         std::vector<Vec3> corners;
         for (int v = 0; v < mesh.PolygonSize(e); ++v)
         {
-          corners.push_back(mesh.points[mesh.Polygon(e)[v]]);
+          corners.push_back(mesh.Points[mesh.Polygon(e)[v]]);
         }
-        add(corners, mesh.reflectance[e], mesh.lightId[e], p);
+        add(corners, mesh.Reflectance[e], mesh.LightId[e], p);
       }
     }
   }
@@ -147,17 +147,17 @@ std::vector<double> PatchFormFactors(const SceneMesh& coarse, const RadiositySol
   ShooterFormFactors factors(coarse, g, solver.Rays(), pool, options.Visibility == EffectMode::Auto);
   const int samples = options.Visibility == EffectMode::Off ? 0 : options.Samples;
   std::vector<double> F(static_cast<size_t>(n) * P, 0.0), column(n);
-  for (size_t compact = 0; compact < g.patchElements.size(); ++compact)
+  for (size_t compact = 0; compact < g.PatchElements.size(); ++compact)
   {
-    const int q = coarse.patchId[g.patchElements[compact][0]];
+    const int q = coarse.PatchId[g.PatchElements[compact][0]];
     factors.Compute(static_cast<int>(compact), options.Method, samples, 0, column);
     for (int c = 0; c < n; ++c)
     {
       // += : the coarse solver may split a patch into pieces (SplitSeparatedPatches, its
       // polygons share no points); the factor to the patch is the sum over its pieces.
-      F[static_cast<size_t>(c) * P + q] += g.enclosed[c] ? 0.0 : column[c];
+      F[static_cast<size_t>(c) * P + q] += g.Enclosed[c] ? 0.0 : column[c];
     }
-    if (options.Progress && !options.Progress(0.5 * compact / g.patchElements.size()))
+    if (options.Progress && !options.Progress(0.5 * compact / g.PatchElements.size()))
     {
       error = AbortedMessage;
       return {};
@@ -232,7 +232,7 @@ std::vector<Vec3> SolvePatchValues(const SceneMesh& coarse, int P, const SolverO
   std::vector<double> area(P, 0.0);
   for (int c = 0; c < coarse.NumberOfPolygons(); ++c)
   {
-    area[coarse.patchId[c]] += g.area[c];
+    area[coarse.PatchId[c]] += g.Area[c];
   }
   std::vector<Vec3> values(static_cast<size_t>(P) * P);
   for (int channel = 0; channel < 3; ++channel)
@@ -240,9 +240,9 @@ std::vector<Vec3> SolvePatchValues(const SceneMesh& coarse, int P, const SolverO
     std::vector<double> M(static_cast<size_t>(P) * P, 0.0);
     for (int c = 0; c < coarse.NumberOfPolygons(); ++c)
     {
-      const int p = coarse.patchId[c];
-      const Vec3& rho = coarse.reflectance[c];
-      const double w = (channel == 0 ? rho.x : channel == 1 ? rho.y : rho.z) * g.area[c] / area[p];
+      const int p = coarse.PatchId[c];
+      const Vec3& rho = coarse.Reflectance[c];
+      const double w = (channel == 0 ? rho.x : channel == 1 ? rho.y : rho.z) * g.Area[c] / area[p];
       for (int q = 0; q < P; ++q)
       {
         M[static_cast<size_t>(p) * P + q] -= w * F[static_cast<size_t>(c) * P + q];
@@ -276,7 +276,7 @@ std::vector<Vec3> SolvePatchValues(const SceneMesh& coarse, int P, const SolverO
 std::vector<std::vector<std::pair<int, double>>> CornerNeighbours(const SceneGeometry& g, const PatchNodes& nodes,
   const std::vector<char>& whole)
 {
-  const int P = static_cast<int>(g.patchElements.size());
+  const int P = static_cast<int>(g.PatchElements.size());
   std::map<std::tuple<double, double, double>, std::vector<int>> at; // corner point -> patches
   for (int p = 0; p < P; ++p)
   {
@@ -289,15 +289,15 @@ std::vector<std::vector<std::pair<int, double>>> CornerNeighbours(const SceneGeo
   std::vector<std::vector<std::pair<int, double>>> neighbours(nodes.Count());
   for (int p = 0; p < P; ++p)
   {
-    const Vec3& normal = g.normal[g.patchElements[p][0]];
+    const Vec3& normal = g.Normal[g.PatchElements[p][0]];
     for (int k = nodes.Begin(p); whole[p] && k + 1 < nodes.End(p); ++k)
     {
       const Vec3& x = nodes.Node(k);
       for (int other : at[std::make_tuple(x.x, x.y, x.z)])
       {
-        if (Dot(g.normal[g.patchElements[other][0]], normal) > 0.99)
+        if (Dot(g.Normal[g.PatchElements[other][0]], normal) > 0.99)
         {
-          neighbours[k].push_back({ other, g.patchOpenArea[other] });
+          neighbours[k].push_back({ other, g.PatchOpenArea[other] });
         }
       }
     }
@@ -349,15 +349,15 @@ void FillNodeValues(const SceneGeometry& g, const PatchNodes& nodes, const std::
 /// Each element's (at most three) nodes and weights: the fan triangle holding its centroid.
 void FillElementWeights(const SceneGeometry& g, const PatchNodes& nodes, PatchBasis& basis)
 {
-  const int n = static_cast<int>(g.normal.size());
+  const int n = static_cast<int>(g.Normal.size());
   basis.Node.assign(3 * static_cast<size_t>(n), 0);
   basis.Weight.assign(3 * static_cast<size_t>(n), 0.0f);
   for (int e = 0; e < n; ++e)
   {
-    const int p = g.elementPatch[e];
+    const int p = g.ElementPatch[e];
     const double* w = nodes.Weights(e);
     int used = 0;
-    for (int k = nodes.Begin(p); k < nodes.End(p) && used < 3 && !g.enclosed[e]; ++k)
+    for (int k = nodes.Begin(p); k < nodes.End(p) && used < 3 && !g.Enclosed[e]; ++k)
     {
       if (w[k - nodes.Begin(p)] != 0)
       {
@@ -382,7 +382,7 @@ std::string NodeBasis(const RadiositySolver& solver, const SceneMesh& mesh, cons
   const SceneGeometry& g = solver.Geometry();
   const WorkerPool pool(options.Threads);
   const PatchNodes nodes = NodesOf(mesh, solver, pool);
-  basis.Patches = static_cast<int>(g.patchElements.size());
+  basis.Patches = static_cast<int>(g.PatchElements.size());
   basis.Receivers = nodes.Count();
   std::vector<char> whole;
   const SceneMesh coarse = PatchLevelMesh(mesh, g, nodes, whole);
@@ -414,7 +414,7 @@ std::string SolvePatchBasis(const RadiositySolver& solver, const SceneMesh& mesh
 {
   basis = PatchBasis();
   const SceneGeometry& g = solver.Geometry();
-  const long long n = static_cast<long long>(g.normal.size()), P = static_cast<long long>(g.patchElements.size());
+  const long long n = static_cast<long long>(g.Normal.size()), P = static_cast<long long>(g.PatchElements.size());
   level = ResolveBasisLevel(level, n, P);
   // Nodes: a patch has its corners and centre; 8 per patch bounds the estimate.
   const double bytes = 12.0 * P * (level == BasisLevel::Elements ? n : std::min(n, 8 * P));
@@ -440,14 +440,14 @@ std::string SolvePatchBasis(const RadiositySolver& solver, const SceneMesh& mesh
 void AddBasisInterreflection(const SceneGeometry& g, const std::vector<Vec3>& direct, const BasisView& basis,
   const WorkerPool& pool, std::vector<Vec3>& result)
 {
-  const int n = static_cast<int>(g.normal.size());
+  const int n = static_cast<int>(g.Normal.size());
   const int P = basis.Patches;
   // Each patch emits what it reflects directly: the area mean of D over its elements.
   std::vector<Vec3> emission(P);
   for (int e = 0; e < n; ++e)
   {
-    const int q = g.elementPatch[e];
-    emission[q] += g.patchOpenArea[q] > 0 ? direct[e] * (g.area[e] / g.patchOpenArea[q]) : Vec3();
+    const int q = g.ElementPatch[e];
+    emission[q] += g.PatchOpenArea[q] > 0 ? direct[e] * (g.Area[e] / g.PatchOpenArea[q]) : Vec3();
   }
   std::vector<Vec3> received(basis.Receivers);
   const size_t stride = 3 * static_cast<size_t>(P);

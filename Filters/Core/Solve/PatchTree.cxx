@@ -11,7 +11,7 @@ namespace radiosity
 PatchTree::PatchTree(const SceneGeometry& g, const ShooterFormFactors& factors, int leafPatches, int tasks)
   : G(g)
   , Factors(factors)
-  , Order(g.patchElements.size())
+  , Order(g.PatchElements.size())
 {
   std::iota(Order.begin(), Order.end(), 0);
   // The quantum follows the scene's size measured without axes (a box's diagonal would
@@ -35,9 +35,9 @@ PatchTree::PatchTree(const SceneGeometry& g, const ShooterFormFactors& factors, 
   std::vector<int> start(Order.size() + 1, 0);
   for (size_t i = 0; i < Order.size(); ++i)
   {
-    for (int e : g.patchElements[Order[i]])
+    for (int e : g.PatchElements[Order[i]])
     {
-      if (!g.sheltered[e])
+      if (!g.Sheltered[e])
       {
         Open.push_back(e);
       }
@@ -114,9 +114,9 @@ void PatchTree::Summarise(Node& node) const
   for (int i = node.First; i < node.First + node.Count; ++i)
   {
     const int p = Order[i];
-    centre += Factors.Centre(p) * G.patchArea[p];
-    area += G.patchArea[p];
-    axis += Factors.Cone(p).Axis * G.patchArea[p];
+    centre += Factors.Centre(p) * G.PatchArea[p];
+    area += G.PatchArea[p];
+    axis += Factors.Cone(p).Axis * G.PatchArea[p];
   }
   node.Centre = area > 0 ? centre * (1.0 / area) : Factors.Centre(Order[node.First]);
   axis = Normalized(axis);

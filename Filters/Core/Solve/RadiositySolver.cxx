@@ -28,8 +28,8 @@ constexpr double kHierarchicalPairs = 5000;
 SolverMethod ResolveMethod(
   const SolverOptions& options, const SceneMesh& mesh, const SceneGeometry& g, std::string& reason)
 {
-  const int elements = static_cast<int>(g.centroid.size());
-  const int patches = static_cast<int>(g.patchElements.size());
+  const int elements = static_cast<int>(g.Centroid.size());
+  const int patches = static_cast<int>(g.PatchElements.size());
   if (options.Solver != SolverMethod::Auto && FindSolverMethod(options.Solver))
   {
     reason = "as set";
@@ -64,7 +64,7 @@ SolverMethod ResolveMethod(
 int CountFaceClusters(const SceneGeometry& g)
 {
   int clusters = 0;
-  for (const std::vector<int>& elements : g.patchElements)
+  for (const std::vector<int>& elements : g.PatchElements)
   {
     clusters += elements.size() > 1 && ConeOf(g, elements).Spread > 1e-6 ? 1 : 0;
   }
@@ -103,9 +103,9 @@ std::string NoFiniteSolution(const SceneMesh& mesh, const SceneGeometry& geometr
   for (int c = 0; c < 3 && channel < 0; ++c)
   {
     bool all = true;
-    for (size_t e = 0; e < geometry.normal.size() && all; ++e)
+    for (size_t e = 0; e < geometry.Normal.size() && all; ++e)
     {
-      all = geometry.enclosed[e] || mesh.reflectance[e][c] >= 1.0;
+      all = geometry.Enclosed[e] || mesh.Reflectance[e][c] >= 1.0;
     }
     channel = all ? c : -1;
   }
@@ -115,9 +115,9 @@ std::string NoFiniteSolution(const SceneMesh& mesh, const SceneGeometry& geometr
   }
   const WorkerPool pool(1);
   ShooterFormFactors probes(mesh, geometry, rays, pool);
-  for (size_t p = 0; p < geometry.patchElements.size(); ++p)
+  for (size_t p = 0; p < geometry.PatchElements.size(); ++p)
   {
-    if (geometry.patchOpenArea[p] > 0 && !probes.ViewIsClosed(static_cast<int>(p)))
+    if (geometry.PatchOpenArea[p] > 0 && !probes.ViewIsClosed(static_cast<int>(p)))
     {
       return std::string(); // light escapes through an opening: the sum converges
     }
@@ -153,16 +153,16 @@ namespace
 void KeepClosedOffDark(const SceneMesh& mesh, const SceneGeometry& g, const std::vector<Vec3>& emission, Solution& out)
 {
   const size_t solutions = static_cast<size_t>(out.Solutions);
-  for (size_t e = 0; e < g.enclosed.size(); ++e)
+  for (size_t e = 0; e < g.Enclosed.size(); ++e)
   {
-    const bool shut = g.patchOpenArea[g.elementPatch[e]] <= 0;
-    for (size_t m = 0; g.enclosed[e] && m < solutions; ++m)
+    const bool shut = g.PatchOpenArea[g.ElementPatch[e]] <= 0;
+    for (size_t m = 0; g.Enclosed[e] && m < solutions; ++m)
     {
       const size_t i = e * solutions + m;
       for (int c = 0; c < 3; ++c)
       {
-        const double rho = mesh.reflectance[e][c], reached = (out.Radiosity[i][c] - emission[i][c]) / rho;
-        out.Statistics.EscapedPower += rho > 0 ? reached * (shut ? 1.0 : 1 - rho) * g.area[e] : 0.0;
+        const double rho = mesh.Reflectance[e][c], reached = (out.Radiosity[i][c] - emission[i][c]) / rho;
+        out.Statistics.EscapedPower += rho > 0 ? reached * (shut ? 1.0 : 1 - rho) * g.Area[e] : 0.0;
       }
       out.Radiosity[i] = emission[i];
       if (!out.Direct.empty())
@@ -202,7 +202,7 @@ Solution RadiositySolver::Solve(
 {
   const auto start = std::chrono::steady_clock::now();
   Solution out;
-  const int n = Error_.empty() ? static_cast<int>(Geometry().normal.size()) : 0;
+  const int n = Error_.empty() ? static_cast<int>(Geometry().Normal.size()) : 0;
   out.Solutions = solutions;
   out.Ambient.assign(std::max(solutions, 0), Vec3());
   if (solutions <= 0 || n == 0)
@@ -214,7 +214,7 @@ Solution RadiositySolver::Solve(
   bool grey = options.Color == EffectMode::Off;
   if (options.Color == EffectMode::Auto)
   {
-    grey = std::all_of(Mesh.reflectance.begin(), Mesh.reflectance.end(), Grey3) &&
+    grey = std::all_of(Mesh.Reflectance.begin(), Mesh.Reflectance.end(), Grey3) &&
       std::all_of(emission.begin(), emission.end(), Grey3);
   }
   out.Statistics.SingleChannel = grey;
@@ -274,7 +274,7 @@ void SolverStatistics::Append(const SolverStatistics& next)
 
 std::vector<char> OwnedPatches(const SceneGeometry& geometry, int rank, int ranks)
 {
-  const size_t patches = geometry.patchElements.size();
+  const size_t patches = geometry.PatchElements.size();
   if (ranks <= 1)
   {
     return std::vector<char>(patches, 1);
@@ -285,7 +285,7 @@ std::vector<char> OwnedPatches(const SceneGeometry& geometry, int rank, int rank
   {
     const auto least = std::min_element(load.begin(), load.end()); // the first on ties
     owned[p] = least - load.begin() == rank ? 1 : 0;
-    *least += std::max<size_t>(geometry.patchElements[p].size(), 1);
+    *least += std::max<size_t>(geometry.PatchElements[p].size(), 1);
   }
   return owned;
 }

@@ -256,7 +256,7 @@ public:
   const Visibility& Rays() const { return *Prepared_.Rays; }
   const PreparedScene& Prepared() const { return Prepared_; }
   /// Patches split because their parts cannot see each other (see SplitSeparatedPatches);
-  /// then Geometry().elementPatch, not the mesh's PatchId, is the patch of each element.
+  /// then Geometry().ElementPatch, not the mesh's PatchId, is the patch of each element.
   int SplitPatches() const { return Prepared_.SplitPatches; }
 
   /// Solves `solutions` independent systems at once. `emission[e * solutions + m]` is the

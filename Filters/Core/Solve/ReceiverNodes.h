@@ -27,9 +27,9 @@ struct ReceiverNodes
   std::vector<Vec3> OpenArea;
 
   ReceiverNodes(const SceneGeometry& g, const ShooterFormFactors& factors)
-    : Root(g.patchElements.size(), -1)
+    : Root(g.PatchElements.size(), -1)
   {
-    for (size_t q = 0; q < g.patchElements.size(); ++q)
+    for (size_t q = 0; q < g.PatchElements.size(); ++q)
     {
       if (factors.Planar(static_cast<int>(q)))
       {
@@ -40,9 +40,9 @@ struct ReceiverNodes
       const int first = static_cast<int>(Elements.size());
       if (!tree)
       {
-        Elements.insert(Elements.end(), g.patchElements[q].begin(), g.patchElements[q].end());
+        Elements.insert(Elements.end(), g.PatchElements[q].begin(), g.PatchElements[q].end());
         Add(g, static_cast<int>(q), factors.Centre(static_cast<int>(q)), factors.Radius(static_cast<int>(q)),
-          factors.Cone(static_cast<int>(q)), -1, -1, first, static_cast<int>(g.patchElements[q].size()));
+          factors.Cone(static_cast<int>(q)), -1, -1, first, static_cast<int>(g.PatchElements[q].size()));
         continue;
       }
       Elements.insert(Elements.end(), tree->Elements().begin(), tree->Elements().end());
@@ -73,7 +73,7 @@ private:
     Vec3 open;
     for (int i = first; i < first + count; ++i)
     {
-      open += g.sheltered[Elements[i]] ? Vec3() : g.normal[Elements[i]] * g.area[Elements[i]];
+      open += g.Sheltered[Elements[i]] ? Vec3() : g.Normal[Elements[i]] * g.Area[Elements[i]];
     }
     OpenArea.push_back(open);
   }

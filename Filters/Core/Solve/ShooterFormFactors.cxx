@@ -28,14 +28,14 @@ ShooterFormFactors::ShooterFormFactors(const SceneMesh& mesh, const SceneGeometr
   , CullVisibility(cullVisibility)
 {
   // Offsets keep rays from starting or ending inside their own surfaces; relative to the
-  // scene so the result does not depend on its units (SceneGeometry::rayLift).
-  Epsilon = geometry.rayLift;
-  Loops.reserve(mesh.connectivity.size());
-  for (int id : mesh.connectivity)
+  // scene so the result does not depend on its units (SceneGeometry::RayLift).
+  Epsilon = geometry.RayLift;
+  Loops.reserve(mesh.Connectivity.size());
+  for (int id : mesh.Connectivity)
   {
-    Loops.push_back(mesh.points[id]);
+    Loops.push_back(mesh.Points[id]);
   }
-  const size_t patches = geometry.patchElements.size();
+  const size_t patches = geometry.PatchElements.size();
   PatchTriangles.resize(patches);
   PatchCentre.resize(patches);
   PatchNormal.resize(patches);
@@ -43,9 +43,9 @@ ShooterFormFactors::ShooterFormFactors(const SceneMesh& mesh, const SceneGeometr
   {
     double total = 0;
     Vec3 centre, normal;
-    for (int e : geometry.patchElements[p])
+    for (int e : geometry.PatchElements[p])
     {
-      const Vec3* loop = Loops.data() + mesh.offsets[e];
+      const Vec3* loop = Loops.data() + mesh.Offsets[e];
       const std::vector<int> corners = Triangulate(loop, mesh.PolygonSize(e));
       for (size_t t = 0; t + 2 < corners.size(); t += 3)
       {
@@ -54,14 +54,14 @@ ShooterFormFactors::ShooterFormFactors(const SceneMesh& mesh, const SceneGeometr
         total += 0.5 * Norm(cross);
         PatchTriangles[p].push_back({ a, b, c, Normalized(cross), total });
       }
-      centre += geometry.centroid[e] * geometry.area[e];
-      normal += geometry.normal[e] * geometry.area[e];
+      centre += geometry.Centroid[e] * geometry.Area[e];
+      normal += geometry.Normal[e] * geometry.Area[e];
     }
     for (SampleTriangle& tri : PatchTriangles[p])
     {
       tri.Cdf = total > 0 ? tri.Cdf / total : 1.0;
     }
-    PatchCentre[p] = centre * (1.0 / geometry.patchArea[p]);
+    PatchCentre[p] = centre * (1.0 / geometry.PatchArea[p]);
     PatchNormal[p] = Normalized(normal);
   }
   PatchRadius.assign(patches, 0.0);
@@ -78,11 +78,11 @@ ShooterFormFactors::ShooterFormFactors(const SceneMesh& mesh, const SceneGeometr
   OpenElements.assign(patches, {});
   for (size_t p = 0; p < patches; ++p)
   {
-    const std::vector<int>& elements = geometry.patchElements[p];
-    if (std::any_of(elements.begin(), elements.end(), [&](int e) { return geometry.sheltered[e] != 0; }))
+    const std::vector<int>& elements = geometry.PatchElements[p];
+    if (std::any_of(elements.begin(), elements.end(), [&](int e) { return geometry.Sheltered[e] != 0; }))
     {
       std::copy_if(elements.begin(), elements.end(), std::back_inserter(OpenElements[p]),
-        [&](int e) { return geometry.sheltered[e] == 0; });
+        [&](int e) { return geometry.Sheltered[e] == 0; });
     }
   }
   BuildOutlines();
@@ -95,7 +95,7 @@ ShooterFormFactors::ShooterFormFactors(const SceneMesh& mesh, const SceneGeometr
 
 void ShooterFormFactors::BuildTrees()
 {
-  const int patches = static_cast<int>(Geometry.patchElements.size());
+  const int patches = static_cast<int>(Geometry.PatchElements.size());
   PatchCone.assign(patches, NormalCone());
   Trees.resize(patches);
   bool clusters = false;
@@ -106,7 +106,7 @@ void ShooterFormFactors::BuildTrees()
   Pool.For(patches, 16, [&](int begin, int end) {
     for (int p = begin; p < end; ++p)
     {
-      const std::vector<int>& elements = Geometry.patchElements[p];
+      const std::vector<int>& elements = Geometry.PatchElements[p];
       PatchCone[p] = Planar(p) ? NormalCone(PatchNormal[p], 0.0) : ConeOf(Geometry, elements);
       // Below this a plain sum over the elements is as fast as a walk down a tree. A flat
       // patch gets one only where clusters receive: to link to their parts (FactorVectorFor)
@@ -123,29 +123,29 @@ void ShooterFormFactors::FindBlockers()
 {
   const int n = Mesh.NumberOfPolygons();
   ElementBox.assign(n, Bounds());
-  PatchBox.assign(Geometry.patchElements.size(), Bounds());
+  PatchBox.assign(Geometry.PatchElements.size(), Bounds());
   Bounds scene;
   for (int e = 0; e < n; ++e)
   {
     for (int v = 0; v < Mesh.PolygonSize(e); ++v)
     {
-      ElementBox[e].Add(Mesh.points[Mesh.Polygon(e)[v]]);
+      ElementBox[e].Add(Mesh.Points[Mesh.Polygon(e)[v]]);
     }
-    PatchBox[Geometry.elementPatch[e]].Add(ElementBox[e]);
+    PatchBox[Geometry.ElementPatch[e]].Add(ElementBox[e]);
     scene.Add(ElementBox[e]);
   }
   // A segment between two points in front of (or on) a plane never crosses it. So a
   // polygon with no scene point strictly behind its plane cannot block any pair; only
   // the others ("blockers") can. Elements are grouped by plane: one test per plane.
-  const double eps = 1e-9 * Geometry.sceneDiagonal;
+  const double eps = 1e-9 * Geometry.SceneDiagonal;
   const Vec3 centre = scene.Centre();
   std::map<std::array<long long, 4>, Bounds> planes;
   std::map<std::array<long long, 4>, bool> blocking;
   std::map<int, Bounds> patches; // blocking elements' boxes per patch: tighter than per plane
   for (int e = 0; e < n; ++e)
   {
-    const Vec3& normal = Geometry.normal[e];
-    const double offset = Dot(normal, Geometry.centroid[e] - centre);
+    const Vec3& normal = Geometry.Normal[e];
+    const double offset = Dot(normal, Geometry.Centroid[e] - centre);
     const std::array<long long, 4> key = PlaneKey(normal, offset, 1e-6, eps * 1e3);
     auto known = blocking.find(key);
     if (known == blocking.end())
@@ -161,9 +161,9 @@ void ShooterFormFactors::FindBlockers()
       if (behind)
       {
         behind = false;
-        for (size_t p = 0; p < Mesh.points.size() && !behind; ++p)
+        for (size_t p = 0; p < Mesh.Points.size() && !behind; ++p)
         {
-          behind = Dot(normal, Mesh.points[p] - centre) < offset - eps;
+          behind = Dot(normal, Mesh.Points[p] - centre) < offset - eps;
         }
       }
       known = blocking.emplace(key, behind).first;
@@ -171,7 +171,7 @@ void ShooterFormFactors::FindBlockers()
     if (known->second)
     {
       planes[key].Add(ElementBox[e]);
-      patches[Geometry.elementPatch[e]].Add(ElementBox[e]);
+      patches[Geometry.ElementPatch[e]].Add(ElementBox[e]);
     }
   }
   BlockingPlaneCount = static_cast<int>(planes.size());
@@ -208,7 +208,7 @@ bool ShooterFormFactors::ShaftMayBeBlocked(const Bounds& from, const Bounds& to)
   }
   Bounds shaft = from;
   shaft.Add(to);
-  const double tolerance = 1e-9 * Geometry.sceneDiagonal;
+  const double tolerance = 1e-9 * Geometry.SceneDiagonal;
   if (!shaft.Overlaps(AllBlockers, tolerance))
   {
     return false;
@@ -229,19 +229,19 @@ bool ShooterFormFactors::ShaftMayBeBlocked(const Bounds& from, const Bounds& to)
 
 void ShooterFormFactors::BuildOutlines()
 {
-  const size_t patches = Geometry.patchElements.size();
+  const size_t patches = Geometry.PatchElements.size();
   PatchOutline.assign(patches, {});
   for (size_t p = 0; p < patches; ++p)
   {
-    const std::vector<int>& elements = Geometry.patchElements[p];
+    const std::vector<int>& elements = Geometry.PatchElements[p];
     const Vec3& n = PatchNormal[p];
     bool planar = true;
     for (int e : elements)
     {
       // Coplanar within a tolerance relative to the scene: then one front test and one
       // outline serve the whole patch.
-      planar = planar && Dot(Geometry.normal[e], n) > 1 - 1e-9 &&
-        std::fabs(Dot(n, Geometry.centroid[e] - PatchCentre[p])) <= 1e-9 * Geometry.sceneDiagonal;
+      planar = planar && Dot(Geometry.Normal[e], n) > 1 - 1e-9 &&
+        std::fabs(Dot(n, Geometry.Centroid[e] - PatchCentre[p])) <= 1e-9 * Geometry.SceneDiagonal;
     }
     if (!planar || elements.size() < 2)
     {
@@ -298,13 +298,13 @@ std::map<std::pair<int, int>, int> ShooterFormFactors::SplitAtJunctions(const st
   std::vector<std::pair<double, int>> inside;
   for (const auto& edge : edges)
   {
-    const Vec3& a = Mesh.points[edge.first.first];
-    const Vec3 ab = Mesh.points[edge.first.second] - a;
+    const Vec3& a = Mesh.Points[edge.first.first];
+    const Vec3 ab = Mesh.Points[edge.first.second] - a;
     const double length2 = Dot(ab, ab);
     inside.clear();
     for (int w : ends)
     {
-      const Vec3 aw = Mesh.points[w] - a;
+      const Vec3 aw = Mesh.Points[w] - a;
       const double t = length2 > 0 ? Dot(aw, ab) / length2 : 0.0;
       if (t > 1e-9 && t < 1 - 1e-9 && Norm(Cross(ab, aw)) <= 1e-9 * length2)
       {
@@ -325,17 +325,17 @@ std::map<std::pair<int, int>, int> ShooterFormFactors::SplitAtJunctions(const st
 
 void ShooterFormFactors::BuildLoops()
 {
-  const size_t patches = Geometry.patchElements.size();
+  const size_t patches = Geometry.PatchElements.size();
   PatchLoop.assign(patches, {});
   ConvexLoop.assign(patches, 0);
   for (size_t p = 0; p < patches; ++p)
   {
-    const std::vector<int>& elements = Geometry.patchElements[p];
+    const std::vector<int>& elements = Geometry.PatchElements[p];
     if (elements.size() == 1)
     {
       for (int v = 0; v < Mesh.PolygonSize(elements[0]); ++v)
       {
-        PatchLoop[p].push_back(Mesh.points[Mesh.Polygon(elements[0])[v]]);
+        PatchLoop[p].push_back(Mesh.Points[Mesh.Polygon(elements[0])[v]]);
       }
     }
     else if (!PatchOutline[p].empty())
@@ -365,9 +365,9 @@ std::vector<Vec3> ShooterFormFactors::MergeCollinear(const std::map<std::pair<in
     {
       return false;
     }
-    const Vec3& a = Mesh.points[in->second[0]];
-    const Vec3& c = Mesh.points[out->second[0]];
-    const Vec3 ab = Mesh.points[b] - a, bc = c - Mesh.points[b];
+    const Vec3& a = Mesh.Points[in->second[0]];
+    const Vec3& c = Mesh.Points[out->second[0]];
+    const Vec3 ab = Mesh.Points[b] - a, bc = c - Mesh.Points[b];
     return Dot(ab, bc) > 0 && Norm(Cross(ab, bc)) <= 1e-9 * Norm(ab) * Norm(bc);
   };
   std::vector<Vec3> outline;
@@ -378,8 +378,8 @@ std::vector<Vec3> ShooterFormFactors::MergeCollinear(const std::map<std::pair<in
     {
       for (int c = 0; c < edge.second; ++c)
       {
-        outline.push_back(Mesh.points[start]);
-        outline.push_back(Mesh.points[edge.first.second]);
+        outline.push_back(Mesh.Points[start]);
+        outline.push_back(Mesh.Points[edge.first.second]);
       }
       continue;
     }
@@ -392,8 +392,8 @@ std::vector<Vec3> ShooterFormFactors::MergeCollinear(const std::map<std::pair<in
     {
       end = next[end][0];
     }
-    outline.push_back(Mesh.points[start]);
-    outline.push_back(Mesh.points[end]);
+    outline.push_back(Mesh.Points[start]);
+    outline.push_back(Mesh.Points[end]);
   }
   return outline;
 }
@@ -414,14 +414,14 @@ int ShooterFormFactors::FrontHit(const Vec3& origin, const Vec3& direction) cons
     return -1;
   }
   // A ray reaching a polygon's back is absorbed there: back faces do not receive.
-  return Dot(Geometry.normal[hit.polygon], direction) < 0 ? hit.polygon : -1;
+  return Dot(Geometry.Normal[hit.Polygon], direction) < 0 ? hit.Polygon : -1;
 }
 
 bool ShooterFormFactors::SeesClosedScene(int patch)
 {
   if (ClosedView.empty())
   {
-    ClosedView.assign(Geometry.patchElements.size(), -1);
+    ClosedView.assign(Geometry.PatchElements.size(), -1);
   }
   if (ClosedView[patch] < 0)
   {
@@ -431,8 +431,8 @@ bool ShooterFormFactors::SeesClosedScene(int patch)
     SampleStream random(static_cast<std::uint64_t>(patch), 0, 11);
     // The frame follows the patch's first edge, so a rotated scene probes alike.
     const Vec3& n = PatchNormal[patch];
-    const int first = Geometry.patchElements[patch][0];
-    const Vec3 edge = Mesh.points[Mesh.Polygon(first)[1]] - Mesh.points[Mesh.Polygon(first)[0]];
+    const int first = Geometry.PatchElements[patch][0];
+    const Vec3 edge = Mesh.Points[Mesh.Polygon(first)[1]] - Mesh.Points[Mesh.Polygon(first)[0]];
     const Vec3 t = Normalized(edge - n * Dot(edge, n)), b = Cross(n, t);
     bool closed = Planar(patch);
     for (int r = 0; r < probes && closed; ++r)
@@ -450,7 +450,7 @@ bool ShooterFormFactors::SeesClosedScene(int patch)
 
 double ShooterFormFactors::ConservationScale(int patch, double receiving)
 {
-  const double shooting = Geometry.patchOpenArea[patch];
+  const double shooting = Geometry.PatchOpenArea[patch];
   if (!(receiving > 0) || !(shooting > 0))
   {
     return 1.0;
@@ -510,13 +510,13 @@ double ShooterFormFactors::PointFactor(int patch, const Vec3& x, const Vec3& nor
     return Trees[patch]->PointFactor(x, normal, scratch);
   }
   double f = 0;
-  for (int s : Geometry.patchElements[patch])
+  for (int s : Geometry.PatchElements[patch])
   {
-    if (Dot(Geometry.normal[s], x - Geometry.centroid[s]) <= 0)
+    if (Dot(Geometry.Normal[s], x - Geometry.Centroid[s]) <= 0)
     {
       continue;
     }
-    f += PointToPolygonFormFactor(x, normal, Loops.data() + Mesh.offsets[s], Mesh.PolygonSize(s), scratch);
+    f += PointToPolygonFormFactor(x, normal, Loops.data() + Mesh.Offsets[s], Mesh.PolygonSize(s), scratch);
   }
   return f;
 }
@@ -535,11 +535,11 @@ Vec3 ShooterFormFactors::FactorVector(int patch, const Vec3& x) const
     return Trees[patch]->FactorVector(x);
   }
   Vec3 sum;
-  for (int s : Geometry.patchElements[patch])
+  for (int s : Geometry.PatchElements[patch])
   {
-    if (Dot(Geometry.normal[s], x - Geometry.centroid[s]) > 0)
+    if (Dot(Geometry.Normal[s], x - Geometry.Centroid[s]) > 0)
     {
-      sum += PolygonFactorVector(x, Loops.data() + Mesh.offsets[s], Mesh.PolygonSize(s));
+      sum += PolygonFactorVector(x, Loops.data() + Mesh.Offsets[s], Mesh.PolygonSize(s));
     }
   }
   return sum;
@@ -571,13 +571,13 @@ Vec3 ShooterFormFactors::ReceiverPoint(int patch, int r, int samples, SampleStre
   }
   const size_t pick = std::min(open.size() - 1, static_cast<size_t>((r + random.Next()) / samples * open.size()));
   const int e = open[pick];
-  return Geometry.centroid[e] + Geometry.normal[e] * Epsilon;
+  return Geometry.Centroid[e] + Geometry.Normal[e] * Epsilon;
 }
 
 int ShooterFormFactors::VisibleRays(int patch, int element, int samples) const
 {
   SampleStream random(static_cast<std::uint64_t>(patch), static_cast<std::uint64_t>(element));
-  const Vec3 from = Geometry.centroid[element] + Geometry.normal[element] * Epsilon;
+  const Vec3 from = Geometry.Centroid[element] + Geometry.Normal[element] * Epsilon;
   int visible = 0;
   for (int r = 0; r < samples; ++r)
   {
@@ -607,7 +607,7 @@ int ShooterFormFactors::VisibleRaysToElements(
   {
     const int pick = std::min(count - 1, static_cast<int>((r + random.Next()) / samples * count));
     const int e = elements[pick];
-    const Vec3 from = Geometry.centroid[e] + Geometry.normal[e] * Epsilon;
+    const Vec3 from = Geometry.Centroid[e] + Geometry.Normal[e] * Epsilon;
     visible += Rays.Occluded(from, SamplePoint(shooter, r, samples, random), 0.0) ? 0 : 1;
   }
   return visible;
@@ -623,13 +623,13 @@ double ShooterFormFactors::VisibleFractionOfFacing(
     const int pick = std::min(count - 1, static_cast<int>((r + random.Next()) / samples * count));
     const int e = elements[pick];
     const Vec3 to = SamplePoint(shooter, r, samples, random);
-    if (Dot(Geometry.normal[e], to - Geometry.centroid[e]) <= 0)
+    if (Dot(Geometry.Normal[e], to - Geometry.Centroid[e]) <= 0)
     {
       continue; // the element's back is turned: no light of this shooter point reaches it
     }
     ++aimed;
     ++rays;
-    visible += Rays.Occluded(Geometry.centroid[e] + Geometry.normal[e] * Epsilon, to, 0.0) ? 0 : 1;
+    visible += Rays.Occluded(Geometry.Centroid[e] + Geometry.Normal[e] * Epsilon, to, 0.0) ? 0 : 1;
     if (visible > 0 && visible < aimed)
     {
       return 0.5; // partly in view: the callers need no closer estimate
@@ -640,17 +640,17 @@ double ShooterFormFactors::VisibleFractionOfFacing(
 
 double ShooterFormFactors::ReceiverFactor(int patch, int e, std::vector<Vec3>& scratch) const
 {
-  const Vec3& c = Geometry.centroid[e];
-  const double size = std::sqrt(Geometry.area[e]);
+  const Vec3& c = Geometry.Centroid[e];
+  const double size = std::sqrt(Geometry.Area[e]);
   if (Norm(c - PatchCentre[patch]) - PatchRadius[patch] > 2 * size)
   {
-    return PointFactor(patch, c, Geometry.normal[e], scratch);
+    return PointFactor(patch, c, Geometry.Normal[e], scratch);
   }
   // Near the shooter the factor changes across the element faster than one point can
   // tell (a point beside a lamp sees far more of it than the element's far edge).
   const double mean =
-    FanAverage(Mesh, Geometry, e, [&](const Vec3& x) { return PointFactor(patch, x, Geometry.normal[e], scratch); });
-  return std::isnan(mean) ? PointFactor(patch, c, Geometry.normal[e], scratch) : mean;
+    FanAverage(Mesh, Geometry, e, [&](const Vec3& x) { return PointFactor(patch, x, Geometry.Normal[e], scratch); });
+  return std::isnan(mean) ? PointFactor(patch, c, Geometry.Normal[e], scratch) : mean;
 }
 
 double ShooterFormFactors::ElementFactor(int patch, int e, int samples, std::vector<Vec3>& scratch, RayCounts& counts) const
@@ -678,14 +678,14 @@ void ShooterFormFactors::Count(const RayCounts& counts, int samples)
 long long ShooterFormFactors::Analytic(int patch, int samples, std::vector<double>& factors)
 {
   const SceneGeometry& g = Geometry;
-  const int n = static_cast<int>(g.normal.size());
+  const int n = static_cast<int>(g.Normal.size());
   std::atomic<long long> rays{ 0 };
   Pool.For(n, 64, [&](int begin, int end) {
     thread_local std::vector<Vec3> scratch; // clipping buffer, allocated once per thread
     RayCounts counts;
     for (int e = begin; e < end; ++e)
     {
-      const int q = g.elementPatch[e];
+      const int q = g.ElementPatch[e];
       factors[e] = q == patch || (Receivers && !(*Receivers)[q]) ? 0.0 : ElementFactor(patch, e, samples, scratch, counts);
     }
     rays += counts.Rays;
@@ -749,12 +749,12 @@ long long ShooterFormFactors::Hemicube(int patch, int resolution, std::vector<do
   std::fill(factors.begin(), factors.end(), 0.0);
   for (int i = 0; i < count; ++i) // in pixel order: deterministic sums
   {
-    if (HitElement[i] >= 0 && Geometry.elementPatch[HitElement[i]] != patch)
+    if (HitElement[i] >= 0 && Geometry.ElementPatch[HitElement[i]] != patch)
     {
       factors[HitElement[i]] += CubeWeights[i];
     }
   }
-  Reciprocal(patch, Geometry.patchOpenArea[patch], factors); // the centre sees for the open part
+  Reciprocal(patch, Geometry.PatchOpenArea[patch], factors); // the centre sees for the open part
   return count;
 }
 
@@ -784,12 +784,12 @@ long long ShooterFormFactors::MonteCarlo(int patch, int samples, int shot, std::
   const double w = 1.0 / samples;
   for (int r = 0; r < samples; ++r)
   {
-    if (HitElement[r] >= 0 && Geometry.elementPatch[HitElement[r]] != patch)
+    if (HitElement[r] >= 0 && Geometry.ElementPatch[HitElement[r]] != patch)
     {
       factors[HitElement[r]] += w;
     }
   }
-  Reciprocal(patch, Geometry.patchArea[patch], factors); // rays from enclosed points are lost
+  Reciprocal(patch, Geometry.PatchArea[patch], factors); // rays from enclosed points are lost
   return samples;
 }
 
@@ -797,7 +797,7 @@ void ShooterFormFactors::Reciprocal(int patch, double shooterArea, std::vector<d
 {
   for (size_t e = 0; e < factors.size(); ++e)
   {
-    factors[e] = factors[e] > 0 ? factors[e] * shooterArea / Geometry.area[e] : 0.0;
+    factors[e] = factors[e] > 0 ? factors[e] * shooterArea / Geometry.Area[e] : 0.0;
   }
 }
 

@@ -108,7 +108,7 @@ public:
   /// True when the patch is flat: one element, or coplanar elements with one outline.
   bool Planar(int patch) const
   {
-    return !PatchOutline[patch].empty() || Geometry.patchElements[patch].size() == 1;
+    return !PatchOutline[patch].empty() || Geometry.PatchElements[patch].size() == 1;
   }
   /// Each patch's outline as one loop of corners (empty where it is not one simple loop).
   const std::vector<std::vector<Vec3>>& PatchLoops() const { return PatchLoop; }
@@ -142,7 +142,7 @@ private:
   const SceneGeometry& Geometry;
   const Visibility& Rays;
   const WorkerPool& Pool;
-  std::vector<Vec3> Loops; ///< element points, laid out like Mesh.connectivity
+  std::vector<Vec3> Loops; ///< element points, laid out like Mesh.Connectivity
   struct SampleTriangle
   {
     Vec3 A, B, C, Normal;

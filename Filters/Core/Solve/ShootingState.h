@@ -32,8 +32,8 @@ public:
     : Mesh(mesh)
     , G(g)
     , L(solutions)
-    , Elements(static_cast<int>(g.normal.size()))
-    , Patches(static_cast<int>(g.patchElements.size()))
+    , Elements(static_cast<int>(g.Normal.size()))
+    , Patches(static_cast<int>(g.PatchElements.size()))
     , Options(options)
     , Start(start)
     , Out(out)
@@ -53,7 +53,7 @@ public:
   /// True for the patches (and their elements) this process receives for; all of them
   /// unless several processes solve together.
   bool Owns(int patch) const { return Owned[patch] != 0; }
-  bool OwnsElement(int e) const { return Owned[G.elementPatch[e]] != 0; }
+  bool OwnsElement(int e) const { return Owned[G.ElementPatch[e]] != 0; }
   int OwnedElements() const { return OwnedElementCount; }
   const std::vector<char>& OwnedPatchFlags() const { return Owned; }
   /// The processes solving together (one, where its sums do nothing).
@@ -117,13 +117,13 @@ public:
         UnshotEmission[i] = Value();
       }
     }
-    Stats.ShotPower += ShotSum * G.patchOpenArea[shooter];
+    Stats.ShotPower += ShotSum * G.PatchOpenArea[shooter];
   }
 
   /// Element e receives the shot through F(e -> shooter) = f. Thread-safe per element.
   void Gather(int e, double f)
   {
-    const Vec3& rho = Mesh.reflectance[e];
+    const Vec3& rho = Mesh.Reflectance[e];
     for (int m = 0; m < L; ++m)
     {
       Radiosity[Index(e, m)] += Channel::Reflect(rho, Shot[m], f);
@@ -142,15 +142,15 @@ public:
     {
       return; // direct light only: what is received is not shot again
     }
-    const int p = G.elementPatch[e];
-    if (G.patchOpenArea[p] <= 0)
+    const int p = G.ElementPatch[e];
+    if (G.PatchOpenArea[p] <= 0)
     {
       return;
     }
-    const double w = f * G.area[e] / G.patchOpenArea[p];
+    const double w = f * G.Area[e] / G.PatchOpenArea[p];
     for (int m = 0; m < L; ++m)
     {
-      Unshot[Index(p, m)] += Channel::Reflect(Mesh.reflectance[e], Shot[m], w);
+      Unshot[Index(p, m)] += Channel::Reflect(Mesh.Reflectance[e], Shot[m], w);
     }
   }
 
@@ -208,12 +208,12 @@ public:
       }
     }
     const int q = Clusters->Patch[node];
-    if (!Reflect || G.patchOpenArea[q] <= 0)
+    if (!Reflect || G.PatchOpenArea[q] <= 0)
     {
       return;
     }
     const Vec3* r = ClusterReflectance.data() + 3 * static_cast<size_t>(node);
-    const Vec3 reflected = Vec3{ Dot(r[0], v), Dot(r[1], v), Dot(r[2], v) } * (1.0 / G.patchOpenArea[q]);
+    const Vec3 reflected = Vec3{ Dot(r[0], v), Dot(r[1], v), Dot(r[2], v) } * (1.0 / G.PatchOpenArea[q]);
     for (int m = 0; m < L; ++m)
     {
       Unshot[Index(q, m)] += Channel::Reflect(reflected, Shot[m], 1.0);
@@ -233,9 +233,9 @@ public:
       for (int i = nodes.ElementBegin[n]; i < nodes.ElementEnd[n]; ++i)
       {
         const int e = nodes.Elements[i];
-        for (int c = 0; c < 3 && !G.sheltered[e]; ++c)
+        for (int c = 0; c < 3 && !G.Sheltered[e]; ++c)
         {
-          ClusterReflectance[3 * static_cast<size_t>(n) + c] += G.normal[e] * (G.area[e] * Mesh.reflectance[e][c]);
+          ClusterReflectance[3 * static_cast<size_t>(n) + c] += G.Normal[e] * (G.Area[e] * Mesh.Reflectance[e][c]);
         }
       }
     }
@@ -251,7 +251,7 @@ public:
   /// Ledger and history after a shot; `received` is the power that reached receivers.
   void EndShot(int shooter, double received)
   {
-    Pending = { true, ShotSum * G.patchOpenArea[shooter], received, Seconds() };
+    Pending = { true, ShotSum * G.PatchOpenArea[shooter], received, Seconds() };
     ++Stats.Shots;
     OwnedRemaining();
     if (!Group.Distributed())
@@ -299,7 +299,7 @@ public:
     Out.Radiosity.assign(Radiosity.size(), Vec3());
     for (int e = 0; e < Elements; ++e)
     {
-      const Vec3& rho = Mesh.reflectance[e];
+      const Vec3& rho = Mesh.Reflectance[e];
       for (int m = 0; m < L && OwnsElement(e); ++m)
       {
         const Vec3& a = Out.Ambient[m];
@@ -330,7 +330,7 @@ public:
     for (int e = 0; e < Elements; ++e)
     {
       factors[e] = OwnsElement(e) ? factors[e] : 0.0;
-      receiving += factors[e] * G.area[e];
+      receiving += factors[e] * G.Area[e];
     }
     Group.Sum(&receiving, 1);
     const double scale = estimator.ConservationScale(shooter, receiving);
@@ -367,7 +367,7 @@ public:
     {
       if (InitialPer[m] > 0)
       {
-        most = std::max(most, Channel::Sum(Shot[m]) * G.patchOpenArea[shooter] / InitialPer[m]);
+        most = std::max(most, Channel::Sum(Shot[m]) * G.PatchOpenArea[shooter] / InitialPer[m]);
       }
     }
     return most;
@@ -386,15 +386,15 @@ private:
     PendingEmission.assign(Patches, 0);
     for (int e = 0; e < Elements; ++e)
     {
-      const int p = G.elementPatch[e];
+      const int p = G.ElementPatch[e];
       for (int m = 0; m < L; ++m)
       {
         const Value v = Channel::From(emission[Index(e, m)]);
         Radiosity[Index(e, m)] = v;
         // Unshot radiosity of a patch: its elements' emission spread over its open area.
-        if (G.patchOpenArea[p] > 0 && !G.enclosed[e]) // enclosed emission never gets out
+        if (G.PatchOpenArea[p] > 0 && !G.Enclosed[e]) // enclosed emission never gets out
         {
-          Unshot[Index(p, m)] += v * (G.area[e] / G.patchOpenArea[p]);
+          Unshot[Index(p, m)] += v * (G.Area[e] / G.PatchOpenArea[p]);
         }
         PendingEmission[p] = PendingEmission[p] || Channel::Sum(v) != 0;
       }
@@ -436,7 +436,7 @@ private:
     }
   }
 
-  double Power(int p, int m) const { return Channel::Sum(Unshot[Index(p, m)]) * G.patchOpenArea[p]; }
+  double Power(int p, int m) const { return Channel::Sum(Unshot[Index(p, m)]) * G.PatchOpenArea[p]; }
 
   /// RemainingPer over this rank's patches (all of them for one process).
   void OwnedRemaining()
@@ -587,7 +587,7 @@ private:
     }
     for (int e = 0; e < Elements; ++e)
     {
-      const int q = G.elementPatch[e];
+      const int q = G.ElementPatch[e];
       if (!Owned[q])
       {
         continue;
@@ -598,7 +598,7 @@ private:
         const double weight = w[j - Nodes->Begin(q)];
         for (int m = 0; m < L; ++m)
         {
-          Radiosity[Index(e, m)] += Channel::Reflect(Mesh.reflectance[e], Gathered[Index(j, m)], weight);
+          Radiosity[Index(e, m)] += Channel::Reflect(Mesh.Reflectance[e], Gathered[Index(j, m)], weight);
         }
       }
     }
@@ -617,11 +617,11 @@ private:
       for (int i = Clusters->ElementBegin[node]; i < Clusters->ElementEnd[node]; ++i)
       {
         const int e = Clusters->Elements[i];
-        const Vec3& n = G.normal[e];
-        for (int m = 0; m < L && !G.sheltered[e]; ++m)
+        const Vec3& n = G.Normal[e];
+        for (int m = 0; m < L && !G.Sheltered[e]; ++m)
         {
           const Value* v = ClusterGathered.data() + 3 * Index(node, m);
-          Radiosity[Index(e, m)] += Channel::Reflect(Mesh.reflectance[e], v[0] * n.x + v[1] * n.y + v[2] * n.z, 1.0);
+          Radiosity[Index(e, m)] += Channel::Reflect(Mesh.Reflectance[e], v[0] * n.x + v[1] * n.y + v[2] * n.z, 1.0);
         }
       }
     }
@@ -638,7 +638,7 @@ private:
       Vec3 unshotPower;
       for (int p : OwnedList)
       {
-        unshotPower += Channel::To(Unshot[Index(p, m)]) * G.patchOpenArea[p];
+        unshotPower += Channel::To(Unshot[Index(p, m)]) * G.PatchOpenArea[p];
       }
       double summed[3] = { unshotPower.x, unshotPower.y, unshotPower.z };
       Group.Sum(summed, 3);

@@ -26,18 +26,18 @@ namespace SceneFiles
 {
 namespace
 {
-/// Adds one polygon of point ids (offset into raw.points) with its material and object;
+/// Adds one polygon of point ids (offset into raw.Points) with its material and object;
 /// `mirrored` reverses the corners (a transform with a negative determinant turns faces).
 void AddPolygon(const vtkIdType* ids, vtkIdType count, int base, int material, int object, bool mirrored,
   radiosity::RawScene& raw)
 {
   for (vtkIdType k = 0; k < count; ++k)
   {
-    raw.connectivity.push_back(base + static_cast<int>(ids[mirrored ? count - 1 - k : k]));
+    raw.Connectivity.push_back(base + static_cast<int>(ids[mirrored ? count - 1 - k : k]));
   }
-  raw.offsets.push_back(static_cast<int>(raw.connectivity.size()));
-  raw.material.push_back(material);
-  raw.object.push_back(object);
+  raw.Offsets.push_back(static_cast<int>(raw.Connectivity.size()));
+  raw.Material.push_back(material);
+  raw.Object.push_back(object);
 }
 
 /// A strip a b c d ... as triangles (a b c), (c b d), ... keeping one orientation.
@@ -125,11 +125,11 @@ namespace
 /// whole error unreadable from Python: "OSError: None").
 std::string WithValidText(const std::string& error, radiosity::RawScene& raw, std::vector<std::string>& warnings)
 {
-  for (radiosity::ImportMaterial& material : raw.materials)
+  for (radiosity::ImportMaterial& material : raw.Materials)
   {
     material.Name = radiosity::ValidUtf8(material.Name);
   }
-  for (std::vector<std::string>* texts : { &raw.objectNames, &warnings })
+  for (std::vector<std::string>* texts : { &raw.ObjectNames, &warnings })
   {
     for (std::string& name : *texts)
     {
@@ -162,7 +162,7 @@ std::string Read(const std::string& path, radiosity::RawScene& raw, std::vector<
 int AppendPolygons(vtkPolyData* data, const vtkMatrix4x4* transform, int material, int object,
   radiosity::RawScene& raw)
 {
-  const int base = static_cast<int>(raw.points.size());
+  const int base = static_cast<int>(raw.Points.size());
   const bool mirrored = transform && vtkMatrix4x4::Determinant(&transform->Element[0][0]) < 0;
   const bool single = data->GetPoints() && data->GetPoints()->GetDataType() == VTK_FLOAT;
   for (vtkIdType p = 0; p < data->GetNumberOfPoints(); ++p)
@@ -173,9 +173,9 @@ int AppendPolygons(vtkPolyData* data, const vtkMatrix4x4* transform, int materia
     {
       vtkMatrix4x4::MultiplyPoint(&transform->Element[0][0], x, x);
     }
-    raw.points.push_back({ x[0], x[1], x[2] });
+    raw.Points.push_back({ x[0], x[1], x[2] });
     const double farthest = std::max({ std::fabs(x[0]), std::fabs(x[1]), std::fabs(x[2]) });
-    raw.pointQuantum = single ? std::max(raw.pointQuantum, std::ldexp(farthest, -23)) : raw.pointQuantum;
+    raw.PointQuantum = single ? std::max(raw.PointQuantum, std::ldexp(farthest, -23)) : raw.PointQuantum;
   }
   auto each = [&](vtkCellArray* cells, bool strip) {
     auto iterator = vtk::TakeSmartPointer(cells->NewIterator());

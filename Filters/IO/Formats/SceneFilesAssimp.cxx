@@ -175,7 +175,7 @@ std::string ReadWithAssimp(const std::string& path, radiosity::RawScene& raw, st
   }
   const bool fbx = vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(path)) == ".fbx";
   const double metres = fbx ? FbxMetresPerUnit(path) : 0.0;
-  for (radiosity::Vec3& p : raw.points)
+  for (radiosity::Vec3& p : raw.Points)
   {
     p = metres > 0 ? p * metres : p;
   }

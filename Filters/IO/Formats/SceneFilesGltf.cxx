@@ -240,7 +240,7 @@ void ReadMaterials(const nlohmann::json& document, const Loader::Model& model, r
     material.Diffuse = radiosity::Times(Rgb(source.PbrMetallicRoughness.BaseColorFactor, { 1, 1, 1 }),
       TextureMean(model, source.PbrMetallicRoughness.BaseColorTexture.Index));
     material.Emissive = radiosity::Times(Rgb(source.EmissiveFactor, {}), TextureMean(model, source.EmissiveTexture.Index)) * strength[m];
-    raw.materials.push_back(material);
+    raw.Materials.push_back(material);
   }
 }
 
@@ -256,8 +256,8 @@ int AppendNode(const Loader::Model& model, int n, radiosity::RawScene& raw, int 
   if (node.Mesh >= 0 && node.Mesh < static_cast<int>(model.Meshes.size()))
   {
     const Loader::Mesh& mesh = model.Meshes[node.Mesh];
-    const int object = static_cast<int>(raw.objectNames.size());
-    raw.objectNames.push_back(!node.Name.empty() ? node.Name : !mesh.Name.empty() ? mesh.Name : "node " + std::to_string(n));
+    const int object = static_cast<int>(raw.ObjectNames.size());
+    raw.ObjectNames.push_back(!node.Name.empty() ? node.Name : !mesh.Name.empty() ? mesh.Name : "node " + std::to_string(n));
     for (const Loader::Primitive& primitive : mesh.Primitives)
     {
       if (primitive.Geometry)

@@ -173,7 +173,7 @@ std::string ReadObjTexturedFrom(const std::string& path, const std::string& text
   {
     return error;
   }
-  for (radiosity::ImportMaterial& used : raw.materials)
+  for (radiosity::ImportMaterial& used : raw.Materials)
   {
     const auto found = std::find_if(definitions.begin(), definitions.end(),
       [&](const radiosity::ImportMaterial& m) { return m.Name == used.Name; });

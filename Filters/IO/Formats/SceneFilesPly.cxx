@@ -107,7 +107,7 @@ std::string ReadPly(const std::string& path, radiosity::RawScene& raw, std::vect
                                     "colors (uchar red, green, blue) to use them"
                                   : "the PLY has no colors: reflectance 0.8");
   }
-  raw.materials.push_back(material);
+  raw.Materials.push_back(material);
   const int first = raw.NumberOfPolygons();
   if (AppendPolygons(data, nullptr, 0, -1, raw))
   {
@@ -115,9 +115,9 @@ std::string ReadPly(const std::string& path, radiosity::RawScene& raw, std::vect
   }
   if (!colors.empty())
   {
-    raw.color.resize(first, { 1, 1, 1 });
-    raw.color.insert(raw.color.end(), colors.begin(), colors.end());
-    raw.color.resize(raw.NumberOfPolygons(), { 1, 1, 1 }); // strips' triangles, if any
+    raw.Color.resize(first, { 1, 1, 1 });
+    raw.Color.insert(raw.Color.end(), colors.begin(), colors.end());
+    raw.Color.resize(raw.NumberOfPolygons(), { 1, 1, 1 }); // strips' triangles, if any
   }
   return std::string();
 }

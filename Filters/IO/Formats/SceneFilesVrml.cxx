@@ -219,9 +219,9 @@ int MaterialOf(vtkProperty* property, const MaterialTags& tags, std::map<int, in
     material.Emissive = { emissive[0], emissive[1], emissive[2] };
   }
   const bool named = tag >= 0 && !tags[tag].empty();
-  material.Name = named ? tags[tag] : "Material" + std::to_string(raw.materials.size() + 1);
-  raw.materials.push_back(material);
-  return seen[tag] = static_cast<int>(raw.materials.size()) - 1;
+  material.Name = named ? tags[tag] : "Material" + std::to_string(raw.Materials.size() + 1);
+  raw.Materials.push_back(material);
+  return seen[tag] = static_cast<int>(raw.Materials.size()) - 1;
 }
 
 } // namespace
@@ -280,9 +280,9 @@ std::string ReadVrml(const std::string& path, radiosity::RawScene& raw, std::vec
       {
         continue;
       }
-      raw.objectNames.push_back("Shape" + std::to_string(++shapes));
+      raw.ObjectNames.push_back("Shape" + std::to_string(++shapes));
       const int material = MaterialOf(actor->GetProperty(), tags, seen, raw, unlit);
-      skipped += AppendPolygons(data, actor->GetMatrix(), material, static_cast<int>(raw.objectNames.size()) - 1, raw);
+      skipped += AppendPolygons(data, actor->GetMatrix(), material, static_cast<int>(raw.ObjectNames.size()) - 1, raw);
     }
   }
   if (unlit > 0)

@@ -13,7 +13,9 @@ import tempfile
 from paraview.simple import *  # noqa: F401,F403  (LoadPlugin, RadiositySceneReader, ...)
 from paraview import servermanager
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "Filters", "Testing", "Python"))  # the filters' test helpers
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "Filters", "IO", "Testing", "Python"))  # the hostile-file corpus
+sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "Testing", "Python"))  # the helpers it imports
 import TestHostileFiles as corpus  # noqa: E402  (its corpus only: importing it runs no test)
 
 LoadPlugin(sys.argv[1], ns=globals())

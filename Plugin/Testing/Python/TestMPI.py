@@ -18,8 +18,8 @@ from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter
 
 import relight
 from relight import cell_array, cell_centroids, light_names, point_array, read_polydata
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "Filters", "Testing", "Python"))
-from testlib import check, finish  # noqa: E402  (the filters' test helpers)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "Testing", "Python"))
+from testlib import check, finish  # noqa: E402  (the tests' shared helpers)
 
 vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_OFF)
 ROOT = os.environ.get("RELIGHT_ROOT", ".")

@@ -18,7 +18,7 @@ import tempfile
 from paraview.simple import *  # noqa: F401,F403  (LoadPlugin, Show, Render, ...)
 from paraview import servermanager
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "Filters", "Testing", "Python"))  # the filters' test helpers
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "Testing", "Python"))  # the tests' shared helpers
 from settingstable import setting_rows  # noqa: E402
 
 import numpy as np

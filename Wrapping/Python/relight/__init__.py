@@ -13,13 +13,11 @@ plus ``vtkRadiosityEXRWriter`` for HDR images, and helpers in :mod:`relight.scen
 from .vtkRadiosityFilters import (  # noqa: F401
     vtkLightTaggedRadiosity,
     vtkRadiosityAppendPieces,
-    vtkRadiosityEXRWriter,
-    vtkRadiosityGLTFWriter,
     vtkRadiosityLightMarker,
     vtkRadiosityMesher,
     vtkRadiosityRelight,
-    vtkRadiositySceneReader,
 )
+from .vtkRadiosityIO import vtkRadiosityEXRWriter, vtkRadiosityGLTFWriter, vtkRadiositySceneReader  # noqa: F401
 from .vtkRadiosityRendering import vtkRadiosityRelightMapper  # noqa: F401
 from .exporting import export_viewer, write_gltf  # noqa: F401
 from .importing import import_scene  # noqa: F401

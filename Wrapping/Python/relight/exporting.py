@@ -4,7 +4,7 @@ glTF with one vertex attribute per light, for relighting outside VTK."""
 import warnings
 
 from .scene import ErrorCatcher, own_words
-from .vtkRadiosityFilters import vtkRadiosityGLTFWriter
+from .vtkRadiosityIO import vtkRadiosityGLTFWriter
 
 
 def write_gltf(data, path, exposure=0.0):

@@ -5,7 +5,7 @@ import os
 import warnings
 
 from .scene import ErrorCatcher
-from .vtkRadiosityFilters import vtkRadiositySceneReader
+from .vtkRadiosityIO import vtkRadiositySceneReader
 
 UNITS = {"m": 1.0, "cm": 0.01, "mm": 0.001, "km": 1000.0, "in": 0.0254, "ft": 0.3048}
 

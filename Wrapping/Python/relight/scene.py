@@ -17,11 +17,8 @@ from vtkmodules.vtkRenderingCore import (
 )
 from vtkmodules.vtkIOImage import vtkPNGWriter
 
-from .vtkRadiosityFilters import (
-    vtkLightTaggedRadiosity,
-    vtkRadiosityEXRWriter,
-    vtkRadiosityMesher,
-)
+from .vtkRadiosityFilters import vtkLightTaggedRadiosity, vtkRadiosityMesher
+from .vtkRadiosityIO import vtkRadiosityEXRWriter
 
 
 class ErrorCatcher:

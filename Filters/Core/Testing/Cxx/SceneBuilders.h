@@ -35,11 +35,11 @@ inline double AbsorbedPower(const SceneMesh& mesh, const radiosity::Solution& s)
   {
     for (int m = 0; m < L; ++m)
     {
-      const double emitted = mesh.lightId[e] == m ? 1.0 : 0.0;
+      const double emitted = mesh.LightId[e] == m ? 1.0 : 0.0;
       for (int c = 0; c < 3; ++c)
       {
-        const double rho = mesh.reflectance[e][c];
-        absorbed += (s.Radiosity[static_cast<size_t>(e) * L + m][c] - emitted) / rho * (1 - rho) * g.area[e];
+        const double rho = mesh.Reflectance[e][c];
+        absorbed += (s.Radiosity[static_cast<size_t>(e) * L + m][c] - emitted) / rho * (1 - rho) * g.Area[e];
       }
     }
   }
@@ -58,8 +58,8 @@ inline std::vector<double> RelativeDifference(const SceneMesh& mesh, const radio
     {
       const Vec3& x = a.Radiosity[static_cast<size_t>(e) * L + m];
       const Vec3& y = b.Radiosity[static_cast<size_t>(e) * L + m];
-      diff[m] += (std::fabs(x.x - y.x) + std::fabs(x.y - y.y) + std::fabs(x.z - y.z)) * g.area[e];
-      sum[m] += (y.x + y.y + y.z) * g.area[e];
+      diff[m] += (std::fabs(x.x - y.x) + std::fabs(x.y - y.y) + std::fabs(x.z - y.z)) * g.Area[e];
+      sum[m] += (y.x + y.y + y.z) * g.Area[e];
     }
   }
   for (int m = 0; m < L; ++m)
@@ -93,12 +93,12 @@ inline double TaggedMinusCombined(const radiosity::Solution& tagged, const radio
 inline void AddGrid(SceneMesh& mesh, const Vec3& origin, const Vec3& u, const Vec3& v, int n,
   int per, const Vec3& rho, int light, int& nextPatch)
 {
-  const int base = static_cast<int>(mesh.points.size());
+  const int base = static_cast<int>(mesh.Points.size());
   for (int j = 0; j <= n; ++j)
   {
     for (int i = 0; i <= n; ++i)
     {
-      mesh.points.push_back(origin + u * (double(i) / n) + v * (double(j) / n));
+      mesh.Points.push_back(origin + u * (double(i) / n) + v * (double(j) / n));
     }
   }
   const int patchesPerRow = (n + per - 1) / per;
@@ -108,9 +108,9 @@ inline void AddGrid(SceneMesh& mesh, const Vec3& origin, const Vec3& u, const Ve
     {
       const int a = base + j * (n + 1) + i;
       mesh.AddPolygon({ a, a + 1, a + n + 2, a + n + 1 });
-      mesh.reflectance.push_back(rho);
-      mesh.lightId.push_back(light);
-      mesh.patchId.push_back(nextPatch + (j / per) * patchesPerRow + i / per);
+      mesh.Reflectance.push_back(rho);
+      mesh.LightId.push_back(light);
+      mesh.PatchId.push_back(nextPatch + (j / per) * patchesPerRow + i / per);
     }
   }
   nextPatch += patchesPerRow * patchesPerRow;

@@ -38,7 +38,7 @@ Solution Solve(const SceneMesh& mesh, int lights, const SolverOptions& options,
 /// Progressive refinement with every element its own shooter.
 Solution Reference(SceneMesh mesh, int lights, int samples = 4)
 {
-  mesh.patchId.clear();
+  mesh.PatchId.clear();
   SolverOptions o = Options(SolverMethod::ProgressiveRefinement, 1e-4);
   o.Samples = samples;
   return Solve(mesh, lights, o);
@@ -80,7 +80,7 @@ TEST(Clustered, FurnaceGivesOneOverOneMinusRho)
     EXPECT_EQ(s.Statistics.Method, SolverMethod::Clustered);
     EXPECT_GT(s.Statistics.VolumeLinks, 2 * s.Statistics.ElementLinks); // element pairs far apart count as element links
     // Bouncing would take log(1e-7) / log(rho) gathers (153 at 0.9); the linear solve far fewer.
-    const int gathers = s.Statistics.Shots - static_cast<int>(SceneGeometry(box).patchElements.size()); // each patch emits
+    const int gathers = s.Statistics.Shots - static_cast<int>(SceneGeometry(box).PatchElements.size()); // each patch emits
     std::printf("furnace at rho %.1f: %d gathers\n", rho, gathers);
     EXPECT_LT(gathers, 0.5 * std::log(1e-7) / std::log(rho));
     const double expected = 1.0 / (1.0 - rho);

@@ -30,15 +30,15 @@ SceneMesh Cap(int triangles, double degrees)
   RoomPolygons r;
   AddSphere(r, { 0, 0, 0 }, 1.0, triangles, { 0.5, 0.5, 0.5 });
   SceneMesh mesh;
-  mesh.points = r.Points;
+  mesh.Points = r.Points;
   for (size_t c = 0; c + 1 < r.Offsets.size(); ++c)
   {
     const Vec3& a = r.Points[r.Connectivity[r.Offsets[c]]];
     if (a.z >= std::cos(degrees * Pi / 180))
     {
       mesh.AddPolygon({ r.Connectivity.begin() + r.Offsets[c], r.Connectivity.begin() + r.Offsets[c + 1] });
-      mesh.reflectance.push_back({ 0.5, 0.5, 0.5 });
-      mesh.lightId.push_back(-1);
+      mesh.Reflectance.push_back({ 0.5, 0.5, 0.5 });
+      mesh.LightId.push_back(-1);
     }
   }
   return mesh;
@@ -47,9 +47,9 @@ SceneMesh Cap(int triangles, double degrees)
 std::vector<Vec3> Loops(const SceneMesh& mesh)
 {
   std::vector<Vec3> loops;
-  for (int id : mesh.connectivity)
+  for (int id : mesh.Connectivity)
   {
-    loops.push_back(mesh.points[id]);
+    loops.push_back(mesh.Points[id]);
   }
   return loops;
 }
@@ -63,9 +63,9 @@ double ExactFactor(const SceneMesh& mesh, const SceneGeometry& g, const Vec3& x,
     loop.clear();
     for (int v = 0; v < mesh.PolygonSize(e); ++v)
     {
-      loop.push_back(mesh.points[mesh.Polygon(e)[v]]);
+      loop.push_back(mesh.Points[mesh.Polygon(e)[v]]);
     }
-    f += Dot(g.normal[e], x - g.centroid[e]) > 0 ? PointToPolygonFormFactor(x, n, loop.data(), static_cast<int>(loop.size())) : 0;
+    f += Dot(g.Normal[e], x - g.Centroid[e]) > 0 ? PointToPolygonFormFactor(x, n, loop.data(), static_cast<int>(loop.size())) : 0;
   }
   return f;
 }
@@ -87,12 +87,12 @@ double MeanDifference(const SceneMesh& ma, const Solution& a, const SceneMesh& m
   std::map<std::array<long long, 3>, int> where;
   for (int e = 0; e < mb.NumberOfPolygons(); ++e)
   {
-    where[QuantizedPoint(gb.centroid[e], 1e-6)] = e;
+    where[QuantizedPoint(gb.Centroid[e], 1e-6)] = e;
   }
   double diff = 0, sum = 0;
   for (int e = 0; e < ma.NumberOfPolygons(); ++e)
   {
-    const auto found = where.find(QuantizedPoint(ga.centroid[e], 1e-6));
+    const auto found = where.find(QuantizedPoint(ga.Centroid[e], 1e-6));
     EXPECT_TRUE(found != where.end());
     if (found == where.end())
     {
@@ -100,8 +100,8 @@ double MeanDifference(const SceneMesh& ma, const Solution& a, const SceneMesh& m
     }
     const Vec3& x = a.Radiosity[static_cast<size_t>(e) * a.Solutions + light];
     const Vec3& y = b.Radiosity[static_cast<size_t>(found->second) * b.Solutions + light];
-    diff += (std::fabs(x.x - y.x) + std::fabs(x.y - y.y) + std::fabs(x.z - y.z)) * ga.area[e];
-    sum += (y.x + y.y + y.z) * ga.area[e];
+    diff += (std::fabs(x.x - y.x) + std::fabs(x.y - y.y) + std::fabs(x.z - y.z)) * ga.Area[e];
+    sum += (y.x + y.y + y.z) * ga.Area[e];
   }
   return diff / sum;
 }
@@ -155,26 +155,26 @@ TEST(Clusters, MesherGroupsASphereIntoClustersWithinTheirLimits)
   ASSERT_EQ(MeshByMaterial(room, 0.5, 0.1, 30, clustered), "");
   const SceneGeometry gp(plain), gc(clustered);
   ASSERT_EQ(plain.NumberOfPolygons(), clustered.NumberOfPolygons());
-  EXPECT_GT(gp.patchElements.size(), 5 * gc.patchElements.size());
-  for (const std::vector<int>& patch : gc.patchElements)
+  EXPECT_GT(gp.PatchElements.size(), 5 * gc.PatchElements.size());
+  for (const std::vector<int>& patch : gc.PatchElements)
   {
     const NormalCone cone = ConeOf(gc, patch);
     EXPECT_LE(cone.Spread, 2 * 30 * Pi / 180 + 1e-9);
     for (int e : patch)
     {
       // Every element is within PatchSize / 2 of the cluster's seed: PatchSize across.
-      EXPECT_TRUE(clustered.reflectance[e] != kSphere || Norm(gc.centroid[e] - gc.centroid[patch[0]]) <= 0.5 + 1e-9);
+      EXPECT_TRUE(clustered.Reflectance[e] != kSphere || Norm(gc.Centroid[e] - gc.Centroid[patch[0]]) <= 0.5 + 1e-9);
     }
   }
   // The room's flat walls keep their patches: only small patches join.
   int flatPlain = 0, flatClustered = 0;
-  for (const std::vector<int>& patch : gp.patchElements)
+  for (const std::vector<int>& patch : gp.PatchElements)
   {
-    flatPlain += plain.reflectance[patch[0]] != kSphere ? 1 : 0;
+    flatPlain += plain.Reflectance[patch[0]] != kSphere ? 1 : 0;
   }
-  for (const std::vector<int>& patch : gc.patchElements)
+  for (const std::vector<int>& patch : gc.PatchElements)
   {
-    flatClustered += clustered.reflectance[patch[0]] != kSphere ? 1 : 0;
+    flatClustered += clustered.Reflectance[patch[0]] != kSphere ? 1 : 0;
   }
   EXPECT_EQ(flatPlain, flatClustered);
   // The solver keeps each cluster whole: its elements see each other over the surface.
@@ -253,12 +253,12 @@ std::map<std::pair<std::array<double, 3>, int>, Vec3> MaterialMeans(const SceneM
   std::map<std::pair<std::array<double, 3>, int>, double> area;
   for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
   {
-    const Vec3& rho = mesh.reflectance[e];
+    const Vec3& rho = mesh.Reflectance[e];
     for (int m = 0; m < s.Solutions; ++m)
     {
       const auto key = std::make_pair(std::array<double, 3>{ rho.x, rho.y, rho.z }, m);
-      sum[key] += s.Radiosity[static_cast<size_t>(e) * s.Solutions + m] * g.area[e];
-      area[key] += g.area[e];
+      sum[key] += s.Radiosity[static_cast<size_t>(e) * s.Solutions + m] * g.Area[e];
+      area[key] += g.Area[e];
     }
   }
   for (auto& entry : sum)
@@ -303,7 +303,7 @@ TEST(Clusters, HundredThousandTriangleSphereRoomConvergesAndBalances)
   EXPECT_EQ(st.Method, SolverMethod::Hierarchical);
   EXPECT_TRUE(st.Converged);
   EXPECT_GT(st.FaceClusters, 0);
-  EXPECT_LT(solver.Geometry().patchElements.size(), 1000u);
+  EXPECT_LT(solver.Geometry().PatchElements.size(), 1000u);
   // Emitted = absorbed + escaped + unshot, the absorbed part from the radiosity itself.
   const double absorbed = radiosity_test::AbsorbedPower(mesh, s);
   EXPECT_NEAR(st.EmittedPower, absorbed + st.EscapedPower + st.UnshotPower, 1e-6 * st.EmittedPower);

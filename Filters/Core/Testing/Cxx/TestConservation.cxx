@@ -32,8 +32,8 @@ double ReflectedPower(const SceneMesh& mesh, const Solution& s)
   double reflected = 0;
   for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
   {
-    const double emitted = mesh.lightId[e] == 0 ? 1.0 : 0.0;
-    reflected += (s.Radiosity[e].x - emitted) * g.area[e];
+    const double emitted = mesh.LightId[e] == 0 ? 1.0 : 0.0;
+    reflected += (s.Radiosity[e].x - emitted) * g.Area[e];
   }
   return reflected;
 }
@@ -97,13 +97,13 @@ TEST(Conservation, ClosedRoomAtRhoOneHasNoFiniteSolutionAndSaysSo)
   const std::string said = NoFiniteSolution(closed, solver.Geometry(), solver.Rays());
   EXPECT_NE(said.find("all of the green light and the scene is closed"), std::string::npos) << said;
   SceneMesh open = closed; // without the face at x = 1 (its 16 polygons are the last)
-  open.offsets.resize(open.offsets.size() - 16);
-  open.connectivity.resize(open.offsets.back());
-  for (std::vector<int>* perPolygon : { &open.lightId, &open.patchId })
+  open.Offsets.resize(open.Offsets.size() - 16);
+  open.Connectivity.resize(open.Offsets.back());
+  for (std::vector<int>* perPolygon : { &open.LightId, &open.PatchId })
   {
     perPolygon->resize(open.NumberOfPolygons());
   }
-  open.reflectance.resize(open.NumberOfPolygons());
+  open.Reflectance.resize(open.NumberOfPolygons());
   const RadiositySolver opened(open);
   EXPECT_EQ(NoFiniteSolution(open, opened.Geometry(), opened.Rays()), "");
   const SceneMesh below = Box(1.0, 4, 2, { 0.999, 0.999, 0.999 }, lamp);

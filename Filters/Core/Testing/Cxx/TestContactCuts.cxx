@@ -14,9 +14,9 @@ namespace
 /// room's walls along its border at x = 0.
 struct FloorAndWalls
 {
-  std::vector<Vec3> points;
-  std::vector<int> offsets{ 0 };
-  std::vector<int> connectivity;
+  std::vector<Vec3> Points;
+  std::vector<int> Offsets{ 0 };
+  std::vector<int> Connectivity;
 
   explicit FloorAndWalls(double wall)
   {
@@ -29,13 +29,13 @@ struct FloorAndWalls
   {
     for (const Vec3& p : loop)
     {
-      connectivity.push_back(static_cast<int>(points.size()));
-      points.push_back(p);
+      Connectivity.push_back(static_cast<int>(Points.size()));
+      Points.push_back(p);
     }
-    offsets.push_back(static_cast<int>(connectivity.size()));
+    Offsets.push_back(static_cast<int>(Connectivity.size()));
   }
 
-  PolygonArrays Arrays() const { return { points, offsets, connectivity }; }
+  PolygonArrays Arrays() const { return { Points, Offsets, Connectivity }; }
 };
 
 /// The mesher's cutting over a list of elements (corners flattened, `sides` and `patch`
@@ -100,9 +100,9 @@ TEST(ContactCuts, AWallWithinTheToleranceStandsOnTheFloorAndOneAboveItDoesNot)
   for (double gap : { 0.5e-6, 2e-6, 1e-3 })
   {
     FloorAndWalls scene(1.8);
-    for (int k = scene.offsets[1]; k < scene.offsets[2]; ++k)
+    for (int k = scene.Offsets[1]; k < scene.Offsets[2]; ++k)
     {
-      scene.points[scene.connectivity[k]].z += gap; // light passes under a wall that floats
+      scene.Points[scene.Connectivity[k]].z += gap; // light passes under a wall that floats
     }
     EXPECT_EQ(FindContacts(scene.Arrays(), scene.Arrays(), 1e-6)[0].size(), gap < 1e-6 ? 1u : 0u) << "gap " << gap;
   }
@@ -113,9 +113,9 @@ TEST(ContactCuts, OnlySurfacesInFrontStand)
   // The same wall hanging below the floor (the storey beneath a slab drawn as one face)
   // touches the floor's plane from behind: no contact.
   FloorAndWalls scene(1.8);
-  for (int k = scene.offsets[1]; k < scene.offsets[2]; ++k)
+  for (int k = scene.Offsets[1]; k < scene.Offsets[2]; ++k)
   {
-    scene.points[scene.connectivity[k]].z *= -1;
+    scene.Points[scene.Connectivity[k]].z *= -1;
   }
   EXPECT_TRUE(FindContacts(scene.Arrays(), scene.Arrays(), 1e-6)[0].empty());
 }
@@ -187,16 +187,16 @@ TEST(ContactCuts, TheMesherCutsTheFloorWhereTheWallStandsOffTheElementGrid)
     o.PatchSize = 1.0;
     o.ElementSize = 0.5;
     MeshedPolygons m;
-    ASSERT_EQ(MeshPolygons(scene.points, scene.offsets, scene.connectivity, { 0, 0, 0 }, o, m), "");
+    ASSERT_EQ(MeshPolygons(scene.Points, scene.Offsets, scene.Connectivity, { 0, 0, 0 }, o, m), "");
     int straddling = 0, floor = 0;
-    for (size_t e = 0; e + 1 < m.offsets.size(); ++e)
+    for (size_t e = 0; e + 1 < m.Offsets.size(); ++e)
     {
       double lo = 1e9, hi = -1e9, z = 0;
-      for (int k = m.offsets[e]; k < m.offsets[e + 1]; ++k)
+      for (int k = m.Offsets[e]; k < m.Offsets[e + 1]; ++k)
       {
-        lo = std::min(lo, m.points[m.connectivity[k]].x);
-        hi = std::max(hi, m.points[m.connectivity[k]].x);
-        z = std::max(z, m.points[m.connectivity[k]].z);
+        lo = std::min(lo, m.Points[m.Connectivity[k]].x);
+        hi = std::max(hi, m.Points[m.Connectivity[k]].x);
+        z = std::max(z, m.Points[m.Connectivity[k]].z);
       }
       floor += z == 0 ? 1 : 0;
       straddling += z == 0 && lo < wall - 1e-9 && hi > wall + 1e-9 ? 1 : 0;
@@ -204,8 +204,8 @@ TEST(ContactCuts, TheMesherCutsTheFloorWhereTheWallStandsOffTheElementGrid)
     EXPECT_EQ(straddling, 0) << "wall at " << wall;
     // 8 x 6 floor elements; off the grid the column the wall stands in is split in two.
     EXPECT_EQ(floor, wall == 2.0 ? 48 : 54) << "wall at " << wall;
-    EXPECT_EQ(CountElements(scene.points, scene.offsets, scene.connectivity, 1.0, 0.5),
-      static_cast<double>(m.sourcePolygon.size()))
+    EXPECT_EQ(CountElements(scene.Points, scene.Offsets, scene.Connectivity, 1.0, 0.5),
+      static_cast<double>(m.SourcePolygon.size()))
       << "the count before meshing includes the cuts";
   }
 }
@@ -218,12 +218,12 @@ int Straddling(const MeshedPolygons& m, const Vec3& a, const Vec3& d, double len
 {
   const Vec3 side = Normalized(Cross({ 0, 0, 1 }, d));
   int count = 0;
-  for (size_t e = 0; e + 1 < m.offsets.size(); ++e)
+  for (size_t e = 0; e + 1 < m.Offsets.size(); ++e)
   {
     double lo = 1e300, hi = -1e300, first = 1e300, last = -1e300, z = 0;
-    for (int k = m.offsets[e]; k < m.offsets[e + 1]; ++k)
+    for (int k = m.Offsets[e]; k < m.Offsets[e + 1]; ++k)
     {
-      const Vec3& p = m.points[m.connectivity[k]];
+      const Vec3& p = m.Points[m.Connectivity[k]];
       lo = std::min(lo, Dot(side, p - a));
       hi = std::max(hi, Dot(side, p - a));
       first = std::min(first, Dot(d, p - a));
@@ -242,10 +242,10 @@ TEST(ContactCuts, ASlantedWallOnATriangularFloorCutsItsTriangles)
   // A triangle floor (barycentric lattice of triangle elements) with a wall standing at 30
   // degrees across it; then the whole scene turned, scaled and moved: the same count.
   FloorAndWalls scene(1.8);
-  scene.points.clear(); // our own floor and wall instead
+  scene.Points.clear(); // our own floor and wall instead
 
-  scene.offsets = { 0 };
-  scene.connectivity.clear();
+  scene.Offsets = { 0 };
+  scene.Connectivity.clear();
   const Vec3 a{ 0.3, 0.2, 0 }, d = Normalized(Vec3{ std::cos(0.5236), std::sin(0.5236), 0 });
   scene.Add({ { 0, 0, 0 }, { 4, 0, 0 }, { 0, 3, 0 } });
   scene.Add({ a, a + Vec3{ 0, 0, 2 }, a + d * 2.5 + Vec3{ 0, 0, 2 }, a + d * 2.5 });
@@ -253,21 +253,21 @@ TEST(ContactCuts, ASlantedWallOnATriangularFloorCutsItsTriangles)
   o.PatchSize = 1.0;
   o.ElementSize = 0.25;
   MeshedPolygons m;
-  ASSERT_EQ(MeshPolygons(scene.points, scene.offsets, scene.connectivity, { 0, 0 }, o, m), "");
+  ASSERT_EQ(MeshPolygons(scene.Points, scene.Offsets, scene.Connectivity, { 0, 0 }, o, m), "");
   EXPECT_EQ(Straddling(m, a, d, 2.5, 1e-9), 0);
   FloorAndWalls lifted = scene;
-  for (int k = lifted.offsets[1]; k < lifted.offsets[2]; ++k)
+  for (int k = lifted.Offsets[1]; k < lifted.Offsets[2]; ++k)
   {
-    lifted.points[lifted.connectivity[k]].z += 1e-3;
+    lifted.Points[lifted.Connectivity[k]].z += 1e-3;
   }
-  EXPECT_GT(static_cast<double>(m.sourcePolygon.size()),
-    CountElements(lifted.points, lifted.offsets, lifted.connectivity, 1.0, 0.25))
+  EXPECT_GT(static_cast<double>(m.SourcePolygon.size()),
+    CountElements(lifted.Points, lifted.Offsets, lifted.Connectivity, 1.0, 0.25))
     << "cut, the floor has more elements than under a floating wall";
-  const double count = static_cast<double>(m.sourcePolygon.size());
-  EXPECT_EQ(CountElements(scene.points, scene.offsets, scene.connectivity, 1.0, 0.25), count);
+  const double count = static_cast<double>(m.SourcePolygon.size());
+  EXPECT_EQ(CountElements(scene.Points, scene.Offsets, scene.Connectivity, 1.0, 0.25), count);
   FloorAndWalls moved = scene;
   const double c = std::cos(0.7), s = std::sin(0.7);
-  for (Vec3& p : moved.points)
+  for (Vec3& p : moved.Points)
   {
     const Vec3 r{ c * p.x - s * p.z, p.y, s * p.x + c * p.z };
     p = r * 1000.0 + Vec3{ 1e4, -2e3, 5e2 };
@@ -275,8 +275,8 @@ TEST(ContactCuts, ASlantedWallOnATriangularFloorCutsItsTriangles)
   MeshedPolygons turned;
   o.PatchSize = 1000.0;
   o.ElementSize = 250.0;
-  ASSERT_EQ(MeshPolygons(moved.points, moved.offsets, moved.connectivity, { 0, 0 }, o, turned), "");
-  EXPECT_EQ(static_cast<double>(turned.sourcePolygon.size()), count) << "turned, scaled by 1000 and moved";
+  ASSERT_EQ(MeshPolygons(moved.Points, moved.Offsets, moved.Connectivity, { 0, 0 }, o, turned), "");
+  EXPECT_EQ(static_cast<double>(turned.SourcePolygon.size()), count) << "turned, scaled by 1000 and moved";
 }
 
 TEST(ContactCuts, APieceIsCutByTheWallsOfOtherPieces)
@@ -284,19 +284,19 @@ TEST(ContactCuts, APieceIsCutByTheWallsOfOtherPieces)
   // MPI: a rank holding the floor alone cuts it as one process does, given the whole scene.
   const FloorAndWalls whole(1.8);
   FloorAndWalls floor(1.8);
-  floor.offsets.resize(2);
-  floor.connectivity.resize(4);
+  floor.Offsets.resize(2);
+  floor.Connectivity.resize(4);
   MesherOptions o;
   o.PatchSize = 1.0;
   o.ElementSize = 0.5;
   MeshedPolygons alone, together;
-  ASSERT_EQ(MeshPolygons(floor.points, floor.offsets, floor.connectivity, { 0 }, o, alone), "");
+  ASSERT_EQ(MeshPolygons(floor.Points, floor.Offsets, floor.Connectivity, { 0 }, o, alone), "");
   const PolygonArrays arrays = whole.Arrays();
   o.WholeScene = &arrays;
-  ASSERT_EQ(MeshPolygons(floor.points, floor.offsets, floor.connectivity, { 0 }, o, together), "");
-  EXPECT_EQ(alone.sourcePolygon.size(), 48u);    // 8 x 6, nothing stands on it
-  EXPECT_EQ(together.sourcePolygon.size(), 54u); // the wall's column split, as in one process
-  EXPECT_EQ(CountElements(floor.points, floor.offsets, floor.connectivity, 1.0, 0.5, &arrays), 54.0);
+  ASSERT_EQ(MeshPolygons(floor.Points, floor.Offsets, floor.Connectivity, { 0 }, o, together), "");
+  EXPECT_EQ(alone.SourcePolygon.size(), 48u);    // 8 x 6, nothing stands on it
+  EXPECT_EQ(together.SourcePolygon.size(), 54u); // the wall's column split, as in one process
+  EXPECT_EQ(CountElements(floor.Points, floor.Offsets, floor.Connectivity, 1.0, 0.5, &arrays), 54.0);
 }
 
 TEST(ContactCuts, CountingAbsurdlySmallElementsBesideAWallNeitherMakesThemNorFails)
@@ -304,13 +304,13 @@ TEST(ContactCuts, CountingAbsurdlySmallElementsBesideAWallNeitherMakesThemNorFai
   // 2e-4 m elements on the 4 x 3 floor: 3e8 of them. The count says so (for the size
   // limit's error) instead of making and cutting them all, which took gigabytes.
   const FloorAndWalls scene(1.8);
-  const double count = CountElements(scene.points, scene.offsets, scene.connectivity, 1.0, 2e-4);
+  const double count = CountElements(scene.Points, scene.Offsets, scene.Connectivity, 1.0, 2e-4);
   EXPECT_GE(count, 3e8);
   MesherOptions o;
   o.PatchSize = 1.0;
   o.ElementSize = 2e-4;
   o.MaximumElements = 20000000;
   MeshedPolygons m;
-  EXPECT_NE(MeshPolygons(scene.points, scene.offsets, scene.connectivity, { 0, 0, 0 }, o, m).find("more than the limit"),
+  EXPECT_NE(MeshPolygons(scene.Points, scene.Offsets, scene.Connectivity, { 0, 0, 0 }, o, m).find("more than the limit"),
     std::string::npos);
 }

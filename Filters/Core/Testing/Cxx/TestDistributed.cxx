@@ -206,7 +206,7 @@ TEST(Distributed, SharesAreEvenAndCoverEveryPatchOnce)
   const SceneMesh mesh = Room();
   const SceneGeometry g(mesh);
   const int ranks = 3;
-  std::vector<int> owners(g.patchElements.size(), 0);
+  std::vector<int> owners(g.PatchElements.size(), 0);
   std::vector<size_t> elements(ranks, 0);
   for (int r = 0; r < ranks; ++r)
   {
@@ -214,12 +214,12 @@ TEST(Distributed, SharesAreEvenAndCoverEveryPatchOnce)
     for (size_t p = 0; p < owned.size(); ++p)
     {
       owners[p] += owned[p];
-      elements[r] += owned[p] ? g.patchElements[p].size() : 0;
+      elements[r] += owned[p] ? g.PatchElements[p].size() : 0;
     }
   }
   EXPECT_TRUE(std::all_of(owners.begin(), owners.end(), [](int n) { return n == 1; }));
   const auto [least, most] = std::minmax_element(elements.begin(), elements.end());
-  EXPECT_LT(static_cast<double>(*most - *least), 0.01 * static_cast<double>(g.normal.size()));
+  EXPECT_LT(static_cast<double>(*most - *least), 0.01 * static_cast<double>(g.Normal.size()));
 }
 
 TEST(Distributed, AnAbortOnOneRankStopsEveryRankAtTheSameShot)

@@ -31,7 +31,7 @@ SceneMesh Turned(SceneMesh mesh, double shift)
 {
   const Vec3 k = Normalized(Vec3{ 0.3, 0.8, 0.2 });
   const double a = 37 * M_PI / 180, c = std::cos(a), s = std::sin(a);
-  for (Vec3& p : mesh.points)
+  for (Vec3& p : mesh.Points)
   {
     p = p * c + Cross(k, p) * s + k * (Dot(k, p) * (1 - c)) + Vec3{ 1, -0.5, 0.3 } * shift;
   }

@@ -20,12 +20,12 @@ struct Quad
 
 void AddQuad(SceneMesh& mesh, const Quad& q, int divisions, int patch)
 {
-  const int base = static_cast<int>(mesh.points.size());
+  const int base = static_cast<int>(mesh.Points.size());
   for (int j = 0; j <= divisions; ++j)
   {
     for (int i = 0; i <= divisions; ++i)
     {
-      mesh.points.push_back(q.Origin + q.U * (double(i) / divisions) + q.V * (double(j) / divisions));
+      mesh.Points.push_back(q.Origin + q.U * (double(i) / divisions) + q.V * (double(j) / divisions));
     }
   }
   for (int j = 0; j < divisions; ++j)
@@ -34,9 +34,9 @@ void AddQuad(SceneMesh& mesh, const Quad& q, int divisions, int patch)
     {
       const int a = base + j * (divisions + 1) + i;
       mesh.AddPolygon({ a, a + 1, a + divisions + 2, a + divisions + 1 });
-      mesh.reflectance.push_back({ 0.5, 0.5, 0.5 });
-      mesh.lightId.push_back(patch == 0 ? 0 : -1);
-      mesh.patchId.push_back(patch == 0 ? 0 : 1 + j * divisions + i);
+      mesh.Reflectance.push_back({ 0.5, 0.5, 0.5 });
+      mesh.LightId.push_back(patch == 0 ? 0 : -1);
+      mesh.PatchId.push_back(patch == 0 ? 0 : 1 + j * divisions + i);
     }
   }
 }
@@ -57,9 +57,9 @@ double Estimate(const Quad& shooter, const Quad& receiver, int receiverDivisions
   double sum = 0;
   for (int e = 1; e < mesh.NumberOfPolygons(); ++e)
   {
-    sum += factors[e] * geometry.area[e];
+    sum += factors[e] * geometry.Area[e];
   }
-  return sum / geometry.area[0];
+  return sum / geometry.Area[0];
 }
 
 double Sigma(double f, int rays)
@@ -161,16 +161,16 @@ TEST(PatchOutline, ClosesAcrossATJunction)
   // One 2 x 1 patch: an uncut left element beside a right half cut in two at y = 0.5, as
   // the mesher's contact cuts leave it. The left element's edge x = 1 meets two edges.
   SceneMesh mesh;
-  mesh.points = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 2, 0, 0 }, { 2, 1, 0 }, { 1, 0.5, 0 },
+  mesh.Points = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 2, 0, 0 }, { 2, 1, 0 }, { 1, 0.5, 0 },
     { 2, 0.5, 0 } };
   mesh.AddPolygon({ 0, 1, 2, 3 });
   mesh.AddPolygon({ 1, 4, 7, 6 });
   mesh.AddPolygon({ 6, 7, 5, 2 });
   for (int e = 0; e < 3; ++e)
   {
-    mesh.reflectance.push_back({ 0.5, 0.5, 0.5 });
-    mesh.lightId.push_back(-1);
-    mesh.patchId.push_back(0);
+    mesh.Reflectance.push_back({ 0.5, 0.5, 0.5 });
+    mesh.LightId.push_back(-1);
+    mesh.PatchId.push_back(0);
   }
   const SceneGeometry geometry(mesh);
   const Visibility rays(mesh);
@@ -184,7 +184,7 @@ TEST(PatchOutline, ClosesAcrossATJunction)
   double sum = 0;
   for (int e = 0; e < 3; ++e)
   {
-    const std::vector<Vec3> element = GatherLoop(mesh.points, mesh.offsets, mesh.connectivity, e);
+    const std::vector<Vec3> element = GatherLoop(mesh.Points, mesh.Offsets, mesh.Connectivity, e);
     sum += PointToPolygonFormFactor({ 1, 0.5, 1 }, { 0, 0, -1 }, element.data(), mesh.PolygonSize(e), scratch);
   }
   EXPECT_NEAR(estimator.PointFactor(0, { 1, 0.5, 1 }, { 0, 0, -1 }, scratch), sum, 1e-12);

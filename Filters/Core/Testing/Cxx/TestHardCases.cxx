@@ -133,12 +133,12 @@ TEST(HardReflectance, DoubleAccumulationMattersAtRhoNearOne)
   {
     std::vector<Vec3> a;
     for (int v = 0; v < 4; ++v)
-      a.push_back(box.points[box.Polygon(i)[v]]);
+      a.push_back(box.Points[box.Polygon(i)[v]]);
     for (int j = 0; j < n; ++j)
     {
       std::vector<Vec3> b;
       for (int v = 0; v < 4; ++v)
-        b.push_back(box.points[box.Polygon(j)[v]]);
+        b.push_back(box.Points[box.Polygon(j)[v]]);
       F[i * n + j] = i == j ? 0.0 : PolygonToPolygonFormFactor(a.data(), 4, b.data(), 4, 24);
     }
   }
@@ -306,16 +306,16 @@ TEST(HardDegenerate, SliversAndRepeatedVerticesStayFinite)
 {
   SceneMesh mesh = LampOverFloor(1.0, 4);
   // A sliver triangle (1e-9 wide) and a quad with a repeated vertex, both on the floor.
-  const int base = static_cast<int>(mesh.points.size());
-  mesh.points.insert(mesh.points.end(), { { 1.2, 0, 0 }, { 2.2, 0, 0 }, { 1.2, 1e-9, 0 } });
+  const int base = static_cast<int>(mesh.Points.size());
+  mesh.Points.insert(mesh.Points.end(), { { 1.2, 0, 0 }, { 2.2, 0, 0 }, { 1.2, 1e-9, 0 } });
   mesh.AddPolygon({ base, base + 1, base + 2 });
-  mesh.points.insert(mesh.points.end(), { { 1.2, 0.5, 0 }, { 1.7, 0.5, 0 }, { 1.7, 1.0, 0 } });
+  mesh.Points.insert(mesh.Points.end(), { { 1.2, 0.5, 0 }, { 1.7, 0.5, 0 }, { 1.7, 1.0, 0 } });
   mesh.AddPolygon({ base + 3, base + 4, base + 4, base + 5 });
   for (int i = 0; i < 2; ++i)
   {
-    mesh.reflectance.push_back({ 0.5, 0.5, 0.5 });
-    mesh.lightId.push_back(-1);
-    mesh.patchId.push_back(100 + i);
+    mesh.Reflectance.push_back({ 0.5, 0.5, 0.5 });
+    mesh.LightId.push_back(-1);
+    mesh.PatchId.push_back(100 + i);
   }
   int k = 0;
   ASSERT_EQ(ValidateScene(mesh, k), "");
@@ -332,13 +332,13 @@ TEST(HardDegenerate, FlippedRoomAndLightFacingAwayReceiveNothing)
   SceneMesh flipped = Box(1.0, 2, 1, { 0.5, 0.5, 0.5 }, [](int f) { return f == 1 ? 0 : -1; });
   for (int e = 0; e < flipped.NumberOfPolygons(); ++e)
   {
-    std::reverse(flipped.connectivity.begin() + flipped.offsets[e], flipped.connectivity.begin() + flipped.offsets[e + 1]);
+    std::reverse(flipped.Connectivity.begin() + flipped.Offsets[e], flipped.Connectivity.begin() + flipped.Offsets[e + 1]);
   }
   const Solution s = SolveOne(flipped, Converged());
   ASSERT_TRUE(s.Statistics.Converged);
   for (int e = 0; e < flipped.NumberOfPolygons(); ++e)
   {
-    EXPECT_EQ(s.Radiosity[e].x, flipped.lightId[e] == 0 ? 1.0 : 0.0) << e;
+    EXPECT_EQ(s.Radiosity[e].x, flipped.LightId[e] == 0 ? 1.0 : 0.0) << e;
   }
   EXPECT_NEAR(s.Statistics.EscapedPower, s.Statistics.EmittedPower, 1e-12);
 }
@@ -465,7 +465,7 @@ TEST(HardLeaks, RaysAimedAtSharedEdgesAndVerticesAreBlocked)
   for (int i = 0; i <= n; ++i)
     for (int j = 0; j <= n; ++j)
       for (int k = 0; k <= n; ++k)
-        cube.points.push_back({ double(i) / n, double(j) / n, double(k) / n });
+        cube.Points.push_back({ double(i) / n, double(j) / n, double(k) / n });
   auto quad = [&](int a, int b, int c, int d) { cube.AddPolygon({ a, b, c, d }); };
   for (int u = 0; u < n; ++u)
     for (int v = 0; v < n; ++v)
@@ -481,7 +481,7 @@ TEST(HardLeaks, RaysAimedAtSharedEdgesAndVerticesAreBlocked)
   ASSERT_EQ(rays.Error(), "");
   const Vec3 centre{ 0.5, 0.5, 0.5 };
   int escaped = 0, total = 0;
-  for (const Vec3& p : cube.points)
+  for (const Vec3& p : cube.Points)
   {
     const bool onSurface = p.x == 0 || p.x == 1 || p.y == 0 || p.y == 1 || p.z == 0 || p.z == 1;
     if (!onSurface)
@@ -581,9 +581,9 @@ TEST(HardInvariants, LinearityInEmission)
   std::vector<Vec3> e1(mesh.NumberOfPolygons()), e2(mesh.NumberOfPolygons());
   for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
   {
-    if (mesh.lightId[e] == 0)
+    if (mesh.LightId[e] == 0)
       e1[e] = { 1, 1, 1 };
-    if (mesh.lightId[e] == 1)
+    if (mesh.LightId[e] == 1)
       e2[e] = { 1, 1, 1 };
   }
   std::vector<Vec3> mix(mesh.NumberOfPolygons());
@@ -612,10 +612,10 @@ TEST(HardInvariants, MirrorSymmetricSceneGivesMirrorSymmetricResult)
   int pairs = 0;
   for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
   {
-    const Vec3 mirror{ 2.0 - g.centroid[e].x, g.centroid[e].y, g.centroid[e].z };
+    const Vec3 mirror{ 2.0 - g.Centroid[e].x, g.Centroid[e].y, g.Centroid[e].z };
     for (int f = 0; f < mesh.NumberOfPolygons(); ++f)
     {
-      if (Norm(g.centroid[f] - mirror) < 1e-9 && Dot(g.normal[f], Vec3{ -g.normal[e].x, g.normal[e].y, g.normal[e].z }) > 0.999)
+      if (Norm(g.Centroid[f] - mirror) < 1e-9 && Dot(g.Normal[f], Vec3{ -g.Normal[e].x, g.Normal[e].y, g.Normal[e].z }) > 0.999)
       {
         ++pairs;
         EXPECT_NEAR(s.Radiosity[e].x, s.Radiosity[f].x, 1e-9 + 1e-7 * s.Radiosity[e].x) << e << " vs " << f;
@@ -651,15 +651,15 @@ TEST(HardDegenerate, OpenBoxConvergesAndCountsWhatEscapes)
   const SceneGeometry geometry(box);
   for (int e = 0; e < box.NumberOfPolygons(); ++e)
   {
-    if (geometry.centroid[e].z > 1 - 1e-9)
+    if (geometry.Centroid[e].z > 1 - 1e-9)
       continue; // drop the lid (z = 1)
     std::vector<int> ids(box.Polygon(e), box.Polygon(e) + 4);
     open.AddPolygon(ids);
-    open.reflectance.push_back(box.reflectance[e]);
-    open.lightId.push_back(box.lightId[e]);
-    open.patchId.push_back(box.patchId[e]);
+    open.Reflectance.push_back(box.Reflectance[e]);
+    open.LightId.push_back(box.LightId[e]);
+    open.PatchId.push_back(box.PatchId[e]);
   }
-  open.points = box.points;
+  open.Points = box.Points;
   const Solution s = SolveOne(open, Converged(1e-8));
   ASSERT_TRUE(s.Statistics.Converged);
   ASSERT_TRUE(AllFinite(s.Radiosity));
@@ -703,7 +703,7 @@ TEST(HardCases, ALampShutInABoxOnTheFloorLightsNothingAndTheLedgerCloses)
     double lit = 0;
     for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
     {
-      lit = std::max(lit, mesh.lightId[e] < 0 ? s.Radiosity[e].x : 0.0);
+      lit = std::max(lit, mesh.LightId[e] < 0 ? s.Radiosity[e].x : 0.0);
     }
     EXPECT_EQ(lit, 0.0) << "lamp " << lamp.first << " m at " << lamp.second << " m";
     const SolverStatistics& t = s.Statistics;

@@ -12,7 +12,7 @@ TEST(HdrImage, RayCastAndExrRoundTripKeepLinearValues)
 {
   // A 2 x 2 square facing the camera, with radiosity rising from left (1) to right (3).
   SceneMesh mesh;
-  mesh.points = { { -1, -1, 0 }, { 1, -1, 0 }, { 1, 1, 0 }, { -1, 1, 0 } };
+  mesh.Points = { { -1, -1, 0 }, { 1, -1, 0 }, { 1, 1, 0 }, { -1, 1, 0 } };
   mesh.AddPolygon({ 0, 1, 2, 3 });
   const std::vector<Vec3> values = { { 1, 1, 1 }, { 3, 3, 3 }, { 3, 3, 3 }, { 1, 1, 1 } };
   Visibility scene(mesh);
@@ -84,12 +84,12 @@ TEST(HdrImage, PacketsOfRaysHitWhatSingleRaysHit)
   SceneMesh mesh;
   const int n = 6;
   auto face = [&](const Vec3& o, const Vec3& u, const Vec3& v) {
-    const int base = static_cast<int>(mesh.points.size());
+    const int base = static_cast<int>(mesh.Points.size());
     for (int j = 0; j <= n; ++j)
     {
       for (int i = 0; i <= n; ++i)
       {
-        mesh.points.push_back(o + u * (double(i) / n) + v * (double(j) / n));
+        mesh.Points.push_back(o + u * (double(i) / n) + v * (double(j) / n));
       }
     }
     for (int j = 0; j < n; ++j)
@@ -128,10 +128,10 @@ TEST(HdrImage, PacketsOfRaysHitWhatSingleRaysHit)
       Visibility::Hit single;
       ASSERT_EQ(found[i], scene.Intersect(origin, directions[first + i], single));
       ASSERT_TRUE(found[i]) << "a ray from inside a closed box escaped";
-      EXPECT_EQ(hits[i].polygon, single.polygon);
-      EXPECT_EQ(hits[i].u, single.u);
-      EXPECT_EQ(hits[i].v, single.v);
-      EXPECT_EQ(hits[i].distance, single.distance);
+      EXPECT_EQ(hits[i].Polygon, single.Polygon);
+      EXPECT_EQ(hits[i].U, single.U);
+      EXPECT_EQ(hits[i].V, single.V);
+      EXPECT_EQ(hits[i].Distance, single.Distance);
       ++compared;
     }
   }
@@ -139,8 +139,8 @@ TEST(HdrImage, PacketsOfRaysHitWhatSingleRaysHit)
   // Shadow rays in packets: segments from points on the floor to one light above a wall
   // standing inside the box, as the moving-light shader casts them.
   SceneMesh walled = mesh;
-  const int base = static_cast<int>(walled.points.size());
-  walled.points.insert(walled.points.end(), { { 0.5, 0, 0 }, { 0.5, 1, 0 }, { 0.5, 1, 0.6 }, { 0.5, 0, 0.6 } });
+  const int base = static_cast<int>(walled.Points.size());
+  walled.Points.insert(walled.Points.end(), { { 0.5, 0, 0 }, { 0.5, 1, 0 }, { 0.5, 1, 0.6 }, { 0.5, 0, 0.6 } });
   walled.AddPolygon({ base, base + 1, base + 2, base + 3 });
   const Visibility withWall(walled);
   const Vec3 light{ 0.2, 0.5, 0.9 };

@@ -226,11 +226,11 @@ TEST(Hierarchical, PatchesStraddlingAFootprintKeepTheirEnergy)
     double mean = 0, area = 0;
     for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
     {
-      enclosed += g.enclosed[e];
-      if (!g.enclosed[e])
+      enclosed += g.Enclosed[e];
+      if (!g.Enclosed[e])
       {
-        mean += sol.Radiosity[e].x * g.area[e];
-        area += g.area[e];
+        mean += sol.Radiosity[e].x * g.Area[e];
+        area += g.Area[e];
       }
     }
     EXPECT_EQ(enclosed, 4) << "the floor elements under the block";
@@ -266,8 +266,8 @@ TEST(Hierarchical, CeilingAboveALampsBackIsShelteredNotBlurred)
   int above = 0, sheltered = 0, farAway = 0, farSheltered = 0;
   for (int e = 0; e < lampFirst; ++e)
   {
-    const Vec3& c = g.centroid[e];
-    if (g.normal[e].z > -0.5)
+    const Vec3& c = g.Centroid[e];
+    if (g.Normal[e].z > -0.5)
     {
       continue; // the ceiling only
     }
@@ -275,7 +275,7 @@ TEST(Hierarchical, CeilingAboveALampsBackIsShelteredNotBlurred)
     if (outside < -0.06)
     {
       ++above;
-      sheltered += g.sheltered[e];
+      sheltered += g.Sheltered[e];
     }
     else if (outside > 0 && outside < 0.15)
     {
@@ -285,7 +285,7 @@ TEST(Hierarchical, CeilingAboveALampsBackIsShelteredNotBlurred)
     else if (outside > 0.3)
     {
       ++farAway;
-      farSheltered += g.sheltered[e];
+      farSheltered += g.Sheltered[e];
     }
   }
   EXPECT_EQ(sheltered, above) << "every ceiling element well inside the lamp's outline";
@@ -297,11 +297,11 @@ TEST(Hierarchical, CeilingAboveALampsBackIsShelteredNotBlurred)
   double onOutline = 0, besideOutline = 0;
   for (int e = 0; e < lampFirst; ++e)
   {
-    const Vec3& c = g.centroid[e];
+    const Vec3& c = g.Centroid[e];
     const double outside = std::max(std::fabs(c.x - 1.0), std::fabs(c.y - 1.0)) - 0.2;
-    for (int v = 0; g.normal[e].z < -0.5 && outside > 0 && outside < 0.1 && v < mesh.PolygonSize(e); ++v)
+    for (int v = 0; g.Normal[e].z < -0.5 && outside > 0 && outside < 0.1 && v < mesh.PolygonSize(e); ++v)
     {
-      const Vec3& p = mesh.points[mesh.Polygon(e)[v]];
+      const Vec3& p = mesh.Points[mesh.Polygon(e)[v]];
       if (std::fabs(std::max(std::fabs(p.x - 1.0), std::fabs(p.y - 1.0)) - 0.2) < 1e-9)
       {
         onOutline += points[mesh.Polygon(e)[v]].x;

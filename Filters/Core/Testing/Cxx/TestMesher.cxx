@@ -13,12 +13,12 @@ namespace
 double TotalArea(const MeshedPolygons& m)
 {
   double area = 0;
-  for (size_t e = 0; e + 1 < m.offsets.size(); ++e)
+  for (size_t e = 0; e + 1 < m.Offsets.size(); ++e)
   {
     std::vector<Vec3> loop;
-    for (int k = m.offsets[e]; k < m.offsets[e + 1]; ++k)
+    for (int k = m.Offsets[e]; k < m.Offsets[e + 1]; ++k)
     {
-      loop.push_back(m.points[m.connectivity[k]]);
+      loop.push_back(m.Points[m.Connectivity[k]]);
     }
     area += PolygonArea(loop.data(), static_cast<int>(loop.size()));
   }
@@ -39,13 +39,13 @@ TEST(Mesher, QuadBecomesGridOfPatchesAndElements)
   const std::vector<Vec3> points = { { 0, 0, 0 }, { 2, 0, 0 }, { 2, 1, 0 }, { 0, 1, 0 } };
   MeshedPolygons m;
   ASSERT_EQ(MeshPolygons(points, { 0, 4 }, { 0, 1, 2, 3 }, { 0 }, Sizes(1, 0.5), m), "");
-  EXPECT_EQ(m.patches, 2);
-  EXPECT_EQ(m.sourcePolygon.size(), 8u);
-  EXPECT_EQ(m.points.size(), 15u); // a 5 x 3 lattice: points are shared
+  EXPECT_EQ(m.Patches, 2);
+  EXPECT_EQ(m.SourcePolygon.size(), 8u);
+  EXPECT_EQ(m.Points.size(), 15u); // a 5 x 3 lattice: points are shared
   EXPECT_NEAR(TotalArea(m), 2.0, 1e-12);
   for (int p = 0; p < 2; ++p)
   {
-    EXPECT_EQ(std::count(m.patchId.begin(), m.patchId.end(), p), 4);
+    EXPECT_EQ(std::count(m.PatchId.begin(), m.PatchId.end(), p), 4);
   }
 }
 
@@ -54,15 +54,15 @@ TEST(Mesher, TriangleEdgesStayWithinSizes)
   const std::vector<Vec3> points = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } };
   MeshedPolygons m;
   ASSERT_EQ(MeshPolygons(points, { 0, 3 }, { 0, 1, 2 }, { 0 }, Sizes(1, 0.5), m), "");
-  EXPECT_EQ(m.sourcePolygon.size(), 16u);
-  EXPECT_EQ(m.patches, 4);
+  EXPECT_EQ(m.SourcePolygon.size(), 16u);
+  EXPECT_EQ(m.Patches, 4);
   EXPECT_NEAR(TotalArea(m), 0.5, 1e-12);
-  for (size_t e = 0; e + 1 < m.offsets.size(); ++e)
+  for (size_t e = 0; e + 1 < m.Offsets.size(); ++e)
   {
-    for (int k = m.offsets[e]; k < m.offsets[e + 1]; ++k)
+    for (int k = m.Offsets[e]; k < m.Offsets[e + 1]; ++k)
     {
-      const int next = k + 1 < m.offsets[e + 1] ? k + 1 : m.offsets[e];
-      EXPECT_LE(Norm(m.points[m.connectivity[k]] - m.points[m.connectivity[next]]), 0.5 + 1e-12);
+      const int next = k + 1 < m.Offsets[e + 1] ? k + 1 : m.Offsets[e];
+      EXPECT_LE(Norm(m.Points[m.Connectivity[k]] - m.Points[m.Connectivity[next]]), 0.5 + 1e-12);
     }
   }
 }
@@ -78,8 +78,8 @@ TEST(Mesher, SharesPointsOnlyWithinOneFlatMaterial)
   ASSERT_EQ(MeshPolygons(points, offsets, conn, { 0, 0, 0 }, Sizes(1, 1), same), "");
   ASSERT_EQ(MeshPolygons(points, offsets, conn, { 0, 1, 0 }, Sizes(1, 1), different), "");
   // Same material: the floor quads share 2 points; the wall has its own 4.
-  EXPECT_EQ(same.points.size(), 6u + 4u);
-  EXPECT_EQ(different.points.size(), 4u + 4u + 4u);
+  EXPECT_EQ(same.Points.size(), 6u + 4u);
+  EXPECT_EQ(different.Points.size(), 4u + 4u + 4u);
 }
 
 TEST(Mesher, RefusesBadSizesAndExplosions)
@@ -104,7 +104,7 @@ TEST(Mesher, CountAndBudgetMatchTheMesh)
   {
     MeshedPolygons m;
     ASSERT_EQ(MeshPolygons(points, offsets, connectivity, { 0, 1, 2 }, Sizes(1, element), m), "");
-    EXPECT_EQ(CountElements(points, offsets, connectivity, 1, element), static_cast<double>(m.sourcePolygon.size()))
+    EXPECT_EQ(CountElements(points, offsets, connectivity, 1, element), static_cast<double>(m.SourcePolygon.size()))
       << element;
   }
   const double budget = 500;
@@ -125,26 +125,26 @@ TEST(Mesher, TrianglePairsBecomeQuads)
               Sizes(1, 0.25), quad),
     "");
   ASSERT_EQ(MeshPolygons(points, offsets, connectivity, { 0, 0 }, Sizes(1, 0.25), split), "");
-  EXPECT_EQ(split.mergedTrianglePairs, 1);
-  EXPECT_EQ(split.sourcePolygon.size(), quad.sourcePolygon.size()); // 16, not 2 x 32
+  EXPECT_EQ(split.MergedTrianglePairs, 1);
+  EXPECT_EQ(split.SourcePolygon.size(), quad.SourcePolygon.size()); // 16, not 2 x 32
   EXPECT_NEAR(TotalArea(split), 1.0, 1e-12);
   // Not joined: another material, a fold, a non-convex union, or merging turned off.
   MeshedPolygons other;
   ASSERT_EQ(MeshPolygons(points, offsets, connectivity, { 0, 1 }, Sizes(1, 0.25), other), "");
-  EXPECT_EQ(other.mergedTrianglePairs, 0);
+  EXPECT_EQ(other.MergedTrianglePairs, 0);
   std::vector<Vec3> folded = points;
   folded[5] = { 0, 1, 0.3 };
   ASSERT_EQ(MeshPolygons(folded, offsets, connectivity, { 0, 0 }, Sizes(1, 0.25), other), "");
-  EXPECT_EQ(other.mergedTrianglePairs, 0);
+  EXPECT_EQ(other.MergedTrianglePairs, 0);
   std::vector<Vec3> dart = points;
   dart[5] = { 1.5, 1.8, 0 }; // the union is not convex (reflex at (1, 1))
   ASSERT_EQ(MeshPolygons(dart, offsets, connectivity, { 0, 0 }, Sizes(1, 0.25), other), "");
-  EXPECT_EQ(other.mergedTrianglePairs, 0);
+  EXPECT_EQ(other.MergedTrianglePairs, 0);
   MesherOptions off = Sizes(1, 0.25);
   off.MergeTriangles = false;
   ASSERT_EQ(MeshPolygons(points, offsets, connectivity, { 0, 0 }, off, other), "");
-  EXPECT_EQ(other.mergedTrianglePairs, 0);
-  EXPECT_GT(other.sourcePolygon.size(), quad.sourcePolygon.size());
+  EXPECT_EQ(other.MergedTrianglePairs, 0);
+  EXPECT_GT(other.SourcePolygon.size(), quad.SourcePolygon.size());
 }
 
 TEST(Mesher, SliversAreNotCutIntoManyPatches)
@@ -154,15 +154,15 @@ TEST(Mesher, SliversAreNotCutIntoManyPatches)
   const std::vector<Vec3> points = { { 0, 0, 0 }, { 3, 0, 0 }, { 3, 0.02, 0 } };
   MeshedPolygons m;
   ASSERT_EQ(MeshPolygons(points, { 0, 3 }, { 0, 1, 2 }, { 0 }, Sizes(0.5, 0.25), m), "");
-  EXPECT_EQ(m.patches, 1);
+  EXPECT_EQ(m.Patches, 1);
   EXPECT_NEAR(TotalArea(m), 0.03, 1e-12);
-  EXPECT_EQ(CountElements(points, { 0, 3 }, { 0, 1, 2 }, 0.5, 0.25), static_cast<double>(m.sourcePolygon.size()));
-  for (size_t e = 0; e + 1 < m.offsets.size(); ++e)
+  EXPECT_EQ(CountElements(points, { 0, 3 }, { 0, 1, 2 }, 0.5, 0.25), static_cast<double>(m.SourcePolygon.size()));
+  for (size_t e = 0; e + 1 < m.Offsets.size(); ++e)
   {
-    for (int k = m.offsets[e]; k < m.offsets[e + 1]; ++k)
+    for (int k = m.Offsets[e]; k < m.Offsets[e + 1]; ++k)
     {
-      const int next = k + 1 < m.offsets[e + 1] ? k + 1 : m.offsets[e];
-      EXPECT_LE(Norm(m.points[m.connectivity[k]] - m.points[m.connectivity[next]]), 0.25 + 1e-12);
+      const int next = k + 1 < m.Offsets[e + 1] ? k + 1 : m.Offsets[e];
+      EXPECT_LE(Norm(m.Points[m.Connectivity[k]] - m.Points[m.Connectivity[next]]), 0.25 + 1e-12);
     }
   }
 }
@@ -188,11 +188,11 @@ TEST(Mesher, ACircleOfManyCornersIsMeshedByArea)
     }
     MeshedPolygons m;
     ASSERT_EQ(MeshPolygons(points, { 0, corners }, connectivity, { 0 }, Sizes(0.5, 0.25), m), "");
-    const size_t elements = m.sourcePolygon.size();
+    const size_t elements = m.SourcePolygon.size();
     EXPECT_EQ(elements, 60u) << "turned by " << angle; // the 8 x 8 grid less its four corners
     EXPECT_NEAR(TotalArea(m), PolygonArea(points.data(), corners), 1e-9);
     EXPECT_EQ(CountElements(points, { 0, corners }, connectivity, 0.5, 0.25), static_cast<double>(elements));
-    EXPECT_EQ(m.patches, 16);
+    EXPECT_EQ(m.Patches, 16);
   }
 }
 
@@ -221,18 +221,18 @@ TEST(Mesher, AGearOfManyCornersIsMeshedByItsConvexPieces)
   ASSERT_FALSE(IsConvex(points.data(), corners));
   MeshedPolygons m;
   ASSERT_EQ(MeshPolygons(points, { 0, corners }, connectivity, { 0 }, Sizes(0.5, 0.25), m), "");
-  const size_t elements = m.sourcePolygon.size();
-  std::printf("gear of %d corners: %zu elements, %d patches\n", corners, elements, m.patches);
+  const size_t elements = m.SourcePolygon.size();
+  std::printf("gear of %d corners: %zu elements, %d patches\n", corners, elements, m.Patches);
   EXPECT_GT(elements, static_cast<size_t>(teeth));
   EXPECT_LT(elements, static_cast<size_t>(teeth + 200));
   EXPECT_NEAR(TotalArea(m), PolygonArea(points.data(), corners), 1e-9);
   EXPECT_EQ(CountElements(points, { 0, corners }, connectivity, 0.5, 0.25), static_cast<double>(elements));
-  for (size_t e = 0; e + 1 < m.offsets.size(); ++e)
+  for (size_t e = 0; e + 1 < m.Offsets.size(); ++e)
   {
     std::vector<Vec3> element;
-    for (int k = m.offsets[e]; k < m.offsets[e + 1]; ++k)
+    for (int k = m.Offsets[e]; k < m.Offsets[e + 1]; ++k)
     {
-      element.push_back(m.points[m.connectivity[k]]);
+      element.push_back(m.Points[m.Connectivity[k]]);
     }
     ASSERT_TRUE(IsConvex(element.data(), static_cast<int>(element.size()), 1e-9)) << "element " << e;
   }
@@ -261,13 +261,13 @@ TEST(Mesher, SmallPolygonsShareAPatchInTheirCell)
   square(1.3, 0.1, 0); // another cell
   MeshedPolygons shared, own;
   ASSERT_EQ(MeshPolygons(points, offsets, connectivity, keys, Sizes(1, 0.1), shared), "");
-  EXPECT_EQ(shared.patches, 3);
-  std::set<int> first(shared.patchId.begin(), shared.patchId.begin() + 16);
+  EXPECT_EQ(shared.Patches, 3);
+  std::set<int> first(shared.PatchId.begin(), shared.PatchId.begin() + 16);
   EXPECT_EQ(first.size(), 1u); // the four squares' 4 x 4 elements
   MesherOptions off = Sizes(1, 0.1);
   off.SharePatches = false;
   ASSERT_EQ(MeshPolygons(points, offsets, connectivity, keys, off, own), "");
-  EXPECT_EQ(own.patches, 6);
+  EXPECT_EQ(own.Patches, 6);
   EXPECT_NEAR(TotalArea(shared), 6 * 0.04, 1e-12);
 }
 
@@ -290,7 +290,7 @@ TEST(Mesher, SuggestedSizesFollowTheScaleNotThePlacement)
     MeshedPolygons meshed;
     EXPECT_EQ(MeshPolygons(points, { 0, 4, 8, 12, 16, 20, 24 }, connectivity, { 0, 0, 0, 0, 0, 0 },
                 Sizes(sizes.PatchSize, sizes.ElementSize), meshed), "");
-    EXPECT_NEAR(sizes.Elements, static_cast<double>(meshed.offsets.size() - 1), 1e-6);
+    EXPECT_NEAR(sizes.Elements, static_cast<double>(meshed.Offsets.size() - 1), 1e-6);
     return sizes;
   };
   const SuggestedSizes metres = box(1.0, Vec3{});

@@ -16,7 +16,7 @@ double Radius(const SceneMesh& mesh, const SceneGeometry& g, int e)
   double r = 0;
   for (int i = 0; i < mesh.PolygonSize(e); ++i)
   {
-    r = std::max(r, Norm(mesh.points[mesh.Polygon(e)[i]] - g.centroid[e]));
+    r = std::max(r, Norm(mesh.Points[mesh.Polygon(e)[i]] - g.Centroid[e]));
   }
   return r;
 }
@@ -34,15 +34,15 @@ double BruteForceNearPairs(const SceneMesh& mesh, double separation)
     r[e] = Radius(mesh, g, e);
   }
   auto inFront = [&](int a, int b) {
-    const bool parallel = std::abs(Dot(g.normal[a], g.normal[b])) > 1 - 1e-9;
-    return Dot(g.centroid[b] - g.centroid[a], g.normal[a]) + (parallel ? 0.0 : r[b]) > 1e-9 * (r[a] + r[b]);
+    const bool parallel = std::abs(Dot(g.Normal[a], g.Normal[b])) > 1 - 1e-9;
+    return Dot(g.Centroid[b] - g.Centroid[a], g.Normal[a]) + (parallel ? 0.0 : r[b]) > 1e-9 * (r[a] + r[b]);
   };
   double pairs = 0;
   for (int a = 0; a < n; ++a)
   {
     for (int b = 0; b < n; ++b)
     {
-      const bool near = a != b && Norm(g.centroid[b] - g.centroid[a]) <= separation * (r[a] + r[b]);
+      const bool near = a != b && Norm(g.Centroid[b] - g.Centroid[a]) <= separation * (r[a] + r[b]);
       pairs += near && inFront(a, b) && inFront(b, a) ? 1 : 0;
     }
   }
@@ -81,7 +81,7 @@ TEST(MethodCost, NearPairsDoNotDependOnPlacement)
   const SceneMesh box = radiosity_test::Box(2.0, 20, 4, { 0.5, 0.5, 0.5 }, [](int) { return -1; });
   SceneMesh moved = box;
   const double c = std::cos(0.6), s = std::sin(0.6);
-  for (Vec3& p : moved.points)
+  for (Vec3& p : moved.Points)
   {
     p = Vec3{ c * p.x - s * p.z, p.y, s * p.x + c * p.z } + Vec3{ 1e4, -3e3, 5e3 };
   }

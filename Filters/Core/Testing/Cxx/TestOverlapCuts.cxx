@@ -23,11 +23,11 @@ struct Faces
   {
     for (const Vec3& p : loop)
     {
-      polygons.connectivity.push_back(static_cast<int>(points.size()));
+      polygons.Connectivity.push_back(static_cast<int>(points.size()));
       points.push_back(p);
     }
-    polygons.offsets.push_back(static_cast<int>(polygons.connectivity.size()));
-    polygons.source.push_back(static_cast<int>(keys.size()));
+    polygons.Offsets.push_back(static_cast<int>(polygons.Connectivity.size()));
+    polygons.Source.push_back(static_cast<int>(keys.size()));
     keys.push_back(key);
   }
 
@@ -43,9 +43,9 @@ struct Faces
   {
     const std::vector<Vec3>& at = PointsOf(polygons, points);
     double area = 0;
-    for (size_t i = 0; i + 1 < polygons.offsets.size(); ++i)
+    for (size_t i = 0; i + 1 < polygons.Offsets.size(); ++i)
     {
-      const std::vector<Vec3> loop = GatherLoop(at, polygons.offsets, polygons.connectivity, static_cast<int>(i));
+      const std::vector<Vec3> loop = GatherLoop(at, polygons.Offsets, polygons.Connectivity, static_cast<int>(i));
       area += PolygonArea(loop.data(), static_cast<int>(loop.size()));
     }
     return area;
@@ -56,9 +56,9 @@ struct Faces
   {
     const std::vector<Vec3>& at = PointsOf(polygons, points);
     double up = 0;
-    for (size_t i = 0; i + 1 < polygons.offsets.size(); ++i)
+    for (size_t i = 0; i + 1 < polygons.Offsets.size(); ++i)
     {
-      const std::vector<Vec3> loop = GatherLoop(at, polygons.offsets, polygons.connectivity, static_cast<int>(i));
+      const std::vector<Vec3> loop = GatherLoop(at, polygons.Offsets, polygons.Connectivity, static_cast<int>(i));
       up += 0.5 * NewellVector(loop.data(), static_cast<int>(loop.size())).z;
     }
     return up;
@@ -122,10 +122,10 @@ TEST(OverlapCuts, OtherSurfacesSidesAndPlanesAreLeftAloneAndOtherSurfacesSaid)
   f.Rectangle(1, 3, 0, 1, 1);       // another material: said, not cut
   f.Rectangle(1, 3, 0, 1, 0, 1e-3); // a millimetre above: a layer of its own
   f.Add({ { 1, 0, 0 }, { 1, 1, 0 }, { 3, 1, 0 }, { 3, 0, 0 } }); // facing down: the other side
-  const std::vector<int> before = f.polygons.connectivity;
+  const std::vector<int> before = f.polygons.Connectivity;
   const OverlapCuts cuts = f.Cut();
-  EXPECT_TRUE(cuts.Trimmed.empty() && cuts.Covered.empty() && f.polygons.points.empty());
-  EXPECT_EQ(f.polygons.connectivity, before);
+  EXPECT_TRUE(cuts.Trimmed.empty() && cuts.Covered.empty() && f.polygons.Points.empty());
+  EXPECT_EQ(f.polygons.Connectivity, before);
   EXPECT_EQ(cuts.Differing, (std::vector<std::pair<int, int>>{ { 0, 1 } }));
 }
 

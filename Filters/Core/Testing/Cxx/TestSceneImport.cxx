@@ -16,14 +16,14 @@ namespace
 RawScene FloorAndLamp()
 {
   RawScene raw;
-  raw.points = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 0.4, 0.4, 1 }, { 0.4, 0.6, 1 },
+  raw.Points = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 0.4, 0.4, 1 }, { 0.4, 0.6, 1 },
     { 0.6, 0.6, 1 }, { 0.6, 0.4, 1 } };
-  raw.connectivity = { 0, 1, 2, 3, 4, 5, 6, 7 };
-  raw.offsets = { 0, 4, 8 };
-  raw.material = { 0, 1 };
-  raw.object = { 0, 1 };
-  raw.objectNames = { "Floor", "Lamp" };
-  raw.materials = { ImportMaterial{ "Oak", { 0.5, 0.4, 0.3 } }, ImportMaterial{ "Bulb", { 0.8, 0.8, 0.8 }, { 2, 2, 1.5 } } };
+  raw.Connectivity = { 0, 1, 2, 3, 4, 5, 6, 7 };
+  raw.Offsets = { 0, 4, 8 };
+  raw.Material = { 0, 1 };
+  raw.Object = { 0, 1 };
+  raw.ObjectNames = { "Floor", "Lamp" };
+  raw.Materials = { ImportMaterial{ "Oak", { 0.5, 0.4, 0.3 } }, ImportMaterial{ "Bulb", { 0.8, 0.8, 0.8 }, { 2, 2, 1.5 } } };
   return raw;
 }
 
@@ -72,9 +72,9 @@ TEST(SceneImport, EmissiveMaterialsBecomeNamedLights)
   ASSERT_EQ(BuildImportedScene(FloorAndLamp(), ImportOptions(), out), "");
   ASSERT_EQ(out.Mesh.NumberOfPolygons(), 2);
   EXPECT_EQ(out.LightNames, std::vector<std::string>{ "Bulb" });
-  EXPECT_EQ(out.Mesh.lightId, (std::vector<int>{ -1, 0 }));
+  EXPECT_EQ(out.Mesh.LightId, (std::vector<int>{ -1, 0 }));
   EXPECT_DOUBLE_EQ(out.Emission[1].x, 2);
-  EXPECT_DOUBLE_EQ(out.Mesh.reflectance[0].z, 0.3);
+  EXPECT_DOUBLE_EQ(out.Mesh.Reflectance[0].z, 0.3);
   EXPECT_EQ(out.Summary, "2 polygons, 2 materials, 1 lights, 0 degenerate cells dropped");
   int lights = 0;
   EXPECT_EQ(ValidateScene(out.Mesh, lights), "");
@@ -85,12 +85,12 @@ TEST(SceneImport, LightPerObjectNamesLightsAfterObjects)
 {
   RawScene raw = FloorAndLamp();
   // A second lamp object with the same material: one light by material, two by object.
-  raw.points.insert(raw.points.end(), { { 0.1, 0.1, 1 }, { 0.1, 0.2, 1 }, { 0.2, 0.2, 1 } });
-  raw.connectivity.insert(raw.connectivity.end(), { 8, 9, 10 });
-  raw.offsets.push_back(11);
-  raw.material.push_back(1);
-  raw.object.push_back(2);
-  raw.objectNames.push_back("Lamp");
+  raw.Points.insert(raw.Points.end(), { { 0.1, 0.1, 1 }, { 0.1, 0.2, 1 }, { 0.2, 0.2, 1 } });
+  raw.Connectivity.insert(raw.Connectivity.end(), { 8, 9, 10 });
+  raw.Offsets.push_back(11);
+  raw.Material.push_back(1);
+  raw.Object.push_back(2);
+  raw.ObjectNames.push_back("Lamp");
   ImportedScene byMaterial, byObject;
   ASSERT_EQ(BuildImportedScene(raw, ImportOptions(), byMaterial), "");
   EXPECT_EQ(byMaterial.LightNames.size(), 1u);
@@ -98,18 +98,18 @@ TEST(SceneImport, LightPerObjectNamesLightsAfterObjects)
   options.LightPerObject = true;
   ASSERT_EQ(BuildImportedScene(raw, options, byObject), "");
   EXPECT_EQ(byObject.LightNames, (std::vector<std::string>{ "Lamp", "Lamp (2)" }));
-  EXPECT_EQ(byObject.Mesh.lightId, (std::vector<int>{ -1, 0, 1 }));
+  EXPECT_EQ(byObject.Mesh.LightId, (std::vector<int>{ -1, 0, 1 }));
 }
 
 TEST(SceneImport, DegenerateCellsAreDroppedAndCounted)
 {
   RawScene raw = FloorAndLamp();
   // Collinear corners, and a triangle with a repeated corner: both have no area.
-  raw.points.insert(raw.points.end(), { { 0, 0, 2 }, { 1, 0, 2 }, { 2, 0, 2 } });
-  raw.connectivity.insert(raw.connectivity.end(), { 8, 9, 10, 0, 1, 1 });
-  raw.offsets.insert(raw.offsets.end(), { 11, 14 });
-  raw.material.insert(raw.material.end(), { 0, 0 });
-  raw.object.insert(raw.object.end(), { 0, 0 });
+  raw.Points.insert(raw.Points.end(), { { 0, 0, 2 }, { 1, 0, 2 }, { 2, 0, 2 } });
+  raw.Connectivity.insert(raw.Connectivity.end(), { 8, 9, 10, 0, 1, 1 });
+  raw.Offsets.insert(raw.Offsets.end(), { 11, 14 });
+  raw.Material.insert(raw.Material.end(), { 0, 0 });
+  raw.Object.insert(raw.Object.end(), { 0, 0 });
   ImportedScene out;
   ASSERT_EQ(BuildImportedScene(raw, ImportOptions(), out), "");
   EXPECT_EQ(out.Mesh.NumberOfPolygons(), 2);
@@ -120,8 +120,8 @@ TEST(SceneImport, DegenerateCellsAreDroppedAndCounted)
 TEST(SceneImport, ClampsReflectanceAndScalesUnits)
 {
   RawScene raw = FloorAndLamp();
-  raw.materials[0].Diffuse = { 1.02, 0.5, -0.1 };
-  for (Vec3& p : raw.points)
+  raw.Materials[0].Diffuse = { 1.02, 0.5, -0.1 };
+  for (Vec3& p : raw.Points)
   {
     p = p * 1000.0; // millimetres
   }
@@ -129,9 +129,9 @@ TEST(SceneImport, ClampsReflectanceAndScalesUnits)
   options.UnitScale = 0.001;
   ImportedScene out;
   ASSERT_EQ(BuildImportedScene(raw, options, out), "");
-  EXPECT_DOUBLE_EQ(out.Mesh.reflectance[0].x, 1.0);
-  EXPECT_DOUBLE_EQ(out.Mesh.reflectance[0].z, 0.0);
-  EXPECT_NEAR(out.Mesh.points[2].x, 1.0, 1e-12);
+  EXPECT_DOUBLE_EQ(out.Mesh.Reflectance[0].x, 1.0);
+  EXPECT_DOUBLE_EQ(out.Mesh.Reflectance[0].z, 0.0);
+  EXPECT_NEAR(out.Mesh.Points[2].x, 1.0, 1e-12);
   ASSERT_FALSE(out.Warnings.empty());
   EXPECT_NE(out.Warnings[0].find("'Oak'"), std::string::npos);
 }
@@ -140,17 +140,17 @@ TEST(SceneImport, BadInputIsAnErrorNamingIt)
 {
   ImportedScene out;
   RawScene nan = FloorAndLamp();
-  nan.points[5].y = std::numeric_limits<double>::quiet_NaN();
+  nan.Points[5].y = std::numeric_limits<double>::quiet_NaN();
   EXPECT_NE(BuildImportedScene(nan, ImportOptions(), out).find("point 5"), std::string::npos);
   RawScene negative = FloorAndLamp();
-  negative.materials[1].Emissive.x = -1;
+  negative.Materials[1].Emissive.x = -1;
   EXPECT_NE(BuildImportedScene(negative, ImportOptions(), out).find("'Bulb'"), std::string::npos);
   ImportOptions zero;
   zero.UnitScale = 0;
   EXPECT_NE(BuildImportedScene(FloorAndLamp(), zero, out).find("unit scale"), std::string::npos);
   EXPECT_EQ(BuildImportedScene(RawScene(), ImportOptions(), out), "no polygons");
   RawScene dark = FloorAndLamp();
-  dark.materials[1].Emissive = Vec3();
+  dark.Materials[1].Emissive = Vec3();
   ASSERT_EQ(BuildImportedScene(dark, ImportOptions(), out), "");
   EXPECT_TRUE(out.LightNames.empty());
   EXPECT_NE(out.Warnings.back().find("no emissive material"), std::string::npos);
@@ -165,11 +165,11 @@ TEST(SceneImport, ObjGivesFacesMaterialsAndObjects)
   ASSERT_EQ(ParseObj(text, raw, libraries), "");
   EXPECT_EQ(libraries, std::vector<std::string>{ "a b.mtl" });
   ASSERT_EQ(raw.NumberOfPolygons(), 3);
-  EXPECT_EQ(raw.material, (std::vector<int>{ -1, 0, 1 }));
-  EXPECT_EQ(raw.object, (std::vector<int>{ -1, 0, 1 }));
-  EXPECT_EQ(raw.materials[0].Name, "Red Brick");
-  EXPECT_EQ(raw.objectNames, (std::vector<std::string>{ "Wall 1", "Trim" }));
-  EXPECT_EQ(std::vector<int>(raw.connectivity.begin() + 3, raw.connectivity.begin() + 7), (std::vector<int>{ 0, 1, 2, 3 }));
+  EXPECT_EQ(raw.Material, (std::vector<int>{ -1, 0, 1 }));
+  EXPECT_EQ(raw.Object, (std::vector<int>{ -1, 0, 1 }));
+  EXPECT_EQ(raw.Materials[0].Name, "Red Brick");
+  EXPECT_EQ(raw.ObjectNames, (std::vector<std::string>{ "Wall 1", "Trim" }));
+  EXPECT_EQ(std::vector<int>(raw.Connectivity.begin() + 3, raw.Connectivity.begin() + 7), (std::vector<int>{ 0, 1, 2, 3 }));
   EXPECT_NE(ParseObj("v 0 0\n", raw, libraries).find("line 1"), std::string::npos);
   EXPECT_NE(ParseObj("v 0 0 0\nf 1 0 1\n", raw, libraries).find("face corner '0'"), std::string::npos);
   EXPECT_NE(ParseObj("v 0 0 0\nv 1 0 0\nf 1 2\n", raw, libraries).find("three corners"), std::string::npos);

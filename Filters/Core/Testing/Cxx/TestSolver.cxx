@@ -15,9 +15,9 @@ TEST(Solver, BoxBuilderFacesInward)
 {
   SceneMesh box = Box(1.0, 2, 1, { 0.5, 0.5, 0.5 }, [](int) { return -1; });
   SceneGeometry g(box);
-  for (size_t e = 0; e < g.normal.size(); ++e)
+  for (size_t e = 0; e < g.Normal.size(); ++e)
   {
-    EXPECT_GT(Dot(g.normal[e], Vec3{ 0.5, 0.5, 0.5 } - g.centroid[e]), 0) << e;
+    EXPECT_GT(Dot(g.Normal[e], Vec3{ 0.5, 0.5, 0.5 } - g.Centroid[e]), 0) << e;
   }
 }
 
@@ -107,9 +107,9 @@ SceneMesh ThreeLightScene(std::vector<Vec3>& colors)
   const Vec3 palette[3] = { { 1.0, 0.8, 0.6 }, { 0.2, 0.4, 1.5 }, { 3.0, 0.1, 0.1 } };
   for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
   {
-    if (mesh.lightId[e] >= 0)
+    if (mesh.LightId[e] >= 0)
     {
-      colors[e] = palette[mesh.lightId[e]];
+      colors[e] = palette[mesh.LightId[e]];
     }
   }
   return mesh;
@@ -218,24 +218,24 @@ TEST(Validation, NamesTheProblem)
   EXPECT_EQ(k, 1);
 
   SceneMesh nan = scene();
-  nan.reflectance[2].y = std::nan("");
+  nan.Reflectance[2].y = std::nan("");
   EXPECT_NE(ValidateScene(nan, k).find("Reflectance of cell 2"), std::string::npos);
 
   SceneMesh high = scene();
-  high.reflectance[3].x = 1.5;
+  high.Reflectance[3].x = 1.5;
   EXPECT_NE(ValidateScene(high, k).find("[0, 1]"), std::string::npos);
 
   SceneMesh gap = scene();
-  gap.lightId[0] = 1;
+  gap.LightId[0] = 1;
   EXPECT_NE(ValidateScene(gap, k).find("gap"), std::string::npos);
 
   SceneMesh dark = scene();
-  dark.lightId[0] = -1;
+  dark.LightId[0] = -1;
   EXPECT_NE(ValidateScene(dark, k).find("no lights"), std::string::npos);
 
   SceneMesh flat = scene();
-  flat.points[flat.Polygon(4)[2]] = flat.points[flat.Polygon(4)[1]];
-  flat.points[flat.Polygon(4)[3]] = flat.points[flat.Polygon(4)[0]];
+  flat.Points[flat.Polygon(4)[2]] = flat.Points[flat.Polygon(4)[1]];
+  flat.Points[flat.Polygon(4)[3]] = flat.Points[flat.Polygon(4)[0]];
   EXPECT_NE(ValidateScene(flat, k).find("zero area"), std::string::npos);
 
   SceneMesh empty;
@@ -249,7 +249,7 @@ TEST(Solver, AmbientTermFixesTheFurnaceAfterOneSweep)
   SceneMesh box = Box(1.0, 8, 2, { 0.99, 0.99, 0.99 }, [](int) { return 0; }); // 96 patches
   RadiositySolver solver(box);
   SolverOptions o = Converged();
-  o.MaximumShots = static_cast<int>(solver.Geometry().patchElements.size());
+  o.MaximumShots = static_cast<int>(solver.Geometry().PatchElements.size());
   const Solution plain = SolveLights(solver, box, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, o);
   o.AmbientTerm = true;
   const Solution ambient = SolveLights(solver, box, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, o);

@@ -70,10 +70,10 @@ double MeanDifference(const SceneMesh& mesh, const Solution& a, const Solution& 
   double diff = 0, sum = 0;
   for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
   {
-    if (mesh.lightId[e] < 0 && g.centroid[e].x >= lo && g.centroid[e].x <= hi)
+    if (mesh.LightId[e] < 0 && g.Centroid[e].x >= lo && g.Centroid[e].x <= hi)
     {
-      diff += std::fabs(a.Radiosity[e].x - b.Radiosity[e].x) * g.area[e];
-      sum += b.Radiosity[e].x * g.area[e];
+      diff += std::fabs(a.Radiosity[e].x - b.Radiosity[e].x) * g.Area[e];
+      sum += b.Radiosity[e].x * g.Area[e];
     }
   }
   return diff / sum;
@@ -101,7 +101,7 @@ TEST(VolumeLinks, TreeIsTheSameUnderRotationScaleAndPlacement)
   const SceneMesh mesh = TwoRooms();
   SceneMesh moved = mesh;
   const double c = std::cos(0.7), s = std::sin(0.7);
-  for (Vec3& p : moved.points)
+  for (Vec3& p : moved.Points)
   {
     p = Vec3{ c * p.x - s * p.y, s * p.x + c * p.y, p.z } * 1000.0 + Vec3{ 2500, -40, 7 };
   }
@@ -127,7 +127,7 @@ TEST(VolumeLinks, EveryPatchIsInOneFrontierSubtree)
   const WorkerPool pool(1);
   const ShooterFormFactors f(mesh, g, rays, pool);
   const PatchTree tree(g, f, 8, 64);
-  std::vector<int> seen(g.patchElements.size(), 0);
+  std::vector<int> seen(g.PatchElements.size(), 0);
   for (int n : tree.Frontier())
   {
     const PatchTree::Node& node = tree.Nodes()[n];

@@ -5,7 +5,7 @@ clear error and an empty output. Also: unshot energy never rises (reflectances u
 coarse one-element patches), and a converged analytic solve of the scene scaled by
 1e-3..1e3, rotated and moved gives the same radiosity to 1e-3 of its peak. CI runs a
 bounded number of cases; for a long run:
-    RELIGHT_FUZZ_CASES=20000 RELIGHT_FUZZ_SEED=7 ./relight python Filters/Testing/Python/TestFuzz.py
+    RELIGHT_FUZZ_CASES=20000 RELIGHT_FUZZ_SEED=7 ./relight python Filters/IO/Testing/Python/TestFuzz.py
 """
 
 import math

@@ -28,14 +28,14 @@ namespace vtkRadiosityAdapter
 /// Points and polygons of `input` into `mesh` (arrays left empty). Fails with a message
 /// if the input has vertices, lines or strips, since cell data would no longer line up.
 bool CopyPolygons(vtkPolyData* input, radiosity::SceneMesh& mesh, std::string& error);
-/// The field array that carries SceneMesh::pointQuantum past the mesher.
+/// The field array that carries SceneMesh::PointQuantum past the mesher.
 constexpr const char* PointQuantumName = "PointQuantum";
 /// The field array a model set in a room or on a ground carries (relight.in_room): its own
 /// span, which the mesher suggests sizes from instead of the whole scene's.
 constexpr const char* SizingSpanName = "SizingSpan";
 /// The SizingSpan of `input`, 0 where it has none (or not a positive finite one).
 double SizingSpan(vtkDataObject* input);
-/// SceneMesh::pointQuantum of `input`: its PointQuantum field, or from its points' type.
+/// SceneMesh::PointQuantum of `input`: its PointQuantum field, or from its points' type.
 double PointQuantum(vtkPolyData* input, double farthest);
 
 /// A cell array with the given name, checked for component count (and integral values if

@@ -11,7 +11,7 @@ numbers, cut, repeated or endless lines in an OBJ or its material library; odd w
 cuts and flipped bytes in VRML97). All files
 are read by one child process that names each file before it reads it, so a crash is
 caught and pinned on its file. For a long run:
-    RELIGHT_HOSTILE_CASES=10000 ./relight python Filters/Testing/Python/TestHostileFiles.py
+    RELIGHT_HOSTILE_CASES=10000 ./relight python Filters/IO/Testing/Python/TestHostileFiles.py
 """
 
 import json

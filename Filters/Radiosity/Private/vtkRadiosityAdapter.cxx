@@ -56,18 +56,18 @@ bool CopyPolygons(vtkPolyData* input, radiosity::SceneMesh& mesh, std::string& e
     return false;
   }
   const vtkIdType nPoints = input->GetNumberOfPoints();
-  mesh.points.resize(nPoints);
+  mesh.Points.resize(nPoints);
   double farthest = 0;
   for (vtkIdType p = 0; p < nPoints; ++p)
   {
     double x[3];
     input->GetPoint(p, x);
-    mesh.points[p] = { x[0], x[1], x[2] };
+    mesh.Points[p] = { x[0], x[1], x[2] };
     farthest = std::max({ farthest, std::fabs(x[0]), std::fabs(x[1]), std::fabs(x[2]) });
   }
-  mesh.pointQuantum = PointQuantum(input, farthest);
-  mesh.offsets.assign(1, 0);
-  mesh.connectivity.clear();
+  mesh.PointQuantum = PointQuantum(input, farthest);
+  mesh.Offsets.assign(1, 0);
+  mesh.Connectivity.clear();
   vtkCellArray* polys = input->GetPolys();
   vtkIdType npts;
   const vtkIdType* ids;
@@ -75,9 +75,9 @@ bool CopyPolygons(vtkPolyData* input, radiosity::SceneMesh& mesh, std::string& e
   {
     for (vtkIdType i = 0; i < npts; ++i)
     {
-      mesh.connectivity.push_back(static_cast<int>(ids[i]));
+      mesh.Connectivity.push_back(static_cast<int>(ids[i]));
     }
-    mesh.offsets.push_back(static_cast<int>(mesh.connectivity.size()));
+    mesh.Offsets.push_back(static_cast<int>(mesh.Connectivity.size()));
   }
   return true;
 }
@@ -150,23 +150,23 @@ bool ReadSceneArrays(vtkPolyData* input, radiosity::SceneMesh& mesh,
     return false;
   }
   const vtkIdType n = input->GetNumberOfPolys();
-  mesh.reflectance.resize(n);
-  mesh.lightId.resize(n);
-  mesh.patchId.assign(patch ? n : 0, 0);
+  mesh.Reflectance.resize(n);
+  mesh.LightId.resize(n);
+  mesh.PatchId.assign(patch ? n : 0, 0);
   emission.assign(color ? n : 0, radiosity::Vec3());
   for (vtkIdType i = 0; i < n; ++i)
   {
     double r[3];
     reflectance->GetTuple(i, r);
-    mesh.reflectance[i] = { r[0], r[1], r[2] };
-    if (!(error = radiosity::ReflectanceProblem(mesh.reflectance[i], i)).empty())
+    mesh.Reflectance[i] = { r[0], r[1], r[2] };
+    if (!(error = radiosity::ReflectanceProblem(mesh.Reflectance[i], i)).empty())
     {
       return false;
     }
-    mesh.lightId[i] = static_cast<int>(lightId->GetComponent(i, 0));
+    mesh.LightId[i] = static_cast<int>(lightId->GetComponent(i, 0));
     if (patch)
     {
-      mesh.patchId[i] = static_cast<int>(patch->GetComponent(i, 0));
+      mesh.PatchId[i] = static_cast<int>(patch->GetComponent(i, 0));
     }
     if (color)
     {

@@ -69,7 +69,7 @@ void AddPerSolution(vtkPolyData* output, const radiosity::SceneMesh& mesh, const
   {
     const std::string name = combined ? prefix : prefix + "_" + names[m];
     output->GetCellData()->AddArray(MakeArray(name, cellValues, columns, m, mesh.NumberOfPolygons()));
-    output->GetPointData()->AddArray(MakeArray(name, pointValues, columns, m, mesh.points.size()));
+    output->GetPointData()->AddArray(MakeArray(name, pointValues, columns, m, mesh.Points.size()));
   }
 }
 
@@ -136,7 +136,7 @@ std::string CheckSolveMemory(
 {
   const int elements = scene.Mesh.NumberOfPolygons();
   std::string error = radiosity::CheckMemory(
-    radiosity::SolveMemory(elements, static_cast<long long>(scene.Mesh.points.size()), solutions, separateDirect),
+    radiosity::SolveMemory(elements, static_cast<long long>(scene.Mesh.Points.size()), solutions, separateDirect),
     std::to_string(solutions) + " solutions on " + std::to_string(elements) + " elements");
   error = radiosity::AgreeOnFailure(group, error, "has too little memory for the solve");
   return error.empty() ? error
@@ -169,7 +169,7 @@ void AddSolutionArrays(vtkPolyData* output, const SceneInput& scene, const radio
     vtkNew<vtkIntArray> patchIds;
     patchIds->SetName("PatchId");
     patchIds->SetNumberOfTuples(static_cast<vtkIdType>(mesh.NumberOfPolygons()));
-    const std::vector<int>& patchOf = solver.Geometry().elementPatch;
+    const std::vector<int>& patchOf = solver.Geometry().ElementPatch;
     std::copy(patchOf.begin(), patchOf.end(), patchIds->GetPointer(0));
     output->GetCellData()->AddArray(patchIds);
     vtkLogF(INFO, "LightTaggedRadiosity: %d patches split where a surface stands across them", solver.SplitPatches());
