@@ -165,6 +165,17 @@ std::string ValidateScene(const SceneMesh& mesh, int& numberOfLights)
   return std::string();
 }
 
+double ElementRadius(const SceneMesh& mesh, const SceneGeometry& g, int e)
+{
+  double radius = 0;
+  const int* ids = mesh.Polygon(e);
+  for (int i = 0; i < mesh.PolygonSize(e); ++i)
+  {
+    radius = std::max(radius, Norm(mesh.Points[ids[i]] - g.Centroid[e]));
+  }
+  return radius;
+}
+
 SceneGeometry::SceneGeometry(const SceneMesh& mesh)
 {
   const int n = mesh.NumberOfPolygons();

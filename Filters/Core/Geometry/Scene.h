@@ -70,6 +70,10 @@ struct SceneGeometry
   explicit SceneGeometry(const SceneMesh& mesh);
 };
 
+/// How far element e's farthest corner lies from its centroid: the radius of a ball about
+/// the centroid that holds the element.
+double ElementRadius(const SceneMesh& mesh, const SceneGeometry& g, int e);
+
 /// The area mean of value(x) over element e, sampled at the centroids of its fan
 /// triangles (centroid, corner, next corner): for where one centroid misjudges a quantity
 /// that changes fast across the element. NaN when the element has no positive fan area.

@@ -15,10 +15,7 @@ ElementTree::ElementTree(const SceneMesh& mesh, const SceneGeometry& g)
 {
   for (int e = 0; e < static_cast<int>(g.Normal.size()); ++e)
   {
-    for (int i = 0; i < mesh.PolygonSize(e); ++i)
-    {
-      Reach[e] = std::max(Reach[e], Norm(mesh.Points[mesh.Polygon(e)[i]] - g.Centroid[e]));
-    }
+    Reach[e] = radiosity::ElementRadius(mesh, g, e);
     if (!g.Enclosed[e] && g.Area[e] > 0)
     {
       Order.push_back(e);

@@ -11,20 +11,6 @@ namespace radiosity
 namespace
 {
 /// Each element's bounding radius about its centroid, as the element tree's leaves have.
-std::vector<double> ElementRadii(const SceneMesh& mesh, const SceneGeometry& g)
-{
-  std::vector<double> radius(g.Centroid.size(), 0.0);
-  for (size_t e = 0; e < radius.size(); ++e)
-  {
-    const int* ids = mesh.Polygon(static_cast<int>(e));
-    for (int i = 0; i < mesh.PolygonSize(static_cast<int>(e)); ++i)
-    {
-      radius[e] = std::max(radius[e], Norm(mesh.Points[ids[i]] - g.Centroid[e]));
-    }
-  }
-  return radius;
-}
-
 double Quantile(std::vector<double> values, double q)
 {
   const size_t at = std::min(values.size() - 1, static_cast<size_t>(q * values.size()));
@@ -143,7 +129,11 @@ double EstimateNearPairs(const SceneMesh& mesh, const SceneGeometry& g, double s
   {
     return 0;
   }
-  const std::vector<double> radius = ElementRadii(mesh, g);
+  std::vector<double> radius(g.Centroid.size());
+  for (size_t e = 0; e < radius.size(); ++e)
+  {
+    radius[e] = ElementRadius(mesh, g, static_cast<int>(e));
+  }
   std::vector<double> linkedRadius(linked.size());
   std::transform(linked.begin(), linked.end(), linkedRadius.begin(), [&](int e) { return radius[e]; });
   const double typical = Quantile(linkedRadius, 0.5);

@@ -14,7 +14,7 @@
 #define vtkRadiosityRelitRepresentation_h
 
 #include "vtkPVDataRepresentation.h"
-#include "vtkRadiosityRepresentationModule.h" // for export macro
+#include "vtkRadiosityRemotingModule.h" // for export macro
 #include "vtkSmartPointer.h"                    // for members
 
 class vtkActor;
@@ -23,7 +23,7 @@ class vtkPolyDataMapper;
 class vtkRadiosityRelightMapper;
 class vtkStringArray;
 
-class VTKRADIOSITYREPRESENTATION_EXPORT vtkRadiosityRelitRepresentation : public vtkPVDataRepresentation
+class VTKRADIOSITYREMOTING_EXPORT vtkRadiosityRelitRepresentation : public vtkPVDataRepresentation
 {
 public:
   static vtkRadiosityRelitRepresentation* New();

@@ -18,13 +18,13 @@
 #ifndef vtkSMRadiosityRelightProxy_h
 #define vtkSMRadiosityRelightProxy_h
 
-#include "vtkRadiosityRepresentationModule.h" // for export macro
+#include "vtkRadiosityRemotingModule.h" // for export macro
 #include "vtkSMSourceProxy.h"
 
 #include <string> // for members
 #include <vector> // for members
 
-class VTKRADIOSITYREPRESENTATION_EXPORT vtkSMRadiosityRelightProxy : public vtkSMSourceProxy
+class VTKRADIOSITYREMOTING_EXPORT vtkSMRadiosityRelightProxy : public vtkSMSourceProxy
 {
 public:
   static vtkSMRadiosityRelightProxy* New();
