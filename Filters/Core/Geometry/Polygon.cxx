@@ -1,7 +1,9 @@
 #include "Geometry/Polygon.h"
+#include "Geometry/CornerGrid.h"
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <sstream>
 
 namespace radiosity
@@ -182,6 +184,166 @@ bool IsConvex(const Vec3* loop, int count, double noise)
   return true;
 }
 
+namespace
+{
+/// Ear clipping in the loop's order: each step cuts off the first ear (by corner index),
+/// or, where none is left, the last straight corner. A corner's state changes only when a
+/// neighbour is cut off or when the corner found inside its triangle is, so only those
+/// are looked at again: a 20,000-corner gear is cut in linear time where scanning every
+/// corner for an ear at each step was quadratic (10 s to mesh).
+class EarClipper
+{
+public:
+  EarClipper(const Vec3* loop, int count, double noise, const Vec3& unit)
+    : Loop(loop)
+    , Noise(noise)
+    , Unit(unit)
+    , Prev(count)
+    , Next(count)
+    , State(count, Kind::Reflex)
+    , Blocker(count, -1)
+    , Blocks(count)
+    , Grid(loop, count, unit, AllCorners(count))
+  {
+    for (int i = 0; i < count; ++i)
+    {
+      Prev[i] = (i + count - 1) % count;
+      Next[i] = (i + 1) % count;
+    }
+    for (int i = 0; i < count; ++i)
+    {
+      Classify(i);
+    }
+  }
+
+  /// Cuts ears off until three corners are left, or none can be cut (a loop crossing
+  /// itself); appends their triangles and returns the corners left, in the loop's order.
+  std::vector<int> Run(std::vector<int>& triangles)
+  {
+    int left = static_cast<int>(Prev.size());
+    while (left > 3)
+    {
+      int cut = -1;
+      if (!Ears.empty())
+      {
+        cut = *Ears.begin();
+        triangles.insert(triangles.end(), { Prev[cut], cut, Next[cut] });
+      }
+      else if (!Straights.empty())
+      {
+        cut = *Straights.rbegin(); // lies on its neighbours' edge: dropping it changes no area
+      }
+      else
+      {
+        break; // self-intersecting input: fan what is left rather than loop forever
+      }
+      Remove(cut);
+      --left;
+    }
+    std::vector<int> rest;
+    for (int i = 0; i < static_cast<int>(Prev.size()); ++i)
+    {
+      if (State[i] != Kind::Gone)
+      {
+        for (int k = i; rest.empty() || k != i; k = Next[k])
+        {
+          rest.push_back(k);
+        }
+        break;
+      }
+    }
+    return rest;
+  }
+
+private:
+  enum class Kind
+  {
+    Straight,
+    Reflex,
+    Blocked,
+    Ear,
+    Gone
+  };
+
+  static std::vector<int> AllCorners(int count)
+  {
+    std::vector<int> all(count);
+    for (int i = 0; i < count; ++i)
+    {
+      all[i] = i;
+    }
+    return all;
+  }
+
+  double Turn(int a, int b, int c) const { return Dot(Unit, Cross(Loop[b] - Loop[a], Loop[c] - Loop[b])); }
+
+  void Classify(int b)
+  {
+    Ears.erase(b);
+    Straights.erase(b);
+    const int a = Prev[b], c = Next[b];
+    if (std::fabs(Turn(a, b, c)) <= StraightLimit(Loop[a], Loop[b], Loop[c], Noise))
+    {
+      State[b] = Kind::Straight;
+      Straights.insert(b);
+      return;
+    }
+    if (Turn(a, b, c) <= 0)
+    {
+      State[b] = Kind::Reflex;
+      return;
+    }
+    int inside = -1;
+    Grid.Any(a, b, c, [&](int p) {
+      const bool in = p != a && p != b && p != c && Turn(a, b, p) >= 0 && Turn(b, c, p) >= 0 && Turn(c, a, p) >= 0;
+      inside = in ? p : inside;
+      return in;
+    });
+    if (inside >= 0)
+    {
+      State[b] = Kind::Blocked;
+      Blocker[b] = inside;
+      Blocks[inside].push_back(b);
+      return;
+    }
+    State[b] = Kind::Ear;
+    Ears.insert(b);
+  }
+
+  void Remove(int b)
+  {
+    const int a = Prev[b], c = Next[b];
+    Ears.erase(b);
+    Straights.erase(b);
+    State[b] = Kind::Gone;
+    Grid.Remove(b);
+    Next[a] = c;
+    Prev[c] = a;
+    Classify(a);
+    Classify(c);
+    std::vector<int> freed;
+    freed.swap(Blocks[b]);
+    for (int j : freed)
+    {
+      if (State[j] == Kind::Blocked && Blocker[j] == b)
+      {
+        Classify(j);
+      }
+    }
+  }
+
+  const Vec3* Loop;
+  const double Noise;
+  const Vec3 Unit;
+  std::vector<int> Prev, Next;
+  std::vector<Kind> State;
+  std::vector<int> Blocker;            ///< a corner inside a blocked corner's triangle
+  std::vector<std::vector<int>> Blocks; ///< the corners each corner was found blocking
+  std::set<int> Ears, Straights;
+  CornerGrid Grid; ///< the corners not cut off yet
+};
+} // namespace
+
 std::vector<int> Triangulate(const Vec3* loop, int count, double noise)
 {
   std::vector<int> triangles;
@@ -190,65 +352,27 @@ std::vector<int> Triangulate(const Vec3* loop, int count, double noise)
     return triangles;
   }
   const Vec3 unit = Normalized(NewellVector(loop, count));
-  // Twice the signed area of corner b's triangle, positive where the loop turns left.
-  auto turn = [&](int a, int b, int c) { return Dot(unit, Cross(loop[b] - loop[a], loop[c] - loop[b])); };
+  std::vector<int> rest;
+  if (IsConvex(loop, count, noise))
+  {
+    for (int i = 0; i < count; ++i)
+    {
+      rest.push_back(i);
+    }
+  }
+  else
+  {
+    rest = EarClipper(loop, count, noise, unit).Run(triangles);
+  }
   // A corner whose triangle PolygonProblem would call zero area (three points in a line,
   // up to rounding) makes no triangle: it would only be rejected downstream.
-  auto flat = [&](int a, int b, int c) {
-    return std::fabs(turn(a, b, c)) <= StraightLimit(loop[a], loop[b], loop[c], noise);
-  };
-  auto emit = [&](int a, int b, int c) {
-    if (!flat(a, b, c))
-    {
-      triangles.insert(triangles.end(), { a, b, c });
-    }
-  };
-  std::vector<int> remaining(count);
-  for (int i = 0; i < count; ++i)
+  for (size_t i = 1; i + 1 < rest.size(); ++i)
   {
-    remaining[i] = i;
-  }
-  const bool convex = IsConvex(loop, count, noise);
-  auto inside = [&](int p, int a, int b, int c) {
-    return turn(a, b, p) >= 0 && turn(b, c, p) >= 0 && turn(c, a, p) >= 0;
-  };
-  while (!convex && remaining.size() > 3)
-  {
-    const int n = static_cast<int>(remaining.size());
-    int ear = -1, straight = -1;
-    for (int i = 0; i < n && ear < 0; ++i)
+    const Vec3 &a = loop[rest[0]], &b = loop[rest[i]], &c = loop[rest[i + 1]];
+    if (std::fabs(Dot(unit, Cross(b - a, c - b))) > StraightLimit(a, b, c, noise))
     {
-      const int a = remaining[(i + n - 1) % n], b = remaining[i], c = remaining[(i + 1) % n];
-      if (flat(a, b, c))
-      {
-        straight = i; // lies on its neighbours' edge: dropping it changes no area
-        continue;
-      }
-      if (turn(a, b, c) <= 0)
-      {
-        continue; // reflex corner: not an ear
-      }
-      bool empty = true;
-      for (int j = 0; j < n && empty; ++j)
-      {
-        const int p = remaining[j];
-        empty = p == a || p == b || p == c || !inside(p, a, b, c);
-      }
-      ear = empty ? i : -1;
+      triangles.insert(triangles.end(), { rest[0], rest[i], rest[i + 1] });
     }
-    if (ear < 0 && straight < 0)
-    {
-      break; // self-intersecting input: fan what is left rather than loop forever
-    }
-    if (ear >= 0)
-    {
-      emit(remaining[(ear + n - 1) % n], remaining[ear], remaining[(ear + 1) % n]);
-    }
-    remaining.erase(remaining.begin() + (ear >= 0 ? ear : straight));
-  }
-  for (size_t i = 1; i + 1 < remaining.size(); ++i)
-  {
-    emit(remaining[0], remaining[i], remaining[i + 1]);
   }
   return triangles;
 }
@@ -341,13 +465,28 @@ bool CrossesItself(const Vec3* loop, int count, const Vec3& newell, double exten
     flat[2 * i + 1] = loop[i][drop == 2 ? 1 : 2];
   }
   const double tolerance = 1e-9 * extent * extent;
+  // Two edges that cross overlap in x: swept in order of their left ends, each edge is
+  // held against those that start before it ends, not against every other edge (a
+  // 20,000-corner gear: 2e8 pairs).
+  auto low = [&](int i, int axis) { return std::min(flat[2 * i + axis], flat[2 * ((i + 1) % count) + axis]); };
+  auto high = [&](int i, int axis) { return std::max(flat[2 * i + axis], flat[2 * ((i + 1) % count) + axis]); };
+  std::vector<int> order(count);
   for (int i = 0; i < count; ++i)
   {
-    for (int j = i + 2; j < count; ++j)
+    order[i] = i;
+  }
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return low(a, 0) < low(b, 0); });
+  const double pad = 1e-9 * extent;
+  for (int k = 0; k < count; ++k)
+  {
+    const int i = order[k];
+    for (int m = k + 1; m < count && low(order[m], 0) <= high(i, 0) + pad; ++m)
     {
-      if (i == 0 && j == count - 1)
+      const int j = order[m];
+      const bool neighbours = (i + 1) % count == j || (j + 1) % count == i;
+      if (neighbours || low(j, 1) > high(i, 1) + pad || low(i, 1) > high(j, 1) + pad)
       {
-        continue; // neighbours through the closing edge
+        continue;
       }
       if (SegmentsMeet(&flat[2 * i], &flat[2 * ((i + 1) % count)], &flat[2 * j], &flat[2 * ((j + 1) % count)], tolerance))
       {

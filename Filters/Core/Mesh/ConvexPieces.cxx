@@ -1,8 +1,10 @@
 #include "Mesh/ConvexPieces.h"
+#include "Geometry/CornerGrid.h"
 #include "Geometry/Polygon.h"
 
 #include <cmath>
 #include <map>
+#include <memory>
 #include <numeric>
 #include <set>
 
@@ -101,12 +103,12 @@ private:
     {
       return kNoEar;
     }
-    for (int r : ReflexList)
+    if (ReflexGrid->Any(a, b, c, [&](int r) {
+          return Alive[r] && Reflex[r] && r != a && r != c && Turn(a, b, r) >= 0 && Turn(b, c, r) >= 0 &&
+            Turn(c, a, r) >= 0;
+        }))
     {
-      if (Alive[r] && Reflex[r] && r != a && r != c && Turn(a, b, r) >= 0 && Turn(b, c, r) >= 0 && Turn(c, a, r) >= 0)
-      {
-        return kNoEar; // a reflex corner inside: cutting it off would leave the loop
-      }
+      return kNoEar; // a reflex corner inside: cutting it off would leave the loop
     }
     const double turn = Turn(a, b, c);
     if (!(turn > 0) || !(Scale > 0))
@@ -137,6 +139,7 @@ private:
     if (Reflex[b] && !IsReflex(b))
     {
       Reflex[b] = 0;
+      ReflexGrid->Remove(b);
       --Reflexes;
     }
     SetKey(b, EarKey(b));
@@ -157,6 +160,7 @@ private:
         ++Reflexes;
       }
     }
+    ReflexGrid = std::make_unique<CornerGrid>(Loop.data(), static_cast<int>(Loop.size()), Unit, ReflexList);
     for (size_t b = 0; b < Loop.size(); ++b)
     {
       if (Alive[b])
@@ -174,6 +178,7 @@ private:
   std::vector<char> Alive, Reflex;
   std::vector<double> Key;
   std::vector<int> ReflexList;
+  std::unique_ptr<CornerGrid> ReflexGrid; ///< the reflex corners, where EarKey looks for them
   int Reflexes = 0;
   std::set<std::pair<double, int>> Ears;
 };
@@ -208,7 +213,7 @@ std::vector<int> Merged(const std::vector<int>& p, const std::vector<int>& q, in
   return first;
 }
 
-bool Convex(const std::vector<Vec3>& loop, const std::vector<int>& piece, double noise)
+std::vector<Vec3> Corners(const std::vector<Vec3>& loop, const std::vector<int>& piece)
 {
   std::vector<Vec3> corners;
   corners.reserve(piece.size());
@@ -216,7 +221,33 @@ bool Convex(const std::vector<Vec3>& loop, const std::vector<int>& piece, double
   {
     corners.push_back(loop[i]);
   }
+  return corners;
+}
+
+bool Convex(const std::vector<Vec3>& loop, const std::vector<int>& piece, double noise)
+{
+  const std::vector<Vec3> corners = Corners(loop, piece);
   return IsConvex(corners.data(), static_cast<int>(corners.size()), noise);
+}
+
+/// True when a union of two convex pieces (Merged: the first's corners, `firstSize` of
+/// them, then the second's between the diagonal's ends) turns back at a diagonal's end by
+/// far more than IsConvex allows: then it is not convex, which IsConvex would find only
+/// after a walk round the whole union (quadratic where a gear's teeth meet its disk).
+bool ClearlyBentBack(const std::vector<Vec3>& loop, const std::vector<int>& merged, size_t firstSize,
+  const Vec3& newell, double noise)
+{
+  const Vec3 unit = Normalized(newell);
+  const size_t n = merged.size();
+  for (const size_t at : { size_t(0), firstSize - 1 }) // the diagonal's ends
+  {
+    const Vec3 &a = loop[merged[(at + n - 1) % n]], &b = loop[merged[at]], &c = loop[merged[(at + 1) % n]];
+    if (Dot(unit, Cross(b - a, c - b)) < -2 * StraightLimit(a, b, c, noise) - 1e-9 * Norm(Cross(b - a, c - b)))
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 /// Hertel & Mehlhorn: each piece merged with its neighbour across a shared edge where the
@@ -230,6 +261,11 @@ void MergeAcrossDiagonals(const std::vector<Vec3>& loop, double noise, std::vect
     {
       sideOf[{ pieces[t][k], pieces[t][(k + 1) % pieces[t].size()] }] = t;
     }
+  }
+  std::vector<Vec3> newell(pieces.size()); // of each piece: a union's is the sum
+  for (size_t t = 0; t < pieces.size(); ++t)
+  {
+    newell[t] = NewellVector(Corners(loop, pieces[t]).data(), static_cast<int>(pieces[t].size()));
   }
   std::vector<int> owner(pieces.size());
   std::iota(owner.begin(), owner.end(), 0);
@@ -249,10 +285,12 @@ void MergeAcrossDiagonals(const std::vector<Vec3>& loop, double noise, std::vect
     }
     const int p = find(t), q = find(other->second);
     std::vector<int> merged = p == q ? std::vector<int>() : Merged(pieces[p], pieces[q], edge.first, edge.second);
-    if (!merged.empty() && Convex(loop, merged, noise))
+    if (!merged.empty() && !ClearlyBentBack(loop, merged, pieces[p].size(), newell[p] + newell[q], noise) &&
+      Convex(loop, merged, noise))
     {
       pieces[p].swap(merged);
       pieces[q].clear();
+      newell[p] += newell[q];
       owner[q] = p;
     }
   }

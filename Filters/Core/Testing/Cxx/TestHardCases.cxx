@@ -272,6 +272,57 @@ TEST(HardDegenerate, NonConvexPolygonIsTriangulatedNotFanned)
   EXPECT_NEAR(c.y, 5.0 / 6.0, 1e-12);
 }
 
+// Polygons of many corners (CAD circles, gears, scanned outlines): ear clipping asks only
+// the corners near each ear (CornerGrid) and the self-crossing check only the edges that
+// overlap (a sweep), where both used to ask every corner and edge. Checked against what
+// any valid answer must be: the triangles tile the polygon (area, orientation, no corner
+// strictly inside one), and a loop that crosses itself is still found among thousands.
+TEST(HardDegenerate, PolygonsOfManyCornersTriangulateAndCheckExactly)
+{
+  std::mt19937 random(4);
+  std::uniform_real_distribution<double> jitter(0.4, 1.0);
+  const Vec3 axis = Normalized({ 0.3, 0.8, 0.2 });
+  const Vec3 u = Normalized(Cross(axis, { 1, 0, 0 })), v = Cross(axis, u);
+  const double pi = 3.14159265358979;
+  for (const int corners : { 2000, 20000 })
+  {
+    std::vector<Vec3> loop;
+    for (int i = 0; i < corners; ++i)
+    {
+      // A star of random spikes, a gear at 20,000; every fifth corner on the rim exactly.
+      const double r = corners == 20000 ? 1 - 0.05 * (i % 2) : (i % 5 == 0 ? 1.0 : jitter(random));
+      const double t = 2 * pi * i / corners;
+      loop.push_back(Vec3{ 5, -3, 2 } + u * (r * std::cos(t)) + v * (r * std::sin(t)));
+    }
+    const int n = static_cast<int>(loop.size());
+    ASSERT_EQ(PolygonProblem(loop.data(), n), "") << corners;
+    const std::vector<int> tri = Triangulate(loop.data(), n);
+    ASSERT_EQ(tri.size(), 3u * (n - 2)) << corners;
+    double area = 0;
+    for (size_t k = 0; k < tri.size(); k += 3)
+    {
+      const Vec3 &a = loop[tri[k]], &b = loop[tri[k + 1]], &c = loop[tri[k + 2]];
+      const double twice = Dot(axis, Cross(b - a, c - b));
+      ASSERT_GT(twice, 0) << corners << ": triangle " << k / 3 << " turned over";
+      area += 0.5 * twice;
+      if (corners == 2000)
+      {
+        for (int p = 0; p < n; ++p)
+        {
+          const double margin = 1e-9 * twice;
+          const bool strictly = Dot(axis, Cross(b - a, loop[p] - b)) > margin &&
+            Dot(axis, Cross(c - b, loop[p] - c)) > margin && Dot(axis, Cross(a - c, loop[p] - a)) > margin;
+          ASSERT_FALSE(strictly) << "corner " << p << " inside triangle " << k / 3;
+        }
+      }
+    }
+    EXPECT_NEAR(area, PolygonArea(loop.data(), n), 1e-9 * area) << corners;
+    // The corner half way round pulled across to the far side: its edges cross the loop.
+    loop[n / 2] = Vec3{ 5, -3, 2 } + u * 1.5;
+    EXPECT_NE(PolygonProblem(loop.data(), n).find("crosses itself"), std::string::npos) << corners;
+  }
+}
+
 // A non-convex polygon with corners in a line (a wall's outline from a real model, the
 // FZK-Haus: a long edge split by a vertex 1 mm from its end), turned and scaled so that
 // rounding leaves the straight corner a hair off the line. Ear clipping must not cut it
