@@ -65,12 +65,25 @@ std::vector<int> SurfaceKeys(const radiosity::SceneMesh& mesh, const std::vector
   return surfaceKey;
 }
 
+/// 1 for each cell that emits: of coincident copies in other materials the lamp is kept.
+std::vector<char> Lamps(const radiosity::SceneMesh& mesh, const std::vector<radiosity::Vec3>& emission)
+{
+  std::vector<char> lamps(mesh.NumberOfPolygons(), 0);
+  for (size_t i = 0; i < lamps.size(); ++i)
+  {
+    const bool lit = i < emission.size() && (emission[i].x > 0 || emission[i].y > 0 || emission[i].z > 0);
+    lamps[i] = lit || (i < mesh.LightId.size() && mesh.LightId[i] >= 0);
+  }
+  return lamps;
+}
+
 } // namespace
 
 struct vtkRadiosityMesher::Polygons
 {
   radiosity::SceneMesh Mesh;
   std::vector<int> SurfaceKey; ///< as meshing keys them (triangle pairs join within one)
+  std::vector<char> Lamps;
 };
 
 vtkRadiosityMesher::vtkRadiosityMesher()
@@ -100,6 +113,7 @@ double vtkRadiosityMesher::EstimateElements(double patchSize, double elementSize
   radiosity::MesherOptions options;
   options.MergeTriangles = this->MergeTriangles;
   options.PointQuantum = mesh.PointQuantum;
+  options.Lamps = this->SeenInput->Lamps;
   const radiosity::ElementCounter count(mesh.Points, mesh.Offsets, mesh.Connectivity, this->SeenInput->SurfaceKey, options);
   return count(sizes.first, sizes.second);
 }
@@ -150,11 +164,13 @@ void vtkRadiosityMesher::SuggestFor(vtkDataSet* given)
     // Without valid arrays the mesher will refuse the input; the estimate then pairs all.
     vtkRadiosityAdapter::ReadSceneArrays(input, mesh, emission, error);
     this->SeenInput->SurfaceKey = SurfaceKeys(mesh, emission);
+    this->SeenInput->Lamps = Lamps(mesh, emission);
   }
   else
   {
     mesh = radiosity::SceneMesh();
     this->SeenInput->SurfaceKey.clear();
+    this->SeenInput->Lamps.clear();
   }
   this->SuggestedPatchSize = sizes.PatchSize;
   this->SuggestedElementSize = sizes.ElementSize;
@@ -200,6 +216,7 @@ std::string MeshPiece(vtkRadiosityMesher* self, vtkPolyData* input, double eleme
   options.ClusterAngle = self->GetClusterAngle();
   options.WholeScene = whole.Polygons;
   options.PointQuantum = std::max(mesh.PointQuantum, whole.PointQuantum);
+  options.Lamps = Lamps(mesh, emission);
   const vtkRadiosityAbortWatch abort(self);
   options.Progress = [self, abort](double f) {
     self->UpdateProgress(f);
@@ -225,6 +242,7 @@ double ElementSizeEverywhere(vtkRadiosityMesher* self, vtkMultiProcessController
   options.WholeScene = whole.Polygons;
   options.PointQuantum = std::max(mesh.PointQuantum, whole.PointQuantum);
   const std::vector<int> keys = usable ? SurfaceKeys(mesh, emission) : std::vector<int>();
+  options.Lamps = usable ? Lamps(mesh, emission) : std::vector<char>();
   const radiosity::ElementCounter counter(mesh.Points, mesh.Offsets, mesh.Connectivity, keys, options);
   auto count = [&](double size) {
     const double here = usable ? counter(self->GetPatchSizeInUse(), size) : 0;

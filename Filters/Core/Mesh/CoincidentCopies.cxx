@@ -35,30 +35,46 @@ std::vector<long long> Key(const std::vector<Vec3>& points, const int* ids, int 
 }
 } // namespace
 
-CoincidentCopies DropCoincidentCopies(
-  const std::vector<Vec3>& points, const std::vector<int>& surfaceKey, double tolerance, PairedPolygons& polygons)
+CoincidentCopies DropCoincidentCopies(const std::vector<Vec3>& points, const std::vector<int>& surfaceKey,
+  const std::vector<char>& lamps, double tolerance, PairedPolygons& polygons)
 {
-  CoincidentCopies found;
-  std::map<std::vector<long long>, int> first; // key -> polygon kept
-  PairedPolygons kept;
-  kept.Merged = polygons.Merged;
-  for (size_t i = 0; i < polygons.Source.size(); ++i)
+  const auto surface = [&](int s) { return s < static_cast<int>(surfaceKey.size()) ? surfaceKey[s] : 0; };
+  const auto lamp = [&](int s) { return s < static_cast<int>(lamps.size()) && lamps[s]; };
+  // The polygon kept of each set of copies: the first lamp, else the first.
+  const size_t count = polygons.Source.size();
+  std::map<std::vector<long long>, size_t> chosen; // key -> polygon kept
+  std::vector<std::map<std::vector<long long>, size_t>::iterator> set(count);
+  for (size_t i = 0; i < count; ++i)
   {
     const int* ids = polygons.Connectivity.data() + polygons.Offsets[i];
-    const int count = polygons.Offsets[i + 1] - polygons.Offsets[i];
-    const int source = polygons.Source[i];
-    const auto [at, isNew] = first.emplace(Key(points, ids, count, tolerance), source);
-    const auto surface = [&](int s) { return s < static_cast<int>(surfaceKey.size()) ? surfaceKey[s] : 0; };
-    if (!isNew && surface(at->second) == surface(source))
+    const auto [at, isNew] =
+      chosen.emplace(Key(points, ids, polygons.Offsets[i + 1] - polygons.Offsets[i], tolerance), i);
+    if (!isNew && lamp(polygons.Source[i]) && !lamp(polygons.Source[at->second]))
     {
-      found.Dropped.push_back(source);
+      at->second = i;
+    }
+    set[i] = at;
+  }
+  CoincidentCopies found;
+  PairedPolygons kept;
+  kept.Merged = polygons.Merged;
+  for (size_t i = 0; i < count; ++i)
+  {
+    const int source = polygons.Source[i], keeper = polygons.Source[set[i]->second];
+    if (set[i]->second != i)
+    {
+      if (surface(keeper) == surface(source))
+      {
+        found.Dropped.push_back(source);
+      }
+      else
+      {
+        found.Differing.emplace_back(keeper, source);
+      }
       continue;
     }
-    if (!isNew)
-    {
-      found.Differing.emplace_back(at->second, source);
-    }
-    kept.Connectivity.insert(kept.Connectivity.end(), ids, ids + count);
+    kept.Connectivity.insert(kept.Connectivity.end(), polygons.Connectivity.data() + polygons.Offsets[i],
+      polygons.Connectivity.data() + polygons.Offsets[i + 1]);
     kept.Offsets.push_back(static_cast<int>(kept.Connectivity.size()));
     kept.Source.push_back(source);
   }

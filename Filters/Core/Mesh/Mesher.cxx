@@ -431,7 +431,7 @@ PairedPolygons Paired(const std::vector<Vec3>& points, const std::vector<int>& o
     polygons.Source.push_back(static_cast<int>(i));
   }
   const double tolerance = 1e-7 * std::max(Bounds(points).Diagonal(), 1e-300);
-  const CoincidentCopies found = DropCoincidentCopies(points, surfaceKey, tolerance, polygons);
+  const CoincidentCopies found = DropCoincidentCopies(points, surfaceKey, options.Lamps, tolerance, polygons);
   if (copies)
   {
     *copies = found;
@@ -517,8 +517,9 @@ void WarnAboutCopies(const CoincidentCopies& copies, const MesherOptions& option
   {
     const std::pair<int, int>& p = copies.Differing.front();
     options.Warning(Counted(copies.Differing.size(), "pair of cells coincides", "pairs of cells coincide") + " with different materials or lights (cells " +
-      std::to_string(p.first) + " and " + std::to_string(p.second) +
-      " first): both kept, and each receives the full light; remove one of each pair");
+      std::to_string(p.first) + " and " + std::to_string(p.second) + " first): cell " + std::to_string(p.second) +
+      " left out, as each copy would receive the full light (a lamp is kept over the surface it doubles, else the "
+      "earlier cell); remove the one you do not mean");
   }
 }
 } // namespace

@@ -37,6 +37,9 @@ struct MesherOptions
   /// The whole scene where the polygons are one process's piece of it: surfaces of other
   /// pieces standing on these cut them too (see ContactCuts.h). Null: the polygons are all.
   const PolygonArrays* WholeScene = nullptr;
+  /// Per input polygon, 1 where it emits (empty: none does). Of coincident copies in other
+  /// materials one is kept (CoincidentCopies.h): a lamp over the surface it doubles.
+  std::vector<char> Lamps;
   std::function<bool(double)> Progress; ///< return false to abort
   /// Told, before meshing, when the budget changed the element size or the mesh is huge.
   std::function<void(const std::string&)> Warning;

@@ -1,6 +1,7 @@
 // Coplanar faces of one surface that overlap: the later is cut to what the earlier leave;
-// those of two surfaces are said, not cut.
+// those of two surfaces are said, not cut. Of coincident copies one is kept.
 // Reference: the exact area of the faces' union, and their own corners where nothing overlaps.
+#include "Mesh/CoincidentCopies.h"
 #include "Mesh/OverlapCuts.h"
 #include "Geometry/Polygon.h"
 
@@ -159,4 +160,34 @@ TEST(OverlapCuts, AFanOfNeighboursIsNotCutAndTakesLittleTime)
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_TRUE(cuts.Trimmed.empty() && cuts.Covered.empty());
   std::printf("fan of %d triangles: %.2f s\n", n, seconds); // printed, not asserted
+}
+
+TEST(CoincidentCopies, OneOfEachSetIsKeptALampOverTheSurfaceItDoubles)
+{
+  // A ceiling tile drawn three times (CAD and BIM exports repeat faces): the same material
+  // twice, another once. Each copy would receive the full light: one is kept, the earlier.
+  Faces f;
+  f.Rectangle(0, 1, 0, 1, 0);
+  f.Rectangle(0, 1, 0, 1, 0);
+  f.Add({ { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 0, 0, 0 } }, 1); // the same corners from another start
+  f.Rectangle(2, 3, 0, 1, 1);                                      // elsewhere: not a copy
+  PairedPolygons copies = f.polygons;
+  CoincidentCopies found = DropCoincidentCopies(f.points, f.keys, {}, 1e-9, copies);
+  EXPECT_EQ(copies.Source, (std::vector<int>{ 0, 3 }));
+  EXPECT_EQ(found.Dropped, std::vector<int>{ 1 });
+  EXPECT_EQ(found.Differing, (std::vector<std::pair<int, int>>{ { 0, 2 } }));
+  // The third copy a lamp (a lamp panel drawn over the tile it replaces): the lamp is kept,
+  // the tiles before it left out, so the lamp still shines and nothing is lit twice.
+  copies = f.polygons;
+  found = DropCoincidentCopies(f.points, f.keys, { 0, 0, 1, 0 }, 1e-9, copies);
+  EXPECT_EQ(copies.Source, (std::vector<int>{ 2, 3 }));
+  EXPECT_TRUE(found.Dropped.empty());
+  EXPECT_EQ(found.Differing, (std::vector<std::pair<int, int>>{ { 2, 0 }, { 2, 1 } }));
+  // The facing side tells copies apart: the tile turned over is a face of its own.
+  Faces g;
+  g.Rectangle(0, 1, 0, 1, 0);
+  g.Add({ { 0, 0, 0 }, { 0, 1, 0 }, { 1, 1, 0 }, { 1, 0, 0 } }, 1);
+  found = DropCoincidentCopies(g.points, g.keys, {}, 1e-9, g.polygons);
+  EXPECT_EQ(g.polygons.Source, (std::vector<int>{ 0, 1 }));
+  EXPECT_TRUE(found.Differing.empty());
 }
