@@ -3,8 +3,9 @@
  * @brief   the lights' settings: color, intensity and on/off by index or by name, and a schedule
  *
  * One object holds what a user sets about the lights, and the relight filter, the GPU mapper
- * and ParaView's Relit Surface read it: a new light setting is added here (and to the core's
- * radiosity::LightRig, which resolves it), nowhere else. Share one object between a filter
+ * and ParaView's Relit Surface read it: a new light setting is added here and to the core's
+ * radiosity::LightRig, which resolves it (a new column of the per-light row also where the
+ * row is read and written: docs/design.md lists them). Share one object between a filter
  * and a mapper (SetLights) and both follow the same changes.
  *
  * Precedence, as the core resolves it: each light's default (from the solver's output),

@@ -77,6 +77,22 @@ std::vector<char> Lamps(const radiosity::SceneMesh& mesh, const std::vector<radi
   return lamps;
 }
 
+/// The mesher's options as this filter's properties set them, for `mesh` (its lamps, and
+/// on MPI `whole`, the whole scene's polygons, with the float noise of the whole): the one
+/// place they are made, so the panel's estimate, the element budget and the mesh agree.
+radiosity::MesherOptions OptionsFor(vtkRadiosityMesher* self, const radiosity::SceneMesh& mesh,
+  std::vector<char> lamps, const radiosity::PolygonArrays* whole = nullptr, double wholeQuantum = 0)
+{
+  radiosity::MesherOptions options;
+  options.MergeTriangles = self->GetMergeTriangles();
+  options.SharePatches = self->GetSharePatches();
+  options.ClusterAngle = self->GetClusterAngle();
+  options.WholeScene = whole;
+  options.PointQuantum = std::max(mesh.PointQuantum, wholeQuantum);
+  options.Lamps = std::move(lamps);
+  return options;
+}
+
 } // namespace
 
 struct vtkRadiosityMesher::Polygons
@@ -110,10 +126,7 @@ double vtkRadiosityMesher::EstimateElements(double patchSize, double elementSize
   }
   const radiosity::SceneMesh& mesh = this->SeenInput->Mesh;
   const auto sizes = radiosity::SizesInUse(patchSize, elementSize, this->SuggestedPatchSize);
-  radiosity::MesherOptions options;
-  options.MergeTriangles = this->MergeTriangles;
-  options.PointQuantum = mesh.PointQuantum;
-  options.Lamps = this->SeenInput->Lamps;
+  const radiosity::MesherOptions options = OptionsFor(this, mesh, this->SeenInput->Lamps);
   const radiosity::ElementCounter count(mesh.Points, mesh.Offsets, mesh.Connectivity, this->SeenInput->SurfaceKey, options);
   return count(sizes.first, sizes.second);
 }
@@ -206,17 +219,11 @@ std::string MeshPiece(vtkRadiosityMesher* self, vtkPolyData* input, double eleme
 
   const std::vector<int> surfaceKey = SurfaceKeys(mesh, emission);
 
-  radiosity::MesherOptions options;
+  radiosity::MesherOptions options = OptionsFor(self, mesh, Lamps(mesh, emission), whole.Polygons, whole.PointQuantum);
   options.PatchSize = self->GetPatchSizeInUse();
   options.ElementSize = elementSize;
   options.ElementBudget = budget;
   options.Warning = [self, &warnings](const std::string& message) { warnings.Add(self, message); };
-  options.MergeTriangles = self->GetMergeTriangles();
-  options.SharePatches = self->GetSharePatches();
-  options.ClusterAngle = self->GetClusterAngle();
-  options.WholeScene = whole.Polygons;
-  options.PointQuantum = std::max(mesh.PointQuantum, whole.PointQuantum);
-  options.Lamps = Lamps(mesh, emission);
   const vtkRadiosityAbortWatch abort(self);
   options.Progress = [self, abort](double f) {
     self->UpdateProgress(f);
@@ -237,12 +244,9 @@ double ElementSizeEverywhere(vtkRadiosityMesher* self, vtkMultiProcessController
     vtkRadiosityAdapter::CopyPolygons(input, mesh, error) &&
     vtkRadiosityAdapter::ReadSceneArrays(input, mesh, emission, error);
   // Counted as the rank will mesh its piece: triangle pairs merged, contacts cut.
-  radiosity::MesherOptions options;
-  options.MergeTriangles = self->GetMergeTriangles();
-  options.WholeScene = whole.Polygons;
-  options.PointQuantum = std::max(mesh.PointQuantum, whole.PointQuantum);
+  const radiosity::MesherOptions options =
+    OptionsFor(self, mesh, usable ? Lamps(mesh, emission) : std::vector<char>(), whole.Polygons, whole.PointQuantum);
   const std::vector<int> keys = usable ? SurfaceKeys(mesh, emission) : std::vector<int>();
-  options.Lamps = usable ? Lamps(mesh, emission) : std::vector<char>();
   const radiosity::ElementCounter counter(mesh.Points, mesh.Offsets, mesh.Connectivity, keys, options);
   auto count = [&](double size) {
     const double here = usable ? counter(self->GetPatchSizeInUse(), size) : 0;

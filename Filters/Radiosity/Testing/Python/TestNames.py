@@ -149,6 +149,11 @@ check(all(n in guide for n in table.values()), "docs/design.md names every solve
 hints = [f.get("extensions") for f in root.iter("ReaderFactory")]
 check(hints == [relight.vtkRadiositySceneReader.GetFileExtensions()],
       f"the XML's reader hint {hints} lists the reader's extensions {relight.vtkRadiositySceneReader.GetFileExtensions()!r}")
+# The first row of the format table that lists an extension reads it: one listed in two
+# rows would leave a new reader unused, or take its files from the old one, silently.
+extensions = relight.vtkRadiositySceneReader.GetFileExtensions().split()
+check(len(extensions) == len(set(extensions)),
+      f"no extension is in two rows of the format table: {sorted(e for e in set(extensions) if extensions.count(e) > 1)}")
 
 rows = setting_rows(SETTINGS)
 check(len(rows) == 7, f"docs/settings.md's table has {len(rows)} rows, expected 7")
