@@ -486,16 +486,9 @@ vtkStringArray* vtkRadiosityRelight::GetLightNames()
 vtkStringArray* vtkRadiosityRelight::GetLightSettingsInfo()
 {
   this->SettingsInfo = vtkSmartPointer<vtkStringArray>::New();
-  const auto number = [](double value) {
-    char text[32];
-    std::snprintf(text, sizeof(text), "%.9g", value);
-    return std::string(text);
-  };
   for (int l = 0; l < this->GetNumberOfLights(); ++l)
   {
-    const radiosity::LightSetting& s = this->Internal->Effective[l];
-    for (const std::string& item : { this->Internal->Names[l], number(s.Color.x), number(s.Color.y),
-           number(s.Color.z), number(s.Intensity), std::string(s.Enabled ? "1" : "0") })
+    for (const std::string& item : radiosity::SettingRow(this->Internal->Names[l], this->Internal->Effective[l]))
     {
       this->SettingsInfo->InsertNextValue(item);
     }

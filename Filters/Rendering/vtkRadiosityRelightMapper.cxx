@@ -113,13 +113,6 @@ std::vector<radiosity::Vec3> DefaultColors(vtkPolyData* data, size_t k)
   return colors;
 }
 
-std::string Number(double value)
-{
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.9g", value);
-  return text;
-}
-
 } // namespace
 
 vtkRadiosityRelightMapper::vtkRadiosityRelightMapper()
@@ -272,10 +265,8 @@ void vtkRadiosityRelightMapper::DescribeLights(vtkPolyData* data, vtkStringArray
   }
   for (size_t l = 0; l < lights.size(); ++l)
   {
-    const radiosity::LightSetting& s = effective[l];
     names->InsertNextValue(lights[l]);
-    for (const std::string& item : { lights[l], Number(s.Color.x), Number(s.Color.y), Number(s.Color.z),
-           Number(s.Intensity), std::string(s.Enabled ? "1" : "0") })
+    for (const std::string& item : radiosity::SettingRow(lights[l], effective[l]))
     {
       settings->InsertNextValue(item);
     }

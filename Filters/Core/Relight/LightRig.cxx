@@ -1,4 +1,6 @@
 #include "Relight/LightRig.h"
+
+#include <cstdio>
 #include "Base/Text.h"
 
 #include <algorithm>
@@ -108,6 +110,17 @@ void LightRig::SetByName(const std::string& name, const Vec3& color, double inte
   s.Color = color;
   s.Intensity = intensity;
   s.Enabled = enabled;
+}
+
+std::vector<std::string> SettingRow(const std::string& name, const LightSetting& setting)
+{
+  const auto number = [](double value) {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.9g", value);
+    return std::string(text);
+  };
+  return { name, number(setting.Color.x), number(setting.Color.y), number(setting.Color.z),
+    number(setting.Intensity), setting.Enabled ? "1" : "0" };
 }
 
 bool ParseKeyframe(const std::vector<std::string>& cells, LightKeyframe& key)

@@ -32,6 +32,11 @@ struct LightSetting
 /// and NaN would silently blank the picture.
 std::string InvalidLightValues(double intensity, const Vec3& color);
 
+/// A light's setting as the row ParaView's LightSettings and LightSettingsInfo hold: name,
+/// r, g, b, intensity, enabled ("1"/"0"), numbers to 9 significant digits. The filter's and
+/// the mapper's read-back both write it here, so a new column is added once.
+std::vector<std::string> SettingRow(const std::string& name, const LightSetting& setting);
+
 /// A keyframe of the schedule: the light by name, or by index written as a number.
 struct LightKeyframe
 {
