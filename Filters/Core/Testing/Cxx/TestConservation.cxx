@@ -3,6 +3,7 @@
 // rule near the lamp once delivered 113.6 % of its power, and a closed room at rho = 0.999
 // (with the ambient term asked for, and at the defaults).
 #include "Solve/LightSolutions.h"
+#include "Solve/SolverMethods.h"
 #include "SceneBuilders.h"
 
 #include <gtest/gtest.h>
@@ -166,5 +167,27 @@ TEST(Conservation, LampRoomAtRhoNearOneNeverGains)
     {
       ASSERT_LE(history[i], history[i - 1] * (1 + 1e-12)) << "unshot energy rose at shot " << i;
     }
+  }
+}
+
+TEST(Conservation, EveryMethodOfTheTableRunsAsItselfAndLosesNoLight)
+{
+  // Each row of SolverMethodTable() (a new method is one more row): asked for by name it
+  // runs, says so (Statistics.Method: the default names progressive refinement), converges,
+  // and in the closed lamp room the surfaces absorb what the lamp emits, no more (a little
+  // less: what reaches the lamp's back, which neither reflects nor absorbs, is lost).
+  const SceneMesh mesh = LampRoom(0.5);
+  const RadiositySolver solver(mesh);
+  for (const MethodEntry& entry : SolverMethodTable())
+  {
+    SolverOptions options = Converged(1e-6);
+    options.Solver = entry.Method;
+    const Solution s = SolveLights(solver, mesh, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, options);
+    const double absorbed = radiosity_test::AbsorbedPower(mesh, s) / (3 * 0.04); // three channels summed
+    std::printf("%s: absorbed %.5f of the lamp's power\n", entry.Name, absorbed);
+    EXPECT_EQ(s.Statistics.Method, entry.Method) << entry.Name;
+    EXPECT_TRUE(s.Statistics.Converged) << entry.Name;
+    EXPECT_LE(absorbed, 1.0 + 1e-6) << entry.Name;
+    EXPECT_GT(absorbed, 0.95) << entry.Name;
   }
 }
