@@ -28,12 +28,12 @@ enum class EffectMode
   Off = 2
 };
 
-/// How the transport is organised. Both shoot from patches in order of unshot power and
-/// carry every solution along each evaluation (light tagging).
+/// How the transport is organised. Every method carries all solutions along each
+/// evaluation (light tagging); the table of methods is SolverMethodTable() (SolverMethods.h).
 enum class SolverMethod
 {
-  /// Hierarchical where its links pay (many elements, or many patches: a curved model),
-  /// otherwise progressive; SolverStatistics::MethodReason says which measure decided.
+  /// The method its estimated cost says is fastest for the scene (MethodCost.h: elements,
+  /// patches and the pairs too near to group); SolverStatistics::MethodReason says why.
   Auto = 0,
   /// Every shot evaluates a form factor to every element: cost shots x elements.
   ProgressiveRefinement = 1,
