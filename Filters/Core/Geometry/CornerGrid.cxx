@@ -16,17 +16,21 @@ CornerGrid::CornerGrid(const Vec3* loop, int count, const Vec3& unitNormal, cons
   const Vec3 axisV = Cross(unitNormal, axisU);
   double maxU = -1e300, maxV = -1e300;
   MinU = MinV = 1e300;
+  // From a corner, not the origin: far along the normal, a dot product with the whole
+  // coordinate rounds by more than the pad, and a corner inside an ear fell in a cell
+  // the ear did not visit (a loop 1e8 times its size off the origin, turned).
+  const Vec3 origin = count > 0 ? loop[0] : Vec3();
   for (int i = 0; i < count; ++i)
   {
-    U[i] = Dot(axisU, loop[i]);
-    V[i] = Dot(axisV, loop[i]);
+    U[i] = Dot(axisU, loop[i] - origin);
+    V[i] = Dot(axisV, loop[i] - origin);
     MinU = std::min(MinU, U[i]);
     MinV = std::min(MinV, V[i]);
     maxU = std::max(maxU, U[i]);
     maxV = std::max(maxV, V[i]);
   }
   const double width = std::max(maxU - MinU, maxV - MinV);
-  if (std::isfinite(width) && width > 0)
+  if (std::isfinite(width) && width > 1e-300)
   {
     // About one member a cell.
     const double side = std::ceil(std::sqrt(static_cast<double>(std::max<size_t>(members.size(), 1))));

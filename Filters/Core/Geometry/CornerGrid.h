@@ -21,9 +21,9 @@ public:
   void Remove(int corner);
 
   /// Calls `test` on every member whose projection lies in a cell that triangle a-b-c
-  /// (padded far beyond rounding) crosses, until it returns true: a superset of the corners
-  /// the caller's inside test can accept, so the answer is the one a test of every corner
-  /// gives. Row by row, the cells under the triangle only: a long sliver across a ring of
+  /// (padded far beyond rounding) crosses, until it returns true: for a triangle that turns
+  /// left (an ear), a superset of the corners the caller's inside test can accept, so the
+  /// answer is the one a test of every corner gives. Row by row, the cells under the triangle only: a long sliver across a ring of
   /// corners (ear clipping's fan) does not visit every corner in its bounding box.
   template <typename Test>
   bool Any(int a, int b, int c, const Test& test) const

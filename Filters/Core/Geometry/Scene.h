@@ -18,7 +18,7 @@ namespace radiosity
 struct SceneMesh
 {
   std::vector<Vec3> Points;
-  std::vector<int> Offsets{ 0 }; ///< polygon i uses connectivity[offsets[i], offsets[i+1])
+  std::vector<int> Offsets{ 0 }; ///< polygon i uses Connectivity[Offsets[i], Offsets[i+1])
   std::vector<int> Connectivity;
   std::vector<Vec3> Reflectance; ///< per polygon, RGB in [0, 1]
   std::vector<int> LightId;      ///< per polygon, -1 or 0..k-1

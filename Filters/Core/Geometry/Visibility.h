@@ -39,7 +39,7 @@ public:
   {
     int Polygon = -1;
     int Corner[3] = { -1, -1, -1 }; ///< point ids of the hit triangle
-    double U = 0, V = 0;            ///< weights of corner[1] and corner[2]
+    double U = 0, V = 0;            ///< weights of Corner[1] and Corner[2]
     double Distance = 0;            ///< from the origin, in world units
   };
   bool Intersect(const Vec3& origin, const Vec3& direction, Hit& hit) const;

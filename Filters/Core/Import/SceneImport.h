@@ -28,8 +28,8 @@ struct RawScene
   std::vector<Vec3> Points;
   std::vector<int> Offsets{ 0 };
   std::vector<int> Connectivity;
-  std::vector<int> Material; ///< per polygon: index into materials, or -1 for none
-  std::vector<int> Object;   ///< per polygon: index into objectNames, or -1
+  std::vector<int> Material; ///< per polygon: index into Materials, or -1 for none
+  std::vector<int> Object;   ///< per polygon: index into ObjectNames, or -1
   std::vector<Vec3> Color;  ///< per polygon, multiplies its material's diffuse; empty: none
   std::vector<ImportMaterial> Materials;
   std::vector<std::string> ObjectNames;

@@ -61,7 +61,13 @@ CoincidentCopies DropCoincidentCopies(const std::vector<Vec3>& points, const std
   for (size_t i = 0; i < count; ++i)
   {
     const int source = polygons.Source[i], keeper = polygons.Source[set[i]->second];
-    if (set[i]->second != i)
+    // Two lamps of different lights: both stay (one would be a light lost), and are said.
+    const bool otherLamp = lamp(source) && lamp(keeper) && surface(keeper) != surface(source);
+    if (otherLamp)
+    {
+      found.LampsKept.emplace_back(keeper, source);
+    }
+    if (set[i]->second != i && !otherLamp)
     {
       if (surface(keeper) == surface(source))
       {

@@ -23,6 +23,9 @@ struct CoincidentCopies
   /// create energy: the first lamp of the copies is kept (a lamp drawn over the ceiling tile
   /// it replaces), else the first of them; said, naming both.
   std::vector<std::pair<int, int>> Differing;
+  /// Pairs of coincident lamps of different lights (or emission): both kept, as either
+  /// alone would lose a light, and said.
+  std::vector<std::pair<int, int>> LampsKept;
 };
 
 /// Removes the coincident copies from `polygons` (corners equal to `tolerance`, a length),

@@ -232,11 +232,18 @@ bool Convex(const std::vector<Vec3>& loop, const std::vector<int>& piece, double
 
 /// True when a union of two convex pieces (Merged: the first's corners, `firstSize` of
 /// them, then the second's between the diagonal's ends) turns back at a diagonal's end by
-/// far more than IsConvex allows: then it is not convex, which IsConvex would find only
-/// after a walk round the whole union (quadratic where a gear's teeth meet its disk).
+/// far more than IsConvex allows: then it is not convex, and IsConvex's walk round the
+/// whole union is spared (each of a gear's teeth is tried against its disk). Pieces whose
+/// Newell vectors (`first`, `second`) do not add up to the larger (a loop that touches
+/// itself) are left to IsConvex.
 bool ClearlyBentBack(const std::vector<Vec3>& loop, const std::vector<int>& merged, size_t firstSize,
-  const Vec3& newell, double noise)
+  const Vec3& first, const Vec3& second, double noise)
 {
+  const Vec3 newell = first + second;
+  if (!(Norm(newell) >= std::max(Norm(first), Norm(second))))
+  {
+    return false;
+  }
   const Vec3 unit = Normalized(newell);
   const size_t n = merged.size();
   for (const size_t at : { size_t(0), firstSize - 1 }) // the diagonal's ends
@@ -285,7 +292,7 @@ void MergeAcrossDiagonals(const std::vector<Vec3>& loop, double noise, std::vect
     }
     const int p = find(t), q = find(other->second);
     std::vector<int> merged = p == q ? std::vector<int>() : Merged(pieces[p], pieces[q], edge.first, edge.second);
-    if (!merged.empty() && !ClearlyBentBack(loop, merged, pieces[p].size(), newell[p] + newell[q], noise) &&
+    if (!merged.empty() && !ClearlyBentBack(loop, merged, pieces[p].size(), newell[p], newell[q], noise) &&
       Convex(loop, merged, noise))
     {
       pieces[p].swap(merged);

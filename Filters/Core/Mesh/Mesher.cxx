@@ -521,6 +521,13 @@ void WarnAboutCopies(const CoincidentCopies& copies, const MesherOptions& option
       " left out, as each copy would receive the full light (a lamp is kept over the surface it doubles, else the "
       "earlier cell); remove the one you do not mean");
   }
+  if (options.Warning && !copies.LampsKept.empty())
+  {
+    const std::pair<int, int>& p = copies.LampsKept.front();
+    options.Warning(Counted(copies.LampsKept.size(), "pair of lamps coincides", "pairs of lamps coincide") +
+      " with different lights (cells " + std::to_string(p.first) + " and " + std::to_string(p.second) +
+      " first): both kept, each a light of its own; remove one if they are one lamp");
+  }
 }
 } // namespace
 
@@ -652,7 +659,7 @@ std::string CheckSizes(const std::vector<Vec3>& points, const std::vector<int>& 
 }
 
 /// MeshPolygons on polygons that came from input cells `source[i]` (for messages, keys and
-/// the output's sourcePolygon), with the surfaces standing on them.
+/// the output's SourcePolygon), with the surfaces standing on them.
 std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& offsets,
   const std::vector<int>& connectivity, const std::vector<int>& source, const std::vector<int>& surfaceKey,
   const Contacts& contacts, const MesherOptions& options, MeshedPolygons& out,
@@ -780,12 +787,12 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
   CoincidentCopies copies;
   OverlapCuts overlaps;
   const PairedPolygons polygons = Paired(points, offsets, connectivity, surfaceKey, options, &copies, &overlaps);
-  // A copy in another material is said once, as a copy, not again as an overlap.
+  // Coincident lamps are said once, as copies, not again as an overlap.
   std::vector<std::pair<int, int>>& differing = overlaps.Differing;
   differing.erase(std::remove_if(differing.begin(), differing.end(), [&](const std::pair<int, int>& p) {
-    return std::find_if(copies.Differing.begin(), copies.Differing.end(), [&](const std::pair<int, int>& c) {
+    return std::find_if(copies.LampsKept.begin(), copies.LampsKept.end(), [&](const std::pair<int, int>& c) {
       return std::minmax(c.first, c.second) == std::minmax(p.first, p.second);
-    }) != copies.Differing.end();
+    }) != copies.LampsKept.end();
   }), differing.end());
   WarnAboutCopies(copies, options);
   WarnAboutOverlaps(overlaps, options);

@@ -52,7 +52,7 @@ struct MeshedPolygons
   std::vector<int> Connectivity;
   std::vector<int> SourcePolygon; ///< input polygon each element came from
   std::vector<int> MeshedPolygon; ///< the mesher's polygon (input paired, warped split) it came from
-  std::vector<int> PatchId;       ///< 0..patches-1
+  std::vector<int> PatchId;       ///< 0..Patches-1
   int Patches = 0;
   int MergedTrianglePairs = 0; ///< triangle pairs meshed as one quad
   int ClusteredPatches = 0;    ///< small patches merged into face clusters

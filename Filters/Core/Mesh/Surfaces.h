@@ -19,7 +19,7 @@ namespace radiosity
 /// The elements of one input polygon before they are stitched into a surface.
 struct Piece
 {
-  std::vector<Vec3> Corners; // flattened, `sides` per element
+  std::vector<Vec3> Corners; // flattened, `Sides` per element
   std::vector<int> Sides;
   std::vector<int> LocalPatch;
   int PatchCount = 0;

@@ -10,7 +10,6 @@ namespace radiosity
 
 namespace
 {
-/// Each element's bounding radius about its centroid, as the element tree's leaves have.
 double Quantile(std::vector<double> values, double q)
 {
   const size_t at = std::min(values.size() - 1, static_cast<size_t>(q * values.size()));

@@ -2,12 +2,14 @@
 // reference expectation. Listed with what goes wrong in naive code in Testing/README.md.
 #include "Geometry/FormFactor.h"
 #include "Solve/LightSolutions.h"
+#include "Geometry/CornerGrid.h"
 #include "Geometry/Polygon.h"
 #include "SceneBuilders.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numeric>
 #include <random>
 
 using namespace radiosity;
@@ -284,7 +286,9 @@ TEST(HardDegenerate, PolygonsOfManyCornersTriangulateAndCheckExactly)
   const Vec3 axis = Normalized({ 0.3, 0.8, 0.2 });
   const Vec3 u = Normalized(Cross(axis, { 1, 0, 0 })), v = Cross(axis, u);
   const double pi = 3.14159265358979;
-  for (const int corners : { 2000, 20000 })
+  // The star again 1e8 m along its normal: the grid hashed the corners' whole coordinates,
+  // whose rounding there outgrew its padding, and missed corners inside ears.
+  for (const auto [corners, away] : { std::pair{ 2000, 0.0 }, { 20000, 0.0 }, { 2000, 1e8 } })
   {
     std::vector<Vec3> loop;
     for (int i = 0; i < corners; ++i)
@@ -292,7 +296,7 @@ TEST(HardDegenerate, PolygonsOfManyCornersTriangulateAndCheckExactly)
       // A star of random spikes, a gear at 20,000; every fifth corner on the rim exactly.
       const double r = corners == 20000 ? 1 - 0.05 * (i % 2) : (i % 5 == 0 ? 1.0 : jitter(random));
       const double t = 2 * pi * i / corners;
-      loop.push_back(Vec3{ 5, -3, 2 } + u * (r * std::cos(t)) + v * (r * std::sin(t)));
+      loop.push_back(Vec3{ 5, -3, 2 } + axis * away + u * (r * std::cos(t)) + v * (r * std::sin(t)));
     }
     const int n = static_cast<int>(loop.size());
     ASSERT_EQ(PolygonProblem(loop.data(), n), "") << corners;
@@ -305,7 +309,7 @@ TEST(HardDegenerate, PolygonsOfManyCornersTriangulateAndCheckExactly)
       const double twice = Dot(axis, Cross(b - a, c - b));
       ASSERT_GT(twice, 0) << corners << ": triangle " << k / 3 << " turned over";
       area += 0.5 * twice;
-      if (corners == 2000)
+      if (corners == 2000) // every corner against every triangle
       {
         for (int p = 0; p < n; ++p)
         {
@@ -318,8 +322,51 @@ TEST(HardDegenerate, PolygonsOfManyCornersTriangulateAndCheckExactly)
     }
     EXPECT_NEAR(area, PolygonArea(loop.data(), n), 1e-9 * area) << corners;
     // The corner half way round pulled across to the far side: its edges cross the loop.
-    loop[n / 2] = Vec3{ 5, -3, 2 } + u * 1.5;
+    loop[n / 2] = Vec3{ 5, -3, 2 } + axis * away + u * 1.5;
     EXPECT_NE(PolygonProblem(loop.data(), n).find("crosses itself"), std::string::npos) << corners;
+  }
+}
+
+// The ear test's grid against asking every corner: the same corners, near the origin and
+// 1e6..1e10 m away along the plane's normal (hashing the whole coordinates, the grid's
+// rounding outgrew its padding there and it missed corners on an ear's edge).
+TEST(HardDegenerate, CornerGridFindsEveryCornerATriangleHolds)
+{
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> coordinate(0, 1);
+  const Vec3 axis = Normalized({ 0.3, 0.8, 0.2 });
+  const Vec3 u = Normalized(Cross(axis, { 1, 0, 0 })), v = Cross(axis, u);
+  for (const double away : { 0.0, 1e6, 1e8, 1e10 })
+  {
+    std::vector<Vec3> points;
+    for (int i = 0; i < 400; ++i)
+    {
+      // On a coarse lattice, so that many corners lie exactly on triangles' edges.
+      const double x = std::round(coordinate(random) * 16) / 16, y = std::round(coordinate(random) * 16) / 16;
+      points.push_back(axis * away + u * x + v * y);
+    }
+    std::vector<int> all(points.size());
+    std::iota(all.begin(), all.end(), 0);
+    const CornerGrid grid(points.data(), static_cast<int>(points.size()), axis, all);
+    const auto turn = [&](int a, int b, int c) { return Dot(axis, Cross(points[b] - points[a], points[c] - points[b])); };
+    int missed = 0, held = 0;
+    for (int t = 0; t < 2000; ++t)
+    {
+      const int a = random() % 400, b = random() % 400, c = random() % 400;
+      if (!(turn(a, b, c) > 1e-6))
+      {
+        continue; // an ear turns left: a triangle folded flat "holds" a whole line
+      }
+      const auto inside = [&](int p) { return turn(a, b, p) >= 0 && turn(b, c, p) >= 0 && turn(c, a, p) >= 0; };
+      std::vector<char> found(points.size(), 0);
+      grid.Any(a, b, c, [&](int p) { found[p] = 1; return false; });
+      for (int p = 0; p < 400; ++p)
+      {
+        held += inside(p);
+        missed += inside(p) && !found[p];
+      }
+    }
+    EXPECT_EQ(missed, 0) << away << " m away, of " << held << " corners inside triangles";
   }
 }
 

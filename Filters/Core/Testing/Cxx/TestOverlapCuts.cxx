@@ -183,6 +183,16 @@ TEST(CoincidentCopies, OneOfEachSetIsKeptALampOverTheSurfaceItDoubles)
   EXPECT_EQ(copies.Source, (std::vector<int>{ 2, 3 }));
   EXPECT_TRUE(found.Dropped.empty());
   EXPECT_EQ(found.Differing, (std::vector<std::pair<int, int>>{ { 2, 0 }, { 2, 1 } }));
+  // Two lamps of different lights in one place (two circuits of one fixture) over a tile:
+  // both stay, each a light of its own, and are said; the tile goes.
+  Faces h;
+  h.Rectangle(0, 1, 0, 1, 0);
+  h.Rectangle(0, 1, 0, 1, 1);
+  h.Rectangle(0, 1, 0, 1, 2);
+  found = DropCoincidentCopies(h.points, h.keys, { 0, 1, 1 }, 1e-9, h.polygons);
+  EXPECT_EQ(h.polygons.Source, (std::vector<int>{ 1, 2 }));
+  EXPECT_EQ(found.Differing, (std::vector<std::pair<int, int>>{ { 1, 0 } }));
+  EXPECT_EQ(found.LampsKept, (std::vector<std::pair<int, int>>{ { 1, 2 } }));
   // The facing side tells copies apart: the tile turned over is a face of its own.
   Faces g;
   g.Rectangle(0, 1, 0, 1, 0);

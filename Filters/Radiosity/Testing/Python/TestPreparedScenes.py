@@ -17,7 +17,7 @@ from relight import cell_array
 from testlib import check, finish
 
 vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_WARNING)
-DATA = os.path.join(os.environ.get("RELIGHT_ROOT", os.path.join(os.path.dirname(__file__), "..", "..", "..")), "Data")
+DATA = os.path.join(os.environ.get("RELIGHT_ROOT", os.path.join(os.path.dirname(__file__), "..", "..", "..", "..")), "Data")
 reader = vtkXMLPolyDataReader()
 reader.SetFileName(os.path.join(DATA, "paper_8lights.vtp"))  # a box on the floor: enclosed elements
 reader.Update()
