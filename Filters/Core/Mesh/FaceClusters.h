@@ -18,8 +18,10 @@ namespace radiosity
 /// `surfaceKey` (per input polygon, as MeshPolygons takes it) whose normals are within
 /// `coneDegrees` of the first one's, while every corner stays within 0.3 `patchSize` of its
 /// centre (a curved cluster shoots one value, so it is kept smaller than a flat patch). Patch ids are made 0..patches-1 again. Returns the number of patches merged away.
-int ClusterFaces(
-  MeshedPolygons& mesh, const PolygonArrays& input, const std::vector<int>& surfaceKey, double patchSize, double coneDegrees);
+/// `weld`: how far apart two corners may be and still meet (the input's noise; at least a
+/// billionth of its span).
+int ClusterFaces(MeshedPolygons& mesh, const PolygonArrays& input, const std::vector<int>& surfaceKey, double patchSize,
+  double coneDegrees, double weld = 0);
 
 } // namespace radiosity
 

@@ -438,7 +438,7 @@ PairedPolygons Paired(const std::vector<Vec3>& points, const std::vector<int>& o
   }
   const double noise = MeshNoise(points, options.PointQuantum);
   // From the scene's span (MeshNoise), not its box: which faces overlap must not turn with it.
-  OverlapCuts cuts = CutOverlaps(points, surfaceKey, 4 * noise, polygons);
+  OverlapCuts cuts = CutOverlaps(points, surfaceKey, options.Lamps, 4 * noise, polygons);
   if (overlaps)
   {
     *overlaps = std::move(cuts);
@@ -486,21 +486,23 @@ void WarnAboutOverlaps(const OverlapCuts& overlaps, const MesherOptions& options
 {
   if (options.Warning && !overlaps.Trimmed.empty())
   {
-    options.Warning(Counted(overlaps.Trimmed.size(), "cell overlaps", "cells overlap") + " earlier cells of their surface in one plane (cells " +
-      CellList(overlaps.Trimmed) + "): meshed only where nothing else lies, as each layer would receive the full light");
+    options.Warning(Counted(overlaps.Trimmed.size(), "cell overlaps", "cells overlap") + " other cells in one plane (cells " +
+      CellList(overlaps.Trimmed) + "): meshed only where nothing before it lies (a lamp, else the earlier cell), as each layer "
+      "would receive the full light");
   }
   if (options.Warning && !overlaps.Covered.empty())
   {
-    options.Warning(Counted(overlaps.Covered.size(), "cell lies", "cells lie") + " wholly under earlier cells of their surface in one plane (cells " +
-      CellList(overlaps.Covered) + "): left out, as each layer would receive the full light");
+    options.Warning(Counted(overlaps.Covered.size(), "cell lies", "cells lie") + " wholly under other cells in one plane (cells " +
+      CellList(overlaps.Covered) + "): left out (a lamp, else the earlier cell, keeps the overlap), as each layer would "
+      "receive the full light");
   }
   if (options.Warning && !overlaps.Differing.empty())
   {
     const std::pair<int, int>& p = overlaps.Differing.front();
     options.Warning(Counted(overlaps.Differing.size(), "pair of cells overlaps", "pairs of cells overlap") +
       " in one plane, facing the same side, with different materials or lights (cells " + std::to_string(p.first) +
-      " and " + std::to_string(p.second) + " first): both kept, so each receives the full light where they overlap; "
-      "cut one, or move it a little in front of the other");
+      " and " + std::to_string(p.second) + " first): cell " + std::to_string(p.second) + " is cut where cell " +
+      std::to_string(p.first) + " lies; to show the other, move it a little in front");
   }
 }
 
@@ -813,7 +815,7 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
   if (error.empty())
   {
     out.ClusteredPatches =
-      ClusterFaces(out, paired, surfaceKey, sized.PatchSize, options.ClusterAngle);
+      ClusterFaces(out, paired, surfaceKey, sized.PatchSize, options.ClusterAngle, 4 * MeshNoise(points, options.PointQuantum));
   }
   return error;
 }

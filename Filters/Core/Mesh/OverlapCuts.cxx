@@ -235,6 +235,21 @@ bool Candidates(const Face& a, const Face& b, double tolerance)
     MayOverlap(a, b, tolerance);
 }
 
+/// `faces` in the order in which they keep an overlap: lamps first (a lamp panel drawn in
+/// the ceiling it hangs from shines, the ceiling is cut around it), then as the polygons
+/// come. One total order for every pair, whatever their materials, so no point of a plane
+/// is left to none of its faces (an order by size across materials and by position within
+/// one made cycles and holes) and none to two.
+std::vector<Face> InKeepingOrder(std::vector<Face> faces, const std::vector<char>& lamps, const PairedPolygons& polygons)
+{
+  const auto lamp = [&](const Face& f) {
+    const int source = polygons.Source[f.Index];
+    return source < static_cast<int>(lamps.size()) && lamps[source];
+  };
+  std::stable_partition(faces.begin(), faces.end(), lamp);
+  return faces;
+}
+
 /// For each face (by position in `faces`), the earlier ones that may overlap it: small
 /// faces met through a grid of cells twice the median box size, faces larger than
 /// kMostCells cells against all. Each pair is decided by its own geometry, so the answer
@@ -293,13 +308,11 @@ std::vector<std::vector<int>> EarlierNeighbours(const std::vector<Face>& faces, 
   return earlier;
 }
 
-/// Cuts each face by the earlier ones of its surface that overlap it; returns each face's
+/// Cuts each face by the earlier ones (InKeepingOrder) that overlap it; returns each face's
 /// pieces (its own corners where nothing overlaps it, none where it is covered), marks in
 /// `cut` (by polygon) those that changed, and lists the overlapping pairs of different
-/// surfaces (by polygon) in `differing`. Those are not cut: a rule that let the smaller of
-/// two materials win made cycles with the earlier-wins rule of one material (a wall, a
-/// patch of it drawn again, a poster over both: a hole where none kept the overlap), and
-/// could cut a lamp drawn over its ceiling tile away.
+/// surfaces (by polygon, the one that keeps the overlap first) in `differing`, to be said:
+/// which one was meant cannot be told, but both would receive the full light.
 std::vector<std::vector<Loop>> CutFaces(const std::vector<Face>& faces, double tolerance, std::vector<char>& cut,
   std::vector<std::pair<int, int>>& differing)
 {
@@ -317,7 +330,6 @@ std::vector<std::vector<Loop>> CutFaces(const std::vector<Face>& faces, double t
       if (faces[j].Surface != faces[i].Surface)
       {
         differing.emplace_back(faces[j].Index, faces[i].Index);
-        continue;
       }
       // Every piece is split along j's edges, also those clear of it: deciding piece by
       // piece let float noise decide a sliver's fate, and the FZK-Haus turned 37 degrees
@@ -339,13 +351,14 @@ std::vector<std::vector<Loop>> CutFaces(const std::vector<Face>& faces, double t
 
 } // namespace
 
-OverlapCuts CutOverlaps(
-  const std::vector<Vec3>& points, const std::vector<int>& surfaceKey, double tolerance, PairedPolygons& polygons)
+OverlapCuts CutOverlaps(const std::vector<Vec3>& points, const std::vector<int>& surfaceKey,
+  const std::vector<char>& lamps, double tolerance, PairedPolygons& polygons)
 {
   OverlapCuts found;
   std::vector<char> cut(polygons.Source.size(), 0);
   std::vector<std::vector<Loop>> pieces(polygons.Source.size());
-  const std::vector<Face> faces = ConvexFaces(points, surfaceKey, tolerance, polygons);
+  const std::vector<Face> faces =
+    InKeepingOrder(ConvexFaces(points, surfaceKey, tolerance, polygons), lamps, polygons);
   if (faces.size() < 2)
   {
     return found;

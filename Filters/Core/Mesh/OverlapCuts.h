@@ -1,8 +1,8 @@
 // Coplanar faces that overlap without being copies (a slab drawn over a floor, a panel
-// traced twice with other corners, two exports of one wall merged): each would receive the
-// full light where they overlap, so the surfaces around them would get more than was
-// emitted. A later face of one surface keeps only what the earlier ones leave uncovered;
-// faces of different surfaces that overlap are said, not cut.
+// traced twice with other corners, two exports of one wall merged, a poster on a wall):
+// each would receive the full light where they overlap, so the surfaces around them would
+// get more than was emitted. A lamp keeps the overlap, else the earlier face; the other
+// keeps only what is left uncovered. Faces of different surfaces that overlap are said.
 #ifndef RadiosityCore_OverlapCuts_h
 #define RadiosityCore_OverlapCuts_h
 
@@ -19,19 +19,20 @@ struct OverlapCuts
 {
   std::vector<int> Trimmed; ///< input polygons (source ids) cut to what earlier faces leave
   std::vector<int> Covered; ///< input polygons wholly under earlier ones: left out
-  /// Pairs of input polygons (earlier, later) of different surfaces that overlap in one
-  /// plane, facing one side: kept as they are, to be said (see CutFaces in the .cxx).
+  /// Pairs of input polygons (kept, cut) of different surfaces that overlap in one plane,
+  /// facing one side: which one was meant cannot be told, so they are said.
   std::vector<std::pair<int, int>> Differing;
 };
 
-/// Cuts every convex polygon of `polygons` by the earlier convex polygons of the same
-/// `surfaceKey` (per source id) that lie in its plane (within `tolerance`, a length), face
-/// the same side and overlap it by more than `tolerance` across; each cut polygon becomes
-/// the convex pieces of what they leave. Where any is cut, `polygons.Points` becomes a copy
-/// of `points` with the new corners after them (PointsOf), and the polygons index it.
-/// Overlapping faces of different surfaces are listed in Differing, not cut.
-OverlapCuts CutOverlaps(
-  const std::vector<Vec3>& points, const std::vector<int>& surfaceKey, double tolerance, PairedPolygons& polygons);
+/// Cuts every convex polygon of `polygons` by the convex polygons before it in keeping
+/// order (the lamps, where `lamps` marks them by source id, then the rest, each in input
+/// order) that lie in its plane (within `tolerance`, a length), face the same side and
+/// overlap it by more than `tolerance` across; each cut polygon becomes the convex pieces
+/// of what they leave. Where any is cut, `polygons.Points` becomes a copy of `points` with
+/// the new corners after them (PointsOf), and the polygons index it. `surfaceKey` (per
+/// source id) tells which overlaps are of different surfaces (Differing).
+OverlapCuts CutOverlaps(const std::vector<Vec3>& points, const std::vector<int>& surfaceKey,
+  const std::vector<char>& lamps, double tolerance, PairedPolygons& polygons);
 
 } // namespace radiosity
 

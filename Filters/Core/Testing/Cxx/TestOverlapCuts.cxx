@@ -38,7 +38,7 @@ struct Faces
     Add({ { x0, y0, z }, { x1, y0, z }, { x1, y1, z }, { x0, y1, z } }, key);
   }
 
-  OverlapCuts Cut() { return CutOverlaps(points, keys, 1e-9, polygons); }
+  OverlapCuts Cut(const std::vector<char>& lamps = {}) { return CutOverlaps(points, keys, lamps, 1e-9, polygons); }
 
   double Area() const
   {
@@ -116,32 +116,40 @@ TEST(OverlapCuts, ANonConvexEarlierFaceCutsByItsOutline)
   EXPECT_NEAR(f.Area(), 5.0 + 4.0 - 1.75, 1e-12);
 }
 
-TEST(OverlapCuts, OtherSurfacesSidesAndPlanesAreLeftAloneAndOtherSurfacesSaid)
+TEST(OverlapCuts, OtherSurfacesAreCutAndSaidOtherSidesAndPlanesLeftAlone)
 {
   Faces f;
   f.Rectangle(0, 2, 0, 1, 0);
-  f.Rectangle(1, 3, 0, 1, 1);       // another material: said, not cut
+  f.Rectangle(1, 3, 0, 1, 1);       // another material: cut where the earlier lies, and said
   f.Rectangle(1, 3, 0, 1, 0, 1e-3); // a millimetre above: a layer of its own
   f.Add({ { 1, 0, 0 }, { 1, 1, 0 }, { 3, 1, 0 }, { 3, 0, 0 } }); // facing down: the other side
-  const std::vector<int> before = f.polygons.Connectivity;
   const OverlapCuts cuts = f.Cut();
-  EXPECT_TRUE(cuts.Trimmed.empty() && cuts.Covered.empty() && f.polygons.Points.empty());
-  EXPECT_EQ(f.polygons.Connectivity, before);
+  EXPECT_EQ(cuts.Trimmed, std::vector<int>{ 1 });
+  EXPECT_TRUE(cuts.Covered.empty());
   EXPECT_EQ(cuts.Differing, (std::vector<std::pair<int, int>>{ { 0, 1 } }));
+  EXPECT_NEAR(f.Area(), 2.0 + 1.0 + 2.0 + 2.0, 1e-12); // the plane z = 0, facing up: 3 = its union
 }
 
-TEST(OverlapCuts, OtherMaterialsAreNeverCutSoNoHoleOpens)
+TEST(OverlapCuts, OneOrderForEveryMaterialLeavesNoHoleAndNoDoubleCover)
 {
-  // A wall, a patch of it drawn again, a poster over both: a rule that let the smaller of
-  // two materials win made a cycle with the earlier-wins rule and left (1.5, 1.5) to none.
+  // A wall, a patch of it drawn again, a poster over both. A rule that let the smaller of
+  // two materials win made a cycle with the earlier-wins rule of one material and left
+  // (1.5, 1.5) to none; both kept made it twice. One order: the earlier keeps the overlap.
   Faces f;
   f.Rectangle(0, 4, 0, 3, 0);
   f.Rectangle(1, 2, 1, 2, 0);
   f.Rectangle(0.5, 2.5, 0.5, 2.5, 1);
+  Faces lit = f; // the same, the poster a lamp panel
   const OverlapCuts cuts = f.Cut();
-  EXPECT_EQ(cuts.Covered, std::vector<int>{ 1 });
-  EXPECT_NEAR(f.Area(), 12.0 + 4.0, 1e-12); // the wall whole, the poster on it (said)
+  EXPECT_EQ(cuts.Covered, (std::vector<int>{ 1, 2 }));
+  EXPECT_NEAR(f.Area(), 12.0, 1e-12); // the wall's, each point once
   EXPECT_EQ(cuts.Differing, (std::vector<std::pair<int, int>>{ { 0, 2 }, { 1, 2 } }));
+  // A lamp keeps the overlap wherever it comes: the wall is cut around it.
+  const OverlapCuts around = lit.Cut({ 0, 0, 1 });
+  EXPECT_EQ(around.Trimmed, std::vector<int>{ 0 });
+  EXPECT_EQ(around.Covered, std::vector<int>{ 1 });
+  EXPECT_NEAR(lit.Area(), 12.0, 1e-12);
+  EXPECT_EQ(around.Differing, (std::vector<std::pair<int, int>>{ { 2, 0 }, { 2, 1 } }));
 }
 
 TEST(OverlapCuts, AFanOfNeighboursIsNotCutAndTakesLittleTime)
