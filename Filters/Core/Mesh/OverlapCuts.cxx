@@ -331,12 +331,23 @@ std::vector<std::vector<Loop>> CutFaces(const std::vector<Face>& faces, double t
       {
         differing.emplace_back(faces[j].Index, faces[i].Index);
       }
-      // Every piece is split along j's edges, also those clear of it: deciding piece by
-      // piece let float noise decide a sliver's fate, and the FZK-Haus turned 37 degrees
-      // grouped one face cluster otherwise (TestInvariance).
+      // A piece whose box stays clear of j's is kept whole (a floor after many decals of
+      // another material was cut quadratically: 1,600 in 1.0 s, now 0.1 s); a nearer one
+      // is split along all of j's edges, also where clear of it: deciding by the overlap
+      // itself let float noise decide a sliver's fate (TestInvariance).
       std::vector<Loop> left;
-      for (const Loop& piece : pieces[i])
+      for (Loop& piece : pieces[i])
       {
+        Bounds box;
+        for (const Vec3& p : piece)
+        {
+          box.Add(p);
+        }
+        if (!box.Overlaps(faces[j].Box, 4 * tolerance))
+        {
+          left.push_back(std::move(piece));
+          continue;
+        }
         for (Loop& rest : Difference(piece, faces[j], tolerance))
         {
           left.push_back(std::move(rest));
