@@ -504,6 +504,13 @@ void WarnAboutOverlaps(const OverlapCuts& overlaps, const MesherOptions& options
       " and " + std::to_string(p.second) + " first): cell " + std::to_string(p.second) + " is cut where cell " +
       std::to_string(p.first) + " lies; to show the other, move it a little in front");
   }
+  if (options.Warning && !overlaps.LampsKept.empty())
+  {
+    const std::pair<int, int>& p = overlaps.LampsKept.front();
+    options.Warning(Counted(overlaps.LampsKept.size(), "pair of lamps overlaps", "pairs of lamps overlap") +
+      " in one plane with different lights (cells " + std::to_string(p.first) + " and " + std::to_string(p.second) +
+      " first): both kept whole, each emitting the power it was given");
+  }
 }
 
 /// Says which input polygons were left out as copies, or kept though they coincide.
@@ -790,12 +797,12 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
   OverlapCuts overlaps;
   const PairedPolygons polygons = Paired(points, offsets, connectivity, surfaceKey, options, &copies, &overlaps);
   // Coincident lamps are said once, as copies, not again as an overlap.
-  std::vector<std::pair<int, int>>& differing = overlaps.Differing;
-  differing.erase(std::remove_if(differing.begin(), differing.end(), [&](const std::pair<int, int>& p) {
+  std::vector<std::pair<int, int>>& overlapping = overlaps.LampsKept;
+  overlapping.erase(std::remove_if(overlapping.begin(), overlapping.end(), [&](const std::pair<int, int>& p) {
     return std::find_if(copies.LampsKept.begin(), copies.LampsKept.end(), [&](const std::pair<int, int>& c) {
       return std::minmax(c.first, c.second) == std::minmax(p.first, p.second);
     }) != copies.LampsKept.end();
-  }), differing.end());
+  }), overlapping.end());
   WarnAboutCopies(copies, options);
   WarnAboutOverlaps(overlaps, options);
   const std::vector<Vec3>& corners = PointsOf(polygons, points);

@@ -18,6 +18,7 @@ struct Face
 {
   int Index = 0;   ///< in the polygons
   int Surface = 0; ///< its surface key
+  bool Lamp = false;
   Loop Corners;
   Vec3 Normal;
   Bounds Box;
@@ -242,11 +243,12 @@ bool Candidates(const Face& a, const Face& b, double tolerance)
 /// one made cycles and holes) and none to two.
 std::vector<Face> InKeepingOrder(std::vector<Face> faces, const std::vector<char>& lamps, const PairedPolygons& polygons)
 {
-  const auto lamp = [&](const Face& f) {
+  for (Face& f : faces)
+  {
     const int source = polygons.Source[f.Index];
-    return source < static_cast<int>(lamps.size()) && lamps[source];
-  };
-  std::stable_partition(faces.begin(), faces.end(), lamp);
+    f.Lamp = source < static_cast<int>(lamps.size()) && lamps[source];
+  }
+  std::stable_partition(faces.begin(), faces.end(), [](const Face& f) { return f.Lamp; });
   return faces;
 }
 
@@ -312,9 +314,10 @@ std::vector<std::vector<int>> EarlierNeighbours(const std::vector<Face>& faces, 
 /// pieces (its own corners where nothing overlaps it, none where it is covered), marks in
 /// `cut` (by polygon) those that changed, and lists the overlapping pairs of different
 /// surfaces (by polygon, the one that keeps the overlap first) in `differing`, to be said:
-/// which one was meant cannot be told, but both would receive the full light.
+/// which one was meant cannot be told, but both would receive the full light. Lamps of
+/// two lights are not cut (each emits the power it was given), and listed in `lampsKept`.
 std::vector<std::vector<Loop>> CutFaces(const std::vector<Face>& faces, double tolerance, std::vector<char>& cut,
-  std::vector<std::pair<int, int>>& differing)
+  std::vector<std::pair<int, int>>& differing, std::vector<std::pair<int, int>>& lampsKept)
 {
   const std::vector<std::vector<int>> earlier = EarlierNeighbours(faces, tolerance);
   std::vector<std::vector<Loop>> pieces(faces.size());
@@ -326,6 +329,11 @@ std::vector<std::vector<Loop>> CutFaces(const std::vector<Face>& faces, double t
       if (Width(Intersection(faces[i].Corners, faces[j])) <= tolerance)
       {
         continue; // neighbours along an edge
+      }
+      if (faces[j].Surface != faces[i].Surface && faces[j].Lamp && faces[i].Lamp)
+      {
+        lampsKept.emplace_back(faces[j].Index, faces[i].Index);
+        continue; // lamps of two lights: each emits as given (cut, one would emit part of it)
       }
       if (faces[j].Surface != faces[i].Surface)
       {
@@ -374,13 +382,17 @@ OverlapCuts CutOverlaps(const std::vector<Vec3>& points, const std::vector<int>&
   {
     return found;
   }
-  std::vector<std::pair<int, int>> differing;
-  std::vector<std::vector<Loop>> cutPieces = CutFaces(faces, tolerance, cut, differing);
-  std::sort(differing.begin(), differing.end());
-  differing.erase(std::unique(differing.begin(), differing.end()), differing.end()); // convex pieces of one polygon
-  for (const std::pair<int, int>& pair : differing)
+  std::vector<std::pair<int, int>> differing, lampsKept;
+  std::vector<std::vector<Loop>> cutPieces = CutFaces(faces, tolerance, cut, differing, lampsKept);
+  // By input polygon, once (a polygon's convex pieces are faces of their own).
+  for (auto [pairs, into] : { std::pair{ &differing, &found.Differing }, { &lampsKept, &found.LampsKept } })
   {
-    found.Differing.emplace_back(polygons.Source[pair.first], polygons.Source[pair.second]);
+    std::sort(pairs->begin(), pairs->end());
+    pairs->erase(std::unique(pairs->begin(), pairs->end()), pairs->end());
+    for (const std::pair<int, int>& pair : *pairs)
+    {
+      into->emplace_back(polygons.Source[pair.first], polygons.Source[pair.second]);
+    }
   }
   for (size_t f = 0; f < faces.size(); ++f)
   {

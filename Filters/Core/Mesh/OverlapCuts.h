@@ -22,6 +22,9 @@ struct OverlapCuts
   /// Pairs of input polygons (kept, cut) of different surfaces that overlap in one plane,
   /// facing one side: which one was meant cannot be told, so they are said.
   std::vector<std::pair<int, int>> Differing;
+  /// Pairs of input polygons that are lamps of different lights and overlap: not cut (each
+  /// emits the power it was given), to be said.
+  std::vector<std::pair<int, int>> LampsKept;
 };
 
 /// Cuts every convex polygon of `polygons` by the convex polygons before it in keeping

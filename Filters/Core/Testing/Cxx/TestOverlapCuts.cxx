@@ -152,6 +152,22 @@ TEST(OverlapCuts, OneOrderForEveryMaterialLeavesNoHoleAndNoDoubleCover)
   EXPECT_EQ(around.Differing, (std::vector<std::pair<int, int>>{ { 2, 0 }, { 2, 1 } }));
 }
 
+TEST(OverlapCuts, LampsOfTwoLightsAreNotCutTheCeilingIs)
+{
+  // Two lamp panels of different lights half over each other in the ceiling's plane (two
+  // circuits of one fixture): cut, one would emit half the power it was given. Both stay
+  // whole and are said; the ceiling is cut around both.
+  Faces f;
+  f.Rectangle(0, 2, 0, 1, 1);
+  f.Rectangle(1, 3, 0, 1, 2);
+  f.Rectangle(0, 4, 0, 2, 0);
+  const OverlapCuts cuts = f.Cut({ 1, 1, 0 });
+  EXPECT_EQ(cuts.LampsKept, (std::vector<std::pair<int, int>>{ { 0, 1 } }));
+  EXPECT_EQ(cuts.Trimmed, std::vector<int>{ 2 });
+  EXPECT_EQ(cuts.Differing, (std::vector<std::pair<int, int>>{ { 0, 2 }, { 1, 2 } }));
+  EXPECT_NEAR(f.Area(), 2.0 + 2.0 + (8.0 - 3.0), 1e-12); // the lamps whole, the ceiling less their union
+}
+
 TEST(OverlapCuts, AFanOfNeighboursIsNotCutAndTakesLittleTime)
 {
   // 4,000 triangles around one centre (a CAD disk): every box holds the centre, so the
