@@ -480,6 +480,19 @@ std::string CellList(const std::vector<int>& cells)
   return text.str();
 }
 
+/// Up to five pairs of cell ids ("5 and 15; 7 and 16"), for a warning: a BIM model has
+/// hundreds, and one pair named left the rest to be guessed.
+std::string PairList(const std::vector<std::pair<int, int>>& pairs)
+{
+  std::ostringstream text;
+  for (size_t i = 0; i < pairs.size() && i < 5; ++i)
+  {
+    text << (i ? "; " : "") << pairs[i].first << " and " << pairs[i].second;
+  }
+  text << (pairs.size() > 5 ? "; ..." : "");
+  return text.str();
+}
+
 /// Says which input polygons were cut or left out where earlier ones of their surface cover
 /// them, and which overlap others'.
 void WarnAboutOverlaps(const OverlapCuts& overlaps, const MesherOptions& options)
@@ -498,18 +511,15 @@ void WarnAboutOverlaps(const OverlapCuts& overlaps, const MesherOptions& options
   }
   if (options.Warning && !overlaps.Differing.empty())
   {
-    const std::pair<int, int>& p = overlaps.Differing.front();
     options.Warning(Counted(overlaps.Differing.size(), "pair of cells overlaps", "pairs of cells overlap") +
-      " in one plane, facing the same side, with different materials or lights (cells " + std::to_string(p.first) +
-      " and " + std::to_string(p.second) + " first): cell " + std::to_string(p.second) + " is cut where cell " +
-      std::to_string(p.first) + " lies; to show the other, move it a little in front");
+      " in one plane, facing the same side, with different materials or lights (cells " + PairList(overlaps.Differing) +
+      "): the second of each is cut where the first lies; to show it instead, move it a little in front");
   }
   if (options.Warning && !overlaps.LampsKept.empty())
   {
-    const std::pair<int, int>& p = overlaps.LampsKept.front();
     options.Warning(Counted(overlaps.LampsKept.size(), "pair of lamps overlaps", "pairs of lamps overlap") +
-      " in one plane with different lights (cells " + std::to_string(p.first) + " and " + std::to_string(p.second) +
-      " first): both kept whole, each emitting the power it was given");
+      " in one plane with different lights (cells " + PairList(overlaps.LampsKept) +
+      "): both kept whole, each emitting the power it was given");
   }
 }
 
@@ -524,18 +534,16 @@ void WarnAboutCopies(const CoincidentCopies& copies, const MesherOptions& option
   }
   if (options.Warning && !copies.Differing.empty())
   {
-    const std::pair<int, int>& p = copies.Differing.front();
-    options.Warning(Counted(copies.Differing.size(), "pair of cells coincides", "pairs of cells coincide") + " with different materials or lights (cells " +
-      std::to_string(p.first) + " and " + std::to_string(p.second) + " first): cell " + std::to_string(p.second) +
-      " left out, as each copy would receive the full light (a lamp is kept over the surface it doubles, else the "
-      "earlier cell); remove the one you do not mean");
+    options.Warning(Counted(copies.Differing.size(), "pair of cells coincides", "pairs of cells coincide") +
+      " with different materials or lights (cells " + PairList(copies.Differing) +
+      "): the second of each left out, as each copy would receive the full light (a lamp is kept over the surface it "
+      "doubles, else the earlier cell); remove the one you do not mean");
   }
   if (options.Warning && !copies.LampsKept.empty())
   {
-    const std::pair<int, int>& p = copies.LampsKept.front();
     options.Warning(Counted(copies.LampsKept.size(), "pair of lamps coincides", "pairs of lamps coincide") +
-      " with different lights (cells " + std::to_string(p.first) + " and " + std::to_string(p.second) +
-      " first): both kept, each a light of its own; remove one if they are one lamp");
+      " with different lights (cells " + PairList(copies.LampsKept) +
+      "): both kept, each a light of its own; remove one if they are one lamp");
   }
 }
 } // namespace

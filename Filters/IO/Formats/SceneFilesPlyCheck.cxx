@@ -368,6 +368,13 @@ std::string CheckLayout(const Header& header)
     return "its first element is not 'vertex'";
   }
   const Element& vertex = header.Elements[0];
+  const auto faceList = named(vertex, "vertex_indices");
+  if (faceList != vertex.Properties.end() && faceList->CountSize > 0)
+  {
+    // Blender's exporter wrote such a file (assimp's issue623.ply): read on, it looked
+    // like a file shorter than its header, which it is not.
+    return "its vertices have the list 'vertex_indices' that faces hold: the header lacks an 'element face' line";
+  }
   for (const char* axis : { "x", "y", "z" })
   {
     const auto p = named(vertex, axis);

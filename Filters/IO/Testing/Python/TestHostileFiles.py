@@ -71,6 +71,9 @@ KNOWN = {
                        "first element is not 'vertex'"),
     "faces_without_a_list.ply": (ascii_ply(3, 1, ["3\n"]).replace(b"property list uchar int vertex_indices",
                                                                   b"property uchar red"), "no list 'vertex_indices'"),
+    # Blender once wrote the face list under the vertices, without 'element face' (assimp's
+    # issue623.ply): said so, not as a file shorter than its header.
+    "face_list_under_vertices.ply": (ascii_ply(3, 1, []).replace(b"element face 1\n", b""), "lacks an 'element face' line"),
     "float_index_1e9.ply": (ascii_ply(3, 1, ["3 0 1 1e9\n"]).replace(b"list uchar int", b"list uchar float"),
                             "names vertex 1000000000"),
     "edge_before_face.ply": (ascii_ply(3, 1, ["3 99999\n", "3 0 1 2\n"]).replace(
