@@ -5,6 +5,7 @@
 #include <cmath>
 #include <set>
 #include <sstream>
+#include <unordered_map>
 
 namespace radiosity
 {
@@ -75,26 +76,28 @@ std::array<long long, 3> QuantizedPoint(const Vec3& p, double step)
   return { std::llround(p.x / step), std::llround(p.y / step), std::llround(p.z / step) };
 }
 
-std::vector<int> WeldedPointIds(const std::vector<Vec3>& points, double step)
+std::vector<int> WeldedPointIds(const std::vector<Vec3>& points, double tolerance)
 {
-  std::vector<std::pair<std::array<long long, 3>, int>> keyed(points.size());
-  for (size_t i = 0; i < points.size(); ++i)
-  {
-    keyed[i] = { QuantizedPoint(points[i], step), static_cast<int>(i) };
-  }
-  std::sort(keyed.begin(), keyed.end());
-  std::vector<int> first(points.size());
-  for (size_t i = 0; i < keyed.size(); ++i)
-  {
-    first[keyed[i].second] = i > 0 && keyed[i].first == keyed[i - 1].first ? first[keyed[i - 1].second] : keyed[i].second;
-  }
-  std::vector<int> ids(points.size(), -1), number(points.size(), -1);
+  std::unordered_map<long long, std::vector<int>> cells; // first points, by cell
+  std::vector<int> ids(points.size(), -1);
   int next = 0;
   for (size_t i = 0; i < points.size(); ++i)
   {
-    int& n = number[first[i]];
-    n = n < 0 ? next++ : n;
-    ids[i] = n;
+    const std::array<long long, 3> at = QuantizedPoint(points[i], tolerance);
+    for (int step = 0; step < 27 && ids[i] < 0; ++step)
+    {
+      const auto found = cells.find(CellHash(at[0] + step % 3 - 1, at[1] + step / 3 % 3 - 1, at[2] + step / 9 - 1));
+      for (size_t k = 0; found != cells.end() && k < found->second.size() && ids[i] < 0; ++k)
+      {
+        const int j = found->second[k];
+        ids[i] = Norm(points[j] - points[i]) <= tolerance ? ids[j] : -1;
+      }
+    }
+    if (ids[i] < 0)
+    {
+      ids[i] = next++;
+      cells[CellHash(at[0], at[1], at[2])].push_back(static_cast<int>(i));
+    }
   }
   return ids;
 }

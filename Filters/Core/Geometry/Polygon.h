@@ -37,10 +37,17 @@ std::array<long long, 4> PlaneKey(const Vec3& unitNormal, double offset, double 
 /// A point as a hash key: each coordinate in steps of `step` (welding equal points).
 std::array<long long, 3> QuantizedPoint(const Vec3& p, double step);
 
-/// One id per distinct position (QuantizedPoint of `step`), numbered in order of first
-/// appearance: point i and j are the same place when ids[i] == ids[j]. By sorting, so a
-/// million points take well under a second.
-std::vector<int> WeldedPointIds(const std::vector<Vec3>& points, double step);
+/// One hash of a grid cell's three indices (the hashed grids of the mesher share it).
+inline long long CellHash(long long x, long long y, long long z)
+{
+  return (x * 73856093LL) ^ (y * 19349663LL) ^ (z * 83492791LL);
+}
+
+/// One id per place, numbered in order of first appearance: each point takes the id of the
+/// first point before it within `tolerance` (found in the 27 cells of that size around it,
+/// so two points that close never round apart, as hashing alone lets them where a cell
+/// border falls between). Points i and j are the same place when ids[i] == ids[j].
+std::vector<int> WeldedPointIds(const std::vector<Vec3>& points, double tolerance);
 
 /// Newell's vector: normal direction of the right-hand-rule loop, length = 2 * area.
 /// Robust for non-planar or nearly degenerate loops, unlike a single cross product.

@@ -2,11 +2,9 @@
 #include "Geometry/Polygon.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdint>
 #include <deque>
-#include <unordered_map>
 #include <utility>
 
 namespace radiosity
@@ -57,36 +55,6 @@ std::vector<PatchSummary> Summarise(const MeshedPolygons& mesh, const std::vecto
   return patches;
 }
 
-/// One id per place: each point takes the id of the first point before it within
-/// `tolerance` (found in the 27 cells of that size around it, so two points that close
-/// never round apart, as hashing alone lets them where a cell border falls between).
-std::vector<int> NearPointIds(const std::vector<Vec3>& points, double tolerance)
-{
-  std::unordered_map<long long, std::vector<int>> cells; // first points, by cell
-  const auto key = [](long long x, long long y, long long z) { return (x * 73856093LL) ^ (y * 19349663LL) ^ (z * 83492791LL); };
-  std::vector<int> ids(points.size(), -1);
-  int next = 0;
-  for (size_t i = 0; i < points.size(); ++i)
-  {
-    const std::array<long long, 3> at = QuantizedPoint(points[i], tolerance);
-    for (int step = 0; step < 27 && ids[i] < 0; ++step)
-    {
-      const auto found = cells.find(key(at[0] + step % 3 - 1, at[1] + step / 3 % 3 - 1, at[2] + step / 9 - 1));
-      for (size_t k = 0; found != cells.end() && k < found->second.size() && ids[i] < 0; ++k)
-      {
-        const int j = found->second[k];
-        ids[i] = Norm(points[j] - points[i]) <= tolerance ? ids[j] : -1;
-      }
-    }
-    if (ids[i] < 0)
-    {
-      ids[i] = next++;
-      cells[key(at[0], at[1], at[2])].push_back(static_cast<int>(i));
-    }
-  }
-  return ids;
-}
-
 /// The patches next to each patch: those whose input polygons share an edge with its own,
 /// by the position of the input's points, within `tolerance` (a small patch holds whole
 /// input polygons; corners that overlap cuts made, and the mesher's own points along split
@@ -94,7 +62,7 @@ std::vector<int> NearPointIds(const std::vector<Vec3>& points, double tolerance)
 /// meet, where the input's are copies of each other).
 std::vector<std::vector<int>> Neighbours(const MeshedPolygons& mesh, const PolygonArrays& input, double tolerance)
 {
-  const std::vector<int> welded = NearPointIds(input.Points, tolerance);
+  const std::vector<int> welded = WeldedPointIds(input.Points, tolerance);
   // By the mesher's polygon, not the input's: a warped input polygon is several triangles.
   std::vector<int> cellPatch(input.Offsets.size() - 1, -1);
   for (size_t e = 0; e < mesh.MeshedPolygon.size(); ++e)

@@ -298,7 +298,7 @@ std::vector<std::vector<int>> EarlierNeighbours(const std::vector<Face>& faces, 
       for (long long y = index(lo.y); y <= index(hi.y); ++y)
         for (long long z = index(lo.z); z <= index(hi.z); ++z)
         {
-          std::vector<int>& here = grid[(x * 73856093LL) ^ (y * 19349663LL) ^ (z * 83492791LL)];
+          std::vector<int>& here = grid[CellHash(x, y, z)];
           for (int j : here)
           {
             consider(j);
