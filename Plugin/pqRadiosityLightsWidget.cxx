@@ -1,7 +1,10 @@
 #include "pqRadiosityLightsWidget.h"
 
+#include "Relight/LightRig.h"
+
 #include <algorithm>
-#include <cmath>
+#include <string>
+#include <vector>
 
 #include "vtkCommand.h"
 #include "vtkEventQtSlotConnect.h"
@@ -18,8 +21,6 @@
 #include <QSignalBlocker>
 #include <QTableWidget>
 #include <QVBoxLayout>
-
-#include <algorithm>
 
 pqRadiosityLightsWidget::pqRadiosityLightsWidget(vtkSMProxy* proxy, vtkSMProperty* property, QWidget* parent)
   : Superclass(proxy, parent)
@@ -55,47 +56,55 @@ pqRadiosityLightsWidget::~pqRadiosityLightsWidget()
   this->Connection->Delete();
 }
 
+namespace
+{
+std::vector<std::string> Strings(vtkSMProperty* property)
+{
+  vtkSMPropertyHelper helper(property);
+  std::vector<std::string> strings;
+  for (unsigned int i = 0; i < helper.GetNumberOfElements(); ++i)
+  {
+    strings.emplace_back(helper.GetAsString(i));
+  }
+  return strings;
+}
+
+std::vector<std::string> Strings(const QStringList& list)
+{
+  std::vector<std::string> strings;
+  for (const QString& item : list)
+  {
+    strings.push_back(item.toStdString());
+  }
+  return strings;
+}
+} // namespace
+
 QVector<pqRadiosityLightsWidget::Light> pqRadiosityLightsWidget::readLights(vtkSMProperty* info) const
 {
-  vtkSMPropertyHelper effective(info);
-  const QStringList& values = this->Rows;
+  // The rows are read as the core writes them (radiosity::SettingRow), so a new column is
+  // read here without a change.
+  const std::vector<radiosity::NamedSetting> mine = radiosity::ParseSettingRows(Strings(this->Rows));
   QVector<Light> lights;
-  for (unsigned int n = 0; n + 5 < effective.GetNumberOfElements(); n += 6)
+  for (const radiosity::NamedSetting& inEffect : radiosity::ParseSettingRows(Strings(info)))
   {
     Light light;
-    light.Name = effective.GetAsString(n);
-    for (unsigned int i = 0; i + 5 < effective.GetNumberOfElements(); i += 6)
+    light.Name = QString::fromStdString(inEffect.Name);
+    radiosity::LightSetting shown = inEffect.Setting;
+    for (const radiosity::NamedSetting& row : mine)
     {
-      if (light.Name == effective.GetAsString(i))
+      if (row.Name == inEffect.Name)
       {
-        for (int c = 0; c < 3; ++c)
-        {
-          light.Color[c] = QString(effective.GetAsString(i + 1 + c)).toDouble();
-        }
-        light.Intensity = QString(effective.GetAsString(i + 4)).toDouble();
-        light.Enabled = QString(effective.GetAsString(i + 5)).toInt() != 0;
-      }
-    }
-    for (int i = 0; i + 5 < values.size(); i += 6)
-    {
-      if (light.Name == values[i])
-      {
-        // 'nan' keeps the default, which the effective values above already hold.
-        bool numbers = true;
-        double color[3];
-        for (int c = 0; c < 3; ++c)
-        {
-          color[c] = values[i + 1 + c].toDouble();
-          numbers = numbers && std::isfinite(color[c]);
-        }
-        light.ColorEdited = numbers;
-        std::copy(color, color + (numbers ? 3 : 0), light.Color);
-        const double intensity = values[i + 4].toDouble();
-        light.Intensity = std::isfinite(intensity) ? intensity : light.Intensity;
-        light.Enabled = values[i + 5].toInt() != 0;
+        row.Setting.ApplyTo(shown); // a 'nan' part keeps what is in effect
         light.Edited = true;
+        light.ColorEdited = row.Setting.HasColor;
       }
     }
+    light.Color[0] = shown.Color.x;
+    light.Color[1] = shown.Color.y;
+    light.Color[2] = shown.Color.z;
+    light.Intensity = shown.Intensity;
+    light.Enabled = shown.Enabled;
     lights.push_back(light);
   }
   return lights;
@@ -244,13 +253,16 @@ void pqRadiosityLightsWidget::push()
     {
       continue;
     }
-    rows.push_back(light.Name);
-    for (double c : light.Color)
+    radiosity::LightSetting setting;
+    setting.HasColor = light.ColorEdited;
+    setting.Color = { light.Color[0], light.Color[1], light.Color[2] };
+    setting.HasIntensity = setting.HasEnabled = true;
+    setting.Intensity = light.Intensity;
+    setting.Enabled = light.Enabled;
+    for (const std::string& item : radiosity::SettingInputRow(light.Name.toStdString(), setting))
     {
-      rows.push_back(light.ColorEdited ? QString::number(c, 'g', 9) : QString("nan"));
+      rows.push_back(QString::fromStdString(item));
     }
-    rows.push_back(QString::number(light.Intensity, 'g', 9));
-    rows.push_back(light.Enabled ? "1" : "0");
   }
   this->Rows = rows;
   Q_EMIT this->rowsChanged(); // the links set the property and say a change is available

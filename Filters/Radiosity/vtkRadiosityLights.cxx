@@ -2,7 +2,18 @@
 
 #include "Relight/LightRig.h"
 
+#include "Base/Text.h"
+
+#include "vtkDelimitedTextReader.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkTable.h"
+#include "vtkVariant.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
 
 vtkStandardNewMacro(vtkRadiosityLights);
 
@@ -11,7 +22,10 @@ vtkRadiosityLights::vtkRadiosityLights()
 {
 }
 
-vtkRadiosityLights::~vtkRadiosityLights() = default;
+vtkRadiosityLights::~vtkRadiosityLights()
+{
+  this->SetScheduleFileName(nullptr);
+}
 
 void vtkRadiosityLights::SetLightColor(int light, double r, double g, double b)
 {
@@ -86,6 +100,82 @@ int vtkRadiosityLights::GetNumberOfScheduleEntries() const
 {
   return static_cast<int>(this->Settings->Schedule.size());
 }
+
+namespace
+{
+/// When the file was last written (0 when it cannot be read): a change re-reads it.
+long long WriteStamp(const std::string& file)
+{
+  std::error_code failed;
+  const auto stamp = std::filesystem::last_write_time(file, failed);
+  return failed ? 0 : static_cast<long long>(stamp.time_since_epoch().count());
+}
+} // namespace
+
+bool vtkRadiosityLights::ReadScheduleFile(std::string& error)
+{
+  const std::string file = this->ScheduleFileName ? this->ScheduleFileName : "";
+  const long long stamp = file.empty() ? 0 : WriteStamp(file);
+  if (file == this->ReadFile && stamp == this->ReadStamp)
+  {
+    return true;
+  }
+  std::vector<radiosity::LightKeyframe>& keys = this->Settings->FileSchedule;
+  keys.clear();
+  this->ReadFile.clear();
+  if (file.empty())
+  {
+    return true;
+  }
+  if (!std::ifstream(file))
+  {
+    error = "cannot open the schedule file '" + file + "'";
+    return false;
+  }
+  // A real CSV reader: quoted names may hold commas and spaces ("Warm, White").
+  vtkNew<vtkDelimitedTextReader> reader;
+  reader->SetFileName(file.c_str());
+  reader->SetFieldDelimiterCharacters(",");
+  reader->SetUseStringDelimiter(true);
+  reader->SetStringDelimiter('"');
+  reader->SetHaveHeaders(false);
+  reader->SetDetectNumericColumns(false);
+  reader->Update();
+  vtkTable* table = reader->GetOutput();
+  const vtkIdType columns = table->GetNumberOfColumns();
+  for (vtkIdType row = 0; row < table->GetNumberOfRows(); ++row)
+  {
+    std::vector<std::string> cells;
+    for (vtkIdType c = 0; c < columns; ++c)
+    {
+      cells.push_back(table->GetValue(row, c).ToString());
+    }
+    while (!cells.empty() && radiosity::Trimmed(cells.back()).empty())
+    {
+      cells.pop_back();
+    }
+    std::string first = cells.empty() ? std::string() : radiosity::Trimmed(cells[0]);
+    std::transform(first.begin(), first.end(), first.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (cells.empty() || (row == 0 && first == "time"))
+    {
+      continue; // an empty line, or the header (known by its first column's name)
+    }
+    radiosity::LightKeyframe k;
+    if (!radiosity::ParseKeyframe(cells, k))
+    {
+      error = "row " + std::to_string(row + 1) + " of '" + file +
+        "' is not 'time, light, r, g, b, intensity[, enabled]' (numbers; enabled as true/false, on/off, "
+        "yes/no or 1/0; quote names with commas)";
+      keys.clear();
+      return false;
+    }
+    keys.push_back(k);
+  }
+  this->ReadFile = file;
+  this->ReadStamp = stamp;
+  return true;
+}
+
 
 void vtkRadiosityLights::PrintSelf(ostream& os, vtkIndent indent)
 {

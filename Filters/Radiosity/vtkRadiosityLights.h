@@ -22,6 +22,7 @@
 #include "vtkRadiosityFiltersModule.h" // for export macro
 
 #include <memory> // for the rig
+#include <string> // for errors
 
 namespace radiosity
 {
@@ -61,6 +62,20 @@ public:
   int GetNumberOfScheduleEntries() const;
   ///@}
 
+  ///@{
+  /// A CSV file of keyframes, added to the entries above: names quoted where they hold
+  /// commas, an optional header whose first column is "time", the columns of
+  /// AddScheduleEntry with `enabled` optional (true/false, on/off, yes/no or 1/0). Read
+  /// by ReadScheduleFile, again whenever the file changes.
+  vtkSetStringMacro(ScheduleFileName);
+  vtkGetStringMacro(ScheduleFileName);
+  ///@}
+
+  /// Reads the schedule file if it was not read as it is now (cheap otherwise); false
+  /// with `error` set if it cannot be read or a row is malformed, its keyframes then
+  /// dropped. Every reader of the settings calls this before resolving them.
+  bool ReadScheduleFile(std::string& error);
+
 #ifndef __VTK_WRAP__
   /// The settings for the core to resolve (C++ only). A caller that changes them calls
   /// Modified().
@@ -77,6 +92,9 @@ private:
   void operator=(const vtkRadiosityLights&) = delete;
 
   std::unique_ptr<radiosity::LightRig> Settings;
+  char* ScheduleFileName = nullptr;
+  std::string ReadFile;      ///< the schedule file as last read
+  long long ReadStamp = 0;   ///< its last write time then: a newer one re-reads it
 };
 
 #endif

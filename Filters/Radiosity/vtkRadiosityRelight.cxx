@@ -15,7 +15,6 @@
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
-#include "vtkDelimitedTextReader.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
@@ -34,13 +33,10 @@
 #include "vtkVariant.h"
 
 #include <algorithm>
-#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <memory>
 #include <set>
 #include <sstream>
@@ -89,7 +85,6 @@ vtkMTimeType vtkRadiosityRelight::GetMTime()
 
 vtkRadiosityRelight::~vtkRadiosityRelight()
 {
-  this->SetScheduleFileName(nullptr);
   delete this->Moving;
 }
 
@@ -349,87 +344,12 @@ bool vtkRadiosityRelight::AddMovingLights(vtkPolyData* scene, vtkPolyData* light
   return true;
 }
 
-namespace
-{
-/// When the file was last written (0 when it cannot be read): a change re-reads it.
-long long WriteStamp(const std::string& file)
-{
-  std::error_code failed;
-  const auto stamp = std::filesystem::last_write_time(file, failed);
-  return failed ? 0 : static_cast<long long>(stamp.time_since_epoch().count());
-}
-} // namespace
-
-bool vtkRadiosityRelight::LoadSchedule(std::string& error)
-{
-  const std::string file = this->ScheduleFileName ? this->ScheduleFileName : "";
-  const long long stamp = file.empty() ? 0 : WriteStamp(file);
-  if (file == this->LoadedScheduleFile && stamp == this->LoadedScheduleStamp)
-  {
-    return true;
-  }
-  std::vector<radiosity::LightKeyframe>& keys = this->Lights->Rig().FileSchedule;
-  keys.clear();
-  this->LoadedScheduleFile.clear();
-  if (file.empty())
-  {
-    return true;
-  }
-  if (!std::ifstream(file))
-  {
-    error = "cannot open the schedule file '" + file + "'";
-    return false;
-  }
-  // A real CSV reader: quoted names may hold commas and spaces ("Warm, White").
-  vtkNew<vtkDelimitedTextReader> reader;
-  reader->SetFileName(file.c_str());
-  reader->SetFieldDelimiterCharacters(",");
-  reader->SetUseStringDelimiter(true);
-  reader->SetStringDelimiter('"');
-  reader->SetHaveHeaders(false);
-  reader->SetDetectNumericColumns(false);
-  reader->Update();
-  vtkTable* table = reader->GetOutput();
-  const vtkIdType columns = table->GetNumberOfColumns();
-  for (vtkIdType row = 0; row < table->GetNumberOfRows(); ++row)
-  {
-    std::vector<std::string> cells;
-    for (vtkIdType c = 0; c < columns; ++c)
-    {
-      cells.push_back(table->GetValue(row, c).ToString());
-    }
-    while (!cells.empty() && radiosity::Trimmed(cells.back()).empty())
-    {
-      cells.pop_back();
-    }
-    std::string first = cells.empty() ? std::string() : radiosity::Trimmed(cells[0]);
-    std::transform(first.begin(), first.end(), first.begin(), [](unsigned char c) { return std::tolower(c); });
-    if (cells.empty() || (row == 0 && first == "time"))
-    {
-      continue; // an empty line, or the header (known by its first column's name)
-    }
-    radiosity::LightKeyframe k;
-    if (!radiosity::ParseKeyframe(cells, k))
-    {
-      error = "row " + std::to_string(row + 1) + " of '" + file +
-        "' is not 'time, light, r, g, b, intensity[, enabled]' (numbers; enabled as true/false, on/off, "
-        "yes/no or 1/0; quote names with commas)";
-      keys.clear();
-      return false;
-    }
-    keys.push_back(k);
-  }
-  this->LoadedScheduleFile = file;
-  this->LoadedScheduleStamp = stamp;
-  return true;
-}
-
 int vtkRadiosityRelight::RequestInformation(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkInformation* info = outputVector->GetInformationObject(0);
   std::string error;
-  if (!this->LoadSchedule(error))
+  if (!this->Lights->ReadScheduleFile(error))
   {
     vtkErrorMacro(<< "Cannot relight: " << error << ".");
     return 0;

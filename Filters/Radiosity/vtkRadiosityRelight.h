@@ -98,8 +98,8 @@ public:
     this->Lights->AddScheduleEntry(time, light, r, g, b, intensity, enabled);
   }
   void ClearSchedule() { this->Lights->ClearSchedule(); }
-  vtkSetStringMacro(ScheduleFileName);
-  vtkGetStringMacro(ScheduleFileName);
+  void SetScheduleFileName(const char* file) { this->Lights->SetScheduleFileName(file); }
+  char* GetScheduleFileName() { return this->Lights->GetScheduleFileName(); }
   int GetNumberOfScheduleEntries() const { return this->Lights->GetNumberOfScheduleEntries(); }
   ///@}
 
@@ -166,10 +166,6 @@ private:
   struct Internals;
   std::unique_ptr<Internals> Internal; ///< the lights the last execution resolved
   vtkSmartPointer<vtkRadiosityLights> Lights;
-  std::string LoadedScheduleFile;
-  long long LoadedScheduleStamp = 0; ///< its last write time when read: a newer one re-reads it
-  char* ScheduleFileName = nullptr;
-  bool LoadSchedule(std::string& error);
   vtkSmartPointer<vtkStringArray> NamesInfo;
   vtkSmartPointer<vtkStringArray> SettingsInfo;
   /// The field arrays LightColors (color x intensity) and LightEnabled, per light.

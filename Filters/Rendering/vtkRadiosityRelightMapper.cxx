@@ -258,7 +258,9 @@ void vtkRadiosityRelightMapper::DescribeLights(vtkPolyData* data, vtkStringArray
   const std::vector<std::string> lights = vtkRadiosityLightNames(data->GetFieldData());
   std::vector<radiosity::LightSetting> effective;
   std::vector<std::string> warnings;
-  if (!this->Internal->Lights->Rig().Resolve(lights, DefaultColors(data, lights.size()), this->Internal->Time, effective, warnings)
+  std::string unread;
+  if (!this->Internal->Lights->ReadScheduleFile(unread) ||
+    !this->Internal->Lights->Rig().Resolve(lights, DefaultColors(data, lights.size()), this->Internal->Time, effective, warnings)
          .empty())
   {
     return;
@@ -306,7 +308,11 @@ std::vector<float> vtkRadiosityRelightMapper::CurrentWeights()
   Internals& in = *this->Internal;
   std::vector<radiosity::LightSetting> effective;
   std::vector<std::string> warnings;
-  const std::string invalid = in.Lights->Rig().Resolve(in.Names, in.Defaults, in.Time, effective, warnings);
+  std::string invalid;
+  if (in.Lights->ReadScheduleFile(invalid))
+  {
+    invalid = in.Lights->Rig().Resolve(in.Names, in.Defaults, in.Time, effective, warnings);
+  }
   if (!invalid.empty())
   {
     in.Problem = invalid;

@@ -60,6 +60,28 @@ void vtkRadiosityRelitRepresentation::ClearLightSettings()
   this->Mapper->GetLights()->ClearLightSettings();
 }
 
+void vtkRadiosityRelitRepresentation::AddScheduleEntry(
+  double time, const char* light, double r, double g, double b, double intensity, int enabled)
+{
+  this->Mapper->GetLights()->AddScheduleEntry(time, light, r, g, b, intensity, enabled);
+}
+
+void vtkRadiosityRelitRepresentation::ClearSchedule()
+{
+  this->Mapper->GetLights()->ClearSchedule();
+}
+
+void vtkRadiosityRelitRepresentation::SetScheduleFileName(const char* file)
+{
+  this->Mapper->GetLights()->SetScheduleFileName(file);
+}
+
+void vtkRadiosityRelitRepresentation::SetUpdateTime(double time)
+{
+  this->Mapper->SetTime(time);
+  this->Superclass::SetUpdateTime(time);
+}
+
 void vtkRadiosityRelitRepresentation::SetRelightExposure(double exposure)
 {
   this->Mapper->SetExposure(exposure);

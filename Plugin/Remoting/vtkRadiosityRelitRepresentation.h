@@ -7,6 +7,8 @@
  * uniforms, without Apply, without running the pipeline and without sending the data
  * again.
  *
+ * A light schedule, as the relight filter's, is evaluated at the view's time.
+ *
  * With ComputedColors on ("Relit Colors", the relight filter's output) it shows the
  * input's DisplayColors as they are instead: the filter already relit and exposed them.
  */
@@ -35,6 +37,17 @@ public:
   void SetLightSetting(const char* name, double r, double g, double b, double intensity, int enabled);
   void ClearLightSettings();
   ///@}
+
+  ///@{
+  /// The lights' schedule, as the relight filter's: keyframes one by one and a CSV file,
+  /// evaluated at the view's time (a time step of the view relights the picture).
+  void AddScheduleEntry(double time, const char* light, double r, double g, double b, double intensity, int enabled);
+  void ClearSchedule();
+  void SetScheduleFileName(const char* file);
+  ///@}
+
+  /// The view's time also sets the time of the lights' schedule.
+  void SetUpdateTime(double time) override;
 
   /// Multiplier before the clamp to display colors.
   void SetRelightExposure(double exposure);

@@ -1,4 +1,5 @@
 #include "Mesh/CoincidentCopies.h"
+#include "Mesh/KeepingOrder.h"
 
 #include <algorithm>
 #include <array>
@@ -39,8 +40,8 @@ CoincidentCopies DropCoincidentCopies(const std::vector<Vec3>& points, const std
   const std::vector<char>& lamps, double tolerance, PairedPolygons& polygons)
 {
   const auto surface = [&](int s) { return s < static_cast<int>(surfaceKey.size()) ? surfaceKey[s] : 0; };
-  const auto lamp = [&](int s) { return s < static_cast<int>(lamps.size()) && lamps[s]; };
-  // The polygon kept of each set of copies: the first lamp, else the first.
+  const KeepingOrder order(lamps, polygons);
+  // The polygon kept of each set of copies: the first in the keeping order.
   const size_t count = polygons.Source.size();
   std::map<std::vector<long long>, size_t> chosen; // key -> polygon kept
   std::vector<std::map<std::vector<long long>, size_t>::iterator> set(count);
@@ -49,7 +50,7 @@ CoincidentCopies DropCoincidentCopies(const std::vector<Vec3>& points, const std
     const int* ids = polygons.Connectivity.data() + polygons.Offsets[i];
     const auto [at, isNew] =
       chosen.emplace(Key(points, ids, polygons.Offsets[i + 1] - polygons.Offsets[i], tolerance), i);
-    if (!isNew && lamp(polygons.Source[i]) && !lamp(polygons.Source[at->second]))
+    if (!isNew && order.Before(i, at->second))
     {
       at->second = i;
     }
@@ -62,7 +63,7 @@ CoincidentCopies DropCoincidentCopies(const std::vector<Vec3>& points, const std
   {
     const int source = polygons.Source[i], keeper = polygons.Source[set[i]->second];
     // Two lamps of different lights: both stay (one would be a light lost), and are said.
-    const bool otherLamp = lamp(source) && lamp(keeper) && surface(keeper) != surface(source);
+    const bool otherLamp = order.IsLamp(i) && order.IsLamp(set[i]->second) && surface(keeper) != surface(source);
     if (otherLamp)
     {
       found.LampsKept.emplace_back(keeper, source);

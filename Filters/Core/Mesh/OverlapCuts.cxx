@@ -1,4 +1,5 @@
 #include "Mesh/OverlapCuts.h"
+#include "Mesh/KeepingOrder.h"
 #include "Geometry/Polygon.h"
 #include "Mesh/ConvexPieces.h"
 
@@ -236,19 +237,15 @@ bool Candidates(const Face& a, const Face& b, double tolerance)
     MayOverlap(a, b, tolerance);
 }
 
-/// `faces` in the order in which they keep an overlap: lamps first (a lamp panel drawn in
-/// the ceiling it hangs from shines, the ceiling is cut around it), then as the polygons
-/// come. One total order for every pair, whatever their materials, so no point of a plane
-/// is left to none of its faces (an order by size across materials and by position within
-/// one made cycles and holes) and none to two.
+/// `faces` in the order in which they keep an overlap (KeepingOrder).
 std::vector<Face> InKeepingOrder(std::vector<Face> faces, const std::vector<char>& lamps, const PairedPolygons& polygons)
 {
+  const KeepingOrder order(lamps, polygons);
   for (Face& f : faces)
   {
-    const int source = polygons.Source[f.Index];
-    f.Lamp = source < static_cast<int>(lamps.size()) && lamps[source];
+    f.Lamp = order.IsLamp(f.Index);
   }
-  std::stable_partition(faces.begin(), faces.end(), [](const Face& f) { return f.Lamp; });
+  std::stable_sort(faces.begin(), faces.end(), [&](const Face& a, const Face& b) { return order.Before(a.Index, b.Index); });
   return faces;
 }
 

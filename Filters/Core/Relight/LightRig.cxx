@@ -123,6 +123,42 @@ std::vector<std::string> SettingRow(const std::string& name, const LightSetting&
     number(setting.Intensity), setting.Enabled ? "1" : "0" };
 }
 
+std::vector<std::string> SettingInputRow(const std::string& name, const LightSetting& setting)
+{
+  std::vector<std::string> row = SettingRow(name, setting);
+  for (size_t i = 1; i < 4 && !setting.HasColor; ++i)
+  {
+    row[i] = "nan";
+  }
+  if (!setting.HasIntensity)
+  {
+    row[4] = "nan";
+  }
+  return row;
+}
+
+std::vector<NamedSetting> ParseSettingRows(const std::vector<std::string>& flat)
+{
+  std::vector<NamedSetting> rows;
+  for (size_t i = 0; i + 6 <= flat.size(); i += 6)
+  {
+    NamedSetting row;
+    row.Name = flat[i];
+    LightSetting& s = row.Setting;
+    s.HasColor = ParseNumber(flat[i + 1], s.Color.x) && ParseNumber(flat[i + 2], s.Color.y) &&
+      ParseNumber(flat[i + 3], s.Color.z);
+    s.Color = s.HasColor ? s.Color : Vec3(1, 1, 1);
+    s.HasIntensity = ParseNumber(flat[i + 4], s.Intensity);
+    s.Intensity = s.HasIntensity ? s.Intensity : 1.0;
+    s.HasEnabled = ParseEnabled(flat[i + 5], s.Enabled);
+    if (!row.Name.empty() && s.HasEnabled)
+    {
+      rows.push_back(row);
+    }
+  }
+  return rows;
+}
+
 bool ParseKeyframe(const std::vector<std::string>& cells, LightKeyframe& key)
 {
   key = LightKeyframe();

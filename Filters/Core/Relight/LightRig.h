@@ -37,6 +37,23 @@ std::string InvalidLightValues(double intensity, const Vec3& color);
 /// the mapper's read-back both write it here, so a new column is added once.
 std::vector<std::string> SettingRow(const std::string& name, const LightSetting& setting);
 
+/// A setting as a row a user gives (LightSettings): as SettingRow, but a color or intensity
+/// the setting leaves unset is written 'nan' ("keep the default").
+std::vector<std::string> SettingInputRow(const std::string& name, const LightSetting& setting);
+
+/// One row of a LightSettings list, read back.
+struct NamedSetting
+{
+  std::string Name;
+  LightSetting Setting;
+};
+
+/// The rows of a flat LightSettings list (six strings a light, as SettingRow and
+/// SettingInputRow write them): a color or intensity that is not a finite number ('nan')
+/// is left unset, as SetByName leaves it; `enabled` as ParseKeyframe reads it. A row with
+/// an empty name or an unreadable `enabled`, and a trailing part-row, are skipped.
+std::vector<NamedSetting> ParseSettingRows(const std::vector<std::string>& flat);
+
 /// A keyframe of the schedule: the light by name, or by index written as a number.
 struct LightKeyframe
 {

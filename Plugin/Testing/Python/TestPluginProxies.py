@@ -98,6 +98,27 @@ def grab(view):
     return numpy_support.vtk_to_numpy(reader.GetOutput().GetPointData().GetScalars())[:, :3].astype(float)
 
 
+def check_relit_schedule(view, display):
+    """Relit Surface follows the lights' schedule at the view's time (on the GPU, no filter)."""
+    display.RelitExposure = 0.5
+    display.RelitScheduleEntries = ["0", LIGHT, "1", "1", "1", "0", "1", "4", LIGHT, "1", "1", "1", "8", "1"]
+    view.ResetCamera()
+    shown = {}
+    for time in (1.0, 3.0):
+        view.ViewTime = time
+        shown[time] = grab(view).mean()
+        display.UpdatePropertyInformation()
+        info = list(display.RelitLightSettingsInfo)
+        check(info[:1] == [LIGHT] and float(info[4]) == 2.0 * time,
+              "at view time %g Relit Surface has %s, expected %s at intensity %g" % (time, info, LIGHT, 2.0 * time))
+    check(shown[3.0] > shown[1.0] + 1.0,
+          "the relit picture at time 3 (mean %.3g) is not brighter than at time 1 (%.3g)" % (shown[3.0], shown[1.0]))
+    print("Relit Surface schedule: intensity 2 -> 6 from view time 1 to 3, mean picture %.3g -> %.3g"
+          % (shown[1.0], shown[3.0]))
+    display.RelitScheduleEntries = []
+    view.ViewTime = 0.0
+
+
 def write_room_obj():
     """A 2 x 2 x 2 m box (inward faces, Kd 0.5) with a 0.5 m ceiling lamp (Ke 10) as OBJ+MTL."""
     folder = tempfile.mkdtemp()
@@ -345,6 +366,7 @@ def main(argv):
     solved_display = Show(solver, view)
     check(solved_display.Representation == "Relit Surface",
           "Show(solver) in pvbatch is '%s', not the relit picture ('Relit Surface')" % solved_display.Representation)
+    check_relit_schedule(view, solved_display)
     Hide(solver, view)
     display = Show(relight, view)
     check(display.Representation == "Relit Colors",

@@ -113,3 +113,36 @@ TEST(LightRig, KeyframeRowsParse)
   EXPECT_FALSE(ParseKeyframe({ "0", "A", "1", "1", "1", "1", "maybe" }, key));
   EXPECT_FALSE(ParseKeyframe({ "nan", "A", "1", "1", "1", "1" }, key));
 }
+
+TEST(LightRig, SettingRowsReadBackAsWritten)
+{
+  LightSetting warm;
+  warm.HasColor = warm.HasIntensity = warm.HasEnabled = true;
+  warm.Color = { 1, 0.8, 0.6 };
+  warm.Intensity = 2.5;
+  LightSetting dimmed; // only the intensity given: the color stays the default
+  dimmed.HasIntensity = dimmed.HasEnabled = true;
+  dimmed.Intensity = 0.5;
+  dimmed.Enabled = false;
+  std::vector<std::string> flat = SettingInputRow("Warm, White", warm);
+  const std::vector<std::string> second = SettingInputRow("B", dimmed);
+  EXPECT_EQ(second, (std::vector<std::string>{ "B", "nan", "nan", "nan", "0.5", "0" }));
+  flat.insert(flat.end(), second.begin(), second.end());
+  flat.insert(flat.end(), { "C", "1", "1" }); // a part-row: dropped
+  const std::vector<NamedSetting> rows = ParseSettingRows(flat);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0].Name, "Warm, White");
+  EXPECT_TRUE(rows[0].Setting.HasColor);
+  EXPECT_DOUBLE_EQ(rows[0].Setting.Color.y, 0.8);
+  EXPECT_DOUBLE_EQ(rows[0].Setting.Intensity, 2.5);
+  EXPECT_TRUE(rows[0].Setting.Enabled);
+  EXPECT_FALSE(rows[1].Setting.HasColor);
+  EXPECT_TRUE(rows[1].Setting.HasIntensity);
+  EXPECT_FALSE(rows[1].Setting.Enabled);
+  // What SettingRow writes (every part a number) reads back whole.
+  const std::vector<NamedSetting> full = ParseSettingRows(SettingRow("B", dimmed));
+  ASSERT_EQ(full.size(), 1u);
+  EXPECT_TRUE(full[0].Setting.HasColor && full[0].Setting.HasIntensity);
+  EXPECT_TRUE(ParseSettingRows({ "", "1", "1", "1", "1", "1" }).empty());
+  EXPECT_TRUE(ParseSettingRows({ "A", "1", "1", "1", "1", "maybe" }).empty());
+}
