@@ -110,28 +110,10 @@ long long WriteStamp(const std::string& file)
   const auto stamp = std::filesystem::last_write_time(file, failed);
   return failed ? 0 : static_cast<long long>(stamp.time_since_epoch().count());
 }
-} // namespace
 
-bool vtkRadiosityLights::ReadScheduleFile(std::string& error)
+/// The keyframes of a schedule CSV file; false with `error` naming the first bad row.
+bool ReadKeyframes(const std::string& file, std::vector<radiosity::LightKeyframe>& keys, std::string& error)
 {
-  const std::string file = this->ScheduleFileName ? this->ScheduleFileName : "";
-  const long long stamp = file.empty() ? 0 : WriteStamp(file);
-  if (file == this->ReadFile && stamp == this->ReadStamp)
-  {
-    return true;
-  }
-  std::vector<radiosity::LightKeyframe>& keys = this->Settings->FileSchedule;
-  keys.clear();
-  this->ReadFile.clear();
-  if (file.empty())
-  {
-    return true;
-  }
-  if (!std::ifstream(file))
-  {
-    error = "cannot open the schedule file '" + file + "'";
-    return false;
-  }
   // A real CSV reader: quoted names may hold commas and spaces ("Warm, White").
   vtkNew<vtkDelimitedTextReader> reader;
   reader->SetFileName(file.c_str());
@@ -166,16 +148,43 @@ bool vtkRadiosityLights::ReadScheduleFile(std::string& error)
       error = "row " + std::to_string(row + 1) + " of '" + file +
         "' is not 'time, light, r, g, b, intensity[, enabled]' (numbers; enabled as true/false, on/off, "
         "yes/no or 1/0; quote names with commas)";
-      keys.clear();
       return false;
     }
     keys.push_back(k);
+  }
+  return true;
+}
+} // namespace
+
+bool vtkRadiosityLights::ReadScheduleFile(std::string& error)
+{
+  const std::string file = this->ScheduleFileName ? this->ScheduleFileName : "";
+  const long long stamp = file.empty() ? 0 : WriteStamp(file);
+  if (file == this->ReadFile && stamp == this->ReadStamp)
+  {
+    return true;
+  }
+  std::vector<radiosity::LightKeyframe>& keys = this->Settings->FileSchedule;
+  keys.clear();
+  this->ReadFile.clear();
+  if (file.empty())
+  {
+    return true;
+  }
+  if (!std::ifstream(file))
+  {
+    error = "cannot open the schedule file '" + file + "'";
+    return false;
+  }
+  if (!ReadKeyframes(file, keys, error))
+  {
+    keys.clear();
+    return false;
   }
   this->ReadFile = file;
   this->ReadStamp = stamp;
   return true;
 }
-
 
 void vtkRadiosityLights::PrintSelf(ostream& os, vtkIndent indent)
 {
