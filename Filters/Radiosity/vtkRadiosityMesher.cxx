@@ -81,13 +81,15 @@ std::vector<char> Lamps(const radiosity::SceneMesh& mesh, const std::vector<radi
 /// on MPI `whole`, the whole scene's polygons, with the float noise of the whole): the one
 /// place they are made, so the panel's estimate, the element budget and the mesh agree.
 radiosity::MesherOptions OptionsFor(vtkRadiosityMesher* self, const radiosity::SceneMesh& mesh,
-  std::vector<char> lamps, const radiosity::PolygonArrays* whole = nullptr, double wholeQuantum = 0)
+  std::vector<char> lamps, const radiosity::PolygonArrays* whole = nullptr, double wholeQuantum = 0,
+  const radiosity::WholeSceneSurfaces* surfaces = nullptr)
 {
   radiosity::MesherOptions options;
   options.MergeTriangles = self->GetMergeTriangles();
   options.SharePatches = self->GetSharePatches();
   options.ClusterAngle = self->GetClusterAngle();
   options.WholeScene = whole;
+  options.WholeSurfaces = surfaces;
   options.PointQuantum = std::max(mesh.PointQuantum, wholeQuantum);
   options.Lamps = std::move(lamps);
   return options;
@@ -203,6 +205,8 @@ struct WholeScene
 {
   const radiosity::PolygonArrays* Polygons = nullptr;
   double PointQuantum = 0;
+  /// Its surfaces and where this piece begins in it: copies and overlaps across ranks.
+  const radiosity::WholeSceneSurfaces* Surfaces = nullptr;
 };
 
 std::string MeshPiece(vtkRadiosityMesher* self, vtkPolyData* input, double elementSize, double budget,
@@ -219,7 +223,8 @@ std::string MeshPiece(vtkRadiosityMesher* self, vtkPolyData* input, double eleme
 
   const std::vector<int> surfaceKey = SurfaceKeys(mesh, emission);
 
-  radiosity::MesherOptions options = OptionsFor(self, mesh, Lamps(mesh, emission), whole.Polygons, whole.PointQuantum);
+  radiosity::MesherOptions options =
+    OptionsFor(self, mesh, Lamps(mesh, emission), whole.Polygons, whole.PointQuantum, whole.Surfaces);
   options.PatchSize = self->GetPatchSizeInUse();
   options.ElementSize = elementSize;
   options.ElementBudget = budget;
@@ -245,7 +250,8 @@ double ElementSizeEverywhere(vtkRadiosityMesher* self, vtkMultiProcessController
     vtkRadiosityAdapter::ReadSceneArrays(input, mesh, emission, error);
   // Counted as the rank will mesh its piece: triangle pairs merged, contacts cut.
   const radiosity::MesherOptions options =
-    OptionsFor(self, mesh, usable ? Lamps(mesh, emission) : std::vector<char>(), whole.Polygons, whole.PointQuantum);
+    OptionsFor(self, mesh, usable ? Lamps(mesh, emission) : std::vector<char>(), whole.Polygons, whole.PointQuantum,
+      whole.Surfaces);
   const std::vector<int> keys = usable ? SurfaceKeys(mesh, emission) : std::vector<int>();
   const radiosity::ElementCounter counter(mesh.Points, mesh.Offsets, mesh.Connectivity, keys, options);
   auto count = [&](double size) {
@@ -287,21 +293,40 @@ double OwnQuantum(vtkPolyData* input, bool upstream)
   return vtkRadiosityAdapter::PointQuantum(input, farthest);
 }
 
-/// Every rank's polygons (no arrays: the other ranks need none), so that surfaces of other
-/// pieces that stand on this piece's cut it (ContactCuts.h).
-radiosity::SceneMesh GatherWholeScene(vtkMultiProcessController* parallel, vtkPolyData* input, bool upstream)
+/// Every rank's polygons, in rank order: surfaces of other pieces that stand on this
+/// piece's cut it (ContactCuts.h), and copies and overlaps are found across the pieces
+/// (WholeSceneCuts.h), with surface keys numbered over the whole scene so the ranks agree.
+struct GatheredScene
+{
+  radiosity::SceneMesh Mesh;
+  radiosity::WholeSceneSurfaces Surfaces;
+  bool HasSurfaces = false; ///< false where the whole's arrays could not be read
+};
+
+GatheredScene GatherWholeScene(vtkMultiProcessController* parallel, vtkPolyData* input, bool upstream)
 {
   vtkNew<vtkPolyData> shape;
   if (!upstream && input)
   {
     shape->SetPoints(input->GetPoints());
     shape->SetPolys(input->GetPolys());
+    shape->GetCellData()->ShallowCopy(input->GetCellData());
   }
   vtkNew<vtkPolyData> gathered;
   vtkRadiosityPieces::AllGather(parallel, shape, gathered);
-  radiosity::SceneMesh whole;
+  long long first = 0;
+  vtkRadiosityPieces::SumOverRanks(parallel, shape->GetNumberOfCells(), &first);
+  GatheredScene whole;
   std::string ignored; // a rank's own piece reports its problems itself
-  vtkRadiosityAdapter::CopyPolygons(gathered, whole, ignored);
+  std::vector<radiosity::Vec3> emission;
+  whole.HasSurfaces = vtkRadiosityAdapter::CopyPolygons(gathered, whole.Mesh, ignored) &&
+    vtkRadiosityAdapter::ReadSceneArrays(gathered, whole.Mesh, emission, ignored);
+  if (whole.HasSurfaces)
+  {
+    whole.Surfaces.SurfaceKey = SurfaceKeys(whole.Mesh, emission);
+    whole.Surfaces.Lamps = Lamps(whole.Mesh, emission);
+    whole.Surfaces.FirstPolygon = static_cast<int>(first);
+  }
   return whole;
 }
 
@@ -423,10 +448,12 @@ int vtkRadiosityMesher::RequestData(
     const bool upstream = vtkRadiosityAdapter::FailedUpstream(input);
     const bool empty = !input || input->GetNumberOfCells() == 0;
     vtkRadiosityAdapter::WarningList warnings;
-    const radiosity::SceneMesh whole = parallel ? GatherWholeScene(parallel, input, upstream) : radiosity::SceneMesh();
+    const GatheredScene gathered = parallel ? GatherWholeScene(parallel, input, upstream) : GatheredScene();
+    const radiosity::SceneMesh& whole = gathered.Mesh;
     const radiosity::PolygonArrays wholeArrays{ whole.Points, whole.Offsets, whole.Connectivity };
     const WholeScene wholeScene{ parallel ? &wholeArrays : nullptr,
-      parallel ? vtkRadiosityPieces::MaxOverRanks(parallel, OwnQuantum(input, upstream)) : 0.0 };
+      parallel ? vtkRadiosityPieces::MaxOverRanks(parallel, OwnQuantum(input, upstream)) : 0.0,
+      parallel && gathered.HasSurfaces ? &gathered.Surfaces : nullptr };
     // Sizes from the scene are taken from all of it, so every rank meshes alike.
     // The information pass suggested for this very input already (the usual case).
     vtkDataSet* given = vtkDataSet::GetData(inputVector[0]);

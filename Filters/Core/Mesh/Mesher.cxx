@@ -415,14 +415,18 @@ PairedPolygons SplitWarped(const std::vector<Vec3>& points, const PairedPolygons
   return out;
 }
 
-/// The polygons the mesher meshes: coincident copies left out (said in `copies`), faces
-/// of one surface cut where they overlap in one plane (said in `overlaps`; their new
-/// corners in the result's points), then triangle pairs joined where the options ask, and
-/// warped polygons split into triangles.
-PairedPolygons Paired(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+/// The polygons with coincident copies left out and overlapping faces cut (CoincidentCopies.h,
+/// OverlapCuts.h), found among these polygons or, for a piece, over the whole scene.
+PairedPolygons WithoutCopiesAndOverlaps(const std::vector<Vec3>& points, const std::vector<int>& offsets,
   const std::vector<int>& connectivity, const std::vector<int>& surfaceKey, const MesherOptions& options,
-  CoincidentCopies* copies = nullptr, OverlapCuts* overlaps = nullptr)
+  CoincidentCopies* copies, OverlapCuts* overlaps)
 {
+  if (options.WholeScene && options.WholeSurfaces)
+  {
+    const std::vector<Vec3>& all = options.WholeScene->Points;
+    return CutAsWhole(*options.WholeScene, *options.WholeSurfaces, static_cast<int>(offsets.size()) - 1,
+      1e-7 * std::max(Bounds(all).Diagonal(), 1e-300), 4 * MeshNoise(all, options.PointQuantum), copies, overlaps);
+  }
   PairedPolygons polygons;
   polygons.Offsets = offsets;
   polygons.Connectivity = connectivity;
@@ -436,13 +440,26 @@ PairedPolygons Paired(const std::vector<Vec3>& points, const std::vector<int>& o
   {
     *copies = found;
   }
-  const double noise = MeshNoise(points, options.PointQuantum);
   // From the scene's span (MeshNoise), not its box: which faces overlap must not turn with it.
-  OverlapCuts cuts = CutOverlaps(points, surfaceKey, options.Lamps, 4 * noise, polygons);
+  OverlapCuts cuts = CutOverlaps(points, surfaceKey, options.Lamps, 4 * MeshNoise(points, options.PointQuantum), polygons);
   if (overlaps)
   {
     *overlaps = std::move(cuts);
   }
+  return polygons;
+}
+
+/// The polygons the mesher meshes: coincident copies left out (said in `copies`), faces
+/// of one surface cut where they overlap in one plane (said in `overlaps`; their new
+/// corners in the result's points), then triangle pairs joined where the options ask, and
+/// warped polygons split into triangles.
+PairedPolygons Paired(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, const std::vector<int>& surfaceKey, const MesherOptions& options,
+  CoincidentCopies* copies = nullptr, OverlapCuts* overlaps = nullptr)
+{
+  PairedPolygons polygons = WithoutCopiesAndOverlaps(points, offsets, connectivity, surfaceKey, options, copies, overlaps);
+  const double tolerance = 1e-7 * std::max(Bounds(points).Diagonal(), 1e-300);
+  const double noise = MeshNoise(points, options.PointQuantum);
   const std::vector<Vec3>& at = PointsOf(polygons, points);
   if (!options.MergeTriangles)
   {
@@ -819,9 +836,11 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
   MesherOptions sized = options;
   sized.ElementSize = ChooseElementSize(paired, contacts, options);
   std::map<int, std::vector<Vec3>> outlines; // of the cells the overlaps cut
+  const int first = options.WholeScene && options.WholeSurfaces ? options.WholeSurfaces->FirstPolygon : 0;
   for (int cell : overlaps.Trimmed)
   {
-    DistinctCorners(points, offsets, connectivity, cell, cell, 1e-9 * std::max(Span(points), 1e-300), outlines[cell]);
+    const int own = cell - first; // the reports number the whole scene's cells
+    DistinctCorners(points, offsets, connectivity, own, cell, 1e-9 * std::max(Span(points), 1e-300), outlines[own]);
   }
   const std::string error = MeshList(
     corners, polygons.Offsets, polygons.Connectivity, polygons.Source, surfaceKey, contacts, sized, out, outlines);

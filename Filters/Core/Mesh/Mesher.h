@@ -3,6 +3,7 @@
 #define RadiosityCore_Mesher_h
 
 #include "Mesh/ContactCuts.h"
+#include "Mesh/WholeSceneCuts.h"
 #include "Base/Vec3.h"
 
 #include <functional>
@@ -37,6 +38,10 @@ struct MesherOptions
   /// The whole scene where the polygons are one process's piece of it: surfaces of other
   /// pieces standing on these cut them too (see ContactCuts.h). Null: the polygons are all.
   const PolygonArrays* WholeScene = nullptr;
+  /// With WholeScene: its surfaces and lamps and where these polygons begin in it; the
+  /// coincident copies and overlapping faces are then found over the whole scene
+  /// (WholeSceneCuts.h), and warnings name its cells. Null: found among these polygons.
+  const WholeSceneSurfaces* WholeSurfaces = nullptr;
   /// Per input polygon, 1 where it emits (empty: none does). Of coincident copies in other
   /// materials one is kept (CoincidentCopies.h): a lamp over the surface it doubles.
   std::vector<char> Lamps;
