@@ -12,10 +12,13 @@ namespace radiosity
 {
 
 /// A lamp keeps before a face that is not one (a lamp panel drawn in the ceiling it hangs
-/// from shines, and the ceiling gives way to it), else the earlier polygon keeps. One total
-/// order for every pair, whatever their materials, so no point of a plane is left to none of
-/// its faces (an order by size across materials and by position within one made cycles and
-/// holes) and none to two.
+/// from shines, and the ceiling gives way to it); else a face lying wholly on more faces of
+/// other surfaces keeps (a poster, a rug, a pane drawn on an uncut wall: the detail is what
+/// is seen, and the face under it gives way, whichever came first); else the earlier
+/// polygon keeps. One total order for every pair, whatever their materials, so no point of
+/// a plane is left to none of its faces and none to two (a rule made of pairwise choices,
+/// the smaller of two materials against the earlier of one, made cycles and holes).
+/// Coincident copies lie on each other alike, so for them the earlier keeps.
 class KeepingOrder
 {
 public:
@@ -33,11 +36,16 @@ public:
     return source < static_cast<int>(this->Lamps.size()) && this->Lamps[source];
   }
 
-  /// Whether polygon `a` keeps what it shares with polygon `b`.
-  bool Before(size_t a, size_t b) const
+  /// Whether polygon `a`, lying wholly on `onA` faces of other surfaces, keeps what it
+  /// shares with polygon `b`, lying on `onB`.
+  bool Before(size_t a, size_t b, int onA = 0, int onB = 0) const
   {
     const bool lampA = this->IsLamp(a), lampB = this->IsLamp(b);
-    return lampA != lampB ? lampA : a < b;
+    if (lampA != lampB)
+    {
+      return lampA;
+    }
+    return onA != onB ? onA > onB : a < b;
   }
 
 private:

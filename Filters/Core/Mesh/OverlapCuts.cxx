@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numeric>
 #include <unordered_map>
 
 namespace radiosity
@@ -20,6 +21,7 @@ struct Face
   int Index = 0;   ///< in the polygons
   int Surface = 0; ///< its surface key
   bool Lamp = false;
+  int LyingOn = 0; ///< faces of other surfaces it lies wholly on (KeepingOrder)
   Loop Corners;
   Vec3 Normal;
   Bounds Box;
@@ -237,18 +239,6 @@ bool Candidates(const Face& a, const Face& b, double tolerance)
     MayOverlap(a, b, tolerance);
 }
 
-/// `faces` in the order in which they keep an overlap (KeepingOrder).
-std::vector<Face> InKeepingOrder(std::vector<Face> faces, const std::vector<char>& lamps, const PairedPolygons& polygons)
-{
-  const KeepingOrder order(lamps, polygons);
-  for (Face& f : faces)
-  {
-    f.Lamp = order.IsLamp(f.Index);
-  }
-  std::stable_sort(faces.begin(), faces.end(), [&](const Face& a, const Face& b) { return order.Before(a.Index, b.Index); });
-  return faces;
-}
-
 /// For each face (by position in `faces`), the earlier ones that may overlap it: small
 /// faces met through a grid of cells twice the median box size, faces larger than
 /// kMostCells cells against all. Each pair is decided by its own geometry, so the answer
@@ -307,16 +297,82 @@ std::vector<std::vector<int>> EarlierNeighbours(const std::vector<Face>& faces, 
   return earlier;
 }
 
+/// True when every corner of convex `a` lies inside convex `b` (within `tolerance`).
+bool WhollyOn(const Face& a, const Face& b, double tolerance)
+{
+  for (size_t k = 0; k < b.Corners.size(); ++k)
+  {
+    const auto [origin, inward] = InsideEdge(b.Corners, b.Normal, k);
+    const double length = Norm(inward);
+    for (const Vec3& p : a.Corners)
+    {
+      if (length > 0 && Dot(inward, p - origin) < -tolerance * length)
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+/// `faces` in the order in which they keep an overlap (KeepingOrder: lamps, then faces
+/// lying on faces of other surfaces, then the earlier), with the earlier ones that may
+/// overlap each (as EarlierNeighbours gives them) in `earlier`.
+std::vector<Face> InKeepingOrder(std::vector<Face> faces, const std::vector<char>& lamps, const PairedPolygons& polygons,
+  double tolerance, std::vector<std::vector<int>>& earlier)
+{
+  const KeepingOrder order(lamps, polygons);
+  const std::vector<std::vector<int>> before = EarlierNeighbours(faces, tolerance);
+  for (size_t i = 0; i < faces.size(); ++i)
+  {
+    faces[i].Lamp = order.IsLamp(faces[i].Index);
+    for (int j : before[i])
+    {
+      if (faces[j].Surface != faces[i].Surface)
+      {
+        faces[i].LyingOn += WhollyOn(faces[i], faces[j], tolerance) ? 1 : 0;
+        faces[j].LyingOn += WhollyOn(faces[j], faces[i], tolerance) ? 1 : 0;
+      }
+    }
+  }
+  std::vector<int> sorted(faces.size()), position(faces.size());
+  std::iota(sorted.begin(), sorted.end(), 0);
+  std::stable_sort(sorted.begin(), sorted.end(), [&](int a, int b) {
+    return order.Before(faces[a].Index, faces[b].Index, faces[a].LyingOn, faces[b].LyingOn);
+  });
+  std::vector<Face> ordered;
+  for (size_t at = 0; at < sorted.size(); ++at)
+  {
+    position[sorted[at]] = static_cast<int>(at);
+    ordered.push_back(std::move(faces[sorted[at]]));
+  }
+  // The pairs found once, in the new order: each face's partners that now come before it.
+  earlier.assign(faces.size(), {});
+  for (size_t i = 0; i < before.size(); ++i)
+  {
+    for (int j : before[i])
+    {
+      const int a = position[i], b = position[j];
+      earlier[std::max(a, b)].push_back(std::min(a, b));
+    }
+  }
+  for (std::vector<int>& list : earlier)
+  {
+    std::sort(list.begin(), list.end());
+  }
+  return ordered;
+}
+
 /// Cuts each face by the earlier ones (InKeepingOrder) that overlap it; returns each face's
 /// pieces (its own corners where nothing overlaps it, none where it is covered), marks in
 /// `cut` (by polygon) those that changed, and lists the overlapping pairs of different
 /// surfaces (by polygon, the one that keeps the overlap first) in `differing`, to be said:
 /// which one was meant cannot be told, but both would receive the full light. Lamps of
 /// two lights are not cut (each emits the power it was given), and listed in `lampsKept`.
-std::vector<std::vector<Loop>> CutFaces(const std::vector<Face>& faces, double tolerance, std::vector<char>& cut,
-  std::vector<std::pair<int, int>>& differing, std::vector<std::pair<int, int>>& lampsKept)
+std::vector<std::vector<Loop>> CutFaces(const std::vector<Face>& faces, const std::vector<std::vector<int>>& earlier,
+  double tolerance, std::vector<char>& cut, std::vector<std::pair<int, int>>& differing,
+  std::vector<std::pair<int, int>>& lampsKept)
 {
-  const std::vector<std::vector<int>> earlier = EarlierNeighbours(faces, tolerance);
   std::vector<std::vector<Loop>> pieces(faces.size());
   for (size_t i = 0; i < faces.size(); ++i)
   {
@@ -373,14 +429,15 @@ OverlapCuts CutOverlaps(const std::vector<Vec3>& points, const std::vector<int>&
   OverlapCuts found;
   std::vector<char> cut(polygons.Source.size(), 0);
   std::vector<std::vector<Loop>> pieces(polygons.Source.size());
-  const std::vector<Face> faces =
-    InKeepingOrder(ConvexFaces(points, surfaceKey, tolerance, polygons), lamps, polygons);
+  std::vector<Face> faces = ConvexFaces(points, surfaceKey, tolerance, polygons);
   if (faces.size() < 2)
   {
     return found;
   }
+  std::vector<std::vector<int>> earlier;
+  faces = InKeepingOrder(std::move(faces), lamps, polygons, tolerance, earlier);
   std::vector<std::pair<int, int>> differing, lampsKept;
-  std::vector<std::vector<Loop>> cutPieces = CutFaces(faces, tolerance, cut, differing, lampsKept);
+  std::vector<std::vector<Loop>> cutPieces = CutFaces(faces, earlier, tolerance, cut, differing, lampsKept);
   // By input polygon, once (a polygon's convex pieces are faces of their own).
   for (auto [pairs, into] : { std::pair{ &differing, &found.Differing }, { &lampsKept, &found.LampsKept } })
   {

@@ -1,5 +1,6 @@
-// Coplanar faces of one surface that overlap: the later is cut to what the earlier leave;
-// those of two surfaces are said, not cut. Of coincident copies one is kept.
+// Coplanar faces that overlap: one keeps the overlap (a lamp, else a face lying wholly on
+// faces of other surfaces, else the earlier), the others are cut to what it leaves; those of
+// two surfaces are said too. Of coincident copies one is kept.
 // Reference: the exact area of the faces' union, and their own corners where nothing overlaps.
 #include "Mesh/CoincidentCopies.h"
 #include "Mesh/OverlapCuts.h"
@@ -134,22 +135,58 @@ TEST(OverlapCuts, OneOrderForEveryMaterialLeavesNoHoleAndNoDoubleCover)
 {
   // A wall, a patch of it drawn again, a poster over both. A rule that let the smaller of
   // two materials win made a cycle with the earlier-wins rule of one material and left
-  // (1.5, 1.5) to none; both kept made it twice. One order: the earlier keeps the overlap.
+  // (1.5, 1.5) to none; both kept made it twice. One order (KeepingOrder): the patch lies
+  // on the poster, the poster on the wall, each on one face of another material, so the
+  // earlier of the two keeps first, then the other, then the wall.
   Faces f;
   f.Rectangle(0, 4, 0, 3, 0);
   f.Rectangle(1, 2, 1, 2, 0);
   f.Rectangle(0.5, 2.5, 0.5, 2.5, 1);
   Faces lit = f; // the same, the poster a lamp panel
   const OverlapCuts cuts = f.Cut();
-  EXPECT_EQ(cuts.Covered, (std::vector<int>{ 1, 2 }));
+  EXPECT_EQ(cuts.Trimmed, (std::vector<int>{ 0, 2 }));
+  EXPECT_TRUE(cuts.Covered.empty());
   EXPECT_NEAR(f.Area(), 12.0, 1e-12); // the wall's, each point once
-  EXPECT_EQ(cuts.Differing, (std::vector<std::pair<int, int>>{ { 0, 2 }, { 1, 2 } }));
+  EXPECT_EQ(cuts.Differing, (std::vector<std::pair<int, int>>{ { 1, 2 }, { 2, 0 } }));
   // A lamp keeps the overlap wherever it comes: the wall is cut around it.
   const OverlapCuts around = lit.Cut({ 0, 0, 1 });
   EXPECT_EQ(around.Trimmed, std::vector<int>{ 0 });
   EXPECT_EQ(around.Covered, std::vector<int>{ 1 });
   EXPECT_NEAR(lit.Area(), 12.0, 1e-12);
   EXPECT_EQ(around.Differing, (std::vector<std::pair<int, int>>{ { 2, 0 }, { 2, 1 } }));
+}
+
+TEST(OverlapCuts, APosterKeepsItsPlaceOnTheWallDrawnBeforeOrAfter)
+{
+  // A poster of another material lying wholly on a wall: the poster is what is seen, the
+  // wall gives way around it, whichever of the two the file gives first (the earlier one
+  // kept the overlap before, and a poster drawn after its wall was cut away).
+  for (bool posterFirst : { false, true })
+  {
+    Faces f;
+    if (posterFirst)
+    {
+      f.Rectangle(1, 2, 1, 2, 1);
+    }
+    f.Rectangle(0, 4, 0, 3, 0);
+    if (!posterFirst)
+    {
+      f.Rectangle(1, 2, 1, 2, 1);
+    }
+    const int poster = posterFirst ? 0 : 1, wall = 1 - poster;
+    const OverlapCuts cuts = f.Cut();
+    EXPECT_EQ(cuts.Trimmed, std::vector<int>{ wall });
+    EXPECT_TRUE(cuts.Covered.empty());
+    EXPECT_EQ(cuts.Differing, (std::vector<std::pair<int, int>>{ { poster, wall } }));
+    EXPECT_NEAR(f.Area(), 12.0, 1e-12); // the wall less the poster, and the poster whole
+  }
+  // A poster hanging over the wall's edge does not lie on it: the earlier keeps, as before.
+  Faces over;
+  over.Rectangle(0, 4, 0, 3, 0);
+  over.Rectangle(3.5, 4.5, 1, 2, 1);
+  const OverlapCuts cuts = over.Cut();
+  EXPECT_EQ(cuts.Trimmed, std::vector<int>{ 1 });
+  EXPECT_NEAR(over.Area(), 12.0 + 0.5, 1e-12);
 }
 
 TEST(OverlapCuts, LampsOfTwoLightsAreNotCutTheCeilingIs)
