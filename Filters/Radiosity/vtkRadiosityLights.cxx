@@ -3,6 +3,7 @@
 #include "Relight/LightRig.h"
 
 #include "Base/Text.h"
+#include "vtkRadiosityLightDefaults.h"
 
 #include "vtkDelimitedTextReader.h"
 #include "vtkNew.h"
@@ -184,6 +185,25 @@ bool vtkRadiosityLights::ReadScheduleFile(std::string& error)
   this->ReadFile = file;
   this->ReadStamp = stamp;
   return true;
+}
+
+std::string vtkRadiosityLights::Resolve(const std::vector<std::string>& names,
+  const std::vector<radiosity::Vec3>& defaults, double time, std::vector<radiosity::LightSetting>& effective,
+  std::vector<std::string>& warnings)
+{
+  std::string error;
+  return this->ReadScheduleFile(error) ? this->Settings->Resolve(names, defaults, time, effective, warnings) : error;
+}
+
+std::vector<radiosity::Vec3> vtkRadiosityLights::DefaultColors(vtkPolyData* data, int lights)
+{
+  const std::vector<double> rgb = vtkRadiosityDefaultLightColors(data, lights);
+  std::vector<radiosity::Vec3> colors;
+  for (int l = 0; l < lights; ++l)
+  {
+    colors.push_back({ rgb[3 * l], rgb[3 * l + 1], rgb[3 * l + 2] });
+  }
+  return colors;
 }
 
 void vtkRadiosityLights::PrintSelf(ostream& os, vtkIndent indent)

@@ -23,11 +23,15 @@
 
 #include <memory> // for the rig
 #include <string> // for errors
+#include <vector> // for names and settings
 
 namespace radiosity
 {
 struct LightRig;
+struct LightSetting;
+struct Vec3;
 }
+class vtkPolyData;
 
 class VTKRADIOSITYFILTERS_EXPORT vtkRadiosityLights : public vtkObject
 {
@@ -81,6 +85,16 @@ public:
   /// Modified().
   radiosity::LightRig& Rig() { return *this->Settings; }
   const radiosity::LightRig& Rig() const { return *this->Settings; }
+
+  /// The settings in effect at `time` for the lights `names` whose defaults are
+  /// `defaults`, the schedule file read first: what the relight filter, the GPU mapper and
+  /// Relit Surface each resolve (C++ only). An error (a bad value, an unreadable schedule)
+  /// or ""; `warnings` name lights the data does not have.
+  std::string Resolve(const std::vector<std::string>& names, const std::vector<radiosity::Vec3>& defaults,
+    double time, std::vector<radiosity::LightSetting>& effective, std::vector<std::string>& warnings);
+
+  /// Each light's default color in `data` (vtkRadiosityDefaultLightColors), as Resolve takes them.
+  static std::vector<radiosity::Vec3> DefaultColors(vtkPolyData* data, int lights);
 #endif
 
 protected:

@@ -138,6 +138,10 @@ void vtkRadiosityMesher::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "PatchSize: " << this->PatchSize << (this->PatchSize > 0 ? "" : " (from the scene)") << "\n";
   os << indent << "ElementSize: " << this->ElementSize << (this->ElementSize > 0 ? "" : " (a quarter of the patch)") << "\n";
+  os << indent << "MaximumElements: " << this->MaximumElements << (this->MaximumElements > 0 ? "" : " (none)") << "\n";
+  os << indent << "MergeTriangles: " << this->MergeTriangles << "\n";
+  os << indent << "SharePatches: " << this->SharePatches << "\n";
+  os << indent << "ClusterAngle: " << this->ClusterAngle << "\n";
 }
 
 int vtkRadiosityMesher::FillInputPortInformation(int, vtkInformation* info)

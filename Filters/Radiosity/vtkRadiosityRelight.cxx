@@ -600,16 +600,11 @@ std::string vtkRadiosityRelight::ResolveWeights(
   vtkPolyData* input, const std::vector<std::string>& names, double time, std::vector<double>& weights)
 {
   // Default colors: the solver's, else the mean Emission of each light's cells.
-  const int k = static_cast<int>(names.size());
-  const std::vector<double> rgb = vtkRadiosityDefaultLightColors(input, k);
-  std::vector<radiosity::Vec3> defaultColors;
-  for (int l = 0; l < k; ++l)
-  {
-    defaultColors.push_back({ rgb[3 * l], rgb[3 * l + 1], rgb[3 * l + 2] });
-  }
+  const std::vector<radiosity::Vec3> defaultColors =
+    vtkRadiosityLights::DefaultColors(input, static_cast<int>(names.size()));
   std::vector<radiosity::LightSetting> effective;
   std::vector<std::string> warnings;
-  const std::string invalid = this->Lights->Rig().Resolve(names, defaultColors, time, effective, warnings);
+  const std::string invalid = this->Lights->Resolve(names, defaultColors, time, effective, warnings);
   if (!invalid.empty())
   {
     return invalid;

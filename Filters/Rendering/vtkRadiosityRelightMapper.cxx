@@ -101,18 +101,6 @@ void Extend(vtkShader* shader, const std::string& declarations, const std::strin
 }
 
 
-/// Each light's default color, as the relight filter takes it.
-std::vector<radiosity::Vec3> DefaultColors(vtkPolyData* data, size_t k)
-{
-  const std::vector<double> rgb = vtkRadiosityDefaultLightColors(data, static_cast<int>(k));
-  std::vector<radiosity::Vec3> colors;
-  for (size_t l = 0; l < k; ++l)
-  {
-    colors.push_back({ rgb[3 * l], rgb[3 * l + 1], rgb[3 * l + 2] });
-  }
-  return colors;
-}
-
 } // namespace
 
 vtkRadiosityRelightMapper::vtkRadiosityRelightMapper()
@@ -205,7 +193,7 @@ void vtkRadiosityRelightMapper::UploadIfNeeded(vtkRenderer* ren)
     in.Names.clear();
     return;
   }
-  in.Defaults = DefaultColors(data, k);
+  in.Defaults = vtkRadiosityLights::DefaultColors(data, static_cast<int>(k));
   GLint most = 0, vectors = 0;
   glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &most);
   glGetIntegerv(GL_MAX_VERTEX_UNIFORM_VECTORS, &vectors);
@@ -258,10 +246,8 @@ void vtkRadiosityRelightMapper::DescribeLights(vtkPolyData* data, vtkStringArray
   const std::vector<std::string> lights = vtkRadiosityLightNames(data->GetFieldData());
   std::vector<radiosity::LightSetting> effective;
   std::vector<std::string> warnings;
-  std::string unread;
-  if (!this->Internal->Lights->ReadScheduleFile(unread) ||
-    !this->Internal->Lights->Rig().Resolve(lights, DefaultColors(data, lights.size()), this->Internal->Time, effective, warnings)
-         .empty())
+  const std::vector<radiosity::Vec3> defaults = vtkRadiosityLights::DefaultColors(data, static_cast<int>(lights.size()));
+  if (!this->Internal->Lights->Resolve(lights, defaults, this->Internal->Time, effective, warnings).empty())
   {
     return;
   }
@@ -308,11 +294,7 @@ std::vector<float> vtkRadiosityRelightMapper::CurrentWeights()
   Internals& in = *this->Internal;
   std::vector<radiosity::LightSetting> effective;
   std::vector<std::string> warnings;
-  std::string invalid;
-  if (in.Lights->ReadScheduleFile(invalid))
-  {
-    invalid = in.Lights->Rig().Resolve(in.Names, in.Defaults, in.Time, effective, warnings);
-  }
+  const std::string invalid = in.Lights->Resolve(in.Names, in.Defaults, in.Time, effective, warnings);
   if (!invalid.empty())
   {
     in.Problem = invalid;
