@@ -5,6 +5,7 @@
 
 #include "Mesh/Mesher.h"
 
+#include "vtkAbstractArray.h"
 #include "vtkCellArray.h"
 #include "vtkGeometryFilter.h"
 #include "vtkDoubleArray.h"
@@ -314,7 +315,25 @@ GatheredScene GatherWholeScene(vtkMultiProcessController* parallel, vtkPolyData*
   {
     shape->SetPoints(input->GetPoints());
     shape->SetPolys(input->GetPolys());
-    shape->GetCellData()->ShallowCopy(input->GetCellData());
+    // What tells the surfaces apart, and nothing more (a string array would make every
+    // rank take VTK's slow way); Emission as zeros where a piece has none, since the
+    // pieces' append keeps only the arrays all of them have.
+    for (const char* name : { "Reflectance", "LightId", "Emission" })
+    {
+      if (vtkAbstractArray* array = input->GetCellData()->GetAbstractArray(name))
+      {
+        shape->GetCellData()->AddArray(array);
+      }
+    }
+    if (!shape->GetCellData()->HasArray("Emission"))
+    {
+      vtkNew<vtkDoubleArray> none;
+      none->SetName("Emission");
+      none->SetNumberOfComponents(3);
+      none->SetNumberOfTuples(shape->GetNumberOfCells());
+      none->Fill(0.0);
+      shape->GetCellData()->AddArray(none);
+    }
   }
   vtkNew<vtkPolyData> gathered;
   vtkRadiosityPieces::AllGather(parallel, shape, gathered);
@@ -455,6 +474,11 @@ int vtkRadiosityMesher::RequestData(
     const GatheredScene gathered = parallel ? GatherWholeScene(parallel, input, upstream) : GatheredScene();
     const radiosity::SceneMesh& whole = gathered.Mesh;
     const radiosity::PolygonArrays wholeArrays{ whole.Points, whole.Offsets, whole.Connectivity };
+    if (parallel && !gathered.HasSurfaces && whole.NumberOfPolygons() > 0 && parallel->GetLocalProcessId() == 0)
+    {
+      warnings.Add(this, "Coincident copies and overlapping faces are looked for within each piece only: the "
+                         "pieces' Reflectance and LightId could not be read together");
+    }
     const WholeScene wholeScene{ parallel ? &wholeArrays : nullptr,
       parallel ? vtkRadiosityPieces::MaxOverRanks(parallel, OwnQuantum(input, upstream)) : 0.0,
       parallel && gathered.HasSurfaces ? &gathered.Surfaces : nullptr };

@@ -47,8 +47,9 @@ struct vtkRadiosityRelightMapper::Internals
   vtkMTimeType UploadedTime = 0;
   int Uploads = 0;
   int ShaderLights = -1; ///< the k the current shader was built for
-  std::string Problem;
+  std::string Problem;  ///< with the data uploaded (cleared by the next upload)
   std::string Reported; ///< the problem last reported, so each is said once
+  std::string SettingsProblem; ///< with the lights' settings now (cleared when they resolve)
   radiosity::SaidOnce ReportedSettings; ///< the light settings' warnings, each said once
   bool UseGPU = true;
   bool OnCPU = false;       ///< this data is relit on the CPU (asked for, or fallen back to)
@@ -156,7 +157,8 @@ int vtkRadiosityRelightMapper::GetUploadCount() const
 
 const char* vtkRadiosityRelightMapper::GetLastProblem() const
 {
-  return this->Internal->Problem.c_str();
+  const Internals& in = *this->Internal;
+  return (in.Problem.empty() ? in.SettingsProblem : in.Problem).c_str();
 }
 
 void vtkRadiosityRelightMapper::UploadIfNeeded(vtkRenderer* ren)
@@ -297,18 +299,17 @@ std::vector<float> vtkRadiosityRelightMapper::CurrentWeights()
   const std::string invalid = in.Lights->Resolve(in.Names, in.Defaults, in.Time, effective, warnings);
   if (!invalid.empty())
   {
-    in.Problem = invalid;
     effective.assign(in.Names.size(), radiosity::LightSetting());
     for (radiosity::LightSetting& s : effective)
     {
       s.Enabled = false;
     }
-    if (in.Reported != invalid)
+    if (in.SettingsProblem != invalid)
     {
       vtkErrorMacro(<< "Cannot relight: " << invalid << ".");
-      in.Reported = invalid;
     }
   }
+  in.SettingsProblem = invalid; // a schedule file mended, a setting corrected: drawn again
   for (const std::string& warning : in.ReportedSettings.New(warnings))
   {
     vtkWarningMacro(<< warning); // a light index or name the data does not have

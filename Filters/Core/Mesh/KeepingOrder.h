@@ -36,8 +36,8 @@ public:
     return source < static_cast<int>(this->Lamps.size()) && this->Lamps[source];
   }
 
-  /// Whether polygon `a`, lying wholly on `onA` faces of other surfaces, keeps what it
-  /// shares with polygon `b`, lying on `onB`.
+  /// Whether polygon `a`, lying wholly on `onA` other surfaces, keeps what it shares
+  /// with polygon `b`, lying on `onB`.
   bool Before(size_t a, size_t b, int onA = 0, int onB = 0) const
   {
     const bool lampA = this->IsLamp(a), lampB = this->IsLamp(b);

@@ -517,13 +517,13 @@ void WarnAboutOverlaps(const OverlapCuts& overlaps, const MesherOptions& options
   if (options.Warning && !overlaps.Trimmed.empty())
   {
     options.Warning(Counted(overlaps.Trimmed.size(), "cell overlaps", "cells overlap") + " other cells in one plane (cells " +
-      CellList(overlaps.Trimmed) + "): meshed only where no cell that keeps the overlap lies (a lamp, else a cell lying wholly on one "
-      "of another material, else the earlier), as each layer would receive the full light");
+      CellList(overlaps.Trimmed) + "): meshed only where no cell that keeps the overlap lies (a lamp, else a cell lying wholly on "
+      "another material, else the earlier), as each layer would receive the full light");
   }
   if (options.Warning && !overlaps.Covered.empty())
   {
     options.Warning(Counted(overlaps.Covered.size(), "cell lies", "cells lie") + " wholly under other cells in one plane (cells " +
-      CellList(overlaps.Covered) + "): left out (a lamp, else a cell lying wholly on one of another material, else the earlier, "
+      CellList(overlaps.Covered) + "): left out (a lamp, else a cell lying wholly on another material, else the earlier, "
       "keeps the overlap), as each layer would receive the full light");
   }
   if (options.Warning && !overlaps.Differing.empty())

@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <numeric>
+#include <set>
 #include <unordered_map>
 
 namespace radiosity
@@ -21,7 +23,7 @@ struct Face
   int Index = 0;   ///< in the polygons
   int Surface = 0; ///< its surface key
   bool Lamp = false;
-  int LyingOn = 0; ///< faces of other surfaces it lies wholly on (KeepingOrder)
+  int LyingOn = 0; ///< other surfaces its polygon lies wholly on (KeepingOrder)
   Loop Corners;
   Vec3 Normal;
   Bounds Box;
@@ -297,22 +299,91 @@ std::vector<std::vector<int>> EarlierNeighbours(const std::vector<Face>& faces, 
   return earlier;
 }
 
-/// True when every corner of convex `a` lies inside convex `b` (within `tolerance`).
-bool WhollyOn(const Face& a, const Face& b, double tolerance)
+/// True when `pieces` (convex) leave nothing wider than `tolerance` outside `under`: the
+/// polygon they make lies wholly on those faces. Their areas are compared first, so a floor
+/// beside many small decals is not cut by each to find out.
+bool CoveredBy(std::vector<Loop> pieces, const std::vector<const Face*>& under, double tolerance)
 {
-  for (size_t k = 0; k < b.Corners.size(); ++k)
+  double area = 0, below = 0;
+  for (const Loop& piece : pieces)
   {
-    const auto [origin, inward] = InsideEdge(b.Corners, b.Normal, k);
-    const double length = Norm(inward);
-    for (const Vec3& p : a.Corners)
+    area += PolygonArea(piece.data(), static_cast<int>(piece.size()));
+  }
+  for (const Face* f : under)
+  {
+    below += PolygonArea(f->Corners.data(), static_cast<int>(f->Corners.size()));
+  }
+  if (below < area - tolerance * std::sqrt(area))
+  {
+    return false;
+  }
+  for (const Face* f : under)
+  {
+    std::vector<Loop> left;
+    for (const Loop& piece : pieces)
     {
-      if (length > 0 && Dot(inward, p - origin) < -tolerance * length)
+      for (Loop& rest : Difference(piece, *f, tolerance))
       {
-        return false;
+        left.push_back(std::move(rest));
       }
     }
+    pieces.swap(left);
+    if (pieces.empty())
+    {
+      return true;
+    }
   }
-  return true;
+  return false;
+}
+
+/// Per polygon (by index), the number of other surfaces it lies wholly on (the union of
+/// each one's faces in its plane covering it: a poster over the diagonal of a wall drawn as
+/// two triangles lies on the wall). A polygon lying wholly on its own surface (a part of a
+/// wall drawn again) is part of that surface, and counts none: a poster over it keeps.
+std::vector<int> SurfacesUnder(const std::vector<Face>& faces, const std::vector<std::vector<int>>& neighbours,
+  size_t polygons, double tolerance)
+{
+  std::vector<std::vector<int>> facesOf(polygons);
+  std::vector<std::map<int, std::set<int>>> under(polygons); // polygon -> surface -> faces overlapping it
+  for (size_t i = 0; i < faces.size(); ++i)
+  {
+    facesOf[faces[i].Index].push_back(static_cast<int>(i));
+    for (int j : neighbours[i])
+    {
+      under[faces[i].Index][faces[j].Surface].insert(j);
+      under[faces[j].Index][faces[i].Surface].insert(static_cast<int>(i));
+    }
+  }
+  std::vector<int> count(polygons, 0);
+  for (size_t p = 0; p < polygons; ++p)
+  {
+    if (under[p].empty())
+    {
+      continue;
+    }
+    std::vector<Loop> pieces;
+    for (int i : facesOf[p])
+    {
+      pieces.push_back(faces[i].Corners);
+    }
+    const int own = faces[facesOf[p].front()].Surface;
+    bool partOfOwn = false;
+    for (const auto& [surface, list] : under[p])
+    {
+      std::vector<const Face*> below;
+      for (int j : list)
+      {
+        below.push_back(&faces[j]);
+      }
+      if (CoveredBy(pieces, below, tolerance))
+      {
+        partOfOwn = partOfOwn || surface == own;
+        count[p] += surface == own ? 0 : 1;
+      }
+    }
+    count[p] = partOfOwn ? 0 : count[p];
+  }
+  return count;
 }
 
 /// `faces` in the order in which they keep an overlap (KeepingOrder: lamps, then faces
@@ -323,17 +394,11 @@ std::vector<Face> InKeepingOrder(std::vector<Face> faces, const std::vector<char
 {
   const KeepingOrder order(lamps, polygons);
   const std::vector<std::vector<int>> before = EarlierNeighbours(faces, tolerance);
-  for (size_t i = 0; i < faces.size(); ++i)
+  const std::vector<int> lyingOn = SurfacesUnder(faces, before, polygons.Source.size(), tolerance);
+  for (Face& f : faces)
   {
-    faces[i].Lamp = order.IsLamp(faces[i].Index);
-    for (int j : before[i])
-    {
-      if (faces[j].Surface != faces[i].Surface)
-      {
-        faces[i].LyingOn += WhollyOn(faces[i], faces[j], tolerance) ? 1 : 0;
-        faces[j].LyingOn += WhollyOn(faces[j], faces[i], tolerance) ? 1 : 0;
-      }
-    }
+    f.Lamp = order.IsLamp(f.Index);
+    f.LyingOn = lyingOn[f.Index];
   }
   std::vector<int> sorted(faces.size()), position(faces.size());
   std::iota(sorted.begin(), sorted.end(), 0);

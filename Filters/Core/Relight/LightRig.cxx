@@ -150,7 +150,9 @@ std::vector<NamedSetting> ParseSettingRows(const std::vector<std::string>& flat)
     s.Color = s.HasColor ? s.Color : Vec3(1, 1, 1);
     s.HasIntensity = ParseNumber(flat[i + 4], s.Intensity);
     s.Intensity = s.HasIntensity ? s.Intensity : 1.0;
-    s.HasEnabled = ParseEnabled(flat[i + 5], s.Enabled);
+    double number = 0;
+    s.HasEnabled = ParseEnabled(flat[i + 5], s.Enabled) || ParseNumber(flat[i + 5], number);
+    s.Enabled = s.Enabled || number != 0; // as the property's integer: any but 0 is on
     if (!row.Name.empty() && s.HasEnabled)
     {
       rows.push_back(row);

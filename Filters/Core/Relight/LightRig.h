@@ -50,8 +50,9 @@ struct NamedSetting
 
 /// The rows of a flat LightSettings list (six strings a light, as SettingRow and
 /// SettingInputRow write them): a color or intensity that is not a finite number ('nan')
-/// is left unset, as SetByName leaves it; `enabled` as ParseKeyframe reads it. A row with
-/// an empty name or an unreadable `enabled`, and a trailing part-row, are skipped.
+/// is left unset; `enabled` as ParseKeyframe reads it, or any number (not 0: on, as the
+/// property's integer). A row with an empty name or an unreadable `enabled`, and a
+/// trailing part-row, are skipped.
 std::vector<NamedSetting> ParseSettingRows(const std::vector<std::string>& flat);
 
 /// A keyframe of the schedule: the light by name, or by index written as a number.

@@ -145,4 +145,7 @@ TEST(LightRig, SettingRowsReadBackAsWritten)
   EXPECT_TRUE(full[0].Setting.HasColor && full[0].Setting.HasIntensity);
   EXPECT_TRUE(ParseSettingRows({ "", "1", "1", "1", "1", "1" }).empty());
   EXPECT_TRUE(ParseSettingRows({ "A", "1", "1", "1", "1", "maybe" }).empty());
+  const std::vector<NamedSetting> two = ParseSettingRows({ "A", "1", "1", "1", "1", "2" }); // the server's integer: on
+  ASSERT_EQ(two.size(), 1u);
+  EXPECT_TRUE(two[0].Setting.Enabled);
 }

@@ -135,19 +135,20 @@ TEST(OverlapCuts, OneOrderForEveryMaterialLeavesNoHoleAndNoDoubleCover)
 {
   // A wall, a patch of it drawn again, a poster over both. A rule that let the smaller of
   // two materials win made a cycle with the earlier-wins rule of one material and left
-  // (1.5, 1.5) to none; both kept made it twice. One order (KeepingOrder): the patch lies
-  // on the poster, the poster on the wall, each on one face of another material, so the
-  // earlier of the two keeps first, then the other, then the wall.
+  // (1.5, 1.5) to none; both kept made it twice. One order (KeepingOrder): the poster lies
+  // on the wall's material; the patch lies on its own wall, so it is part of it and does not
+  // count as lying on the poster. The poster keeps, the wall is cut around it, the patch
+  // under it left out.
   Faces f;
   f.Rectangle(0, 4, 0, 3, 0);
   f.Rectangle(1, 2, 1, 2, 0);
   f.Rectangle(0.5, 2.5, 0.5, 2.5, 1);
   Faces lit = f; // the same, the poster a lamp panel
   const OverlapCuts cuts = f.Cut();
-  EXPECT_EQ(cuts.Trimmed, (std::vector<int>{ 0, 2 }));
-  EXPECT_TRUE(cuts.Covered.empty());
+  EXPECT_EQ(cuts.Trimmed, (std::vector<int>{ 0 }));
+  EXPECT_EQ(cuts.Covered, (std::vector<int>{ 1 }));
   EXPECT_NEAR(f.Area(), 12.0, 1e-12); // the wall's, each point once
-  EXPECT_EQ(cuts.Differing, (std::vector<std::pair<int, int>>{ { 1, 2 }, { 2, 0 } }));
+  EXPECT_EQ(cuts.Differing, (std::vector<std::pair<int, int>>{ { 2, 0 }, { 2, 1 } }));
   // A lamp keeps the overlap wherever it comes: the wall is cut around it.
   const OverlapCuts around = lit.Cut({ 0, 0, 1 });
   EXPECT_EQ(around.Trimmed, std::vector<int>{ 0 });
@@ -179,6 +180,30 @@ TEST(OverlapCuts, APosterKeepsItsPlaceOnTheWallDrawnBeforeOrAfter)
     EXPECT_TRUE(cuts.Covered.empty());
     EXPECT_EQ(cuts.Differing, (std::vector<std::pair<int, int>>{ { poster, wall } }));
     EXPECT_NEAR(f.Area(), 12.0, 1e-12); // the wall less the poster, and the poster whole
+  }
+  // Triangulated, as most exports give them: the wall's two triangles and the poster's,
+  // the poster over the wall's diagonal, lying on neither triangle alone but on the wall.
+  for (bool posterFirst : { false, true })
+  {
+    Faces t;
+    const auto wall = [&t]() {
+      t.Add({ { 0, 0, 0 }, { 4, 0, 0 }, { 4, 3, 0 } }, 0);
+      t.Add({ { 0, 0, 0 }, { 4, 3, 0 }, { 0, 3, 0 } }, 0);
+    };
+    if (!posterFirst)
+    {
+      wall();
+    }
+    t.Add({ { 1.5, 1, 0 }, { 2.5, 1, 0 }, { 2.5, 2, 0 } }, 1);
+    t.Add({ { 1.5, 1, 0 }, { 2.5, 2, 0 }, { 1.5, 2, 0 } }, 1);
+    if (posterFirst)
+    {
+      wall();
+    }
+    const OverlapCuts cuts = t.Cut();
+    EXPECT_TRUE(cuts.Covered.empty());
+    EXPECT_EQ(cuts.Trimmed, posterFirst ? (std::vector<int>{ 2, 3 }) : (std::vector<int>{ 0, 1 }));
+    EXPECT_NEAR(t.Area(), 12.0, 1e-12);
   }
   // A poster hanging over the wall's edge does not lie on it: the earlier keeps, as before.
   Faces over;

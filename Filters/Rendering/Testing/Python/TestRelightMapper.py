@@ -59,6 +59,12 @@ mapper.GetLights().SetLightIntensity(0, -1.0)
 mapper.GetLights().SetLightEnabled(0, True)
 view.render()
 check("light 'WarmWhite' has intensity -1" in mapper.GetLastProblem(), f"a bad setting is reported: {mapper.GetLastProblem()}")
+mapper.GetLights().SetLightIntensity(0, settings[0][1])  # corrected: drawn again, the problem gone
+mapper.GetLights().SetLightEnabled(0, settings[0][2])
+mended = pixels(view.render())
+check(not mapper.GetLastProblem() and np.abs(mended - gpu).mean() < 1.0,
+      f"a corrected setting clears the problem and draws as before ({mapper.GetLastProblem()!r}, "
+      f"mean difference {np.abs(mended - gpu).mean():.2f})")
 
 # --- the CPU path: asked for here (a weak OpenGL falls back to it by itself) ----------------------
 cpu_mapper = relight.vtkRadiosityRelightMapper()
