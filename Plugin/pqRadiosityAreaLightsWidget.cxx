@@ -9,15 +9,9 @@
 #include "vtkSMSourceProxy.h"
 
 #include <QComboBox>
-#include <QHBoxLayout>
-#include <QHeaderView>
-#include <QLabel>
-#include <QPushButton>
-#include <QScrollBar>
 #include <QRegularExpression>
 #include <QSignalBlocker>
 #include <QTableWidget>
-#include <QVBoxLayout>
 
 #include <algorithm>
 #include <cmath>
@@ -37,39 +31,15 @@ int Count(int column)
 }
 
 pqRadiosityAreaLightsWidget::pqRadiosityAreaLightsWidget(vtkSMProxy* proxy, vtkSMProperty* property, QWidget* parent)
-  : Superclass(proxy, parent)
-  , Table(new QTableWidget(0, kColumns, this))
+  : Superclass(proxy,
+      { "Area lights (lengths in the scene's units):", "AreaLightsTable",
+        { "Name", "Shape", "Centre x, y, z", "Facing x, y, z", "Width, height", "Emission r, g, b (W/m²)" },
+        { "The light's name (a light of this name gains the lamp)", "Rectangle, or Disk (its width is the diameter)",
+          "Centre of the lamp", "The direction it emits towards", "Width and height (a disk: diameter, ignored)",
+          "Emitted radiosity per color channel, W/m²" },
+        "Add Lamp", "AddLamp", "RemoveLamps", kPerLamp },
+      parent)
 {
-  this->setShowLabel(false);
-  auto* layout = new QVBoxLayout(this);
-  layout->setContentsMargins(0, 0, 0, 0);
-  layout->addWidget(new QLabel("Area lights (lengths in the scene's units):", this));
-  this->Table->setObjectName("AreaLightsTable");
-  this->Table->setHorizontalHeaderLabels(
-    { "Name", "Shape", "Centre x, y, z", "Facing x, y, z", "Width, height", "Emission r, g, b (W/m²)" });
-  const char* tips[kColumns] = { "The light's name (a light of this name gains the lamp)",
-    "Rectangle, or Disk (its width is the diameter)", "Centre of the lamp", "The direction it emits towards",
-    "Width and height (a disk: diameter, ignored)", "Emitted radiosity per color channel, W/m²" };
-  for (int column = 0; column < kColumns; ++column)
-  {
-    this->Table->horizontalHeaderItem(column)->setToolTip(tips[column]);
-  }
-  this->Table->verticalHeader()->hide();
-  this->Table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-  this->Table->setSelectionBehavior(QAbstractItemView::SelectRows);
-  layout->addWidget(this->Table);
-  auto* buttons = new QHBoxLayout();
-  auto* add = new QPushButton("Add Lamp", this);
-  add->setObjectName("AddLamp");
-  auto* remove = new QPushButton("Remove", this);
-  remove->setObjectName("RemoveLamps");
-  buttons->addWidget(add);
-  buttons->addWidget(remove);
-  buttons->addStretch();
-  layout->addLayout(buttons);
-  QObject::connect(add, &QPushButton::clicked, this, &pqRadiosityAreaLightsWidget::addLamp);
-  QObject::connect(remove, &QPushButton::clicked, this, &pqRadiosityAreaLightsWidget::removeLamps);
-  QObject::connect(this->Table, &QTableWidget::cellChanged, this, &pqRadiosityAreaLightsWidget::cellEdited);
   this->linkRows(property);
   this->fill();
 }
@@ -111,7 +81,7 @@ void pqRadiosityAreaLightsWidget::fill()
 
 void pqRadiosityAreaLightsWidget::cellEdited(int row, int column)
 {
-  if (this->Filling || column == 1)
+  if (column == 1)
   {
     return;
   }
@@ -153,7 +123,7 @@ vtkPVDataInformation* pqRadiosityAreaLightsWidget::InputInformation() const
   return source ? source->GetDataInformation(input.GetOutputPort()) : nullptr;
 }
 
-QStringList pqRadiosityAreaLightsWidget::newLamp() const
+QStringList pqRadiosityAreaLightsWidget::newRow() const
 {
   double bounds[6] = { -0.5, 0.5, -0.5, 0.5, -0.5, 0.5 };
   vtkPVDataInformation* info = this->InputInformation();
@@ -234,51 +204,4 @@ QString pqRadiosityAreaLightsWidget::unusedName() const
     ++n;
   }
   return QString("Lamp%1").arg(n);
-}
-
-void pqRadiosityAreaLightsWidget::addLamp()
-{
-  this->Rows << this->newLamp();
-  this->fill();
-  Q_EMIT this->rowsChanged();
-}
-
-void pqRadiosityAreaLightsWidget::removeLamps()
-{
-  QList<int> rows;
-  for (const QModelIndex& index : this->Table->selectionModel()->selectedRows())
-  {
-    rows << index.row();
-  }
-  if (rows.isEmpty() && this->Table->rowCount() > 0)
-  {
-    rows << this->Table->rowCount() - 1; // nothing selected: the last lamp
-  }
-  if (rows.isEmpty())
-  {
-    return; // no lamp: nothing changes, nothing to Apply
-  }
-  std::sort(rows.begin(), rows.end(), std::greater<int>());
-  for (int row : rows)
-  {
-    for (int k = 0; k < kPerLamp; ++k)
-    {
-      this->Rows.removeAt(row * kPerLamp);
-    }
-  }
-  this->fill();
-  Q_EMIT this->rowsChanged();
-}
-
-void pqRadiosityAreaLightsWidget::fitHeight()
-{
-  // Six columns rarely fit the panel's width: room for the horizontal scroll bar too.
-  this->Table->resizeRowsToContents();
-  int height = this->Table->horizontalHeader()->sizeHint().height() + 2 * this->Table->frameWidth() +
-    this->Table->horizontalScrollBar()->sizeHint().height();
-  for (int row = 0; row < std::min(this->Table->rowCount(), 8); ++row)
-  {
-    height += this->Table->rowHeight(row);
-  }
-  this->Table->setFixedHeight(height + 2);
 }

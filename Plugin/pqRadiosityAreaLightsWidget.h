@@ -3,42 +3,31 @@
 #ifndef pqRadiosityAreaLightsWidget_h
 #define pqRadiosityAreaLightsWidget_h
 
-#include "pqRadiosityRowsWidget.h"
+#include "pqRadiosityTableWidget.h"
 
-class QTableWidget;
 class vtkPVDataInformation;
 
-class pqRadiosityAreaLightsWidget : public pqRadiosityRowsWidget
+class pqRadiosityAreaLightsWidget : public pqRadiosityTableWidget
 {
   Q_OBJECT
-  typedef pqRadiosityRowsWidget Superclass;
+  typedef pqRadiosityTableWidget Superclass;
 
 public:
   // Rows: 13 per lamp (name, shape, centre x y z, facing x y z, width, height, emission r g b).
   pqRadiosityAreaLightsWidget(vtkSMProxy* proxy, vtkSMProperty* property, QWidget* parent = nullptr);
 
 protected:
-  void rowsSet() override { this->fill(); }
-
-private Q_SLOTS:
-  void addLamp();
-  void removeLamps();
+  void fill() override;
+  /// A new lamp: at the top of the input's box, facing down along its shortest side.
+  QStringList newRow() const override;
   /// A typed cell into the rows; a cell that does not read as its numbers is put back.
-  void cellEdited(int row, int column);
+  void cellEdited(int row, int column) override;
 
 private:
-  /// The table from Rows.
-  void fill();
-  /// A new lamp's row: at the top of the input's box, facing down along its shortest side.
-  QStringList newLamp() const;
   /// The first of Lamp1, Lamp2, ... that no lamp here and no light of the input is called.
   QString unusedName() const;
   /// What ParaView knows of the data on the input port (null before it has run).
   vtkPVDataInformation* InputInformation() const;
-  void fitHeight();
-
-  QTableWidget* Table;
-  bool Filling = false;
 };
 
 #endif

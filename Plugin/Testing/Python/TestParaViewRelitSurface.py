@@ -15,7 +15,7 @@ from paraview.simple import (  # noqa: E402
     XMLPolyDataReader)
 from PyQt5.QtCore import Qt  # noqa: E402
 from PyQt5.QtTest import QTest  # noqa: E402
-from PyQt5.QtWidgets import QApplication, QCheckBox, QComboBox, QScrollArea, QTableWidget  # noqa: E402
+from PyQt5.QtWidgets import QApplication, QCheckBox, QComboBox, QPushButton, QScrollArea, QTableWidget  # noqa: E402
 from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
 from vtkmodules.vtkIOImage import vtkPNGReader  # noqa: E402
 
@@ -104,11 +104,44 @@ if result.check(pick >= 0, "the toolbar's coloring box lists no Radiosity_CoolWh
                  "picked in the toolbar: shown as '%s', legend '%s'" % (display.Representation, title))
     result.note("toolbar pick: %s, legend '%s'" % (display.Representation, title))
 # The same under Relit Colors (the relight filter's DisplayColors as they are).
-relit = Show(RadiosityRelight(Input=solver), view)
+relighter = RadiosityRelight(Input=solver)
+relit = Show(relighter, view)
 guitest.settle(1.0)
 result.check(relit.Representation == "Relit Colors", "the relight output is shown as '%s'" % relit.Representation)
 ColorBy(relit, ("POINTS", "Radiosity"))
 guitest.settle(0.5)
 result.check(relit.Representation == "Surface",
              "an array picked under Relit Colors left the display as '%s'" % relit.Representation)
+# The lights' schedule in the relight filter's panel: a table of keyframes under headers;
+# Add Keyframe starts from the first light at time 0, then the last a time step on; a
+# typed cell that does not read as a schedule row is put back; Apply sets the property.
+SetActiveSource(relighter)
+guitest.settle(1.0)
+found = [t for t in app.allWidgets() if isinstance(t, QTableWidget) and t.objectName() == "ScheduleTable" and t.isVisible()]
+adds = [b for b in app.allWidgets() if isinstance(b, QPushButton) and b.objectName() == "AddKeyframe" and b.isVisible()]
+if result.check(len(found) == 1 and len(adds) == 1, f"the relight panel shows one schedule table ({len(found)}, {len(adds)})"):
+    table = found[0]
+    headers = [table.horizontalHeaderItem(c).text() for c in range(table.columnCount())]
+    result.check(headers == ["Time", "Light", "Color r, g, b", "Intensity", "On"], f"column headers {headers}")
+    adds[0].click()
+    adds[0].click()
+    guitest.settle(0.3)
+    rows = [[table.item(r, c).text() for c in range(table.columnCount())] for r in range(table.rowCount())]
+    result.check(rows == [["0", "WarmWhite", "1, 1, 1", "1", "1"], ["1", "WarmWhite", "1, 1, 1", "1", "1"]],
+                 f"two keyframes added: {rows}")
+    table.item(1, 3).setText("bright")
+    result.check(table.item(1, 3).text() == "1", f"'bright' as an intensity is put back: {table.item(1, 3).text()}")
+    table.item(1, 3).setText("4")
+    table.item(1, 4).setText("off")
+    result.check(table.item(1, 4).text() == "0", f"'off' is held as 0: {table.item(1, 4).text()}")
+    accept = [b for b in app.allWidgets() if isinstance(b, QPushButton) and b.objectName() == "Accept" and b.isVisible()]
+    if result.check(len(accept) == 1 and accept[0].isEnabled(), "a keyframe edit waits for Apply"):
+        accept[0].click()
+        guitest.settle(1.5)
+    given = [str(v) for v in relighter.ScheduleEntries]
+    relighter.UpdatePipelineInformation()
+    result.check(given == ["0", "WarmWhite", "1", "1", "1", "1", "1", "1", "WarmWhite", "1", "1", "1", "4", "0"]
+                 and list(relighter.TimestepValues) == [0.0, 1.0],
+                 f"after Apply the property holds {given}, time steps {list(relighter.TimestepValues)}")
+    result.note(f"schedule: {given}")
 result.finish()

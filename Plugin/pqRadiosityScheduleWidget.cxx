@@ -1,0 +1,134 @@
+#include "pqRadiosityScheduleWidget.h"
+
+#include "Relight/LightRig.h"
+
+#include "vtkSMPropertyHelper.h"
+#include "vtkSMProxy.h"
+
+#include <QRegularExpression>
+#include <QSignalBlocker>
+#include <QTableWidget>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+namespace
+{
+constexpr int kPerKey = 7;
+/// Table columns and the property elements each holds: time, light, color, intensity, on.
+constexpr int kFirst[] = { 0, 1, 2, 5, 6, 7 };
+
+int Count(int column)
+{
+  return kFirst[column + 1] - kFirst[column];
+}
+
+/// The keyframe in `row` as the property holds it (enabled as 1 or 0), or empty where it
+/// does not read as the schedule file's rows do.
+QStringList Checked(const QStringList& row)
+{
+  std::vector<std::string> cells;
+  for (const QString& cell : row)
+  {
+    cells.push_back(cell.toStdString());
+  }
+  radiosity::LightKeyframe key;
+  if (!radiosity::ParseKeyframe(cells, key))
+  {
+    return {};
+  }
+  QStringList checked = row;
+  checked[1] = QString::fromStdString(key.Light);
+  checked[6] = key.Enabled ? "1" : "0";
+  return checked;
+}
+}
+
+pqRadiosityScheduleWidget::pqRadiosityScheduleWidget(vtkSMProxy* proxy, vtkSMProperty* property, QWidget* parent)
+  : Superclass(proxy,
+      { "Keyframes (color and intensity run linearly between them):", "ScheduleTable",
+        { "Time", "Light", "Color r, g, b", "Intensity", "On" },
+        { "When the keyframe holds (the animation's time)", "The light's name, or its index from 0",
+          "Its color at that time", "Its intensity at that time", "1: on, 0: off, from this keyframe until the next" },
+        "Add Keyframe", "AddKeyframe", "RemoveKeyframes", kPerKey },
+      parent)
+{
+  this->linkRows(property);
+  this->fill();
+}
+
+void pqRadiosityScheduleWidget::fill()
+{
+  this->Filling = true;
+  const int keys = static_cast<int>(this->Rows.size()) / kPerKey;
+  this->Table->setRowCount(keys);
+  for (int row = 0; row < keys; ++row)
+  {
+    for (int column = 0; column < this->Table->columnCount(); ++column)
+    {
+      const QStringList part = this->Rows.mid(row * kPerKey + kFirst[column], Count(column));
+      this->Table->setItem(row, column, new QTableWidgetItem(part.join(", ")));
+    }
+  }
+  this->Filling = false;
+  this->fitHeight();
+}
+
+void pqRadiosityScheduleWidget::cellEdited(int row, int column)
+{
+  QTableWidgetItem* item = this->Table->item(row, column);
+  if (!item)
+  {
+    return;
+  }
+  const int at = row * kPerKey + kFirst[column];
+  const QString text = item->text().trimmed();
+  const QStringList parts =
+    column == 1 ? QStringList{ text } : text.split(QRegularExpression("[,;\\s]+"), Qt::SkipEmptyParts);
+  QStringList key = this->Rows.mid(row * kPerKey, kPerKey);
+  QStringList checked;
+  if (parts.size() == Count(column))
+  {
+    std::copy(parts.begin(), parts.end(), key.begin() + kFirst[column]);
+    checked = Checked(key);
+  }
+  if (checked.isEmpty())
+  {
+    const QSignalBlocker block(this->Table);
+    item->setText(this->Rows.mid(at, Count(column)).join(", ")); // what it held
+    return;
+  }
+  std::copy(checked.begin(), checked.end(), this->Rows.begin() + row * kPerKey);
+  const QSignalBlocker block(this->Table);
+  item->setText(this->Rows.mid(at, Count(column)).join(", ")); // as the property holds it
+  Q_EMIT this->rowsChanged();
+}
+
+QString pqRadiosityScheduleWidget::firstLight() const
+{
+  // The relight filter names its lights in LightNamesInfo, Relit Surface in RelitLightNamesInfo.
+  for (const char* name : { "LightNamesInfo", "RelitLightNamesInfo" })
+  {
+    if (vtkSMProperty* names = this->proxy()->GetProperty(name))
+    {
+      vtkSMPropertyHelper helper(names);
+      if (helper.GetNumberOfElements() > 0)
+      {
+        return QString::fromUtf8(helper.GetAsString(0));
+      }
+    }
+  }
+  return "0";
+}
+
+QStringList pqRadiosityScheduleWidget::newRow() const
+{
+  if (this->Rows.size() >= kPerKey)
+  {
+    QStringList key = this->Rows.mid(this->Rows.size() - kPerKey, kPerKey);
+    key[0] = QString::number(key[0].toDouble() + 1.0, 'g', 10);
+    return key;
+  }
+  return { "0", this->firstLight(), "1", "1", "1", "1", "1" };
+}

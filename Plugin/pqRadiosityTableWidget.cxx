@@ -1,0 +1,97 @@
+#include "pqRadiosityTableWidget.h"
+
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPushButton>
+#include <QScrollBar>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <functional>
+
+pqRadiosityTableWidget::pqRadiosityTableWidget(vtkSMProxy* proxy, const Design& design, QWidget* parent)
+  : Superclass(proxy, parent)
+  , Table(new QTableWidget(0, design.Headers.size(), this))
+  , PerRow(design.PerRow)
+{
+  this->setShowLabel(false);
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  layout->addWidget(new QLabel(design.Title, this));
+  this->Table->setObjectName(design.TableName);
+  this->Table->setHorizontalHeaderLabels(design.Headers);
+  for (int column = 0; column < design.Tips.size() && column < design.Headers.size(); ++column)
+  {
+    this->Table->horizontalHeaderItem(column)->setToolTip(design.Tips[column]);
+  }
+  this->Table->verticalHeader()->hide();
+  this->Table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  this->Table->setSelectionBehavior(QAbstractItemView::SelectRows);
+  layout->addWidget(this->Table);
+  auto* buttons = new QHBoxLayout();
+  auto* add = new QPushButton(design.AddText, this);
+  add->setObjectName(design.AddName);
+  auto* remove = new QPushButton("Remove", this);
+  remove->setObjectName(design.RemoveName);
+  buttons->addWidget(add);
+  buttons->addWidget(remove);
+  buttons->addStretch();
+  layout->addLayout(buttons);
+  QObject::connect(add, &QPushButton::clicked, this, &pqRadiosityTableWidget::addRow);
+  QObject::connect(remove, &QPushButton::clicked, this, &pqRadiosityTableWidget::removeRows);
+  QObject::connect(this->Table, &QTableWidget::cellChanged, this, [this](int row, int column) {
+    if (!this->Filling)
+    {
+      this->cellEdited(row, column);
+    }
+  });
+}
+
+void pqRadiosityTableWidget::addRow()
+{
+  this->Rows << this->newRow();
+  this->fill();
+  Q_EMIT this->rowsChanged();
+}
+
+void pqRadiosityTableWidget::removeRows()
+{
+  QList<int> rows;
+  for (const QModelIndex& index : this->Table->selectionModel()->selectedRows())
+  {
+    rows << index.row();
+  }
+  if (rows.isEmpty() && this->Table->rowCount() > 0)
+  {
+    rows << this->Table->rowCount() - 1; // nothing selected: the last entry
+  }
+  if (rows.isEmpty())
+  {
+    return; // no entry: nothing changes, nothing to Apply
+  }
+  std::sort(rows.begin(), rows.end(), std::greater<int>());
+  for (int row : rows)
+  {
+    for (int k = 0; k < this->PerRow; ++k)
+    {
+      this->Rows.removeAt(row * this->PerRow);
+    }
+  }
+  this->fill();
+  Q_EMIT this->rowsChanged();
+}
+
+void pqRadiosityTableWidget::fitHeight()
+{
+  // Several columns rarely fit the panel's width: room for the horizontal scroll bar too.
+  this->Table->resizeRowsToContents();
+  int height = this->Table->horizontalHeader()->sizeHint().height() + 2 * this->Table->frameWidth() +
+    this->Table->horizontalScrollBar()->sizeHint().height();
+  for (int row = 0; row < std::min(this->Table->rowCount(), 8); ++row)
+  {
+    height += this->Table->rowHeight(row);
+  }
+  this->Table->setFixedHeight(height + 2);
+}
