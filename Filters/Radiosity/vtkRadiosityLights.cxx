@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
@@ -88,11 +89,29 @@ void vtkRadiosityLights::AddScheduleEntry(
   this->Modified();
 }
 
+void vtkRadiosityLights::AddScheduleRow(
+  double time, const char* light, double r, double g, double b, double intensity, const char* enabled)
+{
+  bool on = true;
+  if (!radiosity::ParseOnOff(enabled ? enabled : "", on))
+  {
+    char when[32];
+    std::snprintf(when, sizeof(when), "%g", time);
+    this->EntryError = std::string("the schedule's entry at time ") + when + " for '" +
+      (light ? light : "") + "' has enabled '" + (enabled ? enabled : "") +
+      "', which is not on/off, true/false, yes/no or a number";
+    this->Modified();
+    return;
+  }
+  this->AddScheduleEntry(time, light, r, g, b, intensity, on ? 1 : 0);
+}
+
 void vtkRadiosityLights::ClearSchedule()
 {
-  if (!this->Settings->Schedule.empty())
+  if (!this->Settings->Schedule.empty() || !this->EntryError.empty())
   {
     this->Settings->Schedule.clear();
+    this->EntryError.clear();
     this->Modified();
   }
 }
@@ -191,8 +210,9 @@ std::string vtkRadiosityLights::Resolve(const std::vector<std::string>& names,
   const std::vector<radiosity::Vec3>& defaults, double time, std::vector<radiosity::LightSetting>& effective,
   std::vector<std::string>& warnings)
 {
-  std::string error;
-  return this->ReadScheduleFile(error) ? this->Settings->Resolve(names, defaults, time, effective, warnings) : error;
+  std::string error = this->EntryError;
+  return error.empty() && this->ReadScheduleFile(error) ? this->Settings->Resolve(names, defaults, time, effective, warnings)
+                                                        : error;
 }
 
 std::vector<radiosity::Vec3> vtkRadiosityLights::DefaultColors(vtkPolyData* data, int lights)

@@ -62,6 +62,10 @@ public:
   /// Keyframes (time, light by name or index, r, g, b, intensity, enabled): color and
   /// intensity interpolated linearly between them, `enabled` held from the one before.
   void AddScheduleEntry(double time, const char* light, double r, double g, double b, double intensity, int enabled);
+  /// The same with `enabled` as text, as a schedule file's cell and ParaView's property give
+  /// it (radiosity::ParseOnOff: true/false, on/off, yes/no or a number); anything else makes
+  /// the schedule an error, named when the lights are resolved, until ClearSchedule.
+  void AddScheduleRow(double time, const char* light, double r, double g, double b, double intensity, const char* enabled);
   void ClearSchedule();
   int GetNumberOfScheduleEntries() const;
   ///@}
@@ -107,6 +111,7 @@ private:
 
   std::unique_ptr<radiosity::LightRig> Settings;
   char* ScheduleFileName = nullptr;
+  std::string EntryError;    ///< an entry given whose `enabled` does not read
   std::string ReadFile;      ///< the schedule file as last read
   long long ReadStamp = 0;   ///< its last write time then: a newer one re-reads it
 };

@@ -97,6 +97,10 @@ public:
   {
     this->Lights->AddScheduleEntry(time, light, r, g, b, intensity, enabled);
   }
+  void AddScheduleRow(double time, const char* light, double r, double g, double b, double intensity, const char* enabled)
+  {
+    this->Lights->AddScheduleRow(time, light, r, g, b, intensity, enabled);
+  }
   void ClearSchedule() { this->Lights->ClearSchedule(); }
   void SetScheduleFileName(const char* file) { this->Lights->SetScheduleFileName(file); }
   char* GetScheduleFileName() { return this->Lights->GetScheduleFileName(); }

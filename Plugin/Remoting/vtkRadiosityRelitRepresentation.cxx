@@ -66,6 +66,12 @@ void vtkRadiosityRelitRepresentation::AddScheduleEntry(
   this->Mapper->GetLights()->AddScheduleEntry(time, light, r, g, b, intensity, enabled);
 }
 
+void vtkRadiosityRelitRepresentation::AddScheduleRow(
+  double time, const char* light, double r, double g, double b, double intensity, const char* enabled)
+{
+  this->Mapper->GetLights()->AddScheduleRow(time, light, r, g, b, intensity, enabled);
+}
+
 void vtkRadiosityRelitRepresentation::ClearSchedule()
 {
   this->Mapper->GetLights()->ClearSchedule();

@@ -42,6 +42,7 @@ public:
   /// The lights' schedule, as the relight filter's: keyframes one by one and a CSV file,
   /// evaluated at the view's time (a time step of the view relights the picture).
   void AddScheduleEntry(double time, const char* light, double r, double g, double b, double intensity, int enabled);
+  void AddScheduleRow(double time, const char* light, double r, double g, double b, double intensity, const char* enabled);
   void ClearSchedule();
   void SetScheduleFileName(const char* file);
   ///@}

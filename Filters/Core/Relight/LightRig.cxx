@@ -123,6 +123,17 @@ std::vector<std::string> SettingRow(const std::string& name, const LightSetting&
     number(setting.Intensity), setting.Enabled ? "1" : "0" };
 }
 
+bool ParseOnOff(const std::string& text, bool& on)
+{
+  double number = 0;
+  if (ParseEnabled(text, on))
+  {
+    return true;
+  }
+  on = ParseNumber(text, number) && number != 0;
+  return ParseNumber(text, number);
+}
+
 std::vector<std::string> SettingInputRow(const std::string& name, const LightSetting& setting)
 {
   std::vector<std::string> row = SettingRow(name, setting);
@@ -150,9 +161,7 @@ std::vector<NamedSetting> ParseSettingRows(const std::vector<std::string>& flat)
     s.Color = s.HasColor ? s.Color : Vec3(1, 1, 1);
     s.HasIntensity = ParseNumber(flat[i + 4], s.Intensity);
     s.Intensity = s.HasIntensity ? s.Intensity : 1.0;
-    double number = 0;
-    s.HasEnabled = ParseEnabled(flat[i + 5], s.Enabled) || ParseNumber(flat[i + 5], number);
-    s.Enabled = s.Enabled || number != 0; // as the property's integer: any but 0 is on
+    s.HasEnabled = ParseOnOff(flat[i + 5], s.Enabled);
     if (!row.Name.empty() && s.HasEnabled)
     {
       rows.push_back(row);

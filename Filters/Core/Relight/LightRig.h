@@ -50,10 +50,13 @@ struct NamedSetting
 
 /// The rows of a flat LightSettings list (six strings a light, as SettingRow and
 /// SettingInputRow write them): a color or intensity that is not a finite number ('nan')
-/// is left unset; `enabled` as ParseKeyframe reads it, or any number (not 0: on, as the
-/// property's integer). A row with an empty name or an unreadable `enabled`, and a
-/// trailing part-row, are skipped.
+/// is left unset; `enabled` as ParseOnOff reads it. A row with an empty name or an
+/// unreadable `enabled`, and a trailing part-row, are skipped.
 std::vector<NamedSetting> ParseSettingRows(const std::vector<std::string>& flat);
+
+/// On or off as text: true/false, on/off, yes/no in any case, or a number (not 0: on, as
+/// an integer property takes it). False if it is none of these.
+bool ParseOnOff(const std::string& text, bool& on);
 
 /// A keyframe of the schedule: the light by name, or by index written as a number.
 struct LightKeyframe

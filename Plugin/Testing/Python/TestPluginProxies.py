@@ -101,7 +101,8 @@ def grab(view):
 def check_relit_schedule(view, display):
     """Relit Surface follows the lights' schedule at the view's time (on the GPU, no filter)."""
     display.RelitExposure = 0.5
-    display.RelitScheduleEntries = ["0", LIGHT, "1", "1", "1", "0", "1", "4", LIGHT, "1", "1", "1", "8", "1"]
+    # `enabled` as the schedule file takes it ('on', 'yes'): a copied CSV row keeps its lamp on.
+    display.RelitScheduleEntries = ["0", LIGHT, "1", "1", "1", "0", "on", "4", LIGHT, "1", "1", "1", "8", "yes"]
     view.ResetCamera()
     shown = {}
     for time in (1.0, 3.0):
@@ -115,6 +116,12 @@ def check_relit_schedule(view, display):
           "the relit picture at time 3 (mean %.3g) is not brighter than at time 1 (%.3g)" % (shown[3.0], shown[1.0]))
     print("Relit Surface schedule: intensity 2 -> 6 from view time 1 to 3, mean picture %.3g -> %.3g"
           % (shown[1.0], shown[3.0]))
+    display.RelitScheduleEntries = ["0", LIGHT, "1", "1", "1", "1", "maybe"]
+    Render(view)
+    display.UpdatePropertyInformation()
+    check(list(display.RelitLightSettingsInfo) == [],
+          "an unreadable 'enabled' in the schedule is an error, not a lamp silently off: %s"
+          % list(display.RelitLightSettingsInfo))
     display.RelitScheduleEntries = []
     view.ViewTime = 0.0
 
