@@ -532,6 +532,13 @@ void WarnAboutOverlaps(const OverlapCuts& overlaps, const MesherOptions& options
       " in one plane, facing the same side, with different materials or lights (cells " + PairList(overlaps.Differing) +
       "): the second of each is cut where the first lies; to show it instead, move it a little in front");
   }
+  if (options.Warning && !overlaps.OnTop.empty())
+  {
+    options.Warning(Counted(overlaps.OnTop.size(), "cell lies", "cells lie") +
+      " wholly on a surface of another material in its plane (cells " + PairList(overlaps.OnTop) +
+      ", each the one on top, then the one under it): kept whole, the cell under it cut around it (a poster on its "
+      "wall), as both would receive the full light");
+  }
   if (options.Warning && !overlaps.LampsKept.empty())
   {
     options.Warning(Counted(overlaps.LampsKept.size(), "pair of lamps overlaps", "pairs of lamps overlap") +

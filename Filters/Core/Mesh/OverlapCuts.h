@@ -22,6 +22,10 @@ struct OverlapCuts
   /// Pairs of input polygons (kept, cut) of different surfaces that overlap in one plane,
   /// facing one side: which one was meant cannot be told, so they are said.
   std::vector<std::pair<int, int>> Differing;
+  /// Pairs (kept, cut) of input polygons of different surfaces where the kept one, not a
+  /// lamp, lies wholly on the other's surface (a poster on its wall): meant, so said apart
+  /// from Differing, whose choice is only the order.
+  std::vector<std::pair<int, int>> OnTop;
   /// Pairs of input polygons that are lamps of different lights and overlap: not cut (each
   /// emits the power it was given), to be said.
   std::vector<std::pair<int, int>> LampsKept;

@@ -63,6 +63,7 @@ PairedPolygons CutAsWhole(const PolygonArrays& whole, const WholeSceneSurfaces& 
     overlaps->Trimmed = Kept(cuts.Trimmed, own);
     overlaps->Covered = Kept(cuts.Covered, own);
     overlaps->Differing = KeptPairs(cuts.Differing, own);
+    overlaps->OnTop = KeptPairs(cuts.OnTop, own);
     overlaps->LampsKept = KeptPairs(cuts.LampsKept, own);
   }
   return piece;
