@@ -353,6 +353,24 @@ GatheredScene GatherWholeScene(vtkMultiProcessController* parallel, vtkPolyData*
   return whole;
 }
 
+/// Every rank's warnings, this rank's printed as they came and the others' kept for the
+/// output's Warnings array: the client shows one piece's field data, and a copy found on
+/// another rank was missing from it.
+vtkRadiosityAdapter::WarningList EveryRanksWarnings(
+  vtkMultiProcessController* parallel, const vtkRadiosityAdapter::WarningList& mine)
+{
+  vtkRadiosityAdapter::WarningList all(true);
+  for (const std::string& message : vtkRadiosityPieces::AllGatherStrings(parallel, mine.GetMessages()))
+  {
+    const std::vector<std::string>& kept = all.GetMessages();
+    if (std::find(kept.begin(), kept.end(), message) == kept.end()) // one said by every rank, once
+    {
+      all.Keep(message);
+    }
+  }
+  return all;
+}
+
 /// The ranks' verdict on their pieces: this rank's error, another's, or none at all cells;
 /// `firstPatch` receives the patches of the ranks before this one.
 std::string AgreeOnPieces(vtkMultiProcessController* parallel, const std::string& error, bool empty,
@@ -508,6 +526,7 @@ int vtkRadiosityMesher::RequestData(
     if (parallel)
     {
       error = AgreeOnPieces(parallel, error, empty, input, meshed, firstPatch);
+      warnings = EveryRanksWarnings(parallel, warnings);
     }
     if (!error.empty())
     {

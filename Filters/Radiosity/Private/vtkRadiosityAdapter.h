@@ -90,6 +90,9 @@ public:
   {
   }
   void Add(vtkObject* self, const std::string& message);
+  /// Keeps `message` for the Warnings array without printing it (said elsewhere: another rank).
+  void Keep(const std::string& message) { this->Messages.push_back(message); }
+  const std::vector<std::string>& GetMessages() const { return this->Messages; }
   /// Sets Warnings on `fields` to the upstream ones it holds plus ours, in a new array so
   /// that the input's (shared by a shallow copy) stays as it was; adds nothing if none.
   /// With `replaceRepeats`, an upstream one that ours repeat (the same text up to its first

@@ -213,6 +213,32 @@ double MaxOverRanks(vtkMultiProcessController* controller, double value)
   return largest;
 }
 
+std::vector<std::string> AllGatherStrings(vtkMultiProcessController* controller, const std::vector<std::string>& mine)
+{
+  std::vector<char> sent; // each string ended by a zero
+  for (const std::string& text : mine)
+  {
+    sent.insert(sent.end(), text.begin(), text.end());
+    sent.push_back('\0');
+  }
+  const int ranks = controller->GetNumberOfProcesses();
+  std::vector<vtkIdType> lengths(ranks, 0), offsets(ranks, 0);
+  const vtkIdType length = static_cast<vtkIdType>(sent.size());
+  controller->AllGather(&length, lengths.data(), 1);
+  for (int rank = 1; rank < ranks; ++rank)
+  {
+    offsets[rank] = offsets[rank - 1] + lengths[rank - 1];
+  }
+  std::vector<char> received(static_cast<size_t>(offsets.back() + lengths.back()) + 1, '\0');
+  controller->AllGatherV(sent.data(), received.data(), length, lengths.data(), offsets.data());
+  std::vector<std::string> all;
+  for (size_t at = 0; at + 1 < received.size(); at += all.back().size() + 1)
+  {
+    all.emplace_back(received.data() + at);
+  }
+  return all;
+}
+
 long long SumOverRanks(vtkMultiProcessController* controller, long long value, long long* before)
 {
   std::vector<long long> all(controller->GetNumberOfProcesses(), 0);

@@ -12,6 +12,8 @@
 #include "vtkType.h"
 
 #include <functional>
+#include <string>
+#include <vector>
 
 class vtkInformation;
 class vtkMultiProcessController;
@@ -58,6 +60,9 @@ long long SumOverRanks(vtkMultiProcessController* controller, long long value, l
 
 /// The largest `value` of any rank.
 double MaxOverRanks(vtkMultiProcessController* controller, double value);
+
+/// Every rank's `mine`, in rank order, on every rank.
+std::vector<std::string> AllGatherStrings(vtkMultiProcessController* controller, const std::vector<std::string>& mine);
 
 }
 
