@@ -415,6 +415,12 @@ PairedPolygons SplitWarped(const std::vector<Vec3>& points, const PairedPolygons
   return out;
 }
 
+/// How close two corners are to be one, for copies and triangle pairs: a step of the scene's box.
+double CornerTolerance(const std::vector<Vec3>& points)
+{
+  return 1e-7 * std::max(Bounds(points).Diagonal(), 1e-300);
+}
+
 /// The polygons with coincident copies left out and overlapping faces cut (CoincidentCopies.h,
 /// OverlapCuts.h), found among these polygons or, for a piece, over the whole scene.
 PairedPolygons WithoutCopiesAndOverlaps(const std::vector<Vec3>& points, const std::vector<int>& offsets,
@@ -425,7 +431,7 @@ PairedPolygons WithoutCopiesAndOverlaps(const std::vector<Vec3>& points, const s
   {
     const std::vector<Vec3>& all = options.WholeScene->Points;
     return CutAsWhole(*options.WholeScene, *options.WholeSurfaces, static_cast<int>(offsets.size()) - 1,
-      1e-7 * std::max(Bounds(all).Diagonal(), 1e-300), 4 * MeshNoise(all, options.PointQuantum), copies, overlaps);
+      CornerTolerance(all), 4 * MeshNoise(all, options.PointQuantum), copies, overlaps);
   }
   PairedPolygons polygons;
   polygons.Offsets = offsets;
@@ -434,7 +440,7 @@ PairedPolygons WithoutCopiesAndOverlaps(const std::vector<Vec3>& points, const s
   {
     polygons.Source.push_back(static_cast<int>(i));
   }
-  const double tolerance = 1e-7 * std::max(Bounds(points).Diagonal(), 1e-300);
+  const double tolerance = CornerTolerance(points);
   const CoincidentCopies found = DropCoincidentCopies(points, surfaceKey, options.Lamps, tolerance, polygons);
   if (copies)
   {
@@ -458,7 +464,7 @@ PairedPolygons Paired(const std::vector<Vec3>& points, const std::vector<int>& o
   CoincidentCopies* copies = nullptr, OverlapCuts* overlaps = nullptr)
 {
   PairedPolygons polygons = WithoutCopiesAndOverlaps(points, offsets, connectivity, surfaceKey, options, copies, overlaps);
-  const double tolerance = 1e-7 * std::max(Bounds(points).Diagonal(), 1e-300);
+  const double tolerance = CornerTolerance(points);
   const double noise = MeshNoise(points, options.PointQuantum);
   const std::vector<Vec3>& at = PointsOf(polygons, points);
   if (!options.MergeTriangles)

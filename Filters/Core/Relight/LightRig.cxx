@@ -130,8 +130,9 @@ bool ParseOnOff(const std::string& text, bool& on)
   {
     return true;
   }
-  on = ParseNumber(text, number) && number != 0;
-  return ParseNumber(text, number);
+  const bool numeric = ParseNumber(text, number);
+  on = numeric && number != 0;
+  return numeric;
 }
 
 std::vector<std::string> SettingInputRow(const std::string& name, const LightSetting& setting)
