@@ -112,7 +112,7 @@ TEST(Clustered, WiderSeparationComesCloserToProgressiveRefinement)
   // The separation at which groups of elements exchange light whole is the method's
   // accuracy knob: farther means more, smaller links, and less of the far-field error.
   const int lamps = 8;
-  const SceneMesh mesh = FurnishedRoom(1.0, 0.25);
+  const SceneMesh mesh = FurnishedRoom(1.2, 0.4);
   const Solution reference = Reference(mesh, lamps);
   double previous = 1, links = 0;
   for (double separation : { 2.5, 4.0, 8.0 })

@@ -102,7 +102,7 @@ TEST(Hierarchical, HowellPairsThroughPatchLinks)
 TEST(Hierarchical, EqualsProgressiveRefinementOnTheSameMesh)
 {
   // Furnished room, 8 lamps, 9 elements a patch: every light within 1 % (area-weighted mean).
-  const SceneMesh mesh = Room(0.6, 0.2);
+  const SceneMesh mesh = Room(0.9, 0.3);
   // 16 shadow rays: with 4, the two methods' different visibility sampling (per element
   // and shot, per patch pair) alone differs by about 1 %; the bias between them is 0.1 %.
   const Solution fine = SolveRoom(mesh, [] {
