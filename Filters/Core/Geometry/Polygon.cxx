@@ -148,6 +148,23 @@ Vec3 PolygonCentroid(const Vec3* loop, int count)
   return count > 0 ? mean * (1.0 / count) : mean;
 }
 
+double WarpOffset(const std::vector<Vec3>& loop, double* longest)
+{
+  const Vec3 n = Normalized(NewellVector(loop.data(), static_cast<int>(loop.size())));
+  const Vec3 c = PolygonCentroid(loop.data(), static_cast<int>(loop.size()));
+  double offset = 0, edge = 0;
+  for (size_t v = 0; v < loop.size(); ++v)
+  {
+    offset = std::max(offset, std::fabs(Dot(n, loop[v] - c)));
+    edge = std::max(edge, Norm(loop[(v + 1) % loop.size()] - loop[v]));
+  }
+  if (longest)
+  {
+    *longest = edge;
+  }
+  return offset;
+}
+
 double Span(const std::vector<Vec3>& points)
 {
   Vec3 mean{};

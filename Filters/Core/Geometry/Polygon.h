@@ -60,6 +60,10 @@ inline double PolygonArea(const Vec3* loop, int count)
 
 Vec3 PolygonCentroid(const Vec3* loop, int count);
 
+/// How far the loop's farthest corner is off its (Newell) plane through its centroid, a
+/// length; `longest`, if given, receives its longest edge.
+double WarpOffset(const std::vector<Vec3>& loop, double* longest = nullptr);
+
 /// Keeps the part of a convex loop with dot(normal, x - origin) >= 0 (Sutherland-Hodgman).
 /// The analytic form factor integrates over the whole polygon, so parts behind the receiver
 /// must be removed first or they cancel visible parts.

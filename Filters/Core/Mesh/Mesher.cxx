@@ -349,25 +349,6 @@ double CountWithContacts(const PolygonArrays& polygons, double patchSize, double
 
 namespace
 {
-/// How far the loop's farthest corner is off its (Newell) plane, as a length (`size`
-/// receives its longest edge).
-double WarpOffset(const std::vector<Vec3>& loop, double* size = nullptr)
-{
-  const Vec3 n = Normalized(NewellVector(loop.data(), static_cast<int>(loop.size())));
-  const Vec3 c = PolygonCentroid(loop.data(), static_cast<int>(loop.size()));
-  double offset = 0, longest = 0;
-  for (size_t v = 0; v < loop.size(); ++v)
-  {
-    offset = std::max(offset, std::fabs(Dot(n, loop[v] - c)));
-    longest = std::max(longest, Norm(loop[(v + 1) % loop.size()] - loop[v]));
-  }
-  if (size)
-  {
-    *size = longest;
-  }
-  return offset;
-}
-
 /// How far the loop's farthest corner is off its plane, over its longest edge.
 double Warp(const std::vector<Vec3>& loop)
 {
@@ -476,7 +457,7 @@ PairedPolygons Paired(const std::vector<Vec3>& points, const std::vector<int>& o
   {
     keys[i] = polygons.Source[i] < static_cast<int>(surfaceKey.size()) ? surfaceKey[polygons.Source[i]] : 0;
   }
-  PairedPolygons merged = MergeTrianglePairs(at, polygons.Offsets, polygons.Connectivity, keys, tolerance);
+  PairedPolygons merged = MergeTrianglePairs(at, polygons.Offsets, polygons.Connectivity, keys, tolerance, 4 * noise);
   for (int& source : merged.Source)
   {
     source = polygons.Source[source]; // back to the input's numbering
@@ -722,25 +703,30 @@ std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& of
   const double diagonal = Span(points); // not the bounding box's: that turns with the scene
   const double quantum = std::max(diagonal, 1e-300) * 1e-9;
   const double noise = MeshNoise(points, options.PointQuantum);
-  SurfaceAssembly surfaces(quantum, noise, Bounds(points).Centre(), options);
+  std::vector<PolygonPlane> planes;
   std::vector<Vec3> loop;
+  for (int i = 0; i < count; ++i)
+  {
+    const std::string bad = DistinctCorners(points, offsets, connectivity, i, source[i], quantum, loop);
+    if (!bad.empty())
+    {
+      return bad;
+    }
+    planes.push_back(PlaneOf(loop, Normalized(NewellVector(loop.data(), static_cast<int>(loop.size()))), noise,
+      surfaceKey[source[i]]));
+  }
+  SurfaceAssembly surfaces(quantum, noise, Bounds(points).Centre(), options, planes);
   for (int i = 0; i < count; ++i)
   {
     if (options.Progress && !options.Progress(static_cast<double>(i) / std::max(count, 1)))
     {
       return "meshing was aborted";
     }
-    const std::string bad = DistinctCorners(points, offsets, connectivity, i, source[i], quantum, loop);
-    if (!bad.empty())
-    {
-      return bad;
-    }
-    const Vec3 normal = Normalized(NewellVector(loop.data(), static_cast<int>(loop.size())));
+    DistinctCorners(points, offsets, connectivity, i, source[i], quantum, loop);
     Piece piece;
-    MakePiece(loop, options, noise, ContactCutter(contacts.Segments[i], normal, contacts.Touch), piece);
+    MakePiece(loop, options, noise, ContactCutter(contacts.Segments[i], planes[i].Normal, contacts.Touch), piece);
     const auto outline = outlines.find(source[i]);
-    surfaces.Add(loop, normal, piece, i, source[i], surfaceKey[source[i]],
-      outline == outlines.end() ? std::vector<Vec3>() : outline->second);
+    surfaces.Add(loop, piece, i, source[i], outline == outlines.end() ? std::vector<Vec3>() : outline->second);
   }
   surfaces.Flatten(out);
   return std::string();

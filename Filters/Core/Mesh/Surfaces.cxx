@@ -3,88 +3,53 @@
 
 #include <OpenMesh/Core/System/omstream.hh>
 
+#include <algorithm>
 #include <cmath>
 
 namespace radiosity
 {
 
-namespace
-{
-/// Normals of one surface differ by at most this (as a distance between unit normals); it
-/// is also the quantisation step of normals in the surface keys, so that one step either
-/// way finds every candidate.
-constexpr double kNormalTolerance = 1e-6;
-} // namespace
-
-SurfaceAssembly::SurfaceAssembly(double quantum, double noise, const Vec3& centre, const MesherOptions& options)
+SurfaceAssembly::SurfaceAssembly(double quantum, double noise, const Vec3& centre, const MesherOptions& options,
+  const std::vector<PolygonPlane>& planes)
   : Quantum(quantum)
   , Noise(noise)
   , Centre(centre)
   , Options(options)
+  // Offsets within a millionth of the scene (as before noise was counted), or within the
+  // noise of two centroids far from the origin.
+  , Groups(GroupCoplanar(planes, std::max(quantum * 1000, 2 * noise), centre))
 {
+  for (int founder : Groups.Founder)
+  {
+    Planes.push_back(Plane{ planes[founder].Normal, Dot(planes[founder].Normal, planes[founder].Centroid - centre) });
+  }
 }
 
-void SurfaceAssembly::Add(const std::vector<Vec3>& loop, const Vec3& normal, const Piece& piece, int polygon,
-  int source, int key, const std::vector<Vec3>& outline)
+void SurfaceAssembly::Add(
+  const std::vector<Vec3>& loop, const Piece& piece, int polygon, int source, const std::vector<Vec3>& outline)
 {
-  const int s = SurfaceOf(loop, normal, key, outline);
+  const int s = SurfaceOf(polygon, loop, outline);
   const std::pair<int, int> patches = PatchesOf(s, loop, piece);
   Stitch(s, piece, polygon, source, patches.first);
   Patches += patches.second;
 }
 
-int SurfaceAssembly::SurfaceOf(const std::vector<Vec3>& loop, const Vec3& normal, int key, const std::vector<Vec3>& outline)
+int SurfaceAssembly::SurfaceOf(int polygon, const std::vector<Vec3>& loop, const std::vector<Vec3>& outline)
 {
-  const Vec3 centroid = PolygonCentroid(loop.data(), static_cast<int>(loop.size()));
-  const double planeOffset = Dot(normal, centroid - Centre);
-  const std::array<long long, 4> plane = PlaneKey(normal, planeOffset, kNormalTolerance, Quantum * 1000);
-  const SurfaceId id{ key, plane[0], plane[1], plane[2], plane[3] };
-  int s = FindSurface(id, Plane{ normal, planeOffset });
-  if (s < 0)
+  const int s = Groups.Group[polygon];
+  if (s == static_cast<int>(Meshes.size())) // groups are numbered as polygons first meet them
   {
-    s = static_cast<int>(Meshes.size());
-    Index.emplace(id, s);
-    Planes.push_back(Plane{ normal, planeOffset });
     Meshes.emplace_back();
     Welds.emplace_back();
     // The sharing grid hangs from the surface's first polygon, not from world axes, so a
     // moved or rotated scene groups its small polygons the same way.
+    const Vec3& normal = Planes[s].Normal;
     const std::vector<Vec3>& hang = outline.size() >= 3 ? outline : loop;
     const Vec3 edge = hang[1] - hang[0];
     const Vec3 t = Normalized(edge - normal * Dot(edge, normal));
     GridFrames.push_back({ hang[0], t, Cross(normal, t) });
   }
   return s;
-}
-
-int SurfaceAssembly::FindSurface(const SurfaceId& id, const Plane& plane) const
-{
-  // A value near a rounding boundary lands on either side: the tolerances, not where the
-  // boundaries fall, decide, so placement and rotation do not.
-  const double offsetTolerance = Quantum * 1000;
-  int best = -1;
-  double nearest = 1;
-  for (int step = 0; step < 81; ++step)
-  {
-    SurfaceId probe = id;
-    std::get<1>(probe) += step % 3 - 1;
-    std::get<2>(probe) += step / 3 % 3 - 1;
-    std::get<3>(probe) += step / 9 % 3 - 1;
-    std::get<4>(probe) += step / 27 % 3 - 1;
-    const auto range = Index.equal_range(probe);
-    for (auto found = range.first; found != range.second; ++found)
-    {
-      const Plane& other = Planes[found->second];
-      const double distance = std::max(Norm(other.Normal - plane.Normal) / kNormalTolerance,
-        std::fabs(other.Offset - plane.Offset) / offsetTolerance);
-      if (distance <= nearest && (best < 0 || distance < nearest || found->second < best))
-      {
-        nearest = distance;
-        best = found->second;
-      }
-    }
-  }
-  return best;
 }
 
 std::pair<int, int> SurfaceAssembly::PatchesOf(int surface, const std::vector<Vec3>& loop, const Piece& piece)

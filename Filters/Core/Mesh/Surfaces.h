@@ -4,6 +4,7 @@
 #ifndef RadiosityCore_Surfaces_h
 #define RadiosityCore_Surfaces_h
 
+#include "Mesh/CoplanarGroups.h"
 #include "Mesh/Mesher.h"
 
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
@@ -30,15 +31,17 @@ class SurfaceAssembly
 public:
   /// `quantum`: points closer than this are one point; `noise`: how far points may be off
   /// their places (MeshNoise); `centre`: the scene's, which plane offsets are measured from
-  /// (so they stay small wherever the scene is placed).
-  SurfaceAssembly(double quantum, double noise, const Vec3& centre, const MesherOptions& options);
+  /// (so they stay small wherever the scene is placed); `planes`: every polygon of the
+  /// mesher's list, which are grouped into surfaces (CoplanarGroups.h) before any is added.
+  SurfaceAssembly(double quantum, double noise, const Vec3& centre, const MesherOptions& options,
+    const std::vector<PolygonPlane>& planes);
 
-  /// Polygon `polygon` of the mesher's list, `loop` (distinct corners, unit `normal`), cut
-  /// into `piece`, from input cell `source` whose caller key is `key`. `outline`: the input
+  /// Polygon `polygon` of the mesher's list (added in the list's order), `loop` (its
+  /// distinct corners), cut into `piece`, from input cell `source`. `outline`: the input
   /// cell's own corners where overlaps cut it (else empty): the first polygon of a surface
   /// hangs the surface's patch grid from its first edge, and a cut's corners are float
   /// noise away from where a turned scene puts them.
-  void Add(const std::vector<Vec3>& loop, const Vec3& normal, const Piece& piece, int polygon, int source, int key,
+  void Add(const std::vector<Vec3>& loop, const Piece& piece, int polygon, int source,
     const std::vector<Vec3>& outline = {});
 
   /// Every surface's points and elements into `out`, patch ids compacted to 0..patches-1.
@@ -59,19 +62,14 @@ private:
     };
   };
   using SurfaceMesh = OpenMesh::PolyMesh_ArrayKernelT<DoublePrecision>;
-  /// A surface's plane: its first polygon's unit normal and offset.
+  /// A surface's plane: its founder's unit normal and offset (CoplanarGroups).
   struct Plane
   {
     Vec3 Normal;
     double Offset = 0;
   };
-  using SurfaceId = std::tuple<int, long long, long long, long long, long long>;
-
-  /// The surface of the polygon's plane and key, made where there is none yet.
-  int SurfaceOf(const std::vector<Vec3>& loop, const Vec3& normal, int key, const std::vector<Vec3>& outline);
-  /// Of the surfaces keyed `id` or one step off in any quantised part, the nearest within
-  /// tolerance of `plane`, else -1.
-  int FindSurface(const SurfaceId& id, const Plane& plane) const;
+  /// The surface of polygon `polygon` (its group's), made on its group's first polygon.
+  int SurfaceOf(int polygon, const std::vector<Vec3>& loop, const std::vector<Vec3>& outline);
   /// The first patch id of the piece and how many new patches it takes: a polygon that
   /// fits in one patch shares it with its surface's others in the same PatchSize cell.
   std::pair<int, int> PatchesOf(int surface, const std::vector<Vec3>& loop, const Piece& piece);
@@ -82,7 +80,7 @@ private:
   const Vec3 Centre;
   const MesherOptions& Options;
   int Patches = 0;
-  std::multimap<SurfaceId, int> Index; // a key holds every surface whose plane rounds to it
+  CoplanarGroups Groups;
   std::vector<Plane> Planes;
   std::vector<SurfaceMesh> Meshes;
   std::vector<std::map<std::array<long long, 3>, SurfaceMesh::VertexHandle>> Welds;

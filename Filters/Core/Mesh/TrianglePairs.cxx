@@ -33,7 +33,7 @@ struct TriangleEdges
 
 /// The quad t + u across t's edge (corner e, corner e+1), or empty if they do not make a
 /// flat convex one.
-std::vector<int> JoinedQuad(const TriangleEdges& edges, int t, int e, int u, double tolerance)
+std::vector<int> JoinedQuad(const TriangleEdges& edges, int t, int e, int u, double flatness)
 {
   const int* a = edges.Corners(t);
   const int* b = edges.Corners(u);
@@ -56,16 +56,17 @@ std::vector<int> JoinedQuad(const TriangleEdges& edges, int t, int e, int u, dou
   {
     loop.push_back(edges.Points[id]);
   }
-  const Vec3 n = Normalized(NewellVector(loop.data(), 4));
-  const Vec3 nt = Normalized(NewellVector(std::vector<Vec3>{ loop[0], loop[2], loop[3] }.data(), 3));
-  const Vec3 nu = Normalized(Cross(edges.Points[b[1]] - edges.Points[b[0]], edges.Points[b[2]] - edges.Points[b[0]]));
-  const bool flat = std::fabs(Dot(n, loop[1] - loop[0])) <= tolerance && Dot(nt, nu) > 1 - 1e-9;
+  // A length, not an angle between the triangles' normals: float noise of a far scene
+  // turns a small triangle's normal by noise / size, which no fixed angle would allow for.
+  const Vec3 nt = NewellVector(std::vector<Vec3>{ loop[0], loop[2], loop[3] }.data(), 3);
+  const Vec3 nu = Cross(edges.Points[b[1]] - edges.Points[b[0]], edges.Points[b[2]] - edges.Points[b[0]]);
+  const bool flat = Dot(nt, nu) > 0 && WarpOffset(loop) <= flatness;
   return flat && IsConvex(loop.data(), 4) ? quad : std::vector<int>();
 }
 } // namespace
 
 PairedPolygons MergeTrianglePairs(const std::vector<Vec3>& points, const std::vector<int>& offsets,
-  const std::vector<int>& connectivity, const std::vector<int>& surfaceKey, double tolerance)
+  const std::vector<int>& connectivity, const std::vector<int>& surfaceKey, double tolerance, double flatness)
 {
   const int count = static_cast<int>(offsets.size()) - 1;
   TriangleEdges edges{ points, offsets, connectivity, std::max(tolerance, 1e-300), {} };
@@ -106,7 +107,7 @@ PairedPolygons MergeTrianglePairs(const std::vector<Vec3>& points, const std::ve
           {
             continue;
           }
-          const std::vector<int> quad = JoinedQuad(edges, t, e, u, tolerance);
+          const std::vector<int> quad = JoinedQuad(edges, t, e, u, std::max(tolerance, flatness));
           if (!quad.empty())
           {
             loop = quad;

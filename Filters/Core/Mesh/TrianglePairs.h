@@ -27,12 +27,14 @@ inline const std::vector<Vec3>& PointsOf(const PairedPolygons& polygons, const s
   return polygons.Points.empty() ? input : polygons.Points;
 }
 
-/// Joins triangles that share an edge (by position, so split vertices count), have the same
-/// `surfaceKey`, lie in one plane (within `tolerance`, a length) and form a convex quad;
-/// each triangle joins its neighbour across its longest edge first (the diagonal a quad
-/// was split along). Every other polygon passes through unchanged.
+/// Joins triangles that share an edge (by position within `tolerance`, so split vertices
+/// count), have the same `surfaceKey`, face the same way, lie in one plane (every corner
+/// within `flatness` of the quad's, a length: the input's noise, so that float input far
+/// from the origin pairs as it does near it) and form a convex quad; each triangle joins
+/// its neighbour across its longest edge first (the diagonal a quad was split along).
+/// Every other polygon passes through unchanged.
 PairedPolygons MergeTrianglePairs(const std::vector<Vec3>& points, const std::vector<int>& offsets,
-  const std::vector<int>& connectivity, const std::vector<int>& surfaceKey, double tolerance);
+  const std::vector<int>& connectivity, const std::vector<int>& surfaceKey, double tolerance, double flatness);
 
 } // namespace radiosity
 

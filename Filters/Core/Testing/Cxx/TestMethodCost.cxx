@@ -70,7 +70,7 @@ TEST(MethodCost, NearPairsOfASmallSceneAreEveryPairCounted)
 
 TEST(MethodCost, NearPairsOfALargerSceneAreEstimatedFromASample)
 {
-  const SceneMesh room = SphereRoom(12000);
+  const SceneMesh room = SphereRoom(13000);
   ASSERT_GT(room.NumberOfPolygons(), 8000);
   const double counted = BruteForceNearPairs(room, 4.0);
   EXPECT_NEAR(EstimateNearPairs(room, SceneGeometry(room), 4.0), counted, 0.05 * counted);
