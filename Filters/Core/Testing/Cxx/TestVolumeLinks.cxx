@@ -55,7 +55,7 @@ SceneMesh TwoRooms()
 
 Solution SolveTwoRooms(const SceneMesh& mesh, SolverMethod method)
 {
-  SolverOptions o = radiosity_test::Converged(1e-4);
+  SolverOptions o = radiosity_test::Converged(1e-3);
   o.Solver = method;
   o.Samples = 16;
   const RadiositySolver solver(mesh);
