@@ -4,6 +4,7 @@
 #include <OpenMesh/Core/System/omstream.hh>
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 namespace radiosity
@@ -37,6 +38,7 @@ void SurfaceAssembly::Add(
 int SurfaceAssembly::SurfaceOf(int polygon, const std::vector<Vec3>& loop, const std::vector<Vec3>& outline)
 {
   const int s = Groups.Group[polygon];
+  assert(s <= static_cast<int>(Meshes.size()) && "polygons are added in the list's order");
   if (s == static_cast<int>(Meshes.size())) // groups are numbered as polygons first meet them
   {
     Meshes.emplace_back();
