@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 
 namespace radiosity
 {
@@ -100,7 +101,17 @@ bool RunsInside(const FlatPolygon& f, const Vec3& a, const Vec3& b, double touch
   return false;
 }
 
-/// Polygons by the cells of a uniform grid their bounds cover: candidates near an edge.
+/// The largest side of a box.
+double Extent(const Bounds& box)
+{
+  return std::max({ box.Hi.x - box.Lo.x, box.Hi.y - box.Lo.y, box.Hi.z - box.Lo.z });
+}
+
+/// Polygons by the grid cells their bounds cover: candidates near an edge. Those larger than
+/// a fine cell sit in a uniform grid over the scene (at most 64 cells a side); the many small
+/// ones of a tessellated model in a sparse grid of cells about their size. In the uniform
+/// grid alone, a 660k-triangle sphere in a room put about 800 triangles in every cell an edge
+/// looked through, and finding contacts took 190 s of a 310 s mesh.
 class PolygonGrid
 {
 public:
@@ -108,30 +119,39 @@ public:
     : Touch(touch)
   {
     Bounds box;
+    std::vector<double> sizes;
     for (const FlatPolygon& f : polygons)
     {
       box.Add(f.Box);
+      sizes.push_back(Extent(f.Box));
     }
     Lo = box.Lo;
-    const double extent = std::max({ box.Hi.x - Lo.x, box.Hi.y - Lo.y, box.Hi.z - Lo.z, 1e-300 });
     Resolution = std::clamp(static_cast<int>(2 * std::cbrt(static_cast<double>(polygons.size()))), 1, 64);
-    Cell = extent / Resolution * (1 + 1e-9);
+    Cell = std::max(Extent(box), 1e-300) / Resolution * (1 + 1e-9);
+    // Twice the median polygon: most polygons fall in a cell or two of it a side.
+    std::nth_element(sizes.begin(), sizes.begin() + sizes.size() / 2, sizes.end());
+    Fine = std::clamp(2 * sizes[sizes.size() / 2], Cell / 64, Cell);
     Cells.resize(static_cast<size_t>(Resolution) * Resolution * Resolution);
     for (size_t i = 0; i < polygons.size(); ++i)
     {
-      Visit(polygons[i].Box, [&](size_t cell) { Cells[cell].push_back(static_cast<int>(i)); });
+      auto add = [&](std::vector<int>& cell) { cell.push_back(static_cast<int>(i)); };
+      if (Extent(polygons[i].Box) > Fine)
+      {
+        Visit(polygons[i].Box, [&](size_t cell) { add(Cells[cell]); });
+      }
+      else
+      {
+        VisitFine(polygons[i].Box, [&](long long cell) { add(FineCells[cell]); });
+      }
     }
   }
 
-  /// Calls `use` once for every polygon whose cells the box a-b meets.
+  /// Calls `use` once for every polygon whose cells the segment a-b meets.
   template <typename Use>
   void Near(const Vec3& a, const Vec3& b, std::vector<int>& stamp, int mark, const Use& use) const
   {
-    Bounds reach;
-    reach.Add(a);
-    reach.Add(b);
-    Visit(reach, [&](size_t cell) {
-      for (int i : Cells[cell])
+    auto once = [&](const std::vector<int>& polygons) {
+      for (int i : polygons)
       {
         if (stamp[i] != mark)
         {
@@ -139,7 +159,30 @@ public:
           use(i);
         }
       }
-    });
+    };
+    Bounds reach;
+    reach.Add(a);
+    reach.Add(b);
+    Visit(reach, [&](size_t cell) { once(Cells[cell]); });
+    if (FineCells.empty())
+    {
+      return;
+    }
+    // In pieces no longer than a fine cell: a long edge's box would hold a plane of them.
+    const int pieces = static_cast<int>(std::min(std::ceil(Norm(b - a) / Fine), 1e6));
+    for (int k = 0; k < std::max(pieces, 1); ++k)
+    {
+      Bounds piece;
+      piece.Add(a + (b - a) * (static_cast<double>(k) / std::max(pieces, 1)));
+      piece.Add(a + (b - a) * (static_cast<double>(k + 1) / std::max(pieces, 1)));
+      VisitFine(piece, [&](long long cell) {
+        const auto found = FineCells.find(cell);
+        if (found != FineCells.end())
+        {
+          once(found->second);
+        }
+      });
+    }
   }
 
 private:
@@ -167,10 +210,30 @@ private:
     }
   }
 
-  double Touch, Cell = 1;
+  template <typename Use>
+  void VisitFine(const Bounds& box, const Use& use) const
+  {
+    auto index = [&](double v, double lo) { return static_cast<long long>(std::floor((v - lo) / Fine)); };
+    const long long x0 = index(box.Lo.x - Touch, Lo.x), x1 = index(box.Hi.x + Touch, Lo.x);
+    const long long y0 = index(box.Lo.y - Touch, Lo.y), y1 = index(box.Hi.y + Touch, Lo.y);
+    const long long z0 = index(box.Lo.z - Touch, Lo.z), z1 = index(box.Hi.z + Touch, Lo.z);
+    for (long long z = z0; z <= z1; ++z)
+    {
+      for (long long y = y0; y <= y1; ++y)
+      {
+        for (long long x = x0; x <= x1; ++x)
+        {
+          use(CellHash(x, y, z));
+        }
+      }
+    }
+  }
+
+  double Touch, Cell = 1, Fine = 1;
   int Resolution = 1;
   Vec3 Lo;
   std::vector<std::vector<int>> Cells;
+  std::unordered_map<long long, std::vector<int>> FineCells; ///< by CellHash: a shared hash only adds candidates
 };
 
 /// Splits one convex loop along the line through `origin` with in-plane normal `side`;
