@@ -11,6 +11,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
+#include <vtksys/Directory.hxx>
 #include <vtksys/SystemTools.hxx>
 
 #include <sys/stat.h>
@@ -59,6 +60,54 @@ bool RegularFile(const std::string& path)
 {
   struct stat info;
   return stat(path.c_str(), &info) == 0 && S_ISREG(info.st_mode);
+}
+
+/// Edits (insert, delete, replace a character) from `a` to `b`.
+size_t EditDistance(const std::string& a, const std::string& b)
+{
+  std::vector<size_t> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j)
+  {
+    row[j] = j;
+  }
+  for (size_t i = 1; i <= a.size(); ++i)
+  {
+    size_t diagonal = row[0];
+    row[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j)
+    {
+      const size_t above = row[j];
+      row[j] = std::min({ row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1) });
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+/// " (did you mean 'x'?)" for the file of the missing path's folder whose name is a
+/// typo or two away from it, or nothing.
+std::string NearestFile(const std::string& path)
+{
+  const std::string folder = vtksys::SystemTools::GetFilenamePath(path);
+  const std::string name = vtksys::SystemTools::GetFilenameName(path);
+  vtksys::Directory listing;
+  if (name.empty() || !listing.Load(folder.empty() ? "." : folder))
+  {
+    return std::string();
+  }
+  std::string best;
+  size_t nearest = std::max<size_t>(1, std::min<size_t>(2, name.size() / 4)) + 1;
+  for (unsigned long i = 0; i < listing.GetNumberOfFiles(); ++i)
+  {
+    const std::string candidate = listing.GetFile(i);
+    const size_t distance = EditDistance(name, candidate);
+    if (distance < nearest && RegularFile(folder.empty() ? candidate : folder + "/" + candidate))
+    {
+      nearest = distance;
+      best = candidate;
+    }
+  }
+  return best.empty() ? std::string() : " (did you mean '" + best + "'?)";
 }
 
 bool ReadText(const std::string& path, std::string& text)
@@ -144,7 +193,7 @@ std::string Read(const std::string& path, radiosity::RawScene& raw, std::vector<
 {
   if (!RegularFile(path))
   {
-    return "'" + path + "' does not exist or is not a regular file";
+    return "'" + path + "' does not exist or is not a regular file" + NearestFile(path);
   }
   if (const Format* format = FormatOf(path))
   {

@@ -501,6 +501,7 @@ check(list(cell_array(picked, "LightId").astype(int)) == [-1, -1, 0, 0, -1, -1],
 # --- bad files: an error naming the file and the problem, nothing half-done ---------------------
 cases = [
     ("a missing file", os.path.join(folder, "nowhere.obj"), "does not exist"),
+    ("a typo in the name", os.path.join(folder, "earli.obj"), "does not exist or is not a regular file (did you mean 'early.obj'?)"),
     ("an unknown extension", write("scene.xyz", "1 2 3\n"), "'.xyz' is not a scene format"),
     ("a missing MTL", write("lost.obj", "mtllib lost.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), "lost.mtl', which is missing"),
     ("a broken MTL", (write("broken.mtl", "newmtl A\nKd 0.5 abc 0.5\n"),
