@@ -135,7 +135,8 @@ std::string CheckBuffers(const json& document, const std::string& folder, long l
     const bool padded = glbBinary >= 0 && i == 0 && !(buffer.is_object() && buffer.contains("uri"));
     if (error.empty() && (held < length || held > length + (padded ? 3 : 0)))
     {
-      error = "claims " + std::to_string(length) + " bytes and holds " + std::to_string(held);
+      error = "claims " + std::to_string(length) + " bytes and holds " + std::to_string(held) +
+        (held < length ? " (the file is cut short, or not the one the model was written with)" : "");
     }
     if (error.empty() && glbBinary >= 0 && i == 0 && buffer.is_object() && buffer.contains("uri"))
     {

@@ -140,7 +140,7 @@ GLTF = {
     "good.glb": (damaged(lambda d: None), None),
     "good.gltf": (with_file("triangle.bin"), None),
     "missing_bin.gltf": (with_file("missing.bin"), "'missing.bin' is missing"),
-    "claims_3600_bytes.gltf": (with_file("triangle.bin", 3600), "claims 3600 bytes and holds 44"),
+    "claims_3600_bytes.gltf": (with_file("triangle.bin", 3600), "claims 3600 bytes and holds 44 (the file is cut short"),
     "uri_outside.gltf": (with_file("../../../../etc/passwd"), "is not in the model's folder"),
     "uri_absolute.gltf": (with_file("/etc/passwd"), "is not in the model's folder"),
     "uri_a_folder.gltf": (with_file("."), "is not a regular file"),
