@@ -22,7 +22,6 @@ constexpr int kPerLamp = 13;
 /// Table columns and the property elements each holds: name, shape, centre, facing, size,
 /// emission.
 constexpr int kFirst[] = { 0, 1, 2, 5, 8, 10, 13 };
-constexpr int kColumns = 6;
 
 int Count(int column)
 {
@@ -44,39 +43,28 @@ pqRadiosityAreaLightsWidget::pqRadiosityAreaLightsWidget(vtkSMProxy* proxy, vtkS
   this->fill();
 }
 
-void pqRadiosityAreaLightsWidget::fill()
+void pqRadiosityAreaLightsWidget::fillCell(int row, int column)
 {
-  this->Filling = true;
-  const int lamps = static_cast<int>(this->Rows.size()) / kPerLamp;
-  this->Table->setRowCount(lamps);
-  for (int row = 0; row < lamps; ++row)
+  const QStringList part = this->Rows.mid(row * kPerLamp + kFirst[column], Count(column));
+  if (column != 1)
   {
-    for (int column = 0; column < kColumns; ++column)
-    {
-      const QStringList part = this->Rows.mid(row * kPerLamp + kFirst[column], Count(column));
-      if (column == 1)
-      {
-        auto* shape = new QComboBox(this->Table);
-        shape->addItems({ "Rectangle", "Disk" });
-        shape->setCurrentIndex(part[0].toInt() == 1 ? 1 : 0);
-        QObject::connect(shape, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this, shape](int index) {
-          for (int r = 0; r < this->Table->rowCount(); ++r)
-          {
-            if (this->Table->cellWidget(r, 1) == shape)
-            {
-              this->Rows[r * kPerLamp + 1] = QString::number(index);
-              Q_EMIT this->rowsChanged();
-            }
-          }
-        });
-        this->Table->setCellWidget(row, 1, shape);
-        continue;
-      }
-      this->Table->setItem(row, column, new QTableWidgetItem(part.join(", ")));
-    }
+    this->Table->setItem(row, column, new QTableWidgetItem(part.join(", ")));
+    return;
   }
-  this->Filling = false;
-  this->fitHeight();
+  auto* shape = new QComboBox(this->Table);
+  shape->addItems({ "Rectangle", "Disk" });
+  shape->setCurrentIndex(part[0].toInt() == 1 ? 1 : 0);
+  QObject::connect(shape, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this, shape](int index) {
+    for (int r = 0; r < this->Table->rowCount(); ++r)
+    {
+      if (this->Table->cellWidget(r, 1) == shape)
+      {
+        this->Rows[r * kPerLamp + 1] = QString::number(index);
+        Q_EMIT this->rowsChanged();
+      }
+    }
+  });
+  this->Table->setCellWidget(row, 1, shape);
 }
 
 void pqRadiosityAreaLightsWidget::cellEdited(int row, int column)

@@ -17,7 +17,7 @@ public:
   pqRadiosityAreaLightsWidget(vtkSMProxy* proxy, vtkSMProperty* property, QWidget* parent = nullptr);
 
 protected:
-  void fill() override;
+  void fillCell(int row, int column) override;
   /// A new lamp: at the top of the input's box, facing down along its shortest side.
   QStringList newRow() const override;
   /// A typed cell into the rows; a cell that does not read as its numbers is put back.

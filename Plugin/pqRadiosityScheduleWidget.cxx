@@ -58,21 +58,10 @@ pqRadiosityScheduleWidget::pqRadiosityScheduleWidget(vtkSMProxy* proxy, vtkSMPro
   this->fill();
 }
 
-void pqRadiosityScheduleWidget::fill()
+void pqRadiosityScheduleWidget::fillCell(int row, int column)
 {
-  this->Filling = true;
-  const int keys = static_cast<int>(this->Rows.size()) / kPerKey;
-  this->Table->setRowCount(keys);
-  for (int row = 0; row < keys; ++row)
-  {
-    for (int column = 0; column < this->Table->columnCount(); ++column)
-    {
-      const QStringList part = this->Rows.mid(row * kPerKey + kFirst[column], Count(column));
-      this->Table->setItem(row, column, new QTableWidgetItem(part.join(", ")));
-    }
-  }
-  this->Filling = false;
-  this->fitHeight();
+  const QStringList part = this->Rows.mid(row * kPerKey + kFirst[column], Count(column));
+  this->Table->setItem(row, column, new QTableWidgetItem(part.join(", ")));
 }
 
 void pqRadiosityScheduleWidget::cellEdited(int row, int column)

@@ -16,7 +16,7 @@ public:
   pqRadiosityScheduleWidget(vtkSMProxy* proxy, vtkSMProperty* property, QWidget* parent = nullptr);
 
 protected:
-  void fill() override;
+  void fillCell(int row, int column) override;
   /// A new keyframe: the last one a time step later, else the first light at time 0.
   QStringList newRow() const override;
   /// A typed cell into the rows; a row that does not read as a keyframe is put back.

@@ -83,6 +83,22 @@ void pqRadiosityTableWidget::removeRows()
   Q_EMIT this->rowsChanged();
 }
 
+void pqRadiosityTableWidget::fill()
+{
+  this->Filling = true;
+  const int entries = static_cast<int>(this->Rows.size()) / this->PerRow;
+  this->Table->setRowCount(entries);
+  for (int row = 0; row < entries; ++row)
+  {
+    for (int column = 0; column < this->Table->columnCount(); ++column)
+    {
+      this->fillCell(row, column);
+    }
+  }
+  this->Filling = false;
+  this->fitHeight();
+}
+
 void pqRadiosityTableWidget::fitHeight()
 {
   // Several columns rarely fit the panel's width: room for the horizontal scroll bar too.

@@ -29,8 +29,10 @@ public:
 
 protected:
   void rowsSet() override { this->fill(); }
-  /// The table from Rows.
-  virtual void fill() = 0;
+  /// The table from Rows: a row per entry, each cell by fillCell, guarded by Filling.
+  void fill();
+  /// Cell (row, column) from the entry's elements.
+  virtual void fillCell(int row, int column) = 0;
   /// A new entry's elements, for Add.
   virtual QStringList newRow() const = 0;
   /// A typed cell into Rows (or put back).
