@@ -285,7 +285,7 @@ for X in (1.75, 1.8):
              [(1.0, 1.3, 2.4), (1.0, 1.7, 2.4), (0.6, 1.7, 2.4), (0.6, 1.3, 2.4)]]
     divided = relight.make_scene(walls, [(0.7,) * 3] * len(walls), [-1] * 8 + [0])
     for method in (2, 1):
-        out = relight.solve(divided, 0.5, 0.125, SolverMethod=method, ConvergenceThreshold=1e-6,
+        out = relight.solve(divided, 0.5, 0.125, SolverMethod=method, ConvergenceThreshold=1e-4,
                             MaximumShots=10**6).GetOutput()
         b = relight.cell_array(out, "Radiosity_" + light_names(out)[0]).sum(axis=1)
         x = relight.cell_centroids(out)[:, 0]
