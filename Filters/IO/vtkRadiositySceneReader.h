@@ -1,7 +1,8 @@
 /**
  * @class   vtkRadiositySceneReader
- * @brief   reads a scene file (OBJ+MTL, glTF/GLB, PLY; IFC, FBX, DAE, 3DS... through
- *          assimp) into the radiosity input: polygons with Reflectance, LightId, Emission
+ * @brief   reads a scene file (OBJ+MTL, glTF/GLB, PLY, VRML; IFC, FBX, DAE, 3DS...
+ *          through assimp; the one list is Formats() in Formats/SceneFiles.cxx) into the
+ *          radiosity input: polygons with Reflectance, LightId, Emission
  *
  * Diffuse colors (MTL `Kd`, glTF `baseColorFactor` times the base color texture's mean,
  * PLY colors) become the cell array `Reflectance`, clamped into [0, 1] with one warning

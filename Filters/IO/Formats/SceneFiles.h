@@ -1,5 +1,6 @@
-// Reading scene files into the core's RawScene: VTK's readers for OBJ+MTL, glTF/GLB and
-// PLY; assimp's command-line tool for the formats VTK lacks (IFC, FBX, DAE, 3DS, ...).
+// Reading scene files into the core's RawScene: VTK's readers for OBJ+MTL, glTF/GLB, PLY
+// and VRML; assimp's command-line tool for the formats VTK lacks (IFC, FBX,
+// DAE, 3DS, ...). Formats() in SceneFiles.cxx is the one list of them.
 // Each returns an empty string or what is wrong, naming the file (not wrapped).
 #ifndef SceneFiles_h
 #define SceneFiles_h

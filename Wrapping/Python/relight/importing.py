@@ -1,4 +1,4 @@
-"""Scene files in: ``import_scene`` reads OBJ+MTL, glTF/GLB, PLY (and IFC, FBX, DAE,
+"""Scene files in: ``import_scene`` reads OBJ+MTL, glTF/GLB, PLY, VRML (and IFC, FBX, DAE,
 3DS, ... through Debian's ``assimp``) into a scene ready for the mesher."""
 
 import os
