@@ -199,6 +199,17 @@ int vtkLightTaggedRadiosity::RequestData(
   });
 }
 
+// Options() converts SolverMethod and FormFactorMethod by a cast: the filter's numbers are the core's.
+static_assert(static_cast<int>(radiosity::SolverMethod::Auto) == vtkLightTaggedRadiosity::SOLVER_AUTO &&
+    static_cast<int>(radiosity::SolverMethod::ProgressiveRefinement) == vtkLightTaggedRadiosity::PROGRESSIVE_REFINEMENT &&
+    static_cast<int>(radiosity::SolverMethod::Hierarchical) == vtkLightTaggedRadiosity::HIERARCHICAL &&
+    static_cast<int>(radiosity::SolverMethod::Clustered) == vtkLightTaggedRadiosity::CLUSTERED,
+  "vtkLightTaggedRadiosity::SolverMethods must number the methods as radiosity::SolverMethod does");
+static_assert(static_cast<int>(radiosity::FormFactorMethod::Analytic) == vtkLightTaggedRadiosity::ANALYTIC &&
+    static_cast<int>(radiosity::FormFactorMethod::Hemicube) == vtkLightTaggedRadiosity::HEMICUBE &&
+    static_cast<int>(radiosity::FormFactorMethod::MonteCarlo) == vtkLightTaggedRadiosity::MONTE_CARLO,
+  "vtkLightTaggedRadiosity::FormFactorMethods must number the methods as radiosity::FormFactorMethod does");
+
 radiosity::SolverOptions vtkLightTaggedRadiosity::Options(int threads, const radiosity::ProcessGroup& group) const
 {
   radiosity::SolverOptions options;

@@ -2,6 +2,7 @@
 // spheres as their triangles grow, face clusters on and off. One scene a run (the driver,
 // polygons_bench.py, sweeps sizes and draws the figure); prints one CSV row.
 #include "BenchClock.h"
+#include "BenchMethods.h"
 #include "CurvedRoom.h"
 #include "ProbeReference.h"
 #include "Solve/LightSolutions.h"
@@ -17,14 +18,6 @@
 using namespace radiosity;
 using namespace radiosity_bench;
 using namespace radiosity_scenes;
-
-namespace
-{
-const char* MethodName(SolverMethod m)
-{
-  return m == SolverMethod::Hierarchical ? "hierarchical" : m == SolverMethod::Clustered ? "clustered" : "progressive";
-}
-} // namespace
 
 int main(int argc, char** argv)
 {
@@ -54,10 +47,7 @@ int main(int argc, char** argv)
     else if (flag == "--combined") combined = std::atoi(value) != 0;
     else if (flag == "--reference") referencePath = value;
     else if (flag == "--method")
-      method = std::strcmp(value, "hierarchical") == 0 ? SolverMethod::Hierarchical
-        : std::strcmp(value, "clustered") == 0        ? SolverMethod::Clustered
-        : std::strcmp(value, "progressive") == 0      ? SolverMethod::ProgressiveRefinement
-                                                      : SolverMethod::Auto;
+      method = MethodNamed(value);
   }
   const double t0 = Now();
   SceneMesh mesh;
@@ -101,7 +91,7 @@ int main(int argc, char** argv)
   }
   std::printf("triangles,elements,patches,lights,cluster_angle,method,shots,converged,rays,patch_links,element_links,link_mb,mesh_s,prepare_s,solve_s,total_s,peak_mb,error_pct,worst_light_pct,cluster_links\n");
   std::printf("%d,%d,%zu,%d,%g,%s,%d,%d,%lld,%lld,%lld,%.1f,%.2f,%.2f,%.2f,%.2f,%.0f,%.2f,%.2f,%lld\n", inputTriangles, mesh.NumberOfPolygons(),
-    solver.Geometry().PatchElements.size(), lamps, cone, MethodName(st.Method), st.Shots, st.Converged ? 1 : 0,
+    solver.Geometry().PatchElements.size(), lamps, cone, ShortMethodName(st.Method).c_str(), st.Shots, st.Converged ? 1 : 0,
     st.RayCount, st.PatchLinks, st.ElementLinks, st.LinkBytes / 1e6, t1 - t0, t2 - t1, t3 - t2, t3 - t0, PeakMemoryMB(),
     100 * probeError, 100 * worst, st.VolumeLinks);
   if (compare)
@@ -120,7 +110,7 @@ int main(int argc, char** argv)
         sum += (b.x + b.y + b.z) * g.Area[e];
       }
       std::printf("light %d: %s differs from progressive refinement by %.3f %% (mean, area-weighted)\n", m,
-        MethodName(st.Method), 100 * diff / sum);
+        ShortMethodName(st.Method).c_str(), 100 * diff / sum);
     }
   }
   return 0;

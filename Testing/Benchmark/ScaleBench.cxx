@@ -2,6 +2,7 @@
 // room grows from 10k to 1M elements, k = 8 lights. Prints ratios measured in one run and
 // writes a CSV; it never judges them.
 #include "BenchClock.h"
+#include "BenchMethods.h"
 #include "ProbeReference.h"
 #include "FurnishedRoom.h"
 #include "Geometry/PointAverages.h"
@@ -59,11 +60,6 @@ Run SolveRoom(const RadiositySolver& solver, const SceneMesh& mesh, int lights, 
   return run;
 }
 
-const char* Name(SolverMethod m)
-{
-  return m == SolverMethod::Hierarchical ? "hierarchical" : "progressive";
-}
-
 struct Csv
 {
   std::ostringstream Text;
@@ -72,7 +68,7 @@ struct Csv
     double worst)
   {
     const SolverStatistics& s = run.Result.Statistics;
-    Text << mesh.NumberOfPolygons() << ',' << patches << ',' << Name(s.Method) << ',' << mode << ',' << lights
+    Text << mesh.NumberOfPolygons() << ',' << patches << ',' << ShortMethodName(s.Method) << ',' << mode << ',' << lights
          << ',' << run.Seconds << ',' << s.Shots << ',' << (s.Converged ? 1 : 0) << ',' << run.MemoryMB << ','
          << s.LinkBytes / 1048576.0 << ',' << mean << ',' << worst << '\n';
   }
