@@ -119,8 +119,10 @@ std::vector<std::string> SettingRow(const std::string& name, const LightSetting&
     std::snprintf(text, sizeof(text), "%.9g", value);
     return std::string(text);
   };
-  return { name, number(setting.Color.x), number(setting.Color.y), number(setting.Color.z),
-    number(setting.Intensity), setting.Enabled ? "1" : "0" };
+  std::vector<std::string> row = { name, number(setting.Color.x), number(setting.Color.y),
+    number(setting.Color.z), number(setting.Intensity), setting.Enabled ? "1" : "0" };
+  static_assert(kSettingRowCells == 6, "SettingRow writes the six cells ParseSettingRows reads");
+  return row;
 }
 
 bool ParseOnOff(const std::string& text, bool& on)
@@ -152,7 +154,7 @@ std::vector<std::string> SettingInputRow(const std::string& name, const LightSet
 std::vector<NamedSetting> ParseSettingRows(const std::vector<std::string>& flat)
 {
   std::vector<NamedSetting> rows;
-  for (size_t i = 0; i + 6 <= flat.size(); i += 6)
+  for (size_t i = 0; i + kSettingRowCells <= flat.size(); i += kSettingRowCells)
   {
     NamedSetting row;
     row.Name = flat[i];

@@ -48,8 +48,12 @@ struct NamedSetting
   LightSetting Setting;
 };
 
-/// The rows of a flat LightSettings list (six strings a light, as SettingRow and
-/// SettingInputRow write them): a color or intensity that is not a finite number ('nan')
+/// The strings of one light's row: name, red, green, blue, intensity, enabled. ParaView's
+/// LightSettings property (LightRig.xml), its panel and its tests count the same.
+constexpr int kSettingRowCells = 6;
+
+/// The rows of a flat LightSettings list (kSettingRowCells strings a light, as SettingRow
+/// and SettingInputRow write them): a color or intensity that is not a finite number ('nan')
 /// is left unset; `enabled` as ParseOnOff reads it. A row with an empty name or an
 /// unreadable `enabled`, and a trailing part-row, are skipped.
 std::vector<NamedSetting> ParseSettingRows(const std::vector<std::string>& flat);
