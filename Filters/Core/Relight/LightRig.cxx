@@ -119,10 +119,8 @@ std::vector<std::string> SettingRow(const std::string& name, const LightSetting&
     std::snprintf(text, sizeof(text), "%.9g", value);
     return std::string(text);
   };
-  std::vector<std::string> row = { name, number(setting.Color.x), number(setting.Color.y),
-    number(setting.Color.z), number(setting.Intensity), setting.Enabled ? "1" : "0" };
-  static_assert(kSettingRowCells == 6, "SettingRow writes the six cells ParseSettingRows reads");
-  return row;
+  return { name, number(setting.Color.x), number(setting.Color.y), number(setting.Color.z),
+    number(setting.Intensity), setting.Enabled ? "1" : "0" };
 }
 
 bool ParseOnOff(const std::string& text, bool& on)
