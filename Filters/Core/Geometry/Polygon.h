@@ -31,7 +31,7 @@ struct Bounds
 /// offset from the scene's centre, not the origin: far from the origin the normal's
 /// round-off times the distance would split one floor into many keys. Planes closer than a
 /// step can still round apart: a caller that must join them probes the neighbouring keys
-/// (the mesher's surfaces do; the shooters' blocker groups need not).
+/// (the mesher's surfaces use CoplanarGroups instead; the shooters' blocker groups need not).
 std::array<long long, 4> PlaneKey(const Vec3& unitNormal, double offset, double normalStep, double offsetStep);
 
 /// A point as a hash key: each coordinate in steps of `step` (welding equal points).
@@ -59,6 +59,17 @@ inline double PolygonArea(const Vec3* loop, int count)
 }
 
 Vec3 PolygonCentroid(const Vec3* loop, int count);
+
+/// The length of the closed loop's edges.
+inline double Perimeter(const std::vector<Vec3>& loop)
+{
+  double length = 0;
+  for (size_t k = 0; k < loop.size(); ++k)
+  {
+    length += Norm(loop[(k + 1) % loop.size()] - loop[k]);
+  }
+  return length;
+}
 
 /// How far the loop's farthest corner is off its (Newell) plane through its centroid, a
 /// length; `longest`, if given, receives its longest edge.

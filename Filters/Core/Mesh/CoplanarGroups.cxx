@@ -146,28 +146,28 @@ CoplanarGroups Numbered(const std::vector<int>& group, const std::vector<int>& f
 }
 } // namespace
 
-PolygonPlane PlaneOf(const std::vector<Vec3>& loop, const Vec3& normal, double noise, int key)
+PolygonPlane PlaneOf(const std::vector<Vec3>& loop, double noise, int key)
 {
   const int count = static_cast<int>(loop.size());
-  double perimeter = 0;
-  for (int v = 0; v < count; ++v)
-  {
-    perimeter += Norm(loop[(v + 1) % count] - loop[v]);
-  }
+  const double perimeter = Perimeter(loop);
   // Newell's vector is 2 A n; moving each corner by `noise` changes it by about noise times
   // the perimeter, so the unit normal turns by about noise P / (2 A), taken twice for margin.
-  const double area = PolygonArea(loop.data(), count);
+  const Vec3 newell = NewellVector(loop.data(), count);
+  const double area = 0.5 * Norm(newell);
   const double turn = area > 0 && std::isfinite(noise * perimeter / area) ? noise * perimeter / area : kMostTolerance;
-  return { normal, PolygonCentroid(loop.data(), count), std::clamp(turn, kLeastTolerance, kMostTolerance), key };
+  return { Normalized(newell), PolygonCentroid(loop.data(), count), std::clamp(turn, kLeastTolerance, kMostTolerance), key };
 }
 
 CoplanarGroups GroupCoplanar(const std::vector<PolygonPlane>& planes, double offsetTolerance, const Vec3& centre)
 {
   const int count = static_cast<int>(planes.size());
-  std::vector<int> order(count);
+  std::vector<int> order(count), rankOf(count);
   std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(),
-    [&](int a, int b) { return ToleranceClass(planes[a].Tolerance) < ToleranceClass(planes[b].Tolerance); });
+  for (int i = 0; i < count; ++i)
+  {
+    rankOf[i] = ToleranceClass(planes[i].Tolerance);
+  }
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return rankOf[a] < rankOf[b]; });
   Grouping grouping{ planes, offsetTolerance, centre, 0, 0, {}, {} };
   for (const PolygonPlane& p : planes)
   {
@@ -179,10 +179,10 @@ CoplanarGroups GroupCoplanar(const std::vector<PolygonPlane>& planes, double off
     // Normal cells as wide as this class needs (a joining pair's normals are at most its
     // widest tolerance and an earlier founder's apart): one sliver capped at the most
     // tolerance would otherwise widen the cells of every precise polygon.
-    const int rank = ToleranceClass(planes[order[begin]].Tolerance);
+    const int rank = rankOf[order[begin]];
     int end = begin;
     double widest = kLeastTolerance;
-    for (; end < count && ToleranceClass(planes[order[end]].Tolerance) == rank; ++end)
+    for (; end < count && rankOf[order[end]] == rank; ++end)
     {
       widest = std::max(widest, planes[order[end]].Tolerance);
     }

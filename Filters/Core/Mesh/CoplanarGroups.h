@@ -23,8 +23,9 @@ struct PolygonPlane
   int Key = 0;          ///< only polygons of one key share a group (the caller's material)
 };
 
-/// The plane of `loop` (unit `normal`) whose corners may each be `noise` off their places.
-PolygonPlane PlaneOf(const std::vector<Vec3>& loop, const Vec3& normal, double noise, int key);
+/// The plane of `loop` (its normal by Newell's rule) whose corners may each be `noise` off
+/// their places.
+PolygonPlane PlaneOf(const std::vector<Vec3>& loop, double noise, int key);
 
 struct CoplanarGroups
 {

@@ -302,11 +302,17 @@ double CountLattice(const std::vector<Vec3>& loop, double patchSize, double elem
   return total;
 }
 
-/// How far the points may be off their true places: float rounding of the scene's span,
-/// or the coarser step of float input far from the origin.
+/// `steps` float roundings of a scene `span` across, or the coarser step of float input
+/// far from the origin.
+double SpanNoise(double span, double pointQuantum, int steps = 1)
+{
+  return std::max(steps * FloatNoise(span), pointQuantum);
+}
+
+/// How far the points may be off their true places.
 double MeshNoise(const std::vector<Vec3>& points, double pointQuantum)
 {
-  return std::max(FloatNoise(Span(points)), pointQuantum);
+  return SpanNoise(Span(points), pointQuantum);
 }
 
 /// How flat a triangle pair must be to join: within a few float steps of the scene's span,
@@ -315,9 +321,9 @@ double MeshNoise(const std::vector<Vec3>& points, double pointQuantum)
 /// export pair there too, but also joined a low-poly bull's folds of up to 5 mm at 10 km
 /// (1,660 pairs against 95 at the origin), and the flattened quads, pushed behind their
 /// neighbours, rendered as dark specks. One step: 1,043 pairs and no specks.
-double PairFlatness(const std::vector<Vec3>& points, double pointQuantum)
+double PairFlatness(double span, double pointQuantum)
 {
-  return std::max(4 * FloatNoise(Span(points)), pointQuantum);
+  return SpanNoise(span, pointQuantum, 4);
 }
 
 /// CountElements with the contacts found once (a budget's search counts many times).
@@ -457,7 +463,8 @@ PairedPolygons Paired(const std::vector<Vec3>& points, const std::vector<int>& o
 {
   PairedPolygons polygons = WithoutCopiesAndOverlaps(points, offsets, connectivity, surfaceKey, options, copies, overlaps);
   const double tolerance = CornerTolerance(points);
-  const double noise = MeshNoise(points, options.PointQuantum);
+  const double span = Span(points);
+  const double noise = SpanNoise(span, options.PointQuantum);
   const std::vector<Vec3>& at = PointsOf(polygons, points);
   if (!options.MergeTriangles)
   {
@@ -468,7 +475,7 @@ PairedPolygons Paired(const std::vector<Vec3>& points, const std::vector<int>& o
   {
     keys[i] = polygons.Source[i] < static_cast<int>(surfaceKey.size()) ? surfaceKey[polygons.Source[i]] : 0;
   }
-  PairedPolygons merged = MergeTrianglePairs(at, polygons.Offsets, polygons.Connectivity, keys, tolerance, PairFlatness(points, options.PointQuantum));
+  PairedPolygons merged = MergeTrianglePairs(at, polygons.Offsets, polygons.Connectivity, keys, tolerance, PairFlatness(span, options.PointQuantum));
   for (int& source : merged.Source)
   {
     source = polygons.Source[source]; // back to the input's numbering
@@ -661,6 +668,10 @@ std::string DistinctCorners(const std::vector<Vec3>& points, const std::vector<i
   {
     loop.pop_back();
   }
+  if (offsets[i + 1] - offsets[i] >= 3 && loop.size() >= 3)
+  {
+    return std::string(); // the usual case: no error text to build
+  }
   std::ostringstream err;
   if (offsets[i + 1] - offsets[i] < 3)
   {
@@ -723,8 +734,7 @@ std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& of
     {
       return bad;
     }
-    planes.push_back(PlaneOf(loop, Normalized(NewellVector(loop.data(), static_cast<int>(loop.size()))), noise,
-      surfaceKey[source[i]]));
+    planes.push_back(PlaneOf(loop, noise, surfaceKey[source[i]]));
   }
   SurfaceAssembly surfaces(quantum, noise, Bounds(points).Centre(), options, planes);
   for (int i = 0; i < count; ++i)

@@ -37,11 +37,7 @@ double Width(const Loop& loop)
   {
     return 0;
   }
-  double perimeter = 0;
-  for (size_t k = 0; k < loop.size(); ++k)
-  {
-    perimeter += Norm(loop[(k + 1) % loop.size()] - loop[k]);
-  }
+  const double perimeter = Perimeter(loop);
   return perimeter > 0 ? 2 * PolygonArea(loop.data(), static_cast<int>(loop.size())) / perimeter : 0;
 }
 

@@ -58,7 +58,8 @@ std::vector<int> JoinedQuad(const TriangleEdges& edges, int t, int e, int u, dou
   }
   // A length, not an angle between the triangles' normals: float noise of a far scene
   // turns a small triangle's normal by noise / size, which no fixed angle would allow for.
-  const Vec3 nt = NewellVector(std::vector<Vec3>{ loop[0], loop[2], loop[3] }.data(), 3);
+  const Vec3 triangle[3] = { loop[0], loop[2], loop[3] };
+  const Vec3 nt = NewellVector(triangle, 3);
   const Vec3 nu = Cross(edges.Points[b[1]] - edges.Points[b[0]], edges.Points[b[2]] - edges.Points[b[0]]);
   const bool flat = Dot(nt, nu) > 0 && WarpOffset(loop) <= flatness;
   return flat && IsConvex(loop.data(), 4) ? quad : std::vector<int>();
@@ -69,6 +70,7 @@ PairedPolygons MergeTrianglePairs(const std::vector<Vec3>& points, const std::ve
   const std::vector<int>& connectivity, const std::vector<int>& surfaceKey, double tolerance, double flatness)
 {
   const int count = static_cast<int>(offsets.size()) - 1;
+  const double joinFlatness = std::max(tolerance, flatness);
   TriangleEdges edges{ points, offsets, connectivity, std::max(tolerance, 1e-300), {} };
   for (int t = 0; t < count; ++t)
   {
@@ -107,7 +109,7 @@ PairedPolygons MergeTrianglePairs(const std::vector<Vec3>& points, const std::ve
           {
             continue;
           }
-          const std::vector<int> quad = JoinedQuad(edges, t, e, u, std::max(tolerance, flatness));
+          const std::vector<int> quad = JoinedQuad(edges, t, e, u, joinFlatness);
           if (!quad.empty())
           {
             loop = quad;

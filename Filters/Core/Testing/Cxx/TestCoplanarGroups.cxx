@@ -119,11 +119,11 @@ TEST(CoplanarGroups, APolygonTrustsItsNormalAsFarAsItsNoiseAllows)
   {
     p = p * 10.0;
   }
-  const PolygonPlane small = PlaneOf(square, { 0, 1, 0 }, 1e-3, 0), big = PlaneOf(large, { 0, 1, 0 }, 1e-3, 0);
+  const PolygonPlane small = PlaneOf(square, 1e-3, 0), big = PlaneOf(large, 1e-3, 0);
   EXPECT_NEAR(small.Tolerance, 4e-3, 1e-12);
   EXPECT_NEAR(big.Tolerance, 4e-4, 1e-12);
   const std::vector<Vec3> sliver = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 0, 1e-6 } };
-  EXPECT_EQ(PlaneOf(sliver, { 0, 1, 0 }, 1e-3, 0).Tolerance, 1e-2);
+  EXPECT_EQ(PlaneOf(sliver, 1e-3, 0).Tolerance, 1e-2);
 }
 
 TEST(TrianglePairs, APairFlatWithinTheNoiseJoinsAndAFoldedOneDoesNot)
