@@ -204,6 +204,13 @@ bool vtkRadiosityEXRWriter::RenderImage(vtkFloatArray* rgb)
   return true;
 }
 
+int vtkRadiosityEXRWriter::Write()
+{
+  // Where it went through, WriteData has set the code.
+  this->SetErrorCode(vtkRadiosityAdapter::UpdateForWriting(this) ? this->GetErrorCode() : vtkErrorCode::UserError);
+  return this->GetErrorCode() == vtkErrorCode::NoError;
+}
+
 void vtkRadiosityEXRWriter::WriteData()
 {
   if (!this->FileName || !*this->FileName)

@@ -91,6 +91,13 @@ public:
    */
   int GetRaySceneBuilds() const;
 
+  /**
+   * Writes the file, as vtkWriter does, but returns 0 with an error where a filter upstream
+   * failed: the update stops there and this writer never runs (vtkWriter would return 1
+   * with no file written).
+   */
+  int Write() override;
+
 protected:
   vtkRadiosityEXRWriter();
   ~vtkRadiosityEXRWriter() override;

@@ -277,6 +277,13 @@ std::string WriteBytes(const char* path, const std::string& bytes)
 }
 }
 
+int vtkRadiosityGLTFWriter::Write()
+{
+  // Where it went through, WriteData has set the code.
+  this->SetErrorCode(vtkRadiosityAdapter::UpdateForWriting(this) ? this->GetErrorCode() : vtkErrorCode::UserError);
+  return this->GetErrorCode() == vtkErrorCode::NoError;
+}
+
 void vtkRadiosityGLTFWriter::WriteData()
 {
   vtkPolyData* input = vtkPolyData::SafeDownCast(this->GetInput());

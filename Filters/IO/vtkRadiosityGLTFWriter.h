@@ -45,6 +45,13 @@ public:
   vtkGetMacro(Exposure, double);
   ///@}
 
+  /**
+   * Writes the file, as vtkWriter does, but returns 0 with an error where a filter upstream
+   * failed: the update stops there and this writer never runs (vtkWriter would return 1
+   * with no file written).
+   */
+  int Write() override;
+
 protected:
   vtkRadiosityGLTFWriter();
   ~vtkRadiosityGLTFWriter() override;

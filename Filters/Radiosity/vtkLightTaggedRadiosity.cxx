@@ -196,7 +196,7 @@ int vtkLightTaggedRadiosity::RequestData(
       [this, parallel](vtkPolyData* whole, vtkPolyData* solved, vtkTable* table) {
         return this->Solve(whole, solved, table, parallel);
       });
-  });
+  }, parallel);
 }
 
 // Options() converts SolverMethod and FormFactorMethod by a cast: the filter's numbers are the core's.

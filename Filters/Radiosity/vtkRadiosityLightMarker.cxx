@@ -425,8 +425,9 @@ int vtkRadiosityLightMarker::RequestData(
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  vtkMultiProcessController* parallel = vtkRadiosityPieces::Parallel(outputVector->GetInformationObject(0));
   return vtkRadiosityAdapter::Guarded(this, input, output, [&]() -> int {
-    if (input->GetNumberOfCells() == 0 && vtkRadiosityPieces::Parallel(outputVector->GetInformationObject(0)))
+    if (input->GetNumberOfCells() == 0 && parallel)
     {
       output->ShallowCopy(input); // this rank's piece of the scene is empty: nothing to mark
       return 1;
@@ -484,7 +485,7 @@ int vtkRadiosityLightMarker::RequestData(
       Marked(count, this->LightName ? this->LightName : "Light", this->Chosen->AreaLights.size()).c_str(),
       static_cast<int>(lights.Names.size()), lights.Names.size() == 1 ? "" : "s");
     return 1;
-  });
+  }, parallel);
 }
 
 void vtkRadiosityLightMarker::PrintSelf(ostream& os, vtkIndent indent)

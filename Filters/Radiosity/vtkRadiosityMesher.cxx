@@ -474,6 +474,17 @@ void WriteMeshed(vtkPolyData* output, vtkPolyData* input, const radiosity::Meshe
 }
 }
 
+void vtkRadiosityMesher::ChooseSizes(vtkDataSet* given, bool parallel, const std::function<double()>& scenePatch)
+{
+  if (!parallel)
+  {
+    this->SuggestFor(given); // done already by the information pass for this input (the usual case)
+  }
+  const bool suggested = !parallel && given && given->GetMTime() == this->SuggestedForInput && this->SuggestedPatchSize > 0;
+  this->ResolveSizes(this->PatchSize > 0 ? 0.0 : suggested ? this->SuggestedPatchSize : scenePatch());
+  this->MesherPatchSize = this->MesherElementSize = 0.0; // until this run has meshed
+}
+
 int vtkRadiosityMesher::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -501,17 +512,8 @@ int vtkRadiosityMesher::RequestData(
       parallel ? vtkRadiosityPieces::MaxOverRanks(parallel, OwnQuantum(input, upstream)) : 0.0,
       parallel && gathered.HasSurfaces ? &gathered.Surfaces : nullptr };
     // Sizes from the scene are taken from all of it, so every rank meshes alike.
-    // The information pass suggested for this very input already (the usual case).
-    vtkDataSet* given = vtkDataSet::GetData(inputVector[0]);
-    if (!parallel)
-    {
-      this->SuggestFor(given);
-    }
-    const bool suggested = !parallel && given && given->GetMTime() == this->SuggestedForInput && this->SuggestedPatchSize > 0;
-    this->ResolveSizes(this->PatchSize > 0 ? 0.0
-        : suggested                         ? this->SuggestedPatchSize
-                                            : SuggestedPatch(parallel ? &whole : nullptr, input));
-    this->MesherPatchSize = this->MesherElementSize = 0.0; // until this run has meshed
+    this->ChooseSizes(vtkDataSet::GetData(inputVector[0]), parallel != nullptr,
+      [&]() { return SuggestedPatch(parallel ? &whole : nullptr, input); });
     const double elementSize = parallel && this->MaximumElements > 0
       ? ElementSizeEverywhere(this, parallel, input, wholeScene, warnings)
       : this->ElementSizeInUse;
@@ -545,5 +547,5 @@ int vtkRadiosityMesher::RequestData(
     this->MesherPatchSize = this->PatchSizeInUse;
     this->MesherElementSize = meshed.ElementSize;
     return 1;
-  });
+  }, parallel);
 }

@@ -23,7 +23,8 @@
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkRadiosityFiltersModule.h" // for export macro
 
-#include <memory> // for std::unique_ptr
+#include <functional> // for std::function
+#include <memory>     // for std::unique_ptr
 
 class VTKRADIOSITYFILTERS_EXPORT vtkRadiosityMesher : public vtkPolyDataAlgorithm
 {
@@ -138,6 +139,9 @@ private:
   void SuggestFor(vtkDataSet* given);
   /// PatchSizeInUse and ElementSizeInUse, given the scene's suggested patch size (0: none).
   void ResolveSizes(double suggestedPatch);
+  /// The sizes for this run: the information pass's suggestion for `given` where it made
+  /// one (serial runs), else `scenePatch()`, the scene's (on MPI, the whole scene's).
+  void ChooseSizes(vtkDataSet* given, bool parallel, const std::function<double()>& scenePatch);
   vtkIdType MaximumElements = 0;
   bool MergeTriangles = true;
   bool SharePatches = true;

@@ -504,7 +504,7 @@ int vtkRadiosityRelight::RequestData(
         output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);
       }
       return ok;
-    });
+    }, parallel);
   }
   return vtkRadiosityAdapter::Guarded(this, input, output, [&]() -> int {
     if (input->GetNumberOfCells() == 0 && parallel)
@@ -513,7 +513,7 @@ int vtkRadiosityRelight::RequestData(
       return 1;
     }
     return this->Relight(input, movers, dynamic, time, output);
-  });
+  }, parallel);
 }
 
 namespace

@@ -7,12 +7,16 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkIntArray.h"
+#include "vtkMultiProcessController.h"
+#include "vtkCommunicator.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
 
 #include <algorithm>
@@ -256,30 +260,47 @@ std::string Caught(const std::function<std::string()>& work)
 }
 
 int Guarded(vtkAlgorithm* self, vtkDataObject* input, vtkPolyData* output,
-  const std::function<int()>& work)
+  const std::function<int()>& work, vtkMultiProcessController* ranks)
 {
-  if (FailedUpstream(input))
+  int done = 0;
+  if (!FailedUpstream(input))
+  {
+    const std::string failure = Caught([&]() {
+      done = work() != 0 ? 1 : 0;
+      return std::string();
+    });
+    if (!failure.empty())
+    {
+      vtkErrorWithObjectMacro(self, << "Failed: " << failure << ".");
+    }
+  }
+  if (ranks)
+  {
+    int mine = done;
+    ranks->AllReduce(&mine, &done, 1, vtkCommunicator::MIN_OP);
+  }
+  if (!done)
   {
     MarkFailed(output);
-    return 1;
   }
-  bool done = false;
-  const std::string failure = Caught([&]() {
-    done = work() != 0;
-    return std::string();
-  });
-  if (done)
+  return done;
+}
+
+bool UpdateForWriting(vtkAlgorithm* writer)
+{
+  if (writer->GetNumberOfInputConnections(0) < 1)
   {
-    return 1;
+    vtkErrorWithObjectMacro(writer, << "Cannot write: no input (SetInputConnection or SetInputData first).");
+    return false;
   }
-  if (!failure.empty())
+  writer->Modified(); // a writer writes each time it is asked, changed or not
+  auto* streaming = vtkStreamingDemandDrivenPipeline::SafeDownCast(writer->GetExecutive());
+  const int updated = streaming ? streaming->UpdateWholeExtent() : writer->GetExecutive()->Update();
+  if (!updated)
   {
-    vtkErrorWithObjectMacro(self, << "Failed: " << failure << ".");
+    vtkErrorWithObjectMacro(writer, << "Cannot write: a filter upstream failed (see its error).");
   }
-  // The filter has said what went wrong; succeeding with an empty, marked output keeps
-  // the executive from adding its own request dump to the message.
-  MarkFailed(output);
-  return 1;
+  return updated != 0;
 }
 
 void WarningList::Add(vtkObject* self, const std::string& message)

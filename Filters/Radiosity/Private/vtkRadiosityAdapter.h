@@ -19,6 +19,7 @@ class vtkAlgorithm;
 class vtkDataArray;
 class vtkDataObject;
 class vtkFieldData;
+class vtkMultiProcessController;
 class vtkObject;
 class vtkPolyData;
 
@@ -71,12 +72,22 @@ bool FailedUpstream(vtkDataObject* input);
 /// where an exception escaping one rank would leave the others waiting.
 std::string Caught(const std::function<std::string()>& work);
 
-/// Runs a filter's work so that no C++ exception reaches Python or ParaView. Running out
-/// of memory or any other exception becomes the filter's error. When the work fails (it
-/// reports its own error and returns 0), `output` (may be null) is emptied and marked
-/// with FailureMarker. An input so marked skips the work silently. Always returns 1.
+/// Runs a filter's work so that no C++ exception reaches Python or ParaView, and returns
+/// what RequestData returns: 1, or 0 when the work failed, as VTK filters do (the executive
+/// then stops the update, so the filters downstream do not run). Running out of memory or
+/// any other exception becomes the filter's error. On failure `output` (may be null) is
+/// emptied and marked with FailureMarker. An input so marked (set directly from a failed
+/// output) fails without a message of its own. With `ranks` (ParaView's MPI server) the
+/// ranks agree: one rank's failure fails them all, so none runs the filters downstream
+/// into a collective that the others never reach.
 int Guarded(vtkAlgorithm* self, vtkDataObject* input, vtkPolyData* output,
-  const std::function<int()>& work);
+  const std::function<int()>& work, vtkMultiProcessController* ranks = nullptr);
+
+/// Brings a writer's input up to date as vtkWriter::Write does (the whole extent, the
+/// writer's WriteData run) and says whether the update went through: false, with the
+/// writer's error said, where it has no input or a filter upstream failed and stopped the
+/// update before the writer.
+bool UpdateForWriting(vtkAlgorithm* writer);
 
 /// The warnings of one filter run: each goes to the output window as usual and is kept,
 /// so that the output lists them in its field array Warnings (ParaView's Information

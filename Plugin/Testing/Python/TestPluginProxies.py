@@ -126,20 +126,25 @@ def check_relit_schedule(view, display):
     view.ViewTime = 0.0
 
 
-def check_failure_empties_display(view, solver, display):
-    """A solve that fails empties the picture downstream. The filters succeed with an
-    empty, marked output; returning 0, as VTK filters usually do, stops the update, and
-    ParaView keeps showing the old relit scene (measured: 1,389 points still shown)."""
+def check_failed_solve(view, solver, display):
+    """A solve that fails returns 0, as VTK filters do: its own output is empty, and the
+    update stops there, so the relight downstream keeps its last picture (as after any
+    failed filter in ParaView); setting the solver right brings the picture back."""
     before = display.GetRepresentedDataInformation().GetNumberOfPoints()
     threshold = solver.ConvergenceThreshold
     solver.ConvergenceThreshold = float("nan")
     Render(view)
-    after = display.GetRepresentedDataInformation().GetNumberOfPoints()
-    check(before > 0 and after == 0,
-          "after a failed solve the relight's display shows %d points (%d before), expected none" % (after, before))
-    print("a failed solve empties the display downstream: %d -> %d points" % (before, after))
+    solver.UpdatePipeline()
+    failed = solver.GetDataInformation().GetNumberOfPoints()
+    during = display.GetRepresentedDataInformation().GetNumberOfPoints()
+    check(before > 0 and failed == 0,
+          "after a failed solve the solver's output has %d points (the relight showed %d), expected none" % (failed, before))
     solver.ConvergenceThreshold = threshold
     Render(view)
+    after = display.GetRepresentedDataInformation().GetNumberOfPoints()
+    check(after == before, "a solve set right shows the relit scene again: %d points, %d before" % (after, before))
+    print("a failed solve leaves an empty output (the relight's display: %d points); set right, it shows %d again"
+          % (during, after))
 
 
 def write_room_obj():
@@ -418,7 +423,7 @@ def main(argv):
           % (difference, shown.max()))
     if screenshot:
         SaveScreenshot(screenshot, view, ImageResolution=[600, 600])
-    check_failure_empties_display(view, solver, display)
+    check_failed_solve(view, solver, display)
     # Release the view before the interpreter exits: with an X/GLX build,
     # a render window still alive at exit can abort with GLXBadContext.
     Delete(display)

@@ -162,9 +162,9 @@ f.Update()
 if not np.array_equal(before, relight.cell_array(original, "Reflectance"), equal_nan=True):
     failures.append("input modified")
 
-# A failed filter says what went wrong once: no executive request dump, and the filters
-# downstream stay quiet (their input is the marked, empty output) instead of adding
-# "no polygons" errors of their own.
+# A failed filter says what went wrong once and returns 0, as VTK filters do: the update
+# stops there (the executive reports that one failure), and the filters downstream do not
+# run, so they add no "no polygons" errors of their own.
 window = vtkStringOutputWindow()
 previous = vtkOutputWindow.GetInstance()
 vtkOutputWindow.SetInstance(window)
@@ -173,14 +173,32 @@ chain = [relight.vtkRadiosityMesher(), solver(), relight.vtkRadiosityRelight()]
 chain[0].SetInputData(broken)
 for upstream, downstream in zip(chain, chain[1:]):
     downstream.SetInputConnection(upstream.GetOutputPort())
-chain[-1].Update()
+updated = chain[-1].GetExecutive().Update()
 vtkOutputWindow.SetInstance(previous)
 text = window.GetOutput()
-errors = text.count("ERROR")
-print(f"{'ok  ' if errors == 1 else 'FAIL'} a broken scene through three filters: {errors} error(s)")
-if errors != 1 or "returned failure" in text or chain[-1].GetOutput().GetNumberOfCells() != 0:
+own = text.count("Cannot ")
+dumps = [line for line in text.splitlines() if "returned failure" in line]
+print(f"{'ok  ' if own == 1 and len(dumps) == 1 else 'FAIL'} a broken scene through three filters: "
+      f"update {updated}, {own} error(s) of the filters, {len(dumps)} executive report(s)")
+if updated != 0 or own != 1 or len(dumps) != 1 or "vtkRadiosityMesher" not in dumps[0] or \
+        chain[0].GetOutput().GetNumberOfCells() != 0 or \
+        chain[0].GetOutput().GetFieldData().GetArray("RadiosityFailed") is None:
     failures.append("one clean error for a failed pipeline")
     print(text)
+
+# A writer below the failed filter never runs; vtkWriter.Write() would then return 1 with
+# no file. Ours return 0 and say why.
+for writer, name in ((relight.vtkRadiosityGLTFWriter(), "broken.glb"), (relight.vtkRadiosityEXRWriter(), "broken.exr")):
+    path = os.path.join(tempfile.mkdtemp(), name)
+    writer.SetInputConnection(chain[-1].GetOutputPort())
+    writer.SetFileName(path)
+    catcher = ErrorCatcher(writer)
+    written = writer.Write()
+    said = catcher.first_error() or ""
+    print(f"{'ok  ' if written == 0 and 'upstream failed' in said else 'FAIL'} {name} below a failed filter: "
+          f"Write() {written}, file {os.path.exists(path)}, {said!r}")
+    if written != 0 or os.path.exists(path) or "upstream failed" not in said:
+        failures.append(f"{name} below a failed filter")
 
 # ElementSize above PatchSize: elements are patch-sized, said so, and reported as they are
 # (MesherElementSize said 1.0 while 0.1 m elements made a 100 times slower solve).
