@@ -16,19 +16,6 @@
 #include <algorithm>
 #include <cmath>
 
-namespace
-{
-constexpr int kPerLamp = 13;
-/// Table columns and the property elements each holds: name, shape, centre, facing, size,
-/// emission.
-constexpr int kFirst[] = { 0, 1, 2, 5, 8, 10, 13 };
-
-int Count(int column)
-{
-  return kFirst[column + 1] - kFirst[column];
-}
-}
-
 pqRadiosityAreaLightsWidget::pqRadiosityAreaLightsWidget(vtkSMProxy* proxy, vtkSMProperty* property, QWidget* parent)
   : Superclass(proxy,
       { "Area lights (lengths in the scene's units):", "AreaLightsTable",
@@ -36,7 +23,9 @@ pqRadiosityAreaLightsWidget::pqRadiosityAreaLightsWidget(vtkSMProxy* proxy, vtkS
         { "The light's name (a light of this name gains the lamp)", "Rectangle, or Disk (its width is the diameter)",
           "Centre of the lamp", "The direction it emits towards", "Width and height (a disk: diameter, ignored)",
           "Emitted radiosity per color channel, W/m²" },
-        "Add Lamp", "AddLamp", "RemoveLamps", kPerLamp },
+        "Add Lamp", "AddLamp", "RemoveLamps",
+        // the elements of a lamp: name, shape, centre, facing, size, emission
+        { 0, 1, 2, 5, 8, 10, 13 } },
       parent)
 {
   this->linkRows(property);
@@ -45,7 +34,7 @@ pqRadiosityAreaLightsWidget::pqRadiosityAreaLightsWidget(vtkSMProxy* proxy, vtkS
 
 void pqRadiosityAreaLightsWidget::fillCell(int row, int column)
 {
-  const QStringList part = this->Rows.mid(row * kPerLamp + kFirst[column], Count(column));
+  const QStringList part = this->cell(row, column);
   if (column != 1)
   {
     this->Table->setItem(row, column, new QTableWidgetItem(part.join(", ")));
@@ -59,7 +48,7 @@ void pqRadiosityAreaLightsWidget::fillCell(int row, int column)
     {
       if (this->Table->cellWidget(r, 1) == shape)
       {
-        this->Rows[r * kPerLamp + 1] = QString::number(index);
+        this->Rows[this->at(r, 1)] = QString::number(index);
         Q_EMIT this->rowsChanged();
       }
     }
@@ -78,11 +67,10 @@ void pqRadiosityAreaLightsWidget::cellEdited(int row, int column)
   {
     return;
   }
-  const int at = row * kPerLamp + kFirst[column];
-  const QString text = item ? item->text().trimmed() : QString();
+    const QString text = item ? item->text().trimmed() : QString();
   QStringList parts = column == 0 ? QStringList{ text }
                                   : text.split(QRegularExpression("[,;\\s]+"), Qt::SkipEmptyParts);
-  bool usable = parts.size() == Count(column) && !(column == 0 && text.isEmpty());
+  bool usable = parts.size() == this->count(column) && !(column == 0 && text.isEmpty());
   for (int k = 0; usable && column > 0 && k < parts.size(); ++k)
   {
     bool number = false;
@@ -97,10 +85,10 @@ void pqRadiosityAreaLightsWidget::cellEdited(int row, int column)
   if (!usable)
   {
     const QSignalBlocker block(this->Table);
-    item->setText(this->Rows.mid(at, Count(column)).join(", ")); // what it held
+    item->setText(this->cell(row, column).join(", ")); // what it held
     return;
   }
-  std::copy(parts.begin(), parts.end(), this->Rows.begin() + at);
+  std::copy(parts.begin(), parts.end(), this->Rows.begin() + this->at(row, column));
   Q_EMIT this->rowsChanged();
 }
 
@@ -176,7 +164,7 @@ QString pqRadiosityAreaLightsWidget::unusedName() const
   // A lamp named as another light would join it: the first LampN the table and the input
   // do not use yet.
   QStringList taken;
-  for (int k = 0; k < this->Rows.size(); k += kPerLamp)
+  for (int k = 0; k < this->Rows.size(); k += this->PerRow)
   {
     taken << this->Rows[k];
   }

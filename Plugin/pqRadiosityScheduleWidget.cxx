@@ -15,15 +15,6 @@
 
 namespace
 {
-constexpr int kPerKey = 7;
-/// Table columns and the property elements each holds: time, light, color, intensity, on.
-constexpr int kFirst[] = { 0, 1, 2, 5, 6, 7 };
-
-int Count(int column)
-{
-  return kFirst[column + 1] - kFirst[column];
-}
-
 /// The keyframe in `row` as the property holds it (enabled as 1 or 0), or empty where it
 /// does not read as the schedule file's rows do.
 QStringList Checked(const QStringList& row)
@@ -51,7 +42,9 @@ pqRadiosityScheduleWidget::pqRadiosityScheduleWidget(vtkSMProxy* proxy, vtkSMPro
         { "Time", "Light", "Color r, g, b", "Intensity", "On" },
         { "When the keyframe holds (the animation's time)", "The light's name, or its index from 0",
           "Its color at that time", "Its intensity at that time", "1: on, 0: off, from this keyframe until the next" },
-        "Add Keyframe", "AddKeyframe", "RemoveKeyframes", kPerKey },
+        "Add Keyframe", "AddKeyframe", "RemoveKeyframes",
+        // the elements of a keyframe: time, light, color, intensity, on
+        { 0, 1, 2, 5, 6, 7 } },
       parent)
 {
   this->linkRows(property);
@@ -60,7 +53,7 @@ pqRadiosityScheduleWidget::pqRadiosityScheduleWidget(vtkSMProxy* proxy, vtkSMPro
 
 void pqRadiosityScheduleWidget::fillCell(int row, int column)
 {
-  const QStringList part = this->Rows.mid(row * kPerKey + kFirst[column], Count(column));
+  const QStringList part = this->cell(row, column);
   this->Table->setItem(row, column, new QTableWidgetItem(part.join(", ")));
 }
 
@@ -71,26 +64,25 @@ void pqRadiosityScheduleWidget::cellEdited(int row, int column)
   {
     return;
   }
-  const int at = row * kPerKey + kFirst[column];
   const QString text = item->text().trimmed();
   const QStringList parts =
     column == 1 ? QStringList{ text } : text.split(QRegularExpression("[,;\\s]+"), Qt::SkipEmptyParts);
-  QStringList key = this->Rows.mid(row * kPerKey, kPerKey);
+  QStringList key = this->Rows.mid(this->at(row, 0), this->PerRow);
   QStringList checked;
-  if (parts.size() == Count(column))
+  if (parts.size() == this->count(column))
   {
-    std::copy(parts.begin(), parts.end(), key.begin() + kFirst[column]);
+    std::copy(parts.begin(), parts.end(), key.begin() + this->Starts[column]);
     checked = Checked(key);
   }
   if (checked.isEmpty())
   {
     const QSignalBlocker block(this->Table);
-    item->setText(this->Rows.mid(at, Count(column)).join(", ")); // what it held
+    item->setText(this->cell(row, column).join(", ")); // what it held
     return;
   }
-  std::copy(checked.begin(), checked.end(), this->Rows.begin() + row * kPerKey);
+  std::copy(checked.begin(), checked.end(), this->Rows.begin() + this->at(row, 0));
   const QSignalBlocker block(this->Table);
-  item->setText(this->Rows.mid(at, Count(column)).join(", ")); // as the property holds it
+  item->setText(this->cell(row, column).join(", ")); // as the property holds it
   Q_EMIT this->rowsChanged();
 }
 
@@ -113,9 +105,9 @@ QString pqRadiosityScheduleWidget::firstLight() const
 
 QStringList pqRadiosityScheduleWidget::newRow() const
 {
-  if (this->Rows.size() >= kPerKey)
+  if (this->Rows.size() >= this->PerRow)
   {
-    QStringList key = this->Rows.mid(this->Rows.size() - kPerKey, kPerKey);
+    QStringList key = this->Rows.mid(this->Rows.size() - this->PerRow, this->PerRow);
     key[0] = QString::number(key[0].toDouble() + 1.0, 'g', 10);
     return key;
   }

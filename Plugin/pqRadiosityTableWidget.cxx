@@ -14,7 +14,8 @@
 pqRadiosityTableWidget::pqRadiosityTableWidget(vtkSMProxy* proxy, const Design& design, QWidget* parent)
   : Superclass(proxy, parent)
   , Table(new QTableWidget(0, design.Headers.size(), this))
-  , PerRow(design.PerRow)
+  , Starts(design.Starts)
+  , PerRow(design.Starts.back())
 {
   this->setShowLabel(false);
   auto* layout = new QVBoxLayout(this);

@@ -1,11 +1,14 @@
 // A panel widget for a repeatable string property shown as a table: one row per entry of
-// PerRow elements under column headers with tool tips, with an Add and a Remove button
+// PerRow elements (a column holds one or more of them) under column headers with tool
+// tips, with an Add and a Remove button
 // (Mark Lights' area lights, the lights' schedule). Subclasses fill the cells, check what is
 // typed and make a new entry.
 #ifndef pqRadiosityTableWidget_h
 #define pqRadiosityTableWidget_h
 
 #include "pqRadiosityRowsWidget.h"
+
+#include <vector>
 
 class QTableWidget;
 
@@ -23,7 +26,8 @@ public:
     QStringList Tips;       ///< one per column
     QString AddText, AddName; ///< the Add button's text and object name
     QString RemoveName;     ///< the Remove button's object name
-    int PerRow = 1;         ///< property elements per entry
+    /// Where each column's elements start in an entry, then the entry's size (PerRow).
+    std::vector<int> Starts;
   };
   pqRadiosityTableWidget(vtkSMProxy* proxy, const Design& design, QWidget* parent = nullptr);
 
@@ -39,8 +43,14 @@ protected:
   virtual void cellEdited(int row, int column) = 0;
   /// The table as tall as its rows (up to 8), with room for a horizontal scroll bar.
   void fitHeight();
+  /// Where cell (row, column)'s elements start in Rows, and how many it holds.
+  int at(int row, int column) const { return row * this->PerRow + this->Starts[column]; }
+  int count(int column) const { return this->Starts[column + 1] - this->Starts[column]; }
+  /// Cell (row, column)'s elements, as Rows holds them.
+  QStringList cell(int row, int column) const { return this->Rows.mid(this->at(row, column), this->count(column)); }
 
   QTableWidget* Table;
+  const std::vector<int> Starts;
   const int PerRow;
   bool Filling = false;
 

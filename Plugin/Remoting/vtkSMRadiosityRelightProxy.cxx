@@ -76,5 +76,5 @@ void vtkSMRadiosityRelightProxy::PostUpdateData(bool usingCache)
 void vtkSMRadiosityRelightProxy::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Copied: " << this->Copied.size() / 6 << " light rows\n";
+  os << indent << "Copied: " << this->Copied.size() << " strings of light settings\n";
 }
