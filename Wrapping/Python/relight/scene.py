@@ -27,13 +27,20 @@ class ErrorCatcher:
     >>> catcher = ErrorCatcher(some_filter)
     >>> some_filter.Update()
     >>> catcher.errors  # list of message strings
+
+    For a filter, the executive's own report that it failed ("returned failure for
+    request", which follows the filter's message) is kept apart, in `reports`.
     """
 
     def __init__(self, vtk_object):
         self.errors = []
         self.warnings = []
+        self.reports = []
         vtk_object.AddObserver(vtkCommand.ErrorEvent, self._error)
         vtk_object.AddObserver(vtkCommand.WarningEvent, self._warning)
+        executive = vtk_object.GetExecutive() if hasattr(vtk_object, "GetExecutive") else None
+        if executive is not None:
+            executive.AddObserver(vtkCommand.ErrorEvent, self._report)
 
     def _error(self, _obj, _event, message=None):
         self.errors.append(str(message))
@@ -41,9 +48,13 @@ class ErrorCatcher:
     def _warning(self, _obj, _event, message=None):
         self.warnings.append(str(message))
 
+    def _report(self, _obj, _event, message=None):
+        self.reports.append(str(message))
+
     # VTK passes the message as call data only to callbacks that ask for a string.
     _error.CallDataType = "string0"
     _warning.CallDataType = "string0"
+    _report.CallDataType = "string0"
 
     def first_error(self):
         """The first error's own words, without VTK's file, line and object prefix."""

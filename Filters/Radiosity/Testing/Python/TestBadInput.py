@@ -186,6 +186,22 @@ if updated != 0 or own != 1 or len(dumps) != 1 or "vtkRadiosityMesher" not in du
     failures.append("one clean error for a failed pipeline")
     print(text)
 
+# relight.solve on a broken scene raises the filter's own words and prints nothing: not the
+# filter's message, not the executive's report that follows it.
+window = vtkStringOutputWindow()
+vtkOutputWindow.SetInstance(window)
+try:
+    relight.solve(scene(reflectance=(0.5, nan, 0.5)), 1.0, 0.5)
+    raised = ""
+except RuntimeError as error:
+    raised = str(error)
+vtkOutputWindow.SetInstance(previous)
+quiet = window.GetOutput().strip() == ""
+print(f"{'ok  ' if raised.startswith('Cannot mesh') and quiet else 'FAIL'} relight.solve of a broken scene: "
+      f"{raised!r}, output window {'empty' if quiet else window.GetOutput()!r}")
+if not raised.startswith("Cannot mesh") or not quiet:
+    failures.append("relight.solve of a broken scene")
+
 # A writer below the failed filter never runs; vtkWriter.Write() would then return 1 with
 # no file. Ours return 0 and say why.
 for writer, name in ((relight.vtkRadiosityGLTFWriter(), "broken.glb"), (relight.vtkRadiosityEXRWriter(), "broken.exr")):
