@@ -206,7 +206,7 @@ vtkSmartPointer<vtkFloatArray> RelitRadiosity(vtkPolyData* input, bool cells)
   }
   const std::vector<std::string> names = vtkRadiosityLightNames(input->GetFieldData());
   // The colors the relight filter starts from (vtkRadiosityRelight::ResolveWeights).
-  const std::vector<double> weights = vtkRadiosityDefaultLightColors(input, static_cast<int>(names.size()));
+  const std::vector<double> weights = vtkRadiosityLightDefaultColors(input, static_cast<int>(names.size()));
   std::vector<std::string> arrays;
   for (const std::string& name : names)
   {

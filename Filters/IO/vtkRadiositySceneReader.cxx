@@ -133,7 +133,7 @@ int vtkRadiositySceneReader::RequestData(vtkInformation*, vtkInformationVector**
     std::string error = SceneFiles::Read(this->FileName, raw, notes);
     radiosity::ImportOptions options;
     options.UnitScale = this->UnitScale;
-    options.LightPerObject = this->LightsPerObject;
+    options.LightsPerObject = this->LightsPerObject;
     radiosity::ImportedScene scene;
     if (error.empty() && !(error = radiosity::BuildImportedScene(raw, options, scene)).empty())
     {

@@ -213,13 +213,13 @@ static_assert(static_cast<int>(radiosity::FormFactorMethod::Analytic) == vtkLigh
 radiosity::SolverOptions vtkLightTaggedRadiosity::Options(int threads, const radiosity::ProcessGroup& group) const
 {
   radiosity::SolverOptions options;
-  options.Solver = static_cast<radiosity::SolverMethod>(this->SolverMethod);
+  options.SolverMethod = static_cast<radiosity::SolverMethod>(this->SolverMethod);
   options.MaximumShots = this->MaximumShots;
   options.ConvergenceThreshold = this->ConvergenceThreshold;
   options.TimeBudget = this->TimeBudget;
   options.Clustered.Separation = this->ClusterSeparation;
-  options.Method = static_cast<radiosity::FormFactorMethod>(this->FormFactorMethod);
-  options.Samples = this->FormFactorSamples;
+  options.FormFactorMethod = static_cast<radiosity::FormFactorMethod>(this->FormFactorMethod);
+  options.FormFactorSamples = this->FormFactorSamples;
   options.Threads = threads;
   options.AmbientTerm = this->AmbientTerm;
   options.SeparateDirect = this->SeparateDirect;

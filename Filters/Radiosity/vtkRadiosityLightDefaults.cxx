@@ -8,7 +8,7 @@
 #include "vtkPolyData.h"
 #include "vtkStringArray.h"
 
-std::vector<double> vtkRadiosityDefaultLightColors(vtkPolyData* data, int lights)
+std::vector<double> vtkRadiosityLightDefaultColors(vtkPolyData* data, int lights)
 {
   std::vector<double> given;
   vtkDataArray* defaults = data->GetFieldData()->GetArray("LightDefaultColors");
@@ -26,7 +26,7 @@ std::vector<double> vtkRadiosityDefaultLightColors(vtkPolyData* data, int lights
     emission.push_back({ emitted->GetComponent(c, 0), emitted->GetComponent(c, 1), emitted->GetComponent(c, 2) });
   }
   std::vector<double> rgb;
-  for (const radiosity::Vec3& c : radiosity::DefaultLightColors(lights, given, ids, emission))
+  for (const radiosity::Vec3& c : radiosity::LightDefaultColors(lights, given, ids, emission))
   {
     rgb.insert(rgb.end(), { c.x, c.y, c.z });
   }

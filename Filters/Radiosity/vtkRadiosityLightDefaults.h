@@ -15,6 +15,6 @@ VTKRADIOSITYFILTERS_EXPORT std::vector<std::string> vtkRadiosityLightNames(vtkFi
 
 /// 3 values per light: the solver's LightDefaultColors when it holds one per light, else
 /// each light's mean Emission over its cells (zero stays zero; white without any).
-VTKRADIOSITYFILTERS_EXPORT std::vector<double> vtkRadiosityDefaultLightColors(vtkPolyData* data, int lights);
+VTKRADIOSITYFILTERS_EXPORT std::vector<double> vtkRadiosityLightDefaultColors(vtkPolyData* data, int lights);
 
 #endif

@@ -40,6 +40,10 @@ public:
   vtkTypeMacro(vtkRadiosityLights, vtkObject);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /// Strings a row of LightSettings holds (name, r, g, b, intensity, enabled): the
+  /// plugin's LightRig.xml sends rows of this many (checked by Python.TestNames).
+  static int GetSettingRowCells();
+
   ///@{
   /// Per-light settings by index (0..k-1, in LightNames order).
   void SetLightColor(int light, double r, double g, double b);
@@ -97,7 +101,7 @@ public:
   std::string Resolve(const std::vector<std::string>& names, const std::vector<radiosity::Vec3>& defaults,
     double time, std::vector<radiosity::LightSetting>& effective, std::vector<std::string>& warnings);
 
-  /// Each light's default color in `data` (vtkRadiosityDefaultLightColors), as Resolve takes them.
+  /// Each light's default color in `data` (vtkRadiosityLightDefaultColors), as Resolve takes them.
   static std::vector<radiosity::Vec3> DefaultColors(vtkPolyData* data, int lights);
 #endif
 

@@ -660,7 +660,7 @@ double vtkRadiosityRelight::MeterAtDefaults(
   {
     arrays.push_back("Radiosity_" + name);
   }
-  const std::vector<double> defaults = vtkRadiosityDefaultLightColors(input, static_cast<int>(names.size()));
+  const std::vector<double> defaults = vtkRadiosityLightDefaultColors(input, static_cast<int>(names.size()));
   vtkDataSetAttributes* data = cells ? static_cast<vtkDataSetAttributes*>(input->GetCellData()) : input->GetPointData();
   vtkNew<vtkFloatArray> sum;
   std::string error;

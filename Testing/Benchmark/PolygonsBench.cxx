@@ -76,7 +76,7 @@ int main(int argc, char** argv)
     return 0;
   }
   SolverOptions options;
-  options.Solver = method;
+  options.SolverMethod = method;
   options.TimeBudget = budget;
   options.ConvergenceThreshold = threshold;
   const SolutionMode mode = combined ? SolutionMode::StandardCombined : SolutionMode::LightTagged;
@@ -91,12 +91,12 @@ int main(int argc, char** argv)
   }
   std::printf("triangles,elements,patches,lights,cluster_angle,method,shots,converged,rays,patch_links,element_links,link_mb,mesh_s,prepare_s,solve_s,total_s,peak_mb,error_pct,worst_light_pct,cluster_links\n");
   std::printf("%d,%d,%zu,%d,%g,%s,%d,%d,%lld,%lld,%lld,%.1f,%.2f,%.2f,%.2f,%.2f,%.0f,%.2f,%.2f,%lld\n", inputTriangles, mesh.NumberOfPolygons(),
-    solver.Geometry().PatchElements.size(), lamps, cone, ShortMethodName(st.Method).c_str(), st.Shots, st.Converged ? 1 : 0,
+    solver.Geometry().PatchElements.size(), lamps, cone, ShortMethodName(st.SolverMethod).c_str(), st.Shots, st.Converged ? 1 : 0,
     st.RayCount, st.PatchLinks, st.ElementLinks, st.LinkBytes / 1e6, t1 - t0, t2 - t1, t3 - t2, t3 - t0, PeakMemoryMB(),
     100 * probeError, 100 * worst, st.VolumeLinks);
   if (compare)
   {
-    options.Solver = SolverMethod::ProgressiveRefinement;
+    options.SolverMethod = SolverMethod::ProgressiveRefinement;
     const Solution p = SolveLights(solver, mesh, LightGrouping::OnePerLight(lamps), {}, SolutionMode::LightTagged, options);
     const SceneGeometry& g = solver.Geometry();
     for (int m = 0; m < lamps; ++m)
@@ -110,7 +110,7 @@ int main(int argc, char** argv)
         sum += (b.x + b.y + b.z) * g.Area[e];
       }
       std::printf("light %d: %s differs from progressive refinement by %.3f %% (mean, area-weighted)\n", m,
-        ShortMethodName(st.Method).c_str(), 100 * diff / sum);
+        ShortMethodName(st.SolverMethod).c_str(), 100 * diff / sum);
     }
   }
   return 0;

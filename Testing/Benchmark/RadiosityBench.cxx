@@ -168,7 +168,7 @@ int main(int argc, char* argv[])
 
   // ---- Table 1: sampling time per method, k = 1, 3, 8 --------------------------------
   std::printf("Table 1 (sampling, %d shots, analytic form factors, %d shadow rays: the defaults)\n", shots,
-    SolverOptions().Samples);
+    SolverOptions().FormFactorSamples);
   std::printf("%3s %9s %9s | %10s %10s %10s | %9s %9s\n", "k", "elements", "patches", "combined s",
     "separate s", "tagged s", "sep/tag", "tag/comb");
   double taggedRaysPerSecond = 0;

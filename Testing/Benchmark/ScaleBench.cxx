@@ -68,7 +68,7 @@ struct Csv
     double worst)
   {
     const SolverStatistics& s = run.Result.Statistics;
-    Text << mesh.NumberOfPolygons() << ',' << patches << ',' << ShortMethodName(s.Method) << ',' << mode << ',' << lights
+    Text << mesh.NumberOfPolygons() << ',' << patches << ',' << ShortMethodName(s.SolverMethod) << ',' << mode << ',' << lights
          << ',' << run.Seconds << ',' << s.Shots << ',' << (s.Converged ? 1 : 0) << ',' << run.MemoryMB << ','
          << s.LinkBytes / 1048576.0 << ',' << mean << ',' << worst << '\n';
   }
@@ -194,7 +194,7 @@ int main(int argc, char* argv[])
   else if (referenceElements > 0)
   {
     SolverOptions converged;
-    converged.Solver = SolverMethod::ProgressiveRefinement;
+    converged.SolverMethod = SolverMethod::ProgressiveRefinement;
     converged.ConvergenceThreshold = 1e-5;
     converged.MaximumShots = 1000000;
     const Run reference = SolveRoom(referenceSolver, referenceMesh, lights, SolutionMode::LightTagged, converged);
@@ -222,7 +222,7 @@ int main(int argc, char* argv[])
     const double t2 = Now();
     const int patches = static_cast<int>(solver.Geometry().PatchElements.size());
     SolverOptions options;
-    options.Solver = SolverMethod::Hierarchical;
+    options.SolverMethod = SolverMethod::Hierarchical;
     options.MaximumShots = 1000000;
     double worst = 0, mean = 0;
     const Run tagged = SolveRoom(solver, mesh, lights, SolutionMode::LightTagged, options);
@@ -250,7 +250,7 @@ int main(int argc, char* argv[])
     }
     if (target <= 20000)
     {
-      options.Solver = SolverMethod::ProgressiveRefinement;
+      options.SolverMethod = SolverMethod::ProgressiveRefinement;
       const Run progressive = SolveRoom(solver, mesh, lights, SolutionMode::LightTagged, options);
       mean = MeanError(Sample(solver, mesh, progressive.Result, probes), referenceValues, lights, &worst);
       Print("progressive, k=8 tagged", mesh, patches, progressive, mean, worst);

@@ -115,7 +115,7 @@ void AssignLights(const RawScene& raw, const std::vector<int>& kept, const Impor
       out.Emission.push_back(Vec3());
       continue;
     }
-    const int object = options.LightPerObject ? raw.Object[i] : -1;
+    const int object = options.LightsPerObject ? raw.Object[i] : -1;
     auto found = lightOf.find({ object, m });
     if (found == lightOf.end())
     {

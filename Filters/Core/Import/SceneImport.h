@@ -42,7 +42,7 @@ struct RawScene
 struct ImportOptions
 {
   double UnitScale = 1.0;      ///< multiplies every coordinate (0.001: millimetres to metres)
-  bool LightPerObject = false; ///< one light per object's emissive material, not per material
+  bool LightsPerObject = false; ///< one light per object's emissive material, not per material
 };
 
 /// The radiosity input: the mesh (reflectance and light ids set), each light's emission

@@ -307,7 +307,7 @@ std::string LightRig::Resolve(const std::vector<std::string>& names, const std::
   return std::string();
 }
 
-std::vector<Vec3> DefaultLightColors(int lights, const std::vector<double>& given, const std::vector<int>& lightId,
+std::vector<Vec3> LightDefaultColors(int lights, const std::vector<double>& given, const std::vector<int>& lightId,
   const std::vector<Vec3>& emission)
 {
   std::vector<Vec3> colors(lights, { 1, 1, 1 });

@@ -114,7 +114,7 @@ struct LightRig
 /// light) when it holds one per light, else each light's mean Emission over its cells
 /// (`lightId`, `emission` per cell; zero Emission stays zero, a light without cells or
 /// without an Emission array is white).
-std::vector<Vec3> DefaultLightColors(int lights, const std::vector<double>& given, const std::vector<int>& lightId,
+std::vector<Vec3> LightDefaultColors(int lights, const std::vector<double>& given, const std::vector<int>& lightId,
   const std::vector<Vec3>& emission);
 
 /// The 3k weights (color x intensity, zero for lights off) of resolved settings; with an

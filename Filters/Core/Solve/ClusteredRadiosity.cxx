@@ -199,7 +199,7 @@ private:
   /// Each emitter's direct light to every element, with its own shadow rays.
   void ShootEmitters(ShooterFormFactors& estimator)
   {
-    const int samples = Options.Visibility == EffectMode::Off ? 0 : Options.Samples;
+    const int samples = Options.Visibility == EffectMode::Off ? 0 : Options.FormFactorSamples;
     std::vector<double> factors(N);
     for (size_t i = 0; i < Emitters.size(); ++i)
     {
@@ -279,7 +279,7 @@ private:
       return false;
     }
     ClusterLinkOptions options;
-    options.Samples = Options.Visibility == EffectMode::Off ? 0 : Options.Samples;
+    options.Samples = Options.Visibility == EffectMode::Off ? 0 : Options.FormFactorSamples;
     options.Separation = Options.Clustered.Separation;
     options.MixedSeparation = 1.5 * Options.Clustered.Separation;
     ClusterLinkBuilder builder(Mesh, G, tree, Rays, estimator, options);
@@ -555,7 +555,7 @@ void SolveClustered(const SceneMesh& mesh, const SceneGeometry& geometry, const 
   const std::vector<Vec3>& emission, int solutions, bool grey, const SolverOptions& options,
   Clock::time_point start, Solution& out)
 {
-  out.Statistics.Method = SolverMethod::Clustered;
+  out.Statistics.SolverMethod = SolverMethod::Clustered;
   WithChannel(grey, [&](auto channel) {
     Gathering<decltype(channel)> gathering(mesh, geometry, rays, emission, solutions, options, start, out);
     gathering.Run();

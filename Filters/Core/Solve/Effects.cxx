@@ -66,11 +66,11 @@ namespace
 EffectDecision VisibilityRow(const SolverOptions& options, const SolverStatistics& s)
 {
   EffectDecision row{ "Visibility", true, "" };
-  if (options.Method != FormFactorMethod::Analytic)
+  if (options.FormFactorMethod != FormFactorMethod::Analytic)
   {
     row.Reason = "simulated: the hemicube or Monte Carlo rays are the form factors";
   }
-  else if (options.Visibility == EffectMode::Off || options.Samples <= 0)
+  else if (options.Visibility == EffectMode::Off || options.FormFactorSamples <= 0)
   {
     row.Simulated = false;
     row.Reason = "skipped: turned off, every pair treated as unoccluded";
@@ -88,7 +88,7 @@ EffectDecision VisibilityRow(const SolverOptions& options, const SolverStatistic
   }
   else
   {
-    const double pairs = s.PairsUnblockable + (options.Samples > 0 ? s.RayCount / options.Samples : 0);
+    const double pairs = s.PairsUnblockable + (options.FormFactorSamples > 0 ? s.RayCount / options.FormFactorSamples : 0);
     row.Reason = Format("simulated where needed: %.0f planes can block; %.0f of %.0f lit pairs "
                         "cannot be blocked, saved %.0f shadow rays",
       s.BlockingSurfaces, static_cast<double>(s.PairsUnblockable), pairs, static_cast<double>(s.RaysSkipped));

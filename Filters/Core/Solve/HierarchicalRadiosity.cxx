@@ -803,7 +803,7 @@ void Shoot(const SceneMesh& mesh, const SceneGeometry& g, const Visibility& rays
   const PatchTree tree(g, estimator);
   state.EnablePatchGathering(nodes);
   state.EnableClusterGathering(clusters);
-  const int samples = options.Visibility == EffectMode::Off ? 0 : options.Samples;
+  const int samples = options.Visibility == EffectMode::Off ? 0 : options.FormFactorSamples;
   const double refine = options.Hierarchical.RefinementThreshold > 0 ? options.Hierarchical.RefinementThreshold : 2.0; // 2: never
   LinkBuilder builder(g, estimator, nodes, clusters, tree, pool, samples, refine, state.OwnedPatchFlags(), state.Ranks());
   const std::vector<Vec3> meanReflectance = MeanReflectance(mesh, g);
@@ -834,7 +834,7 @@ void SolveHierarchical(const SceneMesh& mesh, const SceneGeometry& geometry, con
   const std::vector<Vec3>& emission, int solutions, bool grey, const SolverOptions& options,
   SolverClock::time_point start, Solution& out)
 {
-  out.Statistics.Method = SolverMethod::Hierarchical;
+  out.Statistics.SolverMethod = SolverMethod::Hierarchical;
   WithChannel(grey, [&](auto channel) {
     Shoot<decltype(channel)>(mesh, geometry, rays, emission, solutions, options, start, out);
   });

@@ -21,10 +21,10 @@ SolverOptions BasisOptions(const SolverOptions& options)
   basis.AmbientTerm = false;
   basis.SeparateDirect = false;
   basis.Hierarchical.DirectToElements = false; // every patch emits: links, not P x N factors
-  if (basis.Solver == SolverMethod::Clustered)
+  if (basis.SolverMethod == SolverMethod::Clustered)
   {
     // Its node sums hold every solution at every node: one per patch here is too many.
-    basis.Solver = SolverMethod::Hierarchical;
+    basis.SolverMethod = SolverMethod::Hierarchical;
   }
   return basis;
 }
@@ -145,12 +145,12 @@ std::vector<double> PatchFormFactors(const SceneMesh& coarse, const RadiositySol
   const SceneGeometry& g = solver.Geometry();
   const int n = coarse.NumberOfPolygons();
   ShooterFormFactors factors(coarse, g, solver.Rays(), pool, options.Visibility == EffectMode::Auto);
-  const int samples = options.Visibility == EffectMode::Off ? 0 : options.Samples;
+  const int samples = options.Visibility == EffectMode::Off ? 0 : options.FormFactorSamples;
   std::vector<double> F(static_cast<size_t>(n) * P, 0.0), column(n);
   for (size_t compact = 0; compact < g.PatchElements.size(); ++compact)
   {
     const int q = coarse.PatchId[g.PatchElements[compact][0]];
-    factors.Compute(static_cast<int>(compact), options.Method, samples, 0, column);
+    factors.Compute(static_cast<int>(compact), options.FormFactorMethod, samples, 0, column);
     for (int c = 0; c < n; ++c)
     {
       // += : the coarse solver may split a patch into pieces (SplitSeparatedPatches, its

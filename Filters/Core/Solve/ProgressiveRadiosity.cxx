@@ -18,17 +18,17 @@ void Shoot(const SceneMesh& mesh, const SceneGeometry& g, const Visibility& rays
   ShootingState<Channel> state(mesh, g, emission, L, options, start, out);
   SolverStatistics& stats = out.Statistics;
   WorkerPool pool(options.Threads);
-  const bool cull = options.Visibility == EffectMode::Auto && options.Method == FormFactorMethod::Analytic;
+  const bool cull = options.Visibility == EffectMode::Auto && options.FormFactorMethod == FormFactorMethod::Analytic;
   ShooterFormFactors estimator(mesh, g, rays, pool, cull);
   estimator.SetReceivers(&state.OwnedPatchFlags());
   const int samples =
-    options.Visibility == EffectMode::Off && options.Method == FormFactorMethod::Analytic ? 0 : options.Samples;
+    options.Visibility == EffectMode::Off && options.FormFactorMethod == FormFactorMethod::Analytic ? 0 : options.FormFactorSamples;
   std::vector<double> factors;
   while (state.Continue())
   {
     const int shooter = state.PickShooter();
     state.TakeShot(shooter);
-    ShootToElements(state, pool, estimator, shooter, options.Method, samples, stats, factors);
+    ShootToElements(state, pool, estimator, shooter, options.FormFactorMethod, samples, stats, factors);
   }
   state.Finish(estimator);
 }
@@ -38,7 +38,7 @@ void SolveProgressive(const SceneMesh& mesh, const SceneGeometry& geometry, cons
   const std::vector<Vec3>& emission, int solutions, bool grey, const SolverOptions& options,
   SolverClock::time_point start, Solution& out)
 {
-  out.Statistics.Method = SolverMethod::ProgressiveRefinement;
+  out.Statistics.SolverMethod = SolverMethod::ProgressiveRefinement;
   WithChannel(grey, [&](auto channel) {
     Shoot<decltype(channel)>(mesh, geometry, rays, emission, solutions, options, start, out);
   });

@@ -30,14 +30,14 @@ SolverMethod ResolveMethod(
 {
   const int elements = static_cast<int>(g.Centroid.size());
   const int patches = static_cast<int>(g.PatchElements.size());
-  if (options.Solver != SolverMethod::Auto && FindSolverMethod(options.Solver))
+  if (options.SolverMethod != SolverMethod::Auto && FindSolverMethod(options.SolverMethod))
   {
     reason = "as set";
-    return options.Solver;
+    return options.SolverMethod;
   }
   char text[256];
   const double pairs = static_cast<double>(elements) * patches;
-  if (options.Method != FormFactorMethod::Analytic)
+  if (options.FormFactorMethod != FormFactorMethod::Analytic)
   {
     reason = "chosen by Auto: the hemicube and Monte Carlo estimators are progressive only";
     return SolverMethod::ProgressiveRefinement;
@@ -251,7 +251,7 @@ void SolverStatistics::Append(const SolverStatistics& next)
   SingleChannel = SingleChannel && next.SingleChannel;
   BlockingSurfaces = next.BlockingSurfaces;
   FormFactorCount += next.FormFactorCount;
-  Method = next.Method;
+  SolverMethod = next.SolverMethod;
   MethodReason = next.MethodReason;
   FaceClusters = next.FaceClusters;
   PatchLinks += next.PatchLinks;

@@ -49,7 +49,7 @@ enum class SolverMethod
 
 struct SolverOptions
 {
-  SolverMethod Solver = SolverMethod::Auto;
+  radiosity::SolverMethod SolverMethod = radiosity::SolverMethod::Auto;
   /// Shot cap; 0 (the default) picks it from the scene: 25 shots per patch, at least
   /// 2000, so a scene converges at the default threshold instead of hitting the cap
   /// (measured: 5-6 shots per patch reach 1e-3 in a furnished room).
@@ -63,10 +63,10 @@ struct SolverOptions
   /// (0: 90 % of the memory the system has free when they are made). A solve that would
   /// need more stops with the direct light, the reason in SolverStatistics::OutOfMemory.
   double MemoryLimit = 0;
-  FormFactorMethod Method = FormFactorMethod::Analytic;
+  radiosity::FormFactorMethod FormFactorMethod = radiosity::FormFactorMethod::Analytic;
   /// Analytic: shadow rays per receiver and shot (0: ignore occlusion); Hemicube: the
   /// resolution of its top face; MonteCarlo: rays per shot.
-  int Samples = 4;
+  int FormFactorSamples = 4;
   int Threads = 0; ///< 0: all hardware threads
   /// Add the ambient term of Cohen et al. 1988 per solution: the unshot energy, spread
   /// evenly and interreflected in closed form, so unconverged results look plausible.
@@ -145,7 +145,7 @@ struct SolverStatistics
   bool SingleChannel = false;     ///< solved one grey channel instead of RGB
   int BlockingSurfaces = -1;      ///< planes with geometry behind them (-1: not examined)
   long long FormFactorCount = 0; ///< receiver-shooter pairs evaluated
-  SolverMethod Method = SolverMethod::ProgressiveRefinement; ///< the method that ran
+  radiosity::SolverMethod SolverMethod = radiosity::SolverMethod::ProgressiveRefinement; ///< the method that ran
   std::string MethodReason; ///< why: "as set", or Auto's measure of the scene
   int FaceClusters = 0;     ///< patches of several elements on more than one plane
   long long PatchLinks = 0;   ///< hierarchical: shooter-to-patch links made

@@ -57,7 +57,7 @@ const MethodEntry* FindSolverMethod(SolverMethod method)
 
 std::string DescribeSolve(const SolverStatistics& stats)
 {
-  const MethodEntry* entry = FindSolverMethod(stats.Method);
+  const MethodEntry* entry = FindSolverMethod(stats.SolverMethod);
   std::string described = entry ? entry->Describe(stats) : "no method";
   if (stats.FaceClusters > 0)
   {

@@ -14,6 +14,7 @@ from .vtkRadiosityFilters import (  # noqa: F401
     vtkLightTaggedRadiosity,
     vtkRadiosityAppendPieces,
     vtkRadiosityLightMarker,
+    vtkRadiosityLights,
     vtkRadiosityMesher,
     vtkRadiosityRelight,
 )

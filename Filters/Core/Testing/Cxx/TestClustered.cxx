@@ -23,7 +23,7 @@ namespace
 SolverOptions Options(SolverMethod method, double threshold)
 {
   SolverOptions o = Converged(threshold);
-  o.Solver = method;
+  o.SolverMethod = method;
   return o;
 }
 
@@ -40,7 +40,7 @@ Solution Reference(SceneMesh mesh, int lights, int samples = 4)
 {
   mesh.PatchId.clear();
   SolverOptions o = Options(SolverMethod::ProgressiveRefinement, 1e-4);
-  o.Samples = samples;
+  o.FormFactorSamples = samples;
   return Solve(mesh, lights, o);
 }
 
@@ -77,7 +77,7 @@ TEST(Clustered, FurnaceGivesOneOverOneMinusRho)
     SceneMesh box = Box(2.0, 24, 4, { rho, rho, rho }, [](int) { return 0; });
     const Solution s = Solve(box, 1, Options(SolverMethod::Clustered, 1e-7));
     ASSERT_TRUE(s.Statistics.Converged);
-    EXPECT_EQ(s.Statistics.Method, SolverMethod::Clustered);
+    EXPECT_EQ(s.Statistics.SolverMethod, SolverMethod::Clustered);
     EXPECT_GT(s.Statistics.VolumeLinks, 2 * s.Statistics.ElementLinks); // element pairs far apart count as element links
     // Bouncing would take log(1e-7) / log(rho) gathers (153 at 0.9); the linear solve far fewer.
     const int gathers = s.Statistics.Shots - static_cast<int>(SceneGeometry(box).PatchElements.size()); // each patch emits
@@ -290,11 +290,11 @@ TEST(Clustered, AutoPicksItWhereItsEstimatedCostIsLower)
   automatic.TimeBudget = 1e-9;
   const SceneMesh tiny = Box(2.0, 60, 1, { 0.5, 0.5, 0.5 }, [](int f) { return f == 1 ? 0 : -1; });
   const Solution a = Solve(tiny, 1, automatic);
-  EXPECT_EQ(a.Statistics.Method, SolverMethod::Clustered);
+  EXPECT_EQ(a.Statistics.SolverMethod, SolverMethod::Clustered);
   EXPECT_NE(a.Statistics.MethodReason.find("21600 patches, about"), std::string::npos) << a.Statistics.MethodReason;
   const SceneMesh large = Box(2.0, 60, 6, { 0.5, 0.5, 0.5 }, [](int f) { return f == 1 ? 0 : -1; });
-  EXPECT_EQ(Solve(large, 1, automatic).Statistics.Method, SolverMethod::Hierarchical);
+  EXPECT_EQ(Solve(large, 1, automatic).Statistics.SolverMethod, SolverMethod::Hierarchical);
   SolverOptions basis = automatic; // the moving-light basis: every patch a solution, no node sums for them
   basis.Hierarchical.DirectToElements = false;
-  EXPECT_EQ(Solve(tiny, 1, basis).Statistics.Method, SolverMethod::Hierarchical);
+  EXPECT_EQ(Solve(tiny, 1, basis).Statistics.SolverMethod, SolverMethod::Hierarchical);
 }

@@ -75,7 +75,7 @@ Solution SolveRoom(const SceneMesh& mesh, SolverMethod method, int lamps)
   const RadiositySolver solver(mesh);
   EXPECT_TRUE(solver.Error().empty()) << solver.Error();
   SolverOptions o = radiosity_test::Converged(1e-4);
-  o.Solver = method;
+  o.SolverMethod = method;
   return SolveLights(solver, mesh, LightGrouping::OnePerLight(lamps), {}, SolutionMode::LightTagged, o);
 }
 
@@ -300,7 +300,7 @@ TEST(Clusters, HundredThousandTriangleSphereRoomConvergesAndBalances)
   o.ConvergenceThreshold = 1e-3;
   const Solution s = SolveLights(solver, mesh, LightGrouping::OnePerLight(lamps), {}, SolutionMode::LightTagged, o);
   const SolverStatistics& st = s.Statistics;
-  EXPECT_EQ(st.Method, SolverMethod::Hierarchical);
+  EXPECT_EQ(st.SolverMethod, SolverMethod::Hierarchical);
   EXPECT_TRUE(st.Converged);
   EXPECT_GT(st.FaceClusters, 0);
   EXPECT_LT(solver.Geometry().PatchElements.size(), 1000u);
@@ -316,7 +316,7 @@ TEST(Clusters, SameResultOnAnyNumberOfThreadsAndLightTaggedEqualsCombined)
   ASSERT_EQ(MeshByMaterial(CurvedRoom(lamps, 1, 4000), 0.5, 0.25, 30, mesh), "");
   const RadiositySolver solver(mesh);
   SolverOptions o = radiosity_test::Converged(1e-4);
-  o.Solver = SolverMethod::Hierarchical;
+  o.SolverMethod = SolverMethod::Hierarchical;
   o.Threads = 1;
   const Solution one = SolveLights(solver, mesh, LightGrouping::OnePerLight(lamps), {}, SolutionMode::LightTagged, o);
   o.Threads = 3;

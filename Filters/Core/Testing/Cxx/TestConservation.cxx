@@ -53,8 +53,8 @@ TEST(Conservation, FirstShotNeverDeliversMoreThanItsPower)
         continue;
       }
       SolverOptions options = Converged(0);
-      options.Solver = method;
-      options.Method = factors;
+      options.SolverMethod = method;
+      options.FormFactorMethod = factors;
       options.MaximumShots = 1;
       const Solution s = SolveLights(solver, mesh, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, options);
       const double lampPower = 3 * 0.04; // the statistics sum the three channels
@@ -78,7 +78,7 @@ TEST(Conservation, ClosedRoomAtRhoNearOneReachesTheClosedForm)
   for (SolverMethod method : { SolverMethod::ProgressiveRefinement, SolverMethod::Hierarchical })
   {
     SolverOptions options = Converged(1e-3);
-    options.Solver = method;
+    options.SolverMethod = method;
     options.AmbientTerm = true;
     const Solution s = SolveLights(solver, mesh, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, options);
     const double got = ReflectedPower(mesh, s);
@@ -123,7 +123,7 @@ TEST(Conservation, ClosedRoomAtRhoNearOneReachesTheClosedFormAtTheDefaults)
   const SceneMesh mesh = Box(1.0, 4, 2, { rho, rho, rho }, [](int face) { return face == 1 ? 0 : -1; });
   const RadiositySolver solver(mesh);
   SolverOptions defaults;
-  defaults.Solver = SolverMethod::Clustered;
+  defaults.SolverMethod = SolverMethod::Clustered;
   const Solution linear = SolveLights(solver, mesh, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, defaults);
   EXPECT_TRUE(linear.Statistics.Converged);
   EXPECT_FALSE(linear.Statistics.AmbientAtCap);
@@ -132,7 +132,7 @@ TEST(Conservation, ClosedRoomAtRhoNearOneReachesTheClosedFormAtTheDefaults)
   for (SolverMethod method : { SolverMethod::ProgressiveRefinement, SolverMethod::Hierarchical })
   {
     SolverOptions options;
-    options.Solver = method;
+    options.SolverMethod = method;
     const Solution s = SolveLights(solver, mesh, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, options);
     const double got = ReflectedPower(mesh, s);
     std::printf("method %d: reflected %.2f x the lamp's power (closed form %.0f), %d shots\n", static_cast<int>(method),
@@ -158,7 +158,7 @@ TEST(Conservation, LampRoomAtRhoNearOneNeverGains)
   for (SolverMethod method : { SolverMethod::ProgressiveRefinement, SolverMethod::Hierarchical })
   {
     SolverOptions options = Converged(1e-3);
-    options.Solver = method;
+    options.SolverMethod = method;
     const Solution s = SolveLights(solver, mesh, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, options);
     EXPECT_TRUE(s.Statistics.Converged);
     EXPECT_LT(ReflectedPower(mesh, s) / 0.04, rho / (1 - rho));
@@ -181,11 +181,11 @@ TEST(Conservation, EveryMethodOfTheTableRunsAsItselfAndLosesNoLight)
   for (const MethodEntry& entry : SolverMethodTable())
   {
     SolverOptions options = Converged(1e-6);
-    options.Solver = entry.Method;
+    options.SolverMethod = entry.Method;
     const Solution s = SolveLights(solver, mesh, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, options);
     const double absorbed = radiosity_test::AbsorbedPower(mesh, s) / (3 * 0.04); // three channels summed
     std::printf("%s: absorbed %.5f of the lamp's power\n", entry.Name, absorbed);
-    EXPECT_EQ(s.Statistics.Method, entry.Method) << entry.Name;
+    EXPECT_EQ(s.Statistics.SolverMethod, entry.Method) << entry.Name;
     EXPECT_TRUE(s.Statistics.Converged) << entry.Name;
     EXPECT_LE(absorbed, 1.0 + 1e-6) << entry.Name;
     EXPECT_GT(absorbed, 0.95) << entry.Name;

@@ -132,7 +132,7 @@ void ExpectSerialAnswer(SolverMethod method, int ranks, bool direct, const Scene
   double tolerance = 1e-9)
 {
   SolverOptions options = Converged(1e-4);
-  options.Solver = method;
+  options.SolverMethod = method;
   options.SeparateDirect = direct;
   options.AmbientTerm = direct;
   options.Threads = 1;
@@ -226,7 +226,7 @@ TEST(Distributed, AnAbortOnOneRankStopsEveryRankAtTheSameShot)
 {
   const SceneMesh mesh = Room();
   SolverOptions options = Converged(1e-6);
-  options.Solver = SolverMethod::Hierarchical;
+  options.SolverMethod = SolverMethod::Hierarchical;
   std::atomic<int> calls{ 0 };
   const std::vector<Solution> results = SolveOnRanks(mesh, 2, options, [&](int rank, SolverOptions& o) {
     if (rank == 1)
@@ -247,7 +247,7 @@ TEST(Distributed, ATimeBudgetReachedOnOneRankStopsEveryRank)
 {
   const SceneMesh mesh = Room();
   SolverOptions options = Converged(1e-6);
-  options.Solver = SolverMethod::ProgressiveRefinement;
+  options.SolverMethod = SolverMethod::ProgressiveRefinement;
   const std::vector<Solution> results = SolveOnRanks(mesh, 2, options, [](int rank, SolverOptions& o) {
     o.TimeBudget = rank == 0 ? 1e-9 : 0; // rank 0 is out of time at once, rank 1 has none
   });
@@ -263,7 +263,7 @@ TEST(Distributed, ARankWithNoPatchesJoinsAndGetsTheWhole)
   // More ranks than patches: the last ones receive for nothing and still get the answer.
   SceneMesh mesh = radiosity_test::Box(1.0, 1, 1, { 0.5, 0.5, 0.5 }, [](int face) { return face == 5 ? 0 : -1; });
   SolverOptions options = Converged(1e-6);
-  options.Solver = SolverMethod::ProgressiveRefinement;
+  options.SolverMethod = SolverMethod::ProgressiveRefinement;
   const RadiositySolver serial(mesh);
   const int lights = 1;
   const Solution one =

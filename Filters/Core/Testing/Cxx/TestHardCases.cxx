@@ -544,7 +544,7 @@ TEST(HardLeaks, ClosedBoxWithUnweldedSeamsKeepsOutsideLightOut)
   AddGrid(mesh, { 1.001, -0.5, -0.5 }, { 0, 0, 2 }, { 0, 2, 0 }, 1, 1, { 0, 0, 0 }, 0, patch); // faces -x
   AddGrid(mesh, { -0.5, -0.5, -0.001 }, { 0, 2, 0 }, { 2, 0, 0 }, 1, 1, { 0, 0, 0 }, 0, patch); // faces -z? below
   SolverOptions o = Converged(1e-9);
-  o.Samples = 64;
+  o.FormFactorSamples = 64;
   const Solution s = SolveOne(mesh, o);
   // Interior faces point inward; the outside light hits only their backs.
   for (int e = 0; e < 6 * 64; ++e)
@@ -704,7 +704,7 @@ TEST(HardInvariants, MirrorSymmetricSceneGivesMirrorSymmetricResult)
   int patch = 1000;
   AddGrid(mesh, { 0.8, 0.8, 1.99 }, { 0, 0.4, 0 }, { 0.4, 0, 0 }, 2, 2, { 0.5, 0.5, 0.5 }, 0, patch);
   SolverOptions o = Converged(1e-9);
-  o.Samples = 0; // convex room: nothing to occlude, so no sampling noise either
+  o.FormFactorSamples = 0; // convex room: nothing to occlude, so no sampling noise either
   const Solution s = SolveOne(mesh, o);
   const SceneGeometry g(mesh);
   int pairs = 0;
@@ -729,7 +729,7 @@ TEST(HardInvariants, MoreReflectanceNeverDarkensAnything)
   SceneMesh dim = RandomRoom(rngA, 2, 0.5);
   SceneMesh bright = RandomRoom(rngB, 2, 1.0); // same geometry, reflectances >= dim's
   SolverOptions o = Converged(1e-9);
-  o.Samples = 16;
+  o.FormFactorSamples = 16;
   const Solution a = SolveOne(dim, o, 2), b = SolveOne(bright, o, 2);
   for (size_t i = 0; i < a.Radiosity.size(); ++i)
   {

@@ -21,7 +21,7 @@ namespace
 SolverOptions Hierarchical(double threshold = 1e-6)
 {
   SolverOptions o = Converged(threshold);
-  o.Solver = SolverMethod::Hierarchical;
+  o.SolverMethod = SolverMethod::Hierarchical;
   return o;
 }
 
@@ -52,7 +52,7 @@ TEST(Hierarchical, FurnaceGivesOneOverOneMinusRho)
     RadiositySolver solver(box);
     const Solution s = SolveLights(solver, box, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, Hierarchical(1e-7));
     ASSERT_TRUE(s.Statistics.Converged);
-    EXPECT_EQ(s.Statistics.Method, SolverMethod::Hierarchical);
+    EXPECT_EQ(s.Statistics.SolverMethod, SolverMethod::Hierarchical);
     EXPECT_GT(s.Statistics.PatchLinks, 0);
     // The mean within 0.5 %; single elements within 1 % (the corner interpolation's shape).
     const double expected = 1.0 / (1.0 - rho);
@@ -107,12 +107,12 @@ TEST(Hierarchical, EqualsProgressiveRefinementOnTheSameMesh)
   // and shot, per patch pair) alone differs by about 1 %; the bias between them is 0.1 %.
   const Solution fine = SolveRoom(mesh, [] {
     SolverOptions o = Converged(1e-4);
-    o.Solver = SolverMethod::ProgressiveRefinement;
-    o.Samples = 16;
+    o.SolverMethod = SolverMethod::ProgressiveRefinement;
+    o.FormFactorSamples = 16;
     return o;
   }());
   SolverOptions options = Hierarchical(1e-4);
-  options.Samples = 16;
+  options.FormFactorSamples = 16;
   const Solution linked = SolveRoom(mesh, options);
   EXPECT_LT(linked.Statistics.FormFactorCount, fine.Statistics.FormFactorCount / 5);
   for (double d : RelativeDifference(mesh, linked, fine))
@@ -167,12 +167,12 @@ TEST(Hierarchical, AutoPicksByScaleAndReportsTheCap)
   automatic.MaximumShots = 50;
   const RadiositySolver smallSolver(small);
   const Solution s = SolveLights(smallSolver, small, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, automatic);
-  EXPECT_EQ(s.Statistics.Method, SolverMethod::ProgressiveRefinement) << s.Statistics.MethodReason;
+  EXPECT_EQ(s.Statistics.SolverMethod, SolverMethod::ProgressiveRefinement) << s.Statistics.MethodReason;
   EXPECT_FALSE(s.Statistics.Converged);
   EXPECT_EQ(s.Statistics.Shots, 50);
   const SceneMesh large = Room(0.6, 0.3);
   const Solution l = SolveRoom(large, automatic);
-  EXPECT_EQ(l.Statistics.Method, SolverMethod::Hierarchical);
+  EXPECT_EQ(l.Statistics.SolverMethod, SolverMethod::Hierarchical);
   EXPECT_FALSE(l.Statistics.Converged);
   EXPECT_EQ(l.Statistics.Shots, 50);
 }
@@ -186,7 +186,7 @@ TEST(Hierarchical, HundredThousandElementsConverge)
   SolverOptions defaults;
   defaults.MaximumShots = 1000000;
   const Solution s = SolveRoom(mesh, defaults);
-  EXPECT_EQ(s.Statistics.Method, SolverMethod::Hierarchical) << s.Statistics.MethodReason;
+  EXPECT_EQ(s.Statistics.SolverMethod, SolverMethod::Hierarchical) << s.Statistics.MethodReason;
   EXPECT_TRUE(s.Statistics.Converged);
   for (const Vec3& b : s.Radiosity)
   {
@@ -217,8 +217,8 @@ TEST(Hierarchical, PatchesStraddlingAFootprintKeepTheirEnergy)
   for (SolverMethod method : { SolverMethod::ProgressiveRefinement, SolverMethod::Hierarchical })
   {
     SolverOptions options = Converged(1e-6);
-    options.Solver = method;
-    options.Samples = 64;
+    options.SolverMethod = method;
+    options.FormFactorSamples = 64;
     const RadiositySolver solver(mesh);
     const Solution sol = SolveLights(solver, mesh, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, options);
     const SceneGeometry& g = solver.Geometry();
@@ -258,8 +258,8 @@ TEST(Hierarchical, CeilingAboveALampsBackIsShelteredNotBlurred)
   for (SolverMethod method : { SolverMethod::ProgressiveRefinement, SolverMethod::Hierarchical })
   {
     SolverOptions options = Converged(1e-5);
-    options.Solver = method;
-    options.Samples = 16;
+    options.SolverMethod = method;
+    options.FormFactorSamples = 16;
     solutions.push_back(SolveLights(solver, mesh, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, options));
   }
   double ring = 0, difference = 0;
@@ -322,7 +322,7 @@ TEST(Hierarchical, StandardSeparateReportsTheMethodThatRan)
   const Solution separate = SolveRoom(mesh, Hierarchical(1e-4), SolutionMode::StandardSeparate);
   const Solution tagged = SolveRoom(mesh, Hierarchical(1e-4));
   const SolverStatistics& s = separate.Statistics;
-  EXPECT_EQ(s.Method, SolverMethod::Hierarchical);
+  EXPECT_EQ(s.SolverMethod, SolverMethod::Hierarchical);
   EXPECT_EQ(s.MethodReason, tagged.Statistics.MethodReason);
   EXPECT_EQ(s.ShotCap, tagged.Statistics.ShotCap);
   EXPECT_TRUE(s.Converged);

@@ -81,7 +81,7 @@ TEST(SceneImport, EmissiveMaterialsBecomeNamedLights)
   EXPECT_EQ(lights, 1);
 }
 
-TEST(SceneImport, LightPerObjectNamesLightsAfterObjects)
+TEST(SceneImport, LightsPerObjectNamesLightsAfterObjects)
 {
   RawScene raw = FloorAndLamp();
   // A second lamp object with the same material: one light by material, two by object.
@@ -95,7 +95,7 @@ TEST(SceneImport, LightPerObjectNamesLightsAfterObjects)
   ASSERT_EQ(BuildImportedScene(raw, ImportOptions(), byMaterial), "");
   EXPECT_EQ(byMaterial.LightNames.size(), 1u);
   ImportOptions options;
-  options.LightPerObject = true;
+  options.LightsPerObject = true;
   ASSERT_EQ(BuildImportedScene(raw, options, byObject), "");
   EXPECT_EQ(byObject.LightNames, (std::vector<std::string>{ "Lamp", "Lamp (2)" }));
   EXPECT_EQ(byObject.Mesh.LightId, (std::vector<int>{ -1, 0, 1 }));

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 using namespace radiosity;
 using radiosity_test::AddGrid;
@@ -36,7 +37,7 @@ TEST(Solver, FurnaceGivesOneOverOneMinusRho)
     // Progressive refinement's bound (Auto takes the links here, held to 0.5 % in
     // Hierarchical.FurnaceGivesOneOverOneMinusRho).
     SolverOptions o = Converged(1e-9);
-    o.Solver = SolverMethod::ProgressiveRefinement;
+    o.SolverMethod = SolverMethod::ProgressiveRefinement;
     Solution s = SolveLights(solver, box, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, o);
     ASSERT_TRUE(s.Statistics.Converged);
     const double expected = 1.0 / (1.0 - rho);
@@ -330,4 +331,87 @@ TEST(Solver, TimeBudgetStopsWithValidResult)
   {
     EXPECT_TRUE(std::isfinite(b.x) && b.x >= 0);
   }
+}
+
+TEST(Solver, StatisticsAppendTakesInEveryField)
+{
+  // StandardSeparate adds up its solves with Append: each field counted, the last one's,
+  // all of them, any of them or the most held at once, as its comment says. The size check
+  // fails when a field is added, so that it is merged in Append and checked here too.
+  static_assert(sizeof(void*) != 8 || sizeof(SolverStatistics) == 344,
+    "SolverStatistics changed: merge the new field in SolverStatistics::Append and check it below");
+  auto run = [](int k) {
+    SolverStatistics s;
+    s.Shots = 10 * k;
+    s.ShotCap = 100 * k;
+    s.Converged = k == 1;
+    s.Aborted = k == 2;
+    s.OutOfTime = k == 2;
+    s.AmbientAtCap = k == 1;
+    s.OutOfMemory = k == 1 ? "links would not fit" : "";
+    s.RayCount = 1000 * k;
+    s.RaysSkipped = 20 * k;
+    s.PairsUnblockable = 30 * k;
+    s.DistributionsSkipped = 40 * k;
+    s.SingleChannel = k == 1;
+    s.BlockingSurfaces = 5 * k;
+    s.FormFactorCount = 50 * k;
+    s.SolverMethod = k == 1 ? SolverMethod::ProgressiveRefinement : SolverMethod::Hierarchical;
+    s.MethodReason = "reason " + std::to_string(k);
+    s.FaceClusters = 6 * k;
+    s.PatchLinks = 70 * k;
+    s.ElementLinks = 80 * k;
+    s.VolumeLinks = 90 * k;
+    s.LinkBytes = k == 1 ? 5000.0 : 3000.0;
+    s.ShotPower = 1.5 * k;
+    s.ReceivedPower = 2.5 * k;
+    s.EmittedPower = 3.5 * k;
+    s.EscapedPower = 0.5 * k;
+    s.UnshotPower = 0.25 * k;
+    s.Ranks = 2 * k;
+    s.Collectives = 7 * k;
+    s.CollectiveBytes = 8.0 * k;
+    s.ShotCollectiveBytes = 4.0 * k;
+    s.CollectiveSeconds = 0.125 * k;
+    s.ReceivingElements = 11 * k;
+    s.OwnRays = 600 * k;
+    return s;
+  };
+  SolverStatistics all = SolverStatistics::Sequence();
+  all.Append(run(1));
+  all.Append(run(2));
+  EXPECT_EQ(all.Shots, 30);
+  EXPECT_EQ(all.ShotCap, 200);
+  EXPECT_FALSE(all.Converged);
+  EXPECT_TRUE(all.Aborted);
+  EXPECT_TRUE(all.OutOfTime);
+  EXPECT_TRUE(all.AmbientAtCap);
+  EXPECT_EQ(all.OutOfMemory, "links would not fit");
+  EXPECT_EQ(all.RayCount, 3000);
+  EXPECT_EQ(all.RaysSkipped, 60);
+  EXPECT_EQ(all.PairsUnblockable, 90);
+  EXPECT_EQ(all.DistributionsSkipped, 120);
+  EXPECT_FALSE(all.SingleChannel);
+  EXPECT_EQ(all.BlockingSurfaces, 10);
+  EXPECT_EQ(all.FormFactorCount, 150);
+  EXPECT_EQ(all.SolverMethod, SolverMethod::Hierarchical);
+  EXPECT_EQ(all.MethodReason, "reason 2");
+  EXPECT_EQ(all.FaceClusters, 12);
+  EXPECT_EQ(all.PatchLinks, 210);
+  EXPECT_EQ(all.ElementLinks, 240);
+  EXPECT_EQ(all.VolumeLinks, 270);
+  EXPECT_EQ(all.LinkBytes, 5000.0);
+  EXPECT_DOUBLE_EQ(all.ShotPower, 4.5);
+  EXPECT_DOUBLE_EQ(all.ReceivedPower, 7.5);
+  EXPECT_DOUBLE_EQ(all.EmittedPower, 10.5);
+  EXPECT_DOUBLE_EQ(all.EscapedPower, 1.5);
+  EXPECT_DOUBLE_EQ(all.UnshotPower, 0.75);
+  EXPECT_EQ(all.Ranks, 4);
+  EXPECT_EQ(all.Collectives, 21);
+  EXPECT_DOUBLE_EQ(all.CollectiveBytes, 24.0);
+  EXPECT_DOUBLE_EQ(all.ShotCollectiveBytes, 12.0);
+  EXPECT_DOUBLE_EQ(all.CollectiveSeconds, 0.375);
+  EXPECT_EQ(all.ReceivingElements, 22);
+  EXPECT_EQ(all.OwnRays, 1800);
+  EXPECT_TRUE(all.TimeHistory.empty()); // the histories are the caller's, weighted by power
 }

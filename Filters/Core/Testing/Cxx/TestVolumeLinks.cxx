@@ -56,8 +56,8 @@ SceneMesh TwoRooms()
 Solution SolveTwoRooms(const SceneMesh& mesh, SolverMethod method)
 {
   SolverOptions o = radiosity_test::Converged(1e-3);
-  o.Solver = method;
-  o.Samples = 16;
+  o.SolverMethod = method;
+  o.FormFactorSamples = 16;
   const RadiositySolver solver(mesh);
   EXPECT_TRUE(solver.Error().empty()) << solver.Error();
   return SolveLights(solver, mesh, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, o);

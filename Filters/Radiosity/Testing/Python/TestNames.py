@@ -155,12 +155,22 @@ extensions = relight.vtkRadiositySceneReader.GetFileExtensions().split()
 check(len(extensions) == len(set(extensions)),
       f"no extension is in two rows of the format table: {sorted(e for e in set(extensions) if extensions.count(e) > 1)}")
 
+# A light's row has one width: the core's (kSettingRowCells, through vtkRadiosityLights) is the XML's.
+widths = {p.get("number_of_elements_per_command") for p in root.iter("StringVectorProperty") if p.get("name") == "LightSettings"}
+check(widths == {str(relight.vtkRadiosityLights.GetSettingRowCells())},
+      f"LightRig.xml sends LightSettings rows of {widths} strings, the light rig reads "
+      f"{relight.vtkRadiosityLights.GetSettingRowCells()}")
+
 rows = setting_rows(SETTINGS)
-check(len(rows) == 7, f"docs/settings.md's table has {len(rows)} rows, expected 7")
+inputs = {"Input", "MovingLights", "DynamicObjects", "Selection", "DummyInput"}
+with_settings = {cls for cls, properties in commands.items() if set(properties) - inputs}
+check({cls for _, cls, _, _ in rows} == with_settings and len(rows) == len(with_settings),
+      f"docs/settings.md has a row for each class whose proxy has settings: rows "
+      f"{sorted(cls for _, cls, _, _ in rows)}, XML {sorted(with_settings)}")
 for proxy, cls, settings, methods in rows:
     wrapped = getattr(relight, cls)
     settable = {name for name, cs in commands.get(cls, {}).items() if any(c.startswith(("Set", "Add")) for c in cs)}
-    settable -= {"Input", "MovingLights", "DynamicObjects", "Selection", "DummyInput"}
+    settable -= inputs
     check(set(settings) == settable, f"{proxy}: docs/settings.md lists the XML's settings "
                                      f"(only in docs {sorted(set(settings) - settable)}, "
                                      f"only in XML {sorted(settable - set(settings))})")
