@@ -420,6 +420,27 @@ std::string AddAreaLights(const std::vector<radiosity::AreaLight>& areas, vtkPol
 }
 } // namespace
 
+namespace
+{
+/// What the marked scene tells: the upstream "no lights" warning gone where there now are
+/// lights, the lights checked on the scene, the warnings in the output, and a log line.
+void ReportMarked(vtkObject* self, vtkPolyData* output, const std::vector<std::string>& names,
+  vtkRadiosityAdapter::WarningList& warnings, const std::string& marked)
+{
+  if (!names.empty())
+  {
+    DropNoLightsWarning(output->GetFieldData());
+  }
+  for (const std::string& warning : CheckLights(output, names))
+  {
+    warnings.Add(self, warning);
+  }
+  warnings.AddTo(output->GetFieldData());
+  vtkLogF(INFO, "Mark Lights: %s; the scene has %d light%s", marked.c_str(), static_cast<int>(names.size()),
+    names.size() == 1 ? "" : "s");
+}
+} // namespace
+
 int vtkRadiosityLightMarker::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -472,18 +493,8 @@ int vtkRadiosityLightMarker::RequestData(
     }
     radiosity::CompactLights(lights.Id, lights.Names);
     WriteLights(lights, output);
-    if (!lights.Names.empty())
-    {
-      DropNoLightsWarning(output->GetFieldData());
-    }
-    for (const std::string& warning : CheckLights(output, lights.Names))
-    {
-      warnings.Add(this, warning);
-    }
-    warnings.AddTo(output->GetFieldData());
-    vtkLogF(INFO, "Mark Lights: %s; the scene has %d light%s",
-      Marked(count, this->LightName ? this->LightName : "Light", this->Chosen->AreaLights.size()).c_str(),
-      static_cast<int>(lights.Names.size()), lights.Names.size() == 1 ? "" : "s");
+    ReportMarked(this, output, lights.Names, warnings,
+      Marked(count, this->LightName ? this->LightName : "Light", this->Chosen->AreaLights.size()));
     return 1;
   }, parallel);
 }

@@ -1,6 +1,7 @@
 #include "vtkRadiosityMesher.h"
 #include "vtkRadiosityAbort.h"
 #include "vtkRadiosityAdapter.h"
+#include "vtkRadiosityMeshPieces.h"
 #include "vtkRadiosityPieces.h"
 
 #include "Mesh/Mesher.h"
@@ -23,8 +24,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
-#include <tuple>
 
 vtkStandardNewMacro(vtkRadiosityMesher);
 
@@ -47,35 +46,6 @@ vtkSmartPointer<vtkPolyData> AsPolyData(vtkDataSet* input)
   vtkSmartPointer<vtkPolyData> polygons = surface->GetOutput();
   polygons->GetFieldData()->PassData(input->GetFieldData());
   return polygons;
-}
-
-/// Cells share points (and triangles pair into quads) only if reflectance, light and
-/// emission all agree: one key per such material.
-std::vector<int> SurfaceKeys(const radiosity::SceneMesh& mesh, const std::vector<radiosity::Vec3>& emission)
-{
-  std::map<std::tuple<double, double, double, int, double, double, double>, int> materials;
-  std::vector<int> surfaceKey(mesh.NumberOfPolygons(), 0);
-  for (int i = 0; i < mesh.NumberOfPolygons() && i < static_cast<int>(mesh.Reflectance.size()); ++i)
-  {
-    const radiosity::Vec3& r = mesh.Reflectance[i];
-    const radiosity::Vec3 e = emission.empty() ? radiosity::Vec3() : emission[i];
-    const int light = i < static_cast<int>(mesh.LightId.size()) ? mesh.LightId[i] : -1;
-    const auto key = std::make_tuple(r.x, r.y, r.z, light, e.x, e.y, e.z);
-    surfaceKey[i] = materials.emplace(key, static_cast<int>(materials.size())).first->second;
-  }
-  return surfaceKey;
-}
-
-/// 1 for each cell that emits: of coincident copies in other materials the lamp is kept.
-std::vector<char> Lamps(const radiosity::SceneMesh& mesh, const std::vector<radiosity::Vec3>& emission)
-{
-  std::vector<char> lamps(mesh.NumberOfPolygons(), 0);
-  for (size_t i = 0; i < lamps.size(); ++i)
-  {
-    const bool lit = i < emission.size() && (emission[i].x > 0 || emission[i].y > 0 || emission[i].z > 0);
-    lamps[i] = lit || (i < mesh.LightId.size() && mesh.LightId[i] >= 0);
-  }
-  return lamps;
 }
 
 /// The mesher's options as this filter's properties set them, for `mesh` (its lamps, and
@@ -183,8 +153,8 @@ void vtkRadiosityMesher::SuggestFor(vtkDataSet* given)
     std::vector<radiosity::Vec3> emission;
     // Without valid arrays the mesher will refuse the input; the estimate then pairs all.
     vtkRadiosityAdapter::ReadSceneArrays(input, mesh, emission, error);
-    this->SeenInput->SurfaceKey = SurfaceKeys(mesh, emission);
-    this->SeenInput->Lamps = Lamps(mesh, emission);
+    this->SeenInput->SurfaceKey = vtkRadiosityMeshPieces::SurfaceKeys(mesh, emission);
+    this->SeenInput->Lamps = vtkRadiosityMeshPieces::Lamps(mesh, emission);
   }
   else
   {
@@ -226,10 +196,11 @@ std::string MeshPiece(vtkRadiosityMesher* self, vtkPolyData* input, double eleme
     return error;
   }
 
-  const std::vector<int> surfaceKey = SurfaceKeys(mesh, emission);
+  const std::vector<int> surfaceKey = vtkRadiosityMeshPieces::SurfaceKeys(mesh, emission);
 
   radiosity::MesherOptions options =
-    OptionsFor(self, mesh, Lamps(mesh, emission), whole.Polygons, whole.PointQuantum, whole.Surfaces);
+    OptionsFor(self, mesh, vtkRadiosityMeshPieces::Lamps(mesh, emission), whole.Polygons, whole.PointQuantum,
+      whole.Surfaces);
   options.PatchSize = self->GetPatchSizeInUse();
   options.ElementSize = elementSize;
   options.ElementBudget = budget;
@@ -255,9 +226,9 @@ double ElementSizeEverywhere(vtkRadiosityMesher* self, vtkMultiProcessController
     vtkRadiosityAdapter::ReadSceneArrays(input, mesh, emission, error);
   // Counted as the rank will mesh its piece: triangle pairs merged, contacts cut.
   const radiosity::MesherOptions options =
-    OptionsFor(self, mesh, usable ? Lamps(mesh, emission) : std::vector<char>(), whole.Polygons, whole.PointQuantum,
-      whole.Surfaces);
-  const std::vector<int> keys = usable ? SurfaceKeys(mesh, emission) : std::vector<int>();
+    OptionsFor(self, mesh, usable ? vtkRadiosityMeshPieces::Lamps(mesh, emission) : std::vector<char>(),
+      whole.Polygons, whole.PointQuantum, whole.Surfaces);
+  const std::vector<int> keys = usable ? vtkRadiosityMeshPieces::SurfaceKeys(mesh, emission) : std::vector<int>();
   const radiosity::ElementCounter counter(mesh.Points, mesh.Offsets, mesh.Connectivity, keys, options);
   auto count = [&](double size) {
     const double here = usable ? counter(self->GetPatchSizeInUse(), size) : 0;
@@ -278,116 +249,6 @@ double ElementSizeEverywhere(vtkRadiosityMesher* self, vtkMultiProcessController
         std::to_string(static_cast<long long>(budget)) + "); using " + std::to_string(size) + ".");
   }
   return size;
-}
-
-} // namespace
-
-namespace
-{
-/// How far this rank's float points can be off their places (0 for none or double ones).
-double OwnQuantum(vtkPolyData* input, bool upstream)
-{
-  if (upstream || !input || input->GetNumberOfPoints() == 0)
-  {
-    return 0.0;
-  }
-  double bounds[6];
-  input->GetBounds(bounds);
-  const double farthest = std::max({ std::fabs(bounds[0]), std::fabs(bounds[1]), std::fabs(bounds[2]),
-    std::fabs(bounds[3]), std::fabs(bounds[4]), std::fabs(bounds[5]) });
-  return vtkRadiosityAdapter::PointQuantum(input, farthest);
-}
-
-/// Every rank's polygons, in rank order: surfaces of other pieces that stand on this
-/// piece's cut it (ContactCuts.h), and copies and overlaps are found across the pieces
-/// (WholeSceneCuts.h), with surface keys numbered over the whole scene so the ranks agree.
-struct GatheredScene
-{
-  radiosity::SceneMesh Mesh;
-  radiosity::WholeSceneSurfaces Surfaces;
-  bool HasSurfaces = false; ///< false where the whole's arrays could not be read
-};
-
-GatheredScene GatherWholeScene(vtkMultiProcessController* parallel, vtkPolyData* input, bool upstream)
-{
-  vtkNew<vtkPolyData> shape;
-  if (!upstream && input)
-  {
-    shape->SetPoints(input->GetPoints());
-    shape->SetPolys(input->GetPolys());
-    // What tells the surfaces apart, and nothing more (a string array would make every
-    // rank take VTK's slow way); Emission as zeros where a piece has none, since the
-    // pieces' append keeps only the arrays all of them have.
-    for (const char* name : { "Reflectance", "LightId", "Emission" })
-    {
-      if (vtkAbstractArray* array = input->GetCellData()->GetAbstractArray(name))
-      {
-        shape->GetCellData()->AddArray(array);
-      }
-    }
-    if (!shape->GetCellData()->HasArray("Emission"))
-    {
-      vtkNew<vtkDoubleArray> none;
-      none->SetName("Emission");
-      none->SetNumberOfComponents(3);
-      none->SetNumberOfTuples(shape->GetNumberOfCells());
-      none->Fill(0.0);
-      shape->GetCellData()->AddArray(none);
-    }
-  }
-  vtkNew<vtkPolyData> gathered;
-  vtkRadiosityPieces::AllGather(parallel, shape, gathered);
-  long long first = 0;
-  vtkRadiosityPieces::SumOverRanks(parallel, shape->GetNumberOfCells(), &first);
-  GatheredScene whole;
-  std::string ignored; // a rank's own piece reports its problems itself
-  std::vector<radiosity::Vec3> emission;
-  whole.HasSurfaces = vtkRadiosityAdapter::CopyPolygons(gathered, whole.Mesh, ignored) &&
-    vtkRadiosityAdapter::ReadSceneArrays(gathered, whole.Mesh, emission, ignored);
-  if (whole.HasSurfaces)
-  {
-    whole.Surfaces.SurfaceKey = SurfaceKeys(whole.Mesh, emission);
-    whole.Surfaces.Lamps = Lamps(whole.Mesh, emission);
-    whole.Surfaces.FirstPolygon = static_cast<int>(first);
-  }
-  return whole;
-}
-
-/// Every rank's warnings, this rank's printed as they came and the others' kept for the
-/// output's Warnings array: the client shows one piece's field data, and a copy found on
-/// another rank was missing from it.
-vtkRadiosityAdapter::WarningList EveryRanksWarnings(
-  vtkMultiProcessController* parallel, const vtkRadiosityAdapter::WarningList& mine)
-{
-  vtkRadiosityAdapter::WarningList all(true);
-  for (const std::string& message : vtkRadiosityPieces::AllGatherStrings(parallel, mine.GetMessages()))
-  {
-    const std::vector<std::string>& kept = all.GetMessages();
-    if (std::find(kept.begin(), kept.end(), message) == kept.end()) // one said by every rank, once
-    {
-      all.Keep(message);
-    }
-  }
-  return all;
-}
-
-/// The ranks' verdict on their pieces: this rank's error, another's, or none at all cells;
-/// `firstPatch` receives the patches of the ranks before this one.
-std::string AgreeOnPieces(vtkMultiProcessController* parallel, const std::string& error, bool empty,
-  vtkPolyData* input, const radiosity::MeshedPolygons& meshed, long long& firstPatch)
-{
-  const long long failures = vtkRadiosityPieces::SumOverRanks(parallel, error.empty() ? 0 : 1);
-  const long long cells = vtkRadiosityPieces::SumOverRanks(parallel, empty ? 0 : input->GetNumberOfCells());
-  vtkRadiosityPieces::SumOverRanks(parallel, error.empty() ? meshed.Patches : 0, &firstPatch);
-  if (!error.empty())
-  {
-    return error;
-  }
-  if (failures)
-  {
-    return "another rank could not mesh its piece (see its error)";
-  }
-  return cells ? std::string() : std::string("the input has no polygons");
 }
 
 void AddFieldInt(vtkFieldData* fields, const char* name, int value)
@@ -468,7 +329,7 @@ void WriteMeshed(vtkPolyData* output, vtkPolyData* input, const radiosity::Meshe
   fields->AddArray(patch);
   vtkNew<vtkDoubleArray> quantum;
   quantum->SetName(vtkRadiosityAdapter::PointQuantumName);
-  quantum->InsertNextValue(std::max(OwnQuantum(input, false), wholeQuantum));
+  quantum->InsertNextValue(std::max(vtkRadiosityMeshPieces::OwnQuantum(input, false), wholeQuantum));
   fields->AddArray(quantum);
   warnings.AddTo(fields);
 }
@@ -500,16 +361,13 @@ int vtkRadiosityMesher::RequestData(
     const bool upstream = vtkRadiosityAdapter::FailedUpstream(input);
     const bool empty = !input || input->GetNumberOfCells() == 0;
     vtkRadiosityAdapter::WarningList warnings;
-    const GatheredScene gathered = parallel ? GatherWholeScene(parallel, input, upstream) : GatheredScene();
+    using vtkRadiosityMeshPieces::GatheredScene;
+    const GatheredScene gathered =
+      parallel ? vtkRadiosityMeshPieces::GatherWholeScene(this, parallel, input, upstream, warnings) : GatheredScene();
     const radiosity::SceneMesh& whole = gathered.Mesh;
     const radiosity::PolygonArrays wholeArrays{ whole.Points, whole.Offsets, whole.Connectivity };
-    if (parallel && !gathered.HasSurfaces && whole.NumberOfPolygons() > 0 && parallel->GetLocalProcessId() == 0)
-    {
-      warnings.Add(this, "Coincident copies and overlapping faces are looked for within each piece only: the "
-                         "pieces' Reflectance and LightId could not be read together");
-    }
     const WholeScene wholeScene{ parallel ? &wholeArrays : nullptr,
-      parallel ? vtkRadiosityPieces::MaxOverRanks(parallel, OwnQuantum(input, upstream)) : 0.0,
+      parallel ? vtkRadiosityPieces::MaxOverRanks(parallel, vtkRadiosityMeshPieces::OwnQuantum(input, upstream)) : 0.0,
       parallel && gathered.HasSurfaces ? &gathered.Surfaces : nullptr };
     // Sizes from the scene are taken from all of it, so every rank meshes alike.
     this->ChooseSizes(vtkDataSet::GetData(inputVector[0]), parallel != nullptr,
@@ -527,8 +385,8 @@ int vtkRadiosityMesher::RequestData(
     long long firstPatch = 0;
     if (parallel)
     {
-      error = AgreeOnPieces(parallel, error, empty, input, meshed, firstPatch);
-      warnings = EveryRanksWarnings(parallel, warnings);
+      error = vtkRadiosityMeshPieces::AgreeOnPieces(parallel, error, empty, input, meshed, firstPatch);
+      warnings = vtkRadiosityMeshPieces::EveryRanksWarnings(parallel, warnings);
     }
     if (!error.empty())
     {
