@@ -154,8 +154,8 @@ private:
       // The most held at once: the links found and sorted, or sorted beside the sums. Against
       // a limit: all of it; against the free memory: what is still to come.
       const double most = std::max(all + sorted, sorted + sums);
-      problem = CheckMemory(Options.MemoryLimit > 0 ? most : most - held,
-        sums > all ? "the clustered method's links and sums" : "the clustered method's links", Options.MemoryLimit);
+      problem = CheckMemory(Options.Clustered.MemoryLimit > 0 ? most : most - held,
+        sums > all ? "the clustered method's links and sums" : "the clustered method's links", Options.Clustered.MemoryLimit);
     }
     return EveryRankFits(problem, "another rank's links would not fit in its memory");
   }
@@ -273,7 +273,7 @@ private:
   bool Link(const ElementTree& tree, const ShooterFormFactors& estimator, ClusterLinkSet& links)
   {
     const double sums = SumsBytes(tree);
-    if (!EveryRankFits(CheckMemory(sums, "the clustered method's sums", Options.MemoryLimit),
+    if (!EveryRankFits(CheckMemory(sums, "the clustered method's sums", Options.Clustered.MemoryLimit),
           "another rank's sums would not fit in its memory"))
     {
       return false;

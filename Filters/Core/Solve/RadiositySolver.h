@@ -59,10 +59,6 @@ struct SolverOptions
   double ConvergenceThreshold = 1e-3;
   /// Stop after this many seconds of shooting (0: no limit); the result stays valid.
   double TimeBudget = 0;
-  /// Bytes the clustered method's links, and then its links and per-node sums, may take
-  /// (0: 90 % of the memory the system has free when they are made). A solve that would
-  /// need more stops with the direct light, the reason in SolverStatistics::OutOfMemory.
-  double MemoryLimit = 0;
   radiosity::FormFactorMethod FormFactorMethod = radiosity::FormFactorMethod::Analytic;
   /// Analytic: shadow rays per receiver and shot (0: ignore occlusion); Hemicube: the
   /// resolution of its top face; MonteCarlo: rays per shot.
@@ -115,6 +111,10 @@ struct SolverOptions
     /// (113,002 elements) against Mitsuba 3, 20.3 % mean error at 3, 16.3 % at 4, 11.5 % at
     /// 6, 9.1 % at 8, in 33, 40, 75 and 107 s (docs/benchmarks.md).
     double Separation = 4.0;
+    /// Bytes the links, and then the links and per-node sums, may take (0: 90 % of the
+    /// memory the system has free when they are made). A solve that would need more stops
+    /// with the direct light, the reason in SolverStatistics::OutOfMemory.
+    double MemoryLimit = 0;
   } Clustered;
   /// Several processes solving together: each computes the transport to its own share of
   /// the receivers (OwnedPatches), and they agree on each shot through Group.SumAll. Every

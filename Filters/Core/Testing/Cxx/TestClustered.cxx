@@ -222,7 +222,7 @@ TEST(Clustered, LinksThatWouldNotFitStopTheSolveWithTheDirectLightAndSayWhy)
   full.SeparateDirect = true;
   SolverOptions capped = full;
   const Solution a = Solve(mesh, 8, full);
-  capped.MemoryLimit = SumsBytes(mesh, 8) + 0.1 * a.Statistics.LinkBytes;
+  capped.Clustered.MemoryLimit = SumsBytes(mesh, 8) + 0.1 * a.Statistics.LinkBytes;
   const Solution b = Solve(mesh, 8, capped);
   const SolverStatistics& t = b.Statistics;
   EXPECT_TRUE(a.Statistics.OutOfMemory.empty()) << a.Statistics.OutOfMemory;
@@ -236,7 +236,7 @@ TEST(Clustered, LinksThatWouldNotFitStopTheSolveWithTheDirectLightAndSayWhy)
     ASSERT_NEAR(b.Radiosity[i].x, a.Direct[i].x, 1e-12 + 1e-9 * a.Direct[i].x) << i;
   }
   EXPECT_NEAR(radiosity_test::AbsorbedPower(mesh, b) + t.EscapedPower + t.UnshotPower, t.EmittedPower, 1e-9 * t.EmittedPower);
-  capped.MemoryLimit = 10 * a.Statistics.LinkBytes; // room to spare: the same answer
+  capped.Clustered.MemoryLimit = 10 * a.Statistics.LinkBytes; // room to spare: the same answer
   EXPECT_EQ(Solve(mesh, 8, capped).Radiosity[7].x, a.Radiosity[7].x);
 }
 
@@ -253,7 +253,7 @@ TEST(Clustered, SumsThatWouldNotFitStopTheSolveBeforeItsLinks)
   const double sums = SumsBytes(mesh, 8);
   std::printf("links %.2f MB, sums %.2f MB\n", a.Statistics.LinkBytes / 1e6, sums / 1e6);
   SolverOptions capped = full;
-  capped.MemoryLimit = 0.5 * sums;
+  capped.Clustered.MemoryLimit = 0.5 * sums;
   const Solution b = Solve(mesh, 8, capped);
   const SolverStatistics& t = b.Statistics;
   EXPECT_NE(t.OutOfMemory.find("the clustered method's sums needs about"), std::string::npos) << t.OutOfMemory;
@@ -264,7 +264,7 @@ TEST(Clustered, SumsThatWouldNotFitStopTheSolveBeforeItsLinks)
     ASSERT_NEAR(b.Radiosity[i].x, a.Direct[i].x, 1e-12 + 1e-9 * a.Direct[i].x) << i;
   }
   EXPECT_NEAR(radiosity_test::AbsorbedPower(mesh, b) + t.EscapedPower + t.UnshotPower, t.EmittedPower, 1e-9 * t.EmittedPower);
-  capped.MemoryLimit = 1.1 * sums + 0.5 * a.Statistics.LinkBytes; // the sums fit, not the links beside them
+  capped.Clustered.MemoryLimit = 1.1 * sums + 0.5 * a.Statistics.LinkBytes; // the sums fit, not the links beside them
   const SolverStatistics& u = Solve(mesh, 8, capped).Statistics;
   EXPECT_NE(u.OutOfMemory.find("the clustered method's links and sums needs about"), std::string::npos) << u.OutOfMemory;
   EXPECT_LT(u.VolumeLinks, a.Statistics.VolumeLinks / 2);
