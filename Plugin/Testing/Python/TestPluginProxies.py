@@ -184,18 +184,9 @@ def check_scene_files(scene_reader):
           "File > Open of an IFC picks the plugin's reader (%s)" % (opened.GetXMLName() if opened else None))
 
 
-def main(argv):
-    if len(argv) < 3:
-        print("usage: pvbatch %s <plugin.so> <cornell_box.vtp> [screenshot.png]" % argv[0])
-        return 2
-    plugin_path, data_path = argv[1], argv[2]
-    screenshot = argv[3] if len(argv) > 3 else None
-
-    LoadPlugin(plugin_path, ns=globals())
-    for name in ("RadiosityMesher", "LightTaggedRadiosity", "RadiosityRelight"):
-        check(name in globals(), "plugin did not provide the filter '%s'" % name)
-
-    # --- pipeline ---------------------------------------------------------
+def make_pipeline(data_path):
+    """The Cornell box meshed, solved and relit (one light set by LightSettings), and the
+    plugin's reader on an OBJ; the settings table checked against these proxies."""
     reader = XMLPolyDataReader(registrationName="cornell_box.vtp", FileName=[data_path])
     mesher = RadiosityMesher(registrationName="Mesher", Input=reader)
     mesher.PatchSize = 100.0   # Cornell box is in millimetres
@@ -216,8 +207,11 @@ def main(argv):
           "LightSettings has %d elements, expected 6" % len(relight.LightSettings))
 
     UpdatePipeline(proxy=relight)
+    return reader, mesher, solver, relight, scene_reader
 
-    # --- information properties -------------------------------------------
+
+def check_information(relight):
+    """The information properties: the lights' names and the settings in effect."""
     relight.UpdatePipelineInformation()  # pulls the information_only properties
     names = list(relight.LightNamesInfo)  # one element per light, not a joined string
     check(LIGHT in names, "LightNamesInfo is %r, expected it to list '%s'" % (names, LIGHT))
@@ -235,8 +229,12 @@ def main(argv):
     relight.GetProperty("LightSettings").SMProperty.ResetToDomainDefaults()
     check(list(relight.LightSettings) == effective,
           "LightSettings reset to the settings in effect reads %s" % list(relight.LightSettings))
+    return names
 
-    # --- a script reads the data's lights back after the first update, as a reader's
+
+def check_settings_read_back(solver, relight):
+    """A new relight filter reads the data's lights back without taking them as settings."""
+    # A script reads the data's lights back after the first update, as a reader's
     # arrays; they are not sent back as settings (which would pin today's defaults and
     # modify the filter), and a setting of the user's is kept.
     unset = RadiosityRelight(Input=solver)
@@ -265,7 +263,10 @@ def main(argv):
     check(len(relight.LightSettings) == 6 and float(relight.LightSettings[4]) == INTENSITY,
           "the user's setting reads back %s after updates" % list(relight.LightSettings))
 
-    # --- sizes that follow the scene in a script too: a mesher on a reader that has not
+
+def check_sizes_in_script(data_path):
+    """A mesher on a reader that has not run meshes at the sizes the GUI would suggest."""
+    # Sizes that follow the scene in a script too: a mesher on a reader that has not
     # run keeps 0 and meshes at the sizes the GUI would suggest (100 and 25 mm).
     fresh = XMLPolyDataReader(FileName=[data_path])
     unsized = RadiosityMesher(Input=fresh)
@@ -284,7 +285,10 @@ def main(argv):
     for proxy in (unsized, fresh):
         Delete(proxy)
 
-    # --- sizes that follow the scene: a mesher added to an executed input starts from
+
+def check_suggested_sizes(reader):
+    """A mesher added to an executed input starts from sizes that follow the scene."""
+    # Sizes that follow the scene: a mesher added to an executed input starts from
     # them (the Cornell box is about 556 mm wide: diagonal 962, a sixth rounded to 100).
     reader.UpdatePipeline()
     suggested = RadiosityMesher(Input=reader)
@@ -305,7 +309,9 @@ def main(argv):
           % (suggested.PatchSize, suggested.ElementSize, suggested.SuggestedElements, elements, suggested.InputArea))
     Delete(suggested)
 
-    # --- a light schedule makes the filter time-aware -------------------------
+
+def check_schedule(solver):
+    """A light schedule makes the relight filter time-aware."""
     schedule = RadiosityRelight(Input=solver)
     schedule.ScheduleEntries = ["0", LIGHT, "1", "1", "1", "1", "1", "4", LIGHT, "1", "0", "0", "2", "1"]
     schedule.UpdatePipelineInformation()
@@ -314,7 +320,9 @@ def main(argv):
     schedule.UpdatePipeline(2.0)
     Delete(schedule)
 
-    # --- a moving light through the second input ------------------------------
+
+def check_moving_light(mesher):
+    """A moving light through the relight filter's second input."""
     basis_solver = LightTaggedRadiosity(Input=mesher, PatchBasis=1, MaximumShots=200)
     lamp = PointSource(Center=[278.0, 400.0, 280.0], NumberOfPoints=1, Radius=0.0)
     moving = RadiosityRelight(Input=basis_solver, MovingLights=lamp)
@@ -326,7 +334,9 @@ def main(argv):
     for proxy in (moving, lamp, basis_solver):
         Delete(proxy)
 
-    # --- fetch results ----------------------------------------------------
+
+def check_results(solver, relight):
+    """The fetched outputs: arrays, finite values, the relighting arithmetic, lit elements."""
     solved = servermanager.Fetch(solver)
     relit = servermanager.Fetch(relight)
     check(solved is not None and solved.IsA("vtkPolyData"), "solver output is not vtkPolyData")
@@ -385,8 +395,11 @@ def main(argv):
     mean = float(np.mean(relit_cells[mask]))
     check(math.isfinite(mean) and mean > 0.0,
           "mean relit Radiosity of the element cells is %r, expected > 0" % mean)
+    return relit, mean
 
-    # --- render -----------------------------------------------------------
+
+def check_render(solver, relight, relit, screenshot):
+    """Show() gives the relit pictures; a failed solve."""
     view = GetActiveViewOrCreate("RenderView")
     view.ViewSize = [600, 600]
     view.OrientationAxesVisibility = 0
@@ -430,8 +443,26 @@ def main(argv):
     Delete(view)
     del display, view
 
-    check_scene_files(scene_reader)
 
+def main(argv):
+    if len(argv) < 3:
+        print("usage: pvbatch %s <plugin.so> <cornell_box.vtp> [screenshot.png]" % argv[0])
+        return 2
+    plugin_path, data_path = argv[1], argv[2]
+    screenshot = argv[3] if len(argv) > 3 else None
+    LoadPlugin(plugin_path, ns=globals())
+    for name in ("RadiosityMesher", "LightTaggedRadiosity", "RadiosityRelight"):
+        check(name in globals(), "plugin did not provide the filter '%s'" % name)
+    reader, mesher, solver, relight, scene_reader = make_pipeline(data_path)
+    names = check_information(relight)
+    check_settings_read_back(solver, relight)
+    check_sizes_in_script(data_path)
+    check_suggested_sizes(reader)
+    check_schedule(solver)
+    check_moving_light(mesher)
+    relit, mean = check_results(solver, relight)
+    check_render(solver, relight, relit, screenshot)
+    check_scene_files(scene_reader)
     print("TestPluginProxies passed: %d elements, %d points, light(s) %s, "
           "mean relit radiosity %.6g" % (relit.GetNumberOfCells(), relit.GetNumberOfPoints(),
                                          ";".join(names), mean))
