@@ -1,17 +1,13 @@
 #include "vtkRadiosityRelight.h"
 
 #include "Relight/LightRig.h"
-#include "Geometry/PointAverages.h"
 #include "Base/Text.h"
-#include "Relight/MovingLights.h"
-#include "Solve/PatchBasis.h"
 #include "Relight/Relight.h"
 #include "vtkRadiosityAdapter.h"
 #include "vtkRadiosityLightDefaults.h"
+#include "vtkRadiosityMovingScene.h"
 #include "vtkRadiosityCombine.h"
 #include "vtkRadiosityPieces.h"
-#include "vtkRadiosityPreparedScenes.h"
-#include "Base/WorkerPool.h"
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -20,11 +16,9 @@
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
-#include "vtkIntArray.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
 #include "vtkNew.h"
@@ -52,14 +46,6 @@ struct vtkRadiosityRelight::Internals
   vtkMTimeType MeteredFor = 0;  ///< for this input
   bool MeteredCells = false;    ///< on its cells (else its points)
   radiosity::SaidOnce Said; ///< the light settings' warnings, each said once
-};
-
-struct vtkRadiosityRelight::MovingState
-{
-  vtkMTimeType SceneTime = 0, DynamicTime = 0;
-  radiosity::SceneMesh Scene, Dynamic;
-  std::unique_ptr<radiosity::MovingLightShader> Shader;
-  bool Reused = false; ///< the shader shades on the solver's kept preparation
 };
 
 vtkRadiosityRelight::vtkRadiosityRelight()
@@ -98,249 +84,21 @@ int vtkRadiosityRelight::FillInputPortInformation(int port, vtkInformation* info
   return 1;
 }
 
-namespace
-{
-/// result += values, tuple by tuple, as VTK's SMP tools split it (ParaView's threads).
-void AddTo(vtkFloatArray* result, const std::vector<radiosity::Vec3>& values)
-{
-  float* out = result->GetPointer(0);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(values.size()), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      out[3 * i + 0] += static_cast<float>(values[i].x);
-      out[3 * i + 1] += static_cast<float>(values[i].y);
-      out[3 * i + 2] += static_cast<float>(values[i].z);
-    }
-  });
-}
-
-/// The solver's basis, per element (cell array) or per patch node (field array plus the
-/// cell arrays that interpolate it), checked against the scene's patches.
-bool ReadBasis(vtkPolyData* scene, int patches, radiosity::BasisView& basis, std::string& error)
-{
-  const vtkIdType cells = scene->GetNumberOfCells();
-  auto* perElement = vtkFloatArray::SafeDownCast(scene->GetCellData()->GetArray("PatchBasis"));
-  auto* perNode = vtkFloatArray::SafeDownCast(scene->GetFieldData()->GetArray("PatchBasis"));
-  auto* nodes = vtkIntArray::SafeDownCast(scene->GetCellData()->GetArray("PatchBasisNodes"));
-  auto* weights = vtkFloatArray::SafeDownCast(scene->GetCellData()->GetArray("PatchBasisWeights"));
-  vtkFloatArray* values = perElement ? perElement : perNode;
-  if (!values || (!perElement && (!nodes || !weights)))
-  {
-    error = "'PatchBasis' must be a float array: per cell, or in the field data with the int cell array "
-            "'PatchBasisNodes' and the float cell array 'PatchBasisWeights'";
-    return false;
-  }
-  if (values->GetNumberOfComponents() != 3 * patches || (perElement && values->GetNumberOfTuples() != cells))
-  {
-    error = "'PatchBasis' has " + std::to_string(values->GetNumberOfTuples()) + " tuples of " +
-      std::to_string(values->GetNumberOfComponents()) + " components; the scene needs " +
-      (perElement ? std::to_string(cells) : std::string("one per node")) + " of " + std::to_string(3 * patches) +
-      " (" + std::to_string(patches) + " patches)";
-    return false;
-  }
-  basis = { patches, static_cast<int>(values->GetNumberOfTuples()), values->GetPointer(0) };
-  if (perElement)
-  {
-    return true;
-  }
-  if (nodes->GetNumberOfComponents() != 3 || weights->GetNumberOfComponents() != 3 ||
-    nodes->GetNumberOfTuples() != cells || weights->GetNumberOfTuples() != cells)
-  {
-    error = "'PatchBasisNodes' and 'PatchBasisWeights' need 3 components per cell";
-    return false;
-  }
-  const int* node = nodes->GetPointer(0);
-  if (std::any_of(node, node + 3 * cells, [&](int k) { return k < 0 || k >= basis.Receivers; }))
-  {
-    error = "'PatchBasisNodes' refers to a node outside 'PatchBasis' (" + std::to_string(basis.Receivers) + " nodes)";
-    return false;
-  }
-  basis.Node = node;
-  basis.Weight = weights->GetPointer(0);
-  return true;
-}
-}
-
-namespace
-{
-/// The moving lights of `lights` (points with Color, Intensity and optional Normal);
-/// false with `error` naming the first bad one.
-bool ReadMovingLights(vtkPolyData* lights, std::vector<radiosity::MovingLight>& movers, std::string& error)
-{
-  movers.assign(lights->GetNumberOfPoints(), radiosity::MovingLight());
-  vtkDataArray* color = lights->GetPointData()->GetArray("Color");
-  vtkDataArray* intensity = lights->GetPointData()->GetArray("Intensity");
-  vtkDataArray* normal = lights->GetPointData()->GetArray("Normal");
-  for (vtkDataArray* array : { color, intensity, normal })
-  {
-    if (array && array->GetNumberOfTuples() != lights->GetNumberOfPoints())
-    {
-      error = std::string("moving-light array '") + array->GetName() + "' needs one tuple per light";
-      return false;
-    }
-  }
-  for (vtkIdType i = 0; i < lights->GetNumberOfPoints(); ++i)
-  {
-    radiosity::MovingLight& light = movers[i];
-    double v[3];
-    lights->GetPoint(i, v);
-    light.Position = { v[0], v[1], v[2] };
-    if (color && color->GetNumberOfComponents() == 3)
-    {
-      color->GetTuple(i, v);
-      light.Color = { v[0], v[1], v[2] };
-    }
-    if (intensity)
-    {
-      light.Intensity = intensity->GetComponent(i, 0);
-    }
-    if (normal && normal->GetNumberOfComponents() == 3)
-    {
-      normal->GetTuple(i, v);
-      light.Normal = { v[0], v[1], v[2] };
-    }
-    const radiosity::Vec3& p = light.Position;
-    const std::string invalid = radiosity::InvalidLightValues(light.Intensity, light.Color);
-    if (!std::isfinite(p.x + p.y + p.z) || !invalid.empty())
-    {
-      error = "moving light " + std::to_string(i) + (invalid.empty() ? " has a non-finite position" : " " + invalid);
-      return false;
-    }
-    const radiosity::Vec3& n = light.Normal;
-    if (normal && normal->GetNumberOfComponents() == 3 && !(std::isfinite(n.x + n.y + n.z) && radiosity::Norm(n) > 0))
-    {
-      error = "moving light " + std::to_string(i) + " has a zero or non-finite Normal; leave the array out for "
-                                                    "an isotropic light";
-      return false;
-    }
-  }
-  return true;
-}
-}
-
-/// Where only the dynamic objects changed: swaps them in the shader's ray scene and keeps
-/// the rest; false with `error` where they cannot be read or built.
-bool vtkRadiosityRelight::SwapDynamicObjects(vtkPolyData* dynamic, std::string& error)
-{
-  MovingState& state = *this->Moving;
-  const vtkMTimeType dynamicTime = dynamic ? dynamic->GetMTime() : 0;
-  // Only the dynamic objects moved: swap them in the ray scene, keep the rest.
-  state.Dynamic = radiosity::SceneMesh();
-  if (dynamic && dynamic->GetNumberOfPolys() > 0 && !vtkRadiosityAdapter::CopyPolygons(dynamic, state.Dynamic, error))
-  {
-    error = "dynamic objects: " + error;
-    state.DynamicTime = 0;
-    return false;
-  }
-  bool swapped = false; // the objects' BVH is built on ParaView's threads
-  vtkRadiosityAdapter::SharedPool()->Within([&] {
-    swapped = state.Shader->SetDynamicObjects(state.Dynamic.NumberOfPolygons() > 0 ? &state.Dynamic : nullptr);
-  });
-  if (!swapped)
-  {
-    error = state.Shader->Error();
-    state.Shader.reset();
-    return false;
-  }
-  state.DynamicTime = dynamicTime;
-  return true;
-}
-
-/// Reads the scene and the dynamic objects anew and makes the shader, on the solver's
-/// preparation where it is kept; false with `error` where they cannot be read or prepared.
-bool vtkRadiosityRelight::RebuildMovingScene(vtkPolyData* scene, vtkPolyData* dynamic, std::string& error)
-{
-  MovingState& state = *this->Moving;
-  state = MovingState();
-  std::vector<radiosity::Vec3> unused;
-  int lightCount = 0;
-  if (!vtkRadiosityAdapter::CopyPolygons(scene, state.Scene, error) ||
-    !vtkRadiosityAdapter::ReadSceneArrays(scene, state.Scene, unused, error) ||
-    !(error = radiosity::ValidateScene(state.Scene, lightCount)).empty())
-  {
-    return false;
-  }
-  if (dynamic && dynamic->GetNumberOfPolys() > 0 &&
-    !vtkRadiosityAdapter::CopyPolygons(dynamic, state.Dynamic, error))
-  {
-    error = "dynamic objects: " + error;
-    return false;
-  }
-  // The solver's preparation where it is kept (its patches are the basis's), else one
-  // made here the same way and kept for the EXR writer.
-  radiosity::PreparedScene prepared = vtkRadiosityPreparedScenes::Find(scene, true);
-  state.Reused = prepared.Geometry != nullptr;
-  if (!prepared.Geometry &&
-    !(error = radiosity::PrepareTransport(state.Scene, vtkRadiosityAdapter::Threads(0), {}, prepared)).empty())
-  {
-    return false;
-  }
-  vtkRadiosityPreparedScenes::Keep(scene, prepared);
-  vtkRadiosityAdapter::SharedPool()->Within([&] {
-    state.Shader.reset(new radiosity::MovingLightShader(
-      state.Scene, prepared, state.Dynamic.NumberOfPolygons() > 0 ? &state.Dynamic : nullptr));
-  });
-  if (!state.Shader->Error().empty())
-  {
-    error = state.Shader->Error();
-    state.Shader.reset();
-    return false;
-  }
-  state.SceneTime = scene->GetMTime();
-  state.DynamicTime = dynamic ? dynamic->GetMTime() : 0;
-  return true;
-}
-
 bool vtkRadiosityRelight::AddMovingLights(vtkPolyData* scene, vtkPolyData* lights, vtkPolyData* dynamic,
   vtkFloatArray* pointResult, vtkFloatArray* cellResult, std::string& error)
 {
   const auto start = std::chrono::steady_clock::now();
-  if (!scene->GetCellData()->GetArray("PatchBasis") && !scene->GetFieldData()->GetArray("PatchBasis"))
-  {
-    error = "moving lights need the solver's float array 'PatchBasis' (vtkLightTaggedRadiosity::PatchBasisOn())";
-    return false;
-  }
   if (!this->Moving)
   {
-    this->Moving = new MovingState;
+    this->Moving = new vtkRadiosityMovingScene;
   }
-  MovingState& state = *this->Moving;
-  const vtkMTimeType sceneTime = scene->GetMTime();
-  const vtkMTimeType dynamicTime = dynamic ? dynamic->GetMTime() : 0;
-  if (state.Shader && state.SceneTime == sceneTime && state.DynamicTime != dynamicTime &&
-    !this->SwapDynamicObjects(dynamic, error))
+  if (!this->Moving->Shade(scene, lights, dynamic, pointResult, cellResult, error))
   {
     return false;
   }
-  if ((!state.Shader || state.SceneTime != sceneTime || state.DynamicTime != dynamicTime) &&
-    !this->RebuildMovingScene(scene, dynamic, error))
-  {
-    return false;
-  }
-  const radiosity::SceneGeometry& g = state.Shader->Geometry();
-  radiosity::BasisView basis;
-  std::vector<radiosity::MovingLight> movers;
-  if (!ReadBasis(scene, static_cast<int>(g.PatchElements.size()), basis, error) ||
-    !ReadMovingLights(lights, movers, error))
-  {
-    return false;
-  }
-  std::vector<radiosity::Vec3> direct, cells;
-  this->LastMovingSceneReused = state.Reused;
-  const auto pool = vtkRadiosityAdapter::SharedPool();
-  this->LastMovingRays = state.Shader->Direct(movers, *pool, direct);
-  radiosity::AddBasisInterreflection(g, direct, basis, *pool, cells);
-  if (cellResult->GetNumberOfTuples() == static_cast<vtkIdType>(cells.size()))
-  {
-    AddTo(cellResult, cells);
-  }
-  if (pointResult->GetNumberOfTuples() == scene->GetNumberOfPoints())
-  {
-    const std::vector<radiosity::Vec3> points = radiosity::AverageToPoints(state.Scene, g, cells, 1);
-    AddTo(pointResult, points);
-  }
-  this->LastMovingSeconds =
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  this->LastMovingSceneReused = this->Moving->Reused();
+  this->LastMovingRays = this->Moving->Rays();
+  this->LastMovingSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return true;
 }
 

@@ -45,6 +45,7 @@
 
 class vtkFloatArray;
 class vtkStringArray;
+class vtkRadiosityMovingScene;
 
 #include <memory>  // for the internals
 #include <string>  // for names
@@ -177,8 +178,7 @@ private:
   /// Relights `input` (with its moving lights and dynamic objects, either may be null)
   /// into `output`; 0 with the error reported when it cannot.
   int Relight(vtkPolyData* input, vtkPolyData* movers, vtkPolyData* dynamic, double time, vtkPolyData* output);
-  struct MovingState;
-  MovingState* Moving = nullptr; ///< scene and Embree shader, rebuilt only when inputs change
+  vtkRadiosityMovingScene* Moving = nullptr; ///< scene and Embree shader, rebuilt only when inputs change
   /// The weights of the lights `names` at `time` (settings, schedule, defaults); "" or
   /// why they are invalid. Keeps the names and settings in effect for the Info properties.
   std::string ResolveWeights(
@@ -191,8 +191,6 @@ private:
   std::string Combine(vtkPolyData* input, vtkPolyData* movers, vtkPolyData* dynamic,
     const std::vector<std::string>& arrays, const std::vector<double>& weights, vtkFloatArray* points,
     vtkFloatArray* cells);
-  bool SwapDynamicObjects(vtkPolyData* dynamic, std::string& error);
-  bool RebuildMovingScene(vtkPolyData* scene, vtkPolyData* dynamic, std::string& error);
   bool AddMovingLights(vtkPolyData* scene, vtkPolyData* lights, vtkPolyData* dynamic,
     vtkFloatArray* pointResult, vtkFloatArray* cellResult, std::string& error);
   long long LastMovingRays = 0;
