@@ -67,7 +67,7 @@ void pqRadiosityAreaLightsWidget::cellEdited(int row, int column)
   {
     return;
   }
-    const QString text = item ? item->text().trimmed() : QString();
+  const QString text = item->text().trimmed();
   QStringList parts = column == 0 ? QStringList{ text }
                                   : text.split(QRegularExpression("[,;\\s]+"), Qt::SkipEmptyParts);
   bool usable = parts.size() == this->count(column) && !(column == 0 && text.isEmpty());

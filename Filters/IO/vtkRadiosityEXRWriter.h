@@ -93,8 +93,9 @@ public:
 
   /**
    * Writes the file, as vtkWriter does, but returns 0 with an error where a filter upstream
-   * failed: the update stops there and this writer never runs (vtkWriter would return 1
-   * with no file written).
+   * failed: the update stops there and this writer does not run (vtkWriter would return 1
+   * with no file written); a second Write of the same failed pipeline reaches the writer,
+   * which finds its input marked as failed and says so.
    */
   int Write() override;
 

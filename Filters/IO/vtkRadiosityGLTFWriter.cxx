@@ -299,7 +299,11 @@ void vtkRadiosityGLTFWriter::WriteData()
   {
     error = "Exposure is " + std::to_string(this->Exposure) + "; it scales radiosity to colors: finite, not negative";
   }
-  if (!error.empty() || !input || vtkRadiosityAdapter::FailedUpstream(input) ||
+  if (error.empty() && vtkRadiosityAdapter::FailedUpstream(input))
+  {
+    error = "a filter upstream failed (see its error)"; // a second Write of a failed pipeline
+  }
+  if (!error.empty() || !input ||
     !vtkRadiosityAdapter::CopyPolygons(input, mesh, error) || mesh.NumberOfPolygons() == 0)
   {
     vtkErrorMacro(<< "Cannot write glTF: " << (error.empty() ? "the input has no polygons" : error) << ".");

@@ -13,7 +13,10 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPoints.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
 #include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
 
 #include <vtksys/SystemTools.hxx>
@@ -122,7 +125,7 @@ std::string vtkRadiositySceneReader::GetFileExtensions()
 int vtkRadiositySceneReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  return vtkRadiosityAdapter::Guarded(this, nullptr, output, [&]() -> int {
+  const int read = vtkRadiosityAdapter::Guarded(this, nullptr, output, [&]() -> int {
     if (!this->FileName || !*this->FileName)
     {
       vtkErrorMacro(<< "Cannot import: no FileName set.");
@@ -157,6 +160,14 @@ int vtkRadiositySceneReader::RequestData(vtkInformation*, vtkInformationVector**
     vtkLogF(INFO, "Imported %s", summary.c_str());
     return 1;
   });
+  // On ParaView's MPI server only rank 0 reads (a file is not split into pieces), while the
+  // filters below run on every rank and meet in collectives: a failed read passes its
+  // empty, marked output on, so that they fail on all ranks together instead of rank 0
+  // stopping alone and leaving the others waiting.
+  vtkInformation* info = outputVector->GetInformationObject(0);
+  const bool pieces = info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) &&
+    info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) > 1;
+  return read || pieces ? 1 : 0;
 }
 
 void vtkRadiositySceneReader::PrintSelf(ostream& os, vtkIndent indent)

@@ -298,7 +298,7 @@ bool UpdateForWriting(vtkAlgorithm* writer)
   const int updated = streaming ? streaming->UpdateWholeExtent() : writer->GetExecutive()->Update();
   if (!updated)
   {
-    vtkErrorWithObjectMacro(writer, << "Cannot write: a filter upstream failed (see its error).");
+    vtkErrorWithObjectMacro(writer, << "Cannot write: the update failed upstream (see the filter's error).");
   }
   return updated != 0;
 }

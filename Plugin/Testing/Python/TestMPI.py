@@ -144,6 +144,12 @@ result, errors, code = parallel_run("broken")
 stopped = [e for e in errors if "LightMarker" in e and "returned failure" in e]
 check(result.GetNumberOfCells() == 0 and any("MaterialPattern needs" in e for e in errors) and len(stopped) == 2,
       f"a Mark Lights error on rank 0 ends the run on both ranks: {[e[-90:] for e in errors][:3]}")
+# The plugin's reader runs on rank 0 alone (a file is not split into pieces): a file it
+# cannot read fails the mesher on every rank, none left waiting in its collectives.
+result, errors, code = parallel_run("unreadable")
+check(result.GetNumberOfCells() == 0 and any("Cannot import" in e for e in errors)
+      and any("Cannot mesh" in e for e in errors),
+      f"an unreadable file on 2 ranks ends the run on both: {[e[-80:] for e in errors][:3]}")
 # Float points of a scene in two parts, one room at the origin and one 50 km away (a site
 # model): the ranks mesh with the float noise of the whole scene, not each of its own piece
 # (the piece at the origin took its noise for 1e4 times finer; the solver then used the

@@ -137,6 +137,7 @@ def check_failed_solve(view, solver, display):
     solver.UpdatePipeline()
     failed = solver.GetDataInformation().GetNumberOfPoints()
     during = display.GetRepresentedDataInformation().GetNumberOfPoints()
+    check(during == before, "the relight's display shows %d points after the failed solve, its last %d" % (during, before))
     check(before > 0 and failed == 0,
           "after a failed solve the solver's output has %d points (the relight showed %d), expected none" % (failed, before))
     solver.ConvergenceThreshold = threshold

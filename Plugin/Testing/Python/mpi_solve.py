@@ -1,7 +1,8 @@
 """Run by TestMPI.py as `mpiexec -np N pvbatch --mpi mpi_solve.py SCENE OUT MODE`: meshes and
 solves SCENE on ParaView's MPI server, the scene as read (all on rank 0), spread over the
 ranks (MODE redistributed; budget: the same with MaximumElements; pieces: a .pvtp read a piece per rank), with an area light added by Mark Lights (marked), or with a
-Mark Lights that fails on rank 0 (broken: every rank must finish, none waiting), or
+Mark Lights that fails on rank 0 (broken: every rank must finish, none waiting), from the
+plugin's reader on a missing file (unreadable: the same), or
 spread and relit with moving lights and a dynamic object read from the files LIGHTS and
 BLOCKER (moving), and writes the relit result gathered on rank 0, with the rank of each
 point (ProcessId)."""
@@ -10,12 +11,14 @@ import sys
 
 from paraview import servermanager
 from paraview.simple import (LightTaggedRadiosity, MarkLights, ProcessIdScalars, RadiosityMesher,
-                             OpenDataFile, RadiosityRelight, RedistributeDataSet, SaveData,
+                             OpenDataFile, RadiosityRelight, RadiositySceneReader, RedistributeDataSet, SaveData,
                              XMLPolyDataReader)
 from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 
 scene_path, out_path, mode = sys.argv[1], sys.argv[2], sys.argv[3]
 scene = OpenDataFile(scene_path) if scene_path.endswith(".pvtp") else XMLPolyDataReader(FileName=[scene_path])
+if mode == "unreadable":  # the plugin's reader on a file that is not there: read by rank 0 alone
+    scene = RadiositySceneReader(FileName=scene_path + ".missing.obj")
 if mode in ("redistributed", "budget", "moving"):  # "moving-whole": the moving lights on the scene as read
     scene = RedistributeDataSet(Input=scene)
 if mode in ("marked", "broken"):

@@ -38,7 +38,7 @@ def import_scene(path, unit="m", lights_per_object=False, require_lights=True):
     reader.SetLightsPerObject(bool(lights_per_object))
     catcher = ErrorCatcher(reader)
     reader.Update()
-    if catcher.errors:
+    if catcher.failed():
         raise OSError(catcher.first_error())
     scene = reader.GetOutput()
     if require_lights and not scene.GetFieldData().GetAbstractArray("LightNames").GetNumberOfValues():

@@ -56,9 +56,17 @@ class ErrorCatcher:
     _warning.CallDataType = "string0"
     _report.CallDataType = "string0"
 
+    def failed(self):
+        """Whether the object failed: its own error, or (a filter given the failed output of
+        another as its input) only the executive's report that it returned failure."""
+        return bool(self.errors or self.reports)
+
     def first_error(self):
         """The first error's own words, without VTK's file, line and object prefix."""
-        return own_words(self.errors[0]) if self.errors else "unknown error"
+        if self.errors:
+            return own_words(self.errors[0])
+        return "its input is the output of a filter that failed (see that filter's error)" if self.reports \
+            else "unknown error"
 
 
 def own_words(message):
@@ -147,7 +155,7 @@ def solve(scene, patch_size=None, element_size=None, **solver_settings):
     for catcher in catchers:
         for message in catcher.warnings:
             warnings.warn(own_words(message), RuntimeWarning, stacklevel=2)
-    failed = [c for c in catchers if c.errors]
+    failed = [c for c in catchers if c.failed()]
     if failed:
         raise RuntimeError(failed[0].first_error())  # the filter's own words, not VTK's prefix
     return solver

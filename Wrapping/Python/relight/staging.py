@@ -46,7 +46,7 @@ def mark_lights(scene, *lights, cells=(), material=None, name="Light", color=(1.
                             light.height, *light.color)
     catcher = ErrorCatcher(marker)
     marker.Update()
-    if catcher.errors:
+    if catcher.failed():
         raise ValueError(catcher.first_error())
     for message in catcher.warnings:  # a lamp that lights nothing, faces away, sits in a surface
         warnings.warn(own_words(message), RuntimeWarning, stacklevel=2)

@@ -173,7 +173,7 @@ TEST(Conservation, LampRoomAtRhoNearOneNeverGains)
 TEST(Conservation, EveryMethodOfTheTableRunsAsItselfAndLosesNoLight)
 {
   // Each row of SolverMethodTable() (a new method is one more row): asked for by name it
-  // runs, says so (Statistics.Method: the default names progressive refinement), converges,
+  // runs, says so (Statistics.SolverMethod: the default names progressive refinement), converges,
   // and in the closed lamp room the surfaces absorb what the lamp emits, no more (a little
   // less: what reaches the lamp's back, which neither reflects nor absorbs, is lost).
   const SceneMesh mesh = LampRoom(0.5);
