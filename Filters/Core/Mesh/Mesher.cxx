@@ -812,7 +812,8 @@ double ChooseElementSize(const PolygonArrays& polygons, const Contacts& contacts
   else if (wanted > 2e6)
   {
     message << "ElementSize " << size << " makes " << wanted << " elements: solving takes minutes and about "
-            << wanted * 1.6e-6 << " GB with 8 lights. Set MaximumElements (or a larger ElementSize) to bound it.";
+            << wanted * 1.6e-6 << " GB if solved with 8 lights. Set MaximumElements (or a larger ElementSize) to "
+               "bound it.";
   }
   if (o.Warning && !message.str().empty())
   {

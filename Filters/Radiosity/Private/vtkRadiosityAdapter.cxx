@@ -50,7 +50,9 @@ bool CopyPolygons(vtkPolyData* input, radiosity::SceneMesh& mesh, std::string& e
 {
   if (!input || input->GetNumberOfPolys() == 0)
   {
-    error = "the input has no polygons";
+    error = input && input->GetNumberOfStrips() > 0
+      ? "the input has triangle strips and no polygons; only polygons are read (apply vtkTriangleFilter first)"
+      : "the input has no polygons";
     return false;
   }
   if (input->GetNumberOfVerts() + input->GetNumberOfLines() + input->GetNumberOfStrips() > 0)
@@ -263,7 +265,14 @@ int Guarded(vtkAlgorithm* self, vtkDataObject* input, vtkPolyData* output,
   const std::function<int()>& work, vtkMultiProcessController* ranks)
 {
   int done = 0;
-  if (!FailedUpstream(input))
+  if (FailedUpstream(input))
+  {
+    // Only where the update reaches this filter anyway: a second update of a failed
+    // pipeline, or the failed output set as its input directly.
+    vtkErrorWithObjectMacro(self, << "Cannot run: its input is the output of a filter that failed (see that "
+                                     "filter's error).");
+  }
+  else
   {
     const std::string failure = Caught([&]() {
       done = work() != 0 ? 1 : 0;

@@ -76,8 +76,8 @@ std::string Caught(const std::function<std::string()>& work);
 /// what RequestData returns: 1, or 0 when the work failed, as VTK filters do (the executive
 /// then stops the update, so the filters downstream do not run). Running out of memory or
 /// any other exception becomes the filter's error. On failure `output` (may be null) is
-/// emptied and marked with FailureMarker. An input so marked (set directly from a failed
-/// output) fails without a message of its own. With `ranks` (ParaView's MPI server) the
+/// emptied and marked with FailureMarker. An input so marked (a second update of a failed
+/// pipeline, or a failed output set as the input) fails with one line that says so. With `ranks` (ParaView's MPI server) the
 /// ranks agree: one rank's failure fails them all, so none runs the filters downstream
 /// into a collective that the others never reach.
 int Guarded(vtkAlgorithm* self, vtkDataObject* input, vtkPolyData* output,

@@ -1,5 +1,6 @@
 """Helpers around the filters: reading scenes, running the pipeline, pictures."""
 
+import math
 import os
 import re
 import warnings
@@ -65,6 +66,9 @@ class ErrorCatcher:
         """The first error's own words, without VTK's file, line and object prefix."""
         if self.errors:
             return own_words(self.errors[0])
+        said = [r for r in self.reports if "returned failure for request" not in r]
+        if said:  # the executive's own reason (an input port left unconnected)
+            return own_words(said[0])
         return "its input is the output of a filter that failed (see that filter's error)" if self.reports \
             else "unknown error"
 
@@ -138,6 +142,10 @@ def solve(scene, patch_size=None, element_size=None, **solver_settings):
     if not isinstance(scene, vtkDataSet):
         raise TypeError(f"relight.solve needs a vtkPolyData scene (or another vtkDataSet of polygons), "
                         f"not {type(scene).__name__}")
+    for name, size in (("patch_size", patch_size), ("element_size", element_size)):
+        if size is not None and not (isinstance(size, (int, float)) and math.isfinite(size) and size > 0):
+            raise ValueError(f"relight.solve: {name} needs to be a positive length in the scene's unit "
+                             f"(or None for the scene's suggestion), not {size!r}")
     mesher = vtkRadiosityMesher()
     mesher.SetInputData(scene)
     if patch_size is None or element_size is None:

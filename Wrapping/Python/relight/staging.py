@@ -6,8 +6,11 @@ Lights filter, ``in_room`` and ``on_ground`` set the model in a closed room or o
 plane sized from the model itself (so in the model's unit), keeping every array it has.
 """
 
+import math
 import warnings
 from collections import namedtuple
+
+from vtkmodules.vtkCommonDataModel import vtkDataSet
 
 from .scene import ErrorCatcher, own_words
 from .vtkRadiosityFilters import vtkRadiosityLightMarker
@@ -17,14 +20,36 @@ AreaLight = namedtuple("AreaLight", "name centre normal width height color disk"
 AXES = {"x": 0, "y": 1, "z": 2}
 
 
+def _numbers(value, count, what, low=-math.inf):
+    """`value` as `count` finite floats of at least `low`; ValueError naming `what` if not."""
+    values = value if isinstance(value, (tuple, list)) else (value,) if count == 1 else None
+    try:
+        floats = tuple(float(v) for v in values) if values is not None and len(values) == count else None
+    except (TypeError, ValueError):
+        floats = None
+    if floats is None or not all(math.isfinite(v) and v >= low for v in floats):
+        numbers = "a finite number" if count == 1 else f"{count} finite numbers"
+        bound = "" if low == -math.inf else f" of at least {low:g}" if count == 1 else f", each at least {low:g}"
+        raise ValueError(f"{what} needs {numbers}{bound}, not {value!r}")
+    return floats
+
+
 def area_light(name, centre, normal, size, color=(1.0, 1.0, 1.0), intensity=1.0, disk=False):
     """A lamp that emits from one side: a rectangle (`size` = width or (width, height)) or,
     with disk=True, a disk of diameter `size`, centred at `centre` and facing `normal`;
-    it emits `color` x `intensity` per unit area (W/m^2 per channel at unit relight)."""
-    width, height = (size, size) if disk or not isinstance(size, (tuple, list)) else size
-    emission = tuple(float(c) * float(intensity) for c in color)
-    return AreaLight(str(name), tuple(map(float, centre)), tuple(map(float, normal)), float(width), float(height),
-                     emission, bool(disk))
+    it emits `color` x `intensity` per unit area (W/m^2 per channel at unit relight).
+    Raises ValueError naming the argument that cannot make a lamp."""
+    what = f"area light {name!r}:"
+    sizes = (size, size) if disk or not isinstance(size, (tuple, list)) else size
+    width, height = _numbers(sizes, 2, f"{what} size", 0.0)
+    if not (width > 0 and height > 0):
+        raise ValueError(f"{what} needs a positive size, not {size!r}")
+    normal = _numbers(normal, 3, f"{what} normal")
+    if not any(normal):
+        raise ValueError(f"{what} normal is zero: give the direction the lamp faces")
+    intensity = _numbers(intensity, 1, f"{what} intensity", 0.0)[0]
+    emission = tuple(c * intensity for c in _numbers(color, 3, f"{what} color", 0.0))
+    return AreaLight(str(name), _numbers(centre, 3, f"{what} centre"), normal, width, height, emission, bool(disk))
 
 
 def mark_lights(scene, *lights, cells=(), material=None, name="Light", color=(1.0, 1.0, 1.0), intensity=1.0):
@@ -33,10 +58,16 @@ def mark_lights(scene, *lights, cells=(), material=None, name="Light", color=(1.
     light `name` emitting `color` x `intensity`. Raises ValueError naming the problem; the
     lights' checks (a lamp that lights nothing, faces away, lies in a surface) come as
     RuntimeWarnings."""
+    if not isinstance(scene, vtkDataSet):
+        raise TypeError(f"mark_lights needs a vtkPolyData scene, not {type(scene).__name__}")
+    bad = [light for light in lights if not isinstance(light, AreaLight)]
+    if bad:
+        raise TypeError(f"mark_lights takes lamps made by relight.area_light, not {bad[0]!r}")
+    intensity = _numbers(intensity, 1, "mark_lights: intensity", 0.0)[0]
     marker = vtkRadiosityLightMarker()
     marker.SetInputData(scene)
     marker.SetLightName(name)
-    marker.SetEmission(*(float(c) * float(intensity) for c in color))
+    marker.SetEmission(*(c * intensity for c in _numbers(color, 3, "mark_lights: color", 0.0)))
     if material:
         marker.SetMaterialPattern(material)
     for cell in cells:
@@ -78,6 +109,9 @@ def on_ground(model, margin=1.0, up="y", reflectance=(0.5, 0.5, 0.5)):
 
 
 def _room_box(model, margin, up):
+    if not isinstance(model, vtkDataSet):
+        raise TypeError(f"the model needs to be a vtkPolyData (relight.import_scene reads one), "
+                        f"not {type(model).__name__}")
     if up not in AXES:
         raise ValueError(f"up must be one of {', '.join(AXES)}, not {up!r}")
     if not margin > 0:
@@ -174,8 +208,18 @@ def _lies_in_plane(model, axis, level, tolerance):
     return False
 
 
+def _reflectance(value, what):
+    """An RGB reflectance in [0, 1]; ValueError naming `what` if not."""
+    rgb = _numbers(value, 3, what, 0.0)
+    if max(rgb) > 1:
+        raise ValueError(f"{what} needs three numbers from 0 to 1 (a surface reflects at most what it receives), "
+                         f"not {value!r}")
+    return rgb
+
+
 def _box_faces(low, high, up, wall, floor):
     """The six faces of the box [low, high] facing inwards: (corners, reflectance, kind)."""
+    wall, floor = (_reflectance(r, what) for r, what in ((wall, "reflectance"), (floor, "floor_reflectance")))
     faces = []
     for axis in range(3):
         a, b = (axis + 1) % 3, (axis + 2) % 3

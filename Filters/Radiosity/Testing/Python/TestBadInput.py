@@ -96,6 +96,14 @@ expect_error(solver, huge, "there are only 2 cells")
 # Geometry
 expect_error(solver, vtkPolyData(), "no polygons")
 expect_error(mesher, vtkPolyData(), "no polygons")
+# Triangle strips alone (vtkStripper's output): said, with the filter that turns them into polygons.
+from vtkmodules.vtkFiltersCore import vtkStripper, vtkTriangleFilter
+triangles = vtkTriangleFilter()
+triangles.SetInputData(scene())
+stripper = vtkStripper()
+stripper.SetInputConnection(triangles.GetOutputPort())
+stripper.Update()
+expect_error(mesher, stripper.GetOutput(), "vtkTriangleFilter")
 flat = [(0, 0, 1), (0, 0, 1), (1, 1, 1), (1, 1, 1), (0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)]
 expect_error(solver, scene(points=flat), "cell 0 has zero area")
 expect_error(mesher, scene(points=flat), "cell 0 has zero area")

@@ -139,15 +139,31 @@ def plain_plane():
     return plane.GetOutput()
 
 
-# Clear errors.
-for name, call, words in (
-        ("no size", lambda: relight.mark_lights(room, relight.area_light("L", (0, 0.9, 0), (0, -1, 0), 0)), "positive size"),
-        ("bad axis", lambda: relight.in_room(model, up="w"), "up must be"),
-        ("no Reflectance", lambda: relight.in_room(plain_plane()), "Reflectance")):
+# Clear errors, where the argument is given (not later, at the solve, naming a cell).
+nan = float("nan")
+for name, call, kind, words in (
+        ("no size", lambda: relight.mark_lights(room, relight.area_light("L", (0, 0.9, 0), (0, -1, 0), 0)),
+         ValueError, "positive size"),
+        ("bad axis", lambda: relight.in_room(model, up="w"), ValueError, "up must be"),
+        ("no Reflectance", lambda: relight.in_room(plain_plane()), ValueError, "Reflectance"),
+        ("a centre of two numbers", lambda: relight.area_light("L", (0, 1), (0, -1, 0), 0.5), ValueError, "centre"),
+        ("a negative intensity", lambda: relight.area_light("L", (0, 1, 0), (0, -1, 0), 0.5, intensity=-3),
+         ValueError, "intensity"),
+        ("a zero normal", lambda: relight.area_light("L", (0, 1, 0), (0, 0, 0), 0.5), ValueError, "normal"),
+        ("a NaN color", lambda: relight.area_light("L", (0, 1, 0), (0, -1, 0), 0.5, color=(1, nan, 1)),
+         ValueError, "color"),
+        ("no scene", lambda: relight.mark_lights(None, relight.area_light("L", (0, 1, 0), (0, -1, 0), 0.5)),
+         TypeError, "vtkPolyData"),
+        ("a lamp not made by area_light", lambda: relight.mark_lights(room, ("L", (0, 1, 0))), TypeError, "area_light"),
+        ("a room reflecting more than it gets", lambda: relight.in_room(model, reflectance=(2, 2, 2)),
+         ValueError, "reflectance"),
+        ("no model", lambda: relight.in_room(None), TypeError, "vtkPolyData"),
+        ("a negative patch size", lambda: relight.solve(room, -1.0, 0.5), ValueError, "patch_size"),
+        ("a NaN element size", lambda: relight.solve(room, 0.5, nan), ValueError, "element_size")):
     try:
         call()
         check(False, f"{name}: an error")
-    except ValueError as error:
-        check(words in str(error), f"{name}: ValueError naming it ({error})")
+    except kind as error:
+        check(words in str(error), f"{name}: {kind.__name__} naming it ({error})")
 
 finish("TestStaging")
