@@ -3,12 +3,19 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 
 namespace radiosity
 {
 
 std::string WriteAtomically(const std::string& path, const std::function<void(const char*, bool&)>& write)
 {
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  std::error_code unused;
+  if (!folder.empty() && !std::filesystem::is_directory(folder, unused))
+  {
+    return "the folder '" + folder.string() + "' does not exist"; // not "cannot open <path>.part"
+  }
   const std::string temporary = path + ".part";
   bool created = false;
   try

@@ -155,6 +155,9 @@ def solve(scene, patch_size=None, element_size=None, **solver_settings):
     solver = vtkLightTaggedRadiosity()
     solver.SetInputConnection(mesher.GetOutputPort())
     for name, value in solver_settings.items():
+        if not hasattr(solver, "Set" + name):
+            raise TypeError(f"relight.solve: no solver setting {name!r} (vtkLightTaggedRadiosity has no Set{name}; "
+                            "the settings are listed in docs/settings.md)")
         getattr(solver, "Set" + name)(value)
     catchers = [ErrorCatcher(mesher), ErrorCatcher(solver)]
     solver.Update()
@@ -229,6 +232,7 @@ def render_png(data, path, camera, size=(640, 480)):
     (ambient 1, diffuse 0): what you see is the solution.
     `camera` = (position, focal_point, view_up, view_angle_degrees).
     """
+    _check_camera(camera)
     if data.GetNumberOfPoints() == 0:
         raise ValueError("render_png got empty data: Update() the relight filter before taking its output")
     if data.GetPointData().GetArray("DisplayColors") is None:
@@ -247,12 +251,31 @@ def render_png(data, path, camera, size=(640, 480)):
         raise OSError(f"cannot write '{path}' (VTK error code {writer.GetErrorCode()})")
 
 
+def _check_camera(camera):
+    """ValueError unless `camera` is (position, focal point, view-up, view angle) that can
+    show something: a silent, empty picture is what VTK makes of the others."""
+    try:
+        position, focal, up, angle = camera
+        numbers = [float(v) for v in (*position, *focal, *up)] + [float(angle)]
+        usable = len(position) == len(focal) == len(up) == 3 and all(math.isfinite(v) for v in numbers)
+    except (TypeError, ValueError):
+        usable = False
+    if not usable:
+        raise ValueError(f"camera needs (position, focal point, view-up, view angle in degrees), three finite "
+                         f"numbers each and a number, not {camera!r}")
+    if tuple(map(float, position)) == tuple(map(float, focal)):
+        raise ValueError(f"the camera's position and focal point are the same point {tuple(position)}: it looks nowhere")
+    if not 0 < float(angle) < 180:
+        raise ValueError(f"the camera's view angle needs to be between 0 and 180 degrees, not {angle!r}")
+
+
 class FrameRenderer:
     """An off-screen, unlit view of relit data (DisplayColors shown as they are), one window
     reused for many frames (an animation). With `mapper` (a vtkRadiosityRelightMapper
     given the solver's output), the frames are relit on the GPU instead."""
 
     def __init__(self, camera, size=(640, 480), mapper=None):
+        _check_camera(camera)
         self.mapper = mapper or vtkPolyDataMapper()
         if mapper is None:
             self.mapper.SetScalarModeToUsePointData()

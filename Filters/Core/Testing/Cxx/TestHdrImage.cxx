@@ -164,3 +164,13 @@ TEST(HdrImage, PacketsOfRaysHitWhatSingleRaysHit)
   EXPECT_GT(blockedCount, 50); // behind the wall, seen from the light
   EXPECT_LT(blockedCount, 203);
 }
+
+TEST(HdrImage, AFolderThatIsNotThereIsNamed)
+{
+  // The writers' temporary file would otherwise fail as "cannot open <path>.part".
+  const std::string folder = ::testing::TempDir() + "no_such_folder_for_radiosity";
+  const std::string error = WriteExr(folder + "/view.exr", 2, 2, std::vector<float>(12, 1.0f));
+  EXPECT_NE(error.find("the folder '" + folder + "' does not exist"), std::string::npos) << error;
+  std::FILE* part = std::fopen((folder + "/view.exr.part").c_str(), "rb");
+  EXPECT_EQ(part, nullptr);
+}

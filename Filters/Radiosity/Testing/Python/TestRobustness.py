@@ -42,7 +42,7 @@ refused("NaN camera position", "must be finite", camera=((float("nan"), 0, 0),) 
 refused("camera at its focal point", "no view direction", camera=(CAMERA[1],) + CAMERA[1:])
 refused("view-up along the view", "view-up", camera=CAMERA[:2] + ((0, 0, 1), 40))
 refused("a directory as the file", "Is a directory", path=folder)
-refused("a missing folder", "No such file", path=os.path.join(folder, "missing", "x.exr"))
+refused("a missing folder", "does not exist", path=os.path.join(folder, "missing", "x.exr"))
 refused("an empty file name", "no FileName", path="")
 # The new picture is written beside the old one and renamed over it: when that fails, the
 # old file is untouched (here the temporary name is taken by a directory).

@@ -159,7 +159,13 @@ for name, call, kind, words in (
          ValueError, "reflectance"),
         ("no model", lambda: relight.in_room(None), TypeError, "vtkPolyData"),
         ("a negative patch size", lambda: relight.solve(room, -1.0, 0.5), ValueError, "patch_size"),
-        ("a NaN element size", lambda: relight.solve(room, 0.5, nan), ValueError, "element_size")):
+        ("a NaN element size", lambda: relight.solve(room, 0.5, nan), ValueError, "element_size"),
+        ("an unknown solver setting", lambda: relight.solve(room, 0.5, 0.25, MaxShots=3), TypeError, "MaxShots"),
+        ("a camera at its focal point", lambda: relight.render_png(relight.furnace_box(), "/tmp/x.png",
+                                                                   ((1, 1, 1), (1, 1, 1), (0, 1, 0), 60)),
+         ValueError, "focal point"),
+        ("a camera of two numbers", lambda: relight.FrameRenderer(((1, 1), (0, 0, 0), (0, 1, 0), 60)),
+         ValueError, "camera needs")):
     try:
         call()
         check(False, f"{name}: an error")
