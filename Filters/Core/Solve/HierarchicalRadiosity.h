@@ -4,12 +4,34 @@
 #ifndef RadiosityCore_HierarchicalRadiosity_h
 #define RadiosityCore_HierarchicalRadiosity_h
 
-#include "Solve/RadiositySolver.h"
-
 #include <chrono>
+#include <vector>
 
 namespace radiosity
 {
+
+struct SceneGeometry;
+struct SceneMesh;
+struct Solution;
+struct SolverOptions;
+struct Vec3;
+class Visibility;
+
+/// What the hierarchical method alone reads (SolverOptions::Hierarchical).
+struct HierarchicalSettings
+{
+  /// An emitter's first shot (its direct light) reaches every element with its own
+  /// shadow rays, as in progressive refinement. Off: it links like any other shooter,
+  /// which is much cheaper when many patches emit (the moving-light basis). Off also
+  /// keeps Auto from the clustered method, which shoots every emitter first.
+  bool DirectToElements = true;
+  /// A far link that would carry at least this fraction of a solution's emitted power
+  /// at its first shot is resolved element by element. 0 (the default) refines by
+  /// geometry alone, so the links, and the light-tagged and combined results, do not
+  /// depend on which light shoots; measured, energy refinement gained little (0.83 % ->
+  /// 0.81 % against progressive refinement at 1e-4).
+  double RefinementThreshold = 0;
+};
 
 /// The SolveFunction for SolverMethod::Hierarchical.
 /// - An emitter patch's first shot (direct light) reaches every element, with shadow rays

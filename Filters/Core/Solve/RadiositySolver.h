@@ -9,6 +9,8 @@
 #include "Solve/ShooterFormFactors.h"
 #include "Geometry/PreparedScene.h"
 #include "Geometry/Visibility.h"
+#include "Solve/ClusteredRadiosity.h"
+#include "Solve/HierarchicalRadiosity.h"
 
 #include <chrono>
 #include <functional>
@@ -87,35 +89,9 @@ struct SolverOptions
   /// Called between shots with the fraction done; returning false aborts the solve, which
   /// then keeps the valid partial result of the shots made so far.
   std::function<bool(double)> Progress;
-  /// What the hierarchical method alone reads.
-  struct HierarchicalSettings
-  {
-    /// An emitter's first shot (its direct light) reaches every element with its own
-    /// shadow rays, as in progressive refinement. Off: it links like any other shooter,
-    /// which is much cheaper when many patches emit (the moving-light basis). Off also
-    /// keeps Auto from the clustered method, which shoots every emitter first.
-    bool DirectToElements = true;
-    /// A far link that would carry at least this fraction of a solution's emitted power
-    /// at its first shot is resolved element by element. 0 (the default) refines by
-    /// geometry alone, so the links, and the light-tagged and combined results, do not
-    /// depend on which light shoots; measured, energy refinement gained little (0.83 % ->
-    /// 0.81 % against progressive refinement at 1e-4).
-    double RefinementThreshold = 0;
-  } Hierarchical;
-  /// What the clustered method alone reads.
-  struct ClusteredSettings
-  {
-    /// Two groups of elements exchange light as a whole when their centres are farther
-    /// apart than this many times the sum of their radii (1.5 times it where one side
-    /// does not all face the other). Larger is more accurate and slower: the FZK-Haus
-    /// (113,002 elements) against Mitsuba 3, 20.3 % mean error at 3, 16.3 % at 4, 11.5 % at
-    /// 6, 9.1 % at 8, in 33, 40, 75 and 107 s (docs/benchmarks.md).
-    double Separation = 4.0;
-    /// Bytes the links, and then the links and per-node sums, may take (0: 90 % of the
-    /// memory the system has free when they are made). A solve that would need more stops
-    /// with the direct light, the reason in SolverStatistics::OutOfMemory.
-    double MemoryLimit = 0;
-  } Clustered;
+  /// What one method alone reads, defined beside that method.
+  HierarchicalSettings Hierarchical;
+  ClusteredSettings Clustered;
   /// Several processes solving together: each computes the transport to its own share of
   /// the receivers (OwnedPatches), and they agree on each shot through Group.SumAll. Every
   /// rank passes the whole scene and gets the whole solution. Default: one process.
