@@ -4,18 +4,17 @@
 #ifndef RadiosityCore_HierarchicalRadiosity_h
 #define RadiosityCore_HierarchicalRadiosity_h
 
+#include "Geometry/Scene.h"
+#include "Geometry/Visibility.h"
+
 #include <chrono>
 #include <vector>
 
 namespace radiosity
 {
 
-struct SceneGeometry;
-struct SceneMesh;
-struct Solution;
-struct SolverOptions;
-struct Vec3;
-class Visibility;
+struct Solution;      // RadiositySolver.h, which holds this method's settings
+struct SolverOptions; // in its options
 
 /// What the hierarchical method alone reads (SolverOptions::Hierarchical).
 struct HierarchicalSettings
