@@ -11,8 +11,8 @@ namespace radiosity
 std::string WriteAtomically(const std::string& path, const std::function<void(const char*, bool&)>& write)
 {
   const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-  std::error_code unused;
-  if (!folder.empty() && !std::filesystem::is_directory(folder, unused))
+  std::error_code unknown; // a folder that cannot be examined: the open says why
+  if (!folder.empty() && !std::filesystem::exists(folder, unknown) && !unknown)
   {
     return "the folder '" + folder.string() + "' does not exist"; // not "cannot open <path>.part"
   }

@@ -51,7 +51,8 @@ bool CopyPolygons(vtkPolyData* input, radiosity::SceneMesh& mesh, std::string& e
   if (!input || input->GetNumberOfPolys() == 0)
   {
     error = input && input->GetNumberOfStrips() > 0
-      ? "the input has triangle strips and no polygons; only polygons are read (apply vtkTriangleFilter first)"
+      ? "the input has triangle strips and no polygons; only polygons are read (apply vtkTriangleFilter, "
+        "ParaView's Triangulate, first)"
       : "the input has no polygons";
     return false;
   }
@@ -268,8 +269,9 @@ int Guarded(vtkAlgorithm* self, vtkDataObject* input, vtkPolyData* output,
   if (FailedUpstream(input))
   {
     // Only where the update reaches this filter anyway: a second update of a failed
-    // pipeline, or the failed output set as its input directly.
-    vtkErrorWithObjectMacro(self, << "Cannot run: its input is the output of a filter that failed (see that "
+    // pipeline, the failed output set as its input directly, or on ParaView's MPI server
+    // below the scene reader (which passes a failed read on there).
+    vtkErrorWithObjectMacro(self, << "Cannot run: the input is the output of a filter that failed (see that "
                                      "filter's error).");
   }
   else

@@ -1,6 +1,7 @@
 """Helpers around the filters: reading scenes, running the pipeline, pictures."""
 
 import math
+import numbers
 import os
 import re
 import warnings
@@ -69,7 +70,7 @@ class ErrorCatcher:
         said = [r for r in self.reports if "returned failure for request" not in r]
         if said:  # the executive's own reason (an input port left unconnected)
             return own_words(said[0])
-        return "its input is the output of a filter that failed (see that filter's error)" if self.reports \
+        return "the input is the output of a filter that failed (see that filter's error)" if self.reports \
             else "unknown error"
 
 
@@ -143,7 +144,8 @@ def solve(scene, patch_size=None, element_size=None, **solver_settings):
         raise TypeError(f"relight.solve needs a vtkPolyData scene (or another vtkDataSet of polygons), "
                         f"not {type(scene).__name__}")
     for name, size in (("patch_size", patch_size), ("element_size", element_size)):
-        if size is not None and not (isinstance(size, (int, float)) and math.isfinite(size) and size > 0):
+        if size is not None and not (isinstance(size, numbers.Real) and not isinstance(size, bool)
+                                     and math.isfinite(size) and size > 0):
             raise ValueError(f"relight.solve: {name} needs to be a positive length in the scene's unit "
                              f"(or None for the scene's suggestion), not {size!r}")
     mesher = vtkRadiosityMesher()

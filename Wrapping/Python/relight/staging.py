@@ -22,7 +22,10 @@ AXES = {"x": 0, "y": 1, "z": 2}
 
 def _numbers(value, count, what, low=-math.inf):
     """`value` as `count` finite floats of at least `low`; ValueError naming `what` if not."""
-    values = value if isinstance(value, (tuple, list)) else (value,) if count == 1 else None
+    try:
+        values = tuple(value)  # a tuple, list or numpy array
+    except TypeError:
+        values = (value,) if count == 1 else None
     try:
         floats = tuple(float(v) for v in values) if values is not None and len(values) == count else None
     except (TypeError, ValueError):
@@ -40,8 +43,10 @@ def area_light(name, centre, normal, size, color=(1.0, 1.0, 1.0), intensity=1.0,
     it emits `color` x `intensity` per unit area (W/m^2 per channel at unit relight).
     Raises ValueError naming the argument that cannot make a lamp."""
     what = f"area light {name!r}:"
-    sizes = (size, size) if disk or not isinstance(size, (tuple, list)) else size
-    width, height = _numbers(sizes, 2, f"{what} size", 0.0)
+    pair = isinstance(size, (tuple, list)) or getattr(size, "ndim", 0) == 1
+    if disk and pair:
+        raise ValueError(f"{what} a disk takes one size, its diameter, not {size!r}")
+    width, height = _numbers(size, 2, f"{what} size", 0.0) if pair else _numbers(size, 1, f"{what} size", 0.0) * 2
     if not (width > 0 and height > 0):
         raise ValueError(f"{what} needs a positive size, not {size!r}")
     normal = _numbers(normal, 3, f"{what} normal")
@@ -95,7 +100,7 @@ def in_room(model, margin=1.0, up="y", reflectance=(0.7, 0.7, 0.7), floor_reflec
     ten times the model's extent away: in another unit?) is a ValueError naming it."""
     low, high = _room_box(model, margin, up)
     _refuse_lamps_outside(model, _room_bounds(model)[2], low, high)
-    room = _box_faces(low, high, AXES[up], reflectance, floor_reflectance or reflectance)
+    room = _box_faces(low, high, AXES[up], reflectance, reflectance if floor_reflectance is None else floor_reflectance)
     return _merged(model, room)
 
 

@@ -173,4 +173,13 @@ TEST(HdrImage, AFolderThatIsNotThereIsNamed)
   EXPECT_NE(error.find("the folder '" + folder + "' does not exist"), std::string::npos) << error;
   std::FILE* part = std::fopen((folder + "/view.exr.part").c_str(), "rb");
   EXPECT_EQ(part, nullptr);
+  // A file where the folder should be is not called missing: the open's own error stands.
+  const std::string file = ::testing::TempDir() + "radiosity_not_a_folder";
+  std::FILE* plain = std::fopen(file.c_str(), "wb");
+  ASSERT_NE(plain, nullptr);
+  std::fclose(plain);
+  const std::string inside = WriteExr(file + "/view.exr", 2, 2, std::vector<float>(12, 1.0f));
+  EXPECT_FALSE(inside.empty());
+  EXPECT_EQ(inside.find("does not exist"), std::string::npos) << inside;
+  std::remove(file.c_str());
 }

@@ -139,6 +139,19 @@ def plain_plane():
     return plane.GetOutput()
 
 
+# What numpy gives is taken as lists are: vectors, a (width, height) size, reflectances,
+# float32 sizes (a size computed from float points).
+lamp = relight.area_light("N", np.array([0.0, 0.9, 0.0]), np.array([0, -1, 0]), np.array([0.2, 0.3]),
+                          color=np.ones(3), intensity=np.float32(2))
+check((lamp.width, lamp.height) == (0.2, 0.3) and lamp.color == (2.0, 2.0, 2.0),
+      f"area_light takes numpy vectors, sizes and scalars ({lamp})")
+tinted = relight.in_room(model, reflectance=np.full(3, 0.7), floor_reflectance=np.array([0.3, 0.3, 0.3]))
+check(tinted.GetNumberOfCells() == room.GetNumberOfCells(), "in_room takes numpy reflectances")
+with warnings.catch_warnings():
+    warnings.simplefilter("ignore")  # the lamp's placement is not what this checks
+    numpy_sized = relight.solve(relight.mark_lights(room, lamp), np.float32(0.5), np.float64(0.25))
+check(numpy_sized.GetOutput().GetNumberOfCells() > 0, "relight.solve takes numpy sizes")
+
 # Clear errors, where the argument is given (not later, at the solve, naming a cell).
 nan = float("nan")
 for name, call, kind, words in (
@@ -150,6 +163,9 @@ for name, call, kind, words in (
         ("a negative intensity", lambda: relight.area_light("L", (0, 1, 0), (0, -1, 0), 0.5, intensity=-3),
          ValueError, "intensity"),
         ("a zero normal", lambda: relight.area_light("L", (0, 1, 0), (0, 0, 0), 0.5), ValueError, "normal"),
+        ("a disk of two sizes", lambda: relight.area_light("L", (0, 1, 0), (0, -1, 0), (1, 1), disk=True),
+         ValueError, "diameter"),
+        ("a negative size", lambda: relight.area_light("L", (0, 1, 0), (0, -1, 0), -1), ValueError, "not -1"),
         ("a NaN color", lambda: relight.area_light("L", (0, 1, 0), (0, -1, 0), 0.5, color=(1, nan, 1)),
          ValueError, "color"),
         ("no scene", lambda: relight.mark_lights(None, relight.area_light("L", (0, 1, 0), (0, -1, 0), 0.5)),
