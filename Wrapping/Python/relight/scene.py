@@ -253,21 +253,37 @@ def render_png(data, path, camera, size=(640, 480)):
         raise OSError(f"cannot write '{path}' (VTK error code {writer.GetErrorCode()})")
 
 
+def _numbers(value, count, what, low=-math.inf):
+    """`value` as `count` finite floats of at least `low`; ValueError naming `what` if not."""
+    try:
+        values = tuple(value)  # a tuple, list or numpy array
+    except TypeError:
+        values = (value,) if count == 1 else None
+    try:
+        floats = tuple(float(v) for v in values) if values is not None and len(values) == count else None
+    except (TypeError, ValueError):
+        floats = None
+    if floats is None or not all(math.isfinite(v) and v >= low for v in floats):
+        numbers = "a finite number" if count == 1 else f"{count} finite numbers"
+        bound = "" if low == -math.inf else f" of at least {low:g}" if count == 1 else f", each at least {low:g}"
+        raise ValueError(f"{what} needs {numbers}{bound}, not {value!r}")
+    return floats
+
+
+
 def _check_camera(camera):
     """ValueError unless `camera` is (position, focal point, view-up, view angle) that can
     show something: a silent, empty picture is what VTK makes of the others."""
     try:
         position, focal, up, angle = camera
-        numbers = [float(v) for v in (*position, *focal, *up)] + [float(angle)]
-        usable = len(position) == len(focal) == len(up) == 3 and all(math.isfinite(v) for v in numbers)
+        position, focal, up = (_numbers(vector, 3, "") for vector in (position, focal, up))
+        angle = _numbers(angle, 1, "")[0]
     except (TypeError, ValueError):
-        usable = False
-    if not usable:
         raise ValueError(f"camera needs (position, focal point, view-up, view angle in degrees), three finite "
-                         f"numbers each and a number, not {camera!r}")
-    if tuple(map(float, position)) == tuple(map(float, focal)):
-        raise ValueError(f"the camera's position and focal point are the same point {tuple(position)}: it looks nowhere")
-    if not 0 < float(angle) < 180:
+                         f"numbers each and a number, not {camera!r}") from None
+    if position == focal:
+        raise ValueError(f"the camera's position and focal point are the same point {position}: it looks nowhere")
+    if not 0 < angle < 180:
         raise ValueError(f"the camera's view angle needs to be between 0 and 180 degrees, not {angle!r}")
 
 

@@ -6,35 +6,17 @@ Lights filter, ``in_room`` and ``on_ground`` set the model in a closed room or o
 plane sized from the model itself (so in the model's unit), keeping every array it has.
 """
 
-import math
 import warnings
 from collections import namedtuple
 
 from vtkmodules.vtkCommonDataModel import vtkDataSet
 
-from .scene import ErrorCatcher, own_words
+from .scene import ErrorCatcher, _numbers, own_words
 from .vtkRadiosityFilters import vtkRadiosityLightMarker
 
 AreaLight = namedtuple("AreaLight", "name centre normal width height color disk")
 
 AXES = {"x": 0, "y": 1, "z": 2}
-
-
-def _numbers(value, count, what, low=-math.inf):
-    """`value` as `count` finite floats of at least `low`; ValueError naming `what` if not."""
-    try:
-        values = tuple(value)  # a tuple, list or numpy array
-    except TypeError:
-        values = (value,) if count == 1 else None
-    try:
-        floats = tuple(float(v) for v in values) if values is not None and len(values) == count else None
-    except (TypeError, ValueError):
-        floats = None
-    if floats is None or not all(math.isfinite(v) and v >= low for v in floats):
-        numbers = "a finite number" if count == 1 else f"{count} finite numbers"
-        bound = "" if low == -math.inf else f" of at least {low:g}" if count == 1 else f", each at least {low:g}"
-        raise ValueError(f"{what} needs {numbers}{bound}, not {value!r}")
-    return floats
 
 
 def area_light(name, centre, normal, size, color=(1.0, 1.0, 1.0), intensity=1.0, disk=False):
