@@ -194,6 +194,30 @@ void ClusterLinkBuilder::PackSampleData()
   }
 }
 
+void ClusterLinkBuilder::DrawNodePoints(const WorkerPool& pool)
+{
+  const std::vector<ElementTree::Node>& nodes = Tree.Nodes();
+  NodePoints.resize(nodes.size() * kNodePoints * 6);
+  pool.For(static_cast<int>(nodes.size()), 256, [&](int begin, int end) {
+    for (int node = begin; node < end; ++node)
+    {
+      SampleStream random(static_cast<std::uint64_t>(node), 0, 0xC3u);
+      float* out = NodePoints.data() + static_cast<size_t>(node) * kNodePoints * 6;
+      for (int j = 0; j < kNodePoints; ++j, out += 6)
+      {
+        Vec3 normal;
+        const Vec3 offset = SamplePoint(node, (j + random.Next()) / kNodePoints, random, normal) - nodes[node].Centre;
+        const double values[6] = { offset.x, offset.y, offset.z, normal.x, normal.y, normal.z };
+        std::copy(values, values + 6, out);
+      }
+    }
+  });
+  // Only the node points are read from here on.
+  SampleData = std::vector<double>();
+  SampleAt = std::vector<size_t>();
+  AreaBefore = std::vector<double>();
+}
+
 bool ClusterLinkBuilder::NotInFront(int a, int b) const
 {
   const ElementTree::Node& A = Tree.Nodes()[a];
@@ -470,8 +494,8 @@ ClusterLinkBuilder::Sight ClusterLinkBuilder::Hidden(int a, int b, long long& ra
   for (int r = 0; r < kHiddenRays; ++r)
   {
     Vec3 na, nb;
-    const Vec3 pa = SamplePoint(a, (r + random.Next()) / kHiddenRays, random, na);
-    const Vec3 pb = SamplePoint(b, random.Next(), random, nb);
+    const Vec3 pa = NodePoint(a, Stratum(r, kHiddenRays, random), na);
+    const Vec3 pb = NodePoint(b, Stratum(0, 1, random), nb);
     if (Dot(na, pb - pa) <= 0 || Dot(nb, pa - pb) <= 0)
     {
       continue;
@@ -494,8 +518,8 @@ double ClusterLinkBuilder::Visible(int a, int b, long long& rays) const
   for (int r = 0; r < Options.Samples; ++r)
   {
     Vec3 na, nb;
-    const Vec3 pa = SamplePoint(a, (r + random.Next()) / Options.Samples, random, na);
-    const Vec3 pb = SamplePoint(b, random.Next(), random, nb);
+    const Vec3 pa = NodePoint(a, Stratum(r, Options.Samples, random), na);
+    const Vec3 pb = NodePoint(b, Stratum(0, 1, random), nb);
     if (Dot(na, pb - pa) <= 0 || Dot(nb, pa - pb) <= 0)
     {
       continue; // these two points do not exchange light: no ray speaks for the pair
@@ -541,6 +565,7 @@ std::vector<ClusterLinkBuilder::Task> ClusterLinkBuilder::Frontier(int wanted) c
 ClusterLinkSet ClusterLinkBuilder::Build(
   const WorkerPool& pool, int rank, int ranks, const std::function<bool(double, double)>& keepGoing)
 {
+  DrawNodePoints(pool);
   const std::vector<Task> tasks = Frontier(4096);
   std::vector<Found> found(tasks.size());
   ClusterLinkSet links;
