@@ -59,14 +59,69 @@ int ElementTree::Build(int first, int count)
   {
     return index;
   }
-  const int half = count / 2;
-  const std::vector<long long> key = SplitKeys(first, count);
-  SplitAtMedian(Order, first, count, key);
+  int half = count / 2;
+  if (All[index].Cone.Spread <= kBackToBack || !SplitByFacing(first, count, half))
+  {
+    const std::vector<long long> key = SplitKeys(first, count);
+    SplitAtMedian(Order, first, count, key);
+  }
   const int left = Build(first, half);
   const int right = Build(first + half, count - half);
   All[index].Left = left;
   All[index].Right = right;
   return index;
+}
+
+bool ElementTree::SplitByFacing(int first, int count, int& left)
+{
+  // Two seeds in normal space, as SplitKeys takes two in space: the normal least like the
+  // mean, then the one least like it; each element joins the seed it faces more.
+  const Vec3 a = G.Normal[LeastAlike(first, count, MeanNormal(Order.begin() + first, Order.begin() + first + count))];
+  const Vec3 b = G.Normal[LeastAlike(first, count, a)];
+  const auto nearerA = [&](int e) { return std::llround((Dot(G.Normal[e], a) - Dot(G.Normal[e], b)) * 1e9) > 0; };
+  std::vector<int> sides(Order.begin() + first, Order.begin() + first + count);
+  const auto middle = std::stable_partition(sides.begin(), sides.end(), nearerA);
+  if (middle == sides.begin() || middle == sides.end() || !Coherent(sides.begin(), middle) ||
+    !Coherent(middle, sides.end()))
+  {
+    return false;
+  }
+  std::copy(sides.begin(), sides.end(), Order.begin() + first);
+  left = static_cast<int>(middle - sides.begin());
+  return true;
+}
+
+Vec3 ElementTree::MeanNormal(std::vector<int>::const_iterator begin, std::vector<int>::const_iterator end) const
+{
+  Vec3 sum;
+  for (auto e = begin; e != end; ++e)
+  {
+    sum += G.Normal[*e] * G.Area[*e];
+  }
+  return sum;
+}
+
+int ElementTree::LeastAlike(int first, int count, const Vec3& direction) const
+{
+  int best = Order[first];
+  long long lowest = 0;
+  for (int i = first; i < first + count; ++i)
+  {
+    const long long d = std::llround(Dot(G.Normal[Order[i]], direction) * 1e9);
+    if (i == first || d < lowest || (d == lowest && Order[i] < best))
+    {
+      lowest = d;
+      best = Order[i];
+    }
+  }
+  return best;
+}
+
+bool ElementTree::Coherent(std::vector<int>::const_iterator begin, std::vector<int>::const_iterator end) const
+{
+  const Vec3 sum = MeanNormal(begin, end);
+  const Vec3 axis = Normalized(sum);
+  return Norm(sum) > 0 && std::all_of(begin, end, [&](int e) { return Dot(axis, G.Normal[e]) > kFacing; });
 }
 
 std::vector<long long> ElementTree::SplitKeys(int first, int count) const

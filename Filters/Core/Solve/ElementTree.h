@@ -80,6 +80,21 @@ private:
   /// Positions along the line between the node's two elements farthest apart, quantized:
   /// splits at their median make the same tree however the scene is turned or placed.
   std::vector<long long> SplitKeys(int first, int count) const;
+  /// A node whose surfaces face apart (both sides of a wall, a box's faces) splits into
+  /// the elements facing one way and those facing the other, where each side then faces
+  /// within a right angle of its mean: volume clusters mixing both sides of a wall see
+  /// each other's rooms and must be linked from farther (FZK-Haus against Mitsuba 3: 13.8 %
+  /// mean error instead of 17.3 %, 18 M far links instead of 22 M). Returns false, leaving
+  /// the order, where it does not split; else `left` is the first side's size.
+  bool SplitByFacing(int first, int count, int& left);
+  Vec3 MeanNormal(std::vector<int>::const_iterator begin, std::vector<int>::const_iterator end) const;
+  /// The element of [first, first + count) whose normal is least like `direction` (ties by
+  /// element, judged to a quantum, so the choice turns with the scene).
+  int LeastAlike(int first, int count, const Vec3& direction) const;
+  bool Coherent(std::vector<int>::const_iterator begin, std::vector<int>::const_iterator end) const;
+  /// Nodes whose normals spread wider than this are split by facing where they can be;
+  /// each side must then face within a right angle of its mean (a little under: kFacing).
+  static constexpr double kBackToBack = 0.5 * Pi, kFacing = -1e-6;
 
   const SceneGeometry& G;
   std::vector<int> Order, Leaf;
