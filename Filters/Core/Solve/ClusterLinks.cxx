@@ -25,6 +25,8 @@ namespace
 /// rooms behind a wall) instead of being split down to where its links would be made.
 constexpr double kHiddenRadii = 2.0;
 constexpr int kHiddenRays = 16;
+/// Times the shadow rays for a partly visible pair of elements that exchange much.
+constexpr int kPartialSamples = 4;
 
 } // namespace
 
@@ -336,7 +338,7 @@ void ClusterLinkBuilder::AddFar(int a, int b, Found& found) const
   {
     return;
   }
-  const double visible = NeedsRays(a, b) ? Visible(a, b, found.Rays) : 1.0;
+  const double visible = NeedsRays(a, b) ? Visible(a, b, found.Rays, Options.Samples) : 1.0;
   if (visible <= 0)
   {
     return;
@@ -384,7 +386,13 @@ void ClusterLinkBuilder::AddNear(int a, int b, Found& found) const
   {
     return;
   }
-  const double visible = NeedsRays(a, b) ? Visible(a, b, found.Rays) : 1.0;
+  double visible = NeedsRays(a, b) ? Visible(a, b, found.Rays, Options.Samples) : 1.0;
+  if (visible > 0 && visible < 1 && std::max(fromA, fromB) > Options.PartialFactor)
+  {
+    // A shadow's edge crosses two elements that exchange much: a few rays misjudge it by
+    // a share of that much, so it takes more.
+    visible = Visible(a, b, found.Rays, kPartialSamples * Options.Samples);
+  }
   AddElementPair(ea, eb, fromA * visible, fromB * visible, found);
 }
 
@@ -511,15 +519,18 @@ ClusterLinkBuilder::Sight ClusterLinkBuilder::Hidden(int a, int b, long long& ra
   return valid > 0 ? Sight::Hidden : Sight::Seen;
 }
 
-double ClusterLinkBuilder::Visible(int a, int b, long long& rays) const
+double ClusterLinkBuilder::Visible(int a, int b, long long& rays, int samples) const
 {
   SampleStream random(static_cast<std::uint64_t>(a), static_cast<std::uint64_t>(b), 0xC1u);
   int valid = 0, open = 0;
-  for (int r = 0; r < Options.Samples; ++r)
+  // Both ends stratified over their node's points, stratum r of one joined to stratum
+  // r + shift of the other: each part of either node sends one ray.
+  const int shift = static_cast<int>(random.Next() * samples);
+  for (int r = 0; r < samples; ++r)
   {
     Vec3 na, nb;
-    const Vec3 pa = NodePoint(a, Stratum(r, Options.Samples, random), na);
-    const Vec3 pb = NodePoint(b, Stratum(0, 1, random), nb);
+    const Vec3 pa = NodePoint(a, Stratum(r, samples, random), na);
+    const Vec3 pb = NodePoint(b, Stratum((r + shift) % samples, samples, random), nb);
     if (Dot(na, pb - pa) <= 0 || Dot(nb, pa - pb) <= 0)
     {
       continue; // these two points do not exchange light: no ray speaks for the pair

@@ -138,9 +138,9 @@ private:
   /// gathers from b as from a point, with a positive cosine at each of its elements.
   bool FacesCentre(int a, int b) const;
   double NearFactor(int from, int to, Found& found) const;
-  /// Fraction of shadow rays between the nodes that arrive (only rays from the front of
-  /// one to the front of the other count); 1 without rays.
-  double Visible(int a, int b, long long& rays) const;
+  /// Fraction of `samples` shadow rays between the nodes that arrive (only rays from the
+  /// front of one to the front of the other count); 1 without rays.
+  double Visible(int a, int b, long long& rays, int samples) const;
   /// A point of node `node` (uniform by area, `u` choosing where), just off its front.
   enum class Sight
   {
