@@ -171,8 +171,8 @@ public:
   /// Clustered method only: two groups of elements exchange light as a whole when their
   /// centres are farther apart than this many times the sum of their radii (default 4,
   /// 2 or more; other values are an error at the update). Larger is more accurate and
-  /// slower: the FZK-Haus (113,002 elements) against Mitsuba 3, 20.3 % mean error at 3,
-  /// 16.3 % at 4, 11.5 % at 6, 9.1 % at 8, in 33, 40, 75 and 107 s (docs/benchmarks.md).
+  /// slower: the FZK-Haus (112,740 elements) against Mitsuba 3, 16.4 % mean error at 3,
+  /// 13.4 % at 4, 10.5 % at 6, 9.4 % at 8, in 20, 28, 48 and 69 s (docs/benchmarks.md).
   vtkSetMacro(ClusterSeparation, double);
   static double GetClusterSeparationMinValue() { return 2.0; }
   static double GetClusterSeparationMaxValue() { return VTK_DOUBLE_MAX; }

@@ -204,6 +204,8 @@ def main():
     print(summary)
     (out / "house.txt").write_text(summary + "\n")
     csv = out / "house.csv"
+    if csv.exists() and csv.read_text().split("\n", 1)[0] != ",".join(row):
+        csv.rename(csv.with_suffix(".old.csv"))  # its columns differ (--reference adds three)
     header = "" if csv.exists() else ",".join(row) + "\n"  # append: one row per run
     with csv.open("a") as f:
         f.write(header + ",".join(str(v) for v in row.values()) + "\n")
