@@ -92,9 +92,11 @@ private:
   /// element, judged to a quantum, so the choice turns with the scene).
   int LeastAlike(int first, int count, const Vec3& direction) const;
   bool Coherent(std::vector<int>::const_iterator begin, std::vector<int>::const_iterator end) const;
-  /// Nodes whose normals spread wider than this are split by facing where they can be;
-  /// each side must then face within a right angle of its mean (a little under: kFacing).
-  static constexpr double kBackToBack = 0.5 * Pi, kFacing = -1e-6;
+  /// Nodes whose normals spread wider than a right angle are split by facing where they
+  /// can be; each side must then face within a right angle of its mean. Both are judged a
+  /// little past the right angle, so that a node at exactly one (a floor between two facing
+  /// walls) is judged alike however the scene is turned.
+  static constexpr double kBackToBack = 0.5 * Pi + 1e-6, kFacing = -1e-6;
 
   const SceneGeometry& G;
   std::vector<int> Order, Leaf;
