@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace radiosity
@@ -199,6 +200,10 @@ void ClusterLinkBuilder::PackSampleData()
 void ClusterLinkBuilder::DrawNodePoints(const WorkerPool& pool)
 {
   const std::vector<ElementTree::Node>& nodes = Tree.Nodes();
+  if (!NodePoints.empty() || Options.Samples <= 0 || Culling.BlockingPlanes() == 0)
+  {
+    return; // drawn already, or no link needs rays (NeedsRays)
+  }
   NodePoints.resize(nodes.size() * kNodePoints * 6);
   pool.For(static_cast<int>(nodes.size()), 256, [&](int begin, int end) {
     for (int node = begin; node < end; ++node)
@@ -214,10 +219,6 @@ void ClusterLinkBuilder::DrawNodePoints(const WorkerPool& pool)
       }
     }
   });
-  // Only the node points are read from here on.
-  SampleData = std::vector<double>();
-  SampleAt = std::vector<size_t>();
-  AreaBefore = std::vector<double>();
 }
 
 bool ClusterLinkBuilder::NotInFront(int a, int b) const
@@ -387,10 +388,11 @@ void ClusterLinkBuilder::AddNear(int a, int b, Found& found) const
     return;
   }
   double visible = NeedsRays(a, b) ? Visible(a, b, found.Rays, Options.Samples) : 1.0;
-  if (visible > 0 && visible < 1 && std::max(fromA, fromB) > Options.PartialFactor)
+  if (visible > 0 && visible < 1 && std::max(fromA, fromB) > Options.PartialFactor &&
+    Options.Samples <= std::numeric_limits<int>::max() / kPartialSamples)
   {
     // A shadow's edge crosses two elements that exchange much: a few rays misjudge it by
-    // a share of that much, so it takes more.
+    // a share of that much, so it is judged again, by kPartialSamples times the rays.
     visible = Visible(a, b, found.Rays, kPartialSamples * Options.Samples);
   }
   AddElementPair(ea, eb, fromA * visible, fromB * visible, found);
@@ -524,13 +526,15 @@ double ClusterLinkBuilder::Visible(int a, int b, long long& rays, int samples) c
   SampleStream random(static_cast<std::uint64_t>(a), static_cast<std::uint64_t>(b), 0xC1u);
   int valid = 0, open = 0;
   // Both ends stratified over their node's points, stratum r of one joined to stratum
-  // r + shift of the other: each part of either node sends one ray.
+  // r + shift of the other: each part of either node sends one ray. Past kNodePoints rays
+  // the strata are single points, so the far ends are drawn from all of them instead.
+  const bool paired = samples <= kNodePoints;
   const int shift = static_cast<int>(random.Next() * samples);
   for (int r = 0; r < samples; ++r)
   {
     Vec3 na, nb;
     const Vec3 pa = NodePoint(a, Stratum(r, samples, random), na);
-    const Vec3 pb = NodePoint(b, Stratum((r + shift) % samples, samples, random), nb);
+    const Vec3 pb = NodePoint(b, paired ? Stratum((r + shift) % samples, samples, random) : Stratum(0, 1, random), nb);
     if (Dot(na, pb - pa) <= 0 || Dot(nb, pa - pb) <= 0)
     {
       continue; // these two points do not exchange light: no ray speaks for the pair

@@ -95,6 +95,11 @@ public:
     const WorkerPool& pool, int rank, int ranks, const std::function<bool(double, double)>& keepGoing);
   /// Bytes a link takes while the build holds it, and once sorted (ClusterLinkSet).
   static constexpr double kFoundBytes = 13.0, kSortedBytes = 10.0;
+  /// Bytes the ray ends drawn for `tree`'s nodes take while the build runs (NodePoints).
+  static double PointBytes(const ElementTree& tree)
+  {
+    return static_cast<double>(tree.Nodes().size()) * kNodePoints * 6 * sizeof(float);
+  }
 
 private:
   enum class Pair
@@ -162,7 +167,8 @@ private:
   /// outnumber the points: each point then serves several).
   static int Stratum(int r, int strata, SampleStream& random)
   {
-    const int low = r * kNodePoints / strata, high = std::max(low + 1, (r + 1) * kNodePoints / strata);
+    const long long n = kNodePoints;
+    const int low = static_cast<int>(r * n / strata), high = std::max(low + 1, static_cast<int>((r + 1) * n / strata));
     return std::min(high - 1, low + static_cast<int>(random.Next() * (high - low)));
   }
   bool NeedsRays(int a, int b) const;
@@ -175,8 +181,7 @@ private:
   const ClusterLinkOptions Options;
   std::vector<double> AreaBefore; ///< prefix sums of area in tree order
   double Epsilon = 0;
-  /// What SamplePoint reads of each element, in tree order and in one place (it runs
-  /// hundreds of millions of times, and scattered arrays cost a cache miss each): at
+  /// What SamplePoint reads of each element, in tree order and in one place: at
   /// SampleAt[i], the centroid, the normal, the sum of the fan triangles' doubled areas,
   /// then per corner that corner's fan triangle's doubled area and the corner.
   std::vector<double> SampleData;
@@ -184,9 +189,10 @@ private:
   void PackSampleData();
   /// The ray ends of the shadow rays between nodes: per node, kNodePoints points uniform by
   /// area (stratified, each just off its element's front) as float offsets from the node's
-  /// centre, each with its element's normal. Drawn once per node (a few hundred thousand
-  /// draws) instead of once per ray end (hundreds of millions, each a cache miss or two into
-  /// SampleData), and a node's points lie together.
+  /// centre, each with its element's normal (384 bytes a node, about 770 an element). Drawn
+  /// once, kNodePoints per node, where rays are needed at all, instead of once per ray end
+  /// (hundreds of millions on the FZK-Haus, each a cache miss or two into SampleData), and a
+  /// node's points lie together.
   static constexpr int kNodePoints = 16;
   std::vector<float> NodePoints;
   void DrawNodePoints(const WorkerPool& pool);

@@ -145,16 +145,17 @@ private:
   /// Whether the links still fit, from what the first `done` of the build holds (`held`
   /// bytes on this rank): every rank agrees, and a build that would not fit stops with the
   /// direct light and says why.
-  bool LinksFit(double done, double held, double sums)
+  bool LinksFit(double done, double held, double sums, double points)
   {
     std::string problem;
     if (done >= 0.1) // the first tasks say too little of the rest
     {
       const double all = held / done, sorted = all * ClusterLinkBuilder::kSortedBytes / ClusterLinkBuilder::kFoundBytes;
-      // The most held at once: the links found and sorted, or sorted beside the sums. Against
-      // a limit: all of it; against the free memory: what is still to come.
-      const double most = std::max(all + sorted, sorted + sums);
-      problem = CheckMemory(Options.Clustered.MemoryLimit > 0 ? most : most - held,
+      // The most held at once: the links found and sorted beside the build's ray ends, or
+      // sorted beside the sums. Against a limit: all of it; against the free memory: what
+      // is still to come.
+      const double most = std::max(all + sorted + points, sorted + sums);
+      problem = CheckMemory(Options.Clustered.MemoryLimit > 0 ? most : most - held - points,
         sums > all ? "the clustered method's links and sums" : "the clustered method's links", Options.Clustered.MemoryLimit);
     }
     return EveryRankFits(problem, "another rank's links would not fit in its memory");
@@ -283,8 +284,9 @@ private:
     options.Separation = Options.Clustered.Separation;
     options.MixedSeparation = 1.5 * Options.Clustered.Separation;
     ClusterLinkBuilder builder(Mesh, G, tree, Rays, estimator, options);
+    const double points = ClusterLinkBuilder::PointBytes(tree);
     links = builder.Build(Pool, Group.Rank(), Group.Ranks(),
-      [&](double f, double held) { return KeepGoing(0.2 + 0.5 * f) && LinksFit(f, held, sums); });
+      [&](double f, double held) { return KeepGoing(0.2 + 0.5 * f) && LinksFit(f, held, sums, points); });
     Stats.RayCount += links.Rays;
     Stats.VolumeLinks += static_cast<long long>(links.FarCount());
     Stats.ElementLinks += static_cast<long long>(links.NearCount());

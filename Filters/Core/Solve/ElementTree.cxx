@@ -76,7 +76,8 @@ bool ElementTree::SplitByFacing(int first, int count, int& left)
 {
   // Two seeds in normal space, as SplitKeys takes two in space: the normal least like the
   // mean, then the one least like it; each element joins the seed it faces more.
-  const Vec3 a = G.Normal[LeastAlike(first, count, MeanNormal(Order.begin() + first, Order.begin() + first + count))];
+  const Vec3 mean = Normalized(MeanNormal(Order.begin() + first, Order.begin() + first + count)); // unit: scale free
+  const Vec3 a = G.Normal[LeastAlike(first, count, mean)];
   const Vec3 b = G.Normal[LeastAlike(first, count, a)];
   const auto nearerA = [&](int e) { return std::llround((Dot(G.Normal[e], a) - Dot(G.Normal[e], b)) * 1e9) > 0; };
   std::vector<int> sides(Order.begin() + first, Order.begin() + first + count);

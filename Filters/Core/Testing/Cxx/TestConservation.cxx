@@ -175,7 +175,8 @@ TEST(Conservation, EveryMethodOfTheTableRunsAsItselfAndLosesNoLight)
   // Each row of SolverMethodTable() (a new method is one more row): asked for by name it
   // runs, says so (Statistics.SolverMethod: the default names progressive refinement), converges,
   // and in the closed lamp room the surfaces absorb what the lamp emits, no more (a little
-  // less: what reaches the lamp's back, which neither reflects nor absorbs, is lost).
+  // less: what reaches the lamp's back, which neither reflects nor absorbs, is lost), the
+  // clustered method to its tolerance (below).
   const SceneMesh mesh = LampRoom(0.5);
   const RadiositySolver solver(mesh);
   for (const MethodEntry& entry : SolverMethodTable())
