@@ -146,7 +146,6 @@ private:
   /// Fraction of `samples` shadow rays between the nodes that arrive (only rays from the
   /// front of one to the front of the other count); 1 without rays.
   double Visible(int a, int b, long long& rays, int samples) const;
-  /// A point of node `node` (uniform by area, `u` choosing where), just off its front.
   enum class Sight
   {
     Unknown, ///< near, or no rays needed
@@ -154,6 +153,7 @@ private:
     Hidden   ///< far apart, and none of the rays between facing points arrived
   };
   Sight Hidden(int a, int b, long long& rays) const;
+  /// A point of node `node` (uniform by area, `u` choosing where), just off its front.
   Vec3 SamplePoint(int node, double u, SampleStream& random, Vec3& normal) const;
   /// Point j of node `node`'s kNodePoints (DrawNodePoints), with its element's normal.
   Vec3 NodePoint(int node, int j, Vec3& normal) const

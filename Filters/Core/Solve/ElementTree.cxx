@@ -60,7 +60,8 @@ int ElementTree::Build(int first, int count)
     return index;
   }
   int half = count / 2;
-  if (All[index].Cone.Spread <= kBackToBack || !SplitByFacing(first, count, half))
+  const NormalCone cone = All[index].Cone; // Summarise's: its axis is the unit mean normal
+  if (cone.Spread <= kBackToBack || !SplitByFacing(first, count, cone.Axis, half))
   {
     const std::vector<long long> key = SplitKeys(first, count);
     SplitAtMedian(Order, first, count, key);
@@ -72,11 +73,11 @@ int ElementTree::Build(int first, int count)
   return index;
 }
 
-bool ElementTree::SplitByFacing(int first, int count, int& left)
+bool ElementTree::SplitByFacing(int first, int count, const Vec3& mean, int& left)
 {
   // Two seeds in normal space, as SplitKeys takes two in space: the normal least like the
-  // mean, then the one least like it; each element joins the seed it faces more.
-  const Vec3 mean = Normalized(MeanNormal(Order.begin() + first, Order.begin() + first + count)); // unit: scale free
+  // (unit, so scale-free) mean, then the one least like it; each element joins the seed it
+  // faces more.
   const Vec3 a = G.Normal[LeastAlike(first, count, mean)];
   const Vec3 b = G.Normal[LeastAlike(first, count, a)];
   const auto nearerA = [&](int e) { return std::llround((Dot(G.Normal[e], a) - Dot(G.Normal[e], b)) * 1e9) > 0; };

@@ -84,9 +84,10 @@ private:
   /// the elements facing one way and those facing the other, where each side then faces
   /// within a right angle of its mean: volume clusters mixing both sides of a wall see
   /// each other's rooms and must be linked from farther (FZK-Haus against Mitsuba 3: 13.8 %
-  /// mean error instead of 17.3 %, 18 M far links instead of 22 M). Returns false, leaving
-  /// the order, where it does not split; else `left` is the first side's size.
-  bool SplitByFacing(int first, int count, int& left);
+  /// mean error instead of 17.3 %, 18 M far links instead of 22 M). `mean`: the node's unit
+  /// mean normal. Returns false, leaving the order, where it does not split; else `left` is
+  /// the first side's size.
+  bool SplitByFacing(int first, int count, const Vec3& mean, int& left);
   Vec3 MeanNormal(std::vector<int>::const_iterator begin, std::vector<int>::const_iterator end) const;
   /// The element of [first, first + count) whose normal is least like `direction` (ties by
   /// element, judged to a quantum, so the choice turns with the scene).
