@@ -79,6 +79,7 @@ void vtkLightTaggedRadiosity::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ConvergenceThreshold: " << this->ConvergenceThreshold << "\n";
   os << indent << "TimeBudget: " << this->TimeBudget << "\n";
   os << indent << "ClusterSeparation: " << this->ClusterSeparation << "\n";
+  os << indent << "GatherRays: " << this->GatherRays << "\n";
   os << indent << "AmbientTerm: " << this->AmbientTerm << "\n";
   os << indent << "SeparateDirect: " << this->SeparateDirect << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
@@ -218,6 +219,7 @@ radiosity::SolverOptions vtkLightTaggedRadiosity::Options(int threads, const rad
   options.ConvergenceThreshold = this->ConvergenceThreshold;
   options.TimeBudget = this->TimeBudget;
   options.Clustered.Separation = this->ClusterSeparation;
+  options.Gather.Rays = this->GatherRays;
   options.FormFactorMethod = static_cast<radiosity::FormFactorMethod>(this->FormFactorMethod);
   options.FormFactorSamples = this->FormFactorSamples;
   options.Threads = threads;

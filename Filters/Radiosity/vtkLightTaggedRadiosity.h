@@ -180,6 +180,16 @@ public:
   ///@}
 
   ///@{
+  /// The final gather: at every point of the output, direct light from each emitter with
+  /// shadow rays, and this many cosine rays into the element solution for the reflected
+  /// light (default 64; 0: the points take the mean of their elements, as a plain
+  /// radiosity solution does). Light cannot leak to a point through a wall, and an
+  /// element's average no longer shows where a light's peak is steep.
+  vtkSetClampMacro(GatherRays, int, 0, 1 << 16);
+  vtkGetMacro(GatherRays, int);
+  ///@}
+
+  ///@{
   /// Stop after this many seconds of shooting; 0 (default) means no limit.
   vtkSetClampMacro(TimeBudget, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(TimeBudget, double);
@@ -344,6 +354,7 @@ private:
   int FormFactorSamples = 4;
   double TimeBudget = 0;
   double ClusterSeparation = 4.0;
+  int GatherRays = 64;
   bool AmbientTerm = false;
   bool SeparateDirect = false;
   int NumberOfThreads = 0;

@@ -100,7 +100,7 @@ def add_lamps(house, lamps, half=0.15):
     return marker.GetOutput()
 
 
-def solve(scene, patch, element, cluster_angle=30.0, time_budget=0.0, method="Auto", separation=4.0):
+def solve(scene, patch, element, cluster_angle=30.0, time_budget=0.0, method="Auto", separation=4.0, gather_rays=64):
     """Mesh + solve at the solver's default settings (Auto picks the clustered method here);
     keeps warnings and errors."""
     mesher = relight.vtkRadiosityMesher()
@@ -110,6 +110,7 @@ def solve(scene, patch, element, cluster_angle=30.0, time_budget=0.0, method="Au
     solver.SetInputConnection(mesher.GetOutputPort())
     solver.SetTimeBudget(time_budget)
     solver.SetClusterSeparation(separation)
+    solver.SetGatherRays(gather_rays)
     getattr(solver, f"SetSolverMethodTo{method}")()
     catchers = [relight.ErrorCatcher(mesher), relight.ErrorCatcher(solver)]
     solver.Update()
@@ -144,13 +145,13 @@ def render(solver, shots, out):
     return relit.GetExposure()
 
 
-def accuracy(result, out, python, names, average):
+def accuracy(result, out, python, names, average, traced=False):
     """Mean per-light error against Mitsuba at probe points (or element means), and how ours
     compares where the house is lit (median ratio)."""
     import house_reference
-    stem = "house_average" if average else "house"
+    stem = "house_average" if average else ("house_traced" if traced else "house")
     scene, csv = out / f"{stem}_room.json", out / f"{stem}_reference.csv"
-    cells = house_reference.export(result, scene, average=average)
+    cells = house_reference.export(result, scene, average=average, traced=traced)
     house_reference.render(scene, csv, python)
     errors, median, lit = house_reference.compare(result, cells, csv, names, average > 0)
     print("error against Mitsuba: " + ", ".join(f"{n} {100 * e:.1f} %" for n, e in errors.items()))
@@ -168,10 +169,14 @@ def main():
     parser.add_argument("--method", default="Auto", help="SolverMethod: Auto, ProgressiveRefinement, Hierarchical, Clustered")
     parser.add_argument("--cluster-separation", type=float, default=4.0,
                         help="ClusterSeparation (clustered method): larger is more accurate and slower")
+    parser.add_argument("--gather-rays", type=int, default=64, help="GatherRays: the final gather's rays per point (0: off)")
     parser.add_argument("--reference", action="store_true", help="compare with Mitsuba 3 at probe points (rendered once per mesh)")
     parser.add_argument("--element-average", type=int, default=0, metavar="N",
                         help="with --reference: compare element means (Mitsuba at N points spread over each probe's "
                              "element, ours the element's value) instead of centroids")
+    parser.add_argument("--traced-probes", action="store_true",
+                        help="with --reference: probes where rays from the lamps meet surfaces, and one bounce further "
+                             "(drawn independently of our elements), ours interpolated there")
     parser.add_argument("--mitsuba-python", default="out/mitsuba-venv/bin/python", help="a Python with mitsuba installed")
     args = parser.parse_args()
     out = pathlib.Path(args.out)
@@ -186,18 +191,20 @@ def main():
     k = len(lamps)
     scene = add_lamps(house, lamps)
     solver, warnings = solve(scene, args.patch, args.element, args.cluster_angle, args.time_budget, args.method,
-                             args.cluster_separation)
+                             args.cluster_separation, args.gather_rays)
     result = solver.GetOutput()
     method = result.GetFieldData().GetAbstractArray("SolverMethod").GetValue(0)
     commit = subprocess.run(["git", "describe", "--always", "--dirty"], capture_output=True, text=True).stdout.strip()
     row = dict(commit=commit or "?", polygons=scene.GetNumberOfCells(), elements=result.GetNumberOfCells(),
                patches=len(np.unique(relight.cell_array(result, "PatchId"))), lights=k,
-               element=args.element, patch=args.patch, method=args.method, separation=args.cluster_separation, solve_s=round(solver.GetLastSolveSeconds(), 2),
+               element=args.element, patch=args.patch, method=args.method, separation=args.cluster_separation,
+               gather_rays=args.gather_rays, solve_s=round(solver.GetLastSolveSeconds(), 2),
                shots=solver.GetLastShots(), converged=bool(solver.GetLastConverged()),
                peak_mib=round(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024),
                warnings=len(warnings))
     if args.reference:
-        row.update(accuracy(result, out, args.mitsuba_python, [f"Lamp{i}" for i in range(k)], args.element_average))
+        row.update(accuracy(result, out, args.mitsuba_python, [f"Lamp{i}" for i in range(k)], args.element_average,
+                            args.traced_probes))
     exposure = render(solver, [camera(rays, *lamps[0]), camera(rays, *lamps[-1])], out)  # one per storey
     summary = "\n".join([f"{key}: {value}" for key, value in row.items()] + [f"SolverMethod: {method}",
                          f"exposure: {exposure:.4g}"] + [f"warning: {w.strip().splitlines()[-1]}" for w in warnings])

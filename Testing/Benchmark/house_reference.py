@@ -38,7 +38,72 @@ def spread(corners, count, rng):
     return a + u[:, None] * (b[fan] - a) + v[:, None] * (c[fan] - a)
 
 
-def export(mesh, path, probes=600, seed=7, average=0):
+def _cosine(normal, rng):
+    """A cosine-distributed direction about a unit normal."""
+    u, phi = rng.random(), 2 * np.pi * rng.random()
+    t = np.cross(normal, [1.0, 0, 0] if abs(normal[0]) < 0.6 else [0, 1.0, 0])
+    t /= np.linalg.norm(t)
+    b = np.cross(normal, t)
+    r = np.sqrt(u)
+    return r * np.cos(phi) * t + r * np.sin(phi) * b + np.sqrt(1 - u) * normal
+
+
+class _Tracer:
+    """Nearest hits on the solved mesh (vtkOBBTree), for probes that do not sit on our
+    elements' centroids."""
+
+    def __init__(self, mesh, normals, light):
+        from vtkmodules.vtkFiltersGeneral import vtkOBBTree
+        self.tree = vtkOBBTree()
+        self.tree.SetDataSet(mesh)
+        self.tree.BuildLocator()
+        self.normals, self.light = normals, light
+        self.span = float(np.linalg.norm(np.ptp(np.reshape(mesh.GetBounds(), (3, 2)), axis=1)))
+
+    def front_hit(self, start, direction):
+        """(point, cell) of the nearest surface the ray meets on its front, not a lamp;
+        None where it meets nothing, a back face or a lamp."""
+        from vtkmodules.vtkCommonCore import vtkIdList, vtkPoints
+        points, cells = vtkPoints(), vtkIdList()
+        self.tree.IntersectWithLine(start, start + direction * self.span, points, cells)
+        hits = [(np.dot(np.array(points.GetPoint(i)) - start, direction), i) for i in range(points.GetNumberOfPoints())]
+        hits = [h for h in hits if h[0] > 1e-6]
+        if not hits:
+            return None
+        d, i = min(hits)
+        c = cells.GetId(i)
+        if self.light[c] >= 0 or np.dot(self.normals[c], direction) >= 0:
+            return None
+        return start + direction * d, c
+
+
+def traced_probes(mesh, normals, light, areas, loops, points, per_light=100, seed=11):
+    """Probes drawn independently of our mesh: for each lamp, half where cosine rays from
+    the lamp first meet a surface, half one cosine bounce further on. Each is (point,
+    cell)."""
+    rng = np.random.default_rng(seed)
+    tracer = _Tracer(mesh, normals, light)
+    out = []
+    for k in range(int(light.max()) + 1):
+        lamp = np.flatnonzero(light == k)
+        got, tries = [], 0
+        while len(got) < per_light and tries < 50 * per_light:
+            tries += 1
+            c = rng.choice(lamp, p=areas[lamp] / areas[lamp].sum())
+            start = spread(points[loops[c]], 1, rng)[0] + normals[c] * 1e-4
+            first = tracer.front_hit(start, _cosine(normals[c], rng))
+            if first is None:
+                continue
+            got.append(first)
+            x, cell = first
+            second = tracer.front_hit(x + normals[cell] * 1e-4, _cosine(normals[cell], rng))
+            if second is not None and len(got) < per_light:
+                got.append(second)
+        out += got
+    return out
+
+
+def export(mesh, path, probes=600, seed=7, average=0, traced=False):
     """The solver's output (polygons only) as mitsuba_reference.py's JSON; probes on
     non-emitting elements, by area, at their centroids or, with `average` > 0, spread over
     the element at that many points (Mitsuba then gives the element's mean). Returns the
@@ -49,21 +114,26 @@ def export(mesh, path, probes=600, seed=7, average=0):
     reflectance = np.asarray(relight.cell_array(mesh, "Reflectance"), float).reshape(len(loops), -1)
     reflectance = np.repeat(reflectance, 3 // reflectance.shape[1], axis=1)
     cents, normals, areas = relight.cell_centroids(mesh), _cell_normals(mesh), relight.cell_areas(mesh)
-    candidates = np.flatnonzero((light < 0) & (areas > 0))
-    pick = np.random.default_rng(seed).choice(candidates, min(probes, len(candidates)), replace=False,
-                                              p=areas[candidates] / areas[candidates].sum())
+    if traced:
+        found = traced_probes(mesh, normals, light, areas, loops, points, per_light=probes // (int(light.max()) + 1))
+        spots, pick = [x for x, _ in found], np.array([c for _, c in found])
+    else:
+        candidates = np.flatnonzero((light < 0) & (areas > 0))
+        pick = np.random.default_rng(seed).choice(candidates, min(probes, len(candidates)), replace=False,
+                                                  p=areas[candidates] / areas[candidates].sum())
+        spots = [cents[c] for c in pick]
     scene = {"lights": int(light.max()) + 1,
              "polygons": [{"points": points[l].tolist(), "reflectance": reflectance[c].tolist(), "light": int(light[c])}
                           for c, l in enumerate(loops)],
-             "probes": [{"point": cents[c].tolist(), "normal": normals[c].tolist(), "seen": True, "cell": int(c)}
-                        for c in pick]}
+             "probes": [{"point": np.asarray(x).tolist(), "normal": normals[c].tolist(), "seen": True, "cell": int(c)}
+                        for x, c in zip(spots, pick)]}
     rng = np.random.default_rng(seed + 1)
     for probe in scene["probes"][:len(pick) if average > 0 else 0]:
         probe["points"] = spread(points[loops[probe["cell"]]], average, rng).tolist()
     text = json.dumps(scene)
     if not path.exists() or path.read_text() != text:  # an unchanged scene keeps its reference
         path.write_text(text)
-    return pick
+    return [(int(c), np.asarray(x, float)) for x, c in zip(spots, pick)]
 
 
 def render(scene_path, csv_path, python, spp=8192):
@@ -78,6 +148,18 @@ def render(scene_path, csv_path, python, spp=8192):
     key.write_text(made_from)
 
 
+def _weights(mesh, cell, x):
+    """The point ids of `cell` and the weights that interpolate its point values at x (what a
+    rendering shows there; at a quad's centroid, the mean of its corners)."""
+    from vtkmodules.vtkCommonCore import reference
+    polygon = mesh.GetCell(cell)
+    closest, sub, dist2 = [0.0] * 3, reference(0), reference(0.0)
+    pcoords, w = [0.0] * 3, [0.0] * polygon.GetNumberOfPoints()
+    polygon.EvaluatePosition(list(x), closest, sub, pcoords, dist2, w)
+    ids = [polygon.GetPointId(i) for i in range(polygon.GetNumberOfPoints())]
+    return np.array(ids), np.array(w)
+
+
 def compare(mesh, cells, csv_path, names, average=False):
     """Per light, the mean |ours - Mitsuba| over the probes over Mitsuba's mean (ours at a
     centroid: the mean of the element's corner values, what a rendering shows there; with
@@ -85,6 +167,8 @@ def compare(mesh, cells, csv_path, names, average=False):
     probes Mitsuba finds lit (above a fifth of the mean, all lights on) the median of
     ours / Mitsuba."""
     loops = _loops(mesh)
+    weights = [_weights(mesh, c, x) for c, x in cells]
+    cells = np.array([c for c, _ in cells])
     table = np.loadtxt(csv_path, delimiter=",", skiprows=1, ndmin=2)
     errors, ours_all, ref_all = {}, 0.0, 0.0
     for k, name in enumerate(names):
@@ -95,7 +179,7 @@ def compare(mesh, cells, csv_path, names, average=False):
             got = np.asarray(relight.cell_array(mesh, f"Radiosity_{name}")).reshape(len(loops), -1)[cells].mean(axis=1)
         else:
             values = relight.point_array(mesh, f"Radiosity_{name}").reshape(mesh.GetNumberOfPoints(), -1)
-            got = np.array([values[loops[c]].mean() for c in cells])
+            got = np.array([values[ids].mean(axis=1) @ w for ids, w in weights])
         errors[name] = float(np.abs(got - want).mean() / want.mean())
         ours_all, ref_all = ours_all + got, ref_all + want
     lit = ref_all > 0.2 * ref_all.mean()

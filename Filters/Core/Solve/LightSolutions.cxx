@@ -258,6 +258,31 @@ private:
 };
 } // namespace
 
+/// The final gather over the solve's elements into out's point values, and the cell
+/// values from them; a stopped gather leaves the element solution as it was.
+void GatherInto(const RadiositySolver& solver, const SceneMesh& mesh, const std::vector<Vec3>& emission,
+  const SolverOptions& options, Solution& out)
+{
+  GatheredPoints points = GatherAtPoints(mesh, solver.Geometry(), solver.Rays(), emission, out.Radiosity,
+    out.Solutions, options.Gather, options.Threads, options.Progress, out.Statistics.BlockingSurfaces != 0);
+  out.GatherRays = points.Rays;
+  if (points.Aborted)
+  {
+    out.Statistics.Aborted = true;
+    return;
+  }
+  const bool swept = !points.Cells.empty();
+  out.Radiosity = swept ? std::move(points.Cells)
+                        : CellsFromPoints(mesh, solver.Geometry(), points.Radiosity, out.Radiosity, out.Solutions);
+  if (!out.Direct.empty())
+  {
+    out.Direct = swept ? std::move(points.CellsDirect)
+                       : CellsFromPoints(mesh, solver.Geometry(), points.Direct, out.Direct, out.Solutions);
+    out.PointDirect = std::move(points.Direct);
+  }
+  out.PointRadiosity = std::move(points.Radiosity);
+}
+
 Solution SolveInMode(const RadiositySolver& solver, const SceneMesh& mesh, const LightGrouping& grouping,
   const std::vector<Vec3>& emissionColor, SolutionMode mode, const SolverOptions& options)
 {
@@ -280,6 +305,12 @@ Solution SolveLights(const RadiositySolver& solver, const SceneMesh& mesh,
 {
   CheckGrouping(mesh, grouping);
   Solution out = SolveInMode(solver, mesh, grouping, emissionColor, mode, options);
+  if (options.Gather.Rays > 0 && !out.Statistics.Aborted)
+  {
+    GatherInto(solver, mesh, mode == SolutionMode::StandardCombined ? CombinedEmission(mesh, emissionColor)
+                                                                    : SolutionEmission(mesh, grouping, emissionColor),
+      options, out);
+  }
   out.Effects = DescribeEffects(
     mesh, options, out, grouping, static_cast<int>(grouping.SolutionOfLight.size()), mode);
   return out;

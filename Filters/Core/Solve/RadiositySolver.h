@@ -10,6 +10,7 @@
 #include "Geometry/PreparedScene.h"
 #include "Geometry/Visibility.h"
 #include "Solve/ClusteredRadiosity.h"
+#include "Solve/FinalGather.h"
 #include "Solve/HierarchicalRadiosity.h"
 
 #include <chrono>
@@ -92,6 +93,9 @@ struct SolverOptions
   /// What one method alone reads, defined beside that method.
   HierarchicalSettings Hierarchical;
   ClusteredSettings Clustered;
+  /// The final gather at the mesh's points, run by SolveLights after the solve; its Rays
+  /// are 0 here (a plain element solution), the solver filter's default turns it on.
+  GatherSettings Gather{ 0 };
   /// Several processes solving together: each computes the transport to its own share of
   /// the receivers (OwnedPatches), and they agree on each shot through Group.SumAll. Every
   /// rank passes the whole scene and gets the whole solution. Default: one process.
@@ -180,6 +184,12 @@ struct Solution
   std::vector<Vec3> Radiosity; ///< [element * Solutions + m], with the ambient term if asked
   std::vector<Vec3> Direct;    ///< same layout, only with SeparateDirect
   std::vector<Vec3> Ambient;   ///< per solution, the ambient radiosity (0 without it)
+  /// The final gather (SolverOptions::Gather): per mesh point and solution
+  /// ([point * Solutions + m]), empty where it was off or stopped. Radiosity and Direct
+  /// then hold their open elements' corner means (CellsFromPoints).
+  std::vector<Vec3> PointRadiosity;
+  std::vector<Vec3> PointDirect;
+  long long GatherRays = 0; ///< the rays the gather cast (the statistics count the solve's)
   SolverStatistics Statistics;
 };
 

@@ -59,12 +59,14 @@ vtkSmartPointer<vtkFloatArray> MakeArray(
   return array;
 }
 
-/// Cell and point arrays `name` for each solution of `cellValues`.
+/// Cell and point arrays `name` for each solution of `cellValues`; the points take
+/// `gathered` (the final gather) where there is one, else their cells' mean.
 void AddPerSolution(vtkPolyData* output, const radiosity::SceneMesh& mesh, const radiosity::SceneGeometry& g,
-  const std::vector<radiosity::Vec3>& cellValues, int columns, const std::vector<std::string>& names,
-  const std::string& prefix, bool combined)
+  const std::vector<radiosity::Vec3>& cellValues, const std::vector<radiosity::Vec3>& gathered, int columns,
+  const std::vector<std::string>& names, const std::string& prefix, bool combined)
 {
-  const std::vector<radiosity::Vec3> pointValues = radiosity::AverageToPoints(mesh, g, cellValues, columns);
+  const std::vector<radiosity::Vec3> pointValues =
+    gathered.empty() ? radiosity::AverageToPoints(mesh, g, cellValues, columns) : gathered;
   for (int m = 0; m < columns; ++m)
   {
     const std::string name = combined ? prefix : prefix + "_" + names[m];
@@ -175,10 +177,12 @@ void AddSolutionArrays(vtkPolyData* output, const SceneInput& scene, const radio
     vtkLogF(INFO, "LightTaggedRadiosity: %d patches split where a surface stands across them", solver.SplitPatches());
   }
   vtkLogScopeF(TRACE, "average to points");
-  AddPerSolution(output, mesh, solver.Geometry(), result.Radiosity, result.Solutions, names, "Radiosity", combined);
+  AddPerSolution(output, mesh, solver.Geometry(), result.Radiosity, result.PointRadiosity, result.Solutions, names,
+    "Radiosity", combined);
   if (!result.Direct.empty())
   {
-    AddPerSolution(output, mesh, solver.Geometry(), result.Direct, result.Solutions, names, "Direct", combined);
+    AddPerSolution(output, mesh, solver.Geometry(), result.Direct, result.PointDirect, result.Solutions, names,
+      "Direct", combined);
   }
 }
 

@@ -1,0 +1,491 @@
+#include "Solve/FinalGather.h"
+
+#include "Base/SampleStream.h"
+#include "Base/WorkerPool.h"
+#include "Geometry/FormFactor.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace radiosity
+{
+namespace
+{
+/// Where and how a point is evaluated: the mean of the elements around it.
+struct PointFrame
+{
+  Vec3 Origin; ///< the point, moved a hair into its elements and off their surface
+  Vec3 Normal;
+  /// An edge of its first element, so the gather's directions turn with the scene and the
+  /// answer does not depend on its placement.
+  Vec3 Edge;
+  Vec3 Reflectance;
+  bool Used = false;
+};
+
+/// An emitting patch: its elements' loops for Lambert's formula, its fan triangles for
+/// shadow-ray ends, its emission per solution.
+struct Emitter
+{
+  std::vector<int> Elements;
+  std::vector<Vec3> Triangles; ///< a, b, c per fan triangle, each lifted off the surface
+  std::vector<double> Cdf;     ///< cumulative area fraction per triangle
+  Vec3 Centre, Normal;
+  double Radius = 0;
+  bool Planar = true;
+};
+
+/// Which elements around each point count: open ones, sheltered ones only where a point
+/// has no open one (a footprint's dark is its own, not its neighbours').
+std::vector<char> PointHasOpenElement(const SceneMesh& mesh, const SceneGeometry& g)
+{
+  std::vector<char> open(mesh.Points.size(), 0);
+  for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
+  {
+    for (int v = 0; !g.Sheltered[e] && v < mesh.PolygonSize(e); ++v)
+    {
+      open[mesh.Polygon(e)[v]] = 1;
+    }
+  }
+  return open;
+}
+
+std::vector<PointFrame> MakeFrames(const SceneMesh& mesh, const SceneGeometry& g, const std::vector<Vec3>& emission,
+  int solutions, std::vector<Vec3>& pointEmission)
+{
+  const size_t points = mesh.Points.size();
+  const std::vector<char> open = PointHasOpenElement(mesh, g);
+  std::vector<PointFrame> frames(points);
+  std::vector<Vec3> centre(points);
+  std::vector<double> weight(points, 0.0);
+  pointEmission.assign(points * solutions, Vec3());
+  for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
+  {
+    const int* ids = mesh.Polygon(e);
+    const double w = g.Area[e];
+    for (int v = 0; v < mesh.PolygonSize(e) && w > 0; ++v)
+    {
+      const int p = ids[v];
+      if (g.Sheltered[e] && open[p])
+      {
+        continue;
+      }
+      if (weight[p] == 0)
+      {
+        frames[p].Edge = mesh.Points[ids[1 % mesh.PolygonSize(e)]] - mesh.Points[ids[0]];
+      }
+      weight[p] += w;
+      frames[p].Normal += g.Normal[e] * w;
+      frames[p].Reflectance += mesh.Reflectance[e] * w;
+      centre[p] += g.Centroid[e] * w;
+      for (int m = 0; m < solutions; ++m)
+      {
+        pointEmission[p * solutions + m] += emission[static_cast<size_t>(e) * solutions + m] * w;
+      }
+    }
+  }
+  for (size_t p = 0; p < points; ++p)
+  {
+    if (weight[p] <= 0)
+    {
+      continue;
+    }
+    const double inv = 1.0 / weight[p];
+    PointFrame& f = frames[p];
+    f.Used = true;
+    f.Normal = Normalized(f.Normal);
+    f.Reflectance = f.Reflectance * inv;
+    for (int m = 0; m < solutions; ++m)
+    {
+      pointEmission[p * solutions + m] = pointEmission[p * solutions + m] * inv;
+    }
+    // One hundredth of the way to its elements' centre: off the edge it lies on, so a
+    // ray along a wall standing on that edge meets the wall instead of slipping past it.
+    const Vec3 inward = (centre[p] * inv - mesh.Points[p]) * 0.01;
+    f.Origin = mesh.Points[p] + inward + f.Normal * g.RayLift;
+  }
+  return frames;
+}
+
+/// Each open element evaluated at its centroid, for a sweep over the element solution.
+std::vector<PointFrame> ElementFrames(const SceneMesh& mesh, const SceneGeometry& g)
+{
+  std::vector<PointFrame> frames(mesh.NumberOfPolygons());
+  for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
+  {
+    PointFrame& f = frames[e];
+    f.Used = !g.Enclosed[e] && g.Area[e] > 0;
+    f.Normal = g.Normal[e];
+    f.Reflectance = mesh.Reflectance[e];
+    f.Origin = g.Centroid[e] + f.Normal * g.RayLift;
+    f.Edge = mesh.Points[mesh.Polygon(e)[1 % mesh.PolygonSize(e)]] - mesh.Points[mesh.Polygon(e)[0]];
+  }
+  return frames;
+}
+
+bool Emits(const std::vector<Vec3>& emission, int e, int solutions)
+{
+  for (int m = 0; m < solutions; ++m)
+  {
+    const Vec3& v = emission[static_cast<size_t>(e) * solutions + m];
+    if (v.x > 0 || v.y > 0 || v.z > 0)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+void AddTriangles(const SceneMesh& mesh, const SceneGeometry& g, int e, Emitter& out)
+{
+  const int* ids = mesh.Polygon(e);
+  const Vec3 lift = g.Normal[e] * g.RayLift;
+  for (int v = 1; v + 1 < mesh.PolygonSize(e); ++v)
+  {
+    const Vec3 a = mesh.Points[ids[0]] + lift, b = mesh.Points[ids[v]] + lift, c = mesh.Points[ids[v + 1]] + lift;
+    const double area = 0.5 * Norm(Cross(b - a, c - a));
+    out.Triangles.insert(out.Triangles.end(), { a, b, c });
+    out.Cdf.push_back((out.Cdf.empty() ? 0.0 : out.Cdf.back()) + area);
+  }
+}
+
+/// The emitting, unenclosed elements grouped by patch.
+std::vector<Emitter> MakeEmitters(
+  const SceneMesh& mesh, const SceneGeometry& g, const std::vector<Vec3>& emission, int solutions)
+{
+  std::vector<int> slot(g.PatchElements.size(), -1);
+  std::vector<Emitter> emitters;
+  for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
+  {
+    if (g.Enclosed[e] || g.Area[e] <= 0 || !Emits(emission, e, solutions))
+    {
+      continue;
+    }
+    int& s = slot[g.ElementPatch[e]];
+    if (s < 0)
+    {
+      s = static_cast<int>(emitters.size());
+      emitters.emplace_back();
+    }
+    emitters[s].Elements.push_back(e);
+    AddTriangles(mesh, g, e, emitters[s]);
+  }
+  for (Emitter& emitter : emitters)
+  {
+    double area = 0;
+    for (int e : emitter.Elements)
+    {
+      emitter.Centre += g.Centroid[e] * g.Area[e];
+      emitter.Normal += g.Normal[e] * g.Area[e];
+      area += g.Area[e];
+    }
+    emitter.Centre = emitter.Centre * (1.0 / area);
+    emitter.Normal = Normalized(emitter.Normal);
+    for (const Vec3& corner : emitter.Triangles)
+    {
+      emitter.Radius = std::max(emitter.Radius, Norm(corner - emitter.Centre));
+    }
+    for (int e : emitter.Elements)
+    {
+      emitter.Planar = emitter.Planar && Dot(g.Normal[e], emitter.Normal) > 1 - 1e-9;
+    }
+    for (double& c : emitter.Cdf)
+    {
+      c /= emitter.Cdf.back();
+    }
+  }
+  return emitters;
+}
+
+/// A point of stratum r of `count` over the emitter, by area.
+Vec3 EmitterPoint(const Emitter& emitter, int r, int count, SampleStream& random)
+{
+  const double u = (r + random.Next()) / count;
+  const size_t t = std::min<size_t>(
+    std::lower_bound(emitter.Cdf.begin(), emitter.Cdf.end(), u) - emitter.Cdf.begin(), emitter.Cdf.size() - 1);
+  double s = random.Next(), q = random.Next();
+  if (s + q > 1)
+  {
+    s = 1 - s;
+    q = 1 - q;
+  }
+  const Vec3* abc = &emitter.Triangles[3 * t];
+  return abc[0] + (abc[1] - abc[0]) * s + (abc[2] - abc[0]) * q;
+}
+
+/// The whole state of one gather, shared read-only by the threads.
+class Gather
+{
+public:
+  /// Evaluates `frames` (with their emission, [frame * solutions + m]) against the element
+  /// solution `radiosity`; `salt` draws other numbers for another pass over the same frames.
+  Gather(const SceneMesh& mesh, const SceneGeometry& g, const Visibility& rays, const std::vector<Vec3>& emission,
+    const std::vector<Vec3>& radiosity, int solutions, const std::vector<Emitter>& emitters,
+    std::vector<PointFrame> frames, std::vector<Vec3> frameEmission, int gatherRays, int lightRays, bool shadows,
+    std::uint64_t salt)
+    : Mesh(mesh)
+    , G(g)
+    , Rays(rays)
+    , Emission(emission)
+    , Radiosity(radiosity)
+    , S(solutions)
+    , Side(std::max(0, static_cast<int>(std::sqrt(static_cast<double>(gatherRays)))))
+    , LightRays(std::max(1, lightRays))
+    , Shadows(shadows)
+    , Salt(salt)
+    , Frames(std::move(frames))
+    , PointEmission(std::move(frameEmission))
+    , Emitters(emitters)
+  {
+  }
+
+  /// Point p's values into radiosity[p * S ...] and direct[p * S ...]; returns its rays.
+  long long Evaluate(size_t p, Vec3* radiosity, Vec3* direct, std::vector<Vec3>& scratch) const
+  {
+    const PointFrame& f = Frames[p];
+    if (!f.Used)
+    {
+      return 0;
+    }
+    std::vector<Vec3> irradiance(S), gathered(S);
+    long long rays = DirectLight(p, f, irradiance, scratch);
+    rays += Interreflection(p, f, gathered);
+    for (int m = 0; m < S; ++m)
+    {
+      const Vec3& e = PointEmission[p * S + m];
+      direct[m] = e + Times(f.Reflectance, irradiance[m]);
+      radiosity[m] = direct[m] + Times(f.Reflectance, gathered[m]);
+    }
+    return rays;
+  }
+
+  size_t Points() const { return Frames.size(); }
+
+private:
+  /// Irradiance from every emitter: Lambert's formula per element, times the fraction of
+  /// stratified shadow rays to the emitter that arrive.
+  long long DirectLight(size_t p, const PointFrame& f, std::vector<Vec3>& out, std::vector<Vec3>& scratch) const
+  {
+    long long rays = 0;
+    std::vector<Vec3> loop, unshadowed(S);
+    for (size_t k = 0; k < Emitters.size(); ++k)
+    {
+      const Emitter& em = Emitters[k];
+      if (Dot(em.Centre - f.Origin, f.Normal) < -em.Radius ||
+        (em.Planar && Dot(f.Origin - em.Centre, em.Normal) <= 0))
+      {
+        continue; // wholly behind the point, or the point behind the emitter
+      }
+      std::fill(unshadowed.begin(), unshadowed.end(), Vec3());
+      bool any = false;
+      for (int e : em.Elements)
+      {
+        const double factor = ElementFactor(e, f, loop, scratch);
+        for (int m = 0; m < S && factor > 0; ++m)
+        {
+          unshadowed[m] += Emission[static_cast<size_t>(e) * S + m] * factor;
+        }
+        any = any || factor > 0;
+      }
+      if (!any)
+      {
+        continue;
+      }
+      const double seen = Shadows ? SeenFraction(p, k, f.Origin, rays) : 1.0;
+      for (int m = 0; m < S; ++m)
+      {
+        out[m] += unshadowed[m] * seen;
+      }
+    }
+    return rays;
+  }
+
+  /// F(point -> element e), 0 where the point is behind the element.
+  double ElementFactor(int e, const PointFrame& f, std::vector<Vec3>& loop, std::vector<Vec3>& scratch) const
+  {
+    if (Dot(f.Origin - G.Centroid[e], G.Normal[e]) <= 0)
+    {
+      return 0.0;
+    }
+    const int* ids = Mesh.Polygon(e);
+    loop.clear();
+    for (int v = 0; v < Mesh.PolygonSize(e); ++v)
+    {
+      loop.push_back(Mesh.Points[ids[v]]);
+    }
+    return PointToPolygonFormFactor(f.Origin, f.Normal, loop.data(), static_cast<int>(loop.size()), scratch);
+  }
+
+  double SeenFraction(size_t p, size_t k, const Vec3& from, long long& rays) const
+  {
+    SampleStream random(p, k, 0x5eed + Salt);
+    int seen = 0;
+    for (int r = 0; r < LightRays; ++r)
+    {
+      seen += Rays.Occluded(from, EmitterPoint(Emitters[k], r, LightRays, random)) ? 0 : 1;
+    }
+    rays += LightRays;
+    return static_cast<double>(seen) / LightRays;
+  }
+
+  /// Irradiance from the element solution less its emission (the emitters were taken
+  /// directly), along Side x Side stratified cosine rays; back faces send nothing.
+  long long Interreflection(size_t p, const PointFrame& f, std::vector<Vec3>& out) const
+  {
+    if (Side == 0)
+    {
+      return 0;
+    }
+    Vec3 t = Normalized(f.Edge - f.Normal * Dot(f.Edge, f.Normal)), b;
+    if (Norm(t) == 0)
+    {
+      TangentFrame(f.Normal, t, b);
+    }
+    b = Cross(f.Normal, t);
+    SampleStream random(p, 0x9a7e, Salt);
+    Visibility::Hit hit;
+    for (int i = 0; i < Side; ++i)
+    {
+      for (int j = 0; j < Side; ++j)
+      {
+        const double u = (i + random.Next()) / Side, phi = 2 * M_PI * (j + random.Next()) / Side;
+        const double r = std::sqrt(u);
+        const Vec3 d = t * (r * std::cos(phi)) + b * (r * std::sin(phi)) + f.Normal * std::sqrt(1 - u);
+        if (!Rays.Intersect(f.Origin, d, hit) || hit.Polygon < 0 || Dot(G.Normal[hit.Polygon], d) >= 0)
+        {
+          continue;
+        }
+        const size_t at = static_cast<size_t>(hit.Polygon) * S;
+        for (int m = 0; m < S; ++m)
+        {
+          out[m] += Radiosity[at + m] - Emission[at + m];
+        }
+      }
+    }
+    const double inv = 1.0 / (Side * Side);
+    for (int m = 0; m < S; ++m)
+    {
+      out[m] = out[m] * inv;
+    }
+    return static_cast<long long>(Side) * Side;
+  }
+
+  const SceneMesh& Mesh;
+  const SceneGeometry& G;
+  const Visibility& Rays;
+  const std::vector<Vec3>& Emission;
+  const std::vector<Vec3>& Radiosity;
+  const int S;
+  const int Side;
+  const int LightRays;
+  const bool Shadows;
+  const std::uint64_t Salt;
+  const std::vector<PointFrame> Frames;
+  const std::vector<Vec3> PointEmission;
+  const std::vector<Emitter>& Emitters;
+};
+} // namespace
+
+namespace
+{
+/// Every frame of `gather` on the pool, in blocks between which `progress` is told the
+/// fraction done, mapped to [from, to).
+GatheredPoints Run(const Gather& gather, int solutions, const WorkerPool& pool,
+  const std::function<bool(double)>& progress, double from, double to)
+{
+  GatheredPoints out;
+  const size_t points = gather.Points();
+  out.Radiosity.assign(points * solutions, Vec3());
+  out.Direct.assign(points * solutions, Vec3());
+  const int blocks = static_cast<int>(std::min<size_t>(64, std::max<size_t>(1, points / 256)));
+  std::vector<long long> pointRays(points, 0);
+  for (int block = 0; block < blocks && !out.Aborted; ++block)
+  {
+    const size_t first = points * block / blocks, last = points * (block + 1) / blocks;
+    pool.For(static_cast<int>(last - first), 16, [&](int begin, int end) {
+      std::vector<Vec3> scratch;
+      for (int i = begin; i < end; ++i)
+      {
+        const size_t p = first + i;
+        pointRays[p] = gather.Evaluate(p, &out.Radiosity[p * solutions], &out.Direct[p * solutions], scratch);
+      }
+    });
+    out.Aborted = progress && !progress(from + (to - from) * (block + 1) / blocks) && block + 1 < blocks;
+  }
+  for (long long r : pointRays)
+  {
+    out.Rays += r;
+  }
+  return out;
+}
+} // namespace
+
+GatheredPoints GatherAtPoints(const SceneMesh& mesh, const SceneGeometry& geometry, const Visibility& rays,
+  const std::vector<Vec3>& emission, const std::vector<Vec3>& radiosity, int solutions,
+  const GatherSettings& settings, int threads, const std::function<bool(double)>& progress, bool shadows)
+{
+  const std::vector<Emitter> emitters = MakeEmitters(mesh, geometry, emission, solutions);
+  const WorkerPool pool(threads);
+  const int passes = std::max(0, settings.Sweeps) + 1;
+  std::vector<Vec3> source = radiosity, cellDirect;
+  long long sweepRays = 0;
+  for (int sweep = 0; sweep + 1 < passes; ++sweep)
+  {
+    const Gather pass(mesh, geometry, rays, emission, source, solutions, emitters, ElementFrames(mesh, geometry),
+      emission, settings.SweepRays, settings.SweepLightRays, shadows, sweep + 1);
+    GatheredPoints elements = Run(pass, solutions, pool, progress, double(sweep) / passes, double(sweep + 1) / passes);
+    sweepRays += elements.Rays;
+    if (elements.Aborted)
+    {
+      elements.Radiosity.clear();
+      elements.Direct.clear();
+      return elements;
+    }
+    source = std::move(elements.Radiosity);
+    cellDirect = std::move(elements.Direct);
+  }
+  std::vector<Vec3> pointEmission;
+  std::vector<PointFrame> frames = MakeFrames(mesh, geometry, emission, solutions, pointEmission);
+  const Gather last(mesh, geometry, rays, emission, source, solutions, emitters, std::move(frames),
+    std::move(pointEmission), settings.Rays, settings.LightRays, shadows, 0);
+  GatheredPoints out = Run(last, solutions, pool, progress, double(passes - 1) / passes, 1.0);
+  out.Rays += sweepRays;
+  if (out.Aborted)
+  {
+    out.Radiosity.clear();
+    out.Direct.clear();
+  }
+  else if (passes > 1)
+  {
+    out.Cells = std::move(source);
+    out.CellsDirect = std::move(cellDirect);
+  }
+  return out;
+}
+
+std::vector<Vec3> CellsFromPoints(const SceneMesh& mesh, const SceneGeometry& geometry,
+  const std::vector<Vec3>& points, const std::vector<Vec3>& cells, int solutions)
+{
+  std::vector<Vec3> out = cells;
+  for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
+  {
+    const int count = mesh.PolygonSize(e);
+    if (geometry.Sheltered[e] || count == 0)
+    {
+      continue;
+    }
+    const int* ids = mesh.Polygon(e);
+    for (int m = 0; m < solutions; ++m)
+    {
+      Vec3 sum;
+      for (int v = 0; v < count; ++v)
+      {
+        sum += points[static_cast<size_t>(ids[v]) * solutions + m];
+      }
+      out[static_cast<size_t>(e) * solutions + m] = sum * (1.0 / count);
+    }
+  }
+  return out;
+}
+
+} // namespace radiosity

@@ -1,0 +1,70 @@
+// The local pass of two-pass radiosity: the solution evaluated at the points that are
+// displayed (Smits, Arvo & Greenberg 1994; Lischinski, Tampieri & Greenberg 1993). Direct
+// light is computed at each point from every emitter with shadow rays; interreflection is
+// gathered along cosine rays from the point into the element solution. A ray starts on
+// the point's own side of every wall, so light cannot leak to it, and an element's value
+// is read one bounce away, where averaging over the element no longer shows.
+#ifndef RadiosityCore_FinalGather_h
+#define RadiosityCore_FinalGather_h
+
+#include "Geometry/Scene.h"
+#include "Geometry/Visibility.h"
+
+#include <functional>
+#include <vector>
+
+namespace radiosity
+{
+
+struct GatherSettings
+{
+  /// Cosine-distributed rays per point into the element solution (rounded down to a
+  /// square, for strata); 0 turns the gather off.
+  int Rays = 64;
+  /// Shadow rays per point to each emitting patch it can see.
+  int LightRays = 16;
+  /// Passes over the elements before the points: each element's value gathered anew at
+  /// its centroid (direct light with SweepLightRays shadow rays, SweepRays cosine rays
+  /// into the previous pass), so what the element solution lost or leaked shrinks by the
+  /// reflectance at each pass before the points read it.
+  int Sweeps = 1;
+  int SweepRays = 16;
+  int SweepLightRays = 4;
+};
+
+struct GatheredPoints
+{
+  /// [point * solutions + m]: emission plus reflected direct light plus gathered
+  /// interreflection, per solution. Empty where the gather was stopped.
+  std::vector<Vec3> Radiosity;
+  std::vector<Vec3> Direct; ///< emission plus reflected direct light only, same layout
+  /// The last sweep's element values ([element * solutions + m], each gathered at the
+  /// element's centroid, inside it) and their direct part; empty without sweeps.
+  std::vector<Vec3> Cells, CellsDirect;
+  long long Rays = 0;       ///< rays cast, shadow rays included
+  bool Aborted = false;
+};
+
+/// The gather at every point of `mesh` used by a polygon (others get 0): `radiosity` and
+/// `emission` are per element and solution ([e * solutions + m]), the solver's output and
+/// input. A point takes the normal, reflectance and emission of the open elements around
+/// it (sheltered ones only where it has no open one) and is evaluated a hair inside them,
+/// so a point on a wall's foot sees only its own room. Every point draws its own numbers
+/// (SampleStream by point index): the result does not depend on the thread count.
+/// `threads` 0 takes every hardware thread; `progress` (may be empty) is called between
+/// blocks of points with the fraction done, and false from it stops the gather. Without
+/// `shadows` (where the solve found no surface that can block) no shadow rays are cast.
+GatheredPoints GatherAtPoints(const SceneMesh& mesh, const SceneGeometry& geometry, const Visibility& rays,
+  const std::vector<Vec3>& emission, const std::vector<Vec3>& radiosity, int solutions,
+  const GatherSettings& settings, int threads = 0, const std::function<bool(double)>& progress = {},
+  bool shadows = true);
+
+/// Element values from gathered point values: each open element the mean of its corners,
+/// sheltered and enclosed ones keep the solver's `cells` (dark for a reason that stops at
+/// their edge, as in AverageToPoints).
+std::vector<Vec3> CellsFromPoints(const SceneMesh& mesh, const SceneGeometry& geometry,
+  const std::vector<Vec3>& points, const std::vector<Vec3>& cells, int solutions);
+
+} // namespace radiosity
+
+#endif
