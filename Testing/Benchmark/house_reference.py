@@ -170,7 +170,7 @@ def compare(mesh, cells, csv_path, names, average=False):
     weights = [_weights(mesh, c, x) for c, x in cells]
     cells = np.array([c for c, _ in cells])
     table = np.loadtxt(csv_path, delimiter=",", skiprows=1, ndmin=2)
-    errors, ours_all, ref_all = {}, 0.0, 0.0
+    errors, ours_all, ref_all, rows_out = {}, 0.0, 0.0, []
     for k, name in enumerate(names):
         rows = table[table[:, 1] == k]
         want = np.zeros(len(cells))
@@ -181,6 +181,9 @@ def compare(mesh, cells, csv_path, names, average=False):
             values = relight.point_array(mesh, f"Radiosity_{name}").reshape(mesh.GetNumberOfPoints(), -1)
             got = np.array([values[ids].mean(axis=1) @ w for ids, w in weights])
         errors[name] = float(np.abs(got - want).mean() / want.mean())
+        rows_out += [(i, k, g, w) for i, (g, w) in enumerate(zip(got, want))]
         ours_all, ref_all = ours_all + got, ref_all + want
+    np.savetxt(csv_path.with_suffix(".ours.csv"), np.array(rows_out), delimiter=",", fmt="%.6g",
+               header="probe,light,ours,reference", comments="")  # per probe, for a closer look
     lit = ref_all > 0.2 * ref_all.mean()
     return errors, float(np.median(ours_all[lit] / ref_all[lit])), int(lit.sum())

@@ -41,6 +41,9 @@ struct GatheredPoints
   /// The last sweep's element values ([element * solutions + m], each gathered at the
   /// element's centroid, inside it) and their direct part; empty without sweeps.
   std::vector<Vec3> Cells, CellsDirect;
+  /// Per point, 1 where it saw mostly back faces and no visible neighbour could fill in
+  /// for it (see FillHidden in FinalGather.cxx).
+  std::vector<char> Hidden;
   long long Rays = 0;       ///< rays cast, shadow rays included
   bool Aborted = false;
 };
@@ -48,8 +51,8 @@ struct GatheredPoints
 /// The gather at every point of `mesh` used by a polygon (others get 0): `radiosity` and
 /// `emission` are per element and solution ([e * solutions + m]), the solver's output and
 /// input. A point takes the normal, reflectance and emission of the open elements around
-/// it (sheltered ones only where it has no open one) and is evaluated a hair inside them,
-/// so a point on a wall's foot sees only its own room. Every point draws its own numbers
+/// it (sheltered ones only where it has no open one) and is evaluated a quarter of the way
+/// to their centre, so a point on a wall's foot sees only its own room. Every point draws its own numbers
 /// (SampleStream by point index): the result does not depend on the thread count.
 /// `threads` 0 takes every hardware thread; `progress` (may be empty) is called between
 /// blocks of points with the fraction done, and false from it stops the gather. Without

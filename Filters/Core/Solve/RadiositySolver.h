@@ -186,7 +186,8 @@ struct Solution
   std::vector<Vec3> Ambient;   ///< per solution, the ambient radiosity (0 without it)
   /// The final gather (SolverOptions::Gather): per mesh point and solution
   /// ([point * Solutions + m]), empty where it was off or stopped. Radiosity and Direct
-  /// then hold their open elements' corner means (CellsFromPoints).
+  /// then hold the gather's element values (its last sweep, or the corner means of the
+  /// points without sweeps), no longer the element solution.
   std::vector<Vec3> PointRadiosity;
   std::vector<Vec3> PointDirect;
   long long GatherRays = 0; ///< the rays the gather cast (the statistics count the solve's)

@@ -31,7 +31,8 @@ mesher = RadiosityMesher(Input=scene, PatchSize=1.0, ElementSize=0.5 if mode != 
 # and its exact per-element shots keep that difference below the 1 % this test allows (the
 # hierarchical method under MPI is held to the serial answer in Core.Distributed*).
 solver = LightTaggedRadiosity(Input=mesher, ConvergenceThreshold=1e-4, SolverMethod="ProgressiveRefinement",
-                              PatchBasis=1 if mode.startswith("moving") else 0)
+                              PatchBasis=1 if mode.startswith("moving") else 0,
+                              GatherRays=0 if mode == "redistributed" else 64)  # see TestMPI.py
 relight = RadiosityRelight(Input=solver)
 if mode.startswith("moving"):
     relight.MovingLights = XMLPolyDataReader(FileName=[sys.argv[4]])

@@ -129,9 +129,10 @@ lamp = [(centre[0], centre[1] - half, centre[2] - half), (centre[0], centre[1] -
         (centre[0], centre[1] + half, centre[2] + half), (centre[0], centre[1] + half, centre[2] - half)]  # faces -x
 scene = make_scene(room + [lamp], colors + [(0.0, 0.0, 0.0)], [-1] * 6 + [0], light_names=["Lamp"])
 def tagged(patch, basis):
-    # Converged: the default shot cap would stop the fine meshes early.
+    # Converged: the default shot cap would stop the fine meshes early. The basis carries the
+    # element solution's interreflection, so that is what it is held against (GatherRays 0).
     return relight.solve(scene, patch, ELEMENT, ConvergenceThreshold=1e-5, MaximumShots=1000000,
-                         PatchBasis=basis, SeparateDirect=True)
+                         PatchBasis=basis, SeparateDirect=True, GatherRays=0)
 
 
 ELEMENT = 0.25
