@@ -169,10 +169,12 @@ public:
 
   ///@{
   /// Clustered method only: two groups of elements exchange light as a whole when their
-  /// centres are farther apart than this many times the sum of their radii (default 4,
+  /// centres are farther apart than this many times the sum of their radii (default 3,
   /// 2 or more; other values are an error at the update). Larger is more accurate and
-  /// slower: the FZK-Haus (112,740 elements) against Mitsuba 3, 16.4 % mean error at 3,
-  /// 13.4 % at 4, 10.5 % at 6, 9.4 % at 8, in 20, 28, 48 and 69 s (docs/benchmarks.md).
+  /// slower; with the final gather (GatherRays) the element solution is read one bounce
+  /// away, and the FZK-Haus (112,740 elements) at probes traced from its lamps is 5.5 %
+  /// from Mitsuba 3 at 2, 5.1 % at 3, 4.9 % at 4, solved in 18, 25 and 33 s
+  /// (docs/benchmarks.md).
   vtkSetMacro(ClusterSeparation, double);
   static double GetClusterSeparationMinValue() { return 2.0; }
   static double GetClusterSeparationMaxValue() { return VTK_DOUBLE_MAX; }
@@ -353,7 +355,7 @@ private:
   int FormFactorMethod = ANALYTIC;
   int FormFactorSamples = 4;
   double TimeBudget = 0;
-  double ClusterSeparation = 4.0;
+  double ClusterSeparation = 3.0;
   int GatherRays = 64;
   bool AmbientTerm = false;
   bool SeparateDirect = false;

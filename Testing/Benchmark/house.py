@@ -100,7 +100,7 @@ def add_lamps(house, lamps, half=0.15):
     return marker.GetOutput()
 
 
-def solve(scene, patch, element, cluster_angle=30.0, time_budget=0.0, method="Auto", separation=4.0, gather_rays=64):
+def solve(scene, patch, element, cluster_angle=30.0, time_budget=0.0, method="Auto", separation=3.0, gather_rays=64):
     """Mesh + solve at the solver's default settings (Auto picks the clustered method here);
     keeps warnings and errors."""
     mesher = relight.vtkRadiosityMesher()
@@ -167,7 +167,7 @@ def main():
     parser.add_argument("--cluster-angle", type=float, default=30.0, help="the mesher's ClusterAngle (0: no face clusters)")
     parser.add_argument("--time-budget", type=float, default=0.0, help="the solver's TimeBudget, s (0: solve to convergence)")
     parser.add_argument("--method", default="Auto", help="SolverMethod: Auto, ProgressiveRefinement, Hierarchical, Clustered")
-    parser.add_argument("--cluster-separation", type=float, default=4.0,
+    parser.add_argument("--cluster-separation", type=float, default=3.0,
                         help="ClusterSeparation (clustered method): larger is more accurate and slower")
     parser.add_argument("--gather-rays", type=int, default=64, help="GatherRays: the final gather's rays per point (0: off)")
     parser.add_argument("--reference", action="store_true", help="compare with Mitsuba 3 at probe points (rendered once per mesh)")

@@ -192,6 +192,21 @@ EffectDecision SplitRow(const SolverOptions& options, double polygons, int solut
       ? "simulated: asked for (SeparateDirect)"
       : Format("skipped: not asked for (SeparateDirect off); saved %.2f MB", Megabytes(polygons * solutions * 3 * 4.0 * 2)) };
 }
+EffectDecision GatherRow(const SolverOptions& options, const Solution& solution)
+{
+  const GatherSettings& g = options.Gather;
+  if (g.Rays <= 0)
+  {
+    return { "FinalGather", false, "skipped: not asked for (GatherRays 0); the points show their elements' mean" };
+  }
+  if (solution.PointRadiosity.empty())
+  {
+    return { "FinalGather", false, "skipped: stopped before it ended; the points show their elements' mean" };
+  }
+  return { "FinalGather", true,
+    Format("simulated: %.0f sweep(s) over the elements, then %.0f rays and %.0f shadow rays a light a point; %.0f rays",
+      g.Sweeps, g.Rays, g.LightRays, static_cast<double>(solution.GatherRays)) };
+}
 } // namespace
 
 std::vector<EffectDecision> DescribeEffects(const SceneMesh& mesh, const SolverOptions& options,
@@ -201,7 +216,7 @@ std::vector<EffectDecision> DescribeEffects(const SceneMesh& mesh, const SolverO
   const double n = mesh.NumberOfPolygons();
   return { VisibilityRow(options, s), InterreflectionRow(mesh, options, s), ColorRow(options, s, n, solution.Solutions),
     SeparationRow(grouping, lights, mode, n), ConvergedRow(options, s, n), SplitRow(options, n, solution.Solutions),
-    { "MovingLightBasis", false, "skipped: not asked for (no patch basis built)" } };
+    GatherRow(options, solution), { "MovingLightBasis", false, "skipped: not asked for (no patch basis built)" } };
 }
 
 std::string SummarizeEffects(const std::vector<EffectDecision>& effects)

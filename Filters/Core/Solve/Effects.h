@@ -16,7 +16,7 @@ std::string GroupLights(int lights, const std::vector<int>& banks, const std::ve
   EffectMode separation, LightGrouping& grouping);
 
 /// One row per effect, in a fixed order: Visibility, Interreflection, Color,
-/// LightSeparation, ConvergedLights, DirectIndirectSplit, MovingLightBasis.
+/// LightSeparation, ConvergedLights, DirectIndirectSplit, FinalGather, MovingLightBasis.
 std::vector<EffectDecision> DescribeEffects(const SceneMesh& mesh, const SolverOptions& options,
   const Solution& solution, const LightGrouping& grouping, int lights, SolutionMode mode);
 

@@ -223,3 +223,34 @@ TEST(FinalGather, AStoppedGatherKeepsTheElementSolution)
   EXPECT_TRUE(s.PointRadiosity.empty());
   EXPECT_TRUE(s.Statistics.Aborted);
 }
+
+TEST(FinalGather, ClosedRoomNearRhoOneAtTheDefaultsTakesTheClosedForm)
+{
+  // A closed 4 m room of uniform rho, one ceiling element emitting: light only leaves by
+  // absorption, so sum A B = sum A E / (1 - rho) exactly, whatever the view factors. At the
+  // defaults the shot cap stops rho = 0.999 long before it converges (the ambient term takes
+  // up the rest); the gathered answer must still hold the closed form.
+  for (double rho : { 0.99, 0.999 })
+  {
+    SceneMesh mesh = Box(4.0, 8, 2, { rho, rho, rho }, [](int) { return -1; });
+    mesh.LightId[64 + 27] = 0; // a ceiling element near the middle
+    SolverOptions o; // the defaults: Auto, threshold 1e-3, the automatic shot cap
+    o.Gather.Rays = 64;
+    const Solution s = SolveTagged(mesh, o, 1);
+    const SceneGeometry g(mesh);
+    double power = 0, emitted = 0, pointsMean = 0;
+    for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
+    {
+      power += s.Radiosity[e].x * g.Area[e];
+      emitted += (mesh.LightId[e] == 0 ? 1.0 : 0.0) * g.Area[e];
+    }
+    const double exact = emitted / (1 - rho);
+    EXPECT_NEAR(power / exact, 1.0, 0.01) << "rho " << rho << ", " << s.Statistics.Shots << " shots";
+    for (const Vec3& b : s.PointRadiosity)
+    {
+      pointsMean += b.x / s.PointRadiosity.size();
+    }
+    // Far from the lamp the light is nearly even: the points' mean holds it too.
+    EXPECT_NEAR(pointsMean * 96.0 / exact, 1.0, 0.02) << "rho " << rho;
+  }
+}

@@ -31,7 +31,7 @@ room = make_scene([[c[i] for i in f] for f in faces], [(0.6, 0.6, 0.6)] * 6, [-1
 auto, forced = solve(room), solve(room, force=True)
 decided = effects(auto.GetOutput())
 check(list(decided) == ["Visibility", "Interreflection", "Color", "LightSeparation", "ConvergedLights",
-                        "DirectIndirectSplit", "MovingLightBasis"], f"effect rows {list(decided)}")
+                        "DirectIndirectSplit", "FinalGather", "MovingLightBasis"], f"effect rows {list(decided)}")
 check(decided["Visibility"][0] == "skipped" and "convex" in decided["Visibility"][1], f"visibility: {decided['Visibility']}")
 check(decided["Color"][0] == "skipped" and "grey" in decided["Color"][1], f"color: {decided['Color']}")
 forced_decisions = effects(forced.GetOutput())
