@@ -184,9 +184,11 @@ public:
   ///@{
   /// The final gather: at every point of the output, direct light from each emitter with
   /// shadow rays, and this many cosine rays into the element solution for the reflected
-  /// light (default 64; 0: the points take the mean of their elements, as a plain
+  /// light (default 256; 0: the points take the mean of their elements, as a plain
   /// radiosity solution does). Light cannot leak to a point through a wall, and an
-  /// element's average no longer shows where a light's peak is steep.
+  /// element's average no longer shows where a light's peak is steep. Fewer rays are
+  /// noisier: the furnished room (37,007 elements) is 1.61 % from Mitsuba 3 without the
+  /// gather, 1.95 % at 64 rays, 1.17 % at 256, 1.00 % at 1,024 (4.0, 5.6, 7.0, 13.0 s).
   vtkSetClampMacro(GatherRays, int, 0, 1 << 16);
   vtkGetMacro(GatherRays, int);
   ///@}
@@ -356,7 +358,7 @@ private:
   int FormFactorSamples = 4;
   double TimeBudget = 0;
   double ClusterSeparation = 3.0;
-  int GatherRays = 64;
+  int GatherRays = 256;
   bool AmbientTerm = false;
   bool SeparateDirect = false;
   int NumberOfThreads = 0;

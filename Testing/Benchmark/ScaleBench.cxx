@@ -129,6 +129,7 @@ int main(int argc, char* argv[])
   double patch = 0.4;
   long long referenceElements = 40000;
   double mitsubaSeconds = 0; // wall time of the reference render (all probes, all lights)
+  int gatherRays = 256;      // the final gather, as the solver filter does by default (0: off)
   std::string csvPath = "out/bench/scale.csv", exportPath, mitsubaPath;
   for (int i = 1; i + 1 < argc; i += 2)
   {
@@ -154,14 +155,17 @@ int main(int argc, char* argv[])
       mitsubaPath = argv[i + 1];
     else if (key == "--mitsuba-seconds")
       mitsubaSeconds = std::atof(argv[i + 1]);
+    else if (key == "--gather")
+      gatherRays = std::atoi(argv[i + 1]);
   }
   const RoomPolygons room = FurnishedRoom();
   const int lights = static_cast<int>(room.LightNames.size());
   const double area = TotalArea(room);
   const Probes probes(3000);
   WorkerPool pool(0);
-  std::printf("Scale benchmark: furnished room, %zu polygons, %d lights, %.0f m^2, patch size %.2f m, %d threads\n\n",
-    room.Reflectance.size(), lights, area, patch, pool.Threads());
+  std::printf("Scale benchmark: furnished room, %zu polygons, %d lights, %.0f m^2, patch size %.2f m, %d threads, "
+              "final gather %d rays\n\n",
+    room.Reflectance.size(), lights, area, patch, pool.Threads(), gatherRays);
 
   // The probes are placed from a small mesh (the geometry, so the hit points, is the same
   // at every size). The reference: Mitsuba 3's path tracer where its values are given,
@@ -224,6 +228,7 @@ int main(int argc, char* argv[])
     SolverOptions options;
     options.SolverMethod = SolverMethod::Hierarchical;
     options.MaximumShots = 1000000;
+    options.Gather.Rays = gatherRays;
     double worst = 0, mean = 0;
     const Run tagged = SolveRoom(solver, mesh, lights, SolutionMode::LightTagged, options);
     mean = MeanError(Sample(solver, mesh, tagged.Result, probes), referenceValues, lights, &worst);

@@ -100,7 +100,7 @@ def add_lamps(house, lamps, half=0.15):
     return marker.GetOutput()
 
 
-def solve(scene, patch, element, cluster_angle=30.0, time_budget=0.0, method="Auto", separation=3.0, gather_rays=64):
+def solve(scene, patch, element, cluster_angle=30.0, time_budget=0.0, method="Auto", separation=3.0, gather_rays=256):
     """Mesh + solve at the solver's default settings (Auto picks the clustered method here);
     keeps warnings and errors."""
     mesher = relight.vtkRadiosityMesher()
@@ -169,7 +169,7 @@ def main():
     parser.add_argument("--method", default="Auto", help="SolverMethod: Auto, ProgressiveRefinement, Hierarchical, Clustered")
     parser.add_argument("--cluster-separation", type=float, default=3.0,
                         help="ClusterSeparation (clustered method): larger is more accurate and slower")
-    parser.add_argument("--gather-rays", type=int, default=64, help="GatherRays: the final gather's rays per point (0: off)")
+    parser.add_argument("--gather-rays", type=int, default=256, help="GatherRays: the final gather's rays per point (0: off)")
     parser.add_argument("--reference", action="store_true", help="compare with Mitsuba 3 at probe points (rendered once per mesh)")
     parser.add_argument("--element-average", type=int, default=0, metavar="N",
                         help="with --reference: compare element means (Mitsuba at N points spread over each probe's "

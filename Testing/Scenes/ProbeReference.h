@@ -47,7 +47,9 @@ inline std::vector<double> Sample(const RadiositySolver& solver, const SceneMesh
   const Probes& probes)
 {
   const int L = s.Solutions;
-  const std::vector<Vec3> points = radiosity::AverageToPoints(mesh, solver.Geometry(), s.Radiosity, L);
+  const std::vector<Vec3> points = s.PointRadiosity.empty()
+    ? radiosity::AverageToPoints(mesh, solver.Geometry(), s.Radiosity, L)
+    : s.PointRadiosity; // the final gather's, where it ran
   std::vector<double> values(probes.Origin.size() * L, std::nan(""));
   for (size_t i = 0; i < probes.Origin.size(); ++i)
   {

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace radiosity
 {
@@ -36,6 +37,11 @@ struct Emitter
   Vec3 Centre, Normal;
   double Radius = 0;
   bool Planar = true;
+  /// Where every element emits alike: the patch's outline (start, end pairs; the shared
+  /// edges cancel), so Lambert's formula costs its outline, not its elements (a lamp meshed
+  /// fine is thousands), and that exitance per solution.
+  std::vector<Vec3> Outline;
+  std::vector<Vec3> Exitance;
 };
 
 /// Which elements around each point count: open ones, sheltered ones only where a point
@@ -157,6 +163,52 @@ void AddTriangles(const SceneMesh& mesh, const SceneGeometry& g, int e, Emitter&
   }
 }
 
+/// The outline and common exitance of a planar emitter whose elements emit alike; both
+/// stay empty where they do not.
+void AddOutline(const SceneMesh& mesh, const std::vector<Vec3>& emission, int solutions, Emitter& out)
+{
+  const size_t first = static_cast<size_t>(out.Elements.front()) * solutions;
+  for (int e : out.Elements)
+  {
+    for (int m = 0; m < solutions; ++m)
+    {
+      const Vec3 d = emission[static_cast<size_t>(e) * solutions + m] - emission[first + m];
+      if (d.x != 0 || d.y != 0 || d.z != 0 || !out.Planar)
+      {
+        return;
+      }
+    }
+  }
+  std::map<std::pair<int, int>, int> edges;
+  for (int e : out.Elements)
+  {
+    const int* ids = mesh.Polygon(e);
+    const int n = mesh.PolygonSize(e);
+    for (int v = 0; v < n; ++v)
+    {
+      const int a = ids[v], b = ids[(v + 1) % n];
+      auto reverse = edges.find({ b, a });
+      if (reverse != edges.end() && reverse->second > 0)
+      {
+        --reverse->second;
+      }
+      else
+      {
+        ++edges[{ a, b }];
+      }
+    }
+  }
+  for (const auto& edge : edges)
+  {
+    for (int c = 0; c < edge.second; ++c)
+    {
+      out.Outline.push_back(mesh.Points[edge.first.first]);
+      out.Outline.push_back(mesh.Points[edge.first.second]);
+    }
+  }
+  out.Exitance.assign(emission.begin() + first, emission.begin() + first + solutions);
+}
+
 /// The emitting, unenclosed elements grouped by patch.
 std::vector<Emitter> MakeEmitters(
   const SceneMesh& mesh, const SceneGeometry& g, const std::vector<Vec3>& emission, int solutions)
@@ -201,6 +253,7 @@ std::vector<Emitter> MakeEmitters(
     {
       c /= emitter.Cdf.back();
     }
+    AddOutline(mesh, emission, solutions, emitter);
   }
   return emitters;
 }
@@ -286,18 +339,7 @@ private:
       {
         continue; // wholly behind the point, or the point behind the emitter
       }
-      std::fill(unshadowed.begin(), unshadowed.end(), Vec3());
-      bool any = false;
-      for (int e : em.Elements)
-      {
-        const double factor = ElementFactor(e, f.Origin, f.Normal, loop, scratch);
-        for (int m = 0; m < S && factor > 0; ++m)
-        {
-          unshadowed[m] += Emission[static_cast<size_t>(e) * S + m] * factor;
-        }
-        any = any || factor > 0;
-      }
-      if (!any)
+      if (!Unshadowed(em, f.Origin, f.Normal, unshadowed, loop, scratch))
       {
         continue;
       }
@@ -327,17 +369,7 @@ private:
         {
           continue;
         }
-        std::fill(unshadowed.begin(), unshadowed.end(), Vec3());
-        bool any = false;
-        for (int e : em.Elements)
-        {
-          const double factor = ElementFactor(e, x, f.Normal, loop, scratch);
-          for (int m = 0; m < S && factor > 0; ++m)
-          {
-            unshadowed[m] += Emission[static_cast<size_t>(e) * S + m] * factor;
-          }
-          any = any || factor > 0;
-        }
+        const bool any = Unshadowed(em, x, f.Normal, unshadowed, loop, scratch);
         SampleStream random(p * LightRays + r, k, 0x5eed + Salt);
         if (!any || (Shadows && (++rays, Rays.Occluded(x, EmitterPoint(em, r, LightRays, random)))))
         {
@@ -387,6 +419,41 @@ private:
     }
     const Vec3 x = a + (Mesh.Points[ids[v]] - a) * s + (Mesh.Points[ids[v + 1]] - a) * q;
     return x + f.Normal * G.RayLift;
+  }
+
+  /// The irradiance the emitter gives dA at x with `normal` where nothing blocks it, per
+  /// solution; false where it gives none. By the outline where every corner of it is in
+  /// front of x (no clipping needed), else element by element.
+  bool Unshadowed(const Emitter& em, const Vec3& x, const Vec3& normal, std::vector<Vec3>& out,
+    std::vector<Vec3>& loop, std::vector<Vec3>& scratch) const
+  {
+    std::fill(out.begin(), out.end(), Vec3());
+    bool whole = !em.Outline.empty();
+    for (size_t i = 0; whole && i < em.Outline.size(); ++i)
+    {
+      whole = Dot(em.Outline[i] - x, normal) > 0;
+    }
+    if (whole)
+    {
+      const double factor =
+        EdgeSetFormFactor(x, normal, em.Outline.data(), static_cast<int>(em.Outline.size() / 2));
+      for (int m = 0; m < S; ++m)
+      {
+        out[m] = em.Exitance[m] * factor;
+      }
+      return factor > 0;
+    }
+    bool any = false;
+    for (int e : em.Elements)
+    {
+      const double factor = ElementFactor(e, x, normal, loop, scratch);
+      for (int m = 0; m < S && factor > 0; ++m)
+      {
+        out[m] += Emission[static_cast<size_t>(e) * S + m] * factor;
+      }
+      any = any || factor > 0;
+    }
+    return any;
   }
 
   /// F(dA at x with `normal` -> element e), 0 where x is behind the element.
