@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numeric>
 
 namespace radiosity
 {
@@ -67,6 +68,7 @@ std::vector<PointFrame> MakeFrames(const SceneMesh& mesh, const SceneGeometry& g
   std::vector<PointFrame> frames(points);
   std::vector<Vec3> centre(points);
   std::vector<double> weight(points, 0.0);
+  std::vector<Vec3> firstNormal(points);
   pointEmission.assign(points * solutions, Vec3());
   for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
   {
@@ -82,6 +84,7 @@ std::vector<PointFrame> MakeFrames(const SceneMesh& mesh, const SceneGeometry& g
       if (weight[p] == 0)
       {
         frames[p].Edge = mesh.Points[ids[1 % mesh.PolygonSize(e)]] - mesh.Points[ids[0]];
+        firstNormal[p] = g.Normal[e];
       }
       weight[p] += w;
       frames[p].Normal += g.Normal[e] * w;
@@ -89,7 +92,7 @@ std::vector<PointFrame> MakeFrames(const SceneMesh& mesh, const SceneGeometry& g
       centre[p] += g.Centroid[e] * w;
       for (int m = 0; m < solutions; ++m)
       {
-        pointEmission[p * solutions + m] += emission[static_cast<size_t>(e) * solutions + m] * w;
+        pointEmission[static_cast<size_t>(p) * solutions + m] += emission[static_cast<size_t>(e) * solutions + m] * w;
       }
     }
   }
@@ -102,7 +105,8 @@ std::vector<PointFrame> MakeFrames(const SceneMesh& mesh, const SceneGeometry& g
     const double inv = 1.0 / weight[p];
     PointFrame& f = frames[p];
     f.Used = true;
-    f.Normal = Normalized(f.Normal);
+    // Faces back to back on shared points sum to no normal: take the first one's.
+    f.Normal = Norm(f.Normal) > 1e-9 ? Normalized(f.Normal) : firstNormal[p];
     f.Reflectance = f.Reflectance * inv;
     for (int m = 0; m < solutions; ++m)
     {
@@ -114,7 +118,10 @@ std::vector<PointFrame> MakeFrames(const SceneMesh& mesh, const SceneGeometry& g
     // measured on the FZK-Haus at probes traced from the lamps: 5.15 % from Mitsuba 3 at a
     // hundredth of the way, 4.87 % at a quarter, 4.80 % at 0.4). Off the edge, too, so a
     // ray along a wall standing on that edge meets the wall instead of slipping past it.
-    const Vec3 inward = (centre[p] * inv - mesh.Points[p]) * 0.25;
+    // On a curved surface's convex side that centre lies under the surface: only the move
+    // along it is kept, or the point would start inside the solid and see only back faces.
+    Vec3 inward = (centre[p] * inv - mesh.Points[p]) * 0.25;
+    inward = inward - f.Normal * std::min(0.0, Dot(inward, f.Normal));
     f.Origin = mesh.Points[p] + inward + f.Normal * g.RayLift;
   }
   return frames;
@@ -274,6 +281,18 @@ Vec3 EmitterPoint(const Emitter& emitter, int r, int count, SampleStream& random
   return abc[0] + (abc[1] - abc[0]) * s + (abc[2] - abc[0]) * q;
 }
 
+/// A step coprime to n near n times the golden ratio's fraction: r -> (r * step + o) % n
+/// visits every stratum once, far from the order it is given in.
+int CoprimeStep(int n)
+{
+  int step = std::max(1, static_cast<int>(n * 0.618));
+  while (std::gcd(step, n) != 1)
+  {
+    ++step;
+  }
+  return step;
+}
+
 /// The whole state of one gather, shared read-only by the threads.
 class Gather
 {
@@ -293,6 +312,8 @@ public:
     , Side(std::max(0, static_cast<int>(std::sqrt(static_cast<double>(gatherRays)))))
     , LightRays(std::max(1, lightRays))
     , Shadows(shadows)
+    , RayStep(CoprimeStep(std::max(1, Side * Side)))
+    , LightStep(CoprimeStep(std::max(1, lightRays)))
     , Salt(salt)
     , Frames(std::move(frames))
     , PointEmission(std::move(frameEmission))
@@ -371,7 +392,8 @@ private:
         }
         const bool any = Unshadowed(em, x, f.Normal, unshadowed, loop, scratch);
         SampleStream random(p * LightRays + r, k, 0x5eed + Salt);
-        if (!any || (Shadows && (++rays, Rays.Occluded(x, EmitterPoint(em, r, LightRays, random)))))
+        const int end = (r * LightStep + 1) % LightRays;
+        if (!any || (Shadows && (++rays, Rays.Occluded(x, EmitterPoint(em, end, LightRays, random)))))
         {
           continue;
         }
@@ -526,7 +548,8 @@ private:
         const double u = (i + random.Next()) / Side, phi = 2 * M_PI * (j + random.Next()) / Side;
         const double r = std::sqrt(u);
         const Vec3 d = t * (r * std::cos(phi)) + b * (r * std::sin(phi)) + f.Normal * std::sqrt(1 - u);
-        if (!Rays.Intersect(Spot(f, i * Side + j, Side * Side, random), d, hit) || hit.Polygon < 0)
+        const int start = ((i * Side + j) * RayStep + 1) % (Side * Side);
+        if (!Rays.Intersect(Spot(f, start, Side * Side, random), d, hit) || hit.Polygon < 0)
         {
           continue;
         }
@@ -559,6 +582,10 @@ private:
   const int Side;
   const int LightRays;
   const bool Shadows;
+  /// The start stratum of a ray over an element is its direction's (or its lamp point's)
+  /// stratum shuffled by these steps: paired as given, near-normal rays would all start on
+  /// one half of a quad and the shadow rays' ends would follow their starts.
+  const int RayStep, LightStep;
   const std::uint64_t Salt;
   const std::vector<PointFrame> Frames;
   const std::vector<Vec3> PointEmission;
@@ -568,6 +595,22 @@ private:
 
 namespace
 {
+/// Elements a sweep does not evaluate (enclosed, or of no area) keep what they had, the
+/// solver's value (a lamp shut in a box keeps its emission).
+void KeepUnswept(const SceneMesh& mesh, const SceneGeometry& g, const std::vector<Vec3>& before, int solutions,
+  GatheredPoints& swept)
+{
+  for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
+  {
+    for (int m = 0; m < solutions && (g.Enclosed[e] || g.Area[e] <= 0); ++m)
+    {
+      const size_t at = static_cast<size_t>(e) * solutions + m;
+      swept.Radiosity[at] = before[at];
+      swept.Direct[at] = before[at];
+    }
+  }
+}
+
 /// Every frame of `gather` on the pool, in blocks between which `progress` is told the
 /// fraction done, mapped to [from, to).
 GatheredPoints Run(const Gather& gather, int solutions, const WorkerPool& pool,
@@ -675,8 +718,10 @@ GatheredPoints GatherAtPoints(const SceneMesh& mesh, const SceneGeometry& geomet
     {
       elements.Radiosity.clear();
       elements.Direct.clear();
+      elements.Rays = sweepRays;
       return elements;
     }
+    KeepUnswept(mesh, geometry, source, solutions, elements);
     source = std::move(elements.Radiosity);
     cellDirect = std::move(elements.Direct);
   }

@@ -254,3 +254,32 @@ TEST(FinalGather, ClosedRoomNearRhoOneAtTheDefaultsTakesTheClosedForm)
     EXPECT_NEAR(pointsMean * 96.0 / exact, 1.0, 0.02) << "rho " << rho;
   }
 }
+
+TEST(FinalGather, ConvexCornersOfAWeldedBlockAreNotDark)
+{
+  // A block whose faces share their corner points (a curved or welded CAD solid meshed
+  // as it came): each corner's elements lie on three planes and their centre inside the
+  // block. The corner must start its rays outside, not inside the solid.
+  SceneMesh mesh = Box(4.0, 4, 2, { 0.5, 0.5, 0.5 }, [](int f) { return f == 1 ? 0 : -1; });
+  const int base = static_cast<int>(mesh.Points.size());
+  for (int c = 0; c < 8; ++c)
+  {
+    mesh.Points.push_back({ 1.5 + (c & 1), 1.5 + ((c >> 1) & 1), (c >> 2) & 1 ? 1.0 : 0.0 });
+  }
+  const int faces[5][4] = { { 4, 5, 7, 6 }, { 0, 4, 6, 2 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 }, { 1, 3, 7, 5 } };
+  int patch = 1000;
+  for (const auto& face : faces) // top, and four sides facing out (the bottom stands on the floor)
+  {
+    mesh.AddPolygon({ base + face[0], base + face[1], base + face[2], base + face[3] });
+    mesh.Reflectance.push_back({ 0.5, 0.5, 0.5 });
+    mesh.LightId.push_back(-1);
+    mesh.PatchId.push_back(patch++);
+  }
+  const Solution s = SolveTagged(mesh, Gathering(64, 1e-6), 1);
+  const int top = mesh.NumberOfPolygons() - 5;
+  ASSERT_GT(s.Radiosity[top].x, 0.0);
+  for (int c = 4; c < 8; ++c) // the top corners
+  {
+    EXPECT_GT(s.PointRadiosity[base + c].x, 0.3 * s.Radiosity[top].x) << "corner " << c;
+  }
+}
