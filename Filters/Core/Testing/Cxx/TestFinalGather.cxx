@@ -3,6 +3,8 @@
 #include "Geometry/FormFactor.h"
 #include "Solve/FinalGather.h"
 #include "Solve/LightSolutions.h"
+#include "Solve/PatchBasis.h"
+#include "Relight/MovingLights.h"
 #include "SceneBuilders.h"
 
 #include <gtest/gtest.h>
@@ -282,4 +284,39 @@ TEST(FinalGather, ConvexCornersOfAWeldedBlockAreNotDark)
   {
     EXPECT_GT(s.PointRadiosity[base + c].x, 0.3 * s.Radiosity[top].x) << "corner " << c;
   }
+}
+
+TEST(FinalGather, AMovingLightDoesNotReachTheRoomBehindAWall)
+{
+  // The moving-light path (paper 2.4): direct light shot per frame with shadow rays, the
+  // patch basis carrying its interreflection. A light in the first room leaves every
+  // element of the second exactly dark.
+  const SceneMesh mesh = TwoRooms(5);
+  const RadiositySolver solver(mesh);
+  MovingLightShader shader(mesh, solver.Prepared(), nullptr);
+  ASSERT_TRUE(shader.Error().empty()) << shader.Error();
+  MovingLight light;
+  light.Position = { 0.5, 0.5, 0.6 };
+  light.Intensity = 1.0;
+  const WorkerPool pool(0);
+  std::vector<Vec3> direct;
+  shader.Direct({ light }, pool, direct);
+  SolverStatistics stats;
+  PatchBasis basis;
+  const std::string error =
+    SolvePatchBasis(solver, mesh, Converged(1e-6), BasisLevel::Elements, stats, basis);
+  ASSERT_TRUE(error.empty()) << error;
+  std::vector<Vec3> result;
+  AddBasisInterreflection(solver.Geometry(), direct, View(basis), pool, result);
+  double lit = 0;
+  for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
+  {
+    const int* ids = mesh.Polygon(e);
+    if (mesh.Points[ids[0]].x > 1.2 - 1e-9 && mesh.Points[ids[2]].x > 1.2 - 1e-9)
+    {
+      EXPECT_EQ(result[e].x, 0.0) << "element " << e;
+    }
+    lit += result[e].x;
+  }
+  EXPECT_GT(lit, 0.0);
 }
