@@ -145,9 +145,10 @@ def render(solver, shots, out):
     return relit.GetExposure()
 
 
-def accuracy(result, out, python, names, average, traced=False):
+def accuracy(result, out, python, names, average, traced=False, radiance=False):
     """Mean per-light error against Mitsuba at probe points (or element means), and how ours
-    compares where the house is lit (median ratio)."""
+    compares where the house is lit (median ratio); with `radiance`, the same against
+    Radiance's rtrace at the same probes, and how far the two references are apart."""
     import house_reference
     stem = "house_average" if average else ("house_traced" if traced else "house")
     scene, csv = out / f"{stem}_room.json", out / f"{stem}_reference.csv"
@@ -155,8 +156,19 @@ def accuracy(result, out, python, names, average, traced=False):
     house_reference.render(scene, csv, python)
     errors, median, lit = house_reference.compare(result, cells, csv, names, average > 0)
     print("error against Mitsuba: " + ", ".join(f"{n} {100 * e:.1f} %" for n, e in errors.items()))
-    return dict(mean_error_pct=round(100 * float(np.mean(list(errors.values()))), 2),
-                lit_median_ratio=round(median, 3), lit_probes=lit)
+    row = dict(mean_error_pct=round(100 * float(np.mean(list(errors.values()))), 2),
+               lit_median_ratio=round(median, 3), lit_probes=lit)
+    if radiance:
+        second = out / f"{stem}_radiance.csv"
+        house_reference.render(scene, second, python, script="radiance_reference.py")
+        theirs, their_median, _ = house_reference.compare(result, cells, second, names, average > 0)
+        apart = house_reference.references_apart(csv, second)
+        print("error against Radiance: " + ", ".join(f"{n} {100 * e:.1f} %" for n, e in theirs.items()))
+        print("Radiance against Mitsuba: " + ", ".join(f"{100 * e:.1f} %" for e in apart))
+        row.update(radiance_error_pct=round(100 * float(np.mean(list(theirs.values()))), 2),
+                   radiance_lit_median_ratio=round(their_median, 3),
+                   references_apart_pct=round(100 * float(np.mean(apart)), 2))
+    return row
 
 
 def main():
@@ -177,6 +189,8 @@ def main():
     parser.add_argument("--traced-probes", action="store_true",
                         help="with --reference: probes where rays from the lamps meet surfaces, and one bounce further "
                              "(drawn independently of our elements), ours interpolated there")
+    parser.add_argument("--radiance", action="store_true",
+                        help="with --reference: also Radiance's rtrace (pyradiance, in the same venv) at the same probes")
     parser.add_argument("--mitsuba-python", default="out/mitsuba-venv/bin/python", help="a Python with mitsuba installed")
     args = parser.parse_args()
     out = pathlib.Path(args.out)
@@ -204,7 +218,7 @@ def main():
                warnings=len(warnings))
     if args.reference:
         row.update(accuracy(result, out, args.mitsuba_python, [f"Lamp{i}" for i in range(k)], args.element_average,
-                            args.traced_probes))
+                            args.traced_probes, args.radiance))
     exposure = render(solver, [camera(rays, *lamps[0]), camera(rays, *lamps[-1])], out)  # one per storey
     summary = "\n".join([f"{key}: {value}" for key, value in row.items()] + [f"SolverMethod: {method}",
                          f"exposure: {exposure:.4g}"] + [f"warning: {w.strip().splitlines()[-1]}" for w in warnings])

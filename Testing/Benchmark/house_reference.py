@@ -136,16 +136,31 @@ def export(mesh, path, probes=600, seed=7, average=0, traced=False):
     return [(int(c), np.asarray(x, float)) for x, c in zip(spots, pick)]
 
 
-def render(scene_path, csv_path, python, spp=8192):
-    """Mitsuba's radiosity at the probes, rendered once per scene, sample count and version of
-    mitsuba_reference.py (a digest of the three beside the csv says what it was made from)."""
-    script = HERE / "mitsuba_reference.py"
+def render(scene_path, csv_path, python, spp=8192, script="mitsuba_reference.py"):
+    """A reference's radiosity at the probes (Mitsuba's, or with `script`
+    radiance_reference.py Radiance's), rendered once per scene, sample count and version of
+    the script (a digest of the three beside the csv says what it was made from)."""
+    script = HERE / script
     made_from = hashlib.sha256(scene_path.read_bytes() + str(spp).encode() + script.read_bytes()).hexdigest()
     key = csv_path.with_suffix(".key")
     if csv_path.exists() and key.exists() and key.read_text() == made_from:
         return
-    subprocess.run([str(python), str(script), str(scene_path), str(csv_path), "--spp", str(spp)], check=True)
+    extra = ["--spp", str(spp)] if script.name == "mitsuba_reference.py" else []
+    subprocess.run([str(python), str(script), str(scene_path), str(csv_path), *extra], check=True)
     key.write_text(made_from)
+
+
+def references_apart(first_csv, second_csv):
+    """Per light, mean |second - first| over the probes over the first's mean: how far two
+    references are apart (their noise and their models' differences)."""
+    a = np.loadtxt(first_csv, delimiter=",", skiprows=1, ndmin=2)
+    b = np.loadtxt(second_csv, delimiter=",", skiprows=1, ndmin=2)
+    out = []
+    for k in range(int(a[:, 1].max()) + 1):
+        x, y = a[a[:, 1] == k], b[b[:, 1] == k]
+        x, y = x[np.argsort(x[:, 0])][:, 2:5].mean(axis=1), y[np.argsort(y[:, 0])][:, 2:5].mean(axis=1)
+        out.append(float(np.abs(y - x).mean() / x.mean()))
+    return out
 
 
 def _weights(mesh, cell, x):

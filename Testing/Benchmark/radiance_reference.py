@@ -4,15 +4,15 @@ pyradiance, bench-only, in the same venv) at the probes of a mitsuba_reference.p
 
 Usage:
   out/mitsuba-venv/bin/python Testing/Benchmark/radiance_reference.py \
-      out/bench/house_traced_room.json out/bench/house_traced_radiance.csv [--ad 2048] [--ab 12]
+      out/bench/house_traced_room.json out/bench/house_traced_radiance.csv [--ad 512] [--ab 16]
 
 Same JSON in, same CSV out (probe,light,r,g,b) as mitsuba_reference.py. For each light k
 alone, every polygon is a Radiance `polygon` with a `plastic` material of its reflectance
-(no specular part), light k a `light` of radiance 1/pi (unit exitance, front side only);
+(no specular part), light k a `light` of radiance 1/pi (unit exitance);
 rtrace -I gives the irradiance at a hair above each probe towards its normal, and the
 probe's radiosity is its reflectance times that. Radiance samples the lamps directly and the
 rest by Monte Carlo ambient rays (-aa 0: no interpolation, every probe gathered anew);
--ab bounces, where Mitsuba's paths run on under Russian roulette. Radiance's plastic
+-ab bounces (16 by default), where Mitsuba's paths run on under Russian roulette. Radiance's plastic
 reflects on both sides where the radiosity model and Mitsuba absorb on a back face: the two
 references part where a back face is seen (a lamp's back), which the bench reports as their
 agreement.
@@ -73,8 +73,8 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("scene")
     parser.add_argument("csv")
-    parser.add_argument("--ab", type=int, default=12, help="ambient bounces")
-    parser.add_argument("--ad", type=int, default=2048, help="ambient divisions (rays) at the probe")
+    parser.add_argument("--ab", type=int, default=16, help="ambient bounces")
+    parser.add_argument("--ad", type=int, default=512, help="ambient divisions (rays) at the probe")
     args = parser.parse_args()
     data = json.loads(pathlib.Path(args.scene).read_text())
     polygons, probes = data["polygons"], [p for p in data["probes"] if p["seen"]]
