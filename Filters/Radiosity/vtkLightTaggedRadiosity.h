@@ -189,7 +189,7 @@ public:
   /// element's average no longer shows where a light's peak is steep. Fewer rays are
   /// noisier: the furnished room (37,007 elements) is 1.61 % from Mitsuba 3 without the
   /// gather, 1.95 % at 64 rays, 1.17 % at 256, 1.00 % at 1,024 (4.0, 5.6, 7.0, 13.0 s).
-  vtkSetClampMacro(GatherRays, int, 0, 1 << 16);
+  vtkSetClampMacro(GatherRays, int, 0, 4096);
   vtkGetMacro(GatherRays, int);
   ///@}
 
