@@ -16,7 +16,7 @@ namespace
 /// Where and how a point is evaluated: the mean of the elements around it.
 struct PointFrame
 {
-  Vec3 Origin; ///< the point, moved a hair into its elements and off their surface
+  Vec3 Origin; ///< the point, a quarter of the way into its elements and a hair off them
   Vec3 Normal;
   /// An edge of its first element, so the gather's directions turn with the scene and the
   /// answer does not depend on its placement.
@@ -60,6 +60,8 @@ std::vector<char> PointHasOpenElement(const SceneMesh& mesh, const SceneGeometry
   return open;
 }
 
+/// Each point's frame from the elements around it (area-weighted), and its emission per
+/// solution into `pointEmission`; points no polygon uses stay unused.
 std::vector<PointFrame> MakeFrames(const SceneMesh& mesh, const SceneGeometry& g, const std::vector<Vec3>& emission,
   int solutions, std::vector<Vec3>& pointEmission)
 {
@@ -127,7 +129,8 @@ std::vector<PointFrame> MakeFrames(const SceneMesh& mesh, const SceneGeometry& g
   return frames;
 }
 
-/// Each open element evaluated at its centroid, for a sweep over the element solution.
+/// Each open element as a frame of its own, for a sweep over the element solution (its rays
+/// start at points spread over it, Gather::Spot).
 std::vector<PointFrame> ElementFrames(const SceneMesh& mesh, const SceneGeometry& g)
 {
   std::vector<PointFrame> frames(mesh.NumberOfPolygons());
