@@ -5,6 +5,7 @@
 #include "Geometry/FormFactor.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -60,10 +61,62 @@ std::vector<char> PointHasOpenElement(const SceneMesh& mesh, const SceneGeometry
   return open;
 }
 
-/// Each point's frame from the elements around it (area-weighted), and its emission per
-/// solution into `pointEmission`; points no polygon uses stay unused.
+/// Points at one place (equal coordinates) on one smooth surface of one material: the
+/// corners a curved model's triangles each hold of their own (the CGAL bunny: 237,203
+/// points for 89,163 elements). Each maps to the first of them whose elements' normals
+/// agree with its own within 30 degrees, and that one is gathered for all (bunny: its solve
+/// 26.7 s -> 19.9 s); a crease or another material keeps its own. -1 for points no polygon
+/// uses.
+std::vector<int> Representatives(const SceneMesh& mesh, const SceneGeometry& g)
+{
+  const size_t points = mesh.Points.size();
+  std::vector<Vec3> normal(points), rho(points);
+  std::vector<int> rep(points, -1);
+  for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
+  {
+    for (int v = 0; v < mesh.PolygonSize(e); ++v)
+    {
+      const int p = mesh.Polygon(e)[v];
+      normal[p] += g.Normal[e] * g.Area[e];
+      rho[p] = rep[p] < 0 ? mesh.Reflectance[e] : rho[p];
+      rep[p] = p;
+    }
+  }
+  std::map<std::array<double, 3>, std::vector<int>> byPlace;
+  for (size_t p = 0; p < points; ++p)
+  {
+    if (rep[p] >= 0)
+    {
+      byPlace[{ mesh.Points[p].x, mesh.Points[p].y, mesh.Points[p].z }].push_back(static_cast<int>(p));
+    }
+  }
+  const double agree = std::cos(30.0 * M_PI / 180.0);
+  for (const auto& place : byPlace)
+  {
+    const std::vector<int>& here = place.second;
+    for (size_t i = 1; i < here.size(); ++i)
+    {
+      const int p = here[i];
+      for (size_t j = 0; j < i && rep[p] == p; ++j)
+      {
+        const int q = here[j];
+        const Vec3 d = rho[p] - rho[q];
+        if (rep[q] == q && d.x == 0 && d.y == 0 && d.z == 0 &&
+          Dot(Normalized(normal[p]), Normalized(normal[q])) > agree)
+        {
+          rep[p] = q;
+        }
+      }
+    }
+  }
+  return rep;
+}
+
+/// Each representative point's frame from the elements around it (area-weighted, its own
+/// only: the copies' elements, averaged in, could put a saddle's point under one of them),
+/// and its emission per solution into `pointEmission`; other points stay unused.
 std::vector<PointFrame> MakeFrames(const SceneMesh& mesh, const SceneGeometry& g, const std::vector<Vec3>& emission,
-  int solutions, std::vector<Vec3>& pointEmission)
+  int solutions, const std::vector<int>& rep, std::vector<Vec3>& pointEmission)
 {
   const size_t points = mesh.Points.size();
   const std::vector<char> open = PointHasOpenElement(mesh, g);
@@ -100,7 +153,7 @@ std::vector<PointFrame> MakeFrames(const SceneMesh& mesh, const SceneGeometry& g
   }
   for (size_t p = 0; p < points; ++p)
   {
-    if (weight[p] <= 0)
+    if (weight[p] <= 0 || rep[p] != static_cast<int>(p))
     {
       continue;
     }
@@ -598,6 +651,24 @@ private:
 
 namespace
 {
+/// Each point that shares its representative's place and surface takes its values.
+void CopyToCopies(const std::vector<int>& rep, int solutions, GatheredPoints& out)
+{
+  for (size_t p = 0; p < rep.size(); ++p)
+  {
+    const int r = rep[p];
+    for (int m = 0; m < solutions && r >= 0 && static_cast<size_t>(r) != p; ++m)
+    {
+      out.Radiosity[p * solutions + m] = out.Radiosity[static_cast<size_t>(r) * solutions + m];
+      out.Direct[p * solutions + m] = out.Direct[static_cast<size_t>(r) * solutions + m];
+    }
+    if (r >= 0)
+    {
+      out.Hidden[p] = out.Hidden[r];
+    }
+  }
+}
+
 /// Elements a sweep does not evaluate (enclosed, or of no area) keep what they had, the
 /// solver's value (a lamp shut in a box keeps its emission).
 void KeepUnswept(const SceneMesh& mesh, const SceneGeometry& g, const std::vector<Vec3>& before, int solutions,
@@ -729,7 +800,8 @@ GatheredPoints GatherAtPoints(const SceneMesh& mesh, const SceneGeometry& geomet
     cellDirect = std::move(elements.Direct);
   }
   std::vector<Vec3> pointEmission;
-  std::vector<PointFrame> frames = MakeFrames(mesh, geometry, emission, solutions, pointEmission);
+  const std::vector<int> rep = Representatives(mesh, geometry);
+  std::vector<PointFrame> frames = MakeFrames(mesh, geometry, emission, solutions, rep, pointEmission);
   const Gather last(mesh, geometry, rays, emission, source, solutions, emitters, std::move(frames),
     std::move(pointEmission), settings.Rays, settings.LightRays, shadows, 0);
   GatheredPoints out = Run(last, solutions, pool, progress, double(passes - 1) / passes, 1.0);
@@ -741,6 +813,7 @@ GatheredPoints GatherAtPoints(const SceneMesh& mesh, const SceneGeometry& geomet
   }
   else
   {
+    CopyToCopies(rep, solutions, out);
     FillHidden(mesh, solutions, out.Hidden, out.Radiosity, out.Direct);
   }
   if (!out.Aborted && passes > 1)
