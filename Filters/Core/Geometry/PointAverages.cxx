@@ -3,6 +3,19 @@
 namespace radiosity
 {
 
+std::vector<char> PointsTouchingOpenElements(const SceneMesh& mesh, const SceneGeometry& geometry)
+{
+  std::vector<char> open(mesh.Points.size(), 0);
+  for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
+  {
+    for (int v = 0; !geometry.Sheltered[e] && v < mesh.PolygonSize(e); ++v)
+    {
+      open[mesh.Polygon(e)[v]] = 1;
+    }
+  }
+  return open;
+}
+
 std::vector<Vec3> AverageToPoints(
   const SceneMesh& mesh, const SceneGeometry& geometry, const std::vector<Vec3>& cells, int columns)
 {
@@ -13,14 +26,7 @@ std::vector<Vec3> AverageToPoints(
   // hemisphere is blocked, not because its surroundings are: where a vertex also touches
   // open elements, only they count, or every footprint would get a dark ring one element
   // wide (measured: the ceiling ring around the benchmark's lamps was 22 % too dark).
-  std::vector<char> open(points, 0);
-  for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
-  {
-    for (int v = 0; !geometry.Sheltered[e] && v < mesh.PolygonSize(e); ++v)
-    {
-      open[mesh.Polygon(e)[v]] = 1;
-    }
-  }
+  const std::vector<char> open = PointsTouchingOpenElements(mesh, geometry);
   for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
   {
     const int* ids = mesh.Polygon(e);

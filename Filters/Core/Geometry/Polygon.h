@@ -88,6 +88,18 @@ void ClipToHalfSpace(const Vec3* loop, int count, const Vec3& origin, const Vec3
 /// coordinates); corners straight up to it make no triangle and bend neither way.
 std::vector<int> Triangulate(const Vec3* loop, int count, double noise = 0);
 
+/// The point of triangle (a, b, c) that two uniform numbers in [0, 1) pick: uniform over
+/// its area (the unit square's far half folded back onto the near one).
+inline Vec3 TrianglePoint(const Vec3& a, const Vec3& b, const Vec3& c, double s, double t)
+{
+  if (s + t > 1)
+  {
+    s = 1 - s;
+    t = 1 - t;
+  }
+  return a + (b - a) * s + (c - a) * t;
+}
+
 /// Chains start/end segment pairs (exactly matching ends) into one closed loop of corners;
 /// empty unless they form exactly one loop.
 std::vector<Vec3> ChainLoop(const std::vector<Vec3>& segments);

@@ -1,5 +1,6 @@
 #include "Solve/ClusterLinks.h"
 #include "Geometry/FormFactor.h"
+#include "Geometry/Polygon.h"
 #include "Base/SampleStream.h"
 
 #include <algorithm>
@@ -481,14 +482,8 @@ Vec3 ClusterLinkBuilder::SamplePoint(int node, double u, SampleStream& random, V
   }
   const double* p = r + 8 + 4 * k;
   const double* q = r + 8 + 4 * ((k + 1) % count);
-  double s = random.Next(), t = random.Next();
-  if (s + t > 1)
-  {
-    s = 1 - s;
-    t = 1 - t;
-  }
-  const Vec3 point = c + (Vec3{ p[0], p[1], p[2] } - c) * s + (Vec3{ q[0], q[1], q[2] } - c) * t;
-  return point + normal * Epsilon;
+  const double s = random.Next(), t = random.Next();
+  return TrianglePoint(c, Vec3{ p[0], p[1], p[2] }, Vec3{ q[0], q[1], q[2] }, s, t) + normal * Epsilon;
 }
 
 ClusterLinkBuilder::Sight ClusterLinkBuilder::Hidden(int a, int b, long long& rays) const

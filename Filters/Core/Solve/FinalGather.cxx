@@ -3,6 +3,8 @@
 #include "Base/SampleStream.h"
 #include "Base/WorkerPool.h"
 #include "Geometry/FormFactor.h"
+#include "Geometry/PointAverages.h"
+#include "Geometry/Polygon.h"
 
 #include <algorithm>
 #include <array>
@@ -45,21 +47,6 @@ struct Emitter
   std::vector<Vec3> Outline;
   std::vector<Vec3> Exitance;
 };
-
-/// Which elements around each point count: open ones, sheltered ones only where a point
-/// has no open one (a footprint's dark is its own, not its neighbours').
-std::vector<char> PointHasOpenElement(const SceneMesh& mesh, const SceneGeometry& g)
-{
-  std::vector<char> open(mesh.Points.size(), 0);
-  for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
-  {
-    for (int v = 0; !g.Sheltered[e] && v < mesh.PolygonSize(e); ++v)
-    {
-      open[mesh.Polygon(e)[v]] = 1;
-    }
-  }
-  return open;
-}
 
 /// Points at one place (equal coordinates) on one smooth surface of one material: the
 /// corners a curved model's triangles each hold of their own (the CGAL bunny: 237,203
@@ -119,7 +106,7 @@ std::vector<PointFrame> MakeFrames(const SceneMesh& mesh, const SceneGeometry& g
   int solutions, const std::vector<int>& rep, std::vector<Vec3>& pointEmission)
 {
   const size_t points = mesh.Points.size();
-  const std::vector<char> open = PointHasOpenElement(mesh, g);
+  const std::vector<char> open = PointsTouchingOpenElements(mesh, g);
   std::vector<PointFrame> frames(points);
   std::vector<Vec3> centre(points);
   std::vector<double> weight(points, 0.0);
@@ -327,14 +314,9 @@ Vec3 EmitterPoint(const Emitter& emitter, int r, int count, SampleStream& random
   const double u = (r + random.Next()) / count;
   const size_t t = std::min<size_t>(
     std::lower_bound(emitter.Cdf.begin(), emitter.Cdf.end(), u) - emitter.Cdf.begin(), emitter.Cdf.size() - 1);
-  double s = random.Next(), q = random.Next();
-  if (s + q > 1)
-  {
-    s = 1 - s;
-    q = 1 - q;
-  }
+  const double s = random.Next(), q = random.Next();
   const Vec3* abc = &emitter.Triangles[3 * t];
-  return abc[0] + (abc[1] - abc[0]) * s + (abc[2] - abc[0]) * q;
+  return TrianglePoint(abc[0], abc[1], abc[2], s, q);
 }
 
 /// A step coprime to n near n times the golden ratio's fraction: r -> (r * step + o) % n
@@ -489,14 +471,8 @@ private:
       }
       u -= part;
     }
-    double s = random.Next(), q = random.Next();
-    if (s + q > 1)
-    {
-      s = 1 - s;
-      q = 1 - q;
-    }
-    const Vec3 x = a + (Mesh.Points[ids[v]] - a) * s + (Mesh.Points[ids[v + 1]] - a) * q;
-    return x + f.Normal * G.RayLift;
+    const double s = random.Next(), q = random.Next();
+    return TrianglePoint(a, Mesh.Points[ids[v]], Mesh.Points[ids[v + 1]], s, q) + f.Normal * G.RayLift;
   }
 
   /// The irradiance the emitter gives dA at x with `normal` where nothing blocks it, per
