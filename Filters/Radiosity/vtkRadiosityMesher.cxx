@@ -24,6 +24,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 vtkStandardNewMacro(vtkRadiosityMesher);
 
@@ -59,6 +60,7 @@ radiosity::MesherOptions OptionsFor(vtkRadiosityMesher* self, const radiosity::S
   options.MergeTriangles = self->GetMergeTriangles();
   options.SharePatches = self->GetSharePatches();
   options.ClusterAngle = self->GetClusterAngle();
+  options.LampGrading = self->GetLampGrading();
   options.WholeScene = whole;
   options.WholeSurfaces = surfaces;
   options.PointQuantum = std::max(mesh.PointQuantum, wholeQuantum);
@@ -113,6 +115,7 @@ void vtkRadiosityMesher::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MergeTriangles: " << this->MergeTriangles << "\n";
   os << indent << "SharePatches: " << this->SharePatches << "\n";
   os << indent << "ClusterAngle: " << this->ClusterAngle << "\n";
+  os << indent << "LampGrading: " << this->LampGrading << "\n";
 }
 
 int vtkRadiosityMesher::FillInputPortInformation(int, vtkInformation* info)
@@ -184,7 +187,14 @@ struct WholeScene
   const radiosity::WholeSceneSurfaces* Surfaces = nullptr;
 };
 
-std::string MeshPiece(vtkRadiosityMesher* self, vtkPolyData* input, double elementSize, double budget,
+/// The element size and whether the lamps grade it (MaximumElements on MPI may say not).
+struct ElementSizing
+{
+  double Size = 0;
+  bool Graded = true;
+};
+
+std::string MeshPiece(vtkRadiosityMesher* self, vtkPolyData* input, ElementSizing sizing, double budget,
   const WholeScene& whole, radiosity::MeshedPolygons& meshed, vtkRadiosityAdapter::WarningList& warnings)
 {
   radiosity::SceneMesh mesh;
@@ -202,7 +212,8 @@ std::string MeshPiece(vtkRadiosityMesher* self, vtkPolyData* input, double eleme
     OptionsFor(self, mesh, vtkRadiosityMeshPieces::Lamps(mesh, emission), whole.Polygons, whole.PointQuantum,
       whole.Surfaces);
   options.PatchSize = self->GetPatchSizeInUse();
-  options.ElementSize = elementSize;
+  options.ElementSize = sizing.Size;
+  options.LampGrading = sizing.Graded ? options.LampGrading : 0.0;
   options.ElementBudget = budget;
   options.Warning = [self, &warnings](const std::string& message) { warnings.Add(self, message); };
   const vtkRadiosityAbortWatch abort(self);
@@ -214,8 +225,9 @@ std::string MeshPiece(vtkRadiosityMesher* self, vtkPolyData* input, double eleme
 }
 
 /// On MPI, MaximumElements bounds the whole scene: every rank searches the same element
-/// size over the sum of the ranks' counts (a rank without usable polygons counts none).
-double ElementSizeEverywhere(vtkRadiosityMesher* self, vtkMultiProcessController* parallel, vtkPolyData* input,
+/// size over the sum of the ranks' counts (a rank without usable polygons counts none),
+/// leaving the lamps' grading out first, as MeshPolygons does.
+ElementSizing ElementSizeEverywhere(vtkRadiosityMesher* self, vtkMultiProcessController* parallel, vtkPolyData* input,
   const WholeScene& whole, vtkRadiosityAdapter::WarningList& warnings)
 {
   radiosity::SceneMesh mesh;
@@ -225,30 +237,41 @@ double ElementSizeEverywhere(vtkRadiosityMesher* self, vtkMultiProcessController
     vtkRadiosityAdapter::CopyPolygons(input, mesh, error) &&
     vtkRadiosityAdapter::ReadSceneArrays(input, mesh, emission, error);
   // Counted as the rank will mesh its piece: triangle pairs merged, contacts cut.
-  const radiosity::MesherOptions options =
+  radiosity::MesherOptions options =
     OptionsFor(self, mesh, usable ? vtkRadiosityMeshPieces::Lamps(mesh, emission) : std::vector<char>(),
       whole.Polygons, whole.PointQuantum, whole.Surfaces);
   const std::vector<int> keys = usable ? vtkRadiosityMeshPieces::SurfaceKeys(mesh, emission) : std::vector<int>();
-  const radiosity::ElementCounter counter(mesh.Points, mesh.Offsets, mesh.Connectivity, keys, options);
+  auto counter = std::make_unique<radiosity::ElementCounter>(mesh.Points, mesh.Offsets, mesh.Connectivity, keys, options);
   auto count = [&](double size) {
-    const double here = usable ? counter(self->GetPatchSizeInUse(), size) : 0;
+    const double here = usable ? (*counter)(self->GetPatchSizeInUse(), size) : 0;
     return static_cast<double>(vtkRadiosityPieces::SumOverRanks(parallel, static_cast<long long>(here)));
   };
   const double budget = static_cast<double>(self->GetMaximumElements());
-  const double wanted = count(self->GetElementSizeInUse());
+  ElementSizing sizing{ self->GetElementSizeInUse(), options.LampGrading > 0 };
+  if (sizing.Graded && count(std::min(sizing.Size, self->GetPatchSizeInUse())) > budget)
+  {
+    options.LampGrading = 0;
+    counter = std::make_unique<radiosity::ElementCounter>(mesh.Points, mesh.Offsets, mesh.Connectivity, keys, options);
+    sizing.Graded = false;
+    if (parallel->GetLocalProcessId() == 0)
+    {
+      warnings.Add(self, "LampGrading left out: the finer elements by the lamps would exceed MaximumElements (" +
+          std::to_string(static_cast<long long>(budget)) + ").");
+    }
+  }
+  const double wanted = count(sizing.Size);
   if (wanted <= budget)
   {
-    return self->GetElementSizeInUse();
+    return sizing;
   }
-  const double size =
-    radiosity::ElementSizeForBudget(count, self->GetPatchSizeInUse(), self->GetElementSizeInUse(), budget);
+  sizing.Size = radiosity::ElementSizeForBudget(count, self->GetPatchSizeInUse(), self->GetElementSizeInUse(), budget);
   if (parallel->GetLocalProcessId() == 0)
   {
     warnings.Add(self, "ElementSize " + std::to_string(self->GetElementSizeInUse()) + " would make " +
         std::to_string(static_cast<long long>(wanted)) + " elements over all ranks, more than MaximumElements (" +
-        std::to_string(static_cast<long long>(budget)) + "); using " + std::to_string(size) + ".");
+        std::to_string(static_cast<long long>(budget)) + "); using " + std::to_string(sizing.Size) + ".");
   }
-  return size;
+  return sizing;
 }
 
 void AddFieldInt(vtkFieldData* fields, const char* name, int value)
@@ -372,15 +395,15 @@ int vtkRadiosityMesher::RequestData(
     // Sizes from the scene are taken from all of it, so every rank meshes alike.
     this->ChooseSizes(vtkDataSet::GetData(inputVector[0]), parallel != nullptr,
       [&]() { return SuggestedPatch(parallel ? &whole : nullptr, input); });
-    const double elementSize = parallel && this->MaximumElements > 0
+    const ElementSizing sizing = parallel && this->MaximumElements > 0
       ? ElementSizeEverywhere(this, parallel, input, wholeScene, warnings)
-      : this->ElementSizeInUse;
+      : ElementSizing{ this->ElementSizeInUse, true };
     const double localBudget = parallel ? 0.0 : static_cast<double>(this->MaximumElements);
     radiosity::MeshedPolygons meshed;
     std::string error = upstream ? "a filter upstream failed"
       : parallel && empty        ? std::string()
                                  : vtkRadiosityAdapter::Caught([&]() {
-                                     return MeshPiece(this, input, elementSize, localBudget, wholeScene, meshed, warnings);
+                                     return MeshPiece(this, input, sizing, localBudget, wholeScene, meshed, warnings);
                                    });
     long long firstPatch = 0;
     if (parallel)

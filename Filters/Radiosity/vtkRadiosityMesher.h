@@ -90,6 +90,16 @@ public:
   ///@}
 
   ///@{
+  /// Finer elements where a lamp lights a surface from up close: at a distance d from the
+  /// lamp, elements of LampGrading * d, down to a quarter of ElementSize, so the peak by a
+  /// lamp and the shadow edges near it are not spread over a whole element. Quads refine
+  /// whole rows and columns of their grid, triangles their whole lattice. 0 turns it off;
+  /// default 0.2, at most 2.
+  vtkSetClampMacro(LampGrading, double, 0.0, 2.0);
+  vtkGetMacro(LampGrading, double);
+  ///@}
+
+  ///@{
   /// Element budget. 0 (default): none. Otherwise, when ElementSize would make more
   /// elements than this, the mesher uses the smallest larger element size that fits and
   /// says so; the size used is in the field array MesherElementSize. Without a budget,
@@ -146,6 +156,7 @@ private:
   bool MergeTriangles = true;
   bool SharePatches = true;
   double ClusterAngle = 30;
+  double LampGrading = 0.2;
   double SuggestedPatchSize = 0.0;
   double SuggestedElementSize = 0.0;
   double InputArea = 0.0;

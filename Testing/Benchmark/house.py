@@ -100,12 +100,14 @@ def add_lamps(house, lamps, half=0.15):
     return marker.GetOutput()
 
 
-def solve(scene, patch, element, cluster_angle=30.0, time_budget=0.0, method="Auto", separation=3.0, gather_rays=256):
+def solve(scene, patch, element, cluster_angle=30.0, time_budget=0.0, method="Auto", separation=3.0, gather_rays=256,
+          lamp_grading=0.2):
     """Mesh + solve at the solver's default settings (Auto picks the clustered method here);
     keeps warnings and errors."""
     mesher = relight.vtkRadiosityMesher()
     mesher.SetInputData(scene)
     mesher.SetPatchSize(patch), mesher.SetElementSize(element), mesher.SetClusterAngle(cluster_angle)
+    mesher.SetLampGrading(lamp_grading)
     solver = relight.vtkLightTaggedRadiosity()
     solver.SetInputConnection(mesher.GetOutputPort())
     solver.SetTimeBudget(time_budget)
@@ -182,6 +184,8 @@ def main():
     parser.add_argument("--cluster-separation", type=float, default=3.0,
                         help="ClusterSeparation (clustered method): larger is more accurate and slower")
     parser.add_argument("--gather-rays", type=int, default=256, help="GatherRays: the final gather's rays per point (0: off)")
+    parser.add_argument("--lamp-grading", type=float, default=0.2,
+                        help="the mesher's LampGrading: finer elements by the lamps (0: one size everywhere)")
     parser.add_argument("--reference", action="store_true", help="compare with Mitsuba 3 at probe points (rendered once per mesh)")
     parser.add_argument("--element-average", type=int, default=0, metavar="N",
                         help="with --reference: compare element means (Mitsuba at N points spread over each probe's "
@@ -205,14 +209,14 @@ def main():
     k = len(lamps)
     scene = add_lamps(house, lamps)
     solver, warnings = solve(scene, args.patch, args.element, args.cluster_angle, args.time_budget, args.method,
-                             args.cluster_separation, args.gather_rays)
+                             args.cluster_separation, args.gather_rays, args.lamp_grading)
     result = solver.GetOutput()
     method = result.GetFieldData().GetAbstractArray("SolverMethod").GetValue(0)
     commit = subprocess.run(["git", "describe", "--always", "--dirty"], capture_output=True, text=True).stdout.strip()
     row = dict(commit=commit or "?", polygons=scene.GetNumberOfCells(), elements=result.GetNumberOfCells(),
                patches=len(np.unique(relight.cell_array(result, "PatchId"))), lights=k,
                element=args.element, patch=args.patch, method=args.method, separation=args.cluster_separation,
-               gather_rays=args.gather_rays, solve_s=round(solver.GetLastSolveSeconds(), 2),
+               gather_rays=args.gather_rays, lamp_grading=args.lamp_grading, solve_s=round(solver.GetLastSolveSeconds(), 2),
                shots=solver.GetLastShots(), converged=bool(solver.GetLastConverged()),
                peak_mib=round(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024),
                warnings=len(warnings))

@@ -26,25 +26,62 @@ namespace
 {
 /// Emits the elements of a convex quad on a bilinear grid: emit(corners, 4, local patch).
 /// Returns the number of patches.
+/// Grid lines of a quad's side, 0..1: `patches` equal patches, patch p cut into `cuts[p]`.
+std::vector<double> GridLines(int patches, const std::vector<int>& cuts)
+{
+  std::vector<double> lines{ 0.0 };
+  for (int p = 0; p < patches; ++p)
+  {
+    for (int a = 1; a <= cuts[p]; ++a)
+    {
+      lines.push_back((p + static_cast<double>(a) / cuts[p]) / patches);
+    }
+  }
+  return lines;
+}
+
+/// Emits the elements of a convex quad on a bilinear grid: emit(corners, 4, local patch).
+/// Near a lamp (MesherOptions::LampGrading) a patch's column and row take the finer count
+/// it wants. Returns the number of patches.
 template <typename Emit>
 int SplitQuad(const Vec3* q, const MesherOptions& o, double noise, const Emit& emit)
 {
   const double lu = std::max(Norm(q[1] - q[0]), Norm(q[2] - q[3]));
   const double lv = std::max(Norm(q[3] - q[0]), Norm(q[2] - q[1]));
   const int pu = Divisions(lu, o.PatchSize, noise), pv = Divisions(lv, o.PatchSize, noise);
-  const int eu = Divisions(lu / pu, o.ElementSize, noise / pu), ev = Divisions(lv / pv, o.ElementSize, noise / pv);
-  const int nu = pu * eu, nv = pv * ev;
   // Every point comes from the same bilinear formula, so neighbours share exact values.
-  auto at = [&](int i, int j) {
-    const double s = static_cast<double>(i) / nu, t = static_cast<double>(j) / nv;
+  auto at = [&](double s, double t) {
     return q[0] * ((1 - s) * (1 - t)) + q[1] * (s * (1 - t)) + q[2] * (s * t) + q[3] * ((1 - s) * t);
   };
-  for (int j = 0; j < nv; ++j)
+  std::vector<int> eu(pu, Divisions(lu / pu, o.ElementSize, noise / pu));
+  std::vector<int> ev(pv, Divisions(lv / pv, o.ElementSize, noise / pv));
+  for (int j = 0; j < pv && !o.GradingLamps.empty(); ++j)
   {
-    for (int i = 0; i < nu; ++i)
+    for (int i = 0; i < pu; ++i)
     {
-      const Vec3 corners[4] = { at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1) };
-      emit(corners, 4, (j / ev) * pu + i / eu);
+      const double s0 = static_cast<double>(i) / pu, s1 = (i + 1.0) / pu, t0 = static_cast<double>(j) / pv,
+                   t1 = (j + 1.0) / pv;
+      const Vec3 patch[4] = { at(s0, t0), at(s1, t0), at(s1, t1), at(s0, t1) };
+      const double size = GradedElementSize(o.GradingLamps, patch, 4, o.ElementSize, o.LampGrading);
+      eu[i] = std::max(eu[i], Divisions(lu / pu, size, noise / pu));
+      ev[j] = std::max(ev[j], Divisions(lv / pv, size, noise / pv));
+    }
+  }
+  const std::vector<double> su = GridLines(pu, eu), tv = GridLines(pv, ev);
+  for (size_t j = 0, patchRow = 0, rowEnd = ev[0]; j + 1 < tv.size(); ++j)
+  {
+    if (j == rowEnd)
+    {
+      rowEnd += ev[++patchRow];
+    }
+    for (size_t i = 0, patchColumn = 0, columnEnd = eu[0]; i + 1 < su.size(); ++i)
+    {
+      if (i == columnEnd)
+      {
+        columnEnd += eu[++patchColumn];
+      }
+      const Vec3 corners[4] = { at(su[i], tv[j]), at(su[i + 1], tv[j]), at(su[i + 1], tv[j + 1]), at(su[i], tv[j + 1]) };
+      emit(corners, 4, static_cast<int>(patchRow * pu + patchColumn));
     }
   }
   return pu * pv;
@@ -69,7 +106,9 @@ int SplitTriangle(const Vec3& a, const Vec3& b, const Vec3& c, const MesherOptio
 {
   const double longest = std::max({ Norm(b - a), Norm(c - b), Norm(a - c) });
   const int np = TrianglePatchDivisions(a, b, c, longest, o.PatchSize, noise);
-  const int ne = Divisions(longest / np, o.ElementSize, noise / np);
+  const Vec3 corners[3] = { a, b, c };
+  const double size = GradedElementSize(o.GradingLamps, corners, 3, o.ElementSize, o.LampGrading);
+  const int ne = Divisions(longest / np, size, noise / np);
   const int n = np * ne;
   auto at = [&](int i, int j) {
     return a + (b - a) * (static_cast<double>(i) / n) + (c - a) * (static_cast<double>(j) / n);
@@ -212,6 +251,21 @@ void MakePiece(const std::vector<Vec3>& loop, const MesherOptions& o, double noi
   });
 }
 
+/// The lamps that grade the elements (none without LampGrading): the whole scene's where
+/// the polygons are one process's piece of it, so every piece grades by every lamp.
+std::vector<LampSpot> GradingLampsFor(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, const MesherOptions& options)
+{
+  if (!(options.LampGrading > 0))
+  {
+    return {};
+  }
+  return options.WholeScene && options.WholeSurfaces
+    ? FindLampSpots(options.WholeScene->Points, options.WholeScene->Offsets, options.WholeScene->Connectivity,
+        options.WholeSurfaces->Lamps)
+    : FindLampSpots(points, offsets, connectivity, options.Lamps);
+}
+
 /// Surfaces closer than this stand on each other (relative, so units do not matter; and
 /// never finer than float input can place them: 10 km from the origin, a millimetre).
 double ContactTolerance(double span, double pointQuantum)
@@ -327,8 +381,18 @@ double PairFlatness(double span, double pointQuantum)
 }
 
 /// CountElements with the contacts found once (a budget's search counts many times).
+/// Whether polygon i (of a list whose input polygons are `source`) is a lamp: lamps are not
+/// graded (a furnace's walls, all lamps, would all be made fine by each other).
+bool IsLampPolygon(const std::vector<int>& source, const std::vector<char>& lamps, size_t i)
+{
+  return i < source.size() && source[i] >= 0 && static_cast<size_t>(source[i]) < lamps.size() && lamps[source[i]];
+}
+
+/// What MeshPolygons makes: polygons with contacts or near a lamp that grades them
+/// (`grading`: LampGrading and GradingLamps; `source`, the input polygon of each, tells
+/// the lamps, which are not graded) are made, one at a time, to count them.
 double CountWithContacts(const PolygonArrays& polygons, double patchSize, double elementSize, const Contacts& contacts,
-  double pointQuantum)
+  double pointQuantum, const MesherOptions& grading, const std::vector<int>& source)
 {
   if (!(patchSize > 0) || !(elementSize > 0))
   {
@@ -339,6 +403,10 @@ double CountWithContacts(const PolygonArrays& polygons, double patchSize, double
   MesherOptions sizes;
   sizes.PatchSize = patchSize;
   sizes.ElementSize = elementSize;
+  sizes.LampGrading = grading.LampGrading;
+  sizes.GradingLamps = grading.GradingLamps;
+  MesherOptions plainSizes = sizes;
+  plainSizes.GradingLamps.clear();
   std::vector<std::vector<Vec3>> parts;
   for (size_t i = 0; i + 1 < polygons.Offsets.size(); ++i)
   {
@@ -348,7 +416,9 @@ double CountWithContacts(const PolygonArrays& polygons, double patchSize, double
       continue;
     }
     const double plain = CountPlain(loop, patchSize, elementSize, noise);
-    if (contacts.Segments[i].empty() || !(plain <= kMostElementsCutToCount))
+    const bool graded =
+      !IsLampPolygon(source, grading.Lamps, i) && MayGrade(sizes.GradingLamps, loop, elementSize, sizes.LampGrading);
+    if ((contacts.Segments[i].empty() && !graded) || !(plain <= kMostElementsCutToCount))
     {
       total += plain;
       continue;
@@ -356,7 +426,7 @@ double CountWithContacts(const PolygonArrays& polygons, double patchSize, double
     // Cuts depend on where the elements fall: make them, one at a time, to count them.
     const Vec3 normal = Normalized(NewellVector(loop.data(), static_cast<int>(loop.size())));
     const ContactCutter cutter(contacts.Segments[i], normal, contacts.Touch);
-    SplitPolygon(loop, sizes, noise, [&](const Vec3* corners, int count, int) {
+    SplitPolygon(loop, graded ? sizes : plainSizes, noise, [&](const Vec3* corners, int count, int) {
       total += std::max(1, cutter.Cut(corners, count, parts));
     });
   }
@@ -583,6 +653,7 @@ struct ElementCounter::Internals
   PolygonArrays Polygons;
   Contacts Found;
   double PointQuantum = 0; ///< MesherOptions::PointQuantum, where the counter has options
+  MesherOptions Grading;   ///< LampGrading and GradingLamps, where the counter has options
 
   Internals(const std::vector<Vec3>& points, const std::vector<int>& offsets, const std::vector<int>& connectivity)
     : Polygons{ points, offsets, connectivity }
@@ -608,13 +679,17 @@ ElementCounter::ElementCounter(const std::vector<Vec3>& points, const std::vecto
 {
   Impl->Found = FindSceneContacts(Impl->Polygons, options.WholeScene, options.PointQuantum);
   Impl->PointQuantum = options.PointQuantum;
+  Impl->Grading.LampGrading = options.LampGrading;
+  Impl->Grading.Lamps = options.Lamps;
+  Impl->Grading.GradingLamps = GradingLampsFor(points, offsets, connectivity, options);
 }
 
 ElementCounter::~ElementCounter() = default;
 
 double ElementCounter::operator()(double patchSize, double elementSize) const
 {
-  return CountWithContacts(Impl->Polygons, patchSize, elementSize, Impl->Found, Impl->PointQuantum);
+  return CountWithContacts(
+    Impl->Polygons, patchSize, elementSize, Impl->Found, Impl->PointQuantum, Impl->Grading, Impl->Pairs.Source);
 }
 
 double CountElements(const std::vector<Vec3>& points, const std::vector<int>& offsets,
@@ -737,6 +812,8 @@ std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& of
     planes.push_back(PlaneOf(loop, noise, surfaceKey[source[i]]));
   }
   SurfaceAssembly surfaces(quantum, noise, Bounds(points).Centre(), options, planes);
+  MesherOptions ungraded = options; // for the lamps themselves
+  ungraded.GradingLamps.clear();
   for (int i = 0; i < count; ++i)
   {
     if (options.Progress && !options.Progress(static_cast<double>(i) / std::max(count, 1)))
@@ -745,7 +822,8 @@ std::string MeshList(const std::vector<Vec3>& points, const std::vector<int>& of
     }
     DistinctCorners(points, offsets, connectivity, i, source[i], quantum, loop);
     Piece piece;
-    MakePiece(loop, options, noise, ContactCutter(contacts.Segments[i], planes[i].Normal, contacts.Touch), piece);
+    MakePiece(loop, IsLampPolygon(source, options.Lamps, i) ? ungraded : options, noise,
+      ContactCutter(contacts.Segments[i], planes[i].Normal, contacts.Touch), piece);
     const auto outline = outlines.find(source[i]);
     surfaces.Add(loop, piece, i, source[i], outline == outlines.end() ? std::vector<Vec3>() : outline->second);
   }
@@ -788,11 +866,21 @@ void WarnAboutWarpedPolygons(const std::vector<Vec3>& points, const std::vector<
 }
 
 /// ElementSize, or the size ElementBudget calls for; says which, and warns on a huge mesh.
-double ChooseElementSize(const PolygonArrays& polygons, const Contacts& contacts, const MesherOptions& o)
+/// Over the budget the lamps' grading goes first (`o.GradingLamps` emptied), then the size.
+double ChooseElementSize(
+  const PolygonArrays& polygons, const std::vector<int>& source, const Contacts& contacts, MesherOptions& o)
 {
-  auto count = [&](double size) { return CountWithContacts(polygons, o.PatchSize, size, contacts, o.PointQuantum); };
-  const double wanted = count(o.ElementSize);
+  auto count = [&](double size) {
+    return CountWithContacts(polygons, o.PatchSize, size, contacts, o.PointQuantum, o, source);
+  };
   std::ostringstream message;
+  if (o.ElementBudget > 0 && !o.GradingLamps.empty() && count(std::min(o.ElementSize, o.PatchSize)) > o.ElementBudget)
+  {
+    o.GradingLamps.clear();
+    message << "LampGrading left out: the finer elements by the lamps would exceed MaximumElements ("
+            << o.ElementBudget << "). ";
+  }
+  const double wanted = count(o.ElementSize);
   double size = o.ElementSize;
   if (o.ElementSize > o.PatchSize && o.Warning)
   {
@@ -855,7 +943,8 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
   const PolygonArrays paired{ corners, polygons.Offsets, polygons.Connectivity };
   const Contacts contacts = FindSceneContacts(paired, options.WholeScene, options.PointQuantum);
   MesherOptions sized = options;
-  sized.ElementSize = ChooseElementSize(paired, contacts, options);
+  sized.GradingLamps = GradingLampsFor(points, offsets, connectivity, options);
+  sized.ElementSize = ChooseElementSize(paired, polygons.Source, contacts, sized);
   std::map<int, std::vector<Vec3>> outlines; // of the cells the overlaps cut
   const int first = options.WholeScene && options.WholeSurfaces ? options.WholeSurfaces->FirstPolygon : 0;
   for (int cell : overlaps.Trimmed)

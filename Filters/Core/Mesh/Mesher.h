@@ -3,6 +3,7 @@
 #define RadiosityCore_Mesher_h
 
 #include "Mesh/ContactCuts.h"
+#include "Mesh/LampGrading.h"
 #include "Mesh/WholeSceneCuts.h"
 #include "Base/Vec3.h"
 
@@ -45,6 +46,14 @@ struct MesherOptions
   /// Per input polygon, 1 where it emits (empty: none does). Of coincident copies in other
   /// materials one is kept (CoincidentCopies.h): a lamp over the surface it doubles.
   std::vector<char> Lamps;
+  /// Elements on surfaces a lamp lights from up close are made finer (LampGrading.h): at a
+  /// distance d, LampGrading * d, down to a quarter of ElementSize; 0: one size everywhere.
+  /// Quads grade whole rows and columns of their grid (no T-junctions inside a polygon),
+  /// triangles their whole lattice.
+  double LampGrading = 0;
+  /// The lamps the grading looks at: filled by MeshPolygons from Lamps (the whole scene's
+  /// with WholeSurfaces).
+  std::vector<LampSpot> GradingLamps;
   std::function<bool(double)> Progress; ///< return false to abort
   /// Told, before meshing, when the budget changed the element size or the mesh is huge.
   std::function<void(const std::string&)> Warning;
@@ -66,7 +75,8 @@ struct MeshedPolygons
 
 /// The number of elements MeshPolygons makes at these sizes without meshing, for a warning
 /// or a budget before the work: exact for valid input of flat polygons where MeshPolygons
-/// merges no triangle pairs (ElementCounter with the options counts what it makes always).
+/// merges no triangle pairs and grades no elements (ElementCounter with the options counts
+/// what it makes always, LampGrading included).
 /// `wholeScene`: as MesherOptions::WholeScene.
 double CountElements(const std::vector<Vec3>& points, const std::vector<int>& offsets,
   const std::vector<int>& connectivity, double patchSize, double elementSize,

@@ -129,13 +129,14 @@ def read_polydata(path):
     return data
 
 
-def solve(scene, patch_size=None, element_size=None, **solver_settings):
+def solve(scene, patch_size=None, element_size=None, lamp_grading=None, **solver_settings):
     """Meshes and solves `scene` (vtkPolyData); returns the updated solver (its
     GetOutput() has the solutions, GetInputAlgorithm() is the mesher).
 
     Sizes left out are the mesher's suggestion for the scene (a sixth of its extent, or of
     the model's for a model set in a room by in_room or on_ground, rounded; the element a
-    quarter of the patch), whatever its unit.
+    quarter of the patch), whatever its unit. `lamp_grading` is the mesher's LampGrading
+    (finer elements by the lamps; None: its default, 0: one size everywhere).
     `solver_settings` are vtkLightTaggedRadiosity properties, e.g. MaximumShots=500.
     Raises RuntimeError with the filters' message if meshing or solving fails; their
     warnings (a lamp drawn in a surface, an early stop) come as Python RuntimeWarnings.
@@ -154,6 +155,8 @@ def solve(scene, patch_size=None, element_size=None, **solver_settings):
         mesher.UpdateInformation()  # the suggestion comes with the information pass
     mesher.SetPatchSize(patch_size if patch_size is not None else mesher.GetSuggestedPatchSize())
     mesher.SetElementSize(element_size if element_size is not None else mesher.GetSuggestedElementSize())
+    if lamp_grading is not None:
+        mesher.SetLampGrading(lamp_grading)
     solver = vtkLightTaggedRadiosity()
     solver.SetInputConnection(mesher.GetOutputPort())
     for name, value in solver_settings.items():

@@ -1,0 +1,140 @@
+#include "Mesh/LampGrading.h"
+#include "Geometry/Polygon.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace radiosity
+{
+
+std::vector<LampSpot> FindLampSpots(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, const std::vector<char>& lamps)
+{
+  std::vector<LampSpot> spots;
+  for (size_t i = 0; i < lamps.size() && i + 1 < offsets.size(); ++i)
+  {
+    if (!lamps[i])
+    {
+      continue;
+    }
+    const std::vector<Vec3> loop = GatherLoop(points, offsets, connectivity, static_cast<int>(i));
+    const Vec3 newell = loop.size() >= 3 ? NewellVector(loop.data(), static_cast<int>(loop.size())) : Vec3{};
+    if (!(Norm(newell) > 0))
+    {
+      continue; // the solver names a degenerate lamp
+    }
+    LampSpot spot;
+    spot.Centre = PolygonCentroid(loop.data(), static_cast<int>(loop.size()));
+    spot.Normal = Normalized(newell);
+    for (const Vec3& p : loop)
+    {
+      spot.Radius = std::max(spot.Radius, Norm(p - spot.Centre));
+    }
+    spot.Corners = loop;
+    spots.push_back(spot);
+  }
+  return spots;
+}
+
+namespace
+{
+/// The distance from `p` to the segment a-b.
+double ToSegment(const Vec3& p, const Vec3& a, const Vec3& b)
+{
+  const Vec3 ab = b - a;
+  const double length2 = Dot(ab, ab);
+  const double t = length2 > 0 ? std::min(std::max(Dot(p - a, ab) / length2, 0.0), 1.0) : 0.0;
+  return Norm(p - (a + ab * t));
+}
+
+/// The distance from `p` to the flat convex polygon (its inside, not only its outline).
+double ToConvexPolygon(const Vec3& p, const Vec3* corners, int count, const Vec3& unitNormal)
+{
+  const double height = Dot(p - corners[0], unitNormal);
+  const Vec3 foot = p - unitNormal * height;
+  bool inside = true;
+  double outline = 1e300;
+  for (int k = 0; k < count; ++k)
+  {
+    const Vec3& a = corners[k];
+    const Vec3& b = corners[(k + 1) % count];
+    inside = inside && Dot(Cross(b - a, foot - a), unitNormal) >= 0;
+    outline = std::min(outline, ToSegment(p, a, b));
+  }
+  return inside ? std::fabs(height) : outline;
+}
+/// How far the patch is from the lamp: the nearest corner of either to the other (two
+/// flat convex polygons that do not cross are nearest at a corner, or along two edges,
+/// which this overrates a little).
+double Apart(const LampSpot& lamp, const Vec3* corners, int count, const Vec3& unitNormal)
+{
+  double apart = ToConvexPolygon(lamp.Centre, corners, count, unitNormal);
+  for (const Vec3& c : lamp.Corners)
+  {
+    apart = std::min(apart, ToConvexPolygon(c, corners, count, unitNormal));
+  }
+  for (int k = 0; k < count; ++k)
+  {
+    apart = std::min(apart,
+      ToConvexPolygon(corners[k], lamp.Corners.data(), static_cast<int>(lamp.Corners.size()), lamp.Normal));
+  }
+  return apart;
+}
+} // namespace
+
+double GradedElementSize(const std::vector<LampSpot>& lamps, const Vec3* corners, int count, double elementSize,
+  double grading)
+{
+  if (lamps.empty() || !(grading > 0) || count < 3)
+  {
+    return elementSize;
+  }
+  const Vec3 newell = NewellVector(corners, count);
+  if (!(Norm(newell) > 0))
+  {
+    return elementSize;
+  }
+  const Vec3 normal = Normalized(newell);
+  const Vec3 centre = PolygonCentroid(corners, count);
+  double size = elementSize;
+  for (const LampSpot& lamp : lamps)
+  {
+    // Lit only where some corner is in front of the lamp and the lamp is in front of the patch.
+    bool front = false;
+    for (int k = 0; k < count && !front; ++k)
+    {
+      front = Dot(corners[k] - lamp.Centre, lamp.Normal) > 0;
+    }
+    if (front && Dot(lamp.Centre - centre, normal) > 0)
+    {
+      size = std::min(size, grading * Apart(lamp, corners, count, normal));
+    }
+  }
+  return std::max(size, elementSize / 4);
+}
+
+bool MayGrade(const std::vector<LampSpot>& lamps, const std::vector<Vec3>& loop, double elementSize, double grading)
+{
+  if (lamps.empty() || !(grading > 0) || loop.size() < 3)
+  {
+    return false;
+  }
+  Vec3 centre{};
+  for (const Vec3& p : loop)
+  {
+    centre = centre + p;
+  }
+  centre = centre * (1.0 / static_cast<double>(loop.size()));
+  double radius = 0;
+  for (const Vec3& p : loop)
+  {
+    radius = std::max(radius, Norm(p - centre));
+  }
+  // Every point of the polygon, so of its patches, is within `radius` of `centre`.
+  return std::any_of(lamps.begin(), lamps.end(), [&](const LampSpot& lamp) {
+    const double reach = elementSize / grading + radius + lamp.Radius;
+    return Norm(lamp.Centre - centre) < reach;
+  });
+}
+
+} // namespace radiosity
