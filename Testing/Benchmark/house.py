@@ -186,6 +186,9 @@ def main():
     parser.add_argument("--gather-rays", type=int, default=256, help="GatherRays: the final gather's rays per point (0: off)")
     parser.add_argument("--lamp-grading", type=float, default=0.2,
                         help="the mesher's LampGrading: finer elements by the lamps (0: one size everywhere)")
+    parser.add_argument("--accuracy", choices=["preview", "draft", "default", "fine", "reference"],
+                        help="the one knob (relight.levels): sets the element size (times --element), LampGrading, "
+                             "GatherRays and ClusterSeparation, over their flags")
     parser.add_argument("--reference", action="store_true", help="compare with Mitsuba 3 at probe points (rendered once per mesh)")
     parser.add_argument("--element-average", type=int, default=0, metavar="N",
                         help="with --reference: compare element means (Mitsuba at N points spread over each probe's "
@@ -197,6 +200,11 @@ def main():
                         help="with --reference: also Radiance's rtrace (pyradiance, in the same venv) at the same probes")
     parser.add_argument("--mitsuba-python", default="out/mitsuba-venv/bin/python", help="a Python with mitsuba installed")
     args = parser.parse_args()
+    if args.accuracy:
+        chosen = relight.levels.level(args.accuracy)
+        args.element = min(args.element * chosen.element_scale, args.patch)
+        args.lamp_grading, args.gather_rays = chosen.lamp_grading, chosen.gather_rays
+        args.cluster_separation = chosen.cluster_separation
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     house = relight.import_scene(IFC, require_lights=False)
@@ -213,7 +221,8 @@ def main():
     result = solver.GetOutput()
     method = result.GetFieldData().GetAbstractArray("SolverMethod").GetValue(0)
     commit = subprocess.run(["git", "describe", "--always", "--dirty"], capture_output=True, text=True).stdout.strip()
-    row = dict(commit=commit or "?", polygons=scene.GetNumberOfCells(), elements=result.GetNumberOfCells(),
+    row = dict(commit=commit or "?", accuracy=args.accuracy or "", polygons=scene.GetNumberOfCells(),
+               elements=result.GetNumberOfCells(),
                patches=len(np.unique(relight.cell_array(result, "PatchId"))), lights=k,
                element=args.element, patch=args.patch, method=args.method, separation=args.cluster_separation,
                gather_rays=args.gather_rays, lamp_grading=args.lamp_grading, solve_s=round(solver.GetLastSolveSeconds(), 2),

@@ -6,6 +6,7 @@ import os
 import re
 import warnings
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (registers the OpenGL backend)
+from . import levels
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkCommand
 from vtkmodules.vtkCommonDataModel import vtkDataSet
@@ -129,7 +130,7 @@ def read_polydata(path):
     return data
 
 
-def solve(scene, patch_size=None, element_size=None, lamp_grading=None, **solver_settings):
+def solve(scene, patch_size=None, element_size=None, lamp_grading=None, accuracy=None, **solver_settings):
     """Meshes and solves `scene` (vtkPolyData); returns the updated solver (its
     GetOutput() has the solutions, GetInputAlgorithm() is the mesher).
 
@@ -137,6 +138,9 @@ def solve(scene, patch_size=None, element_size=None, lamp_grading=None, **solver
     the model's for a model set in a room by in_room or on_ground, rounded; the element a
     quarter of the patch), whatever its unit. `lamp_grading` is the mesher's LampGrading
     (finer elements by the lamps; None: its default, 0: one size everywhere).
+    `accuracy` is the one knob: "preview", "draft", "default", "fine" or "reference"
+    (relight.levels) sets the element size as a multiple of the one given or suggested,
+    LampGrading, GatherRays and ClusterSeparation; settings given here win over it.
     `solver_settings` are vtkLightTaggedRadiosity properties, e.g. MaximumShots=500.
     Raises RuntimeError with the filters' message if meshing or solving fails; their
     warnings (a lamp drawn in a surface, an early stop) come as Python RuntimeWarnings.
@@ -149,14 +153,20 @@ def solve(scene, patch_size=None, element_size=None, lamp_grading=None, **solver
                                      and math.isfinite(size) and size > 0):
             raise ValueError(f"relight.solve: {name} needs to be a positive length in the scene's unit "
                              f"(or None for the scene's suggestion), not {size!r}")
+    chosen = levels.level(accuracy) if accuracy is not None else None
     mesher = vtkRadiosityMesher()
     mesher.SetInputData(scene)
     if patch_size is None or element_size is None:
         mesher.UpdateInformation()  # the suggestion comes with the information pass
     mesher.SetPatchSize(patch_size if patch_size is not None else mesher.GetSuggestedPatchSize())
-    mesher.SetElementSize(element_size if element_size is not None else mesher.GetSuggestedElementSize())
-    if lamp_grading is not None:
-        mesher.SetLampGrading(lamp_grading)
+    element = element_size if element_size is not None else mesher.GetSuggestedElementSize()
+    # A level's larger elements stop at the patch (an element never spans patches).
+    mesher.SetElementSize(min(element * chosen.element_scale, mesher.GetPatchSize()) if chosen else element)
+    if lamp_grading is not None or chosen:
+        mesher.SetLampGrading(lamp_grading if lamp_grading is not None else chosen.lamp_grading)
+    if chosen:
+        solver_settings = {"GatherRays": chosen.gather_rays, "ClusterSeparation": chosen.cluster_separation,
+                           **solver_settings}
     solver = vtkLightTaggedRadiosity()
     solver.SetInputConnection(mesher.GetOutputPort())
     for name, value in solver_settings.items():

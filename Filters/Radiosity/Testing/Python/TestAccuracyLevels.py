@@ -1,0 +1,86 @@
+"""The one accuracy knob (relight.levels, relight.solve(accuracy=...)): its default level is
+the filters' own defaults, it sets what it says, settings given beside it win, and each
+level is closer than the one before to Lambert's closed form for a floor under a square
+lamp, at points between the mesh's points (what a rendering shows there)."""
+
+import math
+
+import numpy as np
+
+import relight
+from relight import levels
+from testlib import check, finish
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkCommonCore import vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkPolyData
+from vtkmodules.vtkFiltersCore import vtkProbeFilter
+
+# --- the default level is the filters' defaults --------------------------------------------
+default = levels.LEVELS["default"]
+mesher, solver = relight.vtkRadiosityMesher(), relight.vtkLightTaggedRadiosity()
+check(default == levels.Level(1.0, mesher.GetLampGrading(), solver.GetGatherRays(), solver.GetClusterSeparation()),
+      f"level 'default' {default} is the filters' LampGrading {mesher.GetLampGrading()}, GatherRays "
+      f"{solver.GetGatherRays()}, ClusterSeparation {solver.GetClusterSeparation()}")
+try:
+    levels.level("best")
+    check(False, "an unknown level is refused")
+except ValueError as error:
+    check("preview, draft, default, fine, reference" in str(error), f"an unknown level names the levels: {error}")
+
+# --- a floor under a square lamp (nothing else: only the direct light, in closed form) ----
+RHO, HEIGHT, HALF = 0.5, 0.25, 0.2
+floor = [(-2, 0, -2), (-2, 0, 2), (2, 0, 2), (2, 0, -2)]  # faces +y
+lamp = [(-HALF, HEIGHT, -HALF), (HALF, HEIGHT, -HALF), (HALF, HEIGHT, HALF), (-HALF, HEIGHT, HALF)]  # faces -y
+scene = relight.make_scene([floor, lamp], [(RHO,) * 3, (0.0,) * 3], [-1, 0], light_names=["Lamp"])
+
+
+def lambert(p):
+    """Radiosity on the floor at p under the unit-exitance lamp: rho times the point-to-polygon
+    form factor, (1 / 2 pi) sum of each edge's angle times the cosine of its plane to the normal."""
+    r = [np.array(v, float) - p for v in lamp]
+    total = 0.0
+    for a, b in zip(r, r[1:] + r[:1]):
+        cross = np.cross(a, b)
+        angle = math.acos(np.clip(np.dot(a, b) / (np.linalg.norm(a) * np.linalg.norm(b)), -1, 1))
+        total += angle * cross[1] / np.linalg.norm(cross)
+    return RHO * abs(total) / (2 * math.pi)
+
+
+rng = np.random.default_rng(7)
+probes = np.column_stack([rng.uniform(-1.2, 1.2, 300), np.zeros(300), rng.uniform(-1.2, 1.2, 300)])
+exact = np.array([lambert(p) for p in probes])
+
+
+def probe_error(data):
+    points = vtkPoints()
+    for p in probes:
+        points.InsertNextPoint(*p)
+    where = vtkPolyData()
+    where.SetPoints(points)
+    probe = vtkProbeFilter()
+    probe.SetInputData(where)
+    probe.SetSourceData(data)
+    probe.Update()
+    ours = vtk_to_numpy(probe.GetOutput().GetPointData().GetArray("Radiosity_Lamp"))[:, 0]
+    return float(np.abs(ours - exact).mean() / exact.mean())
+
+
+errors, runs = {}, {}
+for name in ("preview", "draft", "default", "fine"):
+    solved = relight.solve(scene, 1.0, 0.25, accuracy=name)
+    runs[name] = solved
+    errors[name] = probe_error(solved.GetOutput())
+chosen = levels.LEVELS["fine"]
+mesher = runs["fine"].GetInputAlgorithm()
+check((mesher.GetElementSize(), mesher.GetLampGrading(), runs["fine"].GetGatherRays(),
+       runs["fine"].GetClusterSeparation()) == (0.25 * chosen.element_scale, chosen.lamp_grading, chosen.gather_rays,
+                                                 chosen.cluster_separation),
+      "accuracy='fine' sets the element size, LampGrading, GatherRays and ClusterSeparation")
+given = relight.solve(scene, 1.0, 0.25, accuracy="fine", lamp_grading=0, GatherRays=16)
+check(given.GetInputAlgorithm().GetLampGrading() == 0 and given.GetGatherRays() == 16,
+      "settings given beside the level win over it")
+check(errors["preview"] > errors["draft"] > errors["default"] > errors["fine"] and errors["fine"] < 0.01,
+      "each level closer to Lambert's closed form at 300 points between the mesh points: " +
+      ", ".join(f"{n} {100 * e:.2f} %" for n, e in errors.items()))
+
+finish("TestAccuracyLevels")
