@@ -130,6 +130,7 @@ int main(int argc, char* argv[])
   long long referenceElements = 40000;
   double mitsubaSeconds = 0; // wall time of the reference render (all probes, all lights)
   int gatherRays = 256;      // the final gather, as the solver filter does by default (0: off)
+  double lampGrading = 0.2;  // finer elements by the lamps, as the mesher filter does by default (0: off)
   std::string csvPath = "out/bench/scale.csv", exportPath, mitsubaPath;
   for (int i = 1; i + 1 < argc; i += 2)
   {
@@ -157,6 +158,8 @@ int main(int argc, char* argv[])
       mitsubaSeconds = std::atof(argv[i + 1]);
     else if (key == "--gather")
       gatherRays = std::atoi(argv[i + 1]);
+    else if (key == "--grading")
+      lampGrading = std::atof(argv[i + 1]);
   }
   const RoomPolygons room = FurnishedRoom();
   const int lights = static_cast<int>(room.LightNames.size());
@@ -215,7 +218,7 @@ int main(int argc, char* argv[])
     const double element = std::sqrt(area / target);
     SceneMesh mesh;
     const double t0 = Now();
-    error = MeshRoom(room, std::max(patch, element), element, mesh);
+    error = MeshRoom(room, std::max(patch, element), element, mesh, lampGrading);
     if (!error.empty())
     {
       std::fprintf(stderr, "mesher: %s\n", error.c_str());

@@ -177,6 +177,9 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--element", type=float, default=0.25, help="ElementSize, m (0.1 gives ~830k elements)")
     parser.add_argument("--patch", type=float, default=0.5, help="PatchSize, m")
+    parser.add_argument("--ifc", default=str(IFC),
+                        help="another building (IFC2x3, as assimp reads it; lamps placed by the same rules), e.g. "
+                             "buildingSMART's Duplex_A_20110907.ifc; give it its own --out")
     parser.add_argument("--out", default="out/bench")
     parser.add_argument("--cluster-angle", type=float, default=30.0, help="the mesher's ClusterAngle (0: no face clusters)")
     parser.add_argument("--time-budget", type=float, default=0.0, help="the solver's TimeBudget, s (0: solve to convergence)")
@@ -207,7 +210,7 @@ def main():
         args.cluster_separation = chosen.cluster_separation
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
-    house = relight.import_scene(IFC, require_lights=False)
+    house = relight.import_scene(args.ifc, require_lights=False)
     extent = np.ptp(np.reshape(house.GetBounds(), (3, 2)), axis=1)
     assert np.argmin(extent) == UP, f"expected Y-up, extents {extent}"
     print(house.GetFieldData().GetAbstractArray("ImportSummary").GetValue(0))

@@ -134,11 +134,18 @@ inline std::string MeshWithKeys(const RoomPolygons& r, const std::vector<int>& k
   return std::string();
 }
 
-inline std::string MeshRoom(const RoomPolygons& r, double patch, double element, radiosity::SceneMesh& mesh)
+/// `lampGrading`: MesherOptions::LampGrading (0: one element size everywhere).
+inline std::string MeshRoom(
+  const RoomPolygons& r, double patch, double element, radiosity::SceneMesh& mesh, double lampGrading = 0)
 {
   radiosity::MesherOptions options;
   options.PatchSize = patch;
   options.ElementSize = element;
+  options.LampGrading = lampGrading;
+  for (int id : r.LightId)
+  {
+    options.Lamps.push_back(id >= 0 ? 1 : 0);
+  }
   std::vector<int> keys(r.Reflectance.size());
   for (size_t c = 0; c < keys.size(); ++c)
   {

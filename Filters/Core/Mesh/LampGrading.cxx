@@ -7,8 +7,30 @@
 namespace radiosity
 {
 
-std::vector<LampSpot> FindLampSpots(const std::vector<Vec3>& points, const std::vector<int>& offsets,
-  const std::vector<int>& connectivity, const std::vector<char>& lamps)
+LampSpots::LampSpots(std::vector<LampSpot> spots, double cell)
+{
+  auto binned = std::make_shared<Binned>();
+  binned->Spots = std::move(spots);
+  binned->Cell = cell > 0 && std::isfinite(cell) ? cell : 1.0;
+  for (size_t i = 0; i < binned->Spots.size(); ++i)
+  {
+    const Vec3& c = binned->Spots[i].Centre;
+    binned->LargestRadius = std::max(binned->LargestRadius, binned->Spots[i].Radius);
+    binned->Bins[Key(static_cast<long long>(std::floor(c.x / binned->Cell)),
+      static_cast<long long>(std::floor(c.y / binned->Cell)), static_cast<long long>(std::floor(c.z / binned->Cell)))]
+      .push_back(static_cast<int>(i));
+  }
+  Bins = std::move(binned);
+}
+
+long long LampSpots::Key(long long x, long long y, long long z)
+{
+  // A collision only makes a query look at a few more lamps.
+  return CellHash(x, y, z);
+}
+
+LampSpots FindLampSpots(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, const std::vector<char>& lamps, double cell)
 {
   std::vector<LampSpot> spots;
   for (size_t i = 0; i < lamps.size() && i + 1 < offsets.size(); ++i)
@@ -33,7 +55,7 @@ std::vector<LampSpot> FindLampSpots(const std::vector<Vec3>& points, const std::
     spot.Corners = loop;
     spots.push_back(spot);
   }
-  return spots;
+  return spots.empty() ? LampSpots() : LampSpots(std::move(spots), cell);
 }
 
 namespace
@@ -82,8 +104,7 @@ double Apart(const LampSpot& lamp, const Vec3* corners, int count, const Vec3& u
 }
 } // namespace
 
-double GradedElementSize(const std::vector<LampSpot>& lamps, const Vec3* corners, int count, double elementSize,
-  double grading)
+double GradedElementSize(const LampSpots& lamps, const Vec3* corners, int count, double elementSize, double grading)
 {
   if (lamps.empty() || !(grading > 0) || count < 3)
   {
@@ -96,9 +117,13 @@ double GradedElementSize(const std::vector<LampSpot>& lamps, const Vec3* corners
   }
   const Vec3 normal = Normalized(newell);
   const Vec3 centre = PolygonCentroid(corners, count);
-  double size = elementSize;
-  for (const LampSpot& lamp : lamps)
+  double radius = 0;
+  for (int k = 0; k < count; ++k)
   {
+    radius = std::max(radius, Norm(corners[k] - centre));
+  }
+  double size = elementSize;
+  lamps.Near(centre, radius, elementSize / grading, [&](const LampSpot& lamp) {
     // Lit only where some corner is in front of the lamp and the lamp is in front of the patch.
     bool front = false;
     for (int k = 0; k < count && !front; ++k)
@@ -109,11 +134,11 @@ double GradedElementSize(const std::vector<LampSpot>& lamps, const Vec3* corners
     {
       size = std::min(size, grading * Apart(lamp, corners, count, normal));
     }
-  }
+  });
   return std::max(size, elementSize / 4);
 }
 
-bool MayGrade(const std::vector<LampSpot>& lamps, const std::vector<Vec3>& loop, double elementSize, double grading)
+bool MayGrade(const LampSpots& lamps, const std::vector<Vec3>& loop, double elementSize, double grading)
 {
   if (lamps.empty() || !(grading > 0) || loop.size() < 3)
   {
@@ -131,10 +156,11 @@ bool MayGrade(const std::vector<LampSpot>& lamps, const std::vector<Vec3>& loop,
     radius = std::max(radius, Norm(p - centre));
   }
   // Every point of the polygon, so of its patches, is within `radius` of `centre`.
-  return std::any_of(lamps.begin(), lamps.end(), [&](const LampSpot& lamp) {
-    const double reach = elementSize / grading + radius + lamp.Radius;
-    return Norm(lamp.Centre - centre) < reach;
+  bool near = false;
+  lamps.Near(centre, radius, elementSize / grading, [&](const LampSpot& lamp) {
+    near = near || Norm(lamp.Centre - centre) < elementSize / grading + radius + lamp.Radius;
   });
+  return near;
 }
 
 } // namespace radiosity

@@ -6,6 +6,9 @@
 
 #include "Base/Vec3.h"
 
+#include <cmath>
+#include <memory>
+#include <unordered_map>
 #include <vector>
 
 namespace radiosity
@@ -20,20 +23,87 @@ struct LampSpot
   std::vector<Vec3> Corners;
 };
 
-/// The lamp polygons of a scene (`lamps[i]` set for polygon i). Lamps are few: a list.
-std::vector<LampSpot> FindLampSpots(const std::vector<Vec3>& points, const std::vector<int>& offsets,
-  const std::vector<int>& connectivity, const std::vector<char>& lamps);
+/// The lamps of a scene, binned in a grid so that a patch looks only at those near it (a
+/// scene may mark thousands of small polygons as lamps). Copies share the bins.
+class LampSpots
+{
+public:
+  LampSpots() = default;
+  /// `cell`: the bins' size, about the reach of the grading (ElementSize / LampGrading).
+  LampSpots(std::vector<LampSpot> spots, double cell);
+  bool empty() const { return !Bins || Bins->Spots.empty(); }
+  void clear() { Bins.reset(); }
+  /// Calls visit(lamp) for every lamp that may come within `reach` of the sphere (centre,
+  /// radius), and perhaps a few more (callers measure the distance themselves).
+  template <typename Visit>
+  void Near(const Vec3& centre, double radius, double reach, const Visit& visit) const;
+
+private:
+  struct Binned
+  {
+    std::vector<LampSpot> Spots;
+    double Cell = 1;
+    double LargestRadius = 0;
+    std::unordered_map<long long, std::vector<int>> Bins; ///< by the cell of a lamp's centre
+  };
+  static long long Key(long long x, long long y, long long z);
+  std::shared_ptr<const Binned> Bins;
+};
+
+/// The lamp polygons of a scene (`lamps[i]` set for polygon i), binned by `cell`.
+LampSpots FindLampSpots(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, const std::vector<char>& lamps, double cell);
 
 /// The element size wanted over a convex patch (its `count` corners): `elementSize`, or
 /// where the patch faces a lamp `distance` away (the nearest corner of either to the
-/// other), `grading * distance`, never below `elementSize / 4`. A patch behind a lamp, or facing
-/// away, keeps the size.
-double GradedElementSize(const std::vector<LampSpot>& lamps, const Vec3* corners, int count, double elementSize,
-  double grading);
+/// other), `grading * distance`, never below `elementSize / 4`. A patch behind a lamp, or
+/// facing away, keeps the size.
+double GradedElementSize(const LampSpots& lamps, const Vec3* corners, int count, double elementSize, double grading);
 
 /// Whether any patch of the polygon `loop` may be graded: a lamp within the reach of the
 /// grading (`elementSize / grading`) of its bounding sphere. Cheap, and never wrong when false.
-bool MayGrade(const std::vector<LampSpot>& lamps, const std::vector<Vec3>& loop, double elementSize, double grading);
+bool MayGrade(const LampSpots& lamps, const std::vector<Vec3>& loop, double elementSize, double grading);
+
+template <typename Visit>
+void LampSpots::Near(const Vec3& centre, double radius, double reach, const Visit& visit) const
+{
+  if (!Bins)
+  {
+    return;
+  }
+  const double grow = radius + reach + Bins->LargestRadius; // a lamp's centre within this
+  const double lo[3] = { centre.x - grow, centre.y - grow, centre.z - grow };
+  const double hi[3] = { centre.x + grow, centre.y + grow, centre.z + grow };
+  long long first[3], last[3];
+  double cells = 1;
+  for (int a = 0; a < 3; ++a)
+  {
+    first[a] = static_cast<long long>(std::floor(lo[a] / Bins->Cell));
+    last[a] = static_cast<long long>(std::floor(hi[a] / Bins->Cell));
+    cells *= static_cast<double>(last[a] - first[a] + 1);
+  }
+  if (!(cells <= static_cast<double>(Bins->Bins.size())))
+  {
+    for (const LampSpot& lamp : Bins->Spots) // fewer bins than cells to look in: all of them
+    {
+      visit(lamp);
+    }
+    return;
+  }
+  for (long long x = first[0]; x <= last[0]; ++x)
+    for (long long y = first[1]; y <= last[1]; ++y)
+      for (long long z = first[2]; z <= last[2]; ++z)
+      {
+        const auto bin = Bins->Bins.find(Key(x, y, z));
+        if (bin != Bins->Bins.end())
+        {
+          for (int i : bin->second)
+          {
+            visit(Bins->Spots[i]);
+          }
+        }
+      }
+}
 
 } // namespace radiosity
 

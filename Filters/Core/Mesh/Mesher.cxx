@@ -253,17 +253,18 @@ void MakePiece(const std::vector<Vec3>& loop, const MesherOptions& o, double noi
 
 /// The lamps that grade the elements (none without LampGrading): the whole scene's where
 /// the polygons are one process's piece of it, so every piece grades by every lamp.
-std::vector<LampSpot> GradingLampsFor(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+LampSpots GradingLampsFor(const std::vector<Vec3>& points, const std::vector<int>& offsets,
   const std::vector<int>& connectivity, const MesherOptions& options)
 {
   if (!(options.LampGrading > 0))
   {
     return {};
   }
+  const double reach = options.ElementSize / options.LampGrading; // the bins' size
   return options.WholeScene && options.WholeSurfaces
     ? FindLampSpots(options.WholeScene->Points, options.WholeScene->Offsets, options.WholeScene->Connectivity,
-        options.WholeSurfaces->Lamps)
-    : FindLampSpots(points, offsets, connectivity, options.Lamps);
+        options.WholeSurfaces->Lamps, reach)
+    : FindLampSpots(points, offsets, connectivity, options.Lamps, reach);
 }
 
 /// Surfaces closer than this stand on each other (relative, so units do not matter; and

@@ -53,7 +53,7 @@ struct MesherOptions
   double LampGrading = 0;
   /// The lamps the grading looks at: filled by MeshPolygons from Lamps (the whole scene's
   /// with WholeSurfaces).
-  std::vector<LampSpot> GradingLamps;
+  LampSpots GradingLamps;
   std::function<bool(double)> Progress; ///< return false to abort
   /// Told, before meshing, when the budget changed the element size or the mesh is huge.
   std::function<void(const std::string&)> Warning;
