@@ -194,7 +194,10 @@ public:
   ///@}
 
   ///@{
-  /// Stop after this many seconds of shooting; 0 (default) means no limit.
+  /// Stop after this many seconds, the final gather included; 0 (default) means no limit.
+  /// The gather takes what the shooting left: fewer rays a point where all would not fit,
+  /// none (the points show their elements' mean) where that is spent; the FinalGather row
+  /// of Effects says which.
   vtkSetClampMacro(TimeBudget, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(TimeBudget, double);
   ///@}

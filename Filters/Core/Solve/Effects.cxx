@@ -199,13 +199,22 @@ EffectDecision GatherRow(const SolverOptions& options, const Solution& solution)
   {
     return { "FinalGather", false, "skipped: not asked for (GatherRays 0); the points show their elements' mean" };
   }
+  if (solution.PointRadiosity.empty() && solution.GatherOutOfTime)
+  {
+    return { "FinalGather", false,
+      "skipped: the TimeBudget was spent before the points (by the solve, or the sweep over the elements); the "
+      "points show their elements' mean" };
+  }
   if (solution.PointRadiosity.empty())
   {
     return { "FinalGather", false, "skipped: stopped before it ended; the points show their elements' mean" };
   }
+  const std::string fewer = solution.GatherPointRays < g.Rays
+    ? Format(" (of %.0f asked: what the TimeBudget left)", g.Rays)
+    : std::string();
   return { "FinalGather", true,
-    Format("simulated: %.0f sweep(s) over the elements, then %.0f rays and %.0f shadow rays a light a point; %.0f rays",
-      g.Sweeps, g.Rays, g.LightRays, static_cast<double>(solution.GatherRays)) };
+    Format("simulated: %.0f sweep(s) over the elements, then %.0f rays", g.Sweeps, solution.GatherPointRays) + fewer +
+      Format(" and %.0f shadow rays a light a point; %.0f rays", g.LightRays, static_cast<double>(solution.GatherRays)) };
 }
 } // namespace
 

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -749,10 +750,33 @@ void FillHidden(const SceneMesh& mesh, int solutions, std::vector<char>& hidden,
 }
 } // namespace
 
+namespace
+{
+/// The cosine rays a point can take in what is left of `settings.TimeBudget` after
+/// `elapsed` seconds of sweeps that cast `sweepRays` over `elements` elements, at that
+/// pace, for `gathers` points (each also casting its shadow rays, as many more as the
+/// sweep's elements did, scaled to LightRays): settings.Rays where it fits or there is no
+/// budget, 0 where fewer than four would.
+int AffordableRays(const GatherSettings& settings, double elapsed, long long sweepRays, int elements, int gathers)
+{
+  if (!(settings.TimeBudget > 0) || sweepRays <= 0 || elements <= 0 || gathers <= 0 || !(elapsed > 0))
+  {
+    return settings.Rays;
+  }
+  const double perRay = elapsed / static_cast<double>(sweepRays);
+  const double shadows = std::max(0.0, static_cast<double>(sweepRays) / elements - settings.SweepRays) *
+    settings.LightRays / std::max(1, settings.SweepLightRays);
+  const double affordable = (settings.TimeBudget - elapsed) / perRay / gathers - shadows;
+  const int rays = affordable >= settings.Rays ? settings.Rays : static_cast<int>(std::max(0.0, affordable));
+  return rays >= 4 ? rays : 0;
+}
+} // namespace
+
 GatheredPoints GatherAtPoints(const SceneMesh& mesh, const SceneGeometry& geometry, const Visibility& rays,
   const std::vector<Vec3>& emission, const std::vector<Vec3>& radiosity, int solutions,
   const GatherSettings& settings, int threads, const std::function<bool(double)>& progress, bool shadows)
 {
+  const auto start = std::chrono::steady_clock::now();
   const std::vector<Emitter> emitters = MakeEmitters(mesh, geometry, emission, solutions);
   const WorkerPool pool(threads);
   const int passes = std::max(0, settings.Sweeps) + 1;
@@ -777,11 +801,28 @@ GatheredPoints GatherAtPoints(const SceneMesh& mesh, const SceneGeometry& geomet
   }
   std::vector<Vec3> pointEmission;
   const std::vector<int> rep = Representatives(mesh, geometry);
+  int gathers = 0; // the points that gather for themselves (and their copies)
+  for (size_t p = 0; p < rep.size(); ++p)
+  {
+    gathers += rep[p] == static_cast<int>(p) ? 1 : 0;
+  }
+  const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+  const int pointRays = AffordableRays(settings, elapsed.count(), sweepRays, mesh.NumberOfPolygons(), gathers);
+  if (pointRays == 0 && passes > 1)
+  {
+    GatheredPoints out; // the points keep their elements' (swept) mean
+    out.Rays = sweepRays;
+    out.OutOfTime = true;
+    out.Cells = std::move(source);
+    out.CellsDirect = std::move(cellDirect);
+    return out;
+  }
   std::vector<PointFrame> frames = MakeFrames(mesh, geometry, emission, solutions, rep, pointEmission);
   const Gather last(mesh, geometry, rays, emission, source, solutions, emitters, std::move(frames),
-    std::move(pointEmission), settings.Rays, settings.LightRays, shadows, 0);
+    std::move(pointEmission), std::max(pointRays, 1), settings.LightRays, shadows, 0);
   GatheredPoints out = Run(last, solutions, pool, progress, double(passes - 1) / passes, 1.0);
   out.Rays += sweepRays;
+  out.PointRays = pointRays;
   if (out.Aborted)
   {
     out.Radiosity.clear();

@@ -32,6 +32,10 @@ struct GatherSettings
   int Sweeps = 1;
   int SweepRays = 16;
   int SweepLightRays = 4;
+  /// Seconds the gather may take (0: no limit; SolveLights gives it what the solve left of
+  /// SolverOptions::TimeBudget). The points take fewer rays where Rays would not fit at
+  /// the sweep's pace, and none (their elements' mean) where not even a few would.
+  double TimeBudget = 0;
 };
 
 struct GatheredPoints
@@ -47,6 +51,8 @@ struct GatheredPoints
   /// for it (see FillHidden in FinalGather.cxx).
   std::vector<char> Hidden;
   long long Rays = 0;       ///< rays cast, shadow rays included
+  int PointRays = 0;        ///< the cosine rays a point took (fewer than asked on a TimeBudget)
+  bool OutOfTime = false;   ///< the TimeBudget left the points ungathered (Cells kept)
   bool Aborted = false;
 };
 

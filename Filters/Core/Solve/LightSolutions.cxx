@@ -2,6 +2,7 @@
 #include "Solve/Effects.h"
 
 #include <algorithm>
+#include <chrono>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -263,21 +264,43 @@ private:
 constexpr double kSolveShare = 0.7;
 
 /// The final gather over the solve's elements into out's point values, and the cell
-/// values from them; a stopped gather leaves the element solution as it was.
+/// values from them; a stopped gather leaves the element solution as it was. `spent`: the
+/// seconds the solve took of options.TimeBudget (the gather has the rest, or is skipped).
 void GatherInto(const RadiositySolver& solver, const SceneMesh& mesh, const std::vector<Vec3>& emission,
-  const SolverOptions& options, Solution& out)
+  const SolverOptions& options, double spent, Solution& out)
 {
+  GatherSettings settings = options.Gather;
+  if (options.TimeBudget > 0)
+  {
+    settings.TimeBudget = options.TimeBudget - spent;
+    if (!(settings.TimeBudget > 0))
+    {
+      out.GatherOutOfTime = true;
+      return;
+    }
+  }
   std::function<bool(double)> progress;
   if (options.Progress)
   {
     progress = [&options](double f) { return options.Progress(kSolveShare + (1 - kSolveShare) * f); };
   }
   GatheredPoints points = GatherAtPoints(mesh, solver.Geometry(), solver.Rays(), emission, out.Radiosity,
-    out.Solutions, options.Gather, options.Threads, progress, out.Statistics.BlockingSurfaces != 0);
+    out.Solutions, settings, options.Threads, progress, out.Statistics.BlockingSurfaces != 0);
   out.GatherRays = points.Rays;
+  out.GatherPointRays = points.PointRays;
+  out.GatherOutOfTime = points.OutOfTime;
   if (points.Aborted)
   {
     out.Statistics.Aborted = true;
+    return;
+  }
+  if (points.OutOfTime)
+  {
+    out.Radiosity = std::move(points.Cells); // the sweep's elements; the points their mean
+    if (!out.Direct.empty())
+    {
+      out.Direct = std::move(points.CellsDirect);
+    }
     return;
   }
   const bool swept = !points.Cells.empty();
@@ -318,12 +341,14 @@ Solution SolveLights(const RadiositySolver& solver, const SceneMesh& mesh,
   {
     solving.Progress = [&options](double f) { return options.Progress(kSolveShare * f); };
   }
+  const auto start = std::chrono::steady_clock::now();
   Solution out = SolveInMode(solver, mesh, grouping, emissionColor, mode, solving);
   if (options.Gather.Rays > 0 && !out.Statistics.Aborted)
   {
+    const std::chrono::duration<double> spent = std::chrono::steady_clock::now() - start;
     GatherInto(solver, mesh, mode == SolutionMode::StandardCombined ? CombinedEmission(mesh, emissionColor)
                                                                     : SolutionEmission(mesh, grouping, emissionColor),
-      options, out);
+      options, spent.count(), out);
   }
   out.Effects = DescribeEffects(
     mesh, options, out, grouping, static_cast<int>(grouping.SolutionOfLight.size()), mode);

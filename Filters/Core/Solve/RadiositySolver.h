@@ -191,6 +191,8 @@ struct Solution
   std::vector<Vec3> PointRadiosity;
   std::vector<Vec3> PointDirect;
   long long GatherRays = 0; ///< the rays the gather cast (the statistics count the solve's)
+  int GatherPointRays = 0;  ///< the cosine rays a point took (fewer than asked on a TimeBudget)
+  bool GatherOutOfTime = false; ///< the TimeBudget was spent before the points were gathered
   SolverStatistics Statistics;
 };
 

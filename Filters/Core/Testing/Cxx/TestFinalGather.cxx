@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -372,4 +373,44 @@ TEST(FinalGather, CornersAtOnePlaceOnOneSurfaceAreGatheredOnce)
     }
   }
   EXPECT_EQ(atCentre, 6); // six triangles meet at the floor's centre
+}
+
+TEST(FinalGather, ATimeBudgetSpentByTheSolveSkipsTheGather)
+{
+  // A budget no solve fits in: the solve stops at it, and the gather does not add its own
+  // time after it (the points show their elements' mean, and the effects say why).
+  const SceneMesh mesh = TwoRooms(5);
+  SolverOptions o = Gathering();
+  o.TimeBudget = 1e-9;
+  const Solution s = SolveTagged(mesh, o, 1);
+  EXPECT_TRUE(s.PointRadiosity.empty());
+  EXPECT_TRUE(s.GatherOutOfTime);
+  EXPECT_FALSE(s.Statistics.Aborted);
+  const auto row = std::find_if(s.Effects.begin(), s.Effects.end(), [](const EffectDecision& e) { return e.Effect == "FinalGather"; });
+  ASSERT_NE(row, s.Effects.end());
+  EXPECT_FALSE(row->Simulated);
+  EXPECT_NE(row->Reason.find("TimeBudget"), std::string::npos) << row->Reason;
+}
+
+TEST(FinalGather, ItsOwnBudgetLeavesThePointsTheSweptElements)
+{
+  // The gather given less time than its sweep took: the points take no rays, the elements
+  // keep the sweep's values; given all the time it needs: every ray asked for.
+  const SceneMesh mesh = TwoRooms(5);
+  const RadiositySolver solver(mesh);
+  const LightGrouping lights = LightGrouping::OnePerLight(1);
+  const Solution solved = SolveLights(solver, mesh, lights, {}, SolutionMode::LightTagged, Converged(1e-7));
+  const std::vector<Vec3> emission = SolutionEmission(mesh, lights, {});
+  GatherSettings settings;
+  settings.Rays = 64;
+  for (double budget : { 1e-9, 1e6 })
+  {
+    settings.TimeBudget = budget;
+    const GatheredPoints points = GatherAtPoints(
+      mesh, solver.Geometry(), solver.Rays(), emission, solved.Radiosity, 1, settings, 1, {}, true);
+    EXPECT_EQ(points.OutOfTime, budget < 1);
+    EXPECT_EQ(points.Radiosity.empty(), budget < 1);
+    EXPECT_EQ(points.Cells.size(), solved.Radiosity.size());
+    EXPECT_EQ(points.PointRays, budget < 1 ? 0 : 64);
+  }
 }
