@@ -61,6 +61,8 @@ radiosity::MesherOptions OptionsFor(vtkRadiosityMesher* self, const radiosity::S
   options.SharePatches = self->GetSharePatches();
   options.ClusterAngle = self->GetClusterAngle();
   options.LampGrading = self->GetLampGrading();
+  // The lamps' bins are sized by the grading's reach (whatever the scene's unit).
+  options.ElementSize = self->GetElementSizeInUse() > 0 ? self->GetElementSizeInUse() : options.ElementSize;
   options.WholeScene = whole;
   options.WholeSurfaces = surfaces;
   options.PointQuantum = std::max(mesh.PointQuantum, wholeQuantum);
@@ -101,7 +103,8 @@ double vtkRadiosityMesher::EstimateElements(double patchSize, double elementSize
   }
   const radiosity::SceneMesh& mesh = this->SeenInput->Mesh;
   const auto sizes = radiosity::SizesInUse(patchSize, elementSize, this->SuggestedPatchSize);
-  const radiosity::MesherOptions options = OptionsFor(this, mesh, this->SeenInput->Lamps);
+  radiosity::MesherOptions options = OptionsFor(this, mesh, this->SeenInput->Lamps);
+  options.ElementSize = sizes.second;
   const radiosity::ElementCounter count(mesh.Points, mesh.Offsets, mesh.Connectivity, this->SeenInput->SurfaceKey, options);
   return count(sizes.first, sizes.second);
 }

@@ -67,6 +67,10 @@ private:
 /// rank calls it, so all go on together or all stop, none left waiting in a later sum.
 std::string AgreeOnFailure(const ProcessGroup& group, const std::string& mine, const std::string& otherwise);
 
+/// The largest of every rank's `mine` (each rank calls it at the same point); `mine` for one
+/// process. For decisions each rank would take from its own clock.
+double LargestOverRanks(const ProcessGroup& group, double mine);
+
 } // namespace radiosity
 
 #endif

@@ -130,9 +130,11 @@ double GradedElementSize(const LampSpots& lamps, const Vec3* corners, int count,
     {
       front = Dot(corners[k] - lamp.Centre, lamp.Normal) > 0;
     }
-    if (front && Dot(lamp.Centre - centre, normal) > 0)
+    // Within reach only, exactly: the bins hand over a few more lamps, which must not count.
+    const double apart = front && Dot(lamp.Centre - centre, normal) > 0 ? Apart(lamp, corners, count, normal) : HUGE_VAL;
+    if (apart < elementSize / grading)
     {
-      size = std::min(size, grading * Apart(lamp, corners, count, normal));
+      size = std::min(size, grading * apart);
     }
   });
   return std::max(size, elementSize / 4);

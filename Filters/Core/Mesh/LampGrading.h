@@ -74,13 +74,17 @@ void LampSpots::Near(const Vec3& centre, double radius, double reach, const Visi
   const double grow = radius + reach + Bins->LargestRadius; // a lamp's centre within this
   const double lo[3] = { centre.x - grow, centre.y - grow, centre.z - grow };
   const double hi[3] = { centre.x + grow, centre.y + grow, centre.z + grow };
-  long long first[3], last[3];
-  double cells = 1;
-  for (int a = 0; a < 3; ++a)
+  long long first[3] = { 0, 0, 0 }, last[3] = { -1, -1, -1 };
+  double cells = std::isfinite(lo[0] + lo[1] + lo[2] + hi[0] + hi[1] + hi[2]) ? 1.0 : HUGE_VAL;
+  for (int a = 0; a < 3 && cells <= static_cast<double>(Bins->Bins.size()); ++a)
   {
-    first[a] = static_cast<long long>(std::floor(lo[a] / Bins->Cell));
-    last[a] = static_cast<long long>(std::floor(hi[a] / Bins->Cell));
-    cells *= static_cast<double>(last[a] - first[a] + 1);
+    const double from = std::floor(lo[a] / Bins->Cell), to = std::floor(hi[a] / Bins->Cell);
+    cells *= to - from + 1;
+    if (cells <= static_cast<double>(Bins->Bins.size())) // else all lamps: no cast out of range
+    {
+      first[a] = static_cast<long long>(from);
+      last[a] = static_cast<long long>(to);
+    }
   }
   if (!(cells <= static_cast<double>(Bins->Bins.size())))
   {

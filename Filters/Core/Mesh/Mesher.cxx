@@ -24,8 +24,6 @@ namespace radiosity
 
 namespace
 {
-/// Emits the elements of a convex quad on a bilinear grid: emit(corners, 4, local patch).
-/// Returns the number of patches.
 /// Grid lines of a quad's side, 0..1: `patches` equal patches, patch p cut into `cuts[p]`.
 std::vector<double> GridLines(int patches, const std::vector<int>& cuts)
 {
@@ -381,7 +379,6 @@ double PairFlatness(double span, double pointQuantum)
   return SpanNoise(span, pointQuantum, 4);
 }
 
-/// CountElements with the contacts found once (a budget's search counts many times).
 /// Whether polygon i (of a list whose input polygons are `source`) is a lamp: lamps are not
 /// graded (a furnace's walls, all lamps, would all be made fine by each other).
 bool IsLampPolygon(const std::vector<int>& source, const std::vector<char>& lamps, size_t i)
@@ -389,7 +386,8 @@ bool IsLampPolygon(const std::vector<int>& source, const std::vector<char>& lamp
   return i < source.size() && source[i] >= 0 && static_cast<size_t>(source[i]) < lamps.size() && lamps[source[i]];
 }
 
-/// What MeshPolygons makes: polygons with contacts or near a lamp that grades them
+/// CountElements with the contacts found once (a budget's search counts many times): what
+/// MeshPolygons makes. Polygons with contacts or near a lamp that grades them
 /// (`grading`: LampGrading and GradingLamps; `source`, the input polygon of each, tells
 /// the lamps, which are not graded) are made, one at a time, to count them.
 double CountWithContacts(const PolygonArrays& polygons, double patchSize, double elementSize, const Contacts& contacts,
@@ -421,7 +419,7 @@ double CountWithContacts(const PolygonArrays& polygons, double patchSize, double
       !IsLampPolygon(source, grading.Lamps, i) && MayGrade(sizes.GradingLamps, loop, elementSize, sizes.LampGrading);
     if ((contacts.Segments[i].empty() && !graded) || !(plain <= kMostElementsCutToCount))
     {
-      total += plain;
+      total += graded ? 16 * plain : plain; // too large to make: at most a quarter of the size
       continue;
     }
     // Cuts depend on where the elements fall: make them, one at a time, to count them.
@@ -771,9 +769,14 @@ std::string CheckSizes(const std::vector<Vec3>& points, const std::vector<int>& 
     return err.str();
   }
   double estimate = 0;
+  MesherOptions finest; // where the lamps may grade: a quarter of the element size
+  finest.PatchSize = options.PatchSize;
+  finest.ElementSize = options.ElementSize / 4;
   for (int i = 0; i + 1 < static_cast<int>(offsets.size()); ++i)
   {
-    estimate += EstimateElements(GatherLoop(points, offsets, connectivity, i), options);
+    const std::vector<Vec3> loop = GatherLoop(points, offsets, connectivity, i);
+    const bool graded = MayGrade(options.GradingLamps, loop, options.ElementSize, options.LampGrading);
+    estimate += EstimateElements(loop, graded ? finest : options);
   }
   if (!(estimate <= static_cast<double>(options.MaximumElements)))
   {

@@ -49,7 +49,8 @@ struct MesherOptions
   /// Elements on surfaces a lamp lights from up close are made finer (LampGrading.h): at a
   /// distance d, LampGrading * d, down to a quarter of ElementSize; 0: one size everywhere.
   /// Quads grade whole rows and columns of their grid (no T-junctions inside a polygon),
-  /// triangles their whole lattice.
+  /// triangles their whole lattice; lamps, and convex polygons of many corners meshed by
+  /// area (AreaGrid.h), are not graded.
   double LampGrading = 0;
   /// The lamps the grading looks at: filled by MeshPolygons from Lamps (the whole scene's
   /// with WholeSurfaces).

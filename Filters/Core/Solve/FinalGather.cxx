@@ -764,11 +764,15 @@ int AffordableRays(const GatherSettings& settings, double elapsed, long long swe
     return settings.Rays;
   }
   const double perRay = elapsed / static_cast<double>(sweepRays);
-  const double shadows = std::max(0.0, static_cast<double>(sweepRays) / elements - settings.SweepRays) *
-    settings.LightRays / std::max(1, settings.SweepLightRays);
+  const double perElement = static_cast<double>(sweepRays) / elements / std::max(1, settings.Sweeps);
+  const double shadows = std::max(0.0, perElement - settings.SweepRays) * settings.LightRays /
+    std::max(1, settings.SweepLightRays);
   const double affordable = (settings.TimeBudget - elapsed) / perRay / gathers - shadows;
-  const int rays = affordable >= settings.Rays ? settings.Rays : static_cast<int>(std::max(0.0, affordable));
-  return rays >= 4 ? rays : 0;
+  if (affordable >= settings.Rays)
+  {
+    return settings.Rays;
+  }
+  return affordable >= 4 ? static_cast<int>(affordable) : 0;
 }
 } // namespace
 
@@ -807,7 +811,9 @@ GatheredPoints GatherAtPoints(const SceneMesh& mesh, const SceneGeometry& geomet
     gathers += rep[p] == static_cast<int>(p) ? 1 : 0;
   }
   const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
-  const int pointRays = AffordableRays(settings, elapsed.count(), sweepRays, mesh.NumberOfPolygons(), gathers);
+  // Every rank gathers every point: all take the fewest rays any of them can afford.
+  const int pointRays = static_cast<int>(
+    -LargestOverRanks(settings.Group, -AffordableRays(settings, elapsed.count(), sweepRays, mesh.NumberOfPolygons(), gathers)));
   if (pointRays == 0 && passes > 1)
   {
     GatheredPoints out; // the points keep their elements' (swept) mean

@@ -7,6 +7,7 @@
 #ifndef RadiosityCore_FinalGather_h
 #define RadiosityCore_FinalGather_h
 
+#include "Base/ProcessGroup.h"
 #include "Geometry/Scene.h"
 #include "Geometry/Visibility.h"
 
@@ -36,6 +37,9 @@ struct GatherSettings
   /// SolverOptions::TimeBudget). The points take fewer rays where Rays would not fit at
   /// the sweep's pace, and none (their elements' mean) where not even a few would.
   double TimeBudget = 0;
+  /// Processes gathering the same points together: they agree on the rays the budget
+  /// leaves (the fewest any of them can afford), so their pieces match.
+  ProcessGroup Group;
 };
 
 struct GatheredPoints

@@ -270,9 +270,11 @@ void GatherInto(const RadiositySolver& solver, const SceneMesh& mesh, const std:
   const SolverOptions& options, double spent, Solution& out)
 {
   GatherSettings settings = options.Gather;
+  settings.Group = options.Group;
   if (options.TimeBudget > 0)
   {
-    settings.TimeBudget = options.TimeBudget - spent;
+    // The slowest rank's clock: every rank skips the gather, or none does.
+    settings.TimeBudget = options.TimeBudget - LargestOverRanks(options.Group, spent);
     if (!(settings.TimeBudget > 0))
     {
       out.GatherOutOfTime = true;

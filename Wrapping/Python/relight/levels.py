@@ -5,7 +5,7 @@ the element size (a multiple of the size given or suggested for the scene), the 
 LampGrading (finer elements by the lamps), the final gather's GatherRays and the clustered
 method's ClusterSeparation. "default" is the filters' own defaults (TestAccuracyLevels holds
 them to it). What each level measured on the FZK-Haus and the rooms, error against time:
-``./relight bench accuracy --house`` and docs/benchmarks.md.
+``./relight bench accuracy house`` and docs/benchmarks.md.
 """
 
 from collections import namedtuple

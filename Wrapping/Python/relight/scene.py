@@ -139,8 +139,8 @@ def solve(scene, patch_size=None, element_size=None, lamp_grading=None, accuracy
     quarter of the patch), whatever its unit. `lamp_grading` is the mesher's LampGrading
     (finer elements by the lamps; None: its default, 0: one size everywhere).
     `accuracy` is the one knob: "preview", "draft", "default", "fine" or "reference"
-    (relight.levels) sets the element size as a multiple of the one given or suggested,
-    LampGrading, GatherRays and ClusterSeparation; settings given here win over it.
+    (relight.levels) scales the element size given or suggested (up to the patch size) and
+    sets LampGrading, GatherRays and ClusterSeparation, unless given here too.
     `solver_settings` are vtkLightTaggedRadiosity properties, e.g. MaximumShots=500.
     Raises RuntimeError with the filters' message if meshing or solving fails; their
     warnings (a lamp drawn in a surface, an early stop) come as Python RuntimeWarnings.
