@@ -426,6 +426,23 @@ lit = cell_array(windows, "LightId").astype(int)
 check(light_names(windows) == ["Windows"] and np.array_equal(lit >= 0, is_glass) and is_glass.sum() > 0,
       f"FZK-Haus: the pattern 'GLAS*' makes the {is_glass.sum()} glass cells the light 'Windows'")
 check(np.allclose(cell_array(windows, "Emission")[is_glass], 2), "the marked cells emit the Emission given")
+# Meshed as house.py meshes it (0.5 / 0.25 m), the windows as lamps grading what they light:
+# the mesh is made (not refused by the size check), finer than without grading, and the
+# panel's estimate counts it exactly.
+counts = []
+for grading in (0.0, 0.2):
+    house_mesher = relight.vtkRadiosityMesher()
+    house_mesher.SetInputData(windows)
+    house_mesher.SetPatchSize(0.5)
+    house_mesher.SetElementSize(0.25)
+    house_mesher.SetLampGrading(grading)
+    meshing = relight.ErrorCatcher(house_mesher)
+    house_mesher.Update()
+    counts.append((house_mesher.GetOutput().GetNumberOfCells(), house_mesher.EstimateElements(0.5, 0.25),
+                   " ".join(meshing.errors)))
+check(not counts[1][2] and counts[1][0] > counts[0][0] > 0 and counts[1][1] == counts[1][0],
+      f"FZK-Haus meshed at 0.5 / 0.25 m with its windows grading: {counts[1][0]} elements, estimated "
+      f"{counts[1][1]:.0f}, {counts[0][0]} ungraded ({counts[1][2] or 'no error'})")
 _, catcher = marked(house, pattern="Lamp*")
 check("no cell has a material matching 'Lamp*'" in catcher.first_error() and "'Ziegel'" in catcher.first_error(),
       f"a pattern that matches nothing is an error listing the materials: {catcher.first_error()[:90]}...")
