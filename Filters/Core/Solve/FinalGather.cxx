@@ -664,15 +664,27 @@ void KeepUnswept(const SceneMesh& mesh, const SceneGeometry& g, const std::vecto
 
 /// Every frame of `gather` on the pool, in blocks between which `progress` is told the
 /// fraction done, mapped to [from, to).
-GatheredPoints Run(const Gather& gather, int solutions, const WorkerPool& pool,
+/// Sums `values` over the ranks in place (each rank filled only its own points).
+void SumOverRanks(Collective& ranks, std::vector<Vec3>& values)
+{
+  static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 is three doubles");
+  ranks.Sum(reinterpret_cast<double*>(values.data()), 3 * values.size());
+}
+
+/// Evaluates every point of `gather` (on several ranks each its share, every `Ranks()`-th
+/// point, then summed: each point is computed by one rank alone, so the sum is the serial
+/// answer bit for bit), in blocks between which `progress` may stop it (all ranks agree).
+GatheredPoints Run(const Gather& gather, int solutions, const WorkerPool& pool, const ProcessGroup& group,
   const std::function<bool(double)>& progress, double from, double to)
 {
+  Collective ranks(group);
+  const size_t rank = static_cast<size_t>(ranks.Rank()), share = static_cast<size_t>(ranks.Ranks());
   GatheredPoints out;
   const size_t points = gather.Points();
   out.Radiosity.assign(points * solutions, Vec3());
   out.Direct.assign(points * solutions, Vec3());
   const int blocks = static_cast<int>(std::min<size_t>(64, std::max<size_t>(1, points / 256)));
-  std::vector<long long> pointRays(points, 0);
+  std::vector<double> pointRays(points, 0), hidden(points, 0);
   out.Hidden.assign(points, 0);
   for (int block = 0; block < blocks && !out.Aborted; ++block)
   {
@@ -682,15 +694,32 @@ GatheredPoints Run(const Gather& gather, int solutions, const WorkerPool& pool,
       for (int i = begin; i < end; ++i)
       {
         const size_t p = first + i;
-        pointRays[p] =
-          gather.Evaluate(p, &out.Radiosity[p * solutions], &out.Direct[p * solutions], scratch, out.Hidden[p]);
+        if (p % share == rank)
+        {
+          pointRays[p] = static_cast<double>(
+            gather.Evaluate(p, &out.Radiosity[p * solutions], &out.Direct[p * solutions], scratch, out.Hidden[p]));
+        }
       }
     });
-    out.Aborted = progress && !progress(from + (to - from) * (block + 1) / blocks) && block + 1 < blocks;
+    double stop = progress && !progress(from + (to - from) * (block + 1) / blocks) && block + 1 < blocks ? 1 : 0;
+    ranks.Sum(&stop, 1);
+    out.Aborted = stop > 0;
   }
-  for (long long r : pointRays)
+  if (!out.Aborted && ranks.Distributed())
   {
-    out.Rays += r;
+    SumOverRanks(ranks, out.Radiosity);
+    SumOverRanks(ranks, out.Direct);
+    std::copy(out.Hidden.begin(), out.Hidden.end(), hidden.begin());
+    ranks.Sum(hidden);
+    ranks.Sum(pointRays);
+    for (size_t p = 0; p < points; ++p)
+    {
+      out.Hidden[p] = hidden[p] > 0 ? 1 : 0;
+    }
+  }
+  for (double r : pointRays)
+  {
+    out.Rays += static_cast<long long>(r);
   }
   return out;
 }
@@ -790,7 +819,8 @@ GatheredPoints GatherAtPoints(const SceneMesh& mesh, const SceneGeometry& geomet
   {
     const Gather pass(mesh, geometry, rays, emission, source, solutions, emitters, ElementFrames(mesh, geometry),
       emission, settings.SweepRays, settings.SweepLightRays, shadows, sweep + 1);
-    GatheredPoints elements = Run(pass, solutions, pool, progress, double(sweep) / passes, double(sweep + 1) / passes);
+    GatheredPoints elements =
+      Run(pass, solutions, pool, settings.Group, progress, double(sweep) / passes, double(sweep + 1) / passes);
     sweepRays += elements.Rays;
     if (elements.Aborted)
     {
@@ -826,7 +856,7 @@ GatheredPoints GatherAtPoints(const SceneMesh& mesh, const SceneGeometry& geomet
   std::vector<PointFrame> frames = MakeFrames(mesh, geometry, emission, solutions, rep, pointEmission);
   const Gather last(mesh, geometry, rays, emission, source, solutions, emitters, std::move(frames),
     std::move(pointEmission), std::max(pointRays, 1), settings.LightRays, shadows, 0);
-  GatheredPoints out = Run(last, solutions, pool, progress, double(passes - 1) / passes, 1.0);
+  GatheredPoints out = Run(last, solutions, pool, settings.Group, progress, double(passes - 1) / passes, 1.0);
   out.Rays += sweepRays;
   out.PointRays = pointRays;
   if (out.Aborted)

@@ -80,7 +80,7 @@ private:
 /// Solves `mesh` (with `lights` lights) on `ranks` threads as ranks, each with its own
 /// solver (as each MPI rank prepares the whole scene); `tweak` may change a rank's options.
 std::vector<Solution> SolveOnRanks(const SceneMesh& mesh, int ranks, const SolverOptions& options,
-  const std::function<void(int, SolverOptions&)>& tweak = nullptr, int lights = 8)
+  const std::function<void(int, SolverOptions&)>& tweak = nullptr, int lights = 8, long long* rounds = nullptr)
 {
   ThreadRanks group(ranks);
   std::vector<Solution> results(ranks);
@@ -102,6 +102,10 @@ std::vector<Solution> SolveOnRanks(const SceneMesh& mesh, int ranks, const Solve
   for (std::thread& t : threads)
   {
     t.join();
+  }
+  if (rounds)
+  {
+    *rounds = group.Rounds();
   }
   return results;
 }
@@ -298,4 +302,29 @@ TEST(Distributed, AFailureOnOneRankStopsEveryRank)
   EXPECT_EQ(verdicts[1], "needs 9 GB");
   EXPECT_EQ(verdicts[2], "another rank has too little memory");
   EXPECT_EQ(quiet, std::vector<std::string>(3));
+}
+
+TEST(Distributed, TheFinalGatherSharedOverRanksGivesTheSerialAnswer)
+{
+  // Each rank gathers every other point (and element of the sweep) and the ranks sum: the
+  // points are the serial ones, and the rays cast over all ranks are the serial count.
+  const SceneMesh mesh = Room();
+  SolverOptions options = Converged(1e-4);
+  options.Gather.Rays = 16;
+  options.Threads = 1;
+  const RadiositySolver serial(mesh);
+  const Solution one = SolveLights(serial, mesh, LightGrouping::OnePerLight(8), {}, SolutionMode::LightTagged, options);
+  ASSERT_FALSE(one.PointRadiosity.empty());
+  long long gathering = 0, plain = 0;
+  const std::vector<Solution> many = SolveOnRanks(mesh, 2, options, nullptr, 8, &gathering);
+  SolverOptions without = options;
+  without.Gather.Rays = 0;
+  SolveOnRanks(mesh, 2, without, nullptr, 8, &plain);
+  EXPECT_GT(gathering, plain + 2) << "the ranks share the gather's points and sum them";
+  for (int r = 0; r < 2; ++r)
+  {
+    EXPECT_LT(LargestDifference(many[r].PointRadiosity, one.PointRadiosity), 1e-7) << "rank " << r;
+    EXPECT_LT(LargestDifference(many[r].Radiosity, one.Radiosity), 1e-7) << "rank " << r;
+    EXPECT_EQ(many[r].GatherRays, one.GatherRays) << "rank " << r;
+  }
 }
