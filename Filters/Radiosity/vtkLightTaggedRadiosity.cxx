@@ -5,12 +5,14 @@
 #include "vtkRadiosityPreparedScenes.h"
 #include "vtkRadiositySolveOutput.h"
 
+#include "Base/AccuracyLevels.h"
 #include "Solve/LightChecks.h"
 #include "Solve/LightSolutions.h"
 #include "Solve/PatchBasis.h"
 #include "Solve/SolverMethods.h"
 
 #include "vtkCellData.h"
+#include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
@@ -233,6 +235,23 @@ radiosity::SolverOptions vtkLightTaggedRadiosity::Options(int threads, const rad
   return options;
 }
 
+namespace
+{
+/// The mesher's Accuracy level, stamped on the input (field array Accuracy), sets the
+/// gather's rays and the clustered method's separation; without it the filter's own do.
+void FollowAccuracy(vtkPolyData* input, radiosity::SolverOptions& options)
+{
+  vtkDataArray* level = input ? input->GetFieldData()->GetArray("Accuracy") : nullptr;
+  const double value = level && level->GetNumberOfTuples() == 1 ? level->GetTuple1(0) : -1;
+  if (value >= 0 && value < radiosity::kAccuracyLevels)
+  {
+    const radiosity::AccuracyLevel& chosen = radiosity::AccuracyLevelOf(static_cast<int>(value));
+    options.Gather.Rays = chosen.GatherRays;
+    options.Clustered.Separation = chosen.ClusterSeparation;
+  }
+}
+} // namespace
+
 radiosity::EffectMode vtkLightTaggedRadiosity::Effect(int mode) const
 {
   return this->ForceAllEffects ? radiosity::EffectMode::On : static_cast<radiosity::EffectMode>(mode);
@@ -277,6 +296,7 @@ int vtkLightTaggedRadiosity::Solve(
     warnings.Add(this, warning);
   }
   radiosity::SolverOptions options = this->Options(threads, group);
+  FollowAccuracy(input, options);
   const vtkRadiosityAbortWatch abort(this);
   options.Progress = [this, abort](double f) {
     this->UpdateProgress(f);

@@ -4,6 +4,7 @@
 #include "vtkRadiosityMeshPieces.h"
 #include "vtkRadiosityPieces.h"
 
+#include "Base/AccuracyLevels.h"
 #include "Mesh/Mesher.h"
 
 #include "vtkAbstractArray.h"
@@ -60,7 +61,7 @@ radiosity::MesherOptions OptionsFor(vtkRadiosityMesher* self, const radiosity::S
   options.MergeTriangles = self->GetMergeTriangles();
   options.SharePatches = self->GetSharePatches();
   options.ClusterAngle = self->GetClusterAngle();
-  options.LampGrading = self->GetLampGrading();
+  options.LampGrading = self->GetLampGradingInUse();
   // The lamps' bins are sized by the grading's reach (whatever the scene's unit).
   options.ElementSize = self->GetElementSizeInUse() > 0 ? self->GetElementSizeInUse() : options.ElementSize;
   options.WholeScene = whole;
@@ -86,11 +87,55 @@ vtkRadiosityMesher::vtkRadiosityMesher()
 
 vtkRadiosityMesher::~vtkRadiosityMesher() = default;
 
+namespace
+{
+/// The sizes to mesh at, an Accuracy level's scale applied to the element (at most the patch).
+std::pair<double, double> SizesAtAccuracy(double patch, double element, double suggestedPatch, int accuracy)
+{
+  auto sizes = radiosity::SizesInUse(patch, element, suggestedPatch);
+  if (accuracy >= 0)
+  {
+    sizes.second = std::min(sizes.second * radiosity::AccuracyLevelOf(accuracy).ElementScale, sizes.first);
+  }
+  return sizes;
+}
+} // namespace
+
 void vtkRadiosityMesher::ResolveSizes(double suggestedPatch)
 {
-  const auto sizes = radiosity::SizesInUse(this->PatchSize, this->ElementSize, suggestedPatch);
+  const auto sizes = SizesAtAccuracy(this->PatchSize, this->ElementSize, suggestedPatch, this->Accuracy);
   this->PatchSizeInUse = sizes.first;
   this->ElementSizeInUse = sizes.second;
+}
+
+double vtkRadiosityMesher::GetLampGradingInUse() const
+{
+  return this->Accuracy >= 0 ? radiosity::AccuracyLevelOf(this->Accuracy).LampGrading : this->LampGrading;
+}
+
+double vtkRadiosityMesher::GetAccuracyElementScale(int level)
+{
+  return radiosity::AccuracyLevelOf(level).ElementScale;
+}
+
+double vtkRadiosityMesher::GetAccuracyLampGrading(int level)
+{
+  return radiosity::AccuracyLevelOf(level).LampGrading;
+}
+
+int vtkRadiosityMesher::GetAccuracyGatherRays(int level)
+{
+  return radiosity::AccuracyLevelOf(level).GatherRays;
+}
+
+double vtkRadiosityMesher::GetAccuracyClusterSeparation(int level)
+{
+  return radiosity::AccuracyLevelOf(level).ClusterSeparation;
+}
+
+const char* vtkRadiosityMesher::GetAccuracyName(int level)
+{
+  return radiosity::AccuracyLevelOf(level).Name;
 }
 
 double vtkRadiosityMesher::EstimateElements(double patchSize, double elementSize)
@@ -102,7 +147,7 @@ double vtkRadiosityMesher::EstimateElements(double patchSize, double elementSize
     this->UpdateInformation();
   }
   const radiosity::SceneMesh& mesh = this->SeenInput->Mesh;
-  const auto sizes = radiosity::SizesInUse(patchSize, elementSize, this->SuggestedPatchSize);
+  const auto sizes = SizesAtAccuracy(patchSize, elementSize, this->SuggestedPatchSize, this->Accuracy);
   radiosity::MesherOptions options = OptionsFor(this, mesh, this->SeenInput->Lamps);
   options.ElementSize = sizes.second;
   const radiosity::ElementCounter count(mesh.Points, mesh.Offsets, mesh.Connectivity, this->SeenInput->SurfaceKey, options);
@@ -119,6 +164,7 @@ void vtkRadiosityMesher::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SharePatches: " << this->SharePatches << "\n";
   os << indent << "ClusterAngle: " << this->ClusterAngle << "\n";
   os << indent << "LampGrading: " << this->LampGrading << "\n";
+  os << indent << "Accuracy: " << this->Accuracy << (this->Accuracy < 0 ? " (custom)" : "") << "\n";
 }
 
 int vtkRadiosityMesher::FillInputPortInformation(int, vtkInformation* info)
@@ -428,6 +474,12 @@ int vtkRadiosityMesher::RequestData(
       return 1;
     }
     WriteMeshed(output, input, meshed, firstPatch, this->PatchSizeInUse, wholeScene.PointQuantum, warnings);
+    // The level for the solver (which takes its gather rays and separation from it).
+    output->GetFieldData()->RemoveArray("Accuracy");
+    if (this->Accuracy >= 0)
+    {
+      AddFieldInt(output->GetFieldData(), "Accuracy", this->Accuracy);
+    }
     this->MesherPatchSize = this->PatchSizeInUse;
     this->MesherElementSize = meshed.ElementSize;
     return 1;

@@ -90,6 +90,27 @@ public:
   ///@}
 
   ///@{
+  /// One setting for what a solve costs and how close it comes: -1 (Custom, the default)
+  /// leaves everything to the settings themselves; 0 (Preview) to 4 (Reference) scale
+  /// ElementSize (the one given or suggested: 2, 1, 1, 1/2, 1/2 times, at most the patch)
+  /// and set LampGrading here, and stamp the level on the output (field array Accuracy),
+  /// from which the solver takes its GatherRays and ClusterSeparation (16 / 2, 64 / 2,
+  /// 256 / 3, 256 / 3, 1024 / 4). Level 2 is the filters' defaults. What each costs and
+  /// buys on a real building: docs/benchmarks.md, "One accuracy knob".
+  vtkSetClampMacro(Accuracy, int, -1, 4);
+  vtkGetMacro(Accuracy, int);
+  /// The level's numbers (relight.levels reads them): element scale, LampGrading,
+  /// GatherRays, ClusterSeparation, and its name.
+  static double GetAccuracyElementScale(int level);
+  static double GetAccuracyLampGrading(int level);
+  static int GetAccuracyGatherRays(int level);
+  static double GetAccuracyClusterSeparation(int level);
+  static const char* GetAccuracyName(int level);
+  /// The LampGrading this filter meshes with: Accuracy's where a level is chosen.
+  double GetLampGradingInUse() const;
+  ///@}
+
+  ///@{
   /// Finer elements where a lamp lights a surface from up close: at a distance d from the
   /// lamp, elements of LampGrading * d, down to a quarter of ElementSize, so the peak by a
   /// lamp and the shadow edges near it are not spread over a whole element. Quads refine
@@ -157,6 +178,7 @@ private:
   bool SharePatches = true;
   double ClusterAngle = 30;
   double LampGrading = 0.2;
+  int Accuracy = -1;
   double SuggestedPatchSize = 0.0;
   double SuggestedElementSize = 0.0;
   double InputArea = 0.0;

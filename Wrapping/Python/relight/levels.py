@@ -1,4 +1,5 @@
-"""One accuracy knob: ``relight.solve(scene, accuracy="fine")``.
+"""One accuracy knob: ``relight.solve(scene, accuracy="fine")`` (in ParaView: the mesher's
+Accuracy, which the solver follows).
 
 Each level sets the four settings that decide what a solve costs and how close it comes:
 the element size (a multiple of the size given or suggested for the scene), the mesher's
@@ -10,15 +11,16 @@ them to it). What each level measured on the FZK-Haus and the rooms, error again
 
 from collections import namedtuple
 
+from .vtkRadiosityFilters import vtkRadiosityMesher
+
 Level = namedtuple("Level", "element_scale lamp_grading gather_rays cluster_separation")
 
-LEVELS = {
-    "preview": Level(2.0, 0.0, 16, 2.0),     # elements twice as large, a light gather
-    "draft": Level(1.0, 0.3, 64, 2.0),
-    "default": Level(1.0, 0.2, 256, 3.0),    # the filters' defaults
-    "fine": Level(0.5, 0.2, 256, 3.0),       # elements half as large
-    "reference": Level(0.5, 0.15, 1024, 4.0),
-}
+# The table is the C++ one (Base/AccuracyLevels.h), which the mesher's Accuracy uses too.
+LEVELS = {vtkRadiosityMesher.GetAccuracyName(i): Level(vtkRadiosityMesher.GetAccuracyElementScale(i),
+                                                       vtkRadiosityMesher.GetAccuracyLampGrading(i),
+                                                       vtkRadiosityMesher.GetAccuracyGatherRays(i),
+                                                       vtkRadiosityMesher.GetAccuracyClusterSeparation(i))
+          for i in range(5)}
 
 
 def level(name):

@@ -83,4 +83,44 @@ check(errors["preview"] > errors["draft"] > errors["default"] > errors["fine"] a
       "each level closer to Lambert's closed form at 300 points between the mesh points: " +
       ", ".join(f"{n} {100 * e:.2f} %" for n, e in errors.items()))
 
+# --- the same knob in ParaView: the mesher's Accuracy, which the solver follows -------------
+def pipeline(level, gather_rays=None):
+    mesher = relight.vtkRadiosityMesher()
+    mesher.SetInputData(scene)
+    mesher.SetPatchSize(1.0)
+    mesher.SetElementSize(0.25)
+    mesher.SetAccuracy(level)
+    solver = relight.vtkLightTaggedRadiosity()
+    solver.SetInputConnection(mesher.GetOutputPort())
+    if gather_rays is not None:
+        solver.SetGatherRays(gather_rays)
+    solver.Update()
+    return mesher, solver
+
+
+def effect(data, name):
+    fields = data.GetFieldData()
+    names = fields.GetAbstractArray("Effects")
+    row = [i for i in range(names.GetNumberOfValues()) if names.GetValue(i) == name][0]
+    return fields.GetAbstractArray("EffectReasons").GetValue(row)
+
+
+mesher, solver = pipeline(3)
+out = solver.GetOutput()
+stamp = out.GetFieldData().GetArray("Accuracy")
+check(mesher.GetElementSizeInUse() == 0.125 and mesher.GetLampGradingInUse() == chosen.lamp_grading and
+      stamp is not None and stamp.GetValue(0) == 3,
+      f"Accuracy Fine on the mesher: elements {mesher.GetElementSizeInUse()}, LampGrading "
+      f"{mesher.GetLampGradingInUse()}, stamped {stamp.GetValue(0) if stamp else None}")
+check(out.GetNumberOfCells() == runs["fine"].GetOutput().GetNumberOfCells() and
+      abs(probe_error(out) - errors["fine"]) < 1e-12,
+      f"...the same mesh and answer as relight.solve(accuracy='fine') ({out.GetNumberOfCells()} elements)")
+mesher, solver = pipeline(1, gather_rays=0)  # the level's 64 rays, not the solver's own 0
+check("then 64 rays" in effect(solver.GetOutput(), "FinalGather"),
+      f"the solver takes Draft's gather rays from the mesher's stamp: {effect(solver.GetOutput(), 'FinalGather')}")
+mesher, solver = pipeline(-1, gather_rays=0)
+check(solver.GetOutput().GetFieldData().GetArray("Accuracy") is None and
+      "not asked for" in effect(solver.GetOutput(), "FinalGather"),
+      "Custom stamps nothing: the solver's own GatherRays 0 holds")
+
 finish("TestAccuracyLevels")

@@ -1,0 +1,36 @@
+// One accuracy setting for the whole pipeline: what each level sets. The mesher's Accuracy
+// picks a level (and stamps it on its output, which the solver follows); relight.solve's
+// `accuracy` reads the same table. Level 2 is the filters' own defaults.
+#ifndef RadiosityCore_AccuracyLevels_h
+#define RadiosityCore_AccuracyLevels_h
+
+namespace radiosity
+{
+
+struct AccuracyLevel
+{
+  const char* Name;
+  double ElementScale;      ///< times the element size given or suggested (at most the patch)
+  double LampGrading;       ///< MesherOptions::LampGrading
+  int GatherRays;           ///< GatherSettings::Rays
+  double ClusterSeparation; ///< ClusteredSettings::Separation
+};
+
+constexpr int kAccuracyLevels = 5;
+
+/// Level 0 (preview) to 4 (reference); measured on the FZK-Haus in docs/benchmarks.md.
+inline const AccuracyLevel& AccuracyLevelOf(int level)
+{
+  static const AccuracyLevel levels[kAccuracyLevels] = {
+    { "preview", 2.0, 0.0, 16, 2.0 },   // elements twice as large, a light gather
+    { "draft", 1.0, 0.3, 64, 2.0 },
+    { "default", 1.0, 0.2, 256, 3.0 },  // the filters' defaults
+    { "fine", 0.5, 0.2, 256, 3.0 },     // elements half as large
+    { "reference", 0.5, 0.15, 1024, 4.0 },
+  };
+  return levels[level < 0 ? 0 : level >= kAccuracyLevels ? kAccuracyLevels - 1 : level];
+}
+
+} // namespace radiosity
+
+#endif
