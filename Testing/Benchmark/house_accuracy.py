@@ -29,9 +29,9 @@ def plot(rows, path):
     for r, x, y in zip(rows, seconds, errors):
         ax.annotate(f"{r['accuracy']}\n{int(r['elements']):,} el", (x, y), textcoords="offset points", xytext=(8, -14),
                     fontsize=8)
-    ax.axhline(3.0, color="tab:red", linestyle="--", linewidth=1, label="3 % (the target at the defaults)")
+    ax.axhline(3.0, color="tab:red", linestyle="--", linewidth=1, label="3 %: the target at the defaults")
     ax.axhline(1.18, color="grey", linestyle=":", linewidth=1,
-               label="Radiance against Mitsuba 3 (1.18 %): the references' own spread")
+               label="Radiance vs Mitsuba 3: 1.18 %")
     ax.set_xscale("log")
     ax.xaxis.set_major_formatter(matplotlib.ticker.ScalarFormatter())
     ax.set_xticks([5, 10, 20, 30, 60, 120])
@@ -47,7 +47,7 @@ def plot(rows, path):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--levels", default="preview,draft,default,fine")
+    parser.add_argument("--levels", default="preview,draft,default,fine,reference")
     parser.add_argument("--out", default="out/bench")
     parser.add_argument("--mitsuba-python", default="out/mitsuba-venv/bin/python")
     args = parser.parse_args()
