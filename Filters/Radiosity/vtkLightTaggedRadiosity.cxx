@@ -80,6 +80,7 @@ void vtkLightTaggedRadiosity::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumShots: " << this->MaximumShots << "\n";
   os << indent << "ConvergenceThreshold: " << this->ConvergenceThreshold << "\n";
   os << indent << "TimeBudget: " << this->TimeBudget << "\n";
+  os << indent << "GatherSweeps: " << this->GatherSweeps << "\n";
   os << indent << "ClusterSeparation: " << this->ClusterSeparation << "\n";
   os << indent << "GatherRays: " << this->GatherRays << "\n";
   os << indent << "AmbientTerm: " << this->AmbientTerm << "\n";
@@ -222,6 +223,7 @@ radiosity::SolverOptions vtkLightTaggedRadiosity::Options(int threads, const rad
   options.TimeBudget = this->TimeBudget;
   options.Clustered.Separation = this->ClusterSeparation;
   options.Gather.Rays = this->GatherRays;
+  options.Gather.Sweeps = this->GatherSweeps;
   options.FormFactorMethod = static_cast<radiosity::FormFactorMethod>(this->FormFactorMethod);
   options.FormFactorSamples = this->FormFactorSamples;
   options.Threads = threads;
@@ -247,6 +249,7 @@ void FollowAccuracy(vtkPolyData* input, radiosity::SolverOptions& options)
   {
     const radiosity::AccuracyLevel& chosen = radiosity::AccuracyLevelOf(static_cast<int>(value));
     options.Gather.Rays = chosen.GatherRays;
+    options.Gather.Sweeps = chosen.GatherSweeps;
     options.Clustered.Separation = chosen.ClusterSeparation;
   }
 }

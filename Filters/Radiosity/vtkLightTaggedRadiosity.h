@@ -194,6 +194,16 @@ public:
   ///@}
 
   ///@{
+  /// Passes of the final gather over the elements before the points read them (default
+  /// 1, at most 4): each gathers every element's mean anew from rays, so what the element
+  /// solution lost (light reaching dim places after several bounces) shrinks by the
+  /// reflectance at each pass. On the FZK-Haus 2 passes gave 2.23 % from Mitsuba 3 instead
+  /// of 2.50 %, in 30.9 s instead of 27.2 s (the Fine and Reference accuracy levels use 2).
+  vtkSetClampMacro(GatherSweeps, int, 0, 4);
+  vtkGetMacro(GatherSweeps, int);
+  ///@}
+
+  ///@{
   /// Stop after this many seconds, the final gather included; 0 (default) means no limit.
   /// The gather takes what the shooting left: fewer rays a point where all would not fit,
   /// none (the points show their elements' mean) where that is spent; the FinalGather row
@@ -362,6 +372,7 @@ private:
   double TimeBudget = 0;
   double ClusterSeparation = 3.0;
   int GatherRays = 256;
+  int GatherSweeps = 1;
   bool AmbientTerm = false;
   bool SeparateDirect = false;
   int NumberOfThreads = 0;

@@ -133,6 +133,11 @@ double vtkRadiosityMesher::GetAccuracyClusterSeparation(int level)
   return radiosity::AccuracyLevelOf(level).ClusterSeparation;
 }
 
+int vtkRadiosityMesher::GetAccuracyGatherSweeps(int level)
+{
+  return radiosity::AccuracyLevelOf(level).GatherSweeps;
+}
+
 const char* vtkRadiosityMesher::GetAccuracyName(int level)
 {
   return radiosity::AccuracyLevelOf(level).Name;

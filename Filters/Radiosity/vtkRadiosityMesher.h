@@ -94,17 +94,19 @@ public:
   /// leaves everything to the settings themselves; 0 (Preview) to 4 (Reference) scale
   /// ElementSize (the one given or suggested: 2, 1, 1, 1/2, 1/2 times, at most the patch)
   /// and set LampGrading here, and stamp the level on the output (field array Accuracy),
-  /// from which the solver takes its GatherRays and ClusterSeparation (16 / 2, 64 / 2,
-  /// 256 / 3, 256 / 3, 1024 / 4). Level 2 is the filters' defaults. What each costs and
+  /// from which the solver takes its GatherRays, ClusterSeparation and GatherSweeps (16 / 2
+  /// / 1, 64 / 2 / 1, 256 / 3 / 1, 256 / 3 / 2, 1024 / 4 / 2). Level 2 is the filters'
+  /// defaults. What each costs and
   /// buys on a real building: docs/benchmarks.md, "One accuracy knob".
   vtkSetClampMacro(Accuracy, int, -1, 4);
   vtkGetMacro(Accuracy, int);
   /// The level's numbers (relight.levels reads them): element scale, LampGrading,
-  /// GatherRays, ClusterSeparation, and its name.
+  /// GatherRays, ClusterSeparation, GatherSweeps, and its name.
   static double GetAccuracyElementScale(int level);
   static double GetAccuracyLampGrading(int level);
   static int GetAccuracyGatherRays(int level);
   static double GetAccuracyClusterSeparation(int level);
+  static int GetAccuracyGatherSweeps(int level);
   static const char* GetAccuracyName(int level);
   /// The LampGrading this filter meshes with: Accuracy's where a level is chosen.
   double GetLampGradingInUse() const;

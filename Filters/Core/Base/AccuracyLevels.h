@@ -14,6 +14,7 @@ struct AccuracyLevel
   double LampGrading;       ///< MesherOptions::LampGrading
   int GatherRays;           ///< GatherSettings::Rays
   double ClusterSeparation; ///< ClusteredSettings::Separation
+  int GatherSweeps;         ///< GatherSettings::Sweeps
 };
 
 constexpr int kAccuracyLevels = 5;
@@ -22,11 +23,11 @@ constexpr int kAccuracyLevels = 5;
 inline const AccuracyLevel& AccuracyLevelOf(int level)
 {
   static const AccuracyLevel levels[kAccuracyLevels] = {
-    { "preview", 2.0, 0.0, 16, 2.0 },   // elements twice as large, a light gather
-    { "draft", 1.0, 0.3, 64, 2.0 },
-    { "default", 1.0, 0.2, 256, 3.0 },  // the filters' defaults
-    { "fine", 0.5, 0.2, 256, 3.0 },     // elements half as large
-    { "reference", 0.5, 0.15, 1024, 4.0 },
+    { "preview", 2.0, 0.0, 16, 2.0, 1 },   // elements twice as large, a light gather
+    { "draft", 1.0, 0.3, 64, 2.0, 1 },
+    { "default", 1.0, 0.2, 256, 3.0, 1 },  // the filters' defaults
+    { "fine", 0.5, 0.2, 256, 3.0, 2 },     // elements half as large, a second sweep
+    { "reference", 0.5, 0.15, 1024, 4.0, 2 },
   };
   return levels[level < 0 ? 0 : level >= kAccuracyLevels ? kAccuracyLevels - 1 : level];
 }

@@ -18,9 +18,11 @@ from vtkmodules.vtkFiltersCore import vtkProbeFilter
 # --- the default level is the filters' defaults --------------------------------------------
 default = levels.LEVELS["default"]
 mesher, solver = relight.vtkRadiosityMesher(), relight.vtkLightTaggedRadiosity()
-check(default == levels.Level(1.0, mesher.GetLampGrading(), solver.GetGatherRays(), solver.GetClusterSeparation()),
+check(default == levels.Level(1.0, mesher.GetLampGrading(), solver.GetGatherRays(), solver.GetClusterSeparation(),
+                              solver.GetGatherSweeps()),
       f"level 'default' {default} is the filters' LampGrading {mesher.GetLampGrading()}, GatherRays "
-      f"{solver.GetGatherRays()}, ClusterSeparation {solver.GetClusterSeparation()}")
+      f"{solver.GetGatherRays()}, ClusterSeparation {solver.GetClusterSeparation()}, GatherSweeps "
+      f"{solver.GetGatherSweeps()}")
 try:
     levels.level("best")
     check(False, "an unknown level is refused")
@@ -73,9 +75,10 @@ for name in ("preview", "draft", "default", "fine"):
 chosen = levels.LEVELS["fine"]
 mesher = runs["fine"].GetInputAlgorithm()
 check((mesher.GetElementSize(), mesher.GetLampGrading(), runs["fine"].GetGatherRays(),
-       runs["fine"].GetClusterSeparation()) == (0.25 * chosen.element_scale, chosen.lamp_grading, chosen.gather_rays,
-                                                 chosen.cluster_separation),
-      "accuracy='fine' sets the element size, LampGrading, GatherRays and ClusterSeparation")
+       runs["fine"].GetClusterSeparation(), runs["fine"].GetGatherSweeps()) ==
+      (0.25 * chosen.element_scale, chosen.lamp_grading, chosen.gather_rays, chosen.cluster_separation,
+       chosen.gather_sweeps),
+      "accuracy='fine' sets the element size, LampGrading, GatherRays, ClusterSeparation and GatherSweeps")
 given = relight.solve(scene, 1.0, 0.25, accuracy="fine", lamp_grading=0, GatherRays=16)
 check(given.GetInputAlgorithm().GetLampGrading() == 0 and given.GetGatherRays() == 16,
       "settings given beside the level win over it")
