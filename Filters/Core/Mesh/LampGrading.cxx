@@ -3,9 +3,27 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
+#include <utility>
 
 namespace radiosity
 {
+
+namespace
+{
+/// The sphere around a loop's corners: its centroid, and the farthest corner's distance.
+/// Every point of the (convex hull of the) loop lies within it.
+std::pair<Vec3, double> CornerSphere(const Vec3* corners, int count)
+{
+  const Vec3 centre = PolygonCentroid(corners, count);
+  double radius = 0;
+  for (int k = 0; k < count; ++k)
+  {
+    radius = std::max(radius, Norm(corners[k] - centre));
+  }
+  return { centre, radius };
+}
+} // namespace
 
 LampSpots::LampSpots(std::vector<LampSpot> spots, double cell)
 {
@@ -16,17 +34,11 @@ LampSpots::LampSpots(std::vector<LampSpot> spots, double cell)
   {
     const Vec3& c = binned->Spots[i].Centre;
     binned->LargestRadius = std::max(binned->LargestRadius, binned->Spots[i].Radius);
-    binned->Bins[Key(static_cast<long long>(std::floor(c.x / binned->Cell)),
+    binned->Bins[CellHash(static_cast<long long>(std::floor(c.x / binned->Cell)),
       static_cast<long long>(std::floor(c.y / binned->Cell)), static_cast<long long>(std::floor(c.z / binned->Cell)))]
       .push_back(static_cast<int>(i));
   }
   Bins = std::move(binned);
-}
-
-long long LampSpots::Key(long long x, long long y, long long z)
-{
-  // A collision only makes a query look at a few more lamps.
-  return CellHash(x, y, z);
 }
 
 LampSpots FindLampSpots(const std::vector<Vec3>& points, const std::vector<int>& offsets,
@@ -46,12 +58,8 @@ LampSpots FindLampSpots(const std::vector<Vec3>& points, const std::vector<int>&
       continue; // the solver names a degenerate lamp
     }
     LampSpot spot;
-    spot.Centre = PolygonCentroid(loop.data(), static_cast<int>(loop.size()));
+    std::tie(spot.Centre, spot.Radius) = CornerSphere(loop.data(), static_cast<int>(loop.size()));
     spot.Normal = Normalized(newell);
-    for (const Vec3& p : loop)
-    {
-      spot.Radius = std::max(spot.Radius, Norm(p - spot.Centre));
-    }
     spot.Corners = loop;
     spots.push_back(spot);
   }
@@ -116,12 +124,9 @@ double GradedElementSize(const LampSpots& lamps, const Vec3* corners, int count,
     return elementSize;
   }
   const Vec3 normal = Normalized(newell);
-  const Vec3 centre = PolygonCentroid(corners, count);
+  Vec3 centre;
   double radius = 0;
-  for (int k = 0; k < count; ++k)
-  {
-    radius = std::max(radius, Norm(corners[k] - centre));
-  }
+  std::tie(centre, radius) = CornerSphere(corners, count);
   double size = elementSize;
   lamps.Near(centre, radius, elementSize / grading, [&](const LampSpot& lamp) {
     // Lit only where some corner is in front of the lamp and the lamp is in front of the patch.
@@ -146,17 +151,9 @@ bool MayGrade(const LampSpots& lamps, const std::vector<Vec3>& loop, double elem
   {
     return false;
   }
-  Vec3 centre{};
-  for (const Vec3& p : loop)
-  {
-    centre = centre + p;
-  }
-  centre = centre * (1.0 / static_cast<double>(loop.size()));
+  Vec3 centre;
   double radius = 0;
-  for (const Vec3& p : loop)
-  {
-    radius = std::max(radius, Norm(p - centre));
-  }
+  std::tie(centre, radius) = CornerSphere(loop.data(), static_cast<int>(loop.size()));
   // Every point of the polygon, so of its patches, is within `radius` of `centre`.
   bool near = false;
   lamps.Near(centre, radius, elementSize / grading, [&](const LampSpot& lamp) {

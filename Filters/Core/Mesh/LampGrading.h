@@ -5,6 +5,7 @@
 #define RadiosityCore_LampGrading_h
 
 #include "Base/Vec3.h"
+#include "Geometry/Polygon.h"
 
 #include <cmath>
 #include <memory>
@@ -46,7 +47,6 @@ private:
     double LargestRadius = 0;
     std::unordered_map<long long, std::vector<int>> Bins; ///< by the cell of a lamp's centre
   };
-  static long long Key(long long x, long long y, long long z);
   std::shared_ptr<const Binned> Bins;
 };
 
@@ -98,7 +98,7 @@ void LampSpots::Near(const Vec3& centre, double radius, double reach, const Visi
     for (long long y = first[1]; y <= last[1]; ++y)
       for (long long z = first[2]; z <= last[2]; ++z)
       {
-        const auto bin = Bins->Bins.find(Key(x, y, z));
+        const auto bin = Bins->Bins.find(CellHash(x, y, z)); // a collision: a few more lamps
         if (bin != Bins->Bins.end())
         {
           for (int i : bin->second)

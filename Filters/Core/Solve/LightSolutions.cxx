@@ -296,15 +296,6 @@ void GatherInto(const RadiositySolver& solver, const SceneMesh& mesh, const std:
     out.Statistics.Aborted = true;
     return;
   }
-  if (points.OutOfTime)
-  {
-    out.Radiosity = std::move(points.Cells); // the sweep's elements; the points their mean
-    if (!out.Direct.empty())
-    {
-      out.Direct = std::move(points.CellsDirect);
-    }
-    return;
-  }
   const bool swept = !points.Cells.empty();
   out.Radiosity = swept ? std::move(points.Cells)
                         : CellsFromPoints(mesh, solver.Geometry(), points.Radiosity, out.Radiosity, out.Solutions);
