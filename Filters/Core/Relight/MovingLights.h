@@ -7,6 +7,7 @@
 #include "Geometry/PreparedScene.h"
 #include "Geometry/Visibility.h"
 #include "Base/WorkerPool.h"
+#include "Lights/PointLight.h"
 
 #include <memory>
 #include <vector>
@@ -14,17 +15,10 @@
 namespace radiosity
 {
 
-/// A light that moves between frames. Isotropic when Normal is zero: radiant intensity
-/// Intensity * Color in every direction, so a surface at distance r receives irradiance
-/// Intensity * Color * cos(theta) / r^2. With a Normal it is a small Lambertian emitter:
-/// intensity Intensity * Color * cos(angle to Normal), nothing behind it.
-struct MovingLight
-{
-  Vec3 Position;
-  Vec3 Color{ 1, 1, 1 };
-  double Intensity = 1;
-  Vec3 Normal;
-};
+/// A light that moves between frames: a point light of any kind (Lights/LightKinds.h),
+/// isotropic where it has no distribution, a small Lambertian emitter facing its Aim with
+/// the "lambertian" one, a luminaire with a "goniometric" one.
+using MovingLight = PointLight;
 
 /// The direct part, computed every frame: each element's radiosity rho * irradiance from
 /// the moving lights, with Embree shadow rays against the static scene and, optionally,
@@ -47,11 +41,6 @@ public:
     std::vector<Vec3>& direct) const;
 
 private:
-  /// Adds the light's direct irradiance to elements [begin, end) (irradiance[e - begin]);
-  /// returns the shadow rays cast.
-  long long ShadeChunk(const MovingLight& light, int begin, int end, std::vector<Vec3>& irradiance) const;
-  /// What the light gives element e where nothing blocks it, at `intensity` toward e.
-  double Unoccluded(const MovingLight& light, int e, double intensity) const;
   /// The rays shadows are cast against: the static scene, with the objects where any.
   const Visibility& Rays() const { return WithObjects ? *WithObjects : *Prepared.Rays; }
 

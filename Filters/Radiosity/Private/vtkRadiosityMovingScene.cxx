@@ -139,7 +139,9 @@ bool ReadMovingLights(vtkPolyData* lights, std::vector<radiosity::MovingLight>& 
     if (normal && normal->GetNumberOfComponents() == 3)
     {
       normal->GetTuple(i, v);
-      light.Normal = { v[0], v[1], v[2] };
+      std::string unused;
+      light.Aim = { v[0], v[1], v[2] };
+      light.Distribution = radiosity::MakeLambertianLight({}, unused);
     }
     const radiosity::Vec3& p = light.Position;
     const std::string invalid = radiosity::InvalidLightValues(light.Intensity, light.Color);
@@ -148,7 +150,7 @@ bool ReadMovingLights(vtkPolyData* lights, std::vector<radiosity::MovingLight>& 
       error = "moving light " + std::to_string(i) + (invalid.empty() ? " has a non-finite position" : " " + invalid);
       return false;
     }
-    const radiosity::Vec3& n = light.Normal;
+    const radiosity::Vec3& n = light.Aim;
     if (normal && normal->GetNumberOfComponents() == 3 && !(std::isfinite(n.x + n.y + n.z) && radiosity::Norm(n) > 0))
     {
       error = "moving light " + std::to_string(i) + " has a zero or non-finite Normal; leave the array out for "
