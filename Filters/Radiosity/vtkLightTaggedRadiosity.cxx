@@ -272,7 +272,8 @@ int vtkLightTaggedRadiosity::Solve(
   error = error.empty() ? steps::ReadInput(input, this->Effect(this->LightSeparationEffect), scene) : error;
   if (error.empty())
   {
-    error = steps::CheckSolveMemory(scene, combined ? 1 : scene.Grouping.Solutions, this->SeparateDirect, group);
+    error = steps::CheckSolveMemory(
+      scene, combined ? 1 : scene.Grouping.Solutions + static_cast<int>(scene.PointLights.size()), this->SeparateDirect, group);
   }
   const auto start = std::chrono::steady_clock::now();
   const int threads = vtkRadiosityAdapter::Threads(this->NumberOfThreads);
@@ -307,7 +308,7 @@ int vtkLightTaggedRadiosity::Solve(
   };
   const auto mode = static_cast<radiosity::SolutionMode>(this->SolutionMode);
   vtkLogStartScope(TRACE, "shoot");
-  const radiosity::Solution result = radiosity::SolveLights(solver, scene.Mesh, scene.Grouping, scene.Emission, mode, options);
+  const radiosity::Solution result = radiosity::SolveLights(solver, scene.Mesh, scene.Grouping, scene.Emission, mode, options, scene.PointLights);
   vtkLogEndScope("shoot");
   return this->WriteResult(input, output, history, scene, solver, result, options, abort.Stop(), start, warnings,
     ranks ? ranks->GetLocalProcessId() : 0);

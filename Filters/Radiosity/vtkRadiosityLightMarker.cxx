@@ -1,5 +1,6 @@
 #include "vtkRadiosityLightMarker.h"
 #include "vtkRadiosityAdapter.h"
+#include "vtkRadiosityLuminaires.h"
 #include "vtkRadiosityPieces.h"
 
 #include "Solve/LightChecks.h"
@@ -37,6 +38,7 @@ struct vtkRadiosityLightMarker::Choices
 {
   std::vector<vtkIdType> CellIds;
   std::vector<radiosity::AreaLight> AreaLights;
+  std::vector<radiosity::LuminaireRow> Luminaires;
 };
 
 namespace
@@ -315,6 +317,30 @@ void vtkRadiosityLightMarker::ClearAreaLights()
   }
 }
 
+void vtkRadiosityLightMarker::AddLuminaire(const char* name, const char* kind, const char* parameters, double x,
+  double y, double z, double ax, double ay, double az, double rotation, double r, double g, double b)
+{
+  radiosity::LuminaireRow row;
+  row.Name = name ? name : "";
+  row.Kind = kind ? kind : "";
+  row.Parameters = parameters ? parameters : "";
+  row.Position = { x, y, z };
+  row.Aim = { ax, ay, az };
+  row.Rotation = rotation;
+  row.Color = { r, g, b };
+  this->Chosen->Luminaires.push_back(row);
+  this->Modified();
+}
+
+void vtkRadiosityLightMarker::ClearLuminaires()
+{
+  if (!this->Chosen->Luminaires.empty())
+  {
+    this->Chosen->Luminaires.clear();
+    this->Modified();
+  }
+}
+
 int vtkRadiosityLightMarker::FillInputPortInformation(int port, vtkInformation* info)
 {
   if (port == 1)
@@ -387,18 +413,23 @@ void MarkCells(const std::vector<char>& chosen, int light, const radiosity::Vec3
 }
 
 /// What was marked, in words for the log.
-std::string Marked(int cells, const std::string& light, size_t areas)
+std::string Marked(int cells, const std::string& light, size_t areas, size_t luminaires)
 {
   std::ostringstream text;
   if (cells > 0)
   {
-    text << cells << (cells == 1 ? " cell" : " cells") << " made light '" << light << "'" << (areas ? " and " : "");
+    text << cells << (cells == 1 ? " cell" : " cells") << " made light '" << light << "'"
+         << (areas || luminaires ? "; " : "");
   }
   if (areas > 0)
   {
-    text << areas << (areas == 1 ? " area light" : " area lights") << " added";
+    text << areas << (areas == 1 ? " area light" : " area lights") << " added" << (luminaires ? "; " : "");
   }
-  return cells > 0 || areas > 0 ? text.str() : std::string("nothing marked");
+  if (luminaires > 0)
+  {
+    text << luminaires << (luminaires == 1 ? " luminaire" : " luminaires") << " added";
+  }
+  return cells > 0 || areas > 0 || luminaires > 0 ? text.str() : std::string("nothing marked");
 }
 
 /// Each area light as a polygon of its own, appended to the scene.
@@ -422,6 +453,42 @@ std::string AddAreaLights(const std::vector<radiosity::AreaLight>& areas, vtkPol
 
 namespace
 {
+/// The scene's luminaires with `added` (one of the same name replaced), each made once to
+/// check its kind, parameters and file, written to the output's field data.
+std::string AddLuminaires(const std::vector<radiosity::LuminaireRow>& added, const std::vector<std::string>& cellLights,
+  vtkPolyData* output)
+{
+  std::vector<radiosity::LuminaireRow> rows;
+  std::string error;
+  if (!vtkRadiosityLuminaires::Read(output->GetFieldData(), rows, error))
+  {
+    return error;
+  }
+  for (const radiosity::LuminaireRow& row : added)
+  {
+    const auto same = std::find_if(rows.begin(), rows.end(), [&](const radiosity::LuminaireRow& r) { return r.Name == row.Name; });
+    if (same != rows.end())
+    {
+      *same = row;
+    }
+    else
+    {
+      rows.push_back(row);
+    }
+    radiosity::PointLight light;
+    if (!(error = radiosity::MakePointLight(row, light)).empty())
+    {
+      return error;
+    }
+  }
+  if (!(error = radiosity::LuminaireNamesProblem(rows, cellLights)).empty())
+  {
+    return error;
+  }
+  vtkRadiosityLuminaires::Write(output->GetFieldData(), rows);
+  return {};
+}
+
 /// What the marked scene tells: the upstream "no lights" warning gone where there now are
 /// lights, the lights checked on the scene, the warnings in the output, and a log line.
 void ReportMarked(vtkObject* self, vtkPolyData* output, const std::vector<std::string>& names,
@@ -487,14 +554,19 @@ int vtkRadiosityLightMarker::RequestData(
     {
       return fail(error);
     }
-    if (!count && this->Chosen->AreaLights.empty())
+    if (!count && this->Chosen->AreaLights.empty() && this->Chosen->Luminaires.empty())
     {
-      warnings.Add(this, "No cells chosen and no area lights: the scene passes unchanged.");
+      warnings.Add(this, "No cells chosen, no area lights and no luminaires: the scene passes unchanged.");
     }
     radiosity::CompactLights(lights.Id, lights.Names);
     WriteLights(lights, output);
+    if (!(error = AddLuminaires(this->Chosen->Luminaires, lights.Names, output)).empty())
+    {
+      return fail(error);
+    }
     ReportMarked(this, output, lights.Names, warnings,
-      Marked(count, this->LightName ? this->LightName : "Light", this->Chosen->AreaLights.size()));
+      Marked(count, this->LightName ? this->LightName : "Light", this->Chosen->AreaLights.size(),
+        this->Chosen->Luminaires.size()));
     return 1;
   }, parallel);
 }
@@ -506,4 +578,5 @@ void vtkRadiosityLightMarker::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaterialPattern: " << (this->MaterialPattern ? this->MaterialPattern : "(none)") << "\n";
   os << indent << "CellIds: " << this->Chosen->CellIds.size() << "\n";
   os << indent << "AreaLights: " << this->Chosen->AreaLights.size() << "\n";
+  os << indent << "Luminaires: " << this->Chosen->Luminaires.size() << "\n";
 }

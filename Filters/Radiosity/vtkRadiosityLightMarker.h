@@ -70,6 +70,21 @@ public:
   void ClearAreaLights();
   ///@}
 
+  ///@{
+  /// Appends a luminaire: a light at a point, not a cell. Its kind ("goniometric",
+  /// "point", "spot" or "lambertian") and that kind's parameters as "name=value; ..." (a
+  /// goniometric one's "file=<IES or EULUMDAT file>; lumens=<the file's own if left
+  /// out>", a spot's "cone=30; falloff=5"), its position, the direction it aims (a
+  /// downlight's nadir), its rotation about the aim in degrees, and its color. Each is
+  /// made once here, so a missing file or a misspelt parameter is an error now; one of
+  /// the same name as a luminaire already in the scene replaces it. They travel as field
+  /// arrays (LuminaireNames, LuminaireKinds, LuminaireParameters, LuminairePlacement) to
+  /// the solver, which gives each a solution of its own.
+  void AddLuminaire(const char* name, const char* kind, const char* parameters, double x, double y, double z,
+    double ax, double ay, double az, double rotation, double r, double g, double b);
+  void ClearLuminaires();
+  ///@}
+
   /// Optional second input: a vtkSelection whose cells are chosen too.
   void SetSelectionConnection(vtkAlgorithmOutput* selection) { this->SetInputConnection(1, selection); }
 

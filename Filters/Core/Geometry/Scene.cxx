@@ -139,7 +139,7 @@ std::string LightGap(const SceneMesh& mesh, int maxLight)
 }
 }
 
-std::string ValidateScene(const SceneMesh& mesh, int& numberOfLights)
+std::string ValidateScene(const SceneMesh& mesh, int& numberOfLights, int pointLights)
 {
   std::string problem = ArraysProblem(mesh);
   int maxLight = -1;
@@ -152,10 +152,10 @@ std::string ValidateScene(const SceneMesh& mesh, int& numberOfLights)
   {
     return problem;
   }
-  if (maxLight < 0)
+  if (maxLight < 0 && pointLights == 0)
   {
-    return "no cell has a LightId >= 0: the scene has no lights (k = 0); add lamps (Mark Lights in ParaView, "
-           "relight.mark_lights with relight.area_light in Python)";
+    return "no cell has a LightId >= 0 and there are no luminaires: the scene has no lights (k = 0); add lamps "
+           "(Mark Lights in ParaView, relight.mark_lights with relight.area_light or relight.luminaire in Python)";
   }
   if (!(problem = LightGap(mesh, maxLight)).empty())
   {

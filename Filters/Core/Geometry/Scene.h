@@ -38,8 +38,9 @@ struct SceneMesh
 std::string ReflectanceProblem(const Vec3& reflectance, long long cell);
 
 /// Checks the input contract. Returns an empty string when valid, otherwise a message that
-/// names the offending array, the item and the value. On success sets `numberOfLights`.
-std::string ValidateScene(const SceneMesh& mesh, int& numberOfLights);
+/// names the offending array, the item and the value. On success sets `numberOfLights`
+/// (the cell lights; none is a problem unless the scene has `pointLights`).
+std::string ValidateScene(const SceneMesh& mesh, int& numberOfLights, int pointLights = 0);
 
 /// Geometry derived once per solve: element normals, areas, centroids and patch groups.
 struct SceneGeometry

@@ -5,6 +5,7 @@
 #include "Geometry/FormFactor.h"
 #include "Geometry/PointAverages.h"
 #include "Geometry/Polygon.h"
+#include "Lights/PointShading.h"
 
 #include <algorithm>
 #include <array>
@@ -341,7 +342,7 @@ public:
   Gather(const SceneMesh& mesh, const SceneGeometry& g, const Visibility& rays, const std::vector<Vec3>& emission,
     const std::vector<Vec3>& radiosity, int solutions, const std::vector<Emitter>& emitters,
     std::vector<PointFrame> frames, std::vector<Vec3> frameEmission, int gatherRays, int lightRays, bool shadows,
-    std::uint64_t salt)
+    std::uint64_t salt, const GatherSettings& settings)
     : Mesh(mesh)
     , G(g)
     , Rays(rays)
@@ -357,7 +358,18 @@ public:
     , Frames(std::move(frames))
     , PointEmission(std::move(frameEmission))
     , Emitters(emitters)
+    , FirstPoint(settings.FirstPointSolution)
+    , PointLightsCombined(settings.PointLightsCombined)
   {
+    if (settings.PointLights)
+    {
+      for (PointLight light : *settings.PointLights)
+      {
+        // A light's own solution is white (relighting colors it); a combined one is not.
+        light.Color = PointLightsCombined ? light.Color : Vec3{ 1, 1, 1 };
+        PointLights.push_back(light);
+      }
+    }
   }
 
   /// Point p's values into radiosity[p * S ...] and direct[p * S ...]; returns its rays.
@@ -409,7 +421,18 @@ private:
         out[m] += unshadowed[m] * seen;
       }
     }
-    return rays;
+    return rays + PointLightsAt(f.Origin, f.Normal, 1.0, out);
+  }
+
+  /// Adds `weight` times the direct light of each point light at x (already off its
+  /// surface) to its solution; returns the shadow rays cast.
+  long long PointLightsAt(const Vec3& x, const Vec3& normal, double weight, std::vector<Vec3>& out) const
+  {
+    for (size_t i = 0; i < PointLights.size(); ++i)
+    {
+      out[PointLightsCombined ? FirstPoint : FirstPoint + i] += PointIrradianceAt(PointLights[i], x, normal, Rays, 0.0) * weight;
+    }
+    return static_cast<long long>(PointLights.size());
   }
 
   /// The element mean of the irradiance from every emitter: at each of LightRays points
@@ -441,6 +464,7 @@ private:
           out[m] += unshadowed[m] * (1.0 / LightRays);
         }
       }
+      rays += PointLightsAt(x, f.Normal, 1.0 / LightRays, out);
     }
     return rays;
   }
@@ -623,6 +647,9 @@ private:
   const std::vector<PointFrame> Frames;
   const std::vector<Vec3> PointEmission;
   const std::vector<Emitter>& Emitters;
+  std::vector<PointLight> PointLights; ///< white where each is its own solution
+  const int FirstPoint;
+  const bool PointLightsCombined;
 };
 } // namespace
 
@@ -818,7 +845,7 @@ GatheredPoints GatherAtPoints(const SceneMesh& mesh, const SceneGeometry& geomet
   for (int sweep = 0; sweep + 1 < passes; ++sweep)
   {
     const Gather pass(mesh, geometry, rays, emission, source, solutions, emitters, ElementFrames(mesh, geometry),
-      emission, settings.SweepRays, settings.SweepLightRays, shadows, sweep + 1);
+      emission, settings.SweepRays, settings.SweepLightRays, shadows, sweep + 1, settings);
     GatheredPoints elements =
       Run(pass, solutions, pool, settings.Group, progress, double(sweep) / passes, double(sweep + 1) / passes);
     sweepRays += elements.Rays;
@@ -855,7 +882,7 @@ GatheredPoints GatherAtPoints(const SceneMesh& mesh, const SceneGeometry& geomet
   }
   std::vector<PointFrame> frames = MakeFrames(mesh, geometry, emission, solutions, rep, pointEmission);
   const Gather last(mesh, geometry, rays, emission, source, solutions, emitters, std::move(frames),
-    std::move(pointEmission), std::max(pointRays, 1), settings.LightRays, shadows, 0);
+    std::move(pointEmission), std::max(pointRays, 1), settings.LightRays, shadows, 0, settings);
   GatheredPoints out = Run(last, solutions, pool, settings.Group, progress, double(passes - 1) / passes, 1.0);
   out.Rays += sweepRays;
   out.PointRays = pointRays;

@@ -10,6 +10,7 @@
 #include "Base/ProcessGroup.h"
 #include "Geometry/Scene.h"
 #include "Geometry/Visibility.h"
+#include "Lights/PointLight.h"
 
 #include <functional>
 #include <vector>
@@ -40,6 +41,13 @@ struct GatherSettings
   /// Processes gathering the same points together: they agree on the rays the budget
   /// leaves (the fewest any of them can afford), so their pieces match.
   ProcessGroup Group;
+  /// Lights at points (luminaires; Solve/PointLightShots.h), light i white in solution
+  /// FirstPointSolution + i: their direct light is taken at each point with one shadow ray
+  /// (a point source casts a hard shadow), at each of an element's spread points in a sweep.
+  const std::vector<PointLight>* PointLights = nullptr;
+  int FirstPointSolution = 0;
+  /// All of them in solution FirstPointSolution at their colors (StandardCombined).
+  bool PointLightsCombined = false;
 };
 
 struct GatheredPoints

@@ -1,5 +1,6 @@
 #include "Solve/LightSolutions.h"
 #include "Solve/Effects.h"
+#include "Solve/PointLightShots.h"
 
 #include <algorithm>
 #include <chrono>
@@ -259,6 +260,15 @@ private:
 };
 } // namespace
 
+/// The solve's point lights: their first shot's irradiance ([e * lights + k], white) and
+/// the solution of the first (-1: StandardCombined, where they share the one solution).
+struct PointLightSolutions
+{
+  std::vector<PointLight> Lights;
+  std::vector<Vec3> Irradiance;
+  int First = -1;
+};
+
 /// The share of a solve's progress the shots report when a gather follows (it took about
 /// a third of the FZK-Haus's solve at 256 rays: 9.5 of 26 s).
 constexpr double kSolveShare = 0.7;
@@ -267,10 +277,16 @@ constexpr double kSolveShare = 0.7;
 /// values from them; a stopped gather leaves the element solution as it was. `spent`: the
 /// seconds the solve took of options.TimeBudget (the gather has the rest, or is skipped).
 void GatherInto(const RadiositySolver& solver, const SceneMesh& mesh, const std::vector<Vec3>& emission,
-  const SolverOptions& options, double spent, Solution& out)
+  const SolverOptions& options, const PointLightSolutions& lights, double spent, Solution& out)
 {
   GatherSettings settings = options.Gather;
   settings.Group = options.Group;
+  if (!lights.Lights.empty())
+  {
+    settings.PointLights = &lights.Lights;
+    settings.FirstPointSolution = std::max(0, lights.First);
+    settings.PointLightsCombined = lights.First < 0;
+  }
   if (options.TimeBudget > 0)
   {
     // The slowest rank's clock: every rank skips the gather, or none does.
@@ -308,25 +324,66 @@ void GatherInto(const RadiositySolver& solver, const SceneMesh& mesh, const std:
   out.PointRadiosity = std::move(points.Radiosity);
 }
 
-Solution SolveInMode(const RadiositySolver& solver, const SceneMesh& mesh, const LightGrouping& grouping,
-  const std::vector<Vec3>& emissionColor, SolutionMode mode, const SolverOptions& options)
+/// The emission each mode solves for (the cells' own, with room for the point lights'
+/// solutions after the grouping's where they have their own).
+std::vector<Vec3> ModeEmission(const SceneMesh& mesh, const LightGrouping& grouping,
+  const std::vector<Vec3>& emissionColor, SolutionMode mode, int pointLights)
 {
   if (mode == SolutionMode::StandardCombined)
   {
-    return solver.Solve(CombinedEmission(mesh, emissionColor), 1, options);
+    return CombinedEmission(mesh, emissionColor);
   }
-  const std::vector<Vec3> emission = SolutionEmission(mesh, grouping, emissionColor);
-  if (mode == SolutionMode::LightTagged)
+  const std::vector<Vec3> cells = SolutionEmission(mesh, grouping, emissionColor);
+  if (pointLights == 0)
   {
-    return solver.Solve(emission, grouping.Solutions, options);
+    return cells;
   }
-  return SeparateSolves(solver, emission, mesh.NumberOfPolygons(), grouping.Solutions, options).Run();
+  const int from = grouping.Solutions, to = from + pointLights;
+  std::vector<Vec3> wider(static_cast<size_t>(mesh.NumberOfPolygons()) * to);
+  for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
+  {
+    std::copy_n(cells.begin() + static_cast<size_t>(e) * from, from, wider.begin() + static_cast<size_t>(e) * to);
+  }
+  return wider;
+}
+
+/// What the solve starts from: the cells' emission plus the point lights' reflected direct
+/// light (StandardCombined: at their colors, into the one solution).
+std::vector<Vec3> StartingRadiosity(const SceneMesh& mesh, const std::vector<Vec3>& emission, int solutions,
+  const PointLightSolutions& points)
+{
+  std::vector<Vec3> start = emission;
+  const int k = static_cast<int>(points.Lights.size());
+  if (points.First >= 0)
+  {
+    AddReflectedDirect(mesh, points.Irradiance, k, start, solutions, points.First);
+    return start;
+  }
+  for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
+  {
+    for (int i = 0; i < k; ++i)
+    {
+      const Vec3 colored = Times(points.Lights[i].Color, points.Irradiance[static_cast<size_t>(e) * k + i]);
+      start[e] += Times(mesh.Reflectance[e], colored);
+    }
+  }
+  return start;
+}
+
+Solution SolveInMode(const RadiositySolver& solver, const std::vector<Vec3>& start, int solutions,
+  SolutionMode mode, const SolverOptions& options, int polygons)
+{
+  if (mode != SolutionMode::StandardSeparate)
+  {
+    return solver.Solve(start, solutions, options);
+  }
+  return SeparateSolves(solver, start, polygons, solutions, options).Run();
 }
 } // namespace
 
 Solution SolveLights(const RadiositySolver& solver, const SceneMesh& mesh,
   const LightGrouping& grouping, const std::vector<Vec3>& emissionColor, SolutionMode mode,
-  const SolverOptions& options)
+  const SolverOptions& options, const std::vector<PointLight>& pointLights)
 {
   CheckGrouping(mesh, grouping);
   SolverOptions solving = options;
@@ -335,16 +392,29 @@ Solution SolveLights(const RadiositySolver& solver, const SceneMesh& mesh,
     solving.Progress = [&options](double f) { return options.Progress(kSolveShare * f); };
   }
   const auto start = std::chrono::steady_clock::now();
-  Solution out = SolveInMode(solver, mesh, grouping, emissionColor, mode, solving);
+  PointLightSolutions points;
+  points.Lights = pointLights;
+  points.First = mode == SolutionMode::StandardCombined ? -1 : grouping.Solutions;
+  const int k = static_cast<int>(pointLights.size());
+  const int solutions = mode == SolutionMode::StandardCombined ? 1 : grouping.Solutions + k;
+  const std::vector<Vec3> emission = ModeEmission(mesh, grouping, emissionColor, mode, k);
+  if (k > 0)
+  {
+    points.Irradiance = PointLightIrradiance(mesh, solver.Geometry(), solver.Rays(), pointLights, options.Threads);
+  }
+  Solution out = SolveInMode(solver, k > 0 ? StartingRadiosity(mesh, emission, solutions, points) : emission,
+    solutions, mode, solving, mesh.NumberOfPolygons());
+  if (k > 0)
+  {
+    SettlePointLights(mesh, solver.Geometry(), pointLights, points.Irradiance, points.First, out);
+  }
   if (options.Gather.Rays > 0 && !out.Statistics.Aborted)
   {
     const std::chrono::duration<double> spent = std::chrono::steady_clock::now() - start;
-    GatherInto(solver, mesh, mode == SolutionMode::StandardCombined ? CombinedEmission(mesh, emissionColor)
-                                                                    : SolutionEmission(mesh, grouping, emissionColor),
-      options, spent.count(), out);
+    GatherInto(solver, mesh, emission, options, points, spent.count(), out);
   }
   out.Effects = DescribeEffects(
-    mesh, options, out, grouping, static_cast<int>(grouping.SolutionOfLight.size()), mode);
+    mesh, options, out, grouping, static_cast<int>(grouping.SolutionOfLight.size()) + k, mode);
   return out;
 }
 

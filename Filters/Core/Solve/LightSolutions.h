@@ -2,6 +2,7 @@
 #ifndef RadiosityCore_LightSolutions_h
 #define RadiosityCore_LightSolutions_h
 
+#include "Lights/PointLight.h"
 #include "Solve/RadiositySolver.h"
 
 namespace radiosity
@@ -44,9 +45,12 @@ std::vector<Vec3> DefaultColors(const SceneMesh& mesh, const LightGrouping& grou
 /// `emissionColor` (per element, may be empty) is used by StandardCombined and by banks.
 /// The solution carries the solver's account of its effects (DescribeEffects); the
 /// moving-light basis row says "skipped" until SolvePatchBasis records a basis in it.
+/// `pointLights` (luminaires and other lights at points, Solve/PointLightShots.h) take a
+/// solution each after the grouping's, white at their Intensity (StandardCombined: all in
+/// the one solution at their Color).
 Solution SolveLights(const RadiositySolver& solver, const SceneMesh& mesh,
   const LightGrouping& grouping, const std::vector<Vec3>& emissionColor, SolutionMode mode,
-  const SolverOptions& options);
+  const SolverOptions& options, const std::vector<PointLight>& pointLights = {});
 
 /// Bytes a solve of `solutions` solutions holds at its peak, with the filter's outputs:
 /// per element and solution its emission, the solver's radiosity, the solution and the

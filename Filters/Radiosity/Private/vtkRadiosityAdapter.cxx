@@ -190,6 +190,17 @@ bool ReadSceneArrays(vtkPolyData* input, radiosity::SceneMesh& mesh,
   return true;
 }
 
+void AddStrings(vtkFieldData* fields, const char* name, const std::vector<std::string>& values)
+{
+  vtkNew<vtkStringArray> array;
+  array->SetName(name);
+  for (const std::string& value : values)
+  {
+    array->InsertNextValue(value);
+  }
+  fields->AddArray(array);
+}
+
 std::vector<std::string> LightNames(vtkFieldData* fields, int count)
 {
   std::vector<std::string> names(count);

@@ -48,6 +48,9 @@ vtkDataArray* RequireCellArray(vtkPolyData* input, const char* name, int compone
 bool ReadSceneArrays(vtkPolyData* input, radiosity::SceneMesh& mesh,
   std::vector<radiosity::Vec3>& emission, std::string& error);
 
+/// Adds (replaces) the string array `name` holding `values` to `fields`.
+void AddStrings(vtkFieldData* fields, const char* name, const std::vector<std::string>& values);
+
 /// `count` names from the field array LightNames, or Light<i> for missing ones.
 std::vector<std::string> LightNames(vtkFieldData* fields, int count);
 

@@ -1,5 +1,7 @@
 #include "vtkRadiositySolveOutput.h"
 
+#include "vtkRadiosityLuminaires.h"
+
 #include "Base/Memory.h"
 #include "Geometry/PointAverages.h"
 #include "Solve/Effects.h"
@@ -75,17 +77,6 @@ void AddPerSolution(vtkPolyData* output, const radiosity::SceneMesh& mesh, const
   }
 }
 
-void AddStrings(vtkFieldData* fields, const char* name, const std::vector<std::string>& values)
-{
-  vtkNew<vtkStringArray> array;
-  array->SetName(name);
-  for (const std::string& value : values)
-  {
-    array->InsertNextValue(value);
-  }
-  fields->AddArray(array);
-}
-
 void AddColumn(vtkTable* table, const std::string& name, const std::vector<double>& values, size_t stride,
   size_t offset)
 {
@@ -122,15 +113,28 @@ std::string DescribeStatus(const radiosity::SolverStatistics& stats, bool aborte
 std::string ReadInput(vtkPolyData* input, radiosity::EffectMode separation, SceneInput& scene)
 {
   std::string error;
+  std::vector<radiosity::LuminaireRow> rows;
   if (!vtkRadiosityAdapter::CopyPolygons(input, scene.Mesh, error) ||
     !vtkRadiosityAdapter::ReadSceneArrays(input, scene.Mesh, scene.Emission, error) ||
-    !(error = radiosity::ValidateScene(scene.Mesh, scene.Lights)).empty())
+    !vtkRadiosityLuminaires::Read(input->GetFieldData(), rows, error) ||
+    !(error = radiosity::ValidateScene(scene.Mesh, scene.Lights, static_cast<int>(rows.size()))).empty())
   {
     return error;
   }
   scene.LightNames = vtkRadiosityAdapter::LightNames(input->GetFieldData(), scene.Lights);
-  return radiosity::GroupLights(
-    scene.Lights, FieldInts(input, "LightBanks"), FieldInts(input, "StaticLights"), separation, scene.Grouping);
+  if (!(error = radiosity::LuminaireNamesProblem(rows, scene.LightNames)).empty())
+  {
+    return error;
+  }
+  scene.PointLights.resize(rows.size());
+  for (size_t i = 0; i < rows.size() && error.empty(); ++i)
+  {
+    error = radiosity::MakePointLight(rows[i], scene.PointLights[i]);
+    scene.PointLightNames.push_back(rows[i].Name);
+  }
+  return error.empty() ? radiosity::GroupLights(scene.Lights, FieldInts(input, "LightBanks"),
+                           FieldInts(input, "StaticLights"), separation, scene.Grouping)
+                       : error;
 }
 
 std::string CheckSolveMemory(
@@ -157,6 +161,7 @@ std::vector<std::string> SolutionNames(const SceneInput& scene, bool combined)
     std::string& name = names[scene.Grouping.SolutionOfLight[i]];
     name += (name.empty() ? "" : "+") + scene.LightNames[i];
   }
+  names.insert(names.end(), scene.PointLightNames.begin(), scene.PointLightNames.end());
   return names;
 }
 
@@ -189,11 +194,15 @@ void AddSolutionArrays(vtkPolyData* output, const SceneInput& scene, const radio
 void AddLightFields(vtkAlgorithm* self, vtkFieldData* fields, const SceneInput& scene,
   const std::vector<std::string>& names, vtkRadiosityAdapter::WarningList& warnings)
 {
-  AddStrings(fields, "LightNames", names);
+  vtkRadiosityAdapter::AddStrings(fields, "LightNames", names);
   vtkNew<vtkDoubleArray> defaults;
   defaults->SetName("LightDefaultColors");
   defaults->SetNumberOfComponents(3);
-  const std::vector<radiosity::Vec3> colors = radiosity::DefaultColors(scene.Mesh, scene.Grouping, scene.Emission);
+  std::vector<radiosity::Vec3> colors = radiosity::DefaultColors(scene.Mesh, scene.Grouping, scene.Emission);
+  for (const radiosity::PointLight& light : scene.PointLights)
+  {
+    colors.push_back(light.Color); // a luminaire's solution is white, at its lumens
+  }
   for (size_t m = 0; m < colors.size(); ++m)
   {
     const radiosity::Vec3& c = colors[m];
@@ -217,11 +226,11 @@ void AddStatusFields(vtkFieldData* fields, const std::vector<radiosity::EffectDe
     decisions.push_back(e.Simulated ? "simulated" : "skipped");
     reasons.push_back(e.Reason);
   }
-  AddStrings(fields, "Effects", names);
-  AddStrings(fields, "EffectDecisions", decisions);
-  AddStrings(fields, "EffectReasons", reasons);
-  AddStrings(fields, "SolverMethod", { radiosity::DescribeSolve(stats) });
-  AddStrings(fields, "SolverStatus", { DescribeStatus(stats, aborted) });
+  vtkRadiosityAdapter::AddStrings(fields, "Effects", names);
+  vtkRadiosityAdapter::AddStrings(fields, "EffectDecisions", decisions);
+  vtkRadiosityAdapter::AddStrings(fields, "EffectReasons", reasons);
+  vtkRadiosityAdapter::AddStrings(fields, "SolverMethod", { radiosity::DescribeSolve(stats) });
+  vtkRadiosityAdapter::AddStrings(fields, "SolverStatus", { DescribeStatus(stats, aborted) });
   vtkNew<vtkDoubleArray> took;
   took->SetName("SolveSeconds");
   took->InsertNextValue(seconds);

@@ -27,10 +27,14 @@ struct SceneInput
   std::vector<std::string> LightNames; ///< one per light, from the field array LightNames
   radiosity::LightGrouping Grouping;
   int Lights = 0;
+  /// The luminaires (field arrays Luminaire*), each a solution after the grouping's.
+  std::vector<radiosity::PointLight> PointLights;
+  std::vector<std::string> PointLightNames;
 };
 
-/// Converts and checks the input and groups its lights (field arrays LightBanks and
-/// StaticLights); "" or the problem.
+/// Converts and checks the input, groups its lights (field arrays LightBanks and
+/// StaticLights) and makes its luminaires (reading their photometric files); "" or the
+/// problem.
 std::string ReadInput(vtkPolyData* input, radiosity::EffectMode separation, SceneInput& scene);
 
 /// "" when every rank has the memory for `solutions` solutions of the scene, else the

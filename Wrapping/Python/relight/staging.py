@@ -1,11 +1,13 @@
 """A model made ready to solve: lights placed in words, and a room or a ground around it.
 
 CAD exports and scans come without lights and without a room. ``area_light`` describes a
-lamp with keywords, ``mark_lights`` adds lamps (and marks cells as lights) through the Mark
+lamp with keywords, ``luminaire`` a light at a point (a manufacturer's IES or EULUMDAT file,
+a bulb, a spot), ``mark_lights`` adds them (and marks cells as lights) through the Mark
 Lights filter, ``in_room`` and ``on_ground`` set the model in a closed room or on a ground
 plane sized from the model itself (so in the model's unit), keeping every array it has.
 """
 
+import os
 import warnings
 from collections import namedtuple
 
@@ -15,6 +17,7 @@ from .scene import ErrorCatcher, _numbers, own_words
 from .vtkRadiosityFilters import vtkRadiosityLightMarker
 
 AreaLight = namedtuple("AreaLight", "name centre normal width height color disk")
+Luminaire = namedtuple("Luminaire", "name kind parameters position aim rotation color")
 
 AXES = {"x": 0, "y": 1, "z": 2}
 
@@ -39,6 +42,41 @@ def area_light(name, centre, normal, size, color=(1.0, 1.0, 1.0), intensity=1.0,
     return AreaLight(str(name), _numbers(centre, 3, f"{what} centre"), normal, width, height, emission, bool(disk))
 
 
+def luminaire(name, path=None, position=(0.0, 0.0, 0.0), aim=(0.0, 0.0, -1.0), rotation=0.0, lumens=None,
+              color=(1.0, 1.0, 1.0), kind=None, **parameters):
+    """A light at a point for mark_lights: by default a luminaire of `path`, its IES LM-63
+    or EULUMDAT file (its candela table, at the file's lumens or at `lumens`), at
+    `position`, aimed along `aim` (its nadir: straight down is (0, 0, -1) in a z-up scene,
+    (0, -1, 0) in a y-up one) and turned by `rotation` degrees about the aim. Without a
+    path, `kind` names another kind ("point", "spot" with cone= and falloff= in degrees,
+    "lambertian"). Its solution is white at its lumens (lux where the scene is in metres);
+    `color` is its default color when relit. Raises ValueError naming what cannot be a
+    light; the file itself is read when the lights are marked."""
+    what = f"luminaire {name!r}:"
+    kind = kind or ("goniometric" if path is not None else None)
+    if kind is None:
+        raise ValueError(f"{what} give the photometric file (path=...) or another kind (kind='point', 'spot', ...)")
+    if kind == "goniometric":
+        if path is None:
+            raise ValueError(f"{what} a goniometric luminaire needs its photometric file (path=...)")
+        parameters["file"] = os.path.abspath(os.fspath(path))
+    elif path is not None:
+        raise ValueError(f"{what} a {kind} light takes no photometric file")
+    if lumens is not None:
+        lumens = _numbers(lumens, 1, f"{what} lumens", 0.0)[0]
+        if not lumens > 0:
+            raise ValueError(f"{what} lumens must be above 0, not {lumens!r}")
+        parameters["lumens"] = repr(lumens)
+    aim = _numbers(aim, 3, f"{what} aim")
+    if not any(aim):
+        raise ValueError(f"{what} aim is zero: give the direction it shines (its nadir)")
+    text = "; ".join(f"{key}={value}" for key, value in parameters.items())
+    if any(";" in str(v) for v in parameters.values()):
+        raise ValueError(f"{what} a parameter holds ';', which separates them")
+    return Luminaire(str(name), kind, text, _numbers(position, 3, f"{what} position"), aim,
+                     _numbers(rotation, 1, f"{what} rotation")[0], _numbers(color, 3, f"{what} color", 0.0))
+
+
 def mark_lights(scene, *lights, cells=(), material=None, name="Light", color=(1.0, 1.0, 1.0), intensity=1.0):
     """The scene with `lights` (area_light descriptions) added and, where given, the cells
     with ids `cells` or of materials matching `material` (a wildcard pattern) made the
@@ -47,9 +85,9 @@ def mark_lights(scene, *lights, cells=(), material=None, name="Light", color=(1.
     RuntimeWarnings."""
     if not isinstance(scene, vtkDataSet):
         raise TypeError(f"mark_lights needs a vtkPolyData scene, not {type(scene).__name__}")
-    bad = [light for light in lights if not isinstance(light, AreaLight)]
+    bad = [light for light in lights if not isinstance(light, (AreaLight, Luminaire))]
     if bad:
-        raise TypeError(f"mark_lights takes lamps made by relight.area_light, not {bad[0]!r}")
+        raise TypeError(f"mark_lights takes lamps made by relight.area_light or relight.luminaire, not {bad[0]!r}")
     intensity = _numbers(intensity, 1, "mark_lights: intensity", 0.0)[0]
     marker = vtkRadiosityLightMarker()
     marker.SetInputData(scene)
@@ -60,8 +98,12 @@ def mark_lights(scene, *lights, cells=(), material=None, name="Light", color=(1.
     for cell in cells:
         marker.AddCellId(int(cell))
     for light in lights:
-        marker.AddAreaLight(light.name, 1 if light.disk else 0, *light.centre, *light.normal, light.width,
-                            light.height, *light.color)
+        if isinstance(light, Luminaire):
+            marker.AddLuminaire(light.name, light.kind, light.parameters, *light.position, *light.aim, light.rotation,
+                                *light.color)
+        else:
+            marker.AddAreaLight(light.name, 1 if light.disk else 0, *light.centre, *light.normal, light.width,
+                                light.height, *light.color)
     catcher = ErrorCatcher(marker)
     marker.Update()
     if catcher.failed():

@@ -132,6 +132,53 @@ SceneMesh Box(double s, int n, int per, const Vec3& rho, LightOf light)
   AddGrid(mesh, X, Z, Y, n, per, rho, light(5), patch); // x = s
   return mesh;
 }
+
+/// Two rooms side by side, [0, 1] and [1.2, 2.2] in x, one floor and one ceiling running
+/// through both and under the 0.2 m wall between them (its two faces stand on element
+/// edges); a lamp under the ceiling of the first room unless `lamp` is false. `n` elements
+/// per metre.
+inline SceneMesh TwoRooms(int n, bool lamp = true)
+{
+  SceneMesh mesh;
+  int patch = 0;
+  const Vec3 grey{ 0.6, 0.6, 0.6 };
+  const double w = 2.2;
+  const int across = static_cast<int>(std::lround(w * n));
+  auto strip = [&](const Vec3& origin, const Vec3& u, const Vec3& v, int nu, int nv) {
+    // an nu x nv grid of quads (normal u x v), patches of 2 x 2 elements
+    const int base = static_cast<int>(mesh.Points.size());
+    for (int j = 0; j <= nv; ++j)
+      for (int i = 0; i <= nu; ++i)
+        mesh.Points.push_back(origin + u * (double(i) / nu) + v * (double(j) / nv));
+    for (int j = 0; j < nv; ++j)
+      for (int i = 0; i < nu; ++i)
+      {
+        const int a = base + j * (nu + 1) + i;
+        mesh.AddPolygon({ a, a + 1, a + nu + 2, a + nu + 1 });
+        mesh.Reflectance.push_back(grey);
+        mesh.LightId.push_back(-1);
+        mesh.PatchId.push_back(patch + (j / 2) * ((nu + 1) / 2) + i / 2);
+      }
+    patch += ((nu + 1) / 2) * ((nv + 1) / 2);
+  };
+  strip({ 0, 0, 0 }, { w, 0, 0 }, { 0, 1, 0 }, across, n);     // floor, up
+  strip({ 0, 0, 1 }, { 0, 1, 0 }, { w, 0, 0 }, n, across);     // ceiling, down
+  strip({ 0, 0, 0 }, { 0, 0, 1 }, { w, 0, 0 }, n, across);     // y = 0, faces +y
+  strip({ 0, 1, 0 }, { w, 0, 0 }, { 0, 0, 1 }, across, n);     // y = 1, faces -y
+  strip({ 0, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, n, n);          // x = 0, faces +x
+  strip({ w, 0, 0 }, { 0, 0, 1 }, { 0, 1, 0 }, n, n);          // x = 2.2, faces -x
+  strip({ 1.0, 0, 0 }, { 0, 0, 1 }, { 0, 1, 0 }, n, n);        // the wall's face to room 1, -x
+  strip({ 1.2, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, n, n);        // its face to room 2, +x
+  if (!lamp)
+  {
+    return mesh;
+  }
+  AddGrid(mesh, { 0.35, 0.35, 0.95 }, { 0.3, 0, 0 }, { 0, 0.3, 0 }, 1, 1, { 0, 0, 0 }, 0, patch); // lamp, down
+  // AddGrid's quad faces +z for (x, y): turn it to face down
+  std::swap(mesh.Connectivity[mesh.Offsets[mesh.NumberOfPolygons() - 1] + 1],
+    mesh.Connectivity[mesh.Offsets[mesh.NumberOfPolygons() - 1] + 3]);
+  return mesh;
+}
 }
 
 #endif

@@ -1,0 +1,98 @@
+"""Luminaires from real manufacturers' files through `import relight`: the closed room's
+mean illuminance in closed form (CIE 171:2006's 4 m cube, 10,000 lm: 208.33 lx at a
+reflectance of 0.5), a luminaire beside a lamp cell as a light of its own that the relight
+filter dims, and one clear error for each way a luminaire can be wrong."""
+
+import os
+import warnings
+
+import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+import relight
+from testlib import check, finish
+
+DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "..", "Data")
+LDT = os.path.join(DATA, "Photometry", "erco_sym2.ldt")
+IES = os.path.join(DATA, "Photometry", "ael_asa15m_lm63_2002.ies")
+
+
+def cube(size, rho):
+    """A closed cube [0, size]^3 facing inwards, two by two quads a face."""
+    s = size
+    faces = [[(0, 0, 0), (0, s, 0), (s, s, 0), (s, 0, 0)], [(0, 0, s), (s, 0, s), (s, s, s), (0, s, s)],
+             [(0, 0, 0), (s, 0, 0), (s, 0, s), (0, 0, s)], [(0, s, 0), (0, s, s), (s, s, s), (s, s, 0)],
+             [(0, 0, 0), (0, 0, s), (0, s, s), (0, s, 0)], [(s, 0, 0), (s, s, 0), (s, s, s), (s, 0, s)]]
+    return relight.make_scene([face[::-1] for face in faces], [(rho, rho, rho)] * 6, [-1] * 6)
+
+
+def mean_illuminance(out, name):
+    """Illuminance is irradiance: B / rho on surfaces that do not emit, area-weighted."""
+    area = relight.cell_areas(out)
+    b = relight.cell_array(out, "Radiosity_" + name)[:, 0]
+    rho = relight.cell_array(out, "Reflectance")[:, 0]
+    return float((area * b / rho).sum() / area.sum())
+
+
+# The CIE cube: whatever the luminaire's distribution, a closed room of uniform reflectance
+# absorbs all its flux, so the mean illuminance is flux / (S (1 - rho)).
+room = cube(4.0, 0.5)
+spot = relight.luminaire("Spot", LDT, position=(2, 2, 2), aim=(0, 0, -1), lumens=10000)
+out = relight.solve(relight.mark_lights(room, spot), patch_size=1.0, element_size=0.25).GetOutput()
+check(relight.light_names(out) == ["Spot"], "the luminaire is the scene's one light, by its name")
+mean = mean_illuminance(out, "Spot")
+expected = 10000 / (96 * 0.5)
+print(f"CIE 171 cube, rho 0.5: mean illuminance {mean:.2f} lx, closed form {expected:.2f} lx "
+      f"({100 * (mean / expected - 1):+.3f} %)")
+# The element solution alone is within 0.02 %; the final gather's sweep (16 rays an
+# element) scatters it: -0.49 % at 0.25 m elements, +0.07 % at 0.125 m, -0.19 % at 0.5 m.
+check(abs(mean / expected - 1) < 1e-2, "the cube's mean illuminance is flux / (S (1 - rho)) within 1 %")
+
+# A luminaire beside a lamp cell: two lights, each its own solution; the relight filter
+# weighs the luminaire like any light (its dimming is its intensity).
+lamp = relight.area_light("Panel", centre=(1, 1, 3.99), normal=(0, 0, -1), size=0.5, intensity=50)
+street = relight.luminaire("Street", IES, position=(3, 3, 3.5), aim=(0, 0, -1), rotation=30, color=(1, 0.9, 0.7))
+both = relight.solve(relight.mark_lights(room, lamp, street), patch_size=1.0, element_size=0.25)
+names = relight.light_names(both.GetOutput())
+check(names == ["Panel", "Street"], f"the cell light first, then the luminaire ({names})")
+colors = vtk_to_numpy(both.GetOutput().GetFieldData().GetArray("LightDefaultColors"))
+check(np.allclose(colors[1], (1, 0.9, 0.7)), "the luminaire's color is its default relight color")
+rl = relight.vtkRadiosityRelight()
+rl.SetInputConnection(both.GetOutputPort())
+rl.SetLightColor(0, 1, 1, 1)
+rl.SetLightColor(1, 1, 1, 1)
+rl.SetLightIntensity(0, 1.0)
+rl.SetLightIntensity(1, 0.25)
+rl.Update()
+relit = relight.point_array(rl.GetOutput(), "Radiosity")
+panel = relight.point_array(both.GetOutput(), "Radiosity_Panel")
+lum = relight.point_array(both.GetOutput(), "Radiosity_Street")
+check(np.allclose(relit, panel + 0.25 * lum, rtol=1e-5, atol=1e-6), "dimmed to 25 %, the luminaire adds a quarter of its solution")
+
+# Each way a luminaire can be wrong: one error that says which and why, no output.
+def refused(make, words):
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            make()
+    except ValueError as error:
+        check(all(w in str(error) for w in words), f"refused with {words}: {error}")
+        return
+    check(False, f"not refused: {words}")
+
+
+refused(lambda: relight.luminaire("A", position=(0, 0, 1)), ["give the photometric file"])
+refused(lambda: relight.luminaire("A", LDT, aim=(0, 0, 0)), ["aim is zero"])
+refused(lambda: relight.luminaire("A", LDT, lumens=-5), ["lumens"])
+refused(lambda: relight.mark_lights(room, relight.luminaire("A", "/nowhere/lamp.ies")), ["/nowhere/lamp.ies", "cannot be read"])
+refused(lambda: relight.mark_lights(room, relight.luminaire("A", kind="spot", cone=20, fallof=3)),
+        ["luminaire 'A'", "does not take fallof"])
+refused(lambda: relight.mark_lights(room, relight.luminaire("A", kind="laser")), ["no kind of light is called 'laser'"])
+refused(lambda: relight.mark_lights(room, lamp, relight.luminaire("Panel", LDT)), ["'Panel' is taken"])
+refused(lambda: relight.mark_lights(room, relight.luminaire("Desk lamp", LDT)), ["letters, digits"])
+broken = os.path.join(os.environ.get("TMPDIR", "/tmp"), "relight_truncated.ies")
+with open(IES) as source, open(broken, "w") as target:
+    target.write(source.read()[:3000])
+refused(lambda: relight.mark_lights(room, relight.luminaire("A", broken)), ["relight_truncated.ies:", "the file ends"])
+
+finish("TestLuminaires")
