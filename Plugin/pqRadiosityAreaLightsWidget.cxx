@@ -1,12 +1,6 @@
 #include "pqRadiosityAreaLightsWidget.h"
-#include "pqActiveObjects.h"
-#include "pqView.h"
+#include "pqRadiosityLampPlacement.h"
 
-#include "vtkDataObject.h"
-#include "vtkPVArrayInformation.h"
-#include "vtkPVDataInformation.h"
-#include "vtkSMPropertyHelper.h"
-#include "vtkSMSourceProxy.h"
 
 #include <QComboBox>
 #include <QRegularExpression>
@@ -92,61 +86,17 @@ void pqRadiosityAreaLightsWidget::cellEdited(int row, int column)
   Q_EMIT this->rowsChanged();
 }
 
-vtkPVDataInformation* pqRadiosityAreaLightsWidget::InputInformation() const
-{
-  vtkSMPropertyHelper input(this->proxy(), "Input");
-  auto* source = vtkSMSourceProxy::SafeDownCast(input.GetAsProxy());
-  return source ? source->GetDataInformation(input.GetOutputPort()) : nullptr;
-}
-
 QStringList pqRadiosityAreaLightsWidget::newRow() const
 {
-  double bounds[6] = { -0.5, 0.5, -0.5, 0.5, -0.5, 0.5 };
-  vtkPVDataInformation* info = this->InputInformation();
-  if (info && info->GetNumberOfCells() > 0)
+  QStringList taken;
+  for (int k = 0; k < this->Rows.size(); k += this->PerRow)
   {
-    info->GetBounds(bounds);
+    taken << this->Rows[k];
   }
-  // A ceiling lamp just under the top, facing down; "up" is the view's, as the user sees the
-  // scene (the shortest side, as most rooms stand, where there is no view: a scanned
-  // figure is narrower than it is tall, and got its lamp on its flank).
-  int up = 0;
-  double sign = 1;
-  double viewUp[3] = { 0, 0, 0 };
-  pqView* view = pqActiveObjects::instance().activeView();
-  if (view && view->getProxy()->GetProperty("CameraViewUp"))
-  {
-    vtkSMPropertyHelper(view->getProxy(), "CameraViewUp").Get(viewUp, 3);
-  }
-  for (int a = 1; a < 3; ++a)
-  {
-    up = std::fabs(viewUp[a]) > std::fabs(viewUp[up]) ? a : up;
-  }
-  if (std::fabs(viewUp[up]) > 0)
-  {
-    sign = viewUp[up] > 0 ? 1 : -1;
-  }
-  else
-  {
-    for (int a = 1; a < 3; ++a)
-    {
-      up = bounds[2 * a + 1] - bounds[2 * a] < bounds[2 * up + 1] - bounds[2 * up] ? a : up;
-    }
-  }
-  double centre[3], facing[3] = { 0, 0, 0 };
-  for (int a = 0; a < 3; ++a)
-  {
-    centre[a] = 0.5 * (bounds[2 * a] + bounds[2 * a + 1]);
-  }
-  const double height = bounds[2 * up + 1] - bounds[2 * up];
-  const double diagonal =
-    std::sqrt(std::pow(bounds[1] - bounds[0], 2) + std::pow(bounds[3] - bounds[2], 2) + std::pow(bounds[5] - bounds[4], 2));
-  // Just under the top; above a flat scene, a tenth of its extent up.
-  const double top = sign > 0 ? bounds[2 * up + 1] : bounds[2 * up];
-  centre[up] = height > 0 ? top - sign * 0.01 * height : top + sign * 0.1 * diagonal;
-  facing[up] = -sign;
-  const QString size = QString::number(std::max(diagonal / 20.0, 1e-6), 'g', 3);
-  QStringList lamp{ this->unusedName(), "0" };
+  vtkPVDataInformation* info = pqRadiosityLampPlacement::InputInformation(this->proxy());
+  double centre[3], facing[3], size;
+  pqRadiosityLampPlacement::CeilingSpot(info, centre, facing, size);
+  QStringList lamp{ pqRadiosityLampPlacement::UnusedName("Lamp", taken, info), "0" };
   for (double v : centre)
   {
     lamp << QString::number(v, 'g', 10);
@@ -155,29 +105,7 @@ QStringList pqRadiosityAreaLightsWidget::newRow() const
   {
     lamp << QString::number(v);
   }
-  lamp << size << size << "1" << "1" << "1";
+  const QString side = QString::number(size, 'g', 3);
+  lamp << side << side << "1" << "1" << "1";
   return lamp;
-}
-
-QString pqRadiosityAreaLightsWidget::unusedName() const
-{
-  // A lamp named as another light would join it: the first LampN the table and the input
-  // do not use yet.
-  QStringList taken;
-  for (int k = 0; k < this->Rows.size(); k += this->PerRow)
-  {
-    taken << this->Rows[k];
-  }
-  vtkPVDataInformation* info = this->InputInformation();
-  vtkPVArrayInformation* names = info ? info->GetArrayInformation("LightNames", vtkDataObject::FIELD) : nullptr;
-  for (int k = 0; names && k < names->GetNumberOfStringValues(); ++k)
-  {
-    taken << QString::fromUtf8(names->GetStringValue(k));
-  }
-  int n = 1;
-  while (taken.contains(QString("Lamp%1").arg(n)))
-  {
-    ++n;
-  }
-  return QString("Lamp%1").arg(n);
 }

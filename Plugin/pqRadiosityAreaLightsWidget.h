@@ -5,8 +5,6 @@
 
 #include "pqRadiosityTableWidget.h"
 
-class vtkPVDataInformation;
-
 class pqRadiosityAreaLightsWidget : public pqRadiosityTableWidget
 {
   Q_OBJECT
@@ -22,12 +20,6 @@ protected:
   QStringList newRow() const override;
   /// A typed cell into the rows; a cell that does not read as its numbers is put back.
   void cellEdited(int row, int column) override;
-
-private:
-  /// The first of Lamp1, Lamp2, ... that no lamp here and no light of the input is called.
-  QString unusedName() const;
-  /// What ParaView knows of the data on the input port (null before it has run).
-  vtkPVDataInformation* InputInformation() const;
 };
 
 #endif

@@ -1,0 +1,167 @@
+#include "pqRadiosityLuminairesWidget.h"
+#include "pqRadiosityLampPlacement.h"
+
+#include "pqActiveObjects.h"
+#include "pqFileDialog.h"
+
+#include <QComboBox>
+#include <QPushButton>
+#include <QRegularExpression>
+#include <QSignalBlocker>
+#include <QTableWidget>
+
+#include <cmath>
+
+namespace
+{
+enum Column
+{
+  Name = 0,
+  Kind,
+  Parameters,
+  File,
+  Position,
+  Aim,
+  Rotation,
+  Color
+};
+const QStringList kKinds{ "goniometric", "point", "spot", "lambertian" };
+}
+
+pqRadiosityLuminairesWidget::pqRadiosityLuminairesWidget(vtkSMProxy* proxy, vtkSMProperty* property, QWidget* parent)
+  : Superclass(proxy,
+      { "Luminaires (lights at points; positions in the scene's units):", "LuminairesTable",
+        { "Name", "Kind", "Parameters", "File", "Position x, y, z", "Aim x, y, z", "Rotation (°)", "Color r, g, b" },
+        { "The light's name: letters, digits and _", "goniometric (a photometric file), point, spot or lambertian",
+          "name=value; ...: file=<IES or EULUMDAT>, lumens=<the file's if left out>; a spot's cone=, falloff= (degrees)",
+          "Pick the IES LM-63 or EULUMDAT file (sets file=...)", "Where the luminaire is",
+          "The direction it shines (its nadir: straight down for a downlight)",
+          "Its turn about the aim: where its C0 plane points", "Its default color when relit" },
+        "Add Luminaire", "AddLuminaire", "RemoveLuminaires",
+        // the elements of a luminaire: name, kind, parameters, (the File button: none),
+        // position, aim, rotation, color
+        { 0, 1, 2, 3, 3, 6, 9, 10, 13 } },
+      parent)
+{
+  this->linkRows(property);
+  this->fill();
+}
+
+void pqRadiosityLuminairesWidget::fillCell(int row, int column)
+{
+  if (column == Kind)
+  {
+    auto* kind = new QComboBox(this->Table);
+    kind->addItems(kKinds);
+    kind->setCurrentIndex(std::max(0, kKinds.indexOf(this->cell(row, column).value(0))));
+    QObject::connect(kind, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this, kind](int index) {
+      for (int r = 0; r < this->Table->rowCount(); ++r)
+      {
+        if (this->Table->cellWidget(r, Kind) == kind)
+        {
+          this->Rows[this->at(r, Kind)] = kKinds[index];
+          Q_EMIT this->rowsChanged();
+        }
+      }
+    });
+    this->Table->setCellWidget(row, column, kind);
+    return;
+  }
+  if (column == File)
+  {
+    auto* pick = new QPushButton("File…", this->Table);
+    pick->setObjectName("PickPhotometricFile");
+    QObject::connect(pick, &QPushButton::clicked, this, [this, pick]() {
+      for (int r = 0; r < this->Table->rowCount(); ++r)
+      {
+        if (this->Table->cellWidget(r, File) == pick)
+        {
+          this->pickFile(r);
+        }
+      }
+    });
+    this->Table->setCellWidget(row, column, pick);
+    return;
+  }
+  this->Table->setItem(row, column, new QTableWidgetItem(this->cell(row, column).join(", ")));
+}
+
+void pqRadiosityLuminairesWidget::pickFile(int row)
+{
+  pqFileDialog dialog(pqActiveObjects::instance().activeServer(), this, "Photometric file", QString(),
+    "Photometric files (*.ies *.IES *.ldt *.LDT);;All files (*)");
+  dialog.setFileMode(pqFileDialog::ExistingFile);
+  if (dialog.exec() != QDialog::Accepted || dialog.getSelectedFiles().isEmpty())
+  {
+    return;
+  }
+  // The file replaces a file=... among the parameters, the rest stays.
+  QStringList kept;
+  for (const QString& pair : this->Rows[this->at(row, Parameters)].split(';', Qt::SkipEmptyParts))
+  {
+    if (!pair.trimmed().startsWith("file"))
+    {
+      kept << pair.trimmed();
+    }
+  }
+  kept.prepend("file=" + dialog.getSelectedFiles().first());
+  this->Rows[this->at(row, Parameters)] = kept.join("; ");
+  this->Rows[this->at(row, Kind)] = "goniometric";
+  this->fill();
+  Q_EMIT this->rowsChanged();
+}
+
+void pqRadiosityLuminairesWidget::cellEdited(int row, int column)
+{
+  QTableWidgetItem* item = this->Table->item(row, column);
+  if (!item || column == Kind || column == File)
+  {
+    return;
+  }
+  const QString text = item->text().trimmed();
+  QStringList parts = column == Name || column == Parameters
+    ? QStringList{ text }
+    : text.split(QRegularExpression("[,;\\s]+"), Qt::SkipEmptyParts);
+  bool usable = parts.size() == this->count(column) && !(column == Name && text.isEmpty());
+  for (int k = 0; usable && column >= Position && k < parts.size(); ++k)
+  {
+    bool number = false;
+    const double value = parts[k].toDouble(&number);
+    usable = number && std::isfinite(value) && (column != Color || value >= 0);
+  }
+  if (usable && column == Aim)
+  {
+    usable = parts[0].toDouble() != 0 || parts[1].toDouble() != 0 || parts[2].toDouble() != 0;
+  }
+  if (!usable)
+  {
+    const QSignalBlocker block(this->Table);
+    item->setText(this->cell(row, column).join(", ")); // what it held
+    return;
+  }
+  std::copy(parts.begin(), parts.end(), this->Rows.begin() + this->at(row, column));
+  Q_EMIT this->rowsChanged();
+}
+
+QStringList pqRadiosityLuminairesWidget::newRow() const
+{
+  QStringList taken;
+  for (int k = 0; k < this->Rows.size(); k += this->PerRow)
+  {
+    taken << this->Rows[k];
+  }
+  vtkPVDataInformation* info = pqRadiosityLampPlacement::InputInformation(this->proxy());
+  double centre[3], facing[3], size;
+  pqRadiosityLampPlacement::CeilingSpot(info, centre, facing, size);
+  QStringList row{ pqRadiosityLampPlacement::UnusedName("Luminaire", taken, info), "goniometric", "" };
+  for (double v : centre)
+  {
+    row << QString::number(v, 'g', 10);
+  }
+  for (double v : facing)
+  {
+    row << QString::number(v);
+  }
+  row << "0" << "1" << "1" << "1";
+  return row;
+}
