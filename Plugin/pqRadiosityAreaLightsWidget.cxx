@@ -88,24 +88,6 @@ void pqRadiosityAreaLightsWidget::cellEdited(int row, int column)
 
 QStringList pqRadiosityAreaLightsWidget::newRow() const
 {
-  QStringList taken;
-  for (int k = 0; k < this->Rows.size(); k += this->PerRow)
-  {
-    taken << this->Rows[k];
-  }
-  vtkPVDataInformation* info = pqRadiosityLampPlacement::InputInformation(this->proxy());
-  double centre[3], facing[3], size;
-  pqRadiosityLampPlacement::CeilingSpot(info, centre, facing, size);
-  QStringList lamp{ pqRadiosityLampPlacement::UnusedName("Lamp", taken, info), "0" };
-  for (double v : centre)
-  {
-    lamp << QString::number(v, 'g', 10);
-  }
-  for (double v : facing)
-  {
-    lamp << QString::number(v);
-  }
-  const QString side = QString::number(size, 'g', 3);
-  lamp << side << side << "1" << "1" << "1";
-  return lamp;
+  const pqRadiosityLampPlacement::NewLamp lamp = pqRadiosityLampPlacement::Place(this->proxy(), "Lamp", this->names());
+  return QStringList{ lamp.Name, "0" } << lamp.Centre << lamp.Facing << lamp.Size << lamp.Size << "1" << "1" << "1";
 }

@@ -90,4 +90,20 @@ QString UnusedName(const QString& stem, QStringList taken, vtkPVDataInformation*
   }
   return QString("%1%2").arg(stem).arg(n);
 }
+
+NewLamp Place(vtkSMProxy* proxy, const QString& stem, const QStringList& taken)
+{
+  vtkPVDataInformation* info = InputInformation(proxy);
+  double centre[3], facing[3], size;
+  CeilingSpot(info, centre, facing, size);
+  NewLamp lamp;
+  lamp.Name = UnusedName(stem, taken, info);
+  for (int a = 0; a < 3; ++a)
+  {
+    lamp.Centre << QString::number(centre[a], 'g', 10);
+    lamp.Facing << QString::number(facing[a]);
+  }
+  lamp.Size = QString::number(size, 'g', 3);
+  return lamp;
+}
 }

@@ -20,6 +20,16 @@ void CeilingSpot(vtkPVDataInformation* info, double centre[3], double facing[3],
 
 /// The first of <stem>1, <stem>2, ... that neither `taken` nor the input's lights use.
 QString UnusedName(const QString& stem, QStringList taken, vtkPVDataInformation* info);
+
+/// A new lamp of the proxy's table as text: a free name, the CeilingSpot's centre and
+/// facing (three numbers each), and its size.
+struct NewLamp
+{
+  QString Name;
+  QStringList Centre, Facing;
+  QString Size;
+};
+NewLamp Place(vtkSMProxy* proxy, const QString& stem, const QStringList& taken);
 }
 
 #endif

@@ -145,23 +145,6 @@ void pqRadiosityLuminairesWidget::cellEdited(int row, int column)
 
 QStringList pqRadiosityLuminairesWidget::newRow() const
 {
-  QStringList taken;
-  for (int k = 0; k < this->Rows.size(); k += this->PerRow)
-  {
-    taken << this->Rows[k];
-  }
-  vtkPVDataInformation* info = pqRadiosityLampPlacement::InputInformation(this->proxy());
-  double centre[3], facing[3], size;
-  pqRadiosityLampPlacement::CeilingSpot(info, centre, facing, size);
-  QStringList row{ pqRadiosityLampPlacement::UnusedName("Luminaire", taken, info), "goniometric", "" };
-  for (double v : centre)
-  {
-    row << QString::number(v, 'g', 10);
-  }
-  for (double v : facing)
-  {
-    row << QString::number(v);
-  }
-  row << "0" << "1" << "1" << "1";
-  return row;
+  const pqRadiosityLampPlacement::NewLamp lamp = pqRadiosityLampPlacement::Place(this->proxy(), "Luminaire", this->names());
+  return QStringList{ lamp.Name, "goniometric", "" } << lamp.Centre << lamp.Facing << "0" << "1" << "1" << "1";
 }

@@ -50,6 +50,16 @@ pqRadiosityTableWidget::pqRadiosityTableWidget(vtkSMProxy* proxy, const Design& 
   });
 }
 
+QStringList pqRadiosityTableWidget::names() const
+{
+  QStringList first;
+  for (int k = 0; k < this->Rows.size(); k += this->PerRow)
+  {
+    first << this->Rows[k];
+  }
+  return first;
+}
+
 void pqRadiosityTableWidget::addRow()
 {
   this->Rows << this->newRow();

@@ -46,6 +46,8 @@ protected:
   /// Where cell (row, column)'s elements start in Rows, and how many it holds.
   int at(int row, int column) const { return row * this->PerRow + this->Starts[column]; }
   int count(int column) const { return this->Starts[column + 1] - this->Starts[column]; }
+  /// Every entry's first element (its name).
+  QStringList names() const;
   /// Cell (row, column)'s elements, as Rows holds them.
   QStringList cell(int row, int column) const { return this->Rows.mid(this->at(row, column), this->count(column)); }
 
