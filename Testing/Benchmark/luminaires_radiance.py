@@ -16,7 +16,9 @@ irradiance a hair above each probe, times 179 lm/W (Radiance's white efficacy) i
 Probes: the floor's and the walls' mesh points on a 0.5 m grid, away from the corners.
 Ours: the point array Radiosity_<light> over the reflectance (illuminance, lux, as the
 solution of a luminaire at its lumens is in lm/m^2). Radiance's noise: two runs with
-uncorrelated sampling (-u+), their mean difference.
+uncorrelated sampling (-u+), their mean difference. Direct light alone (ours: Direct_<light>
+with SeparateDirect; Radiance: -ab 0) has no noise on either side: it checks the candela
+tables, their turn and their scale.
 """
 import argparse
 import glob
@@ -67,7 +69,7 @@ def solve(element):
     scene = relight.make_scene([f for f, _ in faces], [(r, r, r) for _, r in faces], [-1] * len(faces))
     lights = [relight.luminaire(name, path, position, aim=(0, 0, -1)) for name, path, position in luminaires()]
     start = time.perf_counter()
-    solver = relight.solve(relight.mark_lights(scene, *lights), patch_size=1.0, element_size=element)
+    solver = relight.solve(relight.mark_lights(scene, *lights), patch_size=1.0, element_size=element, SeparateDirect=1)
     return solver.GetOutput(), time.perf_counter() - start
 
 
@@ -116,8 +118,8 @@ def radiance_illuminance(venv, light, at, normals, ad, folder):
         subprocess.run([radiance_tool(venv, "oconv"), "scene.rad"], cwd=folder, env=env, stdout=octree, check=True)
     rays = "\n".join(" ".join(f"{v:.9g}" for v in (*(p + 1e-4 * n), *n)) for p, n in zip(at, normals)) + "\n"
     runs = []
-    for _ in range(2):
-        command = [radiance_tool(venv, "rtrace"), "-h", "-I+", "-u+", "-ab", "8", "-ad", str(ad), "-as", "0", "-aa", "0",
+    for bounces in (8, 8, 0):  # twice with every bounce (their difference: the noise), once direct light alone
+        command = [radiance_tool(venv, "rtrace"), "-h", "-I+", "-u+", "-ab", str(bounces), "-ad", str(ad), "-as", "0", "-aa", "0",
                    "-lw", "1e-6", "-lr", "-8", "-dj", "0.7", "-ds", "0.05", "-dt", "0", "-dc", "1", "-st", "0", "-n",
                    str(os.cpu_count() or 1), "scene.oct"]
         done = subprocess.run(command, input=rays, cwd=folder, env=env, capture_output=True, text=True, check=True)
@@ -139,21 +141,26 @@ def main():
     ids, normals, at = probes(solved)
     probe_rho = np.where(normals[:, 2] > 0.5, RHO["floor"], RHO["walls"])
     print(f"solved {solved.GetNumberOfCells()} elements, 6 luminaires in {seconds:.2f} s; {len(ids)} probes")
-    rows, errors, noises = [], [], []
+    rows, errors, noises, directs = [], [], [], []
     with tempfile.TemporaryDirectory() as folder:
         for light in luminaires():
             name = light[0]
             ours = relight.point_array(solved, "Radiosity_" + name)[ids, 0] / probe_rho
-            first, second = radiance_illuminance(args.radiance, light, at, normals, args.ad, folder)
+            first, second, direct = radiance_illuminance(args.radiance, light, at, normals, args.ad, folder)
+            ours_direct = relight.point_array(solved, "Direct_" + name)[ids, 0] / probe_rho
+            direct_error = np.abs(ours_direct - direct).mean() / direct.mean()
+            directs.append(direct_error)
             theirs = 0.5 * (first + second)
             error = np.abs(ours - theirs).mean() / theirs.mean()
             noise = 0.5 * np.abs(first - second).mean() / theirs.mean()
             errors.append(error), noises.append(noise)
             floor = normals[:, 2] > 0.5
             rows.append(f"{name}: mean illuminance ours {ours[floor].mean():8.1f} lx, Radiance {theirs[floor].mean():8.1f} lx "
-                        f"on the floor; mean |difference| {100 * error:.2f} % of the mean, Radiance's noise {100 * noise:.2f} %")
+                        f"on the floor; mean |difference| {100 * error:.2f} % of the mean, Radiance's noise {100 * noise:.2f} %; "
+                        f"direct light alone {100 * direct_error:.2f} %")
             print(rows[-1], flush=True)
-    summary = (f"mean over the luminaires: {100 * np.mean(errors):.2f} % from Radiance (its noise {100 * np.mean(noises):.2f} %), "
+    summary = (f"mean over the luminaires: {100 * np.mean(errors):.2f} % from Radiance (its noise {100 * np.mean(noises):.2f} %; "
+               f"direct light alone {100 * np.mean(directs):.2f} %), "
                f"element {args.element} m, solve {seconds:.2f} s")
     print(summary)
     (out_dir / "luminaires_radiance.txt").write_text("\n".join(rows + [summary]) + "\n")
