@@ -904,6 +904,33 @@ GatheredPoints GatherAtPoints(const SceneMesh& mesh, const SceneGeometry& geomet
   return out;
 }
 
+GatheredPoints IrradianceAtPoints(const SceneMesh& mesh, const SceneGeometry& geometry, const Visibility& rays,
+  const std::vector<Vec3>& emission, const std::vector<Vec3>& radiosity, int solutions,
+  const std::vector<Vec3>& points, const std::vector<Vec3>& normals, const GatherSettings& settings, int threads,
+  const std::function<bool(double)>& progress)
+{
+  // A white, non-emitting surface at each point: what it would send is what arrives.
+  std::vector<PointFrame> frames(points.size());
+  for (size_t p = 0; p < points.size(); ++p)
+  {
+    PointFrame& f = frames[p];
+    f.Origin = points[p];
+    f.Normal = Normalized(normals[p]);
+    Vec3 t, b;
+    TangentFrame(f.Normal, t, b);
+    f.Edge = t;
+    f.Reflectance = { 1, 1, 1 };
+    f.Used = Dot(f.Normal, f.Normal) > 0;
+  }
+  const std::vector<Emitter> emitters = MakeEmitters(mesh, geometry, emission, solutions);
+  const WorkerPool pool(threads);
+  const Gather free(mesh, geometry, rays, emission, radiosity, solutions, emitters, std::move(frames),
+    std::vector<Vec3>(points.size() * solutions), std::max(1, settings.Rays), settings.LightRays, true, 0x17, settings);
+  GatheredPoints out = Run(free, solutions, pool, settings.Group, progress, 0.0, 1.0);
+  out.Hidden.clear();
+  return out;
+}
+
 std::vector<Vec3> CellsFromPoints(const SceneMesh& mesh, const SceneGeometry& geometry,
   const std::vector<Vec3>& points, const std::vector<Vec3>& cells, int solutions)
 {

@@ -82,6 +82,18 @@ GatheredPoints GatherAtPoints(const SceneMesh& mesh, const SceneGeometry& geomet
   const GatherSettings& settings, int threads = 0, const std::function<bool(double)>& progress = {},
   bool shadows = true);
 
+/// The irradiance at free points (a work plane in the air, a meter's cell) facing
+/// `normals`, per solution ([point * solutions + m] in Radiosity, the direct part in
+/// Direct), gathered as the mesh's points are: direct light from every emitter and point
+/// light with shadow rays, interreflection along `settings.Rays` cosine rays into the
+/// element solution `radiosity` (whose emitters' `emission` is left out: they were taken
+/// as direct light). No point is on a surface, so none is hidden and none takes a
+/// neighbour's value.
+GatheredPoints IrradianceAtPoints(const SceneMesh& mesh, const SceneGeometry& geometry, const Visibility& rays,
+  const std::vector<Vec3>& emission, const std::vector<Vec3>& radiosity, int solutions,
+  const std::vector<Vec3>& points, const std::vector<Vec3>& normals, const GatherSettings& settings, int threads = 0,
+  const std::function<bool(double)>& progress = {});
+
 /// Element values from gathered point values: each open element the mean of its corners,
 /// sheltered and enclosed ones keep the solver's `cells` (dark for a reason that stops at
 /// their edge, as in AverageToPoints).

@@ -73,7 +73,7 @@ def check_setting_names(settings, proxies):
     """Every setting docs/settings.md lists is a property of its proxy, and every
     settable property is in the table (TestNames.py checks the XML against C++)."""
     table = {row[0]: row[2] for row in setting_rows(settings)}
-    check(len(table) == 7, "docs/settings.md lists %d proxies, expected 7" % len(table))
+    check(len(table) == 8, "docs/settings.md lists %d proxies, expected 8" % len(table))
     for proxy in proxies:
         xml_name = proxy.SMProxy.GetXMLName()
         listed = table.get(xml_name, [])

@@ -7,7 +7,8 @@ The three VTK filters (wrapped C++):
   as point/cell arrays ``Radiosity_<light>``;
 - ``vtkRadiosityRelight``: ``sum_i color_i * intensity_i * Radiosity_<light i>``.
 
-plus ``vtkRadiosityEXRWriter`` for HDR images, and helpers in :mod:`relight.scene`.
+plus ``vtkRadiosityWorkPlane`` (illuminance on a calculation grid), ``vtkRadiosityEXRWriter``
+for HDR images, and helpers in :mod:`relight.scene`.
 """
 
 from .vtkRadiosityFilters import (  # noqa: F401
@@ -17,13 +18,14 @@ from .vtkRadiosityFilters import (  # noqa: F401
     vtkRadiosityLights,
     vtkRadiosityMesher,
     vtkRadiosityRelight,
+    vtkRadiosityWorkPlane,
 )
 from .vtkRadiosityIO import vtkRadiosityEXRWriter, vtkRadiosityGLTFWriter, vtkRadiositySceneReader  # noqa: F401
 from .vtkRadiosityRendering import vtkRadiosityRelightMapper  # noqa: F401
 from .exporting import export_viewer, write_gltf  # noqa: F401
 from . import levels  # noqa: F401  (the accuracy knob: relight.solve(..., accuracy="fine"))
 from .importing import import_scene  # noqa: F401
-from .staging import area_light, in_room, luminaire, mark_lights, on_ground  # noqa: F401
+from .staging import area_light, in_room, luminaire, mark_lights, on_ground, work_plane, write_work_plane_csv  # noqa: F401
 from .scene import (  # noqa: F401
     ErrorCatcher,
     add_field_ints,

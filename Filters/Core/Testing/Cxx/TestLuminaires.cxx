@@ -179,3 +179,50 @@ TEST(Luminaires, PointValuesTakeLambertsPointSource)
   }
   EXPECT_GT(checked, 100);
 }
+
+TEST(Luminaires, FreePointsTakeTheirIrradianceInClosedForm)
+{
+  // Points in the air (a work plane): under a luminaire over a lone floor, Lambert's point
+  // source (nothing else reaches a point facing up); under a unit lamp cell 1 m up,
+  // F(dA -> square) = 0.2394565 (REFERENCES.md); inside a furnace of unit exitance and
+  // reflectance 0.5, 1 / (1 - 0.5) = 2 from every direction.
+  SceneMesh floor;
+  int patch = 0;
+  AddGrid(floor, { -2, -2, 0 }, { 4, 0, 0 }, { 0, 4, 0 }, 8, 4, { 0.5, 0.5, 0.5 }, -1, patch);
+  AddGrid(floor, { -0.5, -0.5, 1.8 }, { 0, 1, 0 }, { 1, 0, 0 }, 2, 1, { 0, 0, 0 }, 0, patch); // lamp, facing down
+  const RadiositySolver solver(floor);
+  const std::vector<PointLight> lights{ Luminaire({ 0.7, 0.2, 2.6 }, 1500) };
+  SolverOptions o = Converged(1e-7);
+  const Solution s = SolveLights(solver, floor, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, o, lights);
+  const std::vector<Vec3> emission = SolutionEmission(floor, LightGrouping::OnePerLight(1), {});
+  std::vector<Vec3> wide(static_cast<size_t>(floor.NumberOfPolygons()) * 2);
+  for (int e = 0; e < floor.NumberOfPolygons(); ++e)
+  {
+    wide[static_cast<size_t>(e) * 2] = emission[e];
+  }
+  GatherSettings settings;
+  settings.Rays = 64;
+  settings.PointLights = &lights;
+  settings.FirstPointSolution = 1;
+  const std::vector<Vec3> at{ { 0, 0, 0.8 }, { 1.2, -0.4, 0.8 } }, up{ { 0, 0, 1 }, { 0, 0, 1 } };
+  const GatheredPoints g =
+    IrradianceAtPoints(floor, solver.Geometry(), solver.Rays(), wide, s.Radiosity, 2, at, up, settings);
+  ASSERT_EQ(g.Radiosity.size(), 4u);
+  EXPECT_NEAR(g.Radiosity[0].x, 0.2394565, 1e-4); // the lamp 1 m above the first point
+  for (size_t p = 0; p < at.size(); ++p)
+  {
+    const Vec3 d = lights[0].Position - at[p];
+    const double r2 = Dot(d, d), expected = lights[0].Toward(d * -1.0) * (d.z / std::sqrt(r2)) / r2;
+    EXPECT_NEAR(g.Radiosity[p * 2 + 1].x, expected, 1e-9 * expected) << "point " << p;
+  }
+  const SceneMesh furnace = Box(2, 6, 2, { 0.5, 0.5, 0.5 }, [](int) { return 0; });
+  const RadiositySolver hot(furnace);
+  const Solution f = SolveLights(hot, furnace, LightGrouping::OnePerLight(1), {}, SolutionMode::LightTagged, Converged(1e-9));
+  const GatheredPoints inside = IrradianceAtPoints(furnace, hot.Geometry(), hot.Rays(),
+    SolutionEmission(furnace, LightGrouping::OnePerLight(1), {}), f.Radiosity, 1, { { 0.3, 1.1, 0.7 }, { 1, 1, 1 } },
+    { { 0, 0, 1 }, { 1, -1, 0.5 } }, GatherSettings());
+  for (const Vec3& e : inside.Radiosity)
+  {
+    EXPECT_NEAR(e.x, 2.0, 2e-3);
+  }
+}

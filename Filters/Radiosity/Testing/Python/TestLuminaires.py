@@ -69,6 +69,35 @@ panel = relight.point_array(both.GetOutput(), "Radiosity_Panel")
 lum = relight.point_array(both.GetOutput(), "Radiosity_Street")
 check(np.allclose(relit, panel + 0.25 * lum, rtol=1e-5, atol=1e-6), "dimmed to 25 %, the luminaire adds a quarter of its solution")
 
+# A work plane: EN 12464-1's grid over the cube (3 x 3 m inside a 0.5 m border: p = 0.2 x
+# 5^log10(3) = 0.43 m, so 7 x 7 points at the centres of their cells), 0.8 m up. In a black
+# room only the light reaches it: a bulb of 1 W/sr gives cos(theta) / d^2, exactly.
+bulb = relight.luminaire("Bulb", kind="point", position=(2, 2, 2))
+black = relight.solve(relight.mark_lights(cube(4.0, 0.0), bulb), patch_size=1.0, element_size=0.25)
+plane = relight.work_plane(black, height=0.8, up="z")
+points = vtk_to_numpy(plane.GetPoints().GetData())
+check(plane.GetNumberOfPoints() == 49 and np.allclose(points[:, 2], 0.8) and np.isclose(points[:, 0].min(), 0.5 + 3 / 14),
+      f"7 x 7 points at the cells' centres, 0.8 m up ({plane.GetNumberOfPoints()})")
+lux = relight.point_array(plane, "Illuminance_Bulb")[:, 0]
+d = np.array([2, 2, 2]) - points
+r = np.linalg.norm(d, axis=1)
+check(np.allclose(lux, d[:, 2] / r**3, rtol=1e-6), "every point takes Lambert's point source, cos / d^2")
+check(np.allclose(relight.point_array(plane, "Illuminance"), lux, rtol=1e-6), "the combined value is the one light's")
+stats = {n: plane.GetFieldData().GetArray(n).GetValue(0) for n in ("IlluminanceMean", "IlluminanceMinimum", "Uniformity")}
+check(np.isclose(stats["IlluminanceMean"], lux.mean(), rtol=1e-6) and np.isclose(stats["Uniformity"], lux.min() / lux.mean(), rtol=1e-6),
+      f"mean, minimum and uniformity of the plane: {stats}")
+csv = os.path.join(os.environ.get("TMPDIR", "/tmp"), "relight_work_plane.csv")
+relight.write_work_plane_csv(plane, csv)
+with open(csv) as table:
+    lines = table.read().splitlines()
+check(lines[4] == "x,y,z,Illuminance,Illuminance_Bulb" and len(lines) == 5 + 49, f"the CSV: {lines[:5]}")
+refused_plane = False
+try:
+    relight.work_plane(black, height=5.0, up="z")
+except RuntimeError as error:
+    refused_plane = "height of 5 is not inside" in str(error)
+check(refused_plane, "a work plane above the ceiling is refused with its reason")
+
 # Each way a luminaire can be wrong: one error that says which and why, no output.
 def refused(make, words):
     try:

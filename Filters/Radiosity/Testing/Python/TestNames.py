@@ -82,7 +82,7 @@ check(not undocumented(), f"every property has help text (missing: {undocumented
 commands = xml_commands()
 check(sorted(commands) == ["vtkLightTaggedRadiosity", "vtkRadiosityAppendPieces", "vtkRadiosityEXRWriter",
                            "vtkRadiosityGLTFWriter", "vtkRadiosityLightMarker", "vtkRadiosityMesher",
-                           "vtkRadiosityRelight", "vtkRadiositySceneReader"],
+                           "vtkRadiosityRelight", "vtkRadiositySceneReader", "vtkRadiosityWorkPlane"],
       f"the XML makes proxies of {sorted(commands)}")
 for cls, properties in commands.items():
     wrapped = getattr(relight, cls)

@@ -1,0 +1,202 @@
+#include "vtkRadiosityWorkPlane.h"
+#include "vtkRadiosityAbort.h"
+#include "vtkRadiosityAdapter.h"
+#include "vtkRadiosityPreparedScenes.h"
+#include "vtkRadiositySolveOutput.h"
+
+#include "Solve/FinalGather.h"
+#include "Solve/WorkPlane.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkLogger.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include <algorithm>
+#include <cmath>
+
+vtkStandardNewMacro(vtkRadiosityWorkPlane);
+
+namespace
+{
+/// The element solution per solution as the solver wrote it (cell arrays
+/// Radiosity_<name>, [e * solutions + m]); empty with `error` where one is missing.
+std::vector<radiosity::Vec3> ElementSolution(vtkPolyData* input, const std::vector<std::string>& names, std::string& error)
+{
+  const vtkIdType n = input->GetNumberOfCells();
+  const size_t s = names.size();
+  std::vector<radiosity::Vec3> values(static_cast<size_t>(n) * s);
+  for (size_t m = 0; m < s; ++m)
+  {
+    vtkDataArray* array = input->GetCellData()->GetArray(("Radiosity_" + names[m]).c_str());
+    if (!array || array->GetNumberOfComponents() != 3 || array->GetNumberOfTuples() != n)
+    {
+      error = "the input has no cell array Radiosity_" + names[m] + " (give it the light-tagged solver's output)";
+      return {};
+    }
+    for (vtkIdType e = 0; e < n; ++e)
+    {
+      double v[3];
+      array->GetTuple(e, v);
+      values[static_cast<size_t>(e) * s + m] = { v[0], v[1], v[2] };
+    }
+  }
+  return values;
+}
+
+/// The grid's points and quads as polydata.
+void WriteGrid(const radiosity::WorkPlaneGrid& grid, vtkPolyData* output)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (const radiosity::Vec3& p : grid.Points)
+  {
+    points->InsertNextPoint(p.x, p.y, p.z);
+  }
+  vtkNew<vtkCellArray> quads;
+  for (int j = 0; j + 1 < grid.Nv; ++j)
+  {
+    for (int i = 0; i + 1 < grid.Nu; ++i)
+    {
+      const vtkIdType a = j * grid.Nu + i, ids[4] = { a, a + 1, a + grid.Nu + 1, a + grid.Nu };
+      quads->InsertNextCell(4, ids);
+    }
+  }
+  output->SetPoints(points);
+  output->SetPolys(quads);
+}
+
+void AddValue(vtkFieldData* fields, const char* name, double value)
+{
+  vtkNew<vtkDoubleArray> array;
+  array->SetName(name);
+  array->InsertNextValue(value);
+  fields->AddArray(array);
+}
+
+int UpOf(int asked, const double bounds[6])
+{
+  if (asked >= 0)
+  {
+    return asked;
+  }
+  int up = 0;
+  for (int a = 1; a < 3; ++a)
+  {
+    up = bounds[2 * a + 1] - bounds[2 * a] < bounds[2 * up + 1] - bounds[2 * up] ? a : up;
+  }
+  return up;
+}
+}
+
+int vtkRadiosityWorkPlane::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  return vtkRadiosityAdapter::Guarded(this, input, output, [&]() -> int {
+    namespace steps = vtkRadiositySolveOutput;
+    steps::SceneInput scene;
+    std::string error = steps::ReadInput(input, radiosity::EffectMode::Auto, scene);
+    const std::vector<std::string> names = steps::SolutionNames(scene, false);
+    const std::vector<radiosity::Vec3> solution = error.empty() ? ElementSolution(input, names, error) : std::vector<radiosity::Vec3>();
+    double bounds[6];
+    input->GetBounds(bounds);
+    const radiosity::WorkPlaneGrid grid =
+      error.empty() ? radiosity::LayWorkPlane(bounds, UpOf(this->UpAxis, bounds), this->Height, this->Border, this->Spacing, error)
+                    : radiosity::WorkPlaneGrid();
+    radiosity::PreparedScene prepared = vtkRadiosityPreparedScenes::Find(input, true);
+    if (error.empty() && !prepared.Geometry)
+    {
+      error = radiosity::PrepareTransport(scene.Mesh, vtkRadiosityAdapter::Threads(0), radiosity::ProcessGroup(), prepared);
+      vtkRadiosityPreparedScenes::Keep(input, prepared);
+    }
+    if (!error.empty())
+    {
+      vtkErrorMacro(<< "Cannot lay the work plane: " << error << ".");
+      return 0;
+    }
+    const int s = static_cast<int>(names.size());
+    std::vector<radiosity::Vec3> emission = radiosity::SolutionEmission(scene.Mesh, scene.Grouping, scene.Emission);
+    std::vector<radiosity::Vec3> wide(static_cast<size_t>(scene.Mesh.NumberOfPolygons()) * s);
+    for (int e = 0; e < scene.Mesh.NumberOfPolygons(); ++e)
+    {
+      std::copy_n(emission.begin() + static_cast<size_t>(e) * scene.Grouping.Solutions, scene.Grouping.Solutions,
+        wide.begin() + static_cast<size_t>(e) * s);
+    }
+    radiosity::GatherSettings settings;
+    settings.Rays = this->GatherRays;
+    settings.PointLights = &scene.PointLights;
+    settings.FirstPointSolution = scene.Grouping.Solutions;
+    const vtkRadiosityAbortWatch abort(this);
+    const radiosity::GatheredPoints at = radiosity::IrradianceAtPoints(scene.Mesh, *prepared.Geometry, *prepared.Rays, wide,
+      solution, s, grid.Points, std::vector<radiosity::Vec3>(grid.Points.size(), grid.Normal), settings,
+      vtkRadiosityAdapter::Threads(0), [this, &abort](double f) {
+        this->UpdateProgress(f);
+        return !abort.Stop();
+      });
+    if (at.Aborted)
+    {
+      vtkErrorMacro(<< "Cannot lay the work plane: aborted.");
+      return 0;
+    }
+    WriteGrid(grid, output);
+    std::vector<radiosity::Vec3> colors = radiosity::DefaultColors(scene.Mesh, scene.Grouping, scene.Emission);
+    for (const radiosity::PointLight& light : scene.PointLights)
+    {
+      colors.push_back(light.Color);
+    }
+    std::vector<double> combined(grid.Points.size(), 0.0);
+    for (int m = 0; m < s; ++m)
+    {
+      vtkNew<vtkFloatArray> array;
+      array->SetName(("Illuminance_" + names[m]).c_str());
+      array->SetNumberOfComponents(3);
+      array->SetNumberOfTuples(static_cast<vtkIdType>(grid.Points.size()));
+      for (size_t p = 0; p < grid.Points.size(); ++p)
+      {
+        const radiosity::Vec3& e = at.Radiosity[p * s + m];
+        array->SetTuple3(static_cast<vtkIdType>(p), e.x, e.y, e.z);
+        combined[p] += radiosity::Dot(radiosity::Times(colors[m], e), { 1.0 / 3, 1.0 / 3, 1.0 / 3 });
+      }
+      output->GetPointData()->AddArray(array);
+    }
+    vtkNew<vtkDoubleArray> total;
+    total->SetName("Illuminance");
+    for (double v : combined)
+    {
+      total->InsertNextValue(v);
+    }
+    output->GetPointData()->AddArray(total);
+    output->GetPointData()->SetActiveScalars("Illuminance");
+    const radiosity::PlaneStatistics stats = radiosity::WorkPlaneStatistics(combined);
+    AddValue(output->GetFieldData(), "IlluminanceMean", stats.Mean);
+    AddValue(output->GetFieldData(), "IlluminanceMinimum", stats.Minimum);
+    AddValue(output->GetFieldData(), "IlluminanceMaximum", stats.Maximum);
+    AddValue(output->GetFieldData(), "Uniformity", stats.Uniformity);
+    vtkRadiosityAdapter::AddStrings(output->GetFieldData(), "LightNames", names);
+    vtkLogF(INFO, "Work plane: %d x %d points, %.3g apart; mean %.4g, minimum %.4g, uniformity %.3f", grid.Nu, grid.Nv,
+      std::max(grid.SpacingU, grid.SpacingV), stats.Mean, stats.Minimum, stats.Uniformity);
+    return 1;
+  });
+}
+
+void vtkRadiosityWorkPlane::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Height: " << this->Height << "\n";
+  os << indent << "Border: " << this->Border << "\n";
+  os << indent << "Spacing: " << this->Spacing << "\n";
+  os << indent << "UpAxis: " << this->UpAxis << "\n";
+  os << indent << "GatherRays: " << this->GatherRays << "\n";
+}
