@@ -16,7 +16,9 @@ irradiance a hair above each probe, times 179 lm/W (Radiance's white efficacy) i
 Probes: the floor's and the walls' mesh points on a 0.5 m grid, away from the corners.
 Ours: the point array Radiosity_<light> over the reflectance (illuminance, lux, as the
 solution of a luminaire at its lumens is in lm/m^2). Radiance's noise: two runs with
-uncorrelated sampling (-u+), their mean difference. Direct light alone (ours: Direct_<light>
+uncorrelated sampling (-u+), their mean difference. The work plane: relight.work_plane at
+0.8 m (EN 12464-1's grid inside a 0.5 m border) against rtrace at the same points in the
+air, facing up. Direct light alone (ours: Direct_<light>
 with SeparateDirect; Radiance: -ab 0) has no noise on either side: it checks the candela
 tables, their turn and their scale.
 """
@@ -99,8 +101,9 @@ def radiance_tool(venv, name):
     return found[0]
 
 
-def radiance_illuminance(venv, light, at, normals, ad, folder):
-    """rtrace -I, in lux, at `at` facing `normals`, for one luminaire alone; two runs."""
+def radiance_illuminance(venv, light, at, normals, plane_points, ad, folder):
+    """rtrace -I, in lux, at `at` facing `normals` and at the work plane's points facing up,
+    for one luminaire alone: twice with every bounce, once direct light alone."""
     name, path, position = light
     bin_dir = pathlib.Path(radiance_tool(venv, "rtrace")).parent
     env = dict(os.environ, RAYPATH=".:" + str(bin_dir.parent / "lib"), PATH=f"{bin_dir}:{os.environ['PATH']}")
@@ -116,7 +119,9 @@ def radiance_illuminance(venv, light, at, normals, ad, folder):
     (pathlib.Path(folder) / "scene.rad").write_text("\n".join(lines) + "\n")
     with open(pathlib.Path(folder) / "scene.oct", "wb") as octree:
         subprocess.run([radiance_tool(venv, "oconv"), "scene.rad"], cwd=folder, env=env, stdout=octree, check=True)
-    rays = "\n".join(" ".join(f"{v:.9g}" for v in (*(p + 1e-4 * n), *n)) for p, n in zip(at, normals)) + "\n"
+    lifted = [p + 1e-4 * n for p, n in zip(at, normals)] + list(plane_points)
+    facing = list(normals) + [np.array([0.0, 0.0, 1.0])] * len(plane_points)
+    rays = "\n".join(" ".join(f"{v:.9g}" for v in (*p, *n)) for p, n in zip(lifted, facing)) + "\n"
     runs = []
     for bounces in (8, 8, 0):  # twice with every bounce (their difference: the noise), once direct light alone
         command = [radiance_tool(venv, "rtrace"), "-h", "-I+", "-u+", "-ab", str(bounces), "-ad", str(ad), "-as", "0", "-aa", "0",
@@ -141,12 +146,20 @@ def main():
     ids, normals, at = probes(solved)
     probe_rho = np.where(normals[:, 2] > 0.5, RHO["floor"], RHO["walls"])
     print(f"solved {solved.GetNumberOfCells()} elements, 6 luminaires in {seconds:.2f} s; {len(ids)} probes")
-    rows, errors, noises, directs = [], [], [], []
+    rows, errors, noises, directs, planes, plane_noises = [], [], [], [], [], []
+    plane = relight.work_plane(solved, height=0.8, up="z")
+    plane_points = vtk_to_numpy(plane.GetPoints().GetData()).astype(float)
     with tempfile.TemporaryDirectory() as folder:
         for light in luminaires():
             name = light[0]
             ours = relight.point_array(solved, "Radiosity_" + name)[ids, 0] / probe_rho
-            first, second, direct = radiance_illuminance(args.radiance, light, at, normals, args.ad, folder)
+            runs = radiance_illuminance(args.radiance, light, at, normals, plane_points, args.ad, folder)
+            first, second, direct = (run[:len(ids)] for run in runs)
+            plane_theirs = 0.5 * (runs[0][len(ids):] + runs[1][len(ids):])
+            plane_noise = 0.5 * np.abs(runs[0][len(ids):] - runs[1][len(ids):]).mean() / plane_theirs.mean()
+            plane_ours = relight.point_array(plane, "Illuminance_" + name)[:, 0]
+            plane_error = np.abs(plane_ours - plane_theirs).mean() / plane_theirs.mean()
+            planes.append(plane_error), plane_noises.append(plane_noise)
             ours_direct = relight.point_array(solved, "Direct_" + name)[ids, 0] / probe_rho
             direct_error = np.abs(ours_direct - direct).mean() / direct.mean()
             directs.append(direct_error)
@@ -157,10 +170,12 @@ def main():
             floor = normals[:, 2] > 0.5
             rows.append(f"{name}: mean illuminance ours {ours[floor].mean():8.1f} lx, Radiance {theirs[floor].mean():8.1f} lx "
                         f"on the floor; mean |difference| {100 * error:.2f} % of the mean, Radiance's noise {100 * noise:.2f} %; "
-                        f"direct light alone {100 * direct_error:.2f} %")
+                        f"direct light alone {100 * direct_error:.2f} %; work plane (0.8 m, {len(plane_points)} points) "
+                        f"{100 * plane_error:.2f} %, Radiance's noise there {100 * plane_noise:.2f} %")
             print(rows[-1], flush=True)
     summary = (f"mean over the luminaires: {100 * np.mean(errors):.2f} % from Radiance (its noise {100 * np.mean(noises):.2f} %; "
-               f"direct light alone {100 * np.mean(directs):.2f} %), "
+               f"direct light alone {100 * np.mean(directs):.2f} %); work plane {100 * np.mean(planes):.2f} % "
+               f"(Radiance's noise {100 * np.mean(plane_noises):.2f} %), "
                f"element {args.element} m, solve {seconds:.2f} s")
     print(summary)
     (out_dir / "luminaires_radiance.txt").write_text("\n".join(rows + [summary]) + "\n")
