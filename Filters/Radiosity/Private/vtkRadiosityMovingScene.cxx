@@ -6,10 +6,12 @@
 #include "Geometry/PointAverages.h"
 #include "Relight/LightRig.h"
 #include "Relight/MovingLights.h"
+#include "Lights/Luminaires.h"
 #include "Solve/PatchBasis.h"
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkStringArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkIntArray.h"
@@ -19,6 +21,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 struct vtkRadiosityMovingScene::State
 {
@@ -105,8 +108,57 @@ bool ReadBasis(vtkPolyData* scene, int patches, radiosity::BasisView& basis, std
 
 namespace
 {
-/// The moving lights of `lights` (points with Color, Intensity and optional Normal);
-/// false with `error` naming the first bad one.
+/// The kinds of the moving lights where `lights` names them: the string point arrays Kind
+/// and Parameters (a luminaire's "goniometric" and "file=...; lumens=..."), the point
+/// arrays Aim and Rotation (degrees). Each kind made once, shared by the lights that give
+/// it alike; false with `error` naming the first light that cannot be made.
+bool ReadMovingKinds(vtkPolyData* lights, std::vector<radiosity::MovingLight>& movers, std::string& error)
+{
+  auto* kinds = vtkStringArray::SafeDownCast(lights->GetPointData()->GetAbstractArray("Kind"));
+  auto* parameters = vtkStringArray::SafeDownCast(lights->GetPointData()->GetAbstractArray("Parameters"));
+  vtkDataArray* aim = lights->GetPointData()->GetArray("Aim");
+  vtkDataArray* rotation = lights->GetPointData()->GetArray("Rotation");
+  std::map<std::pair<std::string, std::string>, std::shared_ptr<const radiosity::LightDistribution>> made;
+  for (vtkIdType i = 0; i < lights->GetNumberOfPoints(); ++i)
+  {
+    radiosity::MovingLight& light = movers[i];
+    if (aim && aim->GetNumberOfComponents() == 3 && aim->GetNumberOfTuples() == lights->GetNumberOfPoints())
+    {
+      double v[3];
+      aim->GetTuple(i, v);
+      light.Aim = { v[0], v[1], v[2] };
+    }
+    if (rotation && rotation->GetNumberOfTuples() == lights->GetNumberOfPoints())
+    {
+      light.Rotation = rotation->GetComponent(i, 0);
+    }
+    if (kinds && i < kinds->GetNumberOfValues())
+    {
+      const auto key = std::make_pair(kinds->GetValue(i),
+        parameters && i < parameters->GetNumberOfValues() ? parameters->GetValue(i) : std::string());
+      auto& distribution = made[key];
+      radiosity::LuminaireRow row;
+      row.Name = "moving light " + std::to_string(i);
+      row.Kind = key.first;
+      row.Parameters = key.second;
+      radiosity::PointLight check;
+      if (!distribution && !(error = radiosity::MakePointLight(row, check)).empty())
+      {
+        return false;
+      }
+      distribution = distribution ? distribution : check.Distribution;
+      light.Distribution = distribution;
+    }
+    if (!(error = radiosity::PointLightProblem(light, "moving light " + std::to_string(i))).empty())
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// The moving lights of `lights` (points with Color, Intensity and optional Normal, or a
+/// Kind with its Parameters, Aim and Rotation); false with `error` naming the first bad one.
 bool ReadMovingLights(vtkPolyData* lights, std::vector<radiosity::MovingLight>& movers, std::string& error)
 {
   movers.assign(lights->GetNumberOfPoints(), radiosity::MovingLight());
@@ -158,7 +210,7 @@ bool ReadMovingLights(vtkPolyData* lights, std::vector<radiosity::MovingLight>& 
       return false;
     }
   }
-  return true;
+  return ReadMovingKinds(lights, movers, error);
 }
 }
 
@@ -196,7 +248,7 @@ bool vtkRadiosityMovingScene::Rebuild(vtkPolyData* scene, vtkPolyData* dynamic, 
   int lightCount = 0;
   if (!vtkRadiosityAdapter::CopyPolygons(scene, state.Scene, error) ||
     !vtkRadiosityAdapter::ReadSceneArrays(scene, state.Scene, unused, error) ||
-    !(error = radiosity::ValidateScene(state.Scene, lightCount)).empty())
+    !(error = radiosity::ValidateScene(state.Scene, lightCount, 1)).empty()) // the moving lights light it
   {
     return false;
   }

@@ -98,6 +98,29 @@ except RuntimeError as error:
     refused_plane = "height of 5 is not inside" in str(error)
 check(refused_plane, "a work plane above the ceiling is refused with its reason")
 
+# A luminaire that moves: the relight filter's moving lights take its kind, file and aim
+# (point arrays Kind, Parameters, Aim), shot per frame with the patch basis carrying its
+# interreflection; where it stands still it is the solve's own luminaire.
+still = relight.luminaire("Still", IES, position=(2.2, 1.7, 3.5), rotation=20)
+solved = relight.solve(relight.mark_lights(cube(4.0, 0.5), still), patch_size=1.0, element_size=0.25, lamp_grading=0,
+                       GatherRays=0, ConvergenceThreshold=1e-5, PatchBasis=True)
+mover = relight.vtkRadiosityRelight()
+mover.SetInputConnection(0, solved.GetOutputPort())
+mover.SetInputData(1, relight.point_lights([still.position], like=still))
+mover.SetLightEnabled(0, False)
+mover.Update()
+moved = relight.cell_array(mover.GetOutput(), "Radiosity")[:, 0].astype(float)
+fixed = relight.cell_array(solved.GetOutput(), "Radiosity_Still")[:, 0].astype(float)
+moving_error = np.abs(moved - fixed).mean() / fixed.mean()
+print(f"the luminaire as a moving light against the solve's: {100 * moving_error:.2f} %")
+check(moving_error < 0.03, f"as a moving light it lights the room as the solve's luminaire does ({100 * moving_error:.2f} %)")
+broken_mover = relight.vtkRadiosityRelight()
+broken_mover.SetInputConnection(0, solved.GetOutputPort())
+broken_mover.SetInputData(1, relight.point_lights([still.position], like=relight.luminaire("X", "/nowhere/a.ies")))
+catcher = relight.ErrorCatcher(broken_mover)
+broken_mover.Update()
+check(catcher.failed() and "/nowhere/a.ies" in catcher.first_error(), f"a moving luminaire's missing file is said: {catcher.first_error()}")
+
 # Each way a luminaire can be wrong: one error that says which and why, no output.
 def refused(make, words):
     try:
