@@ -6,41 +6,6 @@
 namespace radiosity
 {
 
-bool MatchesPattern(const std::string& pattern, const std::string& text)
-{
-  // Greedy wildcard matching with one backtrack point: the last '*' seen.
-  size_t p = 0, t = 0, star = std::string::npos, resume = 0;
-  auto same = [](char a, char b) {
-    return std::tolower(static_cast<unsigned char>(a)) == std::tolower(static_cast<unsigned char>(b));
-  };
-  while (t < text.size())
-  {
-    if (p < pattern.size() && (pattern[p] == '?' || (pattern[p] != '*' && same(pattern[p], text[t]))))
-    {
-      ++p;
-      ++t;
-    }
-    else if (p < pattern.size() && pattern[p] == '*')
-    {
-      star = p++;
-      resume = t;
-    }
-    else if (star != std::string::npos)
-    {
-      p = star + 1;
-      t = ++resume;
-    }
-    else
-    {
-      return false;
-    }
-  }
-  while (p < pattern.size() && pattern[p] == '*')
-  {
-    ++p;
-  }
-  return p == pattern.size();
-}
 
 std::string AreaLightLoop(const AreaLight& light, std::vector<Vec3>& loop)
 {

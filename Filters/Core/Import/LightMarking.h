@@ -3,6 +3,7 @@
 #ifndef RadiosityCore_LightMarking_h
 #define RadiosityCore_LightMarking_h
 
+#include "Base/Text.h" // MatchesPattern, which used to live here
 #include "Base/Vec3.h"
 
 #include <string>
@@ -11,8 +12,6 @@
 namespace radiosity
 {
 
-/// Shell-style match, ignoring case: `*` any run of characters, `?` any one.
-bool MatchesPattern(const std::string& pattern, const std::string& text);
 
 enum class AreaShape
 {

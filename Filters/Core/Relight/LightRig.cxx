@@ -1,4 +1,5 @@
 #include "Relight/LightRig.h"
+#include "Relight/LightScenes.h"
 
 #include <cstdio>
 #include "Base/Text.h"
@@ -180,34 +181,47 @@ bool ParseKeyframe(const std::vector<std::string>& cells, LightKeyframe& key)
     ParseNumber(cells[5], key.Intensity) && (cells.size() == 6 || ParseEnabled(cells[6], key.Enabled));
 }
 
-bool LightRig::Scheduled(const std::string& name, int index, double time, LightSetting& out) const
+bool LightRig::Scheduled(const std::string& name, int index, double time, const LightSetting& base, LightSetting& out) const
 {
-  const LightKeyframe* before = nullptr;
-  const LightKeyframe* after = nullptr;
+  // The keyframes that speak of this light: by name, by index, or through a scene that
+  // sets it (taken as the setting the scene gives it then).
+  LightKeyframe before, after;
+  bool hasBefore = false, hasAfter = false;
   for (const auto* list : { &this->FileSchedule, &this->Schedule })
   {
-    for (const LightKeyframe& k : *list)
+    for (const LightKeyframe& given : *list)
     {
-      if (k.Light != name && k.Light != std::to_string(index))
+      LightKeyframe k = given;
+      LightSetting scened;
+      const bool scene = k.Light.rfind("scene:", 0) == 0;
+      if (scene && SceneSetting(this->Scenes, k.Light.substr(6), name, base, scened))
+      {
+        k.Color = scened.Color;
+        k.Intensity = scened.Intensity;
+        k.Enabled = scened.Enabled;
+      }
+      else if (scene || (k.Light != name && k.Light != std::to_string(index)))
       {
         continue;
       }
-      if (k.Time <= time && (!before || k.Time >= before->Time))
+      if (k.Time <= time && (!hasBefore || k.Time >= before.Time))
       {
-        before = &k;
+        before = k;
+        hasBefore = true;
       }
-      if (k.Time >= time && (!after || k.Time < after->Time))
+      if (k.Time >= time && (!hasAfter || k.Time < after.Time))
       {
-        after = &k;
+        after = k;
+        hasAfter = true;
       }
     }
   }
-  if (!before && !after)
+  if (!hasBefore && !hasAfter)
   {
     return false;
   }
-  const LightKeyframe& a = before ? *before : *after;
-  const LightKeyframe& b = after ? *after : *before;
+  const LightKeyframe& a = hasBefore ? before : after;
+  const LightKeyframe& b = hasAfter ? after : before;
   const double w = b.Time > a.Time ? (time - a.Time) / (b.Time - a.Time) : 0.0;
   out.HasColor = out.HasIntensity = out.HasEnabled = true;
   out.Color = a.Color + (b.Color - a.Color) * w;
@@ -235,6 +249,11 @@ std::string LightRig::Resolve(const std::vector<std::string>& names, const std::
   std::vector<LightSetting>& effective, std::vector<std::string>& warnings) const
 {
   effective.clear();
+  const std::string scene = this->ActiveScene.empty() ? std::string() : SceneProblem(this->Scenes, this->ActiveScene);
+  if (!scene.empty())
+  {
+    return scene;
+  }
   const int k = static_cast<int>(names.size());
   for (int i = 0; i < k; ++i)
   {
@@ -246,13 +265,19 @@ std::string LightRig::Resolve(const std::vector<std::string>& names, const std::
     const double peak = std::max({ given.x, given.y, given.z });
     s.Color = peak > 0 ? given * (1.0 / peak) : given;
     s.Intensity = peak > 0 ? peak : 1.0;
+    const LightSetting own = s;
+    LightSetting scened;
+    if (!this->ActiveScene.empty() && SceneSetting(this->Scenes, this->ActiveScene, names[i], own, scened))
+    {
+      s = scened;
+    }
     const auto byName = this->ByName.find(names[i]);
     if (byName != this->ByName.end())
     {
       byName->second.ApplyTo(s);
     }
     LightSetting scheduled;
-    if (this->Scheduled(names[i], i, time, scheduled))
+    if (this->Scheduled(names[i], i, time, own, scheduled))
     {
       scheduled.ApplyTo(s);
     }
@@ -286,7 +311,12 @@ std::string LightRig::Resolve(const std::vector<std::string>& names, const std::
       {
         index = key.Light == std::to_string(i);
       }
-      if (!index && !known(key.Light))
+      const bool scene = key.Light.rfind("scene:", 0) == 0;
+      if (scene && !SceneProblem(this->Scenes, key.Light.substr(6)).empty())
+      {
+        warnings.push_back("The light schedule's '" + key.Light + "': " + SceneProblem(this->Scenes, key.Light.substr(6)));
+      }
+      else if (!scene && !index && !known(key.Light))
       {
         unknown.insert(key.Light);
       }

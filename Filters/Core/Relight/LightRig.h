@@ -76,12 +76,27 @@ struct LightKeyframe
 /// already split; `enabled` as true/false, on/off, yes/no or 1/0. False if malformed.
 bool ParseKeyframe(const std::vector<std::string>& cells, LightKeyframe& key);
 
+/// One row of a light scene (Relight/LightScenes.h): the lights it sets (a name or a shell
+/// pattern, `*` and `?`, case ignored) and what it sets of them: its dimming as the
+/// intensity (a fraction of the light's own strength), a color where given, on or off.
+struct LightSceneRow
+{
+  std::string Scene;
+  std::string Lights;
+  LightSetting Setting;
+};
+
 struct LightRig
 {
   std::map<int, LightSetting> ByIndex;
   std::map<std::string, LightSetting> ByName;
   std::vector<LightKeyframe> Schedule; ///< keyframes given one by one
   std::vector<LightKeyframe> FileSchedule; ///< keyframes read from a file
+  /// Light scenes (from a file) and the one in effect (empty: none). A keyframe whose light
+  /// is "scene:<name>" gives every light that scene sets its setting at that time, so the
+  /// schedule switches and blends scenes.
+  std::vector<LightSceneRow> Scenes;
+  std::string ActiveScene;
 
   ///@{
   /// Settings by index, one part at a time.
@@ -94,16 +109,17 @@ struct LightRig
   /// default (a panel that changed only the intensity must not replace the color).
   void SetByName(const std::string& name, const Vec3& color, double intensity, bool enabled);
 
-  /// The schedule's setting for light `name` (index `index`) at `time`: color and
-  /// intensity interpolated linearly between keyframes, on/off held from the one before.
-  /// False if no keyframe names the light.
-  bool Scheduled(const std::string& name, int index, double time, LightSetting& out) const;
+  /// The schedule's setting for light `name` (index `index`, default setting `base`) at
+  /// `time`: color and intensity interpolated linearly between keyframes, on/off held from
+  /// the one before. False if no keyframe names the light (or a scene that sets it).
+  bool Scheduled(const std::string& name, int index, double time, const LightSetting& base, LightSetting& out) const;
 
   /// Every keyframe time, sorted, each once.
   std::vector<double> KeyframeTimes() const;
 
   /// The settings in effect for lights `names` with `defaults` (their default colors),
-  /// at `time`: defaults, then by name, then the schedule, then by index. Returns an empty
+  /// at `time`: defaults, then the active light scene, then by name, then the schedule,
+  /// then by index. Returns an empty
   /// string, or the error for a light switched on with a negative, infinite or NaN value.
   /// `warnings` gets settings that name no light.
   std::string Resolve(const std::vector<std::string>& names, const std::vector<Vec3>& defaults, double time,

@@ -18,7 +18,7 @@ from PyQt5.QtWidgets import QApplication, QMenu  # noqa: E402
 
 result = guitest.Result()
 app = QApplication.instance()
-PIPELINE = ["Mark Lights", "Radiosity Mesher", "Light Tagged Radiosity", "Radiosity Relight"]
+PIPELINE = ["Mark Lights", "Radiosity Mesher", "Light Tagged Radiosity", "Radiosity Relight", "Radiosity Work Plane"]
 LIGHTS = ["Amber", "CoolWhite", "WarmWhite"]
 
 

@@ -1,4 +1,5 @@
 #include "Relight/LightRig.h"
+#include "Relight/LightScenes.h"
 
 #include <gtest/gtest.h>
 
@@ -148,4 +149,58 @@ TEST(LightRig, SettingRowsReadBackAsWritten)
   const std::vector<NamedSetting> two = ParseSettingRows({ "A", "1", "1", "1", "1", "2" }); // the server's integer: on
   ASSERT_EQ(two.size(), 1u);
   EXPECT_TRUE(two[0].Setting.Enabled);
+}
+
+TEST(LightRig, LightScenesDimGroupsOfLightsAndTheScheduleBlendsThem)
+{
+  std::vector<LightSceneRow> rows;
+  const std::string file = "# scene, lights, dimming %, r, g, b, on\n"
+                           "Meeting, Ovni*, 100, , , , on\n"
+                           "Meeting, Erco*, 30, 1, 0.8, 0.6, on\n"
+                           "Film, *, 10, , , , on\n"
+                           "Film, Erco1, 0, , , , off   # the one by the screen\n";
+  ASSERT_EQ(ParseLightScenes(file, "scenes.csv", rows), "");
+  EXPECT_EQ(LightSceneNames(rows), (std::vector<std::string>{ "Meeting", "Film" }));
+  LightRig rig;
+  rig.Scenes = rows;
+  rig.ActiveScene = "Meeting";
+  const std::vector<std::string> names{ "Ovni1", "Erco1", "Erco2", "Panel" };
+  // The panel's default is an Emission of 20: its strength; the scene dims a share of it.
+  const std::vector<Vec3> defaults{ { 1, 1, 1 }, { 1, 1, 1 }, { 1, 1, 1 }, { 20, 20, 20 } };
+  std::vector<LightSetting> effective;
+  std::vector<std::string> warnings;
+  ASSERT_EQ(rig.Resolve(names, defaults, 0, effective, warnings), "");
+  EXPECT_DOUBLE_EQ(effective[0].Intensity, 1.0);
+  EXPECT_DOUBLE_EQ(effective[1].Intensity, 0.3);
+  EXPECT_DOUBLE_EQ(effective[1].Color.y, 0.8);
+  EXPECT_DOUBLE_EQ(effective[3].Intensity, 20.0); // the scene does not set it
+  rig.ActiveScene = "Film";
+  ASSERT_EQ(rig.Resolve(names, defaults, 0, effective, warnings), "");
+  EXPECT_DOUBLE_EQ(effective[3].Intensity, 2.0); // 10 % of 20
+  EXPECT_FALSE(effective[1].Enabled);
+  EXPECT_TRUE(effective[2].Enabled);
+  // By name over the scene, the schedule over both: from Meeting at t = 0 to Film at t = 10.
+  rig.ActiveScene.clear();
+  rig.Schedule = { { 0, "scene:Meeting" }, { 10, "scene:Film" } };
+  ASSERT_EQ(rig.Resolve(names, defaults, 5, effective, warnings), "");
+  EXPECT_DOUBLE_EQ(effective[0].Intensity, 0.55); // halfway from 100 % to 10 %
+  EXPECT_DOUBLE_EQ(effective[2].Intensity, 0.2);  // halfway from 30 % to 10 %
+  EXPECT_DOUBLE_EQ(effective[3].Intensity, 2.0);  // Film alone sets it: held
+  EXPECT_TRUE(warnings.empty());
+  // A scene no row defines is an error; a keyframe of one is a warning.
+  rig.ActiveScene = "Party";
+  EXPECT_EQ(rig.Resolve(names, defaults, 0, effective, warnings),
+    "no light scene is called 'Party' (there are Meeting, Film)");
+  rig.ActiveScene.clear();
+  rig.Schedule = { { 0, "scene:Party" } };
+  warnings.clear();
+  ASSERT_EQ(rig.Resolve(names, defaults, 0, effective, warnings), "");
+  ASSERT_EQ(warnings.size(), 1u);
+  // Bad rows say where.
+  EXPECT_EQ(ParseLightScenes("Meeting, Ovni*, lots, , , , on\n", "s.csv", rows),
+    "s.csv:1: the dimming 'lots' is not a percentage of 0 or more");
+  EXPECT_EQ(ParseLightScenes("\nMeeting, Ovni*, 50, 1, 1, , on\n", "s.csv", rows),
+    "s.csv:2: the color '1, 1, ' is not three numbers of 0 or more");
+  EXPECT_EQ(ParseLightScenes("Meeting, Ovni*, 50\n", "s.csv", rows), "s.csv:1: 3 cells, not 7 (scene, lights, dimming %, r, g, b, on)");
+  EXPECT_EQ(ParseLightScenes("# nothing\n", "s.csv", rows), "s.csv: no light scene in it (rows of: scene, lights, dimming %, r, g, b, on)");
 }
