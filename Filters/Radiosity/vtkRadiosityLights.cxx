@@ -1,5 +1,8 @@
 #include "vtkRadiosityLights.h"
 
+#include "Lights/PhotometricFiles.h" // ReadTextFile
+#include "Relight/LightScenes.h"
+
 #include "Relight/LightRig.h"
 
 #include "Base/Text.h"
@@ -27,6 +30,7 @@ vtkRadiosityLights::vtkRadiosityLights()
 vtkRadiosityLights::~vtkRadiosityLights()
 {
   this->SetScheduleFileName(nullptr);
+  this->SetLightScenesFileName(nullptr);
 }
 
 void vtkRadiosityLights::SetLightColor(int light, double r, double g, double b)
@@ -176,8 +180,69 @@ bool ReadKeyframes(const std::string& file, std::vector<radiosity::LightKeyframe
 }
 } // namespace
 
+void vtkRadiosityLights::SetLightScene(const char* scene)
+{
+  const std::string name = scene ? scene : "";
+  if (name != this->Settings->ActiveScene)
+  {
+    this->Settings->ActiveScene = name;
+    this->Modified();
+  }
+}
+
+const char* vtkRadiosityLights::GetLightScene() const
+{
+  return this->Settings->ActiveScene.c_str();
+}
+
+int vtkRadiosityLights::GetNumberOfLightScenes() const
+{
+  return static_cast<int>(this->SceneNames.size());
+}
+
+const char* vtkRadiosityLights::GetLightSceneName(int i) const
+{
+  return i >= 0 && i < static_cast<int>(this->SceneNames.size()) ? this->SceneNames[i].c_str() : "";
+}
+
+bool vtkRadiosityLights::ReadScenesFile(std::string& error)
+{
+  const std::string file = this->LightScenesFileName ? this->LightScenesFileName : "";
+  const long long stamp = file.empty() ? 0 : WriteStamp(file);
+  if (file == this->ScenesFile && stamp == this->ScenesStamp)
+  {
+    return true;
+  }
+  this->Settings->Scenes.clear();
+  this->SceneNames.clear();
+  this->ScenesFile.clear();
+  std::string text;
+  if (file.empty())
+  {
+    return true;
+  }
+  if (!radiosity::ReadTextFile(file, text))
+  {
+    error = "cannot open the light-scenes file '" + file + "'";
+    return false;
+  }
+  error = radiosity::ParseLightScenes(text, file, this->Settings->Scenes);
+  if (!error.empty())
+  {
+    return false;
+  }
+  this->SceneNames = radiosity::LightSceneNames(this->Settings->Scenes);
+  this->ScenesFile = file;
+  this->ScenesStamp = stamp;
+  return true;
+}
+
 bool vtkRadiosityLights::ReadScheduleFile(std::string& error)
 {
+  if (!this->ReadScenesFile(error))
+  {
+    return false;
+  }
   const std::string file = this->ScheduleFileName ? this->ScheduleFileName : "";
   const long long stamp = file.empty() ? 0 : WriteStamp(file);
   if (file == this->ReadFile && stamp == this->ReadStamp)
@@ -236,6 +301,8 @@ void vtkRadiosityLights::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Settings by index: " << this->Settings->ByIndex.size() << "\n";
   os << indent << "Settings by name: " << this->Settings->ByName.size() << "\n";
+  os << indent << "Light scenes file: " << (this->LightScenesFileName ? this->LightScenesFileName : "(none)")
+     << ", scene: " << (this->Settings->ActiveScene.empty() ? "(none)" : this->Settings->ActiveScene) << "\n";
   os << indent << "Schedule entries: " << this->Settings->Schedule.size() << " (+" << this->Settings->FileSchedule.size()
      << " from a file)\n";
 }

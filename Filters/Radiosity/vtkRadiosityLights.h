@@ -83,9 +83,25 @@ public:
   vtkGetStringMacro(ScheduleFileName);
   ///@}
 
-  /// Reads the schedule file if it was not read as it is now (cheap otherwise); false
-  /// with `error` set if it cannot be read or a row is malformed, its keyframes then
-  /// dropped. Every reader of the settings calls this before resolving them.
+  ///@{
+  /// Light scenes: a file of rows "scene, lights, dimming %, r, g, b, on" (lights a name
+  /// or a pattern, * and ?; r, g, b empty to keep the lights' colors; '#' comments), and
+  /// the scene in effect (empty: none). The scene lies under the settings by name; a
+  /// schedule keyframe whose light is "scene:<name>" gives its lights that scene's
+  /// settings then, so scenes switch and blend over time. Read again whenever it changes.
+  vtkSetStringMacro(LightScenesFileName);
+  vtkGetStringMacro(LightScenesFileName);
+  void SetLightScene(const char* scene);
+  const char* GetLightScene() const;
+  /// The scenes the file defines, after a read (ReadScheduleFile reads it too).
+  int GetNumberOfLightScenes() const;
+  const char* GetLightSceneName(int i) const;
+  ///@}
+
+  /// Reads the schedule file (and the light-scenes file) if it was not read as it is now
+  /// (cheap otherwise); false with `error` set if it cannot be read or a row is malformed,
+  /// its keyframes then dropped. Every reader of the settings calls this before resolving
+  /// them.
   bool ReadScheduleFile(std::string& error);
 
 #ifndef __VTK_WRAP__
@@ -115,6 +131,12 @@ private:
 
   std::unique_ptr<radiosity::LightRig> Settings;
   char* ScheduleFileName = nullptr;
+  char* LightScenesFileName = nullptr;
+  std::string ScenesFile;    ///< the light-scenes file as last read
+  long long ScenesStamp = 0; ///< its last write time then
+  std::vector<std::string> SceneNames;
+  /// Reads the light-scenes file if it changed; false with `error` where it cannot.
+  bool ReadScenesFile(std::string& error);
   std::string EntryError;    ///< an entry given whose `enabled` does not read
   std::string ReadFile;      ///< the schedule file as last read
   long long ReadStamp = 0;   ///< its last write time then: a newer one re-reads it

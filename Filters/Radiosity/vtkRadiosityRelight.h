@@ -105,6 +105,11 @@ public:
   void ClearSchedule() { this->Lights->ClearSchedule(); }
   void SetScheduleFileName(const char* file) { this->Lights->SetScheduleFileName(file); }
   char* GetScheduleFileName() { return this->Lights->GetScheduleFileName(); }
+  /// Light scenes (vtkRadiosityLights::SetLightScenesFileName, SetLightScene).
+  void SetLightScenesFileName(const char* file) { this->Lights->SetLightScenesFileName(file); }
+  char* GetLightScenesFileName() { return this->Lights->GetLightScenesFileName(); }
+  void SetLightScene(const char* scene) { this->Lights->SetLightScene(scene); }
+  const char* GetLightScene() { return this->Lights->GetLightScene(); }
   int GetNumberOfScheduleEntries() const { return this->Lights->GetNumberOfScheduleEntries(); }
   ///@}
 

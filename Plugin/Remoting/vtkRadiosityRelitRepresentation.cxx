@@ -82,6 +82,16 @@ void vtkRadiosityRelitRepresentation::SetScheduleFileName(const char* file)
   this->Mapper->GetLights()->SetScheduleFileName(file);
 }
 
+void vtkRadiosityRelitRepresentation::SetLightScenesFileName(const char* file)
+{
+  this->Mapper->GetLights()->SetLightScenesFileName(file);
+}
+
+void vtkRadiosityRelitRepresentation::SetLightScene(const char* scene)
+{
+  this->Mapper->GetLights()->SetLightScene(scene);
+}
+
 void vtkRadiosityRelitRepresentation::SetUpdateTime(double time)
 {
   this->Mapper->SetTime(time);

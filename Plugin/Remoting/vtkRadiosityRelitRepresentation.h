@@ -45,6 +45,9 @@ public:
   void AddScheduleRow(double time, const char* light, double r, double g, double b, double intensity, const char* enabled);
   void ClearSchedule();
   void SetScheduleFileName(const char* file);
+  /// Light scenes, as vtkRadiosityLights has them.
+  void SetLightScenesFileName(const char* file);
+  void SetLightScene(const char* scene);
   ///@}
 
   /// The view's time also sets the time of the lights' schedule.

@@ -69,6 +69,38 @@ panel = relight.point_array(both.GetOutput(), "Radiosity_Panel")
 lum = relight.point_array(both.GetOutput(), "Radiosity_Street")
 check(np.allclose(relit, panel + 0.25 * lum, rtol=1e-5, atol=1e-6), "dimmed to 25 %, the luminaire adds a quarter of its solution")
 
+# Light scenes: groups of lights by name pattern, dimmed together, switched by name and
+# blended over time by the schedule, with no new solve.
+scenes = os.path.join(os.environ.get("TMPDIR", "/tmp"), "relight_scenes.csv")
+with open(scenes, "w") as f:
+    f.write("# scene, lights, dimming %, r, g, b, on\nEvening, Str*, 25, , , , on\nEvening, Panel, 100, , , , off\n"
+            "Work, *, 100, 1, 1, 1, on\n")
+scened = relight.vtkRadiosityRelight()
+scened.SetInputConnection(both.GetOutputPort())
+scened.SetLightScenesFileName(scenes)
+scened.SetLightScene("Evening")
+scened.Update()
+evening = relight.point_array(scened.GetOutput(), "Radiosity")
+check(np.allclose(evening, 0.25 * lum * np.array([1, 0.9, 0.7]), rtol=1e-5, atol=1e-6),
+      "Evening: the street light at 25 % in its own color, the panel off")
+lights = scened.GetLights()
+check([lights.GetLightSceneName(i) for i in range(lights.GetNumberOfLightScenes())] == ["Evening", "Work"],
+      "the file's scenes by name")
+scened.SetLightScene("")
+scened.AddScheduleRow(0.0, "scene:Evening", 1, 1, 1, 1, "on")
+scened.AddScheduleRow(10.0, "scene:Work", 1, 1, 1, 1, "on")
+scened.UpdateTimeStep(5.0)
+halfway = relight.point_array(scened.GetOutput(), "Radiosity")
+# Halfway from Evening to Work: the street light's color and dimming halfway each (color
+# (1, 0.95, 0.85), 62.5 %); the panel held off from the keyframe before, as on/off is.
+check(np.allclose(halfway, 0.625 * np.array([1, 0.95, 0.85]) * lum, rtol=1e-5, atol=1e-6),
+      "the schedule blends Evening into Work: halfway at t = 5")
+scened.SetLightScene("Party")
+catcher = relight.ErrorCatcher(scened)
+scened.Update()
+check(catcher.failed() and "no light scene is called 'Party' (there are Evening, Work)" in catcher.first_error(),
+      f"an unknown scene is said: {catcher.first_error()}")
+
 # A work plane: EN 12464-1's grid over the cube (3 x 3 m inside a 0.5 m border: p = 0.2 x
 # 5^log10(3) = 0.43 m, so 7 x 7 points at the centres of their cells), 0.8 m up. In a black
 # room only the light reaches it: a bulb of 1 W/sr gives cos(theta) / d^2, exactly.
