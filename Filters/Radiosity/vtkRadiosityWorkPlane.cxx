@@ -165,7 +165,7 @@ int vtkRadiosityWorkPlane::RequestData(
       array->SetNumberOfTuples(static_cast<vtkIdType>(grid.Points.size()));
       for (size_t p = 0; p < grid.Points.size(); ++p)
       {
-        const radiosity::Vec3& e = at.Radiosity[p * s + m];
+        const radiosity::Vec3& e = at.Irradiance[p * s + m];
         array->SetTuple3(static_cast<vtkIdType>(p), e.x, e.y, e.z);
         combined[p] += radiosity::Dot(radiosity::Times(colors[m], e), { 1.0 / 3, 1.0 / 3, 1.0 / 3 });
       }

@@ -75,6 +75,23 @@ def solve(element):
     return solver.GetOutput(), time.perf_counter() - start
 
 
+def cost(element, runs=3):
+    """Solve seconds of the office with the six luminaires, and with six area lights (disks
+    of the luminaires' openings, facing down) in their places: medians of `runs`, one run."""
+    faces = room_faces()
+    scene = relight.make_scene([f for f, _ in faces], [(r, r, r) for _, r in faces], [-1] * len(faces))
+    lit = relight.mark_lights(scene, *[relight.luminaire(n, p, q) for n, p, q in luminaires()])
+    disks = relight.mark_lights(scene, *[relight.area_light(n, centre=q, normal=(0, 0, -1), size=0.3, disk=True)
+                                         for n, _, q in luminaires()])
+    seconds = {"luminaires": [], "area lights": []}
+    for _ in range(runs):
+        for label, marked in (("luminaires", lit), ("area lights", disks)):
+            start = time.perf_counter()
+            relight.solve(marked, patch_size=1.0, element_size=element, lamp_grading=0)
+            seconds[label].append(time.perf_counter() - start)
+    return {label: float(np.median(values)) for label, values in seconds.items()}
+
+
 def probes(out):
     """Mesh points on a 0.5 m grid of the floor and the walls, 0.5 m from every edge."""
     points = vtk_to_numpy(out.GetPoints().GetData()).astype(float)
@@ -139,7 +156,14 @@ def main():
     parser.add_argument("--element", type=float, default=0.25, help="element size (m)")
     parser.add_argument("--ad", type=int, default=4096, help="rtrace's ambient rays at each probe")
     parser.add_argument("--out", default=str(ROOT / "out" / "bench-luminaires"))
+    parser.add_argument("--cost", type=float, default=0,
+                        help="only time the solve at this element size against area lights in the same places")
     args = parser.parse_args()
+    if args.cost > 0:
+        times = cost(args.cost)
+        print(f"element {args.cost} m: luminaires {times['luminaires']:.2f} s, area lights {times['area lights']:.2f} s, "
+              f"ratio {times['luminaires'] / times['area lights']:.2f} (medians of 3, one run)")
+        return
     out_dir = pathlib.Path(args.out)
     out_dir.mkdir(parents=True, exist_ok=True)
     solved, seconds = solve(args.element)

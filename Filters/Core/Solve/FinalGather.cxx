@@ -372,24 +372,27 @@ public:
     }
   }
 
-  /// Point p's values into radiosity[p * S ...] and direct[p * S ...]; returns its rays.
-  long long Evaluate(size_t p, Vec3* radiosity, Vec3* direct, std::vector<Vec3>& scratch, char& hidden) const
+  /// Point p's values into radiosity[p * S ...], direct[p * S ...] and the light arriving,
+  /// irradiance[p * S ...]; returns its rays.
+  long long Evaluate(size_t p, Vec3* radiosity, Vec3* direct, Vec3* irradiance, std::vector<Vec3>& scratch,
+    char& hidden) const
   {
     const PointFrame& f = Frames[p];
     if (!f.Used)
     {
       return 0;
     }
-    std::vector<Vec3> irradiance(S), gathered(S);
-    long long rays = f.Element < 0 ? DirectLight(p, f, irradiance, scratch) : SpreadDirectLight(p, f, irradiance, scratch);
+    std::vector<Vec3> arriving(S), gathered(S);
+    long long rays = f.Element < 0 ? DirectLight(p, f, arriving, scratch) : SpreadDirectLight(p, f, arriving, scratch);
     int backs = 0;
     rays += Interreflection(p, f, gathered, backs);
     hidden = 2 * backs > Side * Side;
     for (int m = 0; m < S; ++m)
     {
       const Vec3& e = PointEmission[p * S + m];
-      direct[m] = e + Times(f.Reflectance, irradiance[m]);
+      direct[m] = e + Times(f.Reflectance, arriving[m]);
       radiosity[m] = direct[m] + Times(f.Reflectance, gathered[m]);
+      irradiance[m] = arriving[m] + gathered[m];
     }
     return rays;
   }
@@ -665,6 +668,7 @@ void CopyToCopies(const std::vector<int>& rep, int solutions, GatheredPoints& ou
     {
       out.Radiosity[p * solutions + m] = out.Radiosity[static_cast<size_t>(r) * solutions + m];
       out.Direct[p * solutions + m] = out.Direct[static_cast<size_t>(r) * solutions + m];
+      out.Irradiance[p * solutions + m] = out.Irradiance[static_cast<size_t>(r) * solutions + m];
     }
     if (r >= 0)
     {
@@ -710,6 +714,7 @@ GatheredPoints Run(const Gather& gather, int solutions, const WorkerPool& pool, 
   const size_t points = gather.Points();
   out.Radiosity.assign(points * solutions, Vec3());
   out.Direct.assign(points * solutions, Vec3());
+  out.Irradiance.assign(points * solutions, Vec3());
   const int blocks = static_cast<int>(std::min<size_t>(64, std::max<size_t>(1, points / 256)));
   std::vector<double> pointRays(points, 0), hidden(points, 0);
   out.Hidden.assign(points, 0);
@@ -724,7 +729,8 @@ GatheredPoints Run(const Gather& gather, int solutions, const WorkerPool& pool, 
         if (p % share == rank)
         {
           pointRays[p] = static_cast<double>(
-            gather.Evaluate(p, &out.Radiosity[p * solutions], &out.Direct[p * solutions], scratch, out.Hidden[p]));
+            gather.Evaluate(p, &out.Radiosity[p * solutions], &out.Direct[p * solutions], &out.Irradiance[p * solutions],
+              scratch, out.Hidden[p]));
         }
       }
     });
@@ -736,6 +742,7 @@ GatheredPoints Run(const Gather& gather, int solutions, const WorkerPool& pool, 
   {
     SumOverRanks(ranks, out.Radiosity);
     SumOverRanks(ranks, out.Direct);
+    SumOverRanks(ranks, out.Irradiance);
     std::copy(out.Hidden.begin(), out.Hidden.end(), hidden.begin());
     ranks.Sum(hidden);
     ranks.Sum(pointRays);
@@ -760,12 +767,12 @@ namespace
 /// visible points it shares an element with, as a baker dilates its texels into such
 /// places, so interpolation does not carry the dark out past the edge (a ring around every
 /// lamp of the demo room otherwise). A few passes reach hidden points beside hidden ones.
-void FillHidden(const SceneMesh& mesh, int solutions, std::vector<char>& hidden, std::vector<Vec3>& radiosity,
-  std::vector<Vec3>& direct)
+void FillHidden(const SceneMesh& mesh, int solutions, std::vector<char>& hidden,
+  const std::vector<std::vector<Vec3>*>& values)
 {
   for (int pass = 0; pass < 4; ++pass)
   {
-    std::vector<Vec3> sum(radiosity.size()), sumDirect(direct.size());
+    std::vector<std::vector<Vec3>> sums(values.size(), std::vector<Vec3>(hidden.size() * solutions));
     std::vector<int> count(hidden.size(), 0);
     for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
     {
@@ -779,10 +786,12 @@ void FillHidden(const SceneMesh& mesh, int solutions, std::vector<char>& hidden,
             continue;
           }
           ++count[ids[a]];
-          for (int m = 0; m < solutions; ++m)
+          for (size_t v = 0; v < values.size(); ++v)
           {
-            sum[static_cast<size_t>(ids[a]) * solutions + m] += radiosity[static_cast<size_t>(ids[b]) * solutions + m];
-            sumDirect[static_cast<size_t>(ids[a]) * solutions + m] += direct[static_cast<size_t>(ids[b]) * solutions + m];
+            for (int m = 0; m < solutions; ++m)
+            {
+              sums[v][static_cast<size_t>(ids[a]) * solutions + m] += (*values[v])[static_cast<size_t>(ids[b]) * solutions + m];
+            }
           }
         }
       }
@@ -790,10 +799,12 @@ void FillHidden(const SceneMesh& mesh, int solutions, std::vector<char>& hidden,
     bool filled = false;
     for (size_t p = 0; p < hidden.size(); ++p)
     {
-      for (int m = 0; m < solutions && count[p] > 0; ++m)
+      for (size_t v = 0; v < values.size() && count[p] > 0; ++v)
       {
-        radiosity[p * solutions + m] = sum[p * solutions + m] * (1.0 / count[p]);
-        direct[p * solutions + m] = sumDirect[p * solutions + m] * (1.0 / count[p]);
+        for (int m = 0; m < solutions; ++m)
+        {
+          (*values[v])[p * solutions + m] = sums[v][p * solutions + m] * (1.0 / count[p]);
+        }
       }
       filled = filled || count[p] > 0;
       hidden[p] = hidden[p] && count[p] == 0;
@@ -840,7 +851,7 @@ GatheredPoints GatherAtPoints(const SceneMesh& mesh, const SceneGeometry& geomet
   const std::vector<Emitter> emitters = MakeEmitters(mesh, geometry, emission, solutions);
   const WorkerPool pool(threads);
   const int passes = std::max(0, settings.Sweeps) + 1;
-  std::vector<Vec3> source = radiosity, cellDirect;
+  std::vector<Vec3> source = radiosity, cellDirect, cellIrradiance;
   long long sweepRays = 0;
   for (int sweep = 0; sweep + 1 < passes; ++sweep)
   {
@@ -853,12 +864,14 @@ GatheredPoints GatherAtPoints(const SceneMesh& mesh, const SceneGeometry& geomet
     {
       elements.Radiosity.clear();
       elements.Direct.clear();
+      elements.Irradiance.clear();
       elements.Rays = sweepRays;
       return elements;
     }
     KeepUnswept(mesh, geometry, source, solutions, elements);
     source = std::move(elements.Radiosity);
     cellDirect = std::move(elements.Direct);
+    cellIrradiance = std::move(elements.Irradiance);
   }
   std::vector<Vec3> pointEmission;
   const std::vector<int> rep = Representatives(mesh, geometry);
@@ -878,6 +891,7 @@ GatheredPoints GatherAtPoints(const SceneMesh& mesh, const SceneGeometry& geomet
     out.OutOfTime = true;
     out.Cells = std::move(source);
     out.CellsDirect = std::move(cellDirect);
+    out.CellsIrradiance = std::move(cellIrradiance);
     return out;
   }
   std::vector<PointFrame> frames = MakeFrames(mesh, geometry, emission, solutions, rep, pointEmission);
@@ -890,16 +904,18 @@ GatheredPoints GatherAtPoints(const SceneMesh& mesh, const SceneGeometry& geomet
   {
     out.Radiosity.clear();
     out.Direct.clear();
+    out.Irradiance.clear();
   }
   else
   {
     CopyToCopies(rep, solutions, out);
-    FillHidden(mesh, solutions, out.Hidden, out.Radiosity, out.Direct);
+    FillHidden(mesh, solutions, out.Hidden, { &out.Radiosity, &out.Direct, &out.Irradiance });
   }
   if (!out.Aborted && passes > 1)
   {
     out.Cells = std::move(source);
     out.CellsDirect = std::move(cellDirect);
+    out.CellsIrradiance = std::move(cellIrradiance);
   }
   return out;
 }

@@ -56,9 +56,12 @@ struct GatheredPoints
   /// interreflection, per solution. Empty where the gather was stopped.
   std::vector<Vec3> Radiosity;
   std::vector<Vec3> Direct; ///< emission plus reflected direct light only, same layout
+  /// The light arriving on the front side (irradiance: illuminance in lux for a luminaire
+  /// in metres), before the reflectance: a black surface has one too. Same layout.
+  std::vector<Vec3> Irradiance;
   /// The last sweep's element values ([element * solutions + m], each gathered at the
   /// element's centroid, inside it) and their direct part; empty without sweeps.
-  std::vector<Vec3> Cells, CellsDirect;
+  std::vector<Vec3> Cells, CellsDirect, CellsIrradiance;
   /// Per point, 1 where it saw mostly back faces and no visible neighbour could fill in
   /// for it (see FillHidden in FinalGather.cxx).
   std::vector<char> Hidden;
@@ -83,8 +86,8 @@ GatheredPoints GatherAtPoints(const SceneMesh& mesh, const SceneGeometry& geomet
   bool shadows = true);
 
 /// The irradiance at free points (a work plane in the air, a meter's cell) facing
-/// `normals`, per solution ([point * solutions + m] in Radiosity, the direct part in
-/// Direct), gathered as the mesh's points are: direct light from every emitter and point
+/// `normals`, per solution ([point * solutions + m] in Irradiance, and in Radiosity as a
+/// white surface there would send it; the direct part in Direct), gathered as the mesh's points are: direct light from every emitter and point
 /// light with shadow rays, interreflection along `settings.Rays` cosine rays into the
 /// element solution `radiosity` (whose emitters' `emission` is left out: they were taken
 /// as direct light). No point is on a surface, so none is hidden and none takes a

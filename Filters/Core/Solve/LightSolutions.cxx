@@ -321,7 +321,32 @@ void GatherInto(const RadiositySolver& solver, const SceneMesh& mesh, const std:
                        : CellsFromPoints(mesh, solver.Geometry(), points.Direct, out.Direct, out.Solutions);
     out.PointDirect = std::move(points.Direct);
   }
+  out.Irradiance = swept ? std::move(points.CellsIrradiance)
+                         : CellsFromPoints(mesh, solver.Geometry(), points.Irradiance, out.Irradiance, out.Solutions);
+  out.PointIrradiance = std::move(points.Irradiance);
   out.PointRadiosity = std::move(points.Radiosity);
+}
+
+/// Each element's irradiance from its radiosity: what it reflects over its reflectance,
+/// per channel (0 where the reflectance is 0: a black surface shows nothing of it).
+std::vector<Vec3> IrradianceOfElements(const SceneMesh& mesh, const std::vector<Vec3>& emission,
+  const std::vector<Vec3>& radiosity, int solutions)
+{
+  std::vector<Vec3> out(radiosity.size());
+  for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
+  {
+    const Vec3& rho = mesh.Reflectance[e];
+    for (int m = 0; m < solutions; ++m)
+    {
+      const size_t at = static_cast<size_t>(e) * solutions + m;
+      const Vec3 reflected = radiosity[at] - (at < emission.size() ? emission[at] : Vec3());
+      for (int c = 0; c < 3; ++c)
+      {
+        out[at][c] = rho[c] > 0 ? std::max(0.0, reflected[c]) / rho[c] : 0.0;
+      }
+    }
+  }
+  return out;
 }
 
 /// The emission each mode solves for (the cells' own, with room for the point lights'
@@ -408,6 +433,9 @@ Solution SolveLights(const RadiositySolver& solver, const SceneMesh& mesh,
   {
     SettlePointLights(mesh, solver.Geometry(), pointLights, points.Irradiance, points.First, out);
   }
+  // The element values' irradiance first: where the gather runs it replaces it, and a
+  // gather stopped short keeps it.
+  out.Irradiance = IrradianceOfElements(mesh, emission, out.Radiosity, out.Solutions);
   if (options.Gather.Rays > 0 && !out.Statistics.Aborted)
   {
     const std::chrono::duration<double> spent = std::chrono::steady_clock::now() - start;
@@ -421,7 +449,7 @@ Solution SolveLights(const RadiositySolver& solver, const SceneMesh& mesh,
 double SolveMemory(long long elements, long long points, int solutions, bool separateDirect)
 {
   const double perSolution = elements * (3 * sizeof(Vec3) + 3 * sizeof(float)) + points * (sizeof(Vec3) + 3 * sizeof(float));
-  return perSolution * solutions * (separateDirect ? 2 : 1);
+  return perSolution * solutions * (separateDirect ? 3 : 2); // radiosity, irradiance, the direct part
 }
 
 } // namespace radiosity

@@ -54,8 +54,8 @@ Solution SolveLights(const RadiositySolver& solver, const SceneMesh& mesh,
 
 /// Bytes a solve of `solutions` solutions holds at its peak, with the filter's outputs:
 /// per element and solution its emission, the solver's radiosity, the solution and the
-/// float output; per point and solution the averaged value and its float output (twice
-/// with the direct part kept).
+/// float output; per point and solution the averaged value and its float output; twice
+/// for the irradiance (the Illuminance arrays), three times with the direct part kept.
 double SolveMemory(long long elements, long long points, int solutions, bool separateDirect);
 
 } // namespace radiosity

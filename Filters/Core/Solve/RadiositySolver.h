@@ -190,6 +190,12 @@ struct Solution
   /// points without sweeps), no longer the element solution.
   std::vector<Vec3> PointRadiosity;
   std::vector<Vec3> PointDirect;
+  /// The light arriving on each element's and point's front side, per solution (same
+  /// layouts): illuminance in lux for a luminaire where the scene is in metres. The
+  /// gather's where it ran (a black surface too); else (B - emission) / reflectance, 0
+  /// where the reflectance is 0. Filled by SolveLights; PointIrradiance only with the gather.
+  std::vector<Vec3> Irradiance;
+  std::vector<Vec3> PointIrradiance;
   long long GatherRays = 0; ///< the rays the gather cast (the statistics count the solve's)
   int GatherPointRays = 0;  ///< the cosine rays a point took (fewer than asked on a TimeBudget)
   bool GatherOutOfTime = false; ///< the TimeBudget was spent before the points were gathered

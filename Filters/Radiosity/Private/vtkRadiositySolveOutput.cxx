@@ -189,6 +189,11 @@ void AddSolutionArrays(vtkPolyData* output, const SceneInput& scene, const radio
     AddPerSolution(output, mesh, solver.Geometry(), result.Direct, result.PointDirect, result.Solutions, names,
       "Direct", combined);
   }
+  if (!result.Irradiance.empty())
+  {
+    AddPerSolution(output, mesh, solver.Geometry(), result.Irradiance, result.PointIrradiance, result.Solutions, names,
+      "Illuminance", combined);
+  }
 }
 
 void AddLightFields(vtkAlgorithm* self, vtkFieldData* fields, const SceneInput& scene,

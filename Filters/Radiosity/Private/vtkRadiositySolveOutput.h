@@ -46,7 +46,8 @@ std::string CheckSolveMemory(
 /// '+'; one empty name for a combined solve.
 std::vector<std::string> SolutionNames(const SceneInput& scene, bool combined);
 
-/// The solution arrays (cells and points, Radiosity_<name> and Direct_<name>) and the
+/// The solution arrays (cells and points, Radiosity_<name>, Illuminance_<name> and
+/// Direct_<name>) and the
 /// split patches' PatchId on `output`, a shallow copy of the input.
 void AddSolutionArrays(vtkPolyData* output, const SceneInput& scene, const radiosity::RadiositySolver& solver,
   const radiosity::Solution& result, const std::vector<std::string>& names, bool combined);

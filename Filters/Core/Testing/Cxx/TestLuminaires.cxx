@@ -175,9 +175,22 @@ TEST(Luminaires, PointValuesTakeLambertsPointSource)
     const double r2 = Dot(d, d);
     const double expected = 0.5 * light.Toward(d * -1.0) * (d.z / std::sqrt(r2)) / r2;
     EXPECT_NEAR(s.PointRadiosity[p].x, expected, 0.01 * expected + 1e-9) << x.x << " " << x.y;
+    EXPECT_NEAR(s.PointIrradiance[p].x, expected / 0.5, 0.02 * expected + 1e-9) << x.x << " " << x.y; // lux
     ++checked;
   }
   EXPECT_GT(checked, 100);
+  // A black floor sends nothing back and still has its illuminance.
+  for (size_t e = 0; e < floor.Reflectance.size(); ++e)
+  {
+    floor.Reflectance[e] = { 0, 0, 0 };
+  }
+  const RadiositySolver black(floor);
+  const Solution dark = SolveLights(black, floor, LightGrouping::OnePerLight(0), {}, SolutionMode::LightTagged, o, { light });
+  const size_t centre = floor.Points.size() / 2; // (0, 0): 2.2 m under the lamp, 0.32 m across
+  const Vec3 d = light.Position - floor.Points[centre];
+  const double r2 = Dot(d, d), lux = light.Toward(d * -1.0) * (d.z / std::sqrt(r2)) / r2;
+  EXPECT_EQ(dark.PointRadiosity[centre].x, 0.0);
+  EXPECT_NEAR(dark.PointIrradiance[centre].x, lux, 0.01 * lux);
 }
 
 TEST(Luminaires, FreePointsTakeTheirIrradianceInClosedForm)
@@ -207,13 +220,13 @@ TEST(Luminaires, FreePointsTakeTheirIrradianceInClosedForm)
   const std::vector<Vec3> at{ { 0, 0, 0.8 }, { 1.2, -0.4, 0.8 } }, up{ { 0, 0, 1 }, { 0, 0, 1 } };
   const GatheredPoints g =
     IrradianceAtPoints(floor, solver.Geometry(), solver.Rays(), wide, s.Radiosity, 2, at, up, settings);
-  ASSERT_EQ(g.Radiosity.size(), 4u);
-  EXPECT_NEAR(g.Radiosity[0].x, 0.2394565, 1e-4); // the lamp 1 m above the first point
+  ASSERT_EQ(g.Irradiance.size(), 4u);
+  EXPECT_NEAR(g.Irradiance[0].x, 0.2394565, 1e-4); // the lamp 1 m above the first point
   for (size_t p = 0; p < at.size(); ++p)
   {
     const Vec3 d = lights[0].Position - at[p];
     const double r2 = Dot(d, d), expected = lights[0].Toward(d * -1.0) * (d.z / std::sqrt(r2)) / r2;
-    EXPECT_NEAR(g.Radiosity[p * 2 + 1].x, expected, 1e-9 * expected) << "point " << p;
+    EXPECT_NEAR(g.Irradiance[p * 2 + 1].x, expected, 1e-9 * expected) << "point " << p;
   }
   const SceneMesh furnace = Box(2, 6, 2, { 0.5, 0.5, 0.5 }, [](int) { return 0; });
   const RadiositySolver hot(furnace);
@@ -221,7 +234,7 @@ TEST(Luminaires, FreePointsTakeTheirIrradianceInClosedForm)
   const GatheredPoints inside = IrradianceAtPoints(furnace, hot.Geometry(), hot.Rays(),
     SolutionEmission(furnace, LightGrouping::OnePerLight(1), {}), f.Radiosity, 1, { { 0.3, 1.1, 0.7 }, { 1, 1, 1 } },
     { { 0, 0, 1 }, { 1, -1, 0.5 } }, GatherSettings());
-  for (const Vec3& e : inside.Radiosity)
+  for (const Vec3& e : inside.Irradiance)
   {
     EXPECT_NEAR(e.x, 2.0, 2e-3);
   }

@@ -47,6 +47,11 @@ print(f"CIE 171 cube, rho 0.5: mean illuminance {mean:.2f} lx, closed form {expe
 # The element solution alone is within 0.02 %; the final gather's sweep (16 rays an
 # element) scatters it: -0.49 % at 0.25 m elements, +0.07 % at 0.125 m, -0.19 % at 0.5 m.
 check(abs(mean / expected - 1) < 1e-2, "the cube's mean illuminance is flux / (S (1 - rho)) within 1 %")
+area = relight.cell_areas(out)
+lux_cells = relight.cell_array(out, "Illuminance_Spot")[:, 0]
+lux_mean = float((area * lux_cells).sum() / area.sum())
+check(abs(lux_mean / expected - 1) < 1e-2 and relight.point_array(out, "Illuminance_Spot").shape[1] == 3,
+      f"the solver's Illuminance arrays give it directly: {lux_mean:.2f} lx")
 
 # A luminaire beside a lamp cell: two lights, each its own solution; the relight filter
 # weighs the luminaire like any light (its dimming is its intensity).
