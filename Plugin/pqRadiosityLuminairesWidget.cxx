@@ -4,6 +4,8 @@
 #include "pqActiveObjects.h"
 #include "pqFileDialog.h"
 
+#include "vtkRadiosityLightMarker.h"
+
 #include <QComboBox>
 #include <QPushButton>
 #include <QRegularExpression>
@@ -25,7 +27,16 @@ enum Column
   Rotation,
   Color
 };
-const QStringList kKinds{ "goniometric", "point", "spot", "lambertian" };
+/// The kinds of light, as the core's registry lists them.
+QStringList Kinds()
+{
+  QStringList kinds;
+  for (int i = 0; i < vtkRadiosityLightMarker::GetNumberOfLightKinds(); ++i)
+  {
+    kinds << vtkRadiosityLightMarker::GetLightKindName(i);
+  }
+  return kinds;
+}
 }
 
 pqRadiosityLuminairesWidget::pqRadiosityLuminairesWidget(vtkSMProxy* proxy, vtkSMProperty* property, QWidget* parent)
@@ -52,14 +63,15 @@ void pqRadiosityLuminairesWidget::fillCell(int row, int column)
   if (column == Kind)
   {
     auto* kind = new QComboBox(this->Table);
-    kind->addItems(kKinds);
-    kind->setCurrentIndex(std::max(0, kKinds.indexOf(this->cell(row, column).value(0))));
-    QObject::connect(kind, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this, kind](int index) {
+    const QStringList kinds = Kinds();
+    kind->addItems(kinds);
+    kind->setCurrentIndex(std::max(0, kinds.indexOf(this->cell(row, column).value(0))));
+    QObject::connect(kind, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this, kind](int) {
       for (int r = 0; r < this->Table->rowCount(); ++r)
       {
         if (this->Table->cellWidget(r, Kind) == kind)
         {
-          this->Rows[this->at(r, Kind)] = kKinds[index];
+          this->Rows[this->at(r, Kind)] = kind->currentText();
           Q_EMIT this->rowsChanged();
         }
       }

@@ -332,6 +332,16 @@ void vtkRadiosityLightMarker::AddLuminaire(const char* name, const char* kind, c
   this->Modified();
 }
 
+int vtkRadiosityLightMarker::GetNumberOfLightKinds()
+{
+  return static_cast<int>(radiosity::LightKinds().size());
+}
+
+const char* vtkRadiosityLightMarker::GetLightKindName(int i)
+{
+  return i >= 0 && i < GetNumberOfLightKinds() ? radiosity::LightKinds()[i].Name : "";
+}
+
 void vtkRadiosityLightMarker::ClearLuminaires()
 {
   if (!this->Chosen->Luminaires.empty())

@@ -85,6 +85,13 @@ public:
   void ClearLuminaires();
   ///@}
 
+  ///@{
+  /// The kinds a luminaire may be, from the core's one registry (LightKinds()): the
+  /// panel's Kind list and Python read them here.
+  static int GetNumberOfLightKinds();
+  static const char* GetLightKindName(int i);
+  ///@}
+
   /// Optional second input: a vtkSelection whose cells are chosen too.
   void SetSelectionConnection(vtkAlgorithmOutput* selection) { this->SetInputConnection(1, selection); }
 

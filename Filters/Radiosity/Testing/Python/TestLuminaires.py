@@ -158,6 +158,9 @@ catcher = relight.ErrorCatcher(broken_mover)
 broken_mover.Update()
 check(catcher.failed() and "/nowhere/a.ies" in catcher.first_error(), f"a moving luminaire's missing file is said: {catcher.first_error()}")
 
+kinds = [relight.vtkRadiosityLightMarker.GetLightKindName(i) for i in range(relight.vtkRadiosityLightMarker.GetNumberOfLightKinds())]
+check(kinds == ["point", "lambertian", "spot", "goniometric"], f"the kinds of light, from the one registry: {kinds}")
+
 # Each way a luminaire can be wrong: one error that says which and why, no output.
 def refused(make, words):
     try:
