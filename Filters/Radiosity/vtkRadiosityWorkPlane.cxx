@@ -112,6 +112,10 @@ int vtkRadiosityWorkPlane::RequestData(
     const std::vector<radiosity::Vec3> solution = error.empty() ? ElementSolution(input, names, error) : std::vector<radiosity::Vec3>();
     double bounds[6];
     input->GetBounds(bounds);
+    if (std::any_of(this->Area, this->Area + 6, [](double v) { return v != 0; }))
+    {
+      std::copy(this->Area, this->Area + 6, bounds);
+    }
     const radiosity::WorkPlaneGrid grid =
       error.empty() ? radiosity::LayWorkPlane(bounds, UpOf(this->UpAxis, bounds), this->Height, this->Border, this->Spacing, error)
                     : radiosity::WorkPlaneGrid();
@@ -199,4 +203,6 @@ void vtkRadiosityWorkPlane::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Spacing: " << this->Spacing << "\n";
   os << indent << "UpAxis: " << this->UpAxis << "\n";
   os << indent << "GatherRays: " << this->GatherRays << "\n";
+  os << indent << "Area: " << this->Area[0] << " " << this->Area[1] << " " << this->Area[2] << " " << this->Area[3] << " "
+     << this->Area[4] << " " << this->Area[5] << "\n";
 }

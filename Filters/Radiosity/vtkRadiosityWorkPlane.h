@@ -54,6 +54,13 @@ public:
   ///@}
 
   ///@{
+  /// The box to lay the plane in (xmin, xmax, ymin, ymax, zmin, zmax: a room's, its floor
+  /// the lowest along UpAxis); all zero (the default) takes the scene's bounds.
+  vtkSetVector6Macro(Area, double);
+  vtkGetVector6Macro(Area, double);
+  ///@}
+
+  ///@{
   /// Cosine rays per point into the element solution for the reflected light. Default 256.
   vtkSetClampMacro(GatherRays, int, 1, 65536);
   vtkGetMacro(GatherRays, int);
@@ -73,6 +80,7 @@ private:
   double Spacing = 0;
   int UpAxis = -1;
   int GatherRays = 256;
+  double Area[6] = { 0, 0, 0, 0, 0, 0 };
 };
 
 #endif

@@ -26,16 +26,16 @@ public:
 };
 } // namespace
 
-std::shared_ptr<const LightDistribution> MakeIsotropicLight(const LightParameters&, std::string&)
+std::shared_ptr<const LightDistribution> MakeIsotropicLight(const LightParameters& parameters, std::string& error)
 {
   static const auto shared = std::make_shared<const Isotropic>();
-  return shared;
+  return WithLumens(shared, parameters, error);
 }
 
-std::shared_ptr<const LightDistribution> MakeLambertianLight(const LightParameters&, std::string&)
+std::shared_ptr<const LightDistribution> MakeLambertianLight(const LightParameters& parameters, std::string& error)
 {
   static const auto shared = std::make_shared<const Lambertian>();
-  return shared;
+  return WithLumens(shared, parameters, error);
 }
 
 } // namespace radiosity

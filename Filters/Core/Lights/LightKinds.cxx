@@ -42,12 +42,49 @@ std::string LightParameters::Unused() const
   return unused;
 }
 
+namespace
+{
+/// Another distribution's shape at another flux.
+class Scaled : public LightDistribution
+{
+public:
+  Scaled(std::shared_ptr<const LightDistribution> shape, double factor)
+    : Shape(std::move(shape))
+    , Factor(factor)
+  {
+  }
+  double Intensity(const Vec3& direction) const override { return Factor * Shape->Intensity(direction); }
+  double Flux() const override { return Factor * Shape->Flux(); }
+  const char* Kind() const override { return Shape->Kind(); }
+
+private:
+  std::shared_ptr<const LightDistribution> Shape;
+  double Factor;
+};
+} // namespace
+
+std::shared_ptr<const LightDistribution> WithLumens(
+  std::shared_ptr<const LightDistribution> made, const LightParameters& parameters, std::string& error)
+{
+  double lumens;
+  if (!made || !parameters.Number("lumens", 0, lumens, error))
+  {
+    return nullptr;
+  }
+  if (lumens < 0)
+  {
+    error = "lumens must be 0 or more (0: the kind's own unit), not " + std::to_string(lumens);
+    return nullptr;
+  }
+  return lumens > 0 ? std::make_shared<const Scaled>(made, lumens / made->Flux()) : made;
+}
+
 const std::vector<LightKind>& LightKinds()
 {
   static const std::vector<LightKind> kinds{
-    { "point", "(none)", MakeIsotropicLight },
-    { "lambertian", "(none)", MakeLambertianLight },
-    { "spot", "cone (degrees, 30), falloff (degrees, 5)", MakeSpotLight },
+    { "point", "lumens (1 W/sr if left out)", MakeIsotropicLight },
+    { "lambertian", "lumens (1 W/sr along its aim if left out)", MakeLambertianLight },
+    { "spot", "cone (degrees, 30), falloff (degrees, 5), lumens (1 W/sr in the cone if left out)", MakeSpotLight },
     { "goniometric", "file (IES or EULUMDAT), lumens (the file's)", MakeGoniometricLight },
   };
   return kinds;

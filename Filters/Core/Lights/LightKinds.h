@@ -65,6 +65,12 @@ struct LightKind
   std::shared_ptr<const LightDistribution> (*Make)(const LightParameters& parameters, std::string& error);
 };
 
+/// `made`, scaled so that its flux is the parameter `lumens` where given (0 or absent:
+/// as made), for the kinds that have no lumens of their own; null with `error` for a
+/// negative or non-numeric one.
+std::shared_ptr<const LightDistribution> WithLumens(
+  std::shared_ptr<const LightDistribution> made, const LightParameters& parameters, std::string& error);
+
 /// Every kind of point light: point, lambertian, spot, goniometric.
 const std::vector<LightKind>& LightKinds();
 

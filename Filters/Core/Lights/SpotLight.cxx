@@ -69,7 +69,7 @@ std::shared_ptr<const LightDistribution> MakeSpotLight(const LightParameters& pa
     error = "a spot light's cone and falloff must be 0 or more and add up to more than 0 and at most 180 degrees";
     return nullptr;
   }
-  return std::make_shared<const Spot>(cone, falloff);
+  return WithLumens(std::make_shared<const Spot>(cone, falloff), parameters, error);
 }
 
 } // namespace radiosity

@@ -77,11 +77,13 @@ def luminaire(name, path=None, position=(0.0, 0.0, 0.0), aim=(0.0, 0.0, -1.0), r
                      _numbers(rotation, 1, f"{what} rotation")[0], _numbers(color, 3, f"{what} color", 0.0))
 
 
-def work_plane(solved, height=0.8, border=0.5, spacing=0.0, up=None, rays=256):
+def work_plane(solved, height=0.8, border=0.5, spacing=0.0, up=None, rays=256, room=None):
     """The illuminance per light on a calculation grid `height` above the solved scene's
     floor, `border` in from its sides, at most `spacing` apart (0: EN 12464-1's for the
     area), gathered from the solver's output (`solved`: its output data or the solver).
-    `up`: "x", "y" or "z" (None: the scene's shortest side). Returns the grid (vtkPolyData:
+    `up`: "x", "y" or "z" (None: the scene's shortest side). `room`: the name of a room of
+    an IFC file (its IfcSpace, field arrays RoomNames and RoomBounds): the plane is laid in
+    that room's box instead of the whole scene. Returns the grid (vtkPolyData:
     point arrays Illuminance_<light> and Illuminance, field arrays IlluminanceMean,
     IlluminanceMinimum, IlluminanceMaximum, Uniformity). Raises RuntimeError with the
     filter's message where it cannot be laid."""
@@ -97,6 +99,16 @@ def work_plane(solved, height=0.8, border=0.5, spacing=0.0, up=None, rays=256):
     plane.SetSpacing(_numbers(spacing, 1, "work_plane: spacing", 0.0)[0])
     plane.SetUpAxis(-1 if up is None else AXES[up])
     plane.SetGatherRays(int(rays))
+    if room is not None:
+        data = solved.GetOutput() if hasattr(solved, "GetOutput") else solved
+        if hasattr(solved, "Update"):
+            solved.Update()
+        fields = data.GetFieldData()
+        names, bounds = fields.GetAbstractArray("RoomNames"), fields.GetArray("RoomBounds")
+        rooms = [names.GetValue(i) for i in range(names.GetNumberOfValues())] if names is not None and bounds else []
+        if room not in rooms:
+            raise ValueError(f"work_plane: no room is called {room!r}; the scene's rooms are {rooms}")
+        plane.SetArea(*bounds.GetTuple(rooms.index(room)))
     catcher = ErrorCatcher(plane)
     plane.Update()
     if catcher.failed():

@@ -59,7 +59,8 @@ TEST(LightKinds, EveryKindIsMadeByNameAndSaysWhatItDoesNotTake)
   EXPECT_FALSE(MakeLightDistribution("laser", {}, error));
   EXPECT_EQ(error, "no kind of light is called 'laser' (there are point, lambertian, spot, goniometric)");
   EXPECT_FALSE(MakeLightDistribution("spot", { { "cone", "20" }, { "fallof", "3" } }, error));
-  EXPECT_EQ(error, "a spot light does not take fallof (it takes cone (degrees, 30), falloff (degrees, 5))");
+  EXPECT_EQ(error, "a spot light does not take fallof (it takes cone (degrees, 30), falloff (degrees, 5), lumens (1 W/sr "
+                   "in the cone if left out))");
   EXPECT_FALSE(MakeLightDistribution("spot", { { "cone", "wide" } }, error));
   EXPECT_EQ(error, "'cone' is 'wide', not a number");
   EXPECT_FALSE(MakeLightDistribution("goniometric", {}, error));
@@ -72,6 +73,8 @@ TEST(LightKinds, FluxInClosedForm)
 {
   EXPECT_NEAR(Made("point", {})->Flux(), 4 * Pi, 1e-12);
   EXPECT_NEAR(Made("lambertian", {})->Flux(), Pi, 1e-12);
+  EXPECT_NEAR(Made("lambertian", { { "lumens", "1000" } })->Flux(), 1000, 1e-9);
+  EXPECT_NEAR(Made("lambertian", { { "lumens", "1000" } })->Intensity({ 0, 0, 1 }), 1000 / Pi, 1e-9);
   // A hard-edged spot: the cap's solid angle.
   EXPECT_NEAR(Made("spot", { { "cone", "30" }, { "falloff", "0" } })->Flux(), 2 * Pi * (1 - std::cos(Pi / 6)), 1e-12);
   // A soft one against a plain midpoint sum of its own profile.

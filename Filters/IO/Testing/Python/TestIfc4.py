@@ -1,0 +1,97 @@
+"""IFC4 through IfcOpenShell, on files no one here made: KIT's FZK-Haus exported as IFC4
+(ArchiCAD 20; assimp refuses it) must give the same building as its IFC2x3 release read the
+same way, its seven rooms by name; a Revit IFC4 with a light fixture gives a luminaire at the
+fixture, aimed along its -z, with a stated default where the file has no photometry. A work
+plane laid in a room by name stays inside it. Broken or refused files say why."""
+
+import os
+
+import numpy as np
+
+import relight
+from testlib import check, finish
+
+DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "..", "Data")
+IFC4_HOUSE = os.path.join(DATA, "IFC", "AC20-FZK-Haus.ifc")
+IFC4_FIXTURE = os.path.join(DATA, "IFC", "IFC4TessellationComplex.ifc")
+IFC2X3_HOUSE = "/usr/share/assimp/models/IFC/AC14-FZK-Haus.ifc"  # Debian's assimp-testmodels
+
+
+def field_strings(data, name):
+    array = data.GetFieldData().GetAbstractArray(name)
+    return [array.GetValue(i) for i in range(array.GetNumberOfValues())] if array is not None else []
+
+
+house = relight.import_scene(IFC4_HOUSE, require_lights=False)
+summary = field_strings(house, "ImportSummary")
+print(summary)
+check(house.GetNumberOfCells() > 10000 and "IfcOpenShell, IFC4" in summary[0], f"the IFC4 house reads: {summary}")
+rooms = field_strings(house, "RoomNames")
+check(sorted(rooms) == sorted(["Schlafzimmer", "Bad", "Buero", "Wohnen", "Flur", "Küche", "Galerie"]),
+      f"its seven rooms by name: {rooms}")
+older = relight.import_scene(IFC2X3_HOUSE, require_lights=False, ifc="ifcopenshell")
+check(np.allclose(house.GetBounds(), older.GetBounds(), atol=1e-6),
+      f"the IFC4 and IFC2x3 releases are the same building: {house.GetBounds()} and {older.GetBounds()}")
+kitchen = house.GetFieldData().GetArray("RoomBounds").GetTuple(rooms.index("Küche"))
+check(np.allclose(kitchen, (0.3, 4.695, 0.3, 4.01, 0.0, 2.5), atol=1e-6), f"the kitchen's box in metres: {kitchen}")
+materials = field_strings(house, "MaterialNames")
+check(len(materials) >= 5 and relight.cell_array(house, "Reflectance").max() <= 1.0,
+      f"surface styles become materials with reflectances in [0, 1]: {materials}")
+
+# The fixture file holds the fixture alone: its luminaire, and no surface left to light.
+from relight import ifc  # noqa: E402
+found = ifc.luminaires(IFC4_FIXTURE)
+check(len(found) == 1 and found[0].kind == "lambertian" and found[0].parameters == "lumens=1000.0",
+      f"the light fixture is a luminaire, a stated default without photometry: {found}")
+check(np.allclose(found[0].aim, (0, 0, -1)) and np.allclose(found[0].position, (-3.0036, 0.7868, 0.0), atol=1e-3),
+      f"at the fixture's placement, aimed along its -z: {found[0].position}, {found[0].aim}")
+try:
+    relight.import_scene(IFC4_FIXTURE)
+    check(False, "a file of a fixture alone is refused as a scene")
+except OSError as error:
+    check("no surfaces" in str(error), f"its body left out (its light would start inside it), no scene is left: {error}")
+
+# A work plane in a room by name: the box of the room, not the house.
+box = relight.make_scene(
+    [face[::-1] for face in [[(0, 0, 0), (0, 4, 0), (5, 4, 0), (5, 0, 0)], [(0, 0, 3), (5, 0, 3), (5, 4, 3), (0, 4, 3)],
+                             [(0, 0, 0), (5, 0, 0), (5, 0, 3), (0, 0, 3)], [(0, 4, 0), (0, 4, 3), (5, 4, 3), (5, 4, 0)],
+                             [(0, 0, 0), (0, 0, 3), (0, 4, 3), (0, 4, 0)], [(5, 0, 0), (5, 4, 0), (5, 4, 3), (5, 0, 3)]]],
+    [(0.5, 0.5, 0.5)] * 6, [-1] * 6)
+from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkStringArray  # noqa: E402
+room_names, room_bounds = vtkStringArray(), vtkDoubleArray()
+room_names.SetName("RoomNames")
+room_bounds.SetName("RoomBounds")
+room_bounds.SetNumberOfComponents(6)
+room_names.InsertNextValue("Küche")
+room_bounds.InsertNextTuple((0.0, 2.0, 0.0, 4.0, 0.0, 3.0))
+box.GetFieldData().AddArray(room_names)
+box.GetFieldData().AddArray(room_bounds)
+solved = relight.solve(relight.mark_lights(box, relight.luminaire("Bulb", kind="point", position=(1, 2, 2.9), lumens=1000)),
+                       patch_size=1.0, element_size=0.5)
+plane = relight.work_plane(solved, room="Küche", up="z", border=0.25)
+low, high = plane.GetBounds()[0:2]
+check(0.25 <= low and high <= 1.75, f"the plane lies in the kitchen, inside its border: x {low:.2f} to {high:.2f}")
+try:
+    relight.work_plane(solved, room="Garage", up="z")
+    check(False, "an unknown room is refused")
+except ValueError as error:
+    check("Garage" in str(error) and "Küche" in str(error), f"an unknown room is said: {error}")
+
+# Refused: IFC4 forced through assimp; a truncated file; a wrong choice of reader.
+for call, words in ((lambda: relight.import_scene(IFC4_HOUSE, require_lights=False, ifc="assimp"), ["assimp"]),
+                    (lambda: relight.import_scene(IFC4_HOUSE, ifc="acad"), ["ifc must be"])):
+    try:
+        call()
+        check(False, f"refused: {words}")
+    except (OSError, ValueError) as error:
+        check(all(w in str(error) for w in words), f"refused with {words}: {str(error)[:120]}")
+broken = os.path.join(os.environ.get("TMPDIR", "/tmp"), "relight_broken_ifc4.ifc")
+with open(IFC4_FIXTURE, "rb") as source, open(broken, "wb") as target:
+    target.write(source.read()[:20000])
+try:
+    relight.import_scene(broken)
+    check(False, "a truncated IFC4 file is refused")
+except (OSError, ValueError) as error:
+    check("relight_broken_ifc4.ifc" in str(error), f"a truncated IFC4 file is refused, named: {str(error)[:160]}")
+
+finish("TestIfc4")
