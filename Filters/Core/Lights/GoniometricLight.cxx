@@ -4,7 +4,6 @@
 
 #include "Lights/PhotometricFiles.h"
 
-#include <sstream>
 
 namespace radiosity
 {
@@ -14,30 +13,24 @@ namespace
 class Goniometric : public LightDistribution
 {
 public:
-  Goniometric(PhotometricWeb web, double scale)
+  explicit Goniometric(PhotometricWeb web)
     : Web(std::move(web))
-    , Scale(scale)
-    , TotalFlux(Web.Flux() * scale)
+    , TotalFlux(Web.Flux())
   {
   }
-  double Intensity(const Vec3& direction) const override { return Scale * Web.Intensity(direction); }
+  double Intensity(const Vec3& direction) const override { return Web.Intensity(direction); }
   double Flux() const override { return TotalFlux; }
   const char* Kind() const override { return "goniometric"; }
 
 private:
   const PhotometricWeb Web;
-  const double Scale, TotalFlux;
+  const double TotalFlux;
 };
 } // namespace
 
 std::shared_ptr<const LightDistribution> MakeGoniometricLight(const LightParameters& parameters, std::string& error)
 {
   const std::string file = parameters.Text("file");
-  double lumens;
-  if (!parameters.Number("lumens", 0, lumens, error))
-  {
-    return nullptr;
-  }
   if (file.empty())
   {
     error = "a goniometric light needs its photometric file ('file')";
@@ -49,20 +42,14 @@ std::shared_ptr<const LightDistribution> MakeGoniometricLight(const LightParamet
   {
     return nullptr;
   }
-  const double flux = web.Flux();
-  if (!(flux > 0))
+  if (!(web.Flux() > 0))
   {
     error = file + ": its candela table sends out no light";
     return nullptr;
   }
-  if (lumens < 0)
-  {
-    std::ostringstream s;
-    s << "a goniometric light's lumens must be above 0 (0: the file's own), not " << lumens;
-    error = s.str();
-    return nullptr;
-  }
-  return std::make_shared<const Goniometric>(std::move(web), lumens > 0 ? lumens / flux : 1.0);
+  // At the file's lumens (its table as it stands) or the ones asked for, times the
+  // maintenance factor: the shared rule of every kind.
+  return WithLumens(std::make_shared<const Goniometric>(std::move(web)), parameters, error);
 }
 
 } // namespace radiosity

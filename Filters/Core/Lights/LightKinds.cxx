@@ -66,26 +66,33 @@ private:
 std::shared_ptr<const LightDistribution> WithLumens(
   std::shared_ptr<const LightDistribution> made, const LightParameters& parameters, std::string& error)
 {
-  double lumens;
-  if (!made || !parameters.Number("lumens", 0, lumens, error))
+  double lumens, maintenance;
+  if (!made || !parameters.Number("lumens", 0, lumens, error) || !parameters.Number("maintenance", 1, maintenance, error))
   {
     return nullptr;
   }
   if (lumens < 0)
   {
-    error = "lumens must be 0 or more (0: the kind's own unit), not " + std::to_string(lumens);
+    error = "lumens must be 0 or more (0: the light's own), not " + std::to_string(lumens);
     return nullptr;
   }
-  return lumens > 0 ? std::make_shared<const Scaled>(made, lumens / made->Flux()) : made;
+  if (!(maintenance > 0 && maintenance <= 1))
+  {
+    error = "a maintenance factor is above 0 and at most 1, not " + std::to_string(maintenance);
+    return nullptr;
+  }
+  const double factor = (lumens > 0 ? lumens / made->Flux() : 1.0) * maintenance;
+  return factor != 1.0 ? std::make_shared<const Scaled>(made, factor) : made;
 }
 
 const std::vector<LightKind>& LightKinds()
 {
   static const std::vector<LightKind> kinds{
-    { "point", "lumens (1 W/sr if left out)", MakeIsotropicLight },
-    { "lambertian", "lumens (1 W/sr along its aim if left out)", MakeLambertianLight },
-    { "spot", "cone (degrees, 30), falloff (degrees, 5), lumens (1 W/sr in the cone if left out)", MakeSpotLight },
-    { "goniometric", "file (IES or EULUMDAT), lumens (the file's)", MakeGoniometricLight },
+    { "point", "lumens (1 W/sr if left out), maintenance (1)", MakeIsotropicLight },
+    { "lambertian", "lumens (1 W/sr along its aim if left out), maintenance (1)", MakeLambertianLight },
+    { "spot", "cone (degrees, 30), falloff (degrees, 5), lumens (1 W/sr in the cone if left out), maintenance (1)",
+      MakeSpotLight },
+    { "goniometric", "file (IES or EULUMDAT), lumens (the file's), maintenance (1)", MakeGoniometricLight },
   };
   return kinds;
 }

@@ -65,9 +65,10 @@ struct LightKind
   std::shared_ptr<const LightDistribution> (*Make)(const LightParameters& parameters, std::string& error);
 };
 
-/// `made`, scaled so that its flux is the parameter `lumens` where given (0 or absent:
-/// as made), for the kinds that have no lumens of their own; null with `error` for a
-/// negative or non-numeric one.
+/// `made`, scaled so that its flux is the parameter `lumens` where given (0 or absent: as
+/// made), times the parameter `maintenance` (the maintenance factor of EN 12464-1, in
+/// (0, 1], 1 where absent: the light a luminaire keeps after years of dirt and ageing);
+/// null with `error` for a value out of range or not a number.
 std::shared_ptr<const LightDistribution> WithLumens(
   std::shared_ptr<const LightDistribution> made, const LightParameters& parameters, std::string& error);
 

@@ -43,15 +43,16 @@ def area_light(name, centre, normal, size, color=(1.0, 1.0, 1.0), intensity=1.0,
 
 
 def luminaire(name, path=None, position=(0.0, 0.0, 0.0), aim=(0.0, 0.0, -1.0), rotation=0.0, lumens=None,
-              color=(1.0, 1.0, 1.0), kind=None, **parameters):
+              color=(1.0, 1.0, 1.0), kind=None, maintenance=None, **parameters):
     """A light at a point for mark_lights: by default a luminaire of `path`, its IES LM-63
     or EULUMDAT file (its candela table, at the file's lumens or at `lumens`), at
     `position`, aimed along `aim` (its nadir: straight down is (0, 0, -1) in a z-up scene,
     (0, -1, 0) in a y-up one) and turned by `rotation` degrees about the aim. Without a
     path, `kind` names another kind ("point", "spot" with cone= and falloff= in degrees,
     "lambertian"). Its solution is white at its lumens (lux where the scene is in metres);
-    `color` is its default color when relit. Raises ValueError naming what cannot be a
-    light; the file itself is read when the lights are marked."""
+    `color` is its default color when relit; `maintenance` its maintenance factor (0 to 1:
+    the light it keeps after years of dirt and ageing). Raises ValueError naming what cannot
+    be a light; the file itself is read when the lights are marked."""
     what = f"luminaire {name!r}:"
     kind = kind or ("goniometric" if path is not None else None)
     if kind is None:
@@ -67,6 +68,8 @@ def luminaire(name, path=None, position=(0.0, 0.0, 0.0), aim=(0.0, 0.0, -1.0), r
         if not lumens > 0:
             raise ValueError(f"{what} lumens must be above 0, not {lumens!r}")
         parameters["lumens"] = repr(lumens)
+    if maintenance is not None:
+        parameters["maintenance"] = repr(_numbers(maintenance, 1, f"{what} maintenance", 0.0)[0])
     aim = _numbers(aim, 3, f"{what} aim")
     if not any(aim):
         raise ValueError(f"{what} aim is zero: give the direction it shines (its nadir)")

@@ -60,7 +60,7 @@ TEST(LightKinds, EveryKindIsMadeByNameAndSaysWhatItDoesNotTake)
   EXPECT_EQ(error, "no kind of light is called 'laser' (there are point, lambertian, spot, goniometric)");
   EXPECT_FALSE(MakeLightDistribution("spot", { { "cone", "20" }, { "fallof", "3" } }, error));
   EXPECT_EQ(error, "a spot light does not take fallof (it takes cone (degrees, 30), falloff (degrees, 5), lumens (1 W/sr "
-                   "in the cone if left out))");
+                   "in the cone if left out), maintenance (1))");
   EXPECT_FALSE(MakeLightDistribution("spot", { { "cone", "wide" } }, error));
   EXPECT_EQ(error, "'cone' is 'wide', not a number");
   EXPECT_FALSE(MakeLightDistribution("goniometric", {}, error));
@@ -95,6 +95,12 @@ TEST(LightKinds, FluxInClosedForm)
   const auto dimmed = Made("goniometric", { { "file", file }, { "lumens", "1000" } });
   EXPECT_NEAR(dimmed->Flux(), 1000, 1e-9);
   EXPECT_NEAR(dimmed->Intensity({ 0, 0, 1 }), web.Intensity({ 0, 0, 1 }) * 1000 / web.Flux(), 1e-9);
+  // A maintenance factor: what is left after years of dirt and ageing, on any kind.
+  EXPECT_NEAR(Made("goniometric", { { "file", file }, { "lumens", "1000" }, { "maintenance", "0.8" } })->Flux(), 800, 1e-9);
+  EXPECT_NEAR(Made("point", { { "maintenance", "0.5" } })->Flux(), 2 * Pi, 1e-12);
+  std::string error;
+  EXPECT_FALSE(MakeLightDistribution("point", { { "maintenance", "1.5" } }, error));
+  EXPECT_EQ(error, "a maintenance factor is above 0 and at most 1, not 1.500000");
 }
 
 TEST(LightKinds, TheFrameFollowsAimAndRotation)
