@@ -1,4 +1,5 @@
 #include "vtkRadiosityMesher.h"
+#include "vtkRadiosityLuminaires.h"
 #include "vtkRadiosityAbort.h"
 #include "vtkRadiosityAdapter.h"
 #include "vtkRadiosityMeshPieces.h"
@@ -50,6 +51,46 @@ vtkSmartPointer<vtkPolyData> AsPolyData(vtkDataSet* input)
   return polygons;
 }
 
+/// The scene's luminaires (its field arrays Luminaire*) as lamps for the grading: each at its
+/// position, lighting the side its aim points to where it sends nothing behind (a
+/// downlight), else every side. A luminaire that cannot be made is left to the solver to name.
+std::vector<radiosity::LampSpot> PointLampsOf(vtkDataObject* input)
+{
+  std::vector<radiosity::LuminaireRow> rows;
+  std::string error;
+  std::vector<radiosity::LampSpot> spots;
+  if (!input || !vtkRadiosityLuminaires::Read(input->GetFieldData(), rows, error))
+  {
+    return spots;
+  }
+  for (const radiosity::LuminaireRow& row : rows)
+  {
+    radiosity::PointLight light;
+    if (!radiosity::MakePointLight(row, light).empty())
+    {
+      continue;
+    }
+    radiosity::Vec3 x, y, z;
+    light.Frame(x, y, z);
+    bool dark = true; // behind the aim: 8 rings of 16 directions
+    for (int i = 1; i <= 8 && dark; ++i)
+    {
+      for (int j = 0; j < 16 && dark; ++j)
+      {
+        const double polar = radiosity::Pi / 2 + i * radiosity::Pi / 16, turn = j * radiosity::Pi / 8;
+        const radiosity::Vec3 d = x * (std::sin(polar) * std::cos(turn)) + y * (std::sin(polar) * std::sin(turn)) +
+          z * std::cos(polar);
+        dark = !(light.Toward(d) > 0);
+      }
+    }
+    radiosity::LampSpot spot;
+    spot.Centre = light.Position;
+    spot.Normal = dark ? z : radiosity::Vec3();
+    spots.push_back(spot);
+  }
+  return spots;
+}
+
 /// The mesher's options as this filter's properties set them, for `mesh` (its lamps, and
 /// on MPI `whole`, the whole scene's polygons, with the float noise of the whole): the one
 /// place they are made, so the panel's estimate, the element budget and the mesh agree.
@@ -78,6 +119,7 @@ struct vtkRadiosityMesher::Polygons
   radiosity::SceneMesh Mesh;
   std::vector<int> SurfaceKey; ///< as meshing keys them (triangle pairs join within one)
   std::vector<char> Lamps;
+  std::vector<radiosity::LampSpot> PointLamps; ///< the luminaires
 };
 
 vtkRadiosityMesher::vtkRadiosityMesher()
@@ -154,6 +196,7 @@ double vtkRadiosityMesher::EstimateElements(double patchSize, double elementSize
   const radiosity::SceneMesh& mesh = this->SeenInput->Mesh;
   const auto sizes = SizesAtAccuracy(patchSize, elementSize, this->SuggestedPatchSize, this->Accuracy);
   radiosity::MesherOptions options = OptionsFor(this, mesh, this->SeenInput->Lamps);
+  options.PointLamps = this->SeenInput->PointLamps;
   options.ElementSize = sizes.second;
   const radiosity::ElementCounter count(mesh.Points, mesh.Offsets, mesh.Connectivity, this->SeenInput->SurfaceKey, options);
   return count(sizes.first, sizes.second);
@@ -212,12 +255,14 @@ void vtkRadiosityMesher::SuggestFor(vtkDataSet* given)
     vtkRadiosityAdapter::ReadSceneArrays(input, mesh, emission, error);
     this->SeenInput->SurfaceKey = vtkRadiosityMeshPieces::SurfaceKeys(mesh, emission);
     this->SeenInput->Lamps = vtkRadiosityMeshPieces::Lamps(mesh, emission);
+    this->SeenInput->PointLamps = PointLampsOf(input);
   }
   else
   {
     mesh = radiosity::SceneMesh();
     this->SeenInput->SurfaceKey.clear();
     this->SeenInput->Lamps.clear();
+    this->SeenInput->PointLamps.clear();
   }
   this->SuggestedPatchSize = sizes.PatchSize;
   this->SuggestedElementSize = sizes.ElementSize;
@@ -265,6 +310,7 @@ std::string MeshPiece(vtkRadiosityMesher* self, vtkPolyData* input, ElementSizin
   radiosity::MesherOptions options =
     OptionsFor(self, mesh, vtkRadiosityMeshPieces::Lamps(mesh, emission), whole.Polygons, whole.PointQuantum,
       whole.Surfaces);
+  options.PointLamps = PointLampsOf(input);
   options.PatchSize = self->GetPatchSizeInUse();
   options.ElementSize = sizing.Size;
   options.LampGrading = sizing.Graded ? options.LampGrading : 0.0;
@@ -294,6 +340,7 @@ ElementSizing ElementSizeEverywhere(vtkRadiosityMesher* self, vtkMultiProcessCon
   radiosity::MesherOptions options =
     OptionsFor(self, mesh, usable ? vtkRadiosityMeshPieces::Lamps(mesh, emission) : std::vector<char>(),
       whole.Polygons, whole.PointQuantum, whole.Surfaces);
+  options.PointLamps = usable ? PointLampsOf(input) : std::vector<radiosity::LampSpot>();
   const std::vector<int> keys = usable ? vtkRadiosityMeshPieces::SurfaceKeys(mesh, emission) : std::vector<int>();
   auto counter = std::make_unique<radiosity::ElementCounter>(mesh.Points, mesh.Offsets, mesh.Connectivity, keys, options);
   auto count = [&](double size) {

@@ -42,9 +42,10 @@ LampSpots::LampSpots(std::vector<LampSpot> spots, double cell)
 }
 
 LampSpots FindLampSpots(const std::vector<Vec3>& points, const std::vector<int>& offsets,
-  const std::vector<int>& connectivity, const std::vector<char>& lamps, double cell)
+  const std::vector<int>& connectivity, const std::vector<char>& lamps, double cell,
+  const std::vector<LampSpot>& pointLamps)
 {
-  std::vector<LampSpot> spots;
+  std::vector<LampSpot> spots = pointLamps;
   for (size_t i = 0; i < lamps.size() && i + 1 < offsets.size(); ++i)
   {
     if (!lamps[i])
@@ -103,7 +104,7 @@ double Apart(const LampSpot& lamp, const Vec3* corners, int count, const Vec3& u
   {
     apart = std::min(apart, ToConvexPolygon(c, corners, count, unitNormal));
   }
-  for (int k = 0; k < count; ++k)
+  for (int k = 0; k < count && lamp.Corners.size() >= 3; ++k) // a point lamp has no polygon
   {
     apart = std::min(apart,
       ToConvexPolygon(corners[k], lamp.Corners.data(), static_cast<int>(lamp.Corners.size()), lamp.Normal));
@@ -130,7 +131,7 @@ double GradedElementSize(const LampSpots& lamps, const Vec3* corners, int count,
   double size = elementSize;
   lamps.Near(centre, radius, elementSize / grading, [&](const LampSpot& lamp) {
     // Lit only where some corner is in front of the lamp and the lamp is in front of the patch.
-    bool front = false;
+    bool front = !(Dot(lamp.Normal, lamp.Normal) > 0); // a lamp shining every way
     for (int k = 0; k < count && !front; ++k)
     {
       front = Dot(corners[k] - lamp.Centre, lamp.Normal) > 0;

@@ -15,11 +15,12 @@
 namespace radiosity
 {
 
-/// A lamp polygon as the grading sees it: where it is, which way it shines, how large.
+/// A lamp as the grading sees it: where it is, which way it shines, how large. A lamp
+/// polygon has its corners; a luminaire is a point (no corners, radius 0).
 struct LampSpot
 {
   Vec3 Centre;
-  Vec3 Normal; ///< unit; a lamp lights the side its normal points to
+  Vec3 Normal; ///< unit; a lamp lights the side its normal points to (zero: every side)
   double Radius = 0; ///< of the sphere around its corners
   std::vector<Vec3> Corners;
 };
@@ -50,9 +51,11 @@ private:
   std::shared_ptr<const Binned> Bins;
 };
 
-/// The lamp polygons of a scene (`lamps[i]` set for polygon i), binned by `cell`.
+/// The lamp polygons of a scene (`lamps[i]` set for polygon i) and the point lamps
+/// (luminaires) beside them, binned by `cell`.
 LampSpots FindLampSpots(const std::vector<Vec3>& points, const std::vector<int>& offsets,
-  const std::vector<int>& connectivity, const std::vector<char>& lamps, double cell);
+  const std::vector<int>& connectivity, const std::vector<char>& lamps, double cell,
+  const std::vector<LampSpot>& pointLamps = {});
 
 /// The element size wanted over a convex patch (its `count` corners): `elementSize`, or
 /// where the patch faces a lamp `distance` away (the nearest corner of either to the

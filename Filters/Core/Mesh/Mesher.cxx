@@ -261,8 +261,8 @@ LampSpots GradingLampsFor(const std::vector<Vec3>& points, const std::vector<int
   const double reach = options.ElementSize / options.LampGrading; // the bins' size
   return options.WholeScene && options.WholeSurfaces
     ? FindLampSpots(options.WholeScene->Points, options.WholeScene->Offsets, options.WholeScene->Connectivity,
-        options.WholeSurfaces->Lamps, reach)
-    : FindLampSpots(points, offsets, connectivity, options.Lamps, reach);
+        options.WholeSurfaces->Lamps, reach, options.PointLamps)
+    : FindLampSpots(points, offsets, connectivity, options.Lamps, reach, options.PointLamps);
 }
 
 /// Surfaces closer than this stand on each other (relative, so units do not matter; and

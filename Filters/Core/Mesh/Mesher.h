@@ -52,8 +52,11 @@ struct MesherOptions
   /// triangles their whole lattice; lamps, and convex polygons of many corners meshed by
   /// area (AreaGrid.h), are not graded.
   double LampGrading = 0;
-  /// The lamps the grading looks at: filled by MeshPolygons from Lamps (the whole scene's
-  /// with WholeSurfaces).
+  /// Lamps at points (the scene's luminaires): graded by as the lamp polygons are, each
+  /// with the normal of the side it lights (zero where it lights every side).
+  std::vector<LampSpot> PointLamps;
+  /// The lamps the grading looks at: filled by MeshPolygons from Lamps and PointLamps (the
+  /// whole scene's with WholeSurfaces).
   LampSpots GradingLamps;
   std::function<bool(double)> Progress; ///< return false to abort
   /// Told, before meshing, when the budget changed the element size or the mesh is huge.

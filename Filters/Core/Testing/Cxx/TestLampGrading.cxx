@@ -194,3 +194,33 @@ TEST(LampGrading, ABudgetLeavesTheGradingOutFirst)
   EXPECT_EQ(m.ElementSize, 0.25);
   EXPECT_NE(said.find("LampGrading left out"), std::string::npos) << said;
 }
+
+TEST(LampGrading, ALuminaireGradesWhatItLightsAsALampPolygonDoes)
+{
+  // The same floor, ceiling and wall with the lamp polygon replaced by a luminaire at its
+  // centre: lighting downward only (normal down), the floor and the wall are graded as by
+  // the lamp and the ceiling behind it is not; lighting every way, the ceiling is too.
+  const LampOverFloor scene;
+  std::vector<int> offsets = { 0, 4, 8, 11 }, connectivity = { 0, 1, 2, 3, 8, 9, 10, 11, 12, 13, 14 };
+  MesherOptions o = scene.Options(0.35);
+  o.Lamps = { 0, 0, 0 };
+  LampSpot luminaire;
+  luminaire.Centre = { 2, 0.1, 2 };
+  luminaire.Normal = { 0, -1, 0 };
+  o.PointLamps = { luminaire };
+  MeshedPolygons down, everyWay, none;
+  ASSERT_EQ(MeshPolygons(scene.Points, offsets, connectivity, { 0, 1, 2 }, o, down), "");
+  EXPECT_NEAR(EdgeNear(down, 0, { 2, 0, 2 }), 0.0625, 1e-9);
+  EXPECT_NEAR(EdgeNear(down, 0, { 0.1, 0, 0.1 }), 0.25, 1e-9);
+  EXPECT_EQ(ElementsOf(down, 1), 256); // the ceiling behind it: 16 x 16 as ungraded
+  EXPECT_GT(ElementsOf(down, 2), 64);  // the wall it faces
+  o.PointLamps[0].Normal = {};
+  ASSERT_EQ(MeshPolygons(scene.Points, offsets, connectivity, { 0, 1, 2 }, o, everyWay), "");
+  EXPECT_GT(ElementsOf(everyWay, 1), 256);
+  // The counter counts it exactly, and without grading there is none.
+  const ElementCounter count(scene.Points, offsets, connectivity, { 0, 1, 2 }, o);
+  EXPECT_EQ(count(o.PatchSize, o.ElementSize), static_cast<double>(everyWay.SourcePolygon.size()));
+  o.LampGrading = 0;
+  ASSERT_EQ(MeshPolygons(scene.Points, offsets, connectivity, { 0, 1, 2 }, o, none), "");
+  EXPECT_EQ(ElementsOf(none, 0), 256);
+}

@@ -74,6 +74,15 @@ panel = relight.point_array(both.GetOutput(), "Radiosity_Panel")
 lum = relight.point_array(both.GetOutput(), "Radiosity_Street")
 check(np.allclose(relit, panel + 0.25 * lum, rtol=1e-5, atol=1e-6), "dimmed to 25 %, the luminaire adds a quarter of its solution")
 
+# The mesher grades the surfaces a luminaire lights up close as it does a lamp's, and its
+# estimate counts them.
+near_wall = relight.mark_lights(cube(4.0, 0.5), relight.luminaire("Wash", kind="point", position=(0.3, 2, 2)))
+flat = relight.solve(near_wall, patch_size=1.0, element_size=0.25, lamp_grading=0).GetOutput().GetNumberOfCells()
+graded_solver = relight.solve(near_wall, patch_size=1.0, element_size=0.25)
+graded = graded_solver.GetOutput().GetNumberOfCells()
+estimate = graded_solver.GetInputAlgorithm().EstimateElements(1.0, 0.25)
+check(graded > flat and estimate == graded, f"finer elements by the luminaire: {flat} -> {graded} (estimated {estimate:.0f})")
+
 # Light scenes: groups of lights by name pattern, dimmed together, switched by name and
 # blended over time by the schedule, with no new solve.
 scenes = os.path.join(os.environ.get("TMPDIR", "/tmp"), "relight_scenes.csv")
