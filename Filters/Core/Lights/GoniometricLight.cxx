@@ -21,6 +21,7 @@ public:
   double Intensity(const Vec3& direction) const override { return Web.Intensity(direction); }
   double Flux() const override { return TotalFlux; }
   const char* Kind() const override { return "goniometric"; }
+  Vec3 Opening() const override { return Web.Opening; }
 
 private:
   const PhotometricWeb Web;

@@ -56,6 +56,7 @@ public:
   double Intensity(const Vec3& direction) const override { return Factor * Shape->Intensity(direction); }
   double Flux() const override { return Factor * Shape->Flux(); }
   const char* Kind() const override { return Shape->Kind(); }
+  Vec3 Opening() const override { return Shape->Opening(); }
 
 private:
   std::shared_ptr<const LightDistribution> Shape;

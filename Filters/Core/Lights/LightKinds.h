@@ -30,6 +30,10 @@ public:
   virtual double Flux() const = 0;
   /// The kind's name, as in LightKinds().
   virtual const char* Kind() const = 0;
+  /// The luminous opening the light shines from, in metres (a photometric file's: width
+  /// along the frame's y, length along its x, height; a negative width or length: round, of
+  /// that diameter). Zero for a point. Near a surface the light is spread over it.
+  virtual Vec3 Opening() const { return {}; }
 };
 
 /// A light's parameters by name, as text (from Python, a ParaView table, a file). Each

@@ -1,5 +1,6 @@
 #include "Lights/PointLight.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace radiosity
@@ -26,6 +27,40 @@ double PointLight::Toward(const Vec3& d) const
   Frame(x, y, z);
   const Vec3 unit = Normalized(d);
   return Intensity * Distribution->Intensity({ Dot(unit, x), Dot(unit, y), Dot(unit, z) });
+}
+
+double PointLight::OpeningSize() const
+{
+  const Vec3 o = Distribution ? Distribution->Opening() : Vec3();
+  return std::max(std::fabs(o.x), std::fabs(o.y));
+}
+
+std::vector<Vec3> PointLight::OpeningPoints(int count) const
+{
+  const Vec3 o = Distribution ? Distribution->Opening() : Vec3();
+  const int side = std::max(1, static_cast<int>(std::lround(std::sqrt(static_cast<double>(count)))));
+  Vec3 x, y, z;
+  Frame(x, y, z);
+  std::vector<Vec3> points;
+  const bool round = o.x < 0 || o.y < 0;
+  for (int i = 0; i < side; ++i)
+  {
+    for (int j = 0; j < side; ++j)
+    {
+      const double u = (i + 0.5) / side, v = (j + 0.5) / side;
+      if (round)
+      {
+        // Equal-area rings (radius by the square root), turned by the cell.
+        const double radius = 0.5 * OpeningSize() * std::sqrt(u), angle = 2 * Pi * v;
+        points.push_back(Position + x * (radius * std::cos(angle)) + y * (radius * std::sin(angle)));
+      }
+      else
+      {
+        points.push_back(Position + x * ((u - 0.5) * std::fabs(o.y)) + y * ((v - 0.5) * std::fabs(o.x)));
+      }
+    }
+  }
+  return points;
 }
 
 double PointLight::Flux() const { return Intensity * (Distribution ? Distribution->Flux() : 4 * Pi); }

@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace radiosity
 {
@@ -31,6 +32,12 @@ struct PointLight
   double Flux() const;
   /// Unit axes of the light's frame in world coordinates.
   void Frame(Vec3& x, Vec3& y, Vec3& z) const;
+  /// The largest side (or diameter) of the light's luminous opening; 0 for a point.
+  double OpeningSize() const;
+  /// `count` points spread evenly over the luminous opening (a 4 x 4 grid of cells over a
+  /// rectangle, rings of equal area over a disk; `count` a square), in world coordinates:
+  /// where a surface is within a few opening sizes, the light comes from all of them.
+  std::vector<Vec3> OpeningPoints(int count) const;
 };
 
 /// Empty, or what makes `light` unusable (a non-finite or zero aim, position or strength,

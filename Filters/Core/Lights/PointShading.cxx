@@ -25,6 +25,20 @@ double NearFieldFactor(const SceneMesh& mesh, const SceneGeometry& g, int e, con
   return std::isnan(mean) ? 0 : mean;
 }
 
+/// Within this many opening sizes of a surface the light is spread over its opening (as a
+/// point its light would be a few per cent too sharp there: (size / 2d)^2 at distance d).
+constexpr double kNearOpenings = 5;
+constexpr int kOpeningPoints = 16;
+
+/// Where the light is taken from for a receiver at `at`: its opening's points where the
+/// receiver is near it, else its position alone.
+std::vector<Vec3> SourcesFor(const PointLight& light, const Vec3& at)
+{
+  const double size = light.OpeningSize();
+  return size > 0 && Norm(light.Position - at) < kNearOpenings * size ? light.OpeningPoints(kOpeningPoints)
+                                                                      : std::vector<Vec3>{ light.Position };
+}
+
 /// What the light gives element e where nothing blocks it, at `strength` toward e.
 double Unoccluded(const SceneMesh& mesh, const SceneGeometry& g, const Vec3& position, int e, double strength)
 {
@@ -33,6 +47,29 @@ double Unoccluded(const SceneMesh& mesh, const SceneGeometry& g, const Vec3& pos
   const double r = std::sqrt(r2);
   const double near = NearFieldFactor(mesh, g, e, position);
   return strength * (near > 0 ? near : (Dot(g.Normal[e], d) / r) / r2);
+}
+/// Element e's irradiance from a light spread over its opening's `sources` (each a share of
+/// it, with its own shadow ray), added to `out`; returns the rays cast.
+long long OpeningIrradiance(const PointLight& light, const std::vector<Vec3>& sources, const SceneMesh& mesh,
+  const SceneGeometry& g, const Visibility& rays, int e, Vec3& out)
+{
+  long long cast = 0;
+  const double share = 1.0 / sources.size();
+  for (const Vec3& source : sources)
+  {
+    const Vec3 d = source - g.Centroid[e];
+    const double toward = light.Toward(d * -1.0);
+    if (!(Dot(d, d) > 0) || Dot(g.Normal[e], d) <= 0 || !(toward > 0))
+    {
+      continue;
+    }
+    ++cast;
+    if (!rays.Occluded(g.Centroid[e] + g.Normal[e] * g.RayLift, source, 1e-6))
+    {
+      out += light.Color * (share * Unoccluded(mesh, g, source, e, toward));
+    }
+  }
+  return cast;
 }
 } // namespace
 
@@ -61,6 +98,12 @@ long long AddPointIrradiance(const PointLight& light, const SceneMesh& mesh, con
   {
     const Vec3 d = light.Position - g.Centroid[e];
     const double r2 = Dot(d, d);
+    const std::vector<Vec3> sources = SourcesFor(light, g.Centroid[e]);
+    if (sources.size() > 1)
+    {
+      cast += OpeningIrradiance(light, sources, mesh, g, rays, e, irradiance[e - begin]);
+      continue;
+    }
     if (!(r2 > 0) || Dot(g.Normal[e], d) <= 0)
     {
       continue;
@@ -88,19 +131,24 @@ long long AddPointIrradiance(const PointLight& light, const SceneMesh& mesh, con
 
 Vec3 PointIrradianceAt(const PointLight& light, const Vec3& point, const Vec3& normal, const Visibility& rays, double lift)
 {
-  const Vec3 d = light.Position - point;
-  const double r2 = Dot(d, d);
-  const double cosine = r2 > 0 ? Dot(normal, d) / std::sqrt(r2) : 0;
-  if (!(cosine > 0))
+  const std::vector<Vec3> sources = SourcesFor(light, point);
+  Vec3 sum;
+  for (const Vec3& source : sources)
   {
-    return {};
+    const Vec3 d = source - point;
+    const double r2 = Dot(d, d);
+    const double cosine = r2 > 0 ? Dot(normal, d) / std::sqrt(r2) : 0;
+    if (!(cosine > 0))
+    {
+      continue;
+    }
+    const double toward = light.Toward(d * -1.0);
+    if (toward > 0 && !rays.Occluded(point + normal * lift, source, 1e-6))
+    {
+      sum += light.Color * (toward * cosine / r2);
+    }
   }
-  const double toward = light.Toward(d * -1.0);
-  if (!(toward > 0) || rays.Occluded(point + normal * lift, light.Position, 1e-6))
-  {
-    return {};
-  }
-  return light.Color * (toward * cosine / r2);
+  return sum * (1.0 / sources.size());
 }
 
 } // namespace radiosity

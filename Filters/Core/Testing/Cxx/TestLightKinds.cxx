@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 
 using namespace radiosity;
 using namespace radiosity_test;
@@ -173,4 +174,38 @@ TEST(LightKinds, ABlockerCastsAnExactShadow)
   EXPECT_EQ(PointIrradianceAt(light, { 0.2, 0.1, 0 }, { 0, 0, 1 }, *prepared.Rays, lift).x, 0.0);
   EXPECT_NEAR(PointIrradianceAt(light, { 1.8, 0, 0 }, { 0, 0, 1 }, *prepared.Rays, lift).x,
     2 / std::pow(1.8 * 1.8 + 4, 1.5), 1e-12);
+}
+
+TEST(LightKinds, ALargeOpeningNearASurfaceIsSpreadOverItsArea)
+{
+  // A round Lambertian luminaire of 1 m diameter (a cosine table, LM-63's negative width
+  // and length for round), 0.5 m over a floor: under its centre a disk of radiance
+  // I0 / A gives I0 / (a^2 + h^2) = 2000 lx for I0 = 1000 cd, where a point would give
+  // I0 / h^2 = 4000. Far off, the two agree.
+  std::string table = "IESNA:LM-63-2002\nTILT=NONE\n1 -1 1 19 1 1 2 -1.0 -1.0 0\n1 1 0\n";
+  for (int i = 0; i <= 90; i += 5)
+  {
+    table += std::to_string(i) + " ";
+  }
+  table += "\n0\n";
+  for (int i = 0; i <= 90; i += 5)
+  {
+    table += std::to_string(1000 * std::cos(i * Pi / 180)) + " ";
+  }
+  const std::string path = ::testing::TempDir() + "round_panel.ies";
+  {
+    std::ofstream out(path);
+    out << table << "\n";
+  }
+  const SceneMesh mesh = Floor(3, 3, 12);
+  PreparedScene prepared;
+  ASSERT_EQ(PrepareTransport(mesh, 0, ProcessGroup(), prepared), "");
+  PointLight panel;
+  panel.Position = { 0, 0, 0.5 };
+  panel.Distribution = Made("goniometric", { { "file", path } });
+  EXPECT_NEAR(panel.OpeningSize(), 1.0, 1e-12);
+  const double lift = prepared.Geometry->RayLift;
+  EXPECT_NEAR(PointIrradianceAt(panel, { 0, 0, 0 }, { 0, 0, 1 }, *prepared.Rays, lift).x, 2000, 0.03 * 2000);
+  panel.Position = { 0, 0, 6 }; // 12 opening sizes away: a point, I0 / h^2
+  EXPECT_NEAR(PointIrradianceAt(panel, { 0, 0, 0 }, { 0, 0, 1 }, *prepared.Rays, lift).x, 1000.0 / 36, 1e-6);
 }
