@@ -84,6 +84,63 @@ void AddValue(vtkFieldData* fields, const char* name, double value)
   fields->AddArray(array);
 }
 
+/// Each solution's emission per element ([e * solutions + m]): the cell lights' as solved,
+/// none for the luminaires' solutions after them.
+std::vector<radiosity::Vec3> EveryEmission(const vtkRadiositySolveOutput::SceneInput& scene, int solutions)
+{
+  const std::vector<radiosity::Vec3> cells = radiosity::SolutionEmission(scene.Mesh, scene.Grouping, scene.Emission);
+  const int own = scene.Grouping.Solutions;
+  std::vector<radiosity::Vec3> wide(static_cast<size_t>(scene.Mesh.NumberOfPolygons()) * solutions);
+  for (int e = 0; e < scene.Mesh.NumberOfPolygons(); ++e)
+  {
+    std::copy_n(cells.begin() + static_cast<size_t>(e) * own, own, wide.begin() + static_cast<size_t>(e) * solutions);
+  }
+  return wide;
+}
+
+/// The point arrays Illuminance_<light> and Illuminance (their sum at the lights' default
+/// colors, the mean of the channels), and the field arrays of the plane's statistics.
+radiosity::PlaneStatistics AddIlluminance(const vtkRadiositySolveOutput::SceneInput& scene,
+  const std::vector<std::string>& names, const radiosity::GatheredPoints& at, vtkPolyData* output)
+{
+  std::vector<radiosity::Vec3> colors = radiosity::DefaultColors(scene.Mesh, scene.Grouping, scene.Emission);
+  for (const radiosity::PointLight& light : scene.PointLights)
+  {
+    colors.push_back(light.Color);
+  }
+  const size_t s = names.size(), points = at.Irradiance.size() / std::max<size_t>(1, s);
+  std::vector<double> combined(points, 0.0);
+  for (size_t m = 0; m < s; ++m)
+  {
+    vtkNew<vtkFloatArray> array;
+    array->SetName(("Illuminance_" + names[m]).c_str());
+    array->SetNumberOfComponents(3);
+    array->SetNumberOfTuples(static_cast<vtkIdType>(points));
+    for (size_t p = 0; p < points; ++p)
+    {
+      const radiosity::Vec3& e = at.Irradiance[p * s + m];
+      array->SetTuple3(static_cast<vtkIdType>(p), e.x, e.y, e.z);
+      combined[p] += radiosity::Dot(radiosity::Times(colors[m], e), { 1.0 / 3, 1.0 / 3, 1.0 / 3 });
+    }
+    output->GetPointData()->AddArray(array);
+  }
+  vtkNew<vtkDoubleArray> total;
+  total->SetName("Illuminance");
+  for (double v : combined)
+  {
+    total->InsertNextValue(v);
+  }
+  output->GetPointData()->AddArray(total);
+  output->GetPointData()->SetActiveScalars("Illuminance");
+  const radiosity::PlaneStatistics stats = radiosity::WorkPlaneStatistics(combined);
+  AddValue(output->GetFieldData(), "IlluminanceMean", stats.Mean);
+  AddValue(output->GetFieldData(), "IlluminanceMinimum", stats.Minimum);
+  AddValue(output->GetFieldData(), "IlluminanceMaximum", stats.Maximum);
+  AddValue(output->GetFieldData(), "Uniformity", stats.Uniformity);
+  vtkRadiosityAdapter::AddStrings(output->GetFieldData(), "LightNames", names);
+  return stats;
+}
+
 int UpOf(int asked, const double bounds[6])
 {
   if (asked >= 0)
@@ -131,19 +188,13 @@ int vtkRadiosityWorkPlane::RequestData(
       return 0;
     }
     const int s = static_cast<int>(names.size());
-    std::vector<radiosity::Vec3> emission = radiosity::SolutionEmission(scene.Mesh, scene.Grouping, scene.Emission);
-    std::vector<radiosity::Vec3> wide(static_cast<size_t>(scene.Mesh.NumberOfPolygons()) * s);
-    for (int e = 0; e < scene.Mesh.NumberOfPolygons(); ++e)
-    {
-      std::copy_n(emission.begin() + static_cast<size_t>(e) * scene.Grouping.Solutions, scene.Grouping.Solutions,
-        wide.begin() + static_cast<size_t>(e) * s);
-    }
     radiosity::GatherSettings settings;
     settings.Rays = this->GatherRays;
     settings.PointLights = &scene.PointLights;
     settings.FirstPointSolution = scene.Grouping.Solutions;
     const vtkRadiosityAbortWatch abort(this);
-    const radiosity::GatheredPoints at = radiosity::IrradianceAtPoints(scene.Mesh, *prepared.Geometry, *prepared.Rays, wide,
+    const radiosity::GatheredPoints at = radiosity::IrradianceAtPoints(scene.Mesh, *prepared.Geometry, *prepared.Rays,
+      EveryEmission(scene, s),
       solution, s, grid.Points, std::vector<radiosity::Vec3>(grid.Points.size(), grid.Normal), settings,
       vtkRadiosityAdapter::Threads(0), [this, &abort](double f) {
         this->UpdateProgress(f);
@@ -155,40 +206,7 @@ int vtkRadiosityWorkPlane::RequestData(
       return 0;
     }
     WriteGrid(grid, output);
-    std::vector<radiosity::Vec3> colors = radiosity::DefaultColors(scene.Mesh, scene.Grouping, scene.Emission);
-    for (const radiosity::PointLight& light : scene.PointLights)
-    {
-      colors.push_back(light.Color);
-    }
-    std::vector<double> combined(grid.Points.size(), 0.0);
-    for (int m = 0; m < s; ++m)
-    {
-      vtkNew<vtkFloatArray> array;
-      array->SetName(("Illuminance_" + names[m]).c_str());
-      array->SetNumberOfComponents(3);
-      array->SetNumberOfTuples(static_cast<vtkIdType>(grid.Points.size()));
-      for (size_t p = 0; p < grid.Points.size(); ++p)
-      {
-        const radiosity::Vec3& e = at.Irradiance[p * s + m];
-        array->SetTuple3(static_cast<vtkIdType>(p), e.x, e.y, e.z);
-        combined[p] += radiosity::Dot(radiosity::Times(colors[m], e), { 1.0 / 3, 1.0 / 3, 1.0 / 3 });
-      }
-      output->GetPointData()->AddArray(array);
-    }
-    vtkNew<vtkDoubleArray> total;
-    total->SetName("Illuminance");
-    for (double v : combined)
-    {
-      total->InsertNextValue(v);
-    }
-    output->GetPointData()->AddArray(total);
-    output->GetPointData()->SetActiveScalars("Illuminance");
-    const radiosity::PlaneStatistics stats = radiosity::WorkPlaneStatistics(combined);
-    AddValue(output->GetFieldData(), "IlluminanceMean", stats.Mean);
-    AddValue(output->GetFieldData(), "IlluminanceMinimum", stats.Minimum);
-    AddValue(output->GetFieldData(), "IlluminanceMaximum", stats.Maximum);
-    AddValue(output->GetFieldData(), "Uniformity", stats.Uniformity);
-    vtkRadiosityAdapter::AddStrings(output->GetFieldData(), "LightNames", names);
+    const radiosity::PlaneStatistics stats = AddIlluminance(scene, names, at, output);
     vtkLogF(INFO, "Work plane: %d x %d points, %.3g apart; mean %.4g, minimum %.4g, uniformity %.3f", grid.Nu, grid.Nv,
       std::max(grid.SpacingU, grid.SpacingV), stats.Mean, stats.Minimum, stats.Uniformity);
     return 1;

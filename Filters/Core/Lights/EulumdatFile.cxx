@@ -77,6 +77,20 @@ public:
     return false;
   }
   size_t Position() const { return At; }
+  /// values.size() numbers, one a line; false at the first that is not one.
+  bool Numbers(const char* what, std::vector<double>& values)
+  {
+    for (double& v : values)
+    {
+      if (!Number(what, v))
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+  /// The line number of the i-th of the last `count` numbers read.
+  int LineOf(size_t i, size_t count) const { return Lines[At - count + i].Number; }
   std::string Error;
 
 private:
@@ -173,29 +187,15 @@ std::string ParseEulumdat(const std::string& text, const std::string& name, Phot
     return in.Fail("symmetry 3 needs C planes to 270 degrees, and " + std::to_string(mc) + " planes have not"), in.Error;
   }
   std::vector<double> c(mc), gamma(ng), table(static_cast<size_t>(count) * ng);
-  for (double& v : c)
+  if (!in.Numbers("a C angle", c) || !in.Numbers("a gamma angle", gamma) || !in.Numbers("a luminous intensity", table))
   {
-    if (!in.Number("a C angle", v))
-    {
-      return in.Error;
-    }
-  }
-  for (double& v : gamma)
-  {
-    if (!in.Number("a gamma angle", v))
-    {
-      return in.Error;
-    }
+    return in.Error;
   }
   for (double& v : table)
   {
-    if (!in.Number("a luminous intensity", v))
-    {
-      return in.Error;
-    }
     if (v < 0)
     {
-      return in.Fail("a negative luminous intensity"), in.Error;
+      return name + ":" + std::to_string(in.LineOf(&v - table.data(), table.size())) + ": a negative luminous intensity";
     }
   }
   out.Type = PhotometricType::C;

@@ -7,6 +7,7 @@
 #include "Base/Text.h"
 
 #include <algorithm>
+#include <memory>
 #include <cctype>
 #include <sstream>
 
@@ -153,16 +154,14 @@ bool ReadCandela(NumberTokens& in, size_t verticals, size_t horizontals, double 
 }
 } // namespace
 
-std::string ParseIes(const std::string& text, const std::string& name, PhotometricWeb& out, const TextReader& read)
+namespace
 {
-  out = PhotometricWeb();
-  out.Source = name;
-  const std::vector<NumberedLine> lines = SplitLines(text);
-  if (lines.empty())
-  {
-    return name + ": an empty file, not IES LM-63";
-  }
-  const int year = FormatYear(lines[0].Text);
+/// The tilt the TILT= line names, read into `out` (nothing for NONE, the numbers after it
+/// for INCLUDE, a file beside for a name), and `numbers` the file's numbers after it.
+/// Empty, or the problem.
+std::string ReadTiltLine(const std::vector<NumberedLine>& lines, const std::string& name, const TextReader& read,
+  std::unique_ptr<NumberTokens>& numbers, PhotometricWeb& out)
+{
   size_t tilt = 0;
   while (tilt < lines.size() && Upper(Trimmed(lines[tilt].Text)).rfind("TILT", 0) != 0)
   {
@@ -175,74 +174,91 @@ std::string ParseIes(const std::string& text, const std::string& name, Photometr
   const std::string tiltLine = Trimmed(lines[tilt].Text);
   const size_t equals = tiltLine.find('=');
   const std::string tiltValue = equals == std::string::npos ? std::string() : Trimmed(tiltLine.substr(equals + 1));
-  NumberTokens in(lines, tilt + 1, name);
+  numbers.reset(new NumberTokens(lines, tilt + 1, name)); // the numbers after the TILT line
   if (Upper(tiltValue) == "INCLUDE")
   {
-    if (!ReadTilt(in, out))
-    {
-      return in.Error();
-    }
+    return ReadTilt(*numbers, out) ? std::string() : numbers->Error();
   }
-  else if (Upper(tiltValue) != "NONE")
-  {
-    const std::string problem = ReadTiltFile(tiltValue, name, lines[tilt], read, out);
-    if (!problem.empty())
-    {
-      return problem;
-    }
-  }
+  return Upper(tiltValue) == "NONE" ? std::string() : ReadTiltFile(tiltValue, name, lines[tilt], read, out);
+}
+
+/// The luminaire line and the ballast line: type, units, opening, lumens; `scale` the
+/// factor every candela value takes, `verticals` and `horizontals` the table's size.
+bool ReadFields(NumberTokens& in, int year, PhotometricWeb& out, double& scale, size_t& verticals, size_t& horizontals)
+{
   double lamps, lumensPerLamp, multiplier, type, units, width, length, height, ballast, lampFactor, watts;
-  size_t verticals, horizontals;
   if (!in.Next("the number of lamps", lamps) || !in.Next("the lumens per lamp", lumensPerLamp) ||
     !in.Next("the candela multiplier", multiplier) || !Count(in, "the number of vertical angles", kMostAngles, verticals) ||
     !Count(in, "the number of horizontal angles", kMostAngles, horizontals) || !in.Next("the photometric type", type))
   {
-    return in.Error();
+    return false;
   }
   if (type != 1 && type != 2 && type != 3)
   {
     std::ostringstream s;
     s << "unknown photometric type " << type << " (1 is C, 2 is B, 3 is A)";
-    return in.Fail(in.Line(), s.str()), in.Error();
+    return in.Fail(in.Line(), s.str());
   }
   out.Type = static_cast<PhotometricType>(static_cast<int>(type));
   if (!in.Next("the units type", units) || !in.Next("the width", width) || !in.Next("the length", length) ||
     !in.Next("the height", height) || !in.Next("the ballast factor", ballast) ||
     !in.Next("the ballast-lamp factor", lampFactor) || !in.Next("the input watts", watts))
   {
-    return in.Error();
+    return false;
   }
   if (units != 1 && units != 2)
   {
     std::ostringstream s;
     s << "unknown units type " << units << " (1 is feet, 2 is metres)";
-    return in.Fail(in.Line(), s.str()), in.Error();
+    return in.Fail(in.Line(), s.str());
   }
   if (!(multiplier > 0) || !(ballast > 0))
   {
-    return in.Fail(in.Line(), "the candela multiplier and the ballast factor must be above 0"), in.Error();
+    return in.Fail(in.Line(), "the candela multiplier and the ballast factor must be above 0");
   }
   const double metres = units == 1 ? kFoot : 1.0;
   out.Opening = { width * metres, length * metres, height * metres };
   out.LampLumens = lumensPerLamp > 0 && lamps > 0 ? lumensPerLamp * lamps : 0; // -1: absolute photometry
   // Before LM-63-2002 the second factor was the ballast-lamp photometric factor; since, a
   // field for future use (2019: the file's generation type), never a multiplier.
-  const double scale = multiplier * ballast * (year < 2002 && lampFactor > 0 ? lampFactor : 1.0);
-  std::vector<double> verticalAngles, horizontalAngles;
-  if (!Angles(in, "vertical angles", verticals, verticalAngles) ||
-    !Angles(in, "horizontal angles", horizontals, horizontalAngles))
+  scale = multiplier * ballast * (year < 2002 && lampFactor > 0 ? lampFactor : 1.0);
+  return true;
+}
+} // namespace
+
+std::string ParseIes(const std::string& text, const std::string& name, PhotometricWeb& out, const TextReader& read)
+{
+  out = PhotometricWeb();
+  out.Source = name;
+  const std::vector<NumberedLine> lines = SplitLines(text);
+  if (lines.empty())
   {
-    return in.Error();
+    return name + ": an empty file, not IES LM-63";
+  }
+  std::unique_ptr<NumberTokens> in;
+  std::string problem = ReadTiltLine(lines, name, read, in, out);
+  if (!problem.empty())
+  {
+    return problem;
+  }
+  double scale;
+  size_t verticals, horizontals;
+  std::vector<double> verticalAngles, horizontalAngles;
+  if (!ReadFields(*in, FormatYear(lines[0].Text), out, scale, verticals, horizontals) ||
+    !Angles(*in, "vertical angles", verticals, verticalAngles) ||
+    !Angles(*in, "horizontal angles", horizontals, horizontalAngles))
+  {
+    return in->Error();
   }
   const bool typeB = out.Type == PhotometricType::B;
   out.Azimuth = typeB ? verticalAngles : horizontalAngles;
   out.Polar = typeB ? horizontalAngles : verticalAngles;
-  const int tableLine = in.Line();
-  if (!ReadCandela(in, verticals, horizontals, scale, out))
+  const int tableLine = in->Line();
+  if (!ReadCandela(*in, verticals, horizontals, scale, out))
   {
-    return in.Error();
+    return in->Error();
   }
-  const std::string problem = PhotometricProblem(out);
+  problem = PhotometricProblem(out);
   return problem.empty() ? problem : name + ":" + std::to_string(tableLine) + ": " + problem;
 }
 
