@@ -28,7 +28,7 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "Testing" / "Benchmark"))
-from luminaires_radiance import EFFICACY, radiance_tool  # noqa: E402
+from luminaires_radiance import radiance_tool, rtrace_lux  # noqa: E402
 
 HOUSE = ROOT / "Data" / "IFC" / "AC20-FZK-Haus.ifc"
 DOWNLIGHT = ROOT / "Data" / "Photometry" / "erco_lm63_1986_noversion.ies"  # ERCO Double Focus, 2200 lm lamp
@@ -83,15 +83,7 @@ def rtrace(venv, light, at, ad, folder, runs=2):
     with open(folder / f"{name}.oct", "wb") as octree:
         subprocess.run([radiance_tool(venv, "oconv"), f"{name}_scene.rad"], cwd=folder, env=env, stdout=octree, check=True)
     rays = "\n".join(f"{p[0]:.9g} {p[1]:.9g} {p[2]:.9g} 0 0 1" for p in at) + "\n"
-    out = []
-    for _ in range(runs):
-        command = [radiance_tool(venv, "rtrace"), "-h", "-I+", "-u+", "-ab", "8", "-ad", str(ad), "-as", "0", "-aa", "0",
-                   "-lw", "1e-6", "-lr", "-8", "-dj", "0.7", "-ds", "0.05", "-dt", "0", "-dc", "1", "-st", "0", "-n",
-                   str(os.cpu_count() or 1), f"{name}.oct"]
-        done = subprocess.run(command, input=rays, cwd=folder, env=env, capture_output=True, text=True, check=True)
-        rgb = np.array([[float(v) for v in line.split()[:3]] for line in done.stdout.splitlines() if line.strip()])
-        out.append(EFFICACY * rgb.mean(axis=1))
-    return out
+    return [rtrace_lux(venv, f"{name}.oct", rays, 8, ad, folder, env) for _ in range(runs)]
 
 
 def main():

@@ -139,15 +139,19 @@ def radiance_illuminance(venv, light, at, normals, plane_points, ad, folder):
     lifted = [p + 1e-4 * n for p, n in zip(at, normals)] + list(plane_points)
     facing = list(normals) + [np.array([0.0, 0.0, 1.0])] * len(plane_points)
     rays = "\n".join(" ".join(f"{v:.9g}" for v in (*p, *n)) for p, n in zip(lifted, facing)) + "\n"
-    runs = []
-    for bounces in (8, 8, 0):  # twice with every bounce (their difference: the noise), once direct light alone
-        command = [radiance_tool(venv, "rtrace"), "-h", "-I+", "-u+", "-ab", str(bounces), "-ad", str(ad), "-as", "0", "-aa", "0",
-                   "-lw", "1e-6", "-lr", "-8", "-dj", "0.7", "-ds", "0.05", "-dt", "0", "-dc", "1", "-st", "0", "-n",
-                   str(os.cpu_count() or 1), "scene.oct"]
-        done = subprocess.run(command, input=rays, cwd=folder, env=env, capture_output=True, text=True, check=True)
-        rgb = np.array([[float(v) for v in line.split()[:3]] for line in done.stdout.splitlines() if line.strip()])
-        runs.append(EFFICACY * rgb.mean(axis=1))
-    return runs
+    # Twice with every bounce (their difference: the noise), once direct light alone.
+    return [rtrace_lux(venv, "scene.oct", rays, bounces, ad, folder, env) for bounces in (8, 8, 0)]
+
+
+def rtrace_lux(venv, octree, rays, bounces, ad, folder, env):
+    """rtrace -I in lux (times Radiance's white efficacy) for `rays` ("x y z dx dy dz" lines),
+    every probe gathered anew (-aa 0) with uncorrelated sampling (-u+)."""
+    command = [radiance_tool(venv, "rtrace"), "-h", "-I+", "-u+", "-ab", str(bounces), "-ad", str(ad), "-as", "0", "-aa",
+               "0", "-lw", "1e-6", "-lr", "-8", "-dj", "0.7", "-ds", "0.05", "-dt", "0", "-dc", "1", "-st", "0", "-n",
+               str(os.cpu_count() or 1), octree]
+    done = subprocess.run(command, input=rays, cwd=folder, env=env, capture_output=True, text=True, check=True)
+    rgb = np.array([[float(v) for v in line.split()[:3]] for line in done.stdout.splitlines() if line.strip()])
+    return EFFICACY * rgb.mean(axis=1)
 
 
 def main():
