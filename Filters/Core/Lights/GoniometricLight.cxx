@@ -48,6 +48,18 @@ std::shared_ptr<const LightDistribution> MakeGoniometricLight(const LightParamet
     error = file + ": its candela table sends out no light";
     return nullptr;
   }
+  // A lamp tilted from the position it was measured in gives what the file's TILT table
+  // says for that angle (1 without one): `tilt`, degrees, 0 as measured.
+  double tilt;
+  if (!parameters.Number("tilt", 0, tilt, error))
+  {
+    return nullptr;
+  }
+  const double factor = web.TiltFactor(tilt);
+  for (double& cd : web.Candela)
+  {
+    cd *= factor;
+  }
   // At the file's lumens (its table as it stands) or the ones asked for, times the
   // maintenance factor: the shared rule of every kind.
   return WithLumens(std::make_shared<const Goniometric>(std::move(web)), parameters, error);

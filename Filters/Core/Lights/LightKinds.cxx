@@ -93,7 +93,8 @@ const std::vector<LightKind>& LightKinds()
     { "lambertian", "lumens (1 W/sr along its aim if left out), maintenance (1)", MakeLambertianLight },
     { "spot", "cone (degrees, 30), falloff (degrees, 5), lumens (1 W/sr in the cone if left out), maintenance (1)",
       MakeSpotLight },
-    { "goniometric", "file (IES or EULUMDAT), lumens (the file's), maintenance (1)", MakeGoniometricLight },
+    { "goniometric", "file (IES or EULUMDAT), lumens (the file's), maintenance (1), tilt (degrees from as measured, 0)",
+      MakeGoniometricLight },
   };
   return kinds;
 }

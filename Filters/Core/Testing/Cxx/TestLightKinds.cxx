@@ -102,6 +102,14 @@ TEST(LightKinds, FluxInClosedForm)
   std::string error;
   EXPECT_FALSE(MakeLightDistribution("point", { { "maintenance", "1.5" } }, error));
   EXPECT_EQ(error, "a maintenance factor is above 0 and at most 1, not 1.500000");
+  // A lamp tilted from its measured position: the file's TILT table's factor at that angle.
+  const std::string tilted = ::testing::TempDir() + "tilted.ies";
+  {
+    std::ofstream out(tilted);
+    out << "IESNA:LM-63-2002\nTILT=INCLUDE\n1\n3\n0 45 90\n1.0 0.9 0.6\n1 -1 1 1 1 1 2 0 0 0\n1 1 10\n0\n0\n100\n";
+  }
+  EXPECT_NEAR(Made("goniometric", { { "file", tilted } })->Intensity({ 0, 0, 1 }), 100, 1e-9);
+  EXPECT_NEAR(Made("goniometric", { { "file", tilted }, { "tilt", "67.5" } })->Intensity({ 0, 0, 1 }), 75, 1e-9);
 }
 
 TEST(LightKinds, TheFrameFollowsAimAndRotation)
