@@ -196,4 +196,21 @@ with open(IES) as source, open(broken, "w") as target:
     target.write(source.read()[:3000])
 refused(lambda: relight.mark_lights(room, relight.luminaire("A", broken)), ["relight_truncated.ies:", "the file ends"])
 
+# Field arrays that disagree (a luminaire row cut short by hand): the solver says which.
+cut = relight.mark_lights(room, relight.luminaire("A", LDT, position=(2, 2, 2)))
+cut.GetFieldData().GetArray("LuminairePlacement").SetNumberOfComponents(7)
+solver = relight.vtkLightTaggedRadiosity()
+mesher = relight.vtkRadiosityMesher()
+mesher.SetInputData(cut)
+solver.SetInputConnection(mesher.GetOutputPort())
+catcher = relight.ErrorCatcher(solver)
+solver.Update()
+check(catcher.failed() and "LuminairePlacement" in catcher.first_error() and solver.GetOutput().GetNumberOfCells() == 0,
+      f"malformed luminaire arrays are refused, the output empty: {catcher.first_error()[:140]}")
+try:
+    relight.luminaire("A", LDT, position=(float("nan"), 0, 0))
+    check(False, "a NaN position is refused")
+except ValueError as error:
+    check("position" in str(error), f"a NaN position is refused: {error}")
+
 finish("TestLuminaires")
