@@ -52,38 +52,16 @@ void pqRadiosityAreaLightsWidget::fillCell(int row, int column)
 
 void pqRadiosityAreaLightsWidget::cellEdited(int row, int column)
 {
-  if (column == 1)
+  if (column == 1 || !this->Table->item(row, column))
   {
     return;
   }
-  QTableWidgetItem* item = this->Table->item(row, column);
-  if (!item)
-  {
-    return;
-  }
-  const QString text = item->text().trimmed();
-  QStringList parts = column == 0 ? QStringList{ text }
-                                  : text.split(QRegularExpression("[,;\\s]+"), Qt::SkipEmptyParts);
-  bool usable = parts.size() == this->count(column) && !(column == 0 && text.isEmpty());
-  for (int k = 0; usable && column > 0 && k < parts.size(); ++k)
-  {
-    bool number = false;
-    const double value = parts[k].toDouble(&number);
-    // A lamp needs a size (Mark Lights refuses one without) and a direction.
-    usable = number && std::isfinite(value) && (column != 4 || value > 0);
-  }
-  if (usable && column == 3)
-  {
-    usable = parts[0].toDouble() != 0 || parts[1].toDouble() != 0 || parts[2].toDouble() != 0;
-  }
-  if (!usable)
-  {
-    const QSignalBlocker block(this->Table);
-    item->setText(this->cell(row, column).join(", ")); // what it held
-    return;
-  }
-  std::copy(parts.begin(), parts.end(), this->Rows.begin() + this->at(row, column));
-  Q_EMIT this->rowsChanged();
+  const QStringList parts = this->typed(row, column, column == 0);
+  // A lamp needs a name, a size (Mark Lights refuses one without) and a direction.
+  const bool usable = column == 0 ? !parts[0].isEmpty()
+    : column == 4                 ? this->numbers(parts, column, 0) && parts[0].toDouble() > 0 && parts[1].toDouble() > 0
+                                  : this->numbers(parts, column, -HUGE_VAL) && (column != 3 || direction(parts));
+  this->takeOrPutBack(row, column, parts, usable);
 }
 
 QStringList pqRadiosityAreaLightsWidget::newRow() const

@@ -125,34 +125,16 @@ void pqRadiosityLuminairesWidget::pickFile(int row)
 
 void pqRadiosityLuminairesWidget::cellEdited(int row, int column)
 {
-  QTableWidgetItem* item = this->Table->item(row, column);
-  if (!item || column == Kind || column == File)
+  if (!this->Table->item(row, column) || column == Kind || column == File)
   {
     return;
   }
-  const QString text = item->text().trimmed();
-  QStringList parts = column == Name || column == Parameters
-    ? QStringList{ text }
-    : text.split(QRegularExpression("[,;\\s]+"), Qt::SkipEmptyParts);
-  bool usable = parts.size() == this->count(column) && !(column == Name && text.isEmpty());
-  for (int k = 0; usable && column >= Position && k < parts.size(); ++k)
-  {
-    bool number = false;
-    const double value = parts[k].toDouble(&number);
-    usable = number && std::isfinite(value) && (column != Color || value >= 0);
-  }
-  if (usable && column == Aim)
-  {
-    usable = parts[0].toDouble() != 0 || parts[1].toDouble() != 0 || parts[2].toDouble() != 0;
-  }
-  if (!usable)
-  {
-    const QSignalBlocker block(this->Table);
-    item->setText(this->cell(row, column).join(", ")); // what it held
-    return;
-  }
-  std::copy(parts.begin(), parts.end(), this->Rows.begin() + this->at(row, column));
-  Q_EMIT this->rowsChanged();
+  const QStringList parts = this->typed(row, column, column == Name || column == Parameters);
+  const bool usable = column == Name ? !parts[0].isEmpty()
+    : column == Parameters           ? true
+                                     : this->numbers(parts, column, column == Color ? 0 : -HUGE_VAL) &&
+      (column != Aim || direction(parts));
+  this->takeOrPutBack(row, column, parts, usable);
 }
 
 QStringList pqRadiosityLuminairesWidget::newRow() const

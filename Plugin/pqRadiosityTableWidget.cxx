@@ -4,11 +4,14 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
+#include <QRegularExpression>
+#include <QSignalBlocker>
 #include <QScrollBar>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 
 pqRadiosityTableWidget::pqRadiosityTableWidget(vtkSMProxy* proxy, const Design& design, QWidget* parent)
@@ -58,6 +61,46 @@ QStringList pqRadiosityTableWidget::names() const
     first << this->Rows[k];
   }
   return first;
+}
+
+QStringList pqRadiosityTableWidget::typed(int row, int column, bool text) const
+{
+  const QTableWidgetItem* item = this->Table->item(row, column);
+  const QString typed = item ? item->text().trimmed() : QString();
+  return text ? QStringList{ typed } : typed.split(QRegularExpression("[,;\\s]+"), Qt::SkipEmptyParts);
+}
+
+bool pqRadiosityTableWidget::numbers(const QStringList& parts, int column, double low) const
+{
+  bool usable = parts.size() == this->count(column);
+  for (int k = 0; usable && k < parts.size(); ++k)
+  {
+    bool number = false;
+    const double value = parts[k].toDouble(&number);
+    usable = number && std::isfinite(value) && value >= low;
+  }
+  return usable;
+}
+
+bool pqRadiosityTableWidget::direction(const QStringList& parts)
+{
+  return parts.size() == 3 && (parts[0].toDouble() != 0 || parts[1].toDouble() != 0 || parts[2].toDouble() != 0);
+}
+
+void pqRadiosityTableWidget::takeOrPutBack(int row, int column, const QStringList& parts, bool usable)
+{
+  QTableWidgetItem* item = this->Table->item(row, column);
+  if (!usable)
+  {
+    const QSignalBlocker block(this->Table);
+    if (item)
+    {
+      item->setText(this->cell(row, column).join(", ")); // what it held
+    }
+    return;
+  }
+  std::copy(parts.begin(), parts.end(), this->Rows.begin() + this->at(row, column));
+  Q_EMIT this->rowsChanged();
 }
 
 void pqRadiosityTableWidget::addRow()

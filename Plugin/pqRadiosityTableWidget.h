@@ -48,6 +48,15 @@ protected:
   int count(int column) const { return this->Starts[column + 1] - this->Starts[column]; }
   /// Every entry's first element (its name).
   QStringList names() const;
+  /// What was typed into cell (row, column) as its elements: the whole text for a `text`
+  /// column, else the words between commas, semicolons and spaces.
+  QStringList typed(int row, int column, bool text) const;
+  /// Whether `parts` fill the column and are finite numbers of at least `low`.
+  bool numbers(const QStringList& parts, int column, double low) const;
+  /// Whether three numbers are a direction (not all zero).
+  static bool direction(const QStringList& parts);
+  /// `parts` into Rows where `usable` (rowsChanged said), else the cell shows again what it held.
+  void takeOrPutBack(int row, int column, const QStringList& parts, bool usable);
   /// Cell (row, column)'s elements, as Rows holds them.
   QStringList cell(int row, int column) const { return this->Rows.mid(this->at(row, column), this->count(column)); }
 

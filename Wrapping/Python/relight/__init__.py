@@ -25,7 +25,8 @@ from .vtkRadiosityRendering import vtkRadiosityRelightMapper  # noqa: F401
 from .exporting import export_viewer, write_gltf  # noqa: F401
 from . import levels  # noqa: F401  (the accuracy knob: relight.solve(..., accuracy="fine"))
 from .importing import import_scene  # noqa: F401
-from .staging import area_light, in_room, luminaire, mark_lights, on_ground, work_plane, write_work_plane_csv  # noqa: F401
+from .staging import area_light, in_room, luminaire, mark_lights, on_ground  # noqa: F401
+from .work_planes import work_plane, write_work_plane_csv  # noqa: F401
 from .scene import (  # noqa: F401
     ErrorCatcher,
     add_field_ints,
