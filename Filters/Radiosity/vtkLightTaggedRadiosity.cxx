@@ -81,6 +81,7 @@ void vtkLightTaggedRadiosity::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ConvergenceThreshold: " << this->ConvergenceThreshold << "\n";
   os << indent << "TimeBudget: " << this->TimeBudget << "\n";
   os << indent << "GatherSweeps: " << this->GatherSweeps << "\n";
+  os << indent << "GatherCache: " << this->GatherCache << "\n";
   os << indent << "ClusterSeparation: " << this->ClusterSeparation << "\n";
   os << indent << "GatherRays: " << this->GatherRays << "\n";
   os << indent << "AmbientTerm: " << this->AmbientTerm << "\n";
@@ -224,6 +225,7 @@ radiosity::SolverOptions vtkLightTaggedRadiosity::Options(int threads, const rad
   options.Clustered.Separation = this->ClusterSeparation;
   options.Gather.Rays = this->GatherRays;
   options.Gather.Sweeps = this->GatherSweeps;
+  options.Gather.CacheAccuracy = this->GatherCache;
   options.FormFactorMethod = static_cast<radiosity::FormFactorMethod>(this->FormFactorMethod);
   options.FormFactorSamples = this->FormFactorSamples;
   options.Threads = threads;

@@ -204,6 +204,17 @@ public:
   ///@}
 
   ///@{
+  /// The final gather's irradiance cache (Ward's a, default 0.15; 0: every point gathers
+  /// for itself): a point gathers its interreflection only where no point gathered nearby
+  /// reaches it, and reads those points' where they do; its direct light is its own. A
+  /// point's reach is this fraction of the harmonic mean distance its rays travelled, never
+  /// past the nearest surface they met, so it does not reach through a wall. Smaller is
+  /// closer and slower. FinalGather in Effects says how many points gathered.
+  vtkSetClampMacro(GatherCache, double, 0.0, 1.0);
+  vtkGetMacro(GatherCache, double);
+  ///@}
+
+  ///@{
   /// Stop after this many seconds, the final gather included; 0 (default) means no limit.
   /// The gather takes what the shooting left: fewer rays a point where all would not fit,
   /// none (the points show their elements' mean) where that is spent; the FinalGather row
@@ -373,6 +384,7 @@ private:
   double ClusterSeparation = 3.0;
   int GatherRays = 256;
   int GatherSweeps = 1;
+  double GatherCache = 0.15;
   bool AmbientTerm = false;
   bool SeparateDirect = false;
   int NumberOfThreads = 0;

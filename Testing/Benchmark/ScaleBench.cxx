@@ -130,6 +130,7 @@ int main(int argc, char* argv[])
   long long referenceElements = 40000;
   double mitsubaSeconds = 0; // wall time of the reference render (all probes, all lights)
   int gatherRays = 256;      // the final gather, as the solver filter does by default (0: off)
+  double cache = GatherSettings().CacheAccuracy; // the gather's irradiance cache (0: every point gathers)
   double lampGrading = 0.2;  // finer elements by the lamps, as the mesher filter does by default (0: off)
   std::string csvPath = "out/bench/scale.csv", exportPath, mitsubaPath;
   for (int i = 1; i + 1 < argc; i += 2)
@@ -158,6 +159,8 @@ int main(int argc, char* argv[])
       mitsubaSeconds = std::atof(argv[i + 1]);
     else if (key == "--gather")
       gatherRays = std::atoi(argv[i + 1]);
+    else if (key == "--cache")
+      cache = std::atof(argv[i + 1]);
     else if (key == "--grading")
       lampGrading = std::atof(argv[i + 1]);
   }
@@ -167,8 +170,8 @@ int main(int argc, char* argv[])
   const Probes probes(3000);
   WorkerPool pool(0);
   std::printf("Scale benchmark: furnished room, %zu polygons, %d lights, %.0f m^2, patch size %.2f m, %d threads, "
-              "final gather %d rays\n\n",
-    room.Reflectance.size(), lights, area, patch, pool.Threads(), gatherRays);
+              "final gather %d rays, irradiance cache %.2f\n\n",
+    room.Reflectance.size(), lights, area, patch, pool.Threads(), gatherRays, cache);
 
   // The probes are placed from a small mesh (the geometry, so the hit points, is the same
   // at every size). The reference: Mitsuba 3's path tracer where its values are given,
@@ -232,12 +235,18 @@ int main(int argc, char* argv[])
     options.SolverMethod = SolverMethod::Hierarchical;
     options.MaximumShots = 1000000;
     options.Gather.Rays = gatherRays;
+    options.Gather.CacheAccuracy = cache;
     double worst = 0, mean = 0;
     const Run tagged = SolveRoom(solver, mesh, lights, SolutionMode::LightTagged, options);
     mean = MeanError(Sample(solver, mesh, tagged.Result, probes), referenceValues, lights, &worst);
     Print("hierarchical, k=8 tagged", mesh, patches, tagged, mean, worst);
     std::printf("  links: %lld to patches, %lld to elements\n", tagged.Result.Statistics.PatchLinks,
       tagged.Result.Statistics.ElementLinks);
+    if (tagged.Result.GatherRecords > 0)
+    {
+      std::printf("  irradiance cache: %d of %d points gathered for themselves\n", tagged.Result.GatherRecords,
+        tagged.Result.GatherPoints);
+    }
     csv.Add(mesh, patches, tagged, "tagged", lights, mean, worst);
     const Run combined = SolveRoom(solver, mesh, lights, SolutionMode::StandardCombined, options);
     Print("hierarchical, k=1 combined", mesh, patches, combined, std::nan(""), std::nan(""));

@@ -101,7 +101,7 @@ def add_lamps(house, lamps, half=0.15):
 
 
 def solve(scene, patch, element, cluster_angle=30.0, time_budget=0.0, method="Auto", separation=3.0, gather_rays=256,
-          lamp_grading=0.2, gather_sweeps=1):
+          lamp_grading=0.2, gather_sweeps=1, gather_cache=None):
     """Mesh + solve at the solver's default settings (Auto picks the clustered method here);
     keeps warnings and errors."""
     mesher = relight.vtkRadiosityMesher()
@@ -114,6 +114,8 @@ def solve(scene, patch, element, cluster_angle=30.0, time_budget=0.0, method="Au
     solver.SetClusterSeparation(separation)
     solver.SetGatherRays(gather_rays)
     solver.SetGatherSweeps(gather_sweeps)
+    if gather_cache is not None:
+        solver.SetGatherCache(gather_cache)
     getattr(solver, f"SetSolverMethodTo{method}")()
     catchers = [relight.ErrorCatcher(mesher), relight.ErrorCatcher(solver)]
     solver.Update()
@@ -188,6 +190,8 @@ def main():
     parser.add_argument("--cluster-separation", type=float, default=3.0,
                         help="ClusterSeparation (clustered method): larger is more accurate and slower")
     parser.add_argument("--gather-rays", type=int, default=256, help="GatherRays: the final gather's rays per point (0: off)")
+    parser.add_argument("--gather-cache", type=float, default=None,
+                        help="GatherCache: the gather's irradiance cache (0: every point gathers; default: the solver's)")
     parser.add_argument("--gather-sweeps", type=int, default=1, help="GatherSweeps: the gather's passes over the elements")
     parser.add_argument("--lamp-grading", type=float, default=0.2,
                         help="the mesher's LampGrading: finer elements by the lamps (0: one size everywhere)")
@@ -222,7 +226,8 @@ def main():
     k = len(lamps)
     scene = add_lamps(house, lamps)
     solver, warnings = solve(scene, args.patch, args.element, args.cluster_angle, args.time_budget, args.method,
-                             args.cluster_separation, args.gather_rays, args.lamp_grading, args.gather_sweeps)
+                             args.cluster_separation, args.gather_rays, args.lamp_grading, args.gather_sweeps,
+                             args.gather_cache)
     result = solver.GetOutput()
     method = result.GetFieldData().GetAbstractArray("SolverMethod").GetValue(0)
     commit = subprocess.run(["git", "describe", "--always", "--dirty"], capture_output=True, text=True).stdout.strip()
@@ -230,7 +235,7 @@ def main():
                elements=result.GetNumberOfCells(),
                patches=len(np.unique(relight.cell_array(result, "PatchId"))), lights=k,
                element=args.element, patch=args.patch, method=args.method, separation=args.cluster_separation,
-               gather_rays=args.gather_rays, gather_sweeps=args.gather_sweeps, lamp_grading=args.lamp_grading, solve_s=round(solver.GetLastSolveSeconds(), 2),
+               gather_rays=args.gather_rays, gather_sweeps=args.gather_sweeps, gather_cache=args.gather_cache, lamp_grading=args.lamp_grading, solve_s=round(solver.GetLastSolveSeconds(), 2),
                shots=solver.GetLastShots(), converged=bool(solver.GetLastConverged()),
                peak_mib=round(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024),
                warnings=len(warnings))

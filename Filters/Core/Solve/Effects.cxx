@@ -212,8 +212,13 @@ EffectDecision GatherRow(const SolverOptions& options, const Solution& solution)
   const std::string fewer = solution.GatherPointRays < g.Rays
     ? Format(" (of %.0f asked: what the TimeBudget left)", g.Rays)
     : std::string();
+  const std::string shared = solution.GatherRecords > 0
+    ? Format(" at %.0f of %.0f points (irradiance cache, CacheAccuracy %.2f; the others interpolate them)",
+        solution.GatherRecords, solution.GatherPoints, g.CacheAccuracy)
+    : std::string();
   return { "FinalGather", true,
     Format("simulated: %.0f sweep(s) over the elements, then %.0f rays", g.Sweeps, solution.GatherPointRays) + fewer +
+      shared +
       Format(" and %.0f shadow rays a light a point; %.0f rays", g.LightRays, static_cast<double>(solution.GatherRays)) };
 }
 } // namespace

@@ -1,4 +1,5 @@
 #include "Solve/FinalGather.h"
+#include "Solve/IrradianceCache.h"
 
 #include "Base/SampleStream.h"
 #include "Base/WorkerPool.h"
@@ -11,6 +12,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numeric>
 
@@ -333,6 +335,23 @@ int CoprimeStep(int n)
   return step;
 }
 
+/// How far a point's gather rays went before they hit (misses went infinitely far): the
+/// irradiance cache's reach from them.
+struct HitDistances
+{
+  double InverseSum = 0;
+  double Nearest = std::numeric_limits<double>::infinity();
+  int Backs = 0; ///< hits on back faces
+  /// Where given, each ray's direction, distance and what it brought back, for a record's
+  /// gradients (IrradianceGradients).
+  StratifiedRays* Samples = nullptr;
+  void Add(double distance)
+  {
+    InverseSum += 1.0 / std::max(distance, 1e-300);
+    Nearest = std::min(Nearest, distance);
+  }
+};
+
 /// The whole state of one gather, shared read-only by the threads.
 class Gather
 {
@@ -377,26 +396,58 @@ public:
   long long Evaluate(size_t p, Vec3* radiosity, Vec3* direct, Vec3* irradiance, std::vector<Vec3>& scratch,
     char& hidden) const
   {
-    const PointFrame& f = Frames[p];
-    if (!f.Used)
+    if (!Frames[p].Used)
     {
       return 0;
     }
     std::vector<Vec3> arriving(S), gathered(S);
-    long long rays = f.Element < 0 ? DirectLight(p, f, arriving, scratch) : SpreadDirectLight(p, f, arriving, scratch);
-    int backs = 0;
-    rays += Interreflection(p, f, gathered, backs);
-    hidden = 2 * backs > Side * Side;
-    for (int m = 0; m < S; ++m)
-    {
-      const Vec3& e = PointEmission[p * S + m];
-      direct[m] = e + Times(f.Reflectance, arriving[m]);
-      radiosity[m] = direct[m] + Times(f.Reflectance, gathered[m]);
-      irradiance[m] = arriving[m] + gathered[m];
-    }
+    HitDistances hits;
+    const long long rays = DirectAt(p, arriving.data(), scratch) + IndirectAt(p, gathered.data(), hits);
+    hidden = SeesBacks(hits);
+    Compose(p, arriving.data(), gathered.data(), radiosity, direct, irradiance);
     return rays;
   }
 
+  /// The direct light arriving at point p (before its reflectance), per solution, into
+  /// arriving[0 .. S); returns the shadow rays cast.
+  long long DirectAt(size_t p, Vec3* arriving, std::vector<Vec3>& scratch) const
+  {
+    const PointFrame& f = Frames[p];
+    std::vector<Vec3> sum(S);
+    const long long rays = f.Element < 0 ? DirectLight(p, f, sum, scratch) : SpreadDirectLight(p, f, sum, scratch);
+    std::copy(sum.begin(), sum.end(), arriving);
+    return rays;
+  }
+
+  /// The interreflection arriving at point p, per solution, into gathered[0 .. S), and how
+  /// far its rays went; returns the rays cast.
+  long long IndirectAt(size_t p, Vec3* gathered, HitDistances& hits) const
+  {
+    std::vector<Vec3> sum(S);
+    const long long rays = Interreflection(p, Frames[p], sum, hits);
+    std::copy(sum.begin(), sum.end(), gathered);
+    return rays;
+  }
+
+  /// Mostly back faces: behind something resting on the point's surface (see FillHidden).
+  bool SeesBacks(const HitDistances& hits) const { return 2 * hits.Backs > Side * Side; }
+
+  /// Point p's emission plus what arrives, reflected: radiosity, its direct part and the
+  /// irradiance, per solution.
+  void Compose(size_t p, const Vec3* arriving, const Vec3* gathered, Vec3* radiosity, Vec3* direct,
+    Vec3* irradiance) const
+  {
+    const Vec3& rho = Frames[p].Reflectance;
+    for (int m = 0; m < S; ++m)
+    {
+      direct[m] = PointEmission[p * S + m] + Times(rho, arriving[m]);
+      radiosity[m] = direct[m] + Times(rho, gathered[m]);
+      irradiance[m] = arriving[m] + gathered[m];
+    }
+  }
+
+  const PointFrame& Frame(size_t p) const { return Frames[p]; }
+  int GatherRays() const { return Side * Side; }
   size_t Points() const { return Frames.size(); }
 
 private:
@@ -587,7 +638,7 @@ private:
 
   /// Irradiance from the element solution less its emission (the emitters were taken
   /// directly), along Side x Side stratified cosine rays; back faces send nothing.
-  long long Interreflection(size_t p, const PointFrame& f, std::vector<Vec3>& out, int& backs) const
+  long long Interreflection(size_t p, const PointFrame& f, std::vector<Vec3>& out, HitDistances& hits) const
   {
     if (Side == 0)
     {
@@ -599,6 +650,12 @@ private:
       TangentFrame(f.Normal, t, b);
     }
     b = Cross(f.Normal, t);
+    if (hits.Samples)
+    {
+      hits.Samples->Reset(Side, S);
+      hits.Samples->T = t;
+      hits.Samples->B = b;
+    }
     SampleStream random(p, 0x9a7e, Salt);
     Visibility::Hit hit;
     for (int i = 0; i < Side; ++i)
@@ -609,19 +666,34 @@ private:
         const double r = std::sqrt(u);
         const Vec3 d = t * (r * std::cos(phi)) + b * (r * std::sin(phi)) + f.Normal * std::sqrt(1 - u);
         const int start = ((i * Side + j) * RayStep + 1) % (Side * Side);
+        const size_t cell = static_cast<size_t>(i) * Side + j;
+        if (hits.Samples)
+        {
+          hits.Samples->U[cell] = u;
+          hits.Samples->Phi[cell] = phi;
+        }
         if (!Rays.Intersect(Spot(f, start, Side * Side, random), d, hit) || hit.Polygon < 0)
         {
           continue;
         }
+        hits.Add(hit.Distance);
+        if (hits.Samples)
+        {
+          hits.Samples->Distance[cell] = hit.Distance;
+        }
         if (Dot(G.Normal[hit.Polygon], d) >= 0)
         {
-          ++backs;
+          ++hits.Backs;
           continue;
         }
         const size_t at = static_cast<size_t>(hit.Polygon) * S;
         for (int m = 0; m < S; ++m)
         {
           out[m] += Radiosity[at + m] - Emission[at + m];
+        }
+        for (int m = 0; m < S && hits.Samples; ++m)
+        {
+          hits.Samples->Values[cell * S + m] = Radiosity[at + m] - Emission[at + m];
         }
       }
     }
@@ -693,8 +765,6 @@ void KeepUnswept(const SceneMesh& mesh, const SceneGeometry& g, const std::vecto
   }
 }
 
-/// Every frame of `gather` on the pool, in blocks between which `progress` is told the
-/// fraction done, mapped to [from, to).
 /// Sums `values` over the ranks in place (each rank filled only its own points).
 void SumOverRanks(Collective& ranks, std::vector<Vec3>& values)
 {
@@ -702,58 +772,233 @@ void SumOverRanks(Collective& ranks, std::vector<Vec3>& values)
   ranks.Sum(reinterpret_cast<double*>(values.data()), 3 * values.size());
 }
 
-/// Evaluates every point of `gather` (on several ranks each its share, every `Ranks()`-th
-/// point, then summed: each point is computed by one rank alone, so the sum is the serial
-/// answer bit for bit), in blocks between which `progress` may stop it (all ranks agree).
-GatheredPoints Run(const Gather& gather, int solutions, const WorkerPool& pool, const ProcessGroup& group,
-  const std::function<bool(double)>& progress, double from, double to)
+/// Calls evaluate(i, scratch) for i in [0, count) on the pool (on several ranks each every
+/// `Ranks()`-th item: the caller sums what they wrote, and as each item is computed by one
+/// rank alone the sum is the serial answer bit for bit), in blocks between which `progress`
+/// may stop it (all ranks agree). Returns the rays evaluate reported, summed over items on
+/// this rank, or -1 where it was stopped.
+template <typename Evaluate>
+long long ForEachItem(size_t count, const WorkerPool& pool, Collective& ranks,
+  const std::function<bool(double)>& progress, double from, double to, const Evaluate& evaluate)
 {
-  Collective ranks(group);
   const size_t rank = static_cast<size_t>(ranks.Rank()), share = static_cast<size_t>(ranks.Ranks());
-  GatheredPoints out;
-  const size_t points = gather.Points();
-  out.Radiosity.assign(points * solutions, Vec3());
-  out.Direct.assign(points * solutions, Vec3());
-  out.Irradiance.assign(points * solutions, Vec3());
-  const int blocks = static_cast<int>(std::min<size_t>(64, std::max<size_t>(1, points / 256)));
-  std::vector<double> pointRays(points, 0), hidden(points, 0);
-  out.Hidden.assign(points, 0);
-  for (int block = 0; block < blocks && !out.Aborted; ++block)
+  const int blocks = static_cast<int>(std::min<size_t>(64, std::max<size_t>(1, count / 256)));
+  std::vector<long long> itemRays(count, 0);
+  for (int block = 0; block < blocks; ++block)
   {
-    const size_t first = points * block / blocks, last = points * (block + 1) / blocks;
+    const size_t first = count * block / blocks, last = count * (block + 1) / blocks;
     pool.For(static_cast<int>(last - first), 16, [&](int begin, int end) {
       std::vector<Vec3> scratch;
       for (int i = begin; i < end; ++i)
       {
-        const size_t p = first + i;
-        if (p % share == rank)
+        const size_t item = first + i;
+        if (item % share == rank)
         {
-          pointRays[p] = static_cast<double>(
-            gather.Evaluate(p, &out.Radiosity[p * solutions], &out.Direct[p * solutions], &out.Irradiance[p * solutions],
-              scratch, out.Hidden[p]));
+          itemRays[item] = evaluate(item, scratch);
         }
       }
     });
     double stop = progress && !progress(from + (to - from) * (block + 1) / blocks) && block + 1 < blocks ? 1 : 0;
     ranks.Sum(&stop, 1);
-    out.Aborted = stop > 0;
+    if (stop > 0)
+    {
+      return -1;
+    }
   }
+  return std::accumulate(itemRays.begin(), itemRays.end(), 0LL);
+}
+
+/// Evaluates every point of `gather` (each rank its share, then summed), in blocks between
+/// which `progress` may stop it.
+GatheredPoints Run(const Gather& gather, int solutions, const WorkerPool& pool, const ProcessGroup& group,
+  const std::function<bool(double)>& progress, double from, double to)
+{
+  Collective ranks(group);
+  GatheredPoints out;
+  const size_t points = gather.Points();
+  out.Radiosity.assign(points * solutions, Vec3());
+  out.Direct.assign(points * solutions, Vec3());
+  out.Irradiance.assign(points * solutions, Vec3());
+  out.Hidden.assign(points, 0);
+  const long long rays = ForEachItem(points, pool, ranks, progress, from, to, [&](size_t p, std::vector<Vec3>& scratch) {
+    return gather.Evaluate(
+      p, &out.Radiosity[p * solutions], &out.Direct[p * solutions], &out.Irradiance[p * solutions], scratch, out.Hidden[p]);
+  });
+  out.Aborted = rays < 0;
+  double total = static_cast<double>(std::max(0LL, rays));
   if (!out.Aborted && ranks.Distributed())
   {
     SumOverRanks(ranks, out.Radiosity);
     SumOverRanks(ranks, out.Direct);
     SumOverRanks(ranks, out.Irradiance);
-    std::copy(out.Hidden.begin(), out.Hidden.end(), hidden.begin());
+    std::vector<double> hidden(out.Hidden.begin(), out.Hidden.end());
     ranks.Sum(hidden);
-    ranks.Sum(pointRays);
+    ranks.Sum(&total, 1);
     for (size_t p = 0; p < points; ++p)
     {
       out.Hidden[p] = hidden[p] > 0 ? 1 : 0;
     }
   }
-  for (double r : pointRays)
+  out.Rays = static_cast<long long>(total);
+  return out;
+}
+
+/// The gathered interreflection of `list`'s points as irradiance-cache records (Point: the
+/// index into `list`'s own list of points, `items`), each rank its share; their values go
+/// to `gathered` by point, their gradients (IrradianceGradients: 3 translation then 3
+/// rotation per solution) after `gradients`' end, in the records' order.
+std::vector<CacheRecord> GatherRecords(const Gather& gather, const std::vector<int>& items,
+  const std::vector<int>& list, double accuracy, const WorkerPool& pool, Collective& ranks,
+  const std::function<bool(double)>& progress, double from, double to, std::vector<Vec3>& gathered,
+  std::vector<Vec3>& gradients, long long& rays)
+{
+  const int S = static_cast<int>(gathered.size() / items.size());
+  const size_t per = 6 * static_cast<size_t>(S);
+  std::vector<Vec3> values(list.size() * S), slopes(list.size() * per);
+  std::vector<double> reach(list.size(), 0.0);
+  const long long cast = ForEachItem(list.size(), pool, ranks, progress, from, to, [&](size_t i, std::vector<Vec3>&) {
+    thread_local StratifiedRays samples;
+    HitDistances hits;
+    hits.Samples = &samples;
+    const long long n = gather.IndirectAt(items[list[i]], &values[i * S], hits);
+    IrradianceGradients(samples, &slopes[i * per], &slopes[i * per + 3 * S]);
+    // A record that saw mostly back faces holds for nobody else (FillHidden mends it).
+    reach[i] = gather.SeesBacks(hits) ? -1.0 : RecordReach(accuracy, hits.InverseSum, gather.GatherRays(), hits.Nearest);
+    return n;
+  });
+  if (cast < 0)
   {
-    out.Rays += static_cast<long long>(r);
+    return {};
+  }
+  double total = static_cast<double>(cast);
+  if (ranks.Distributed())
+  {
+    SumOverRanks(ranks, values);
+    SumOverRanks(ranks, slopes);
+    ranks.Sum(reach);
+    ranks.Sum(&total, 1);
+  }
+  rays += static_cast<long long>(total);
+  std::vector<CacheRecord> records(list.size());
+  for (size_t i = 0; i < list.size(); ++i)
+  {
+    const PointFrame& f = gather.Frame(items[list[i]]);
+    records[i] = { list[i], f.Origin, f.Normal, std::max(0.0, reach[i]) };
+    std::copy(values.begin() + i * S, values.begin() + (i + 1) * S, gathered.begin() + static_cast<size_t>(list[i]) * S);
+  }
+  gradients.insert(gradients.end(), slopes.begin(), slopes.end());
+  return records;
+}
+
+/// Each point that did not gather for itself (own[i] 0) takes the weighted mean of the
+/// records that reach it, each moved to the point by its gradients (`gradients`, 6 per
+/// solution, at slot[record's point]).
+void Interpolate(const IrradianceCache& cache, const std::vector<char>& own, const std::vector<Vec3>& origins,
+  const std::vector<Vec3>& normals, const std::vector<int>& slot, const std::vector<Vec3>& gradients, int solutions,
+  const WorkerPool& pool, std::vector<Vec3>& gathered)
+{
+  const size_t per = 6 * static_cast<size_t>(solutions);
+  pool.For(static_cast<int>(own.size()), 256, [&](int begin, int end) {
+    std::vector<std::pair<int, double>> weights;
+    for (int i = begin; i < end; ++i)
+    {
+      const double sum = own[i] ? 0.0 : cache.Weights(origins[i], normals[i], weights);
+      for (int m = 0; m < solutions && sum > 0; ++m)
+      {
+        Vec3 value;
+        for (const auto& w : weights)
+        {
+          const CacheRecord& r = cache.Records()[w.first];
+          const Vec3 moved = origins[i] - r.Origin, turned = Cross(r.Normal, normals[i]);
+          const Vec3* slope = &gradients[slot[r.Point] * per + 3 * m];
+          const Vec3* turn = slope + 3 * solutions;
+          const Vec3 change{ Dot(slope[0], moved) + Dot(turn[0], turned), Dot(slope[1], moved) + Dot(turn[1], turned),
+            Dot(slope[2], moved) + Dot(turn[2], turned) };
+          value += (gathered[static_cast<size_t>(r.Point) * solutions + m] + change) * w.second;
+        }
+        gathered[static_cast<size_t>(i) * solutions + m] = value * (1.0 / sum);
+      }
+    }
+  });
+}
+
+/// The points of `gather` with their interreflection shared through an irradiance cache
+/// (IrradianceCache.h): direct light at every point, interreflection gathered at the points
+/// PlaceRecords picks and interpolated between them elsewhere. Records that saw mostly back
+/// faces are the hidden points.
+GatheredPoints CachedRun(const Gather& gather, int solutions, double accuracy, const WorkerPool& pool,
+  const ProcessGroup& group, const std::function<bool(double)>& progress, double from, double to)
+{
+  Collective ranks(group);
+  const size_t points = gather.Points();
+  std::vector<int> items; // the used points, in order
+  for (size_t p = 0; p < points; ++p)
+  {
+    if (gather.Frame(p).Used)
+    {
+      items.push_back(static_cast<int>(p));
+    }
+  }
+  GatheredPoints out;
+  std::vector<Vec3> arriving(points * solutions), gathered(items.size() * solutions);
+  const double mid = from + 0.3 * (to - from);
+  const long long direct = ForEachItem(items.size(), pool, ranks, progress, from, mid,
+    [&](size_t i, std::vector<Vec3>& scratch) { return gather.DirectAt(items[i], &arriving[items[i] * solutions], scratch); });
+  out.Aborted = direct < 0;
+  if (out.Aborted)
+  {
+    return out;
+  }
+  double total = static_cast<double>(direct);
+  ranks.Sum(&total, 1);
+  if (ranks.Distributed())
+  {
+    SumOverRanks(ranks, arriving);
+  }
+  long long rays = static_cast<long long>(total);
+  std::vector<Vec3> origins(items.size()), normals(items.size());
+  for (size_t i = 0; i < items.size(); ++i)
+  {
+    origins[i] = gather.Frame(items[i]).Origin;
+    normals[i] = gather.Frame(items[i]).Normal;
+  }
+  int level = 0;
+  std::vector<Vec3> gradients;
+  const std::vector<CacheRecord> records = PlaceRecords(origins, normals,
+    [&](const std::vector<int>& list) {
+      const double a = mid + (to - mid) * std::min(1.0, level / 5.0), b = mid + (to - mid) * std::min(1.0, ++level / 5.0);
+      std::vector<CacheRecord> found =
+        GatherRecords(gather, items, list, accuracy, pool, ranks, progress, a, b, gathered, gradients, rays);
+      out.Aborted = found.empty();
+      return found;
+    },
+    [&](int count, const std::function<void(int, int)>& body) { pool.For(count, 256, body); });
+  out.Rays = rays;
+  out.Records = static_cast<int>(records.size());
+  out.Points = static_cast<int>(items.size());
+  std::vector<char> own(items.size(), 0);
+  std::vector<int> slot(items.size(), -1);
+  out.Hidden.assign(points, 0);
+  for (size_t k = 0; k < records.size(); ++k)
+  {
+    const CacheRecord& r = records[k];
+    own[r.Point] = 1;
+    slot[r.Point] = static_cast<int>(k);
+    out.Hidden[items[r.Point]] = r.Reach > 0 ? 0 : 1;
+  }
+  if (out.Aborted)
+  {
+    return out;
+  }
+  Interpolate(IrradianceCache(records), own, origins, normals, slot, gradients, solutions, pool, gathered);
+  out.Radiosity.assign(points * solutions, Vec3());
+  out.Direct.assign(points * solutions, Vec3());
+  out.Irradiance.assign(points * solutions, Vec3());
+  for (size_t i = 0; i < items.size(); ++i)
+  {
+    const size_t p = items[i];
+    gather.Compose(p, &arriving[p * solutions], &gathered[i * solutions], &out.Radiosity[p * solutions],
+      &out.Direct[p * solutions], &out.Irradiance[p * solutions]);
   }
   return out;
 }
@@ -897,7 +1142,9 @@ GatheredPoints GatherAtPoints(const SceneMesh& mesh, const SceneGeometry& geomet
   std::vector<PointFrame> frames = MakeFrames(mesh, geometry, emission, solutions, rep, pointEmission);
   const Gather last(mesh, geometry, rays, emission, source, solutions, emitters, std::move(frames),
     std::move(pointEmission), std::max(pointRays, 1), settings.LightRays, shadows, 0, settings);
-  GatheredPoints out = Run(last, solutions, pool, settings.Group, progress, double(passes - 1) / passes, 1.0);
+  GatheredPoints out = settings.CacheAccuracy > 0
+    ? CachedRun(last, solutions, settings.CacheAccuracy, pool, settings.Group, progress, double(passes - 1) / passes, 1.0)
+    : Run(last, solutions, pool, settings.Group, progress, double(passes - 1) / passes, 1.0);
   out.Rays += sweepRays;
   out.PointRays = pointRays;
   if (out.Aborted)

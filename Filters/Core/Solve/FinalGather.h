@@ -24,6 +24,11 @@ struct GatherSettings
   /// square, for strata); 0 turns the gather off. 256 is the solver filter's default:
   /// at 64 a point's own noise outweighed what the gather corrects on a furnished room.
   int Rays = 256;
+  /// Shares the points' interreflection through an irradiance cache (Solve/IrradianceCache.h):
+  /// a point gathers for itself only where no record gathered nearby reaches it, a record
+  /// reaching this fraction of the harmonic mean distance its rays went (Ward's a); direct
+  /// light is still taken at every point. 0: every point gathers.
+  double CacheAccuracy = 0.15;
   /// Shadow rays per point to each emitting patch it can see (four first, the rest only
   /// where those disagree).
   int LightRays = 16;
@@ -67,6 +72,8 @@ struct GatheredPoints
   std::vector<char> Hidden;
   long long Rays = 0;       ///< rays cast, shadow rays included
   int PointRays = 0;        ///< the cosine rays a point took (fewer than asked on a TimeBudget)
+  int Records = 0;          ///< points that gathered for themselves with the cache on (0: off)
+  int Points = 0;           ///< points evaluated (each copy's representative once)
   bool OutOfTime = false;   ///< the TimeBudget left the points ungathered (Cells kept)
   bool Aborted = false;
 };

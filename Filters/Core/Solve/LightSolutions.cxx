@@ -306,6 +306,8 @@ void GatherInto(const RadiositySolver& solver, const SceneMesh& mesh, const std:
     out.Solutions, settings, options.Threads, progress, out.Statistics.BlockingSurfaces != 0);
   out.GatherRays = points.Rays;
   out.GatherPointRays = points.PointRays;
+  out.GatherRecords = points.Records;
+  out.GatherPoints = points.Points;
   out.GatherOutOfTime = points.OutOfTime;
   if (points.Aborted)
   {

@@ -198,6 +198,8 @@ struct Solution
   std::vector<Vec3> PointIrradiance;
   long long GatherRays = 0; ///< the rays the gather cast (the statistics count the solve's)
   int GatherPointRays = 0;  ///< the cosine rays a point took (fewer than asked on a TimeBudget)
+  int GatherRecords = 0;    ///< points that gathered for themselves through the irradiance cache (0: off)
+  int GatherPoints = 0;     ///< points the gather evaluated (copies share one)
   bool GatherOutOfTime = false; ///< the TimeBudget was spent before the points were gathered
   SolverStatistics Statistics;
 };

@@ -306,8 +306,9 @@ TEST(Distributed, AFailureOnOneRankStopsEveryRank)
 
 TEST(Distributed, TheFinalGatherSharedOverRanksGivesTheSerialAnswer)
 {
-  // Each rank gathers every other point (and element of the sweep) and the ranks sum: the
-  // points are the serial ones, and the rays cast over all ranks are the serial count.
+  // Each rank gathers every other point (and element of the sweep, and record of the
+  // irradiance cache) and the ranks sum: the points are the serial ones, and the rays cast
+  // over all ranks are the serial count.
   const SceneMesh mesh = Room();
   SolverOptions options = Converged(1e-4);
   options.Gather.Rays = 16;
@@ -326,5 +327,8 @@ TEST(Distributed, TheFinalGatherSharedOverRanksGivesTheSerialAnswer)
     EXPECT_LT(LargestDifference(many[r].PointRadiosity, one.PointRadiosity), 1e-7) << "rank " << r;
     EXPECT_LT(LargestDifference(many[r].Radiosity, one.Radiosity), 1e-7) << "rank " << r;
     EXPECT_EQ(many[r].GatherRays, one.GatherRays) << "rank " << r;
+    EXPECT_EQ(many[r].GatherRecords, one.GatherRecords) << "rank " << r;
   }
+  EXPECT_GT(one.GatherRecords, 0);
+  EXPECT_LT(one.GatherRecords, one.GatherPoints) << "the cache shared no gather";
 }
