@@ -33,7 +33,12 @@ struct PointFrame
   /// For an element's frame, the element: its rays then start at points spread over it,
   /// so they estimate its mean (a centroid overrates an element facing a lamp up close).
   int Element = -1;
+  double Radius = 0; ///< for an element's frame, its farthest corner from the centroid
 };
+
+/// An emitter this many element radii away (from its bounding sphere) lights an element all
+/// but linearly: the sweep takes its mean at the centre (Gather::SpreadDirectLight).
+const double kFar = 10.0;
 
 /// An emitting patch: its elements' loops for Lambert's formula, its fan triangles for
 /// shadow-ray ends, its emission per solution.
@@ -187,6 +192,10 @@ std::vector<PointFrame> ElementFrames(const SceneMesh& mesh, const SceneGeometry
     f.Reflectance = mesh.Reflectance[e];
     f.Origin = g.Centroid[e] + f.Normal * g.RayLift;
     f.Edge = mesh.Points[mesh.Polygon(e)[1 % mesh.PolygonSize(e)]] - mesh.Points[mesh.Polygon(e)[0]];
+    for (int v = 0; v < mesh.PolygonSize(e); ++v)
+    {
+      f.Radius = std::max(f.Radius, Norm(mesh.Points[mesh.Polygon(e)[v]] - g.Centroid[e]));
+    }
   }
   return frames;
 }
@@ -312,15 +321,25 @@ std::vector<Emitter> MakeEmitters(
   return emitters;
 }
 
-/// A point of stratum r of `count` over the emitter, by area.
-Vec3 EmitterPoint(const Emitter& emitter, int r, int count, SampleStream& random)
+/// A point of stratum r of `count` over the emitter, by area, from three numbers in [0, 1).
+Vec3 EmitterPointAt(const Emitter& emitter, int r, int count, const double* xi)
 {
-  const double u = (r + random.Next()) / count;
+  const double u = (r + xi[0]) / count;
   const size_t t = std::min<size_t>(
     std::lower_bound(emitter.Cdf.begin(), emitter.Cdf.end(), u) - emitter.Cdf.begin(), emitter.Cdf.size() - 1);
-  const double s = random.Next(), q = random.Next();
   const Vec3* abc = &emitter.Triangles[3 * t];
-  return TrianglePoint(abc[0], abc[1], abc[2], s, q);
+  return TrianglePoint(abc[0], abc[1], abc[2], xi[1], xi[2]);
+}
+
+/// The same, drawing its numbers from `random`.
+Vec3 EmitterPoint(const Emitter& emitter, int r, int count, SampleStream& random)
+{
+  double xi[3];
+  for (double& x : xi)
+  {
+    x = random.Next();
+  }
+  return EmitterPointAt(emitter, r, count, xi);
 }
 
 /// A step coprime to n near n times the golden ratio's fraction: r -> (r * step + o) % n
@@ -460,12 +479,7 @@ private:
     for (size_t k = 0; k < Emitters.size(); ++k)
     {
       const Emitter& em = Emitters[k];
-      if (Dot(em.Centre - f.Origin, f.Normal) < -em.Radius ||
-        (em.Planar && Dot(f.Origin - em.Centre, em.Normal) <= 0))
-      {
-        continue; // wholly behind the point, or the point behind the emitter
-      }
-      if (!Unshadowed(em, f.Origin, f.Normal, unshadowed, loop, scratch))
+      if (Behind(em, f.Origin, f.Normal) || !Unshadowed(em, f.Origin, f.Normal, unshadowed, loop, scratch))
       {
         continue;
       }
@@ -495,6 +509,22 @@ private:
   {
     long long rays = 0;
     std::vector<Vec3> loop, unshadowed(S);
+    // An emitter far away against the element's size lights it all but linearly, so its
+    // mean is the value at the centre: Lambert's formula once, the spread points casting
+    // only their shadow rays (a million small elements: four formulas an emitter become one).
+    thread_local std::vector<Vec3> atCentre;
+    thread_local std::vector<char> far;
+    atCentre.assign(Emitters.size() * S, Vec3());
+    far.assign(Emitters.size(), 0);
+    for (size_t k = 0; k < Emitters.size(); ++k)
+    {
+      const Emitter& em = Emitters[k];
+      far[k] = Norm(em.Centre - f.Origin) - em.Radius > kFar * f.Radius;
+      if (far[k] && !Behind(em, f.Origin, f.Normal) && Unshadowed(em, f.Origin, f.Normal, unshadowed, loop, scratch))
+      {
+        std::copy(unshadowed.begin(), unshadowed.end(), atCentre.begin() + k * S);
+      }
+    }
     SampleStream spots(p, 0x5a3d, Salt);
     for (int r = 0; r < LightRays; ++r)
     {
@@ -502,25 +532,44 @@ private:
       for (size_t k = 0; k < Emitters.size(); ++k)
       {
         const Emitter& em = Emitters[k];
-        if (Dot(em.Centre - x, f.Normal) < -em.Radius || (em.Planar && Dot(x - em.Centre, em.Normal) <= 0))
+        if (far[k] ? IsZero(&atCentre[k * S]) : Behind(em, x, f.Normal))
         {
           continue;
         }
-        const bool any = Unshadowed(em, x, f.Normal, unshadowed, loop, scratch);
+        const bool any = far[k] || Unshadowed(em, x, f.Normal, unshadowed, loop, scratch);
         SampleStream random(p * LightRays + r, k, 0x5eed + Salt);
         const int end = (r * LightStep + 1) % LightRays;
         if (!any || (Shadows && (++rays, Rays.Occluded(x, EmitterPoint(em, end, LightRays, random)))))
         {
           continue;
         }
+        const Vec3* value = far[k] ? &atCentre[k * S] : unshadowed.data();
         for (int m = 0; m < S; ++m)
         {
-          out[m] += unshadowed[m] * (1.0 / LightRays);
+          out[m] += value[m] * (1.0 / LightRays);
         }
       }
       rays += PointLightsAt(x, f.Normal, 1.0 / LightRays, out);
     }
     return rays;
+  }
+
+  /// The emitter wholly behind the point's surface, or the point behind a flat emitter.
+  static bool Behind(const Emitter& em, const Vec3& x, const Vec3& normal)
+  {
+    return Dot(em.Centre - x, normal) < -em.Radius || (em.Planar && Dot(x - em.Centre, em.Normal) <= 0);
+  }
+
+  bool IsZero(const Vec3* values) const
+  {
+    for (int m = 0; m < S; ++m)
+    {
+      if (values[m].x != 0 || values[m].y != 0 || values[m].z != 0)
+      {
+        return false;
+      }
+    }
+    return true;
   }
 
   /// Where ray r of `count` starts: the point itself, or for an element's frame the r-th
@@ -611,17 +660,21 @@ private:
   /// others are not cast: most of a building's points see a lamp wholly or not at all.
   double SeenFraction(size_t p, size_t k, const Vec3& from, long long& rays) const
   {
+    // Every stratum's numbers are drawn, its point made only where its ray is cast: most
+    // points stop after the first four.
     SampleStream random(p, k, 0x5eed + Salt);
-    std::vector<Vec3> ends(LightRays);
-    for (int r = 0; r < LightRays; ++r)
+    thread_local std::vector<double> xi;
+    xi.resize(3 * static_cast<size_t>(LightRays));
+    for (double& x : xi)
     {
-      ends[r] = EmitterPoint(Emitters[k], r, LightRays, random);
+      x = random.Next();
     }
+    auto arrives = [&](int r) { return !Rays.Occluded(from, EmitterPointAt(Emitters[k], r, LightRays, &xi[3 * r])); };
     const int step = std::max(1, LightRays / 4);
     int seen = 0, cast = 0;
     for (int r = 0; r < LightRays; r += step, ++cast)
     {
-      seen += Rays.Occluded(from, ends[r]) ? 0 : 1;
+      seen += arrives(r) ? 1 : 0;
     }
     rays += cast;
     if (seen == 0 || seen == cast || cast == LightRays)
@@ -630,7 +683,7 @@ private:
     }
     for (int r = 0; r < LightRays; ++r)
     {
-      seen += (r % step == 0 || Rays.Occluded(from, ends[r])) ? 0 : 1;
+      seen += r % step != 0 && arrives(r) ? 1 : 0;
     }
     rays += LightRays - cast;
     return static_cast<double>(seen) / LightRays;
