@@ -131,6 +131,7 @@ int main(int argc, char* argv[])
   double mitsubaSeconds = 0; // wall time of the reference render (all probes, all lights)
   int gatherRays = 256;      // the final gather, as the solver filter does by default (0: off)
   double cache = GatherSettings().CacheAccuracy; // the gather's irradiance cache (0: every point gathers)
+  int sweeps = GatherSettings().Sweeps, sweepRays = GatherSettings().SweepRays; // the gather's passes over the elements
   double lampGrading = 0.2;  // finer elements by the lamps, as the mesher filter does by default (0: off)
   std::string csvPath = "out/bench/scale.csv", exportPath, mitsubaPath;
   for (int i = 1; i + 1 < argc; i += 2)
@@ -159,6 +160,10 @@ int main(int argc, char* argv[])
       mitsubaSeconds = std::atof(argv[i + 1]);
     else if (key == "--gather")
       gatherRays = std::atoi(argv[i + 1]);
+    else if (key == "--sweeps")
+      sweeps = std::atoi(argv[i + 1]);
+    else if (key == "--sweep-rays")
+      sweepRays = std::atoi(argv[i + 1]);
     else if (key == "--cache")
       cache = std::atof(argv[i + 1]);
     else if (key == "--grading")
@@ -236,6 +241,8 @@ int main(int argc, char* argv[])
     options.MaximumShots = 1000000;
     options.Gather.Rays = gatherRays;
     options.Gather.CacheAccuracy = cache;
+    options.Gather.Sweeps = sweeps;
+    options.Gather.SweepRays = sweepRays;
     double worst = 0, mean = 0;
     const Run tagged = SolveRoom(solver, mesh, lights, SolutionMode::LightTagged, options);
     mean = MeanError(Sample(solver, mesh, tagged.Result, probes), referenceValues, lights, &worst);

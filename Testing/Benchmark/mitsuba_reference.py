@@ -156,7 +156,8 @@ def run(args):
         for k in range(K):
             t = time.time()
             # Distinct seed per light so the lights' estimates are independent.
-            res = probe_radiosity(make_scene(polys, k), [probes[i] for i in seen], args.spp, seed=k, eps=eps)
+            res = probe_radiosity(make_scene(polys, k), [probes[i] for i in seen], args.spp,
+                                  seed=k + 1000 * args.seed, eps=eps)
             for i, b in zip(seen, res):
                 f.write("%d,%d,%.7g,%.7g,%.7g\n" % (i, k, *b))
             print("light %d: %.1f s" % (k, time.time() - t), flush=True)
@@ -229,6 +230,8 @@ def main():
     ap.add_argument("input", nargs="?")
     ap.add_argument("output", nargs="?")
     ap.add_argument("--spp", type=int, default=4096)
+    ap.add_argument("--seed", type=int, default=0,
+                    help="another seed gives an independent render of the same probes (to measure its noise)")
     ap.add_argument("--probes", type=int, default=0,
                     help="use only the first N seen probes (0 = all)")
     ap.add_argument("--selftest", action="store_true")

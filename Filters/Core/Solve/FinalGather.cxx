@@ -375,11 +375,12 @@ struct HitDistances
 class Gather
 {
 public:
-  /// Evaluates `frames` (with their emission, [frame * solutions + m]) against the element
-  /// solution `radiosity`; `salt` draws other numbers for another pass over the same frames.
+  /// Evaluates `frames` (with their emission, [frame * solutions + m]; both held by
+  /// reference, as are the others) against the element solution `radiosity`; `salt` draws
+  /// other numbers for another pass over the same frames.
   Gather(const SceneMesh& mesh, const SceneGeometry& g, const Visibility& rays, const std::vector<Vec3>& emission,
     const std::vector<Vec3>& radiosity, int solutions, const std::vector<Emitter>& emitters,
-    std::vector<PointFrame> frames, std::vector<Vec3> frameEmission, int gatherRays, int lightRays, bool shadows,
+    const std::vector<PointFrame>& frames, const std::vector<Vec3>& frameEmission, int gatherRays, int lightRays, bool shadows,
     std::uint64_t salt, const GatherSettings& settings)
     : Mesh(mesh)
     , G(g)
@@ -393,8 +394,8 @@ public:
     , RayStep(CoprimeStep(std::max(1, Side * Side)))
     , LightStep(CoprimeStep(std::max(1, lightRays)))
     , Salt(salt)
-    , Frames(std::move(frames))
-    , PointEmission(std::move(frameEmission))
+    , Frames(frames)
+    , PointEmission(frameEmission)
     , Emitters(emitters)
     , FirstPoint(settings.FirstPointSolution)
     , PointLightsCombined(settings.PointLightsCombined)
@@ -421,7 +422,16 @@ public:
     }
     std::vector<Vec3> arriving(S), gathered(S);
     HitDistances hits;
-    const long long rays = DirectAt(p, arriving.data(), scratch) + IndirectAt(p, gathered.data(), hits);
+    long long rays = 0;
+    if (Known && (*Known)[p])
+    {
+      std::copy(Given->begin() + p * S, Given->begin() + (p + 1) * S, arriving.begin());
+    }
+    else
+    {
+      rays += DirectAt(p, arriving.data(), scratch);
+    }
+    rays += IndirectAt(p, gathered.data(), hits);
     hidden = SeesBacks(hits);
     Compose(p, arriving.data(), gathered.data(), radiosity, direct, irradiance);
     return rays;
@@ -466,6 +476,14 @@ public:
   }
 
   const PointFrame& Frame(size_t p) const { return Frames[p]; }
+  const std::vector<PointFrame>& AllFrames() const { return Frames; }
+
+  /// Frames with `known` set take `given` as their direct light instead of casting rays.
+  void TakeArriving(const std::vector<Vec3>* given, const std::vector<char>* known)
+  {
+    Given = given;
+    Known = known;
+  }
   int GatherRays() const { return Side * Side; }
   size_t Points() const { return Frames.size(); }
 
@@ -772,8 +790,12 @@ private:
   /// one half of a quad and the shadow rays' ends would follow their starts.
   const int RayStep, LightStep;
   const std::uint64_t Salt;
-  const std::vector<PointFrame> Frames;
-  const std::vector<Vec3> PointEmission;
+  const std::vector<PointFrame>& Frames;
+  const std::vector<Vec3>& PointEmission;
+  /// Where given (Known[p] set), frame p's direct light arriving, [p * S + m]: a sweep's
+  /// small elements take their corners' (KnownArriving).
+  const std::vector<Vec3>* Given = nullptr;
+  const std::vector<char>* Known = nullptr;
   const std::vector<Emitter>& Emitters;
   std::vector<PointLight> PointLights; ///< white where each is its own solution
   const int FirstPoint;
@@ -975,51 +997,99 @@ void Interpolate(const IrradianceCache& cache, const std::vector<char>& own, con
   });
 }
 
-/// The points of `gather` with their interreflection shared through an irradiance cache
-/// (IrradianceCache.h): direct light at every point, interreflection gathered at the points
-/// PlaceRecords picks and interpolated between them elsewhere. Records that saw mostly back
-/// faces are the hidden points.
-GatheredPoints CachedRun(const Gather& gather, int solutions, double accuracy, const WorkerPool& pool,
-  const ProcessGroup& group, const std::function<bool(double)>& progress, double from, double to)
+/// The direct light arriving at each of `items`' points, into arriving[p * S ...] (each
+/// rank its share, then summed); returns the rays cast, -1 where it was stopped.
+long long PointsDirect(const Gather& gather, const std::vector<int>& items, int solutions, const WorkerPool& pool,
+  Collective& ranks, const std::function<bool(double)>& progress, double from, double to, std::vector<Vec3>& arriving)
 {
-  Collective ranks(group);
-  const size_t points = gather.Points();
-  std::vector<int> items; // the used points, in order
-  for (size_t p = 0; p < points; ++p)
-  {
-    if (gather.Frame(p).Used)
-    {
-      items.push_back(static_cast<int>(p));
-    }
-  }
-  GatheredPoints out;
-  std::vector<Vec3> arriving(points * solutions), gathered(items.size() * solutions);
-  const double mid = from + 0.3 * (to - from);
-  const long long direct = ForEachItem(items.size(), pool, ranks, progress, from, mid,
+  const long long cast = ForEachItem(items.size(), pool, ranks, progress, from, to,
     [&](size_t i, std::vector<Vec3>& scratch) { return gather.DirectAt(items[i], &arriving[items[i] * solutions], scratch); });
-  out.Aborted = direct < 0;
+  if (cast < 0)
+  {
+    return cast;
+  }
+  double total = static_cast<double>(cast);
+  if (ranks.Distributed())
+  {
+    SumOverRanks(ranks, arriving);
+    ranks.Sum(&total, 1);
+  }
+  return static_cast<long long>(total);
+}
+
+/// The points' values from their direct light `arriving` and their gathered interreflection
+/// (`gathered`, [i * S + m] for items[i]).
+void ComposePoints(const Gather& gather, const std::vector<int>& items, int solutions,
+  const std::vector<Vec3>& arriving, const std::vector<Vec3>& gathered, GatheredPoints& out)
+{
+  const size_t points = gather.Points();
+  out.Radiosity.assign(points * solutions, Vec3());
+  out.Direct.assign(points * solutions, Vec3());
+  out.Irradiance.assign(points * solutions, Vec3());
+  for (size_t i = 0; i < items.size(); ++i)
+  {
+    const size_t p = items[i];
+    gather.Compose(p, &arriving[p * solutions], &gathered[i * solutions], &out.Radiosity[p * solutions],
+      &out.Direct[p * solutions], &out.Irradiance[p * solutions]);
+  }
+}
+
+/// Every point gathers its own interreflection.
+GatheredPoints EveryPointGathers(const Gather& gather, const std::vector<int>& items, int solutions,
+  const std::vector<Vec3>& arriving, const WorkerPool& pool, Collective& ranks,
+  const std::function<bool(double)>& progress, double from, double to)
+{
+  GatheredPoints out;
+  std::vector<Vec3> gathered(items.size() * solutions);
+  std::vector<double> hidden(items.size(), 0.0);
+  const long long cast = ForEachItem(items.size(), pool, ranks, progress, from, to, [&](size_t i, std::vector<Vec3>&) {
+    HitDistances hits;
+    const long long n = gather.IndirectAt(items[i], &gathered[i * solutions], hits);
+    hidden[i] = gather.SeesBacks(hits) ? 1 : 0;
+    return n;
+  });
+  out.Aborted = cast < 0;
   if (out.Aborted)
   {
     return out;
   }
-  double total = static_cast<double>(direct);
-  ranks.Sum(&total, 1);
+  double total = static_cast<double>(cast);
   if (ranks.Distributed())
   {
-    SumOverRanks(ranks, arriving);
+    SumOverRanks(ranks, gathered);
+    ranks.Sum(hidden);
+    ranks.Sum(&total, 1);
   }
-  long long rays = static_cast<long long>(total);
-  std::vector<Vec3> origins(items.size()), normals(items.size());
+  out.Rays = static_cast<long long>(total);
+  out.Hidden.assign(gather.Points(), 0);
+  for (size_t i = 0; i < items.size(); ++i)
+  {
+    out.Hidden[items[i]] = hidden[i] > 0 ? 1 : 0;
+  }
+  ComposePoints(gather, items, solutions, arriving, gathered, out);
+  return out;
+}
+
+/// The points' interreflection shared through an irradiance cache (IrradianceCache.h):
+/// gathered at the points PlaceRecords picks and interpolated between them elsewhere.
+/// Records that saw mostly back faces are the hidden points.
+GatheredPoints PointsShareGathers(const Gather& gather, const std::vector<int>& items, int solutions,
+  const std::vector<Vec3>& arriving, double accuracy, const WorkerPool& pool, Collective& ranks,
+  const std::function<bool(double)>& progress, double from, double to)
+{
+  GatheredPoints out;
+  std::vector<Vec3> gathered(items.size() * solutions), origins(items.size()), normals(items.size());
   for (size_t i = 0; i < items.size(); ++i)
   {
     origins[i] = gather.Frame(items[i]).Origin;
     normals[i] = gather.Frame(items[i]).Normal;
   }
   int level = 0;
+  long long rays = 0;
   std::vector<Vec3> gradients;
   const std::vector<CacheRecord> records = PlaceRecords(origins, normals,
     [&](const std::vector<int>& list) {
-      const double a = mid + (to - mid) * std::min(1.0, level / 5.0), b = mid + (to - mid) * std::min(1.0, ++level / 5.0);
+      const double a = from + (to - from) * std::min(1.0, level / 5.0), b = from + (to - from) * std::min(1.0, ++level / 5.0);
       std::vector<CacheRecord> found =
         GatherRecords(gather, items, list, accuracy, pool, ranks, progress, a, b, gathered, gradients, rays);
       out.Aborted = found.empty();
@@ -1028,10 +1098,9 @@ GatheredPoints CachedRun(const Gather& gather, int solutions, double accuracy, c
     [&](int count, const std::function<void(int, int)>& body) { pool.For(count, 256, body); });
   out.Rays = rays;
   out.Records = static_cast<int>(records.size());
-  out.Points = static_cast<int>(items.size());
   std::vector<char> own(items.size(), 0);
   std::vector<int> slot(items.size(), -1);
-  out.Hidden.assign(points, 0);
+  out.Hidden.assign(gather.Points(), 0);
   for (size_t k = 0; k < records.size(); ++k)
   {
     const CacheRecord& r = records[k];
@@ -1044,14 +1113,67 @@ GatheredPoints CachedRun(const Gather& gather, int solutions, double accuracy, c
     return out;
   }
   Interpolate(IrradianceCache(records), own, origins, normals, slot, gradients, solutions, pool, gathered);
-  out.Radiosity.assign(points * solutions, Vec3());
-  out.Direct.assign(points * solutions, Vec3());
-  out.Irradiance.assign(points * solutions, Vec3());
-  for (size_t i = 0; i < items.size(); ++i)
+  ComposePoints(gather, items, solutions, arriving, gathered, out);
+  return out;
+}
+
+/// The used frames of `frames`, in order.
+std::vector<int> UsedFrames(const std::vector<PointFrame>& frames)
+{
+  std::vector<int> items;
+  for (size_t p = 0; p < frames.size(); ++p)
   {
-    const size_t p = items[i];
-    gather.Compose(p, &arriving[p * solutions], &gathered[i * solutions], &out.Radiosity[p * solutions],
-      &out.Direct[p * solutions], &out.Irradiance[p * solutions]);
+    if (frames[p].Used)
+    {
+      items.push_back(static_cast<int>(p));
+    }
+  }
+  return items;
+}
+
+/// The direct light arriving at each element that is small against its distance from every
+/// emitter and point light, as the mean of its corners' (`arriving`, per point, through
+/// their representatives `rep`): the light across it is all but linear there, so a sweep
+/// need not cast its shadow rays again. Set in `known` where taken: every corner evaluated
+/// and facing as the element does (not a crease's point, whose normal is the mean).
+std::vector<Vec3> KnownArriving(const SceneMesh& mesh, const SceneGeometry& g, const std::vector<PointFrame>& points,
+  const std::vector<int>& rep, const std::vector<Vec3>& arriving, const std::vector<Emitter>& emitters,
+  const std::vector<PointFrame>& elements, const GatherSettings& settings, int solutions, std::vector<char>& known)
+{
+  const double agree = std::cos(10.0 * M_PI / 180.0);
+  std::vector<Vec3> out(static_cast<size_t>(mesh.NumberOfPolygons()) * solutions);
+  known.assign(mesh.NumberOfPolygons(), 0);
+  for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
+  {
+    const PointFrame& f = elements[e];
+    bool small = f.Used;
+    for (size_t k = 0; k < emitters.size() && small; ++k)
+    {
+      small = Norm(emitters[k].Centre - f.Origin) - emitters[k].Radius > kFar * f.Radius;
+    }
+    for (size_t k = 0; settings.PointLights && k < settings.PointLights->size() && small; ++k)
+    {
+      small = Norm((*settings.PointLights)[k].Position - f.Origin) > kFar * f.Radius;
+    }
+    const int* ids = mesh.Polygon(e);
+    for (int v = 0; v < mesh.PolygonSize(e) && small; ++v)
+    {
+      const int r = rep[ids[v]];
+      small = r >= 0 && points[r].Used && Dot(points[r].Normal, g.Normal[e]) > agree;
+    }
+    if (!small)
+    {
+      continue;
+    }
+    known[e] = 1;
+    const double share = 1.0 / mesh.PolygonSize(e);
+    for (int v = 0; v < mesh.PolygonSize(e); ++v)
+    {
+      for (int m = 0; m < solutions; ++m)
+      {
+        out[static_cast<size_t>(e) * solutions + m] += arriving[static_cast<size_t>(rep[ids[v]]) * solutions + m] * share;
+      }
+    }
   }
   return out;
 }
@@ -1118,21 +1240,17 @@ void FillHidden(const SceneMesh& mesh, int solutions, std::vector<char>& hidden,
 namespace
 {
 /// The cosine rays a point can take in what is left of `settings.TimeBudget` after
-/// `elapsed` seconds of sweeps that cast `sweepRays` over `elements` elements, at that
-/// pace, for `gathers` points (each also casting its shadow rays, as many more as the
-/// sweep's elements did, scaled to LightRays): settings.Rays where it fits or there is no
-/// budget, 0 where fewer than four would.
-int AffordableRays(const GatherSettings& settings, double elapsed, long long sweepRays, int elements, int gathers)
+/// `elapsed` seconds that cast `cast` rays (the points' shadow rays and the sweeps), at that
+/// pace, for `gathers` points: settings.Rays where it fits or there is no budget, 0 where
+/// fewer than four would. Counted as if every point gathered (the cache makes it fewer).
+int AffordableRays(const GatherSettings& settings, double elapsed, long long cast, int gathers)
 {
-  if (!(settings.TimeBudget > 0) || sweepRays <= 0 || elements <= 0 || gathers <= 0 || !(elapsed > 0))
+  if (!(settings.TimeBudget > 0) || cast <= 0 || gathers <= 0 || !(elapsed > 0))
   {
     return settings.Rays;
   }
-  const double perRay = elapsed / static_cast<double>(sweepRays);
-  const double perElement = static_cast<double>(sweepRays) / elements / std::max(1, settings.Sweeps);
-  const double shadows = std::max(0.0, perElement - settings.SweepRays) * settings.LightRays /
-    std::max(1, settings.SweepLightRays);
-  const double affordable = (settings.TimeBudget - elapsed) / perRay / gathers - shadows;
+  const double perRay = elapsed / static_cast<double>(cast);
+  const double affordable = (settings.TimeBudget - elapsed) / perRay / gathers;
   if (affordable >= settings.Rays)
   {
     return settings.Rays;
@@ -1148,70 +1266,80 @@ GatheredPoints GatherAtPoints(const SceneMesh& mesh, const SceneGeometry& geomet
   const auto start = std::chrono::steady_clock::now();
   const std::vector<Emitter> emitters = MakeEmitters(mesh, geometry, emission, solutions);
   const WorkerPool pool(threads);
-  const int passes = std::max(0, settings.Sweeps) + 1;
-  std::vector<Vec3> source = radiosity, cellDirect, cellIrradiance;
-  long long sweepRays = 0;
-  for (int sweep = 0; sweep + 1 < passes; ++sweep)
+  Collective ranks(settings.Group);
+  const int sweeps = std::max(0, settings.Sweeps);
+  // Progress: the points' direct light a fifth, then each sweep and the points alike.
+  auto at = [&](double part) { return 0.2 + 0.8 * part / (sweeps + 1); };
+  std::vector<Vec3> pointEmission, source = radiosity, cellDirect, cellIrradiance;
+  const std::vector<int> rep = Representatives(mesh, geometry);
+  const std::vector<PointFrame> frames = MakeFrames(mesh, geometry, emission, solutions, rep, pointEmission);
+  const std::vector<int> items = UsedFrames(frames);
+  // The points' direct light first: the sweeps' small elements take their corners' mean.
+  std::vector<Vec3> arriving(frames.size() * solutions);
+  const Gather lit(mesh, geometry, rays, emission, source, solutions, emitters, frames, pointEmission, 1,
+    settings.LightRays, shadows, 0, settings);
+  long long cast = PointsDirect(lit, items, solutions, pool, ranks, progress, 0.0, 0.2, arriving);
+  GatheredPoints out;
+  if (cast < 0)
   {
-    const Gather pass(mesh, geometry, rays, emission, source, solutions, emitters, ElementFrames(mesh, geometry),
-      emission, settings.SweepRays, settings.SweepLightRays, shadows, sweep + 1, settings);
-    GatheredPoints elements =
-      Run(pass, solutions, pool, settings.Group, progress, double(sweep) / passes, double(sweep + 1) / passes);
-    sweepRays += elements.Rays;
+    out.Aborted = true;
+    return out;
+  }
+  const std::vector<PointFrame> elementFrames = ElementFrames(mesh, geometry);
+  std::vector<char> known;
+  const std::vector<Vec3> given =
+    KnownArriving(mesh, geometry, frames, rep, arriving, emitters, elementFrames, settings, solutions, known);
+  for (int sweep = 0; sweep < sweeps; ++sweep)
+  {
+    Gather pass(mesh, geometry, rays, emission, source, solutions, emitters, elementFrames, emission,
+      settings.SweepRays, settings.SweepLightRays, shadows, sweep + 1, settings);
+    pass.TakeArriving(&given, &known);
+    GatheredPoints elements = Run(pass, solutions, pool, settings.Group, progress, at(sweep), at(sweep + 1));
+    cast += elements.Rays;
     if (elements.Aborted)
     {
-      elements.Radiosity.clear();
-      elements.Direct.clear();
-      elements.Irradiance.clear();
-      elements.Rays = sweepRays;
-      return elements;
+      out.Aborted = true;
+      out.Rays = cast;
+      return out;
     }
     KeepUnswept(mesh, geometry, source, solutions, elements);
     source = std::move(elements.Radiosity);
     cellDirect = std::move(elements.Direct);
     cellIrradiance = std::move(elements.Irradiance);
   }
-  std::vector<Vec3> pointEmission;
-  const std::vector<int> rep = Representatives(mesh, geometry);
-  int gathers = 0; // the points that gather for themselves (and their copies)
-  for (size_t p = 0; p < rep.size(); ++p)
-  {
-    gathers += rep[p] == static_cast<int>(p) ? 1 : 0;
-  }
   const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
-  // Every rank gathers every point: all take the fewest rays any of them can afford.
-  const int pointRays = static_cast<int>(
-    -LargestOverRanks(settings.Group, -AffordableRays(settings, elapsed.count(), sweepRays, mesh.NumberOfPolygons(), gathers)));
-  if (pointRays == 0 && passes > 1)
+  // Every rank gathers its share of the points: all take the fewest rays any can afford.
+  const int pointRays = static_cast<int>(-LargestOverRanks(
+    settings.Group, -AffordableRays(settings, elapsed.count(), cast, static_cast<int>(items.size()))));
+  if (pointRays == 0 && sweeps > 0)
   {
-    GatheredPoints out; // the points keep their elements' (swept) mean
-    out.Rays = sweepRays;
+    out.Rays = cast; // the points keep their elements' (swept) mean
     out.OutOfTime = true;
-    out.Cells = std::move(source);
-    out.CellsDirect = std::move(cellDirect);
-    out.CellsIrradiance = std::move(cellIrradiance);
-    return out;
   }
-  std::vector<PointFrame> frames = MakeFrames(mesh, geometry, emission, solutions, rep, pointEmission);
-  const Gather last(mesh, geometry, rays, emission, source, solutions, emitters, std::move(frames),
-    std::move(pointEmission), std::max(pointRays, 1), settings.LightRays, shadows, 0, settings);
-  GatheredPoints out = settings.CacheAccuracy > 0
-    ? CachedRun(last, solutions, settings.CacheAccuracy, pool, settings.Group, progress, double(passes - 1) / passes, 1.0)
-    : Run(last, solutions, pool, settings.Group, progress, double(passes - 1) / passes, 1.0);
-  out.Rays += sweepRays;
-  out.PointRays = pointRays;
+  else
+  {
+    const Gather last(mesh, geometry, rays, emission, source, solutions, emitters, frames, pointEmission,
+      std::max(pointRays, 1), settings.LightRays, shadows, 0, settings);
+    out = settings.CacheAccuracy > 0
+      ? PointsShareGathers(last, items, solutions, arriving, settings.CacheAccuracy, pool, ranks, progress, at(sweeps), 1.0)
+      : EveryPointGathers(last, items, solutions, arriving, pool, ranks, progress, at(sweeps), 1.0);
+    out.Rays += cast;
+    out.PointRays = pointRays;
+    out.Points = static_cast<int>(items.size());
+  }
   if (out.Aborted)
   {
     out.Radiosity.clear();
     out.Direct.clear();
     out.Irradiance.clear();
+    return out;
   }
-  else
+  if (!out.OutOfTime)
   {
     CopyToCopies(rep, solutions, out);
     FillHidden(mesh, solutions, out.Hidden, { &out.Radiosity, &out.Direct, &out.Irradiance });
   }
-  if (!out.Aborted && passes > 1)
+  if (sweeps > 0)
   {
     out.Cells = std::move(source);
     out.CellsDirect = std::move(cellDirect);
@@ -1240,8 +1368,9 @@ GatheredPoints IrradianceAtPoints(const SceneMesh& mesh, const SceneGeometry& ge
   }
   const std::vector<Emitter> emitters = MakeEmitters(mesh, geometry, emission, solutions);
   const WorkerPool pool(threads);
-  const Gather free(mesh, geometry, rays, emission, radiosity, solutions, emitters, std::move(frames),
-    std::vector<Vec3>(points.size() * solutions), std::max(1, settings.Rays), settings.LightRays, true, 0x17, settings);
+  const std::vector<Vec3> none(points.size() * solutions);
+  const Gather free(mesh, geometry, rays, emission, radiosity, solutions, emitters, frames, none,
+    std::max(1, settings.Rays), settings.LightRays, true, 0x17, settings);
   GatheredPoints out = Run(free, solutions, pool, settings.Group, progress, 0.0, 1.0);
   out.Hidden.clear();
   return out;
