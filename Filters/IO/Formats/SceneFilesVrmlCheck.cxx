@@ -27,6 +27,11 @@ struct Word
 
 constexpr size_t kLongestWord = 1000;
 
+/// VTK's VRML parser (a yacc parser of fixed stack) overflows its stack at 1,100 to 1,150
+/// nested Transform nodes, 2,200 open braces and brackets, and then reads nothing after
+/// walking the whole file (100,000 levels: 117 s). Deeper than this is refused first.
+constexpr size_t kDeepest = 2100;
+
 std::vector<Word> Words(const std::string& text)
 {
   std::vector<Word> words;
@@ -84,6 +89,11 @@ std::string Pairing(const std::vector<Word>& words)
     if (w.Text == "{" || w.Text == "[")
     {
       open.push_back(&w);
+      if (open.size() > kDeepest)
+      {
+        return At(w, "nodes and lists nested more than " + std::to_string(kDeepest) +
+            " deep (VTK's VRML parser overflows its stack at about 2,200)");
+      }
     }
     else if (w.Text == "}" || w.Text == "]")
     {

@@ -286,6 +286,12 @@ VRML = {
     # The first checks, written with std::regex, overflowed the stack on these two.
     "long_name.wrl": (WRL.replace("Wall", "W" * 200000).encode(), "a word of 200000 characters"),
     "long_space.wrl": (WRL.replace("Coordinate {", "Coordinate" + " " * 200000 + "{", 1).encode(), None),
+    # 100,000 nested Transform nodes: VTK's parser overflowed its stack (at about 1,100
+    # levels) after 117 s and the file read as 'no polygons'; 1,000 levels it reads.
+    "deep_nesting.wrl": (("#VRML V2.0 utf8\n" + "Transform { children [ " * 100000 + WRL.split("\n", 1)[1] + " ] }" * 100000).encode(),
+                         "nested more than 2100 deep"),
+    "deep_but_readable.wrl": (("#VRML V2.0 utf8\n" + "Transform { children [ " * 1000 + WRL.split("\n", 1)[1] +
+                               " ] }" * 1000).encode(), None),
     # Valid VRML97 the checks must let be: words in strings, a texture in a Sound.
     "words_in_strings.wrl": (WRL.replace("Transform {", 'WorldInfo { info [ "USE freely", "a { b ]" ] }\nTransform {', 1)
                              .encode(), None),
