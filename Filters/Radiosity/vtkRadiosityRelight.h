@@ -110,6 +110,9 @@ public:
   char* GetLightScenesFileName() { return this->Lights->GetLightScenesFileName(); }
   void SetLightScene(const char* scene) { this->Lights->SetLightScene(scene); }
   const char* GetLightScene() { return this->Lights->GetLightScene(); }
+  /// The scenes the file defines, once an update has read it.
+  int GetNumberOfLightScenes() { return this->Lights->GetNumberOfLightScenes(); }
+  const char* GetLightSceneName(int i) { return this->Lights->GetLightSceneName(i); }
   int GetNumberOfScheduleEntries() const { return this->Lights->GetNumberOfScheduleEntries(); }
   ///@}
 

@@ -122,9 +122,47 @@ function controlRow(light, onChange) {
   return { row, weight, enabled, color, slider };
 }
 
-/// URL settings, as a user's changes: ?intensity.Amber=4&enabled.Warm%20White=0&color.X=ff0000
+/// A light scene as the relight filter resolved it (relight.export_viewer's `scenes`): each
+/// light's color times intensity and on/off, set in its controls as a user would.
+function applyScene(controls, scene) {
+  scene.lights.forEach((light, i) => {
+    if (!controls[i]) return;
+    const { hex, intensity } = splitColor(light.color);
+    if (intensity > Number(controls[i].slider.max)) controls[i].slider.max = String(2 * intensity);
+    controls[i].color.value = hex;
+    controls[i].slider.value = String(intensity);
+    controls[i].enabled.checked = light.enabled;
+    controls[i].slider.dispatchEvent(new Event("input"));
+  });
+}
+
+/// The scene chooser, shown where the page was exported with light scenes; its first entry
+/// puts back the settings the page was exported with.
+function sceneChooser(controls, lights) {
+  const scenes = window.RELIGHT_SCENES || [];
+  const chooser = document.getElementById("scene");
+  if (!chooser || scenes.length === 0) return;
+  document.getElementById("scenes").hidden = false;
+  for (const scene of scenes) {
+    const option = document.createElement("option");
+    option.textContent = scene.name;
+    chooser.appendChild(option);
+  }
+  const exported = { lights: lights.map((l) => ({ color: l.color || l.defaultColor, enabled: l.enabled !== false })) };
+  chooser.addEventListener("change", () => {
+    applyScene(controls, scenes.find((s) => s.name === chooser.value) || exported);
+  });
+}
+
+/// URL settings, as a user's changes: ?scene=Evening&intensity.Amber=4&enabled.Warm%20White=0&color.X=ff0000
+/// (the scene first, the lights' own settings over it).
 function applyQuery(controls, lights) {
   const query = new URLSearchParams(location.search);
+  const chooser = document.getElementById("scene");
+  if (query.has("scene") && chooser) {
+    chooser.value = query.get("scene");
+    chooser.dispatchEvent(new Event("change"));
+  }
   lights.forEach((light, i) => {
     const set = (input, key, value) => {
       if (query.has(`${key}.${light.name}`)) {
@@ -210,6 +248,7 @@ function start(gltf) {
   exposure.addEventListener("input", render);
   numberBeside(exposure, render);
   orbit.addEventListener("change", render);
+  sceneChooser(controls, lights);
   applyQuery(controls, lights);
   render();
   document.body.dataset.ready = "1";

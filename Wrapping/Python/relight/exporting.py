@@ -25,14 +25,41 @@ def write_gltf(data, path, exposure=0.0):
         warnings.warn(own_words(message), RuntimeWarning, stacklevel=2)
 
 
-def export_viewer(data, folder, camera=None, size=(640, 480), exposure=0.0):
+def light_scene_settings(data, path):
+    """Each light scene of the light-scenes file `path` as the relight filter resolves it on
+    `data`: [(name, [(r, g, b) color times intensity, enabled] per light)], in the file's
+    order. Raises ValueError naming the problem where the file cannot be used."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from .vtkRadiosityFilters import vtkRadiosityRelight
+
+    relit = vtkRadiosityRelight()
+    relit.SetInputData(data)
+    relit.SetLightScenesFileName(str(path))
+    catcher = ErrorCatcher(relit)
+    relit.Update()
+    if catcher.failed():
+        raise ValueError(f"cannot use the light scenes of {str(path)!r}: {catcher.first_error()}")
+    scenes = []
+    for name in [relit.GetLightSceneName(i) for i in range(relit.GetNumberOfLightScenes())]:
+        relit.SetLightScene(name)
+        relit.Update()
+        fields = relit.GetOutput().GetFieldData()
+        colors = vtk_to_numpy(fields.GetArray("LightColors"))
+        enabled = vtk_to_numpy(fields.GetArray("LightEnabled"))
+        scenes.append((name, [([float(c) for c in color], bool(on)) for color, on in zip(colors, enabled)]))
+    return scenes
+
+
+def export_viewer(data, folder, camera=None, size=(640, 480), exposure=0.0, scenes=None):
     """Writes a web page into `folder` that relights `data` in the browser: index.html,
     the bundled viewer (three.js) and scene.js (the .glb as base64, so the page opens
     from file:// without a server). Per light: on/off, color, intensity; exposure (0: as
     write_gltf picks it);
     orbit with the mouse. `camera` = (position, focal point, view-up, view angle) as for
-    render_png. URL parameters set controls as a user would: ?intensity.<light>=4,
-    enabled.<light>=0, color.<light>=ff8800, controls=0 (hide the panel).
+    render_png. `scenes`: a light-scenes file (as the relight filter's LightScenesFileName),
+    whose scenes the page offers by name, resolved as the relight filter resolves them. URL
+    parameters set controls as a user would: ?intensity.<light>=4, enabled.<light>=0,
+    color.<light>=ff8800, scene=<name>, controls=0 (hide the panel).
     Returns the path of index.html."""
     import base64
     import json
@@ -53,8 +80,10 @@ def export_viewer(data, folder, camera=None, size=(640, 480), exposure=0.0):
     if camera is not None:
         position, focal, up, angle = camera
         view = {"position": list(position), "focalPoint": list(focal), "up": list(up), "angle": angle}
+    resolved = [{"name": name, "lights": [{"color": color, "enabled": on} for color, on in lights]}
+                for name, lights in light_scene_settings(data, scenes)] if scenes else []
     text = (f"window.RELIGHT_GLB = \"{encoded}\";\nwindow.RELIGHT_CAMERA = {json.dumps(view)};\n"
-            f"window.RELIGHT_SIZE = {json.dumps(list(size))};\n")
+            f"window.RELIGHT_SIZE = {json.dumps(list(size))};\nwindow.RELIGHT_SCENES = {json.dumps(resolved)};\n")
     # Each file whole or not at all, as the other writers do: a page that was there keeps
     # working if the export is killed half way (scene.js was left at 0 bytes).
     contents = {"scene.js": text.encode()}

@@ -102,6 +102,32 @@ if check(as_set is not None, "Chromium rendered the page exported from the filte
           f"the page starts from the filter's settings (Amber x{BOOST:g}, WarmWhite off): it matches VTK's render "
           f"(mean {error.mean():.2f}), not the defaults (mean change {np.abs(as_set - before).mean():.1f})")
 
+# Light scenes: the page offers the file's scenes, resolved as the relight filter resolves
+# them; ?scene=Evening picks one as the chooser does.
+scenes_file = os.path.join(folder, "scenes.csv")
+with open(scenes_file, "w") as f:
+    f.write("# scene, lights, dimming %, r, g, b, on\nEvening, Amber, 300, , , , on\nEvening, Warm*, 100, , , , off\n"
+            "Work, *, 100, 1, 1, 1, on\n")
+scene_page = relight.export_viewer(relit.GetOutput(), os.path.join(folder, "scenes"), CAMERA, SIZE, exposure,
+                                   scenes=scenes_file)
+evening = browser_shot(scene_page, "controls=0&scene=Evening", "evening.png")
+scened = relight.vtkRadiosityRelight()  # no settings by name over the scene
+scened.SetInputConnection(solver.GetOutputPort())
+scened.SetExposure(exposure)
+scened.SetLightScenesFileName(scenes_file)
+scened.SetLightScene("Evening")
+vtk_evening = vtk_shot(scened, "vtk_evening.png")
+if check(evening is not None, "Chromium rendered the page in its Evening light scene"):
+    error = np.abs(evening - vtk_evening)
+    check(error.mean() < 3.0 and np.percentile(error, 95) < 12 and np.abs(evening - before).mean() > 5,
+          f"?scene=Evening (Amber at 300 %, WarmWhite off) matches the relight filter in that scene (mean "
+          f"{error.mean():.2f}), not the defaults (mean change {np.abs(evening - before).mean():.1f})")
+try:
+    relight.export_viewer(relit.GetOutput(), os.path.join(folder, "bad"), scenes=os.path.join(folder, "none.csv"))
+    check(False, "a missing light-scenes file is refused")
+except ValueError as error:
+    check("none.csv" in str(error), f"a missing light-scenes file is refused naming it ({error})")
+
 if check(before is not None and after is not None, "Chromium rendered the page twice"):
     for label, browser, vtk in (("default settings", before, reference), (f"Amber x{BOOST:g}", after, boosted)):
         error = np.abs(browser - vtk)
