@@ -133,7 +133,7 @@ GatheredPoints Run(const Gather& gather, int solutions, const WorkerPool& pool, 
 /// to `gathered` by point, their gradients (IrradianceGradients: 3 translation then 3
 /// rotation per solution) after `gradients`' end, in the records' order.
 std::vector<CacheRecord> GatherRecords(const Gather& gather, const std::vector<int>& items,
-  const std::vector<int>& list, double accuracy, const WorkerPool& pool, Collective& ranks,
+  const std::vector<int>& list, double accuracy, double largest, const WorkerPool& pool, Collective& ranks,
   const std::function<bool(double)>& progress, double from, double to, std::vector<Vec3>& gathered,
   std::vector<Vec3>& gradients, long long& rays)
 {
@@ -147,8 +147,8 @@ std::vector<CacheRecord> GatherRecords(const Gather& gather, const std::vector<i
     hits.Samples = &samples;
     const long long n = gather.IndirectAt(items[list[i]], &values[i * S], hits);
     IrradianceGradients(samples, &slopes[i * per], &slopes[i * per + 3 * S]);
-    // A record that saw mostly back faces holds for nobody else (FillHidden mends it).
-    reach[i] = gather.SeesBacks(hits) ? -1.0 : RecordReach(accuracy, hits.InverseSum, gather.GatherRays(), hits.Nearest);
+    // A record that saw mostly back faces holds for nobody else (FillHidden mends it): -1.
+    reach[i] = gather.SeesBacks(hits) ? -1.0 : RecordReach(accuracy, hits.InverseSum, gather.GatherRays(), hits.Nearest, largest);
     return n;
   });
   if (cast < 0)
@@ -168,7 +168,7 @@ std::vector<CacheRecord> GatherRecords(const Gather& gather, const std::vector<i
   for (size_t i = 0; i < list.size(); ++i)
   {
     const PointFrame& f = gather.Frame(items[list[i]]);
-    records[i] = { list[i], f.Origin, f.Normal, std::max(0.0, reach[i]) };
+    records[i] = { list[i], f.Origin, f.Normal, std::max(0.0, reach[i]), reach[i] < 0 };
     std::copy(values.begin() + i * S, values.begin() + (i + 1) * S, gathered.begin() + static_cast<size_t>(list[i]) * S);
   }
   gradients.insert(gradients.end(), slopes.begin(), slopes.end());
@@ -294,6 +294,13 @@ GatheredPoints PointsShareGathers(const Gather& gather, const std::vector<int>& 
     origins[i] = gather.Frame(items[i]).Origin;
     normals[i] = gather.Frame(items[i]).Normal;
   }
+  Vec3 low = origins.empty() ? Vec3() : origins[0], high = low;
+  for (const Vec3& o : origins)
+  {
+    low = { std::min(low.x, o.x), std::min(low.y, o.y), std::min(low.z, o.z) };
+    high = { std::max(high.x, o.x), std::max(high.y, o.y), std::max(high.z, o.z) };
+  }
+  const double largest = LargestReach(Norm(high - low));
   int level = 0;
   long long rays = 0;
   std::vector<Vec3> gradients;
@@ -301,7 +308,7 @@ GatheredPoints PointsShareGathers(const Gather& gather, const std::vector<int>& 
     [&](const std::vector<int>& list) {
       const double a = from + (to - from) * std::min(1.0, level / 5.0), b = from + (to - from) * std::min(1.0, ++level / 5.0);
       std::vector<CacheRecord> found =
-        GatherRecords(gather, items, list, accuracy, pool, ranks, progress, a, b, gathered, gradients, rays);
+        GatherRecords(gather, items, list, accuracy, largest, pool, ranks, progress, a, b, gathered, gradients, rays);
       out.Aborted = found.empty();
       return found;
     },
@@ -316,7 +323,7 @@ GatheredPoints PointsShareGathers(const Gather& gather, const std::vector<int>& 
     const CacheRecord& r = records[k];
     own[r.Point] = 1;
     slot[r.Point] = static_cast<int>(k);
-    out.Hidden[items[r.Point]] = r.Reach > 0 ? 0 : 1;
+    out.Hidden[items[r.Point]] = r.Hidden ? 1 : 0;
   }
   if (out.Aborted)
   {

@@ -113,14 +113,14 @@ void IrradianceGradients(const StratifiedRays& rays, Vec3* translation, Vec3* ro
   }
 }
 
-double RecordReach(double accuracy, double inverseDistanceSum, int rays, double nearest)
+double RecordReach(double accuracy, double inverseDistanceSum, int rays, double nearest, double largest)
 {
   if (rays <= 0 || !(accuracy > 0))
   {
     return 0.0;
   }
   const double harmonic = inverseDistanceSum > 0 ? rays / inverseDistanceSum : std::numeric_limits<double>::infinity();
-  return std::min(accuracy * harmonic, nearest);
+  return std::min({ accuracy * harmonic, nearest, largest });
 }
 
 IrradianceCache::IrradianceCache(std::vector<CacheRecord> records)

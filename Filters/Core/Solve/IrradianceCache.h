@@ -21,12 +21,21 @@ struct CacheRecord
 {
   int Point = -1; ///< its index in the list PlaceRecords was given
   Vec3 Origin, Normal;
-  double Reach = 0; ///< 0: no other point reads it (it saw mostly back faces)
+  double Reach = 0;    ///< 0: no other point reads it
+  bool Hidden = false; ///< it saw mostly back faces (its value is mended from its neighbours')
 };
 
 /// What a record's rays found, for its reach: Accuracy (Ward's a) times the harmonic mean of
-/// the hit distances (misses count as infinitely far), at most the nearest hit.
-double RecordReach(double accuracy, double inverseDistanceSum, int rays, double nearest);
+/// the hit distances (misses count as infinitely far), at most the nearest hit and at most
+/// `largest` (a record whose rays met nothing, on a roof under the sky, would otherwise
+/// reach every point facing as it does, those under the roof too).
+double RecordReach(double accuracy, double inverseDistanceSum, int rays, double nearest, double largest);
+
+/// The largest reach in a scene whose points span `diagonal`: a twentieth of it.
+inline double LargestReach(double diagonal)
+{
+  return 0.05 * diagonal;
+}
 
 /// A record's Side x Side stratified cosine rays in its tangent frame (T, B, normal): cell
 /// i * Side + j is stratum i of u = sin^2(theta) and stratum j of phi; each ray's u, phi,

@@ -115,14 +115,17 @@ TEST(IrradianceCache, GradientsMatchTheClosedFormBesideAWall)
 
 TEST(IrradianceCache, ReachIsAFractionOfTheHarmonicMeanAtMostTheNearestHit)
 {
+  const double far = 1e9;
   // Four rays hitting at 1, 1, 2 and 4: the harmonic mean 4 / 2.75.
   const double inverse = 1 + 1 + 0.5 + 0.25;
-  EXPECT_NEAR(RecordReach(0.5, inverse, 4, 1.0), 0.5 * 4 / 2.75, 1e-12);
-  EXPECT_NEAR(RecordReach(0.5, inverse, 4, 0.5), 0.5, 1e-12);
+  EXPECT_NEAR(RecordReach(0.5, inverse, 4, 1.0, far), 0.5 * 4 / 2.75, 1e-12);
+  EXPECT_NEAR(RecordReach(0.5, inverse, 4, 0.5, far), 0.5, 1e-12);
   // Eight rays, four of them missing: the misses went infinitely far.
-  EXPECT_NEAR(RecordReach(0.3, inverse, 8, 10.0), 0.3 * 8 / 2.75, 1e-12);
-  EXPECT_EQ(RecordReach(0.3, 0.0, 8, std::numeric_limits<double>::infinity()), std::numeric_limits<double>::infinity());
-  EXPECT_EQ(RecordReach(0.0, inverse, 4, 1.0), 0.0);
+  EXPECT_NEAR(RecordReach(0.3, inverse, 8, 10.0, far), 0.3 * 8 / 2.75, 1e-12);
+  EXPECT_EQ(RecordReach(0.0, inverse, 4, 1.0, far), 0.0);
+  // Every ray missing (a roof under the sky): the largest reach, not every point facing up.
+  EXPECT_EQ(RecordReach(0.3, 0.0, 8, std::numeric_limits<double>::infinity(), 2.5), 2.5);
+  EXPECT_NEAR(LargestReach(30.0), 1.5, 1e-12);
 }
 
 TEST(IrradianceCache, WeightsFallToZeroAtTheReachAndAtTwentyDegrees)
@@ -206,6 +209,29 @@ TEST(IrradianceCache, NoLightReachesTheRoomBehindAWall)
       EXPECT_EQ(s.PointRadiosity[p].x, 0.0) << "point " << p;
     }
   }
+}
+
+TEST(IrradianceCache, ARecordUnderTheSkyDoesNotReachTheFloorUnderItsRoof)
+{
+  // The lamp room under a 60 m roof open to the sky: the roof's records meet nothing, and
+  // reached every point facing up, the floor inside too (the Duplex's floors came out a
+  // third dark), until a reach had a largest value.
+  SceneMesh mesh = LampRoom(12);
+  int patch = 2000;
+  AddGrid(mesh, { -28.5, -28.5, 3.2 }, { 60, 0, 0 }, { 0, 60, 0 }, 30, 3, { 0.5, 0.5, 0.5 }, -1, patch);
+  const Solution every = Solve(mesh, 0.0, 64), cached = Solve(mesh, 0.15, 64);
+  double floorEvery = 0, floorCached = 0;
+  for (size_t p = 0; p < mesh.Points.size(); ++p)
+  {
+    const Vec3& x = mesh.Points[p];
+    if (x.z == 0 && x.x > 0 && x.x < 3 && x.y > 0 && x.y < 3)
+    {
+      floorEvery += every.PointRadiosity[p].x;
+      floorCached += cached.PointRadiosity[p].x;
+    }
+  }
+  EXPECT_GT(floorEvery, 0.0);
+  EXPECT_NEAR(floorCached / floorEvery, 1.0, 0.02);
 }
 
 TEST(IrradianceCache, FurnaceIsExactAtEveryPoint)
