@@ -8,7 +8,7 @@ from vtkmodules.vtkCommonCore import vtkLogger
 
 import relight
 from testlib import check, finish
-from relight import add_field_ints, cell_array, light_names, make_scene, read_polydata
+from relight import add_field_ints, cell_array, light_names, make_scene, point_array, read_polydata
 
 vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_WARNING)
 DATA = os.path.join(os.environ.get("RELIGHT_ROOT", "."), "Data")
@@ -58,5 +58,15 @@ rl.Update()
 reference = cell_array(combined.GetOutput(), "Radiosity")
 check(np.allclose(cell_array(rl.GetOutput(), "Radiosity"), reference, rtol=1e-4, atol=1e-5 * reference.max()),
       "merged static lights relight to the standard solution")
+
+# The final gather says at how many points it gathered, with the cache on (the default) and
+# off; its values agree within the gather's noise.
+shared = relight.solve(scene, 1.5, 0.375, ConvergenceThreshold=1e-6)
+alone = relight.solve(scene, 1.5, 0.375, ConvergenceThreshold=1e-6, GatherCache=0.0)
+reason, alone_reason = effects(shared.GetOutput())["FinalGather"][1], effects(alone.GetOutput())["FinalGather"][1]
+check("irradiance cache, CacheAccuracy 0.15" in reason and "irradiance cache" not in alone_reason,
+      f"FinalGather names the cache where it is on ({reason}) and not where off ({alone_reason})")
+mean = [point_array(s.GetOutput(), "Radiosity_CoolWhite").mean() for s in (shared, alone)]
+check(abs(mean[0] / mean[1] - 1) < 0.01, f"shared gathers: the mean of CoolWhite's points within 1 % ({mean})")
 
 finish("TestEffects")
