@@ -38,8 +38,23 @@ def main():
     parser.add_argument("--reference", default="out/bench/room_reference_20k.csv")
     parser.add_argument("--out", default="out/bench")
     parser.add_argument("--sizes", default="40000,320000")
+    parser.add_argument("--replot", action="store_true", help="plot the last run's gather_cache.csv again")
     args = parser.parse_args()
     os.makedirs(args.out, exist_ok=True)
+    table = os.path.join(args.out, "gather_cache.csv")
+    if args.replot:
+        results = [(int(r["elements"]), r["run"], float(r["seconds"]), float(r["error_pct"]))
+                   for r in csv.DictReader(open(table))]
+    else:
+        results = measure(args)
+        with open(table, "w", newline="") as f:
+            out = csv.writer(f)
+            out.writerow(["elements", "run", "seconds", "error_pct"])
+            out.writerows(results)
+    plot(results, os.path.join(args.out, "gather_cache.png"))
+
+
+def measure(args):
     results = []
     for size in (int(s) for s in args.sizes.split(",")):
         for label, flags in RUNS:
@@ -47,20 +62,28 @@ def main():
                                            os.path.join(args.out, "gather_cache_run.csv"))
             results.append((elements, label, seconds, error))
             print(f"{elements:>9,} elements  {label:<34} {seconds:7.2f} s  {error:5.2f} %", flush=True)
+    return results
+
+
+def plot(results, path):
+    import matplotlib.ticker
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
     for label, _ in RUNS:
         points = [(s, e, n) for n, l, s, e in results if l == label]
         ax.plot([p[0] for p in points], [p[1] for p in points], "o-", label=label)
         for s, e, n in points:
             ax.annotate(f"{n:,}", (s, e), textcoords="offset points", xytext=(4, 4), fontsize=7)
+    ax.axhline(0.33, color="grey", linestyle=":", linewidth=1, label="the reference's own noise (20,480 paths)")
     ax.set_xscale("log")
+    ax.xaxis.set_major_formatter(matplotlib.ticker.ScalarFormatter())
+    ax.set_xticks([2, 5, 10, 20, 50])
+    ax.set_ylim(0, None)
     ax.set_xlabel("solve time, s (2 cores)")
     ax.set_ylabel("mean error against Mitsuba 3, %")
     ax.set_title("Furnished room, 8 lights: what sharing the gather buys")
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8)
+    ax.legend(fontsize=8, loc="lower left")
     fig.tight_layout()
-    path = os.path.join(args.out, "gather_cache.png")
     fig.savefig(path, dpi=120)
     print(f"wrote {path}")
 
