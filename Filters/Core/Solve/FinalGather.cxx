@@ -93,8 +93,8 @@ long long ForEachItem(size_t count, const WorkerPool& pool, Collective& ranks,
   return std::accumulate(itemRays.begin(), itemRays.end(), 0LL);
 }
 
-/// Evaluates every point of `gather` (each rank its share, then summed), in blocks between
-/// which `progress` may stop it.
+/// A sweep: every element of `gather` evaluated whole, direct light and interreflection (each
+/// rank its share, then summed), in blocks between which `progress` may stop it.
 GatheredPoints Run(const Gather& gather, int solutions, const WorkerPool& pool, const ProcessGroup& group,
   const std::function<bool(double)>& progress, double from, double to)
 {
