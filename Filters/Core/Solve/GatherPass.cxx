@@ -54,15 +54,7 @@ long long Gather::Evaluate(size_t p, Vec3* radiosity, Vec3* direct, Vec3* irradi
   }
   std::vector<Vec3> arriving(S), gathered(S);
   HitDistances hits;
-  long long rays = 0;
-  if (Known && (*Known)[p])
-  {
-    std::copy(Given->begin() + p * S, Given->begin() + (p + 1) * S, arriving.begin());
-  }
-  else
-  {
-    rays += DirectAt(p, arriving.data(), scratch);
-  }
+  long long rays = DirectAt(p, arriving.data(), scratch);
   rays += IndirectAt(p, gathered.data(), hits);
   hidden = SeesBacks(hits);
   Compose(p, arriving.data(), gathered.data(), radiosity, direct, irradiance);
@@ -96,12 +88,6 @@ void Gather::Compose(size_t p, const Vec3* arriving, const Vec3* gathered, Vec3*
     radiosity[m] = direct[m] + Times(rho, gathered[m]);
     irradiance[m] = arriving[m] + gathered[m];
   }
-}
-
-void Gather::TakeArriving(const std::vector<Vec3>* given, const std::vector<char>* known)
-{
-  Given = given;
-  Known = known;
 }
 
 long long Gather::DirectLight(size_t p, const PointFrame& f, std::vector<Vec3>& out, std::vector<Vec3>& scratch) const

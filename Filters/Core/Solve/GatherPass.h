@@ -72,10 +72,7 @@ public:
     Vec3* irradiance) const;
 
   const PointFrame& Frame(size_t p) const { return Frames[p]; }
-  const std::vector<PointFrame>& AllFrames() const { return Frames; }
 
-  /// Frames with `known` set take `given` as their direct light instead of casting rays.
-  void TakeArriving(const std::vector<Vec3>* given, const std::vector<char>* known);
   int GatherRays() const { return Side * Side; }
   size_t Points() const { return Frames.size(); }
 
@@ -136,10 +133,6 @@ private:
   const std::uint64_t Salt;
   const std::vector<PointFrame>& Frames;
   const std::vector<Vec3>& PointEmission;
-  /// Where given (Known[p] set), frame p's direct light arriving, [p * S + m]: a sweep's
-  /// small elements take their corners' (KnownArriving).
-  const std::vector<Vec3>* Given = nullptr;
-  const std::vector<char>* Known = nullptr;
   const std::vector<Emitter>& Emitters;
   std::vector<PointLight> PointLights; ///< white where each is its own solution
   const int FirstPoint;
