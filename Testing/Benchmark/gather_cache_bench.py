@@ -17,6 +17,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+from bench_plots import error_against_time  # noqa: E402
+
 RUNS = [  # label, ScaleBench flags
     ("no gather", ["--gather", "0"]),
     ("256 rays at every point", ["--gather", "256", "--cache", "0"]),
@@ -66,7 +68,6 @@ def measure(args):
 
 
 def plot(results, path):
-    import matplotlib.ticker
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
     for label, _ in RUNS:
         points = [(s, e, n) for n, l, s, e in results if l == label]
@@ -74,14 +75,8 @@ def plot(results, path):
         for s, e, n in points:
             ax.annotate(f"{n:,}", (s, e), textcoords="offset points", xytext=(4, 4), fontsize=7)
     ax.axhline(0.33, color="grey", linestyle=":", linewidth=1, label="the reference's own noise (20,480 paths)")
-    ax.set_xscale("log")
-    ax.xaxis.set_major_formatter(matplotlib.ticker.ScalarFormatter())
-    ax.set_xticks([2, 5, 10, 20, 50])
-    ax.set_ylim(0, None)
-    ax.set_xlabel("solve time, s (2 cores)")
-    ax.set_ylabel("mean error against Mitsuba 3, %")
-    ax.set_title("Furnished room, 8 lights: what sharing the gather buys")
-    ax.grid(True, which="both", alpha=0.3)
+    error_against_time(ax, [2, 5, 10, 20, 50], "Furnished room, 8 lights: what sharing the gather buys",
+                       "mean error against Mitsuba 3, %")
     ax.legend(fontsize=8, loc="lower left")
     fig.tight_layout()
     fig.savefig(path, dpi=120)

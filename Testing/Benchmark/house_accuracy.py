@@ -21,7 +21,7 @@ def plot(rows, path):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    import matplotlib.ticker
+    from bench_plots import error_against_time
     fig, ax = plt.subplots(figsize=(6.2, 4.4))
     seconds = [float(r["solve_s"]) for r in rows]
     errors = [float(r["mean_error_pct"]) for r in rows]
@@ -32,14 +32,8 @@ def plot(rows, path):
     ax.axhline(3.0, color="tab:red", linestyle="--", linewidth=1, label="3 %: the target at the defaults")
     ax.axhline(1.18, color="grey", linestyle=":", linewidth=1,
                label="Radiance vs Mitsuba 3: 1.18 %")
-    ax.set_xscale("log")
-    ax.xaxis.set_major_formatter(matplotlib.ticker.ScalarFormatter())
-    ax.set_xticks([5, 10, 20, 30, 60, 120])
-    ax.set_ylim(0, None)
-    ax.set_xlabel("solve time (s), 2-core VM")
-    ax.set_ylabel("mean per-lamp error against Mitsuba 3 (%)")
-    ax.set_title("FZK-Haus, 6 lamps, 600 probes traced from the lamps")
-    ax.grid(True, which="both", alpha=0.3)
+    error_against_time(ax, [5, 10, 20, 30, 60, 120], "FZK-Haus, 6 lamps, 600 probes traced from the lamps",
+                       "mean per-lamp error against Mitsuba 3 (%)")
     ax.legend(fontsize=8, loc="upper right")
     fig.tight_layout()
     fig.savefig(path, dpi=110)

@@ -13,7 +13,7 @@ import time
 
 import numpy as np
 from vtkmodules.util.numpy_support import numpy_to_vtk, numpy_to_vtkIdTypeArray
-from vtkmodules.vtkCommonCore import vtkPoints, vtkStringArray
+from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 
 import relight
@@ -41,12 +41,7 @@ def grid(elements):
             array = numpy_to_vtk(rng.random((count, 3), dtype=np.float32), deep=True)
             array.SetName("Radiosity_" + name)
             attributes.AddArray(array)
-    names = vtkStringArray()
-    names.SetName("LightNames")
-    for name in LIGHTS:
-        names.InsertNextValue(name)
-    data.GetFieldData().AddArray(names)
-    return data
+    return relight.add_light_names(data, LIGHTS)
 
 
 def main():

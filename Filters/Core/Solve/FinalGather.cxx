@@ -188,20 +188,30 @@ void Interpolate(const IrradianceCache& cache, const std::vector<char>& own, con
     for (int i = begin; i < end; ++i)
     {
       const double sum = own[i] ? 0.0 : cache.Weights(origins[i], normals[i], weights);
-      for (int m = 0; m < solutions && sum > 0; ++m)
+      if (!(sum > 0))
       {
-        Vec3 value;
-        for (const auto& w : weights)
+        continue;
+      }
+      Vec3* out = &gathered[static_cast<size_t>(i) * solutions];
+      std::fill(out, out + solutions, Vec3());
+      for (const auto& w : weights)
+      {
+        const CacheRecord& r = cache.Records()[w.first];
+        const Vec3 moved = origins[i] - r.Origin, turned = Cross(r.Normal, normals[i]);
+        const Vec3* slopes = &gradients[slot[r.Point] * per];
+        const Vec3* at = &gathered[static_cast<size_t>(r.Point) * solutions];
+        for (int m = 0; m < solutions; ++m)
         {
-          const CacheRecord& r = cache.Records()[w.first];
-          const Vec3 moved = origins[i] - r.Origin, turned = Cross(r.Normal, normals[i]);
-          const Vec3* slope = &gradients[slot[r.Point] * per + 3 * m];
+          const Vec3* slope = slopes + 3 * m;
           const Vec3* turn = slope + 3 * solutions;
           const Vec3 change{ Dot(slope[0], moved) + Dot(turn[0], turned), Dot(slope[1], moved) + Dot(turn[1], turned),
             Dot(slope[2], moved) + Dot(turn[2], turned) };
-          value += (gathered[static_cast<size_t>(r.Point) * solutions + m] + change) * w.second;
+          out[m] += (at[m] + change) * w.second;
         }
-        gathered[static_cast<size_t>(i) * solutions + m] = value * (1.0 / sum);
+      }
+      for (int m = 0; m < solutions; ++m)
+      {
+        out[m] = out[m] * (1.0 / sum);
       }
     }
   });

@@ -17,15 +17,7 @@ namespace
 {
 bool Emits(const std::vector<Vec3>& emission, int e, int solutions)
 {
-  for (int m = 0; m < solutions; ++m)
-  {
-    const Vec3& v = emission[static_cast<size_t>(e) * solutions + m];
-    if (v.x > 0 || v.y > 0 || v.z > 0)
-    {
-      return true;
-    }
-  }
-  return false;
+  return AnyPositive(&emission[static_cast<size_t>(e) * solutions], solutions);
 }
 
 void AddTriangles(const SceneMesh& mesh, const SceneGeometry& g, int e, Emitter& out)
@@ -87,6 +79,18 @@ void AddOutline(const SceneMesh& mesh, const std::vector<Vec3>& emission, int so
   out.Exitance.assign(emission.begin() + first, emission.begin() + first + solutions);
 }
 } // namespace
+
+bool AnyPositive(const Vec3* values, int count)
+{
+  for (int m = 0; m < count; ++m)
+  {
+    if (values[m].x > 0 || values[m].y > 0 || values[m].z > 0)
+    {
+      return true;
+    }
+  }
+  return false;
+}
 
 std::vector<int> Representatives(const SceneMesh& mesh, const SceneGeometry& g)
 {

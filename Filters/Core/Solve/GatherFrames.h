@@ -53,6 +53,10 @@ struct Emitter
   std::vector<Vec3> Exitance;
 };
 
+/// Whether any of `count` values has a positive channel (an emitting element; light that
+/// arrives).
+bool AnyPositive(const Vec3* values, int count);
+
 /// Points at one place (equal coordinates) on one smooth surface of one material: the
 /// corners a curved model's triangles each hold of their own (the CGAL bunny: 237,203
 /// points for 89,163 elements). Each maps to the first of them whose elements' normals

@@ -146,7 +146,7 @@ long long Gather::SpreadDirectLight(size_t p, const PointFrame& f, std::vector<V
     for (size_t k = 0; k < Emitters.size(); ++k)
     {
       const Emitter& em = Emitters[k];
-      if (far[k] ? IsZero(&atCentre[k * S]) : Behind(em, x, f.Normal))
+      if (far[k] ? !AnyPositive(&atCentre[k * S], S) : Behind(em, x, f.Normal))
       {
         continue;
       }
@@ -171,18 +171,6 @@ long long Gather::SpreadDirectLight(size_t p, const PointFrame& f, std::vector<V
 bool Gather::Behind(const Emitter& em, const Vec3& x, const Vec3& normal)
 {
   return Dot(em.Centre - x, normal) < -em.Radius || (em.Planar && Dot(x - em.Centre, em.Normal) <= 0);
-}
-
-bool Gather::IsZero(const Vec3* values) const
-{
-  for (int m = 0; m < S; ++m)
-  {
-    if (values[m].x != 0 || values[m].y != 0 || values[m].z != 0)
-    {
-      return false;
-    }
-  }
-  return true;
 }
 
 Vec3 Gather::Spot(const PointFrame& f, int r, int count, SampleStream& random) const

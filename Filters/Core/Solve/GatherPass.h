@@ -7,8 +7,8 @@
 
 #include "Geometry/Visibility.h"
 #include "Lights/PointLight.h"
-#include "Solve/FinalGather.h"
 #include "Solve/GatherFrames.h"
+#include "Solve/GatherSettings.h"
 #include "Solve/IrradianceCache.h"
 
 #include <algorithm>
@@ -91,8 +91,6 @@ private:
 
   /// The emitter wholly behind the point's surface, or the point behind a flat emitter.
   static bool Behind(const Emitter& em, const Vec3& x, const Vec3& normal);
-
-  bool IsZero(const Vec3* values) const;
 
   /// Where ray r of `count` starts: the point itself, or for an element's frame the r-th
   /// of `count` points stratified by area over the element's fan triangles.

@@ -161,8 +161,8 @@ int IrradianceCache::Build(int first, int count)
   }
   const Vec3 size = high - low;
   const int axis = size.x >= size.y && size.x >= size.z ? 0 : size.y >= size.z ? 1 : 2;
-  // Ties by point index: the tree, and so the order weights are summed in, does not depend
-  // on the order the records came in.
+  // Ties by point index: the tree, and so the order a point's weights are found and summed
+  // in, depends on the records alone (which PlaceRecords makes the same on any thread count).
   std::nth_element(Items.begin() + first, Items.begin() + first + count / 2, Items.begin() + first + count,
     [axis](const CacheRecord& a, const CacheRecord& b) {
       const double ka = Coordinate(a.Origin, axis), kb = Coordinate(b.Origin, axis);
@@ -209,11 +209,6 @@ double IrradianceCache::Weights(const Vec3& x, const Vec3& normal, std::vector<s
     stack[top++] = n.Right;
     stack[top++] = n.Left;
   }
-  // The records in point order, so the sum is the same whatever the tree's shape.
-  std::sort(out.begin(), out.end(),
-    [this](const std::pair<int, double>& a, const std::pair<int, double>& b) {
-      return Items[a.first].Point < Items[b.first].Point;
-    });
   return sum;
 }
 } // namespace radiosity

@@ -30,6 +30,7 @@ from .work_planes import work_plane, write_work_plane_csv  # noqa: F401
 from .scene import (  # noqa: F401
     ErrorCatcher,
     add_field_ints,
+    add_light_names,
     exr_writer,
     FrameRenderer,
     cell_areas,

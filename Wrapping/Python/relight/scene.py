@@ -111,11 +111,7 @@ def make_scene(polygons, reflectance, light_ids, light_names=None, emission=None
             array.InsertNextTuple(value if components > 1 else (value,))
         data.GetCellData().AddArray(array)
     if light_names:
-        names = vtkStringArray()
-        names.SetName("LightNames")
-        for name in light_names:
-            names.InsertNextValue(name)
-        data.GetFieldData().AddArray(names)
+        add_light_names(data, light_names)
     return data
 
 
@@ -420,6 +416,18 @@ def point_lights(positions, intensity=1.0, color=(1, 1, 1), normal=None, like=No
     data.SetVerts(verts)
     for array in list(made.values()) + list(texts.values()):
         data.GetPointData().AddArray(array)
+    return data
+
+
+def add_light_names(data, names):
+    """Adds the field array LightNames (light i's name for its Radiosity_<name> arrays)."""
+    from vtkmodules.vtkCommonCore import vtkStringArray
+
+    array = vtkStringArray()
+    array.SetName("LightNames")
+    for name in names:
+        array.InsertNextValue(name)
+    data.GetFieldData().AddArray(array)
     return data
 
 
