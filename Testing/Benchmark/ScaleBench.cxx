@@ -133,6 +133,7 @@ int main(int argc, char* argv[])
   double cache = GatherSettings().CacheAccuracy; // the gather's irradiance cache (0: every point gathers)
   int sweeps = GatherSettings().Sweeps, sweepRays = GatherSettings().SweepRays; // the gather's passes over the elements
   double lampGrading = 0.2;  // finer elements by the lamps, as the mesher filter does by default (0: off)
+  bool combinedToo = true;   // also solve k = 1 combined, for the k=8 / k=1 ratio
   std::string csvPath = "out/bench/scale.csv", exportPath, mitsubaPath;
   for (int i = 1; i + 1 < argc; i += 2)
   {
@@ -168,6 +169,8 @@ int main(int argc, char* argv[])
       cache = std::atof(argv[i + 1]);
     else if (key == "--grading")
       lampGrading = std::atof(argv[i + 1]);
+    else if (key == "--combined")
+      combinedToo = std::atoi(argv[i + 1]) != 0;
   }
   const RoomPolygons room = FurnishedRoom();
   const int lights = static_cast<int>(room.LightNames.size());
@@ -255,18 +258,22 @@ int main(int argc, char* argv[])
         tagged.Result.GatherPoints);
     }
     csv.Add(mesh, patches, tagged, "tagged", lights, mean, worst);
+    growth.push_back({ static_cast<double>(mesh.NumberOfPolygons()), tagged.Seconds });
+    lastTagged = tagged.Seconds;
+    if (!combinedToo)
+    {
+      continue;
+    }
     const Run combined = SolveRoom(solver, mesh, lights, SolutionMode::StandardCombined, options);
     Print("hierarchical, k=1 combined", mesh, patches, combined, std::nan(""), std::nan(""));
     csv.Add(mesh, patches, combined, "combined", 1, std::nan(""), std::nan(""));
     std::printf("  k=8 tagged / k=1 combined: %.2fx; before solving: meshing %.2f s, geometry and Embree %.2f s "
                 "(k=8 end to end %.2f s)\n",
       tagged.Seconds / combined.Seconds, t1 - t0, t2 - t1, t2 - t0 + tagged.Seconds);
-    growth.push_back({ static_cast<double>(mesh.NumberOfPolygons()), tagged.Seconds });
     if (mitsubaSeconds > 0 && mean > 0)
     {
       ComparePathTracer(mitsubaSeconds, probes.Origin.size(), lights, mesh.NumberOfPolygons(), mean, tagged.Seconds);
     }
-    lastTagged = tagged.Seconds;
     lastCombined = combined.Seconds;
     if (target >= 50000 && target <= 200000)
     {

@@ -1,5 +1,6 @@
 #include "Solve/GatherFrames.h"
 
+#include "Geometry/Outline.h"
 #include "Geometry/PointAverages.h"
 #include "Geometry/Polygon.h"
 
@@ -49,33 +50,7 @@ void AddOutline(const SceneMesh& mesh, const std::vector<Vec3>& emission, int so
       }
     }
   }
-  std::map<std::pair<int, int>, int> edges;
-  for (int e : out.Elements)
-  {
-    const int* ids = mesh.Polygon(e);
-    const int n = mesh.PolygonSize(e);
-    for (int v = 0; v < n; ++v)
-    {
-      const int a = ids[v], b = ids[(v + 1) % n];
-      auto reverse = edges.find({ b, a });
-      if (reverse != edges.end() && reverse->second > 0)
-      {
-        --reverse->second;
-      }
-      else
-      {
-        ++edges[{ a, b }];
-      }
-    }
-  }
-  for (const auto& edge : edges)
-  {
-    for (int c = 0; c < edge.second; ++c)
-    {
-      out.Outline.push_back(mesh.Points[edge.first.first]);
-      out.Outline.push_back(mesh.Points[edge.first.second]);
-    }
-  }
+  out.Outline = PolygonSetOutline(mesh, out.Elements);
   out.Exitance.assign(emission.begin() + first, emission.begin() + first + solutions);
 }
 } // namespace

@@ -127,11 +127,6 @@ private:
   long long MonteCarlo(int patch, int samples, int shot, std::vector<double>& factors);
   void BuildOutlines();
   void BuildLoops();
-  /// Boundary edges (by point id, with multiplicity) as segments, straight runs joined.
-  std::vector<Vec3> MergeCollinear(const std::map<std::pair<int, int>, int>& edges) const;
-  /// Adds `count` copies of the directed edge, first cancelling as many of its reverse.
-  static void AddEdge(std::map<std::pair<int, int>, int>& edges, int from, int to, int count);
-  std::map<std::pair<int, int>, int> SplitAtJunctions(const std::map<std::pair<int, int>, int>& edges) const;
   /// Turns F(patch -> e) sums in `factors` into F(e -> patch) by reciprocity, for a
   /// shooter whose power leaves from `shooterArea`.
   void Reciprocal(int patch, double shooterArea, std::vector<double>& factors) const;

@@ -88,6 +88,17 @@ inline double TaggedMinusCombined(const radiosity::Solution& tagged, const radio
   return peak > 0 ? worst / peak : worst;
 }
 
+/// Every polygon's index: the whole mesh as one set.
+inline std::vector<int> AllPolygons(const SceneMesh& mesh)
+{
+  std::vector<int> all(mesh.NumberOfPolygons());
+  for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
+  {
+    all[e] = e;
+  }
+  return all;
+}
+
 /// Adds the quad origin + [0,1]u + [0,1]v as an n x n grid of elements (normal u x v)
 /// grouped into patches of `per` x `per` elements, with its own points.
 inline void AddGrid(SceneMesh& mesh, const Vec3& origin, const Vec3& u, const Vec3& v, int n,

@@ -9,6 +9,7 @@
 
 using namespace radiosity;
 using radiosity_test::AddGrid;
+using radiosity_test::AllPolygons;
 
 namespace
 {
@@ -37,16 +38,6 @@ SceneMesh Turned(SceneMesh mesh, double shift)
   }
   return mesh;
 }
-
-std::vector<int> All(const SceneMesh& mesh)
-{
-  std::vector<int> all(mesh.NumberOfPolygons());
-  for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
-  {
-    all[e] = e;
-  }
-  return all;
-}
 } // namespace
 
 TEST(FaceContact, TheFloorUnderABoxBottomAndTheBottomAreFaceToFaceWhereverTheSceneLies)
@@ -58,7 +49,7 @@ TEST(FaceContact, TheFloorUnderABoxBottomAndTheBottomAreFaceToFaceWhereverTheSce
   {
     const SceneMesh mesh = shift == 0 ? FloorWithBoxBottom() : Turned(FloorWithBoxBottom(), shift);
     const SceneGeometry g(mesh);
-    EXPECT_EQ(FaceToFace(mesh, g, All(mesh), 1e-6), expected) << "moved " << shift;
+    EXPECT_EQ(FaceToFace(mesh, g, AllPolygons(mesh), 1e-6), expected) << "moved " << shift;
   }
 }
 
@@ -70,5 +61,5 @@ TEST(FaceContact, OneLargeCandidateAmongSmallOnesChangesNothing)
   int patch = 100;
   AddGrid(mesh, { -10, -10, 5 }, Vec3{ 20, 0, 0 }, Vec3{ 0, 20, 0 }, 1, 1, { 0.5, 0.5, 0.5 }, -1, patch);
   const SceneGeometry g(mesh);
-  EXPECT_EQ(FaceToFace(mesh, g, All(mesh), 1e-6), (std::vector<int>{ 18, 19, 26, 27, 64, 65, 66, 67 }));
+  EXPECT_EQ(FaceToFace(mesh, g, AllPolygons(mesh), 1e-6), (std::vector<int>{ 18, 19, 26, 27, 64, 65, 66, 67 }));
 }
