@@ -96,6 +96,27 @@ inline double MeanError(const std::vector<double>& values, const std::vector<dou
   return total / L;
 }
 
+/// Per light, sum (B - B_ref) / sum B_ref over the probes both see: the bias that
+/// MeanError's absolute differences cannot tell from noise.
+inline std::vector<double> SignedError(const std::vector<double>& values, const std::vector<double>& reference, int L)
+{
+  std::vector<double> bias(L, 0.0);
+  for (int m = 0; m < L; ++m)
+  {
+    double diff = 0, sum = 0;
+    for (size_t i = m; i < values.size(); i += L)
+    {
+      if (!std::isnan(values[i]) && !std::isnan(reference[i]))
+      {
+        diff += values[i] - reference[i];
+        sum += reference[i];
+      }
+    }
+    bias[m] = sum > 0 ? diff / sum : 0;
+  }
+  return bias;
+}
+
 /// Writes the room's polygons and the probe points (where the probe rays hit, with the
 /// surface normal) as JSON, for an external renderer to make a reference.
 inline void ExportRoom(const RoomPolygons& room, const RadiositySolver& solver, const SceneMesh& mesh,
