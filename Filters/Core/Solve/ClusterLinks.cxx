@@ -29,6 +29,10 @@ constexpr double kHiddenRadii = 2.0;
 constexpr int kHiddenRays = 16;
 /// Times the shadow rays for a partly visible pair of elements that exchange much.
 constexpr int kPartialSamples = 4;
+/// Draws beyond a pair's rays, times its rays, to find points that face each other.
+constexpr int kExtraDraws = 4;
+/// The factor from which a link gets all its shadow rays (RaysFor); below, fewer.
+constexpr double kFullRaysFactor = 1e-4;
 
 } // namespace
 
@@ -340,15 +344,15 @@ void ClusterLinkBuilder::AddFar(int a, int b, Found& found) const
   {
     return;
   }
-  const double visible = NeedsRays(a, b) ? Visible(a, b, found.Rays, Options.Samples) : 1.0;
-  if (visible <= 0)
-  {
-    return;
-  }
   // The point-to-disc correction (pi d^2 + area) keeps a near cluster from sending more
   // than a disc of its projected area could.
   const double fromA = projectedA * projectedB / (A.Area * (Pi * d2 + projectedB));
   const double fromB = projectedA * projectedB / (B.Area * (Pi * d2 + projectedA));
+  const double visible = NeedsRays(a, b) ? Visible(a, b, found.Rays, RaysFor(std::max(fromA, fromB))) : 1.0;
+  if (visible <= 0)
+  {
+    return;
+  }
   if (visible < 1 && !(Tree.IsLeaf(a) && Tree.IsLeaf(b)) && std::max(fromA, fromB) > Options.PartialFactor)
   {
     RefineChildren(a, b, found, true); // a shadow's edge crosses them: link their parts instead
@@ -388,7 +392,7 @@ void ClusterLinkBuilder::AddNear(int a, int b, Found& found) const
   {
     return;
   }
-  double visible = NeedsRays(a, b) ? Visible(a, b, found.Rays, Options.Samples) : 1.0;
+  double visible = NeedsRays(a, b) ? Visible(a, b, found.Rays, RaysFor(std::max(fromA, fromB))) : 1.0;
   if (visible > 0 && visible < 1 && std::max(fromA, fromB) > Options.PartialFactor &&
     Options.Samples <= std::numeric_limits<int>::max() / kPartialSamples)
   {
@@ -437,6 +441,15 @@ double ClusterLinkBuilder::NearFactor(int from, int to, Found& found) const
   }
   const double mean = FanAverage(Mesh, G, from, value); // adjacent: the centroid alone misjudges
   return std::isfinite(mean) ? mean : 0.0;
+}
+
+int ClusterLinkBuilder::RaysFor(double factor) const
+{
+  // For a given number of rays, the error of a receiver's sum over its links is least
+  // with each link's rays in proportion to its factor; past kFullRaysFactor a link gets
+  // them all.
+  const double share = std::min(1.0, factor / kFullRaysFactor);
+  return std::max(1, static_cast<int>(std::ceil(Options.Samples * share)));
 }
 
 bool ClusterLinkBuilder::NeedsRays(int a, int b) const
@@ -525,11 +538,17 @@ double ClusterLinkBuilder::Visible(int a, int b, long long& rays, int samples) c
   // the strata are single points, so the far ends are drawn from all of them instead.
   const bool paired = samples <= kNodePoints;
   const int shift = static_cast<int>(random.Next() * samples);
-  for (int r = 0; r < samples; ++r)
+  // Nodes that face each other only in part (a cluster's faces turned every way) waste
+  // draws on points that do not; with none left the pair would pass as fully visible,
+  // light leaking through whatever stands between them. So short of `samples` points
+  // that face each other, more are drawn, at random.
+  for (int r = 0; r < samples || (valid < samples && r < (1 + kExtraDraws) * samples); ++r)
   {
+    const bool stratified = r < samples;
     Vec3 na, nb;
-    const Vec3 pa = NodePoint(a, Stratum(r, samples, random), na);
-    const Vec3 pb = NodePoint(b, paired ? Stratum((r + shift) % samples, samples, random) : Stratum(0, 1, random), nb);
+    const Vec3 pa = NodePoint(a, stratified ? Stratum(r, samples, random) : Stratum(0, 1, random), na);
+    const Vec3 pb = NodePoint(b,
+      stratified && paired ? Stratum((r + shift) % samples, samples, random) : Stratum(0, 1, random), nb);
     if (Dot(na, pb - pa) <= 0 || Dot(nb, pa - pb) <= 0)
     {
       continue; // these two points do not exchange light: no ray speaks for the pair

@@ -172,6 +172,7 @@ private:
     return std::min(high - 1, low + static_cast<int>(random.Next() * (high - low)));
   }
   bool NeedsRays(int a, int b) const;
+  int RaysFor(double factor) const;
 
   const SceneMesh& Mesh;
   const SceneGeometry& G;
