@@ -100,8 +100,15 @@ def add_lamps(house, lamps, half=0.15):
     return marker.GetOutput()
 
 
+def setting(text):
+    """'Name=Value' -> (Name, int or float Value)."""
+    name, _, value = text.partition("=")
+    number = float(value)
+    return name, int(number) if number.is_integer() and "." not in value else number
+
+
 def solve(scene, patch, element, cluster_angle=30.0, time_budget=0.0, method="Auto", separation=3.0, gather_rays=256,
-          lamp_grading=0.2, gather_sweeps=1, gather_cache=None, samples=None):
+          lamp_grading=0.2, gather_sweeps=1, gather_cache=None, settings=()):
     """Mesh + solve at the solver's default settings (Auto picks the clustered method here);
     keeps warnings and errors."""
     mesher = relight.vtkRadiosityMesher()
@@ -116,8 +123,8 @@ def solve(scene, patch, element, cluster_angle=30.0, time_budget=0.0, method="Au
     solver.SetGatherSweeps(gather_sweeps)
     if gather_cache is not None:
         solver.SetGatherCache(gather_cache)
-    if samples is not None:
-        solver.SetFormFactorSamples(samples)
+    for name, value in settings:
+        getattr(solver, "Set" + name)(value)
     getattr(solver, f"SetSolverMethodTo{method}")()
     catchers = [relight.ErrorCatcher(mesher), relight.ErrorCatcher(solver)]
     solver.Update()
@@ -200,8 +207,8 @@ def main():
     parser.add_argument("--accuracy", choices=["preview", "draft", "default", "fine", "reference"],
                         help="the one knob (relight.levels): sets the element size (times --element), LampGrading, "
                              "GatherRays and ClusterSeparation, over their flags")
-    parser.add_argument("--samples", type=int, default=None,
-                        help="FormFactorSamples: shadow rays per link (default: the solver's)")
+    parser.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
+                        help="any other solver setting, e.g. FormFactorSamples=8 (shadow rays per link); repeatable")
     parser.add_argument("--reference", action="store_true", help="compare with Mitsuba 3 at probe points (rendered once per mesh)")
     parser.add_argument("--element-average", type=int, default=0, metavar="N",
                         help="with --reference: compare element means (Mitsuba at N points spread over each probe's "
@@ -231,7 +238,7 @@ def main():
     scene = add_lamps(house, lamps)
     solver, warnings = solve(scene, args.patch, args.element, args.cluster_angle, args.time_budget, args.method,
                              args.cluster_separation, args.gather_rays, args.lamp_grading, args.gather_sweeps,
-                             args.gather_cache, args.samples)
+                             args.gather_cache, [setting(s) for s in args.set])
     result = solver.GetOutput()
     method = result.GetFieldData().GetAbstractArray("SolverMethod").GetValue(0)
     commit = subprocess.run(["git", "describe", "--always", "--dirty"], capture_output=True, text=True).stdout.strip()
@@ -239,7 +246,7 @@ def main():
                elements=result.GetNumberOfCells(),
                patches=len(np.unique(relight.cell_array(result, "PatchId"))), lights=k,
                element=args.element, patch=args.patch, method=args.method, separation=args.cluster_separation,
-               gather_rays=args.gather_rays, gather_sweeps=args.gather_sweeps, gather_cache=args.gather_cache, samples=args.samples or "", lamp_grading=args.lamp_grading, solve_s=round(solver.GetLastSolveSeconds(), 2),
+               gather_rays=args.gather_rays, gather_sweeps=args.gather_sweeps, gather_cache=args.gather_cache, settings=" ".join(args.set), lamp_grading=args.lamp_grading, solve_s=round(solver.GetLastSolveSeconds(), 2),
                shots=solver.GetLastShots(), converged=bool(solver.GetLastConverged()),
                peak_mib=round(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024),
                warnings=len(warnings))

@@ -23,8 +23,8 @@ constexpr int kAccuracyLevels = 5;
 inline const AccuracyLevel& AccuracyLevelOf(int level)
 {
   static const AccuracyLevel levels[kAccuracyLevels] = {
-    { "preview", 2.0, 0.0, 16, 2.0, 1 },   // elements twice as large, a light gather
-    { "draft", 1.0, 0.3, 64, 2.0, 1 },
+    { "preview", 2.0, 0.3, 64, 2.0, 1 },   // elements twice as large, a light gather
+    { "draft", 2.0, 0.2, 256, 3.0, 1 },    // the default's gather on elements twice as large
     { "default", 1.0, 0.2, 256, 3.0, 1 },  // the filters' defaults
     { "fine", 0.5, 0.2, 256, 3.0, 2 },     // elements half as large, a second sweep
     { "reference", 0.5, 0.15, 1024, 4.0, 2 },

@@ -118,9 +118,9 @@ check(mesher.GetElementSizeInUse() == 0.125 and mesher.GetLampGradingInUse() == 
 check(out.GetNumberOfCells() == runs["fine"].GetOutput().GetNumberOfCells() and
       abs(probe_error(out) - errors["fine"]) < 1e-12,
       f"...the same mesh and answer as relight.solve(accuracy='fine') ({out.GetNumberOfCells()} elements)")
-mesher, solver = pipeline(1, gather_rays=0)  # the level's 64 rays, not the solver's own 0
+mesher, solver = pipeline(0, gather_rays=0)  # the level's 64 rays, not the solver's own 0
 check("then 64 rays" in effect(solver.GetOutput(), "FinalGather"),
-      f"the solver takes Draft's gather rays from the mesher's stamp: {effect(solver.GetOutput(), 'FinalGather')}")
+      f"the solver takes Preview's gather rays from the mesher's stamp: {effect(solver.GetOutput(), 'FinalGather')}")
 mesher, solver = pipeline(-1, gather_rays=0)
 check(solver.GetOutput().GetFieldData().GetArray("Accuracy") is None and
       "not asked for" in effect(solver.GetOutput(), "FinalGather"),
