@@ -2,6 +2,7 @@
 #include "vtkRadiosityAdapter.h"
 #include "vtkRadiosityCombine.h"
 #include "vtkRadiosityLightDefaults.h"
+#include "Base/Vec3.h"
 
 #include "Base/AtomicFile.h"
 #include "SceneFiles.h"
@@ -206,7 +207,8 @@ vtkSmartPointer<vtkFloatArray> RelitRadiosity(vtkPolyData* input, bool cells)
   }
   const std::vector<std::string> names = vtkRadiosityLightNames(input->GetFieldData());
   // The colors the relight filter starts from (vtkRadiosityRelight::ResolveWeights).
-  const std::vector<double> weights = vtkRadiosityLightDefaultColors(input, static_cast<int>(names.size()));
+  const std::vector<double> weights =
+    vtkRadiosityFlatColors(vtkRadiosityLightDefaultColors(input, static_cast<int>(names.size())));
   std::vector<std::string> arrays;
   for (const std::string& name : names)
   {

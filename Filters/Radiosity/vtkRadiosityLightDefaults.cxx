@@ -1,6 +1,6 @@
 #include "vtkRadiosityLightDefaults.h"
 
-#include "Relight/LightRig.h"
+#include "Lights/LightColors.h"
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -8,7 +8,7 @@
 #include "vtkPolyData.h"
 #include "vtkStringArray.h"
 
-std::vector<double> vtkRadiosityLightDefaultColors(vtkPolyData* data, int lights)
+std::vector<radiosity::Vec3> vtkRadiosityLightDefaultColors(vtkPolyData* data, int lights)
 {
   std::vector<double> given;
   vtkDataArray* defaults = data->GetFieldData()->GetArray("LightDefaultColors");
@@ -20,13 +20,19 @@ std::vector<double> vtkRadiosityLightDefaultColors(vtkPolyData* data, int lights
   std::vector<radiosity::Vec3> emission;
   vtkDataArray* lightId = data->GetCellData()->GetArray("LightId");
   vtkDataArray* emitted = data->GetCellData()->GetArray("Emission");
-  for (vtkIdType c = 0; lightId && emitted && emitted->GetNumberOfComponents() == 3 && c < data->GetNumberOfCells(); ++c)
+  const bool fromCells = given.size() != 3 * static_cast<size_t>(lights); // else the cells are not read
+  for (vtkIdType c = 0; fromCells && lightId && emitted && emitted->GetNumberOfComponents() == 3 && c < data->GetNumberOfCells(); ++c)
   {
     ids.push_back(static_cast<int>(lightId->GetComponent(c, 0)));
     emission.push_back({ emitted->GetComponent(c, 0), emitted->GetComponent(c, 1), emitted->GetComponent(c, 2) });
   }
+  return radiosity::LightDefaultColors(lights, given, ids, emission);
+}
+
+std::vector<double> vtkRadiosityFlatColors(const std::vector<radiosity::Vec3>& colors)
+{
   std::vector<double> rgb;
-  for (const radiosity::Vec3& c : radiosity::LightDefaultColors(lights, given, ids, emission))
+  for (const radiosity::Vec3& c : colors)
   {
     rgb.insert(rgb.end(), { c.x, c.y, c.z });
   }

@@ -9,12 +9,20 @@
 
 class vtkFieldData;
 class vtkPolyData;
+namespace radiosity
+{
+struct Vec3;
+}
 
 /// The names in the field array LightNames, in order; empty when there is none.
 VTKRADIOSITYFILTERS_EXPORT std::vector<std::string> vtkRadiosityLightNames(vtkFieldData* fields);
 
-/// 3 values per light: the solver's LightDefaultColors when it holds one per light, else
-/// each light's mean Emission over its cells (zero stays zero; white without any).
-VTKRADIOSITYFILTERS_EXPORT std::vector<double> vtkRadiosityLightDefaultColors(vtkPolyData* data, int lights);
+/// Each light's default color: the solver's LightDefaultColors when it holds one per light
+/// (the cells are not read then), else each light's mean Emission over its cells
+/// (radiosity::LightDefaultColors: zero stays zero; white without any).
+VTKRADIOSITYFILTERS_EXPORT std::vector<radiosity::Vec3> vtkRadiosityLightDefaultColors(vtkPolyData* data, int lights);
+
+/// 3 values a color, as vtkRadiosityCombineSolutions takes its weights.
+VTKRADIOSITYFILTERS_EXPORT std::vector<double> vtkRadiosityFlatColors(const std::vector<radiosity::Vec3>& colors);
 
 #endif

@@ -280,17 +280,6 @@ std::string vtkRadiosityLights::Resolve(const std::vector<std::string>& names,
                                                         : error;
 }
 
-std::vector<radiosity::Vec3> vtkRadiosityLights::DefaultColors(vtkPolyData* data, int lights)
-{
-  const std::vector<double> rgb = vtkRadiosityLightDefaultColors(data, lights);
-  std::vector<radiosity::Vec3> colors;
-  for (int l = 0; l < lights; ++l)
-  {
-    colors.push_back({ rgb[3 * l], rgb[3 * l + 1], rgb[3 * l + 2] });
-  }
-  return colors;
-}
-
 int vtkRadiosityLights::GetSettingRowCells()
 {
   return radiosity::kSettingRowCells;

@@ -117,8 +117,6 @@ public:
   std::string Resolve(const std::vector<std::string>& names, const std::vector<radiosity::Vec3>& defaults,
     double time, std::vector<radiosity::LightSetting>& effective, std::vector<std::string>& warnings);
 
-  /// Each light's default color in `data` (vtkRadiosityLightDefaultColors), as Resolve takes them.
-  static std::vector<radiosity::Vec3> DefaultColors(vtkPolyData* data, int lights);
 #endif
 
 protected:

@@ -359,7 +359,7 @@ std::string vtkRadiosityRelight::ResolveWeights(
 {
   // Default colors: the solver's, else the mean Emission of each light's cells.
   const std::vector<radiosity::Vec3> defaultColors =
-    vtkRadiosityLights::DefaultColors(input, static_cast<int>(names.size()));
+    vtkRadiosityLightDefaultColors(input, static_cast<int>(names.size()));
   std::vector<radiosity::LightSetting> effective;
   std::vector<std::string> warnings;
   const std::string invalid = this->Lights->Resolve(names, defaultColors, time, effective, warnings);
@@ -418,7 +418,8 @@ double vtkRadiosityRelight::MeterAtDefaults(
   {
     arrays.push_back("Radiosity_" + name);
   }
-  const std::vector<double> defaults = vtkRadiosityLightDefaultColors(input, static_cast<int>(names.size()));
+  const std::vector<double> defaults =
+    vtkRadiosityFlatColors(vtkRadiosityLightDefaultColors(input, static_cast<int>(names.size())));
   vtkDataSetAttributes* data = cells ? static_cast<vtkDataSetAttributes*>(input->GetCellData()) : input->GetPointData();
   vtkNew<vtkFloatArray> sum;
   std::string error;

@@ -195,7 +195,7 @@ void vtkRadiosityRelightMapper::UploadIfNeeded(vtkRenderer* ren)
     in.Names.clear();
     return;
   }
-  in.Defaults = vtkRadiosityLights::DefaultColors(data, static_cast<int>(k));
+  in.Defaults = vtkRadiosityLightDefaultColors(data, static_cast<int>(k));
   GLint most = 0, vectors = 0;
   glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &most);
   glGetIntegerv(GL_MAX_VERTEX_UNIFORM_VECTORS, &vectors);
@@ -248,7 +248,7 @@ void vtkRadiosityRelightMapper::DescribeLights(vtkPolyData* data, vtkStringArray
   const std::vector<std::string> lights = vtkRadiosityLightNames(data->GetFieldData());
   std::vector<radiosity::LightSetting> effective;
   std::vector<std::string> warnings;
-  const std::vector<radiosity::Vec3> defaults = vtkRadiosityLights::DefaultColors(data, static_cast<int>(lights.size()));
+  const std::vector<radiosity::Vec3> defaults = vtkRadiosityLightDefaultColors(data, static_cast<int>(lights.size()));
   if (!this->Internal->Lights->Resolve(lights, defaults, this->Internal->Time, effective, warnings).empty())
   {
     return;

@@ -126,13 +126,6 @@ struct LightRig
     std::vector<LightSetting>& effective, std::vector<std::string>& warnings) const;
 };
 
-/// The lights' default colors: `given` (the solver's LightDefaultColors, 3 values per
-/// light) when it holds one per light, else each light's mean Emission over its cells
-/// (`lightId`, `emission` per cell; zero Emission stays zero, a light without cells or
-/// without an Emission array is white).
-std::vector<Vec3> LightDefaultColors(int lights, const std::vector<double>& given, const std::vector<int>& lightId,
-  const std::vector<Vec3>& emission);
-
 /// The 3k weights (color x intensity, zero for lights off) of resolved settings; with an
 /// indirect scale other than 1, 6k: s times the totals, then (1 - s) times the direct
 /// parts, for B = s B_total + (1 - s) B_direct.

@@ -1,4 +1,5 @@
 #include "Solve/LightSolutions.h"
+#include "Lights/LightColors.h"
 #include "Solve/Effects.h"
 #include "Solve/PointLightShots.h"
 
@@ -100,31 +101,16 @@ std::vector<Vec3> DefaultColors(
   const SceneMesh& mesh, const LightGrouping& grouping, const std::vector<Vec3>& emissionColor)
 {
   CheckGrouping(mesh, grouping);
-  const int L = grouping.Solutions;
   const std::vector<int> members = LightsPerSolution(grouping);
-  std::vector<Vec3> sum(L);
-  std::vector<int> cells(L, 0);
-  if (!emissionColor.empty())
+  // Each cell's solution where it is its light's own; a bank's cells count for none, so a
+  // bank stays white (its lights keep their colours in its emission).
+  std::vector<int> solution(mesh.LightId.size(), -1);
+  for (size_t e = 0; e < solution.size(); ++e)
   {
-    for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
-    {
-      if (mesh.LightId[e] >= 0)
-      {
-        const int s = grouping.SolutionOfLight[mesh.LightId[e]];
-        sum[s] += emissionColor[e];
-        ++cells[s];
-      }
-    }
+    const int s = mesh.LightId[e] >= 0 ? grouping.SolutionOfLight[mesh.LightId[e]] : -1;
+    solution[e] = s >= 0 && members[s] == 1 ? s : -1;
   }
-  std::vector<Vec3> colors(L, Vec3{ 1, 1, 1 });
-  for (int s = 0; s < L; ++s)
-  {
-    if (members[s] == 1 && cells[s] > 0) // zero Emission stays zero, as in a combined solve
-    {
-      colors[s] = sum[s] * (1.0 / cells[s]);
-    }
-  }
-  return colors;
+  return LightDefaultColors(grouping.Solutions, {}, solution, emissionColor);
 }
 
 namespace
