@@ -2,9 +2,9 @@
 #include "vtkRadiosityAdapter.h"
 #include "vtkRadiosityCombine.h"
 #include "vtkRadiosityLightDefaults.h"
-#include "Base/Vec3.h"
 
 #include "Base/AtomicFile.h"
+#include "Base/Vec3.h"
 #include "SceneFiles.h"
 #include "Geometry/Polygon.h"
 

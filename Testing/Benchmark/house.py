@@ -101,9 +101,14 @@ def add_lamps(house, lamps, half=0.15):
 
 
 def setting(text):
-    """'Name=Value' -> (Name, int or float Value)."""
-    name, _, value = text.partition("=")
-    number = float(value)
+    """'Name=Value' -> (Name, int or float Value); argparse's error for anything else."""
+    name, equals, value = text.partition("=")
+    try:
+        number = float(value)
+    except ValueError:
+        number = None
+    if not name or not equals or number is None:
+        raise argparse.ArgumentTypeError(f"expected NAME=NUMBER, e.g. FormFactorSamples=8, not {text!r}")
     return name, int(number) if number.is_integer() and "." not in value else number
 
 
@@ -207,7 +212,7 @@ def main():
     parser.add_argument("--accuracy", choices=["preview", "draft", "default", "fine", "reference"],
                         help="the one knob (relight.levels): sets the element size (times --element), LampGrading, "
                              "GatherRays and ClusterSeparation, over their flags")
-    parser.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
+    parser.add_argument("--set", action="append", default=[], metavar="NAME=VALUE", type=setting,
                         help="any other solver setting, e.g. FormFactorSamples=8 (shadow rays per link); repeatable")
     parser.add_argument("--reference", action="store_true", help="compare with Mitsuba 3 at probe points (rendered once per mesh)")
     parser.add_argument("--element-average", type=int, default=0, metavar="N",
@@ -238,7 +243,7 @@ def main():
     scene = add_lamps(house, lamps)
     solver, warnings = solve(scene, args.patch, args.element, args.cluster_angle, args.time_budget, args.method,
                              args.cluster_separation, args.gather_rays, args.lamp_grading, args.gather_sweeps,
-                             args.gather_cache, [setting(s) for s in args.set])
+                             args.gather_cache, args.set)
     result = solver.GetOutput()
     method = result.GetFieldData().GetAbstractArray("SolverMethod").GetValue(0)
     commit = subprocess.run(["git", "describe", "--always", "--dirty"], capture_output=True, text=True).stdout.strip()
@@ -246,7 +251,7 @@ def main():
                elements=result.GetNumberOfCells(),
                patches=len(np.unique(relight.cell_array(result, "PatchId"))), lights=k,
                element=args.element, patch=args.patch, method=args.method, separation=args.cluster_separation,
-               gather_rays=args.gather_rays, gather_sweeps=args.gather_sweeps, gather_cache=args.gather_cache, settings=" ".join(args.set), lamp_grading=args.lamp_grading, solve_s=round(solver.GetLastSolveSeconds(), 2),
+               gather_rays=args.gather_rays, gather_sweeps=args.gather_sweeps, gather_cache=args.gather_cache, settings=" ".join(f"{n}={v}" for n, v in args.set), lamp_grading=args.lamp_grading, solve_s=round(solver.GetLastSolveSeconds(), 2),
                shots=solver.GetLastShots(), converged=bool(solver.GetLastConverged()),
                peak_mib=round(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024),
                warnings=len(warnings))

@@ -23,7 +23,7 @@ constexpr int kAccuracyLevels = 5;
 inline const AccuracyLevel& AccuracyLevelOf(int level)
 {
   static const AccuracyLevel levels[kAccuracyLevels] = {
-    { "preview", 2.0, 0.3, 64, 2.0, 1 },   // elements twice as large, a light gather
+    { "preview", 2.0, 0.3, 64, 2.0, 1 },   // draft's elements, coarser grading, a light gather
     { "draft", 2.0, 0.2, 256, 3.0, 1 },    // the default's gather on elements twice as large
     { "default", 1.0, 0.2, 256, 3.0, 1 },  // the filters' defaults
     { "fine", 0.5, 0.2, 256, 3.0, 2 },     // elements half as large, a second sweep

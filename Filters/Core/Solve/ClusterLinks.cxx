@@ -29,7 +29,8 @@ constexpr double kHiddenRadii = 2.0;
 constexpr int kHiddenRays = 16;
 /// Times the shadow rays for a partly visible pair of elements that exchange much.
 constexpr int kPartialSamples = 4;
-/// Draws beyond a pair's rays, times its rays, to find points that face each other.
+/// Draws beyond a pair's rays, times its rays (and at least kNodePoints), to find points
+/// that face each other.
 constexpr int kExtraDraws = 4;
 /// The factor from which a link gets all its shadow rays (RaysFor); below, fewer.
 constexpr double kFullRaysFactor = 1e-4;
@@ -539,16 +540,19 @@ double ClusterLinkBuilder::Visible(int a, int b, long long& rays, int samples) c
   const bool paired = samples <= kNodePoints;
   const int shift = static_cast<int>(random.Next() * samples);
   // Nodes that face each other only in part (a cluster's faces turned every way) waste
-  // draws on points that do not; with none left the pair would pass as fully visible,
-  // light leaking through whatever stands between them. So short of `samples` points
-  // that face each other, more are drawn, at random.
-  for (int r = 0; r < samples || (valid < samples && r < (1 + kExtraDraws) * samples); ++r)
+  // draws on points that do not. Short of `samples` points that face each other, more
+  // are drawn, at random; where none of them does either, the two exchange next to
+  // nothing, and passing them as fully visible was how light leaked through what stands
+  // between them.
+  const long long draws = samples + std::max(static_cast<long long>(kExtraDraws) * samples, 1LL * kNodePoints);
+  for (long long r = 0; r < samples || (valid < samples && r < draws); ++r)
   {
     const bool stratified = r < samples;
     Vec3 na, nb;
-    const Vec3 pa = NodePoint(a, stratified ? Stratum(r, samples, random) : Stratum(0, 1, random), na);
+    const int ra = static_cast<int>(r);
+    const Vec3 pa = NodePoint(a, stratified ? Stratum(ra, samples, random) : Stratum(0, 1, random), na);
     const Vec3 pb = NodePoint(b,
-      stratified && paired ? Stratum((r + shift) % samples, samples, random) : Stratum(0, 1, random), nb);
+      stratified && paired ? Stratum((ra + shift) % samples, samples, random) : Stratum(0, 1, random), nb);
     if (Dot(na, pb - pa) <= 0 || Dot(nb, pa - pb) <= 0)
     {
       continue; // these two points do not exchange light: no ray speaks for the pair
@@ -557,7 +561,7 @@ double ClusterLinkBuilder::Visible(int a, int b, long long& rays, int samples) c
     ++rays;
     open += Rays.Occluded(pa, pb) ? 0 : 1;
   }
-  return valid > 0 ? static_cast<double>(open) / valid : 1.0;
+  return valid > 0 ? static_cast<double>(open) / valid : 0.0;
 }
 
 std::vector<ClusterLinkBuilder::Task> ClusterLinkBuilder::Frontier(int wanted) const

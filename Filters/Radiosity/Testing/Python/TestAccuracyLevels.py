@@ -82,8 +82,9 @@ check((mesher.GetElementSize(), mesher.GetLampGrading(), runs["fine"].GetGatherR
 given = relight.solve(scene, 1.0, 0.25, accuracy="fine", lamp_grading=0, GatherRays=16)
 check(given.GetInputAlgorithm().GetLampGrading() == 0 and given.GetGatherRays() == 16,
       "settings given beside the level win over it")
-check(errors["preview"] > errors["draft"] > errors["default"] > errors["fine"] and errors["fine"] < 0.01,
-      "each level closer to Lambert's closed form at 300 points between the mesh points: " +
+# Preview and draft share their elements, so on direct light alone they come out alike.
+check(min(errors["preview"], errors["draft"]) > errors["default"] > errors["fine"] and errors["fine"] < 0.01,
+      "each finer element size closer to Lambert's closed form at 300 points between the mesh points: " +
       ", ".join(f"{n} {100 * e:.2f} %" for n, e in errors.items()))
 
 # --- the same knob in ParaView: the mesher's Accuracy, which the solver follows -------------
