@@ -312,6 +312,19 @@ TEST(Solver, BankEqualsEmissionWeightedSumOfItsLights)
       EXPECT_NEAR(banked.Radiosity[e * 2 + 1][c], single.Radiosity[e * 3 + 1][c], 1e-6);
     }
   }
+  // The relight's default colors: a lone light's own, a bank white (its colors are in it).
+  const std::vector<Vec3> bankDefaults = DefaultColors(mesh, banks, colors);
+  const std::vector<Vec3> loneDefaults = DefaultColors(mesh, LightGrouping::OnePerLight(3), colors);
+  ASSERT_EQ(bankDefaults.size(), 2u);
+  for (int c = 0; c < 3; ++c)
+  {
+    EXPECT_NEAR(bankDefaults[0][c], 1.0, 1e-12);
+    EXPECT_NEAR(bankDefaults[1][c], palette[1][c], 1e-12);
+    for (int l = 0; l < 3; ++l)
+    {
+      EXPECT_NEAR(loneDefaults[l][c], palette[l][c], 1e-12);
+    }
+  }
   LightGrouping bad;
   EXPECT_NE(LightGrouping::FromBanks({ 0, 2, 0 }, 3, bad), "");
   EXPECT_NE(LightGrouping::FromBanks({ 0, 1 }, 3, bad), "");
