@@ -18,7 +18,10 @@ def load(path):
     return rows[np.lexsort((rows[:, 0], rows[:, 1]))]
 
 
-def main(a_path, a_spp, b_path, b_spp, out_path):
+def combine(a_path, a_spp, b_path, b_spp, out_path):
+    """Writes the two renders' sample-weighted mean to out_path; returns how far apart they
+    are and the noise that implies in A, in B and in their mean (fractions, the benches'
+    measure)."""
     a, b = load(a_path), load(b_path)
     if a.shape != b.shape or not np.array_equal(a[:, :2], b[:, :2]):
         raise SystemExit("the two renders are not of the same probes and lights")
@@ -27,16 +30,21 @@ def main(a_path, a_spp, b_path, b_spp, out_path):
         x, y = a[a[:, 1] == light][:, 2:5].mean(axis=1), b[b[:, 1] == light][:, 2:5].mean(axis=1)
         apart.append(float(np.abs(y - x).mean() / x.mean()))
     d = float(np.mean(apart))
-    print(f"apart: {100 * d:.3f} % (per light {', '.join(f'{100 * v:.2f}' for v in apart)})")
-    for name, spp, other in (("A", a_spp, b_spp), ("B", b_spp, a_spp)):
-        print(f"noise of {name} ({spp} spp): about {100 * d * math.sqrt(1 / (1 + spp / other)):.3f} %")
+    noise_a, noise_b = d * math.sqrt(1 / (1 + a_spp / b_spp)), d * math.sqrt(1 / (1 + b_spp / a_spp))
     mean = a.copy()
     mean[:, 2:5] = (a[:, 2:5] * a_spp + b[:, 2:5] * b_spp) / (a_spp + b_spp)
-    combined = a_spp + b_spp
-    noise_a = d * math.sqrt(1 / (1 + a_spp / b_spp))
-    print(f"their mean ({combined} spp): noise about {100 * noise_a * math.sqrt(a_spp / combined):.3f} %")
     np.savetxt(out_path, mean, delimiter=",", header="probe,light,r,g,b", comments="",
                fmt=["%d", "%d", "%.9g", "%.9g", "%.9g"])
+    return dict(apart=d, per_light=apart, noise_a=noise_a, noise_b=noise_b,
+                noise_mean=noise_a * math.sqrt(a_spp / (a_spp + b_spp)))
+
+
+def main(a_path, a_spp, b_path, b_spp, out_path):
+    r = combine(a_path, a_spp, b_path, b_spp, out_path)
+    print(f"apart: {100 * r['apart']:.3f} % (per light {', '.join(f'{100 * v:.2f}' for v in r['per_light'])})")
+    print(f"noise of A ({a_spp} spp): about {100 * r['noise_a']:.3f} %")
+    print(f"noise of B ({b_spp} spp): about {100 * r['noise_b']:.3f} %")
+    print(f"their mean ({a_spp + b_spp} spp): noise about {100 * r['noise_mean']:.3f} %")
     print(f"wrote {out_path}")
 
 

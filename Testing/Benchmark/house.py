@@ -164,10 +164,29 @@ def render(solver, shots, out):
     return relit.GetExposure()
 
 
-def accuracy(result, out, python, names, average, traced=False, radiance=False):
+def stronger_reference(scene, csv, python, spp, result, cells, names, average):
+    """A second Mitsuba render of the same probes (another seed, `spp` paths): how far the two
+    are apart, the noise that implies, and our error against their path-weighted mean."""
+    import combine_references, house_reference
+    second = csv.with_name(csv.stem + f"_seed1_{spp}.csv")
+    house_reference.render(scene, second, python, spp=spp, seed=1)
+    combined = csv.with_name(csv.stem + f"_combined_{8192 + spp}.csv")
+    noise = combine_references.combine(csv, 8192, second, spp, combined)
+    print(f"the two Mitsuba renders (8192 and {spp} paths) {100 * noise['apart']:.2f} % apart: noise about "
+          f"{100 * noise['noise_a']:.2f} % and {100 * noise['noise_b']:.2f} %, their mean {100 * noise['noise_mean']:.2f} %")
+    errors, median, _ = house_reference.compare(result, cells, combined, names, average > 0)
+    print(f"error against their mean ({8192 + spp} paths): " + ", ".join(f"{n} {100 * e:.1f} %" for n, e in errors.items()))
+    return dict(strong_error_pct=round(100 * float(np.mean(list(errors.values()))), 2),
+                strong_lit_median_ratio=round(median, 3), strong_reference_paths=8192 + spp,
+                strong_reference_noise_pct=round(100 * noise["noise_mean"], 2),
+                reference_noise_pct=round(100 * noise["noise_a"], 2))
+
+
+def accuracy(result, out, python, names, average, traced=False, radiance=False, second_spp=0):
     """Mean per-light error against Mitsuba at probe points (or element means), and how ours
     compares where the house is lit (median ratio); with `radiance`, the same against
-    Radiance's rtrace at the same probes, and how far the two references are apart."""
+    Radiance's rtrace at the same probes, and how far the two references are apart; with
+    `second_spp`, the same against a stronger Mitsuba reference (stronger_reference)."""
     import house_reference
     stem = "house_average" if average else ("house_traced" if traced else "house")
     scene, csv = out / f"{stem}_room.json", out / f"{stem}_reference.csv"
@@ -177,6 +196,8 @@ def accuracy(result, out, python, names, average, traced=False, radiance=False):
     print("error against Mitsuba: " + ", ".join(f"{n} {100 * e:.1f} %" for n, e in errors.items()))
     row = dict(mean_error_pct=round(100 * float(np.mean(list(errors.values()))), 2),
                lit_median_ratio=round(median, 3), lit_probes=lit)
+    if second_spp > 0:
+        row.update(stronger_reference(scene, csv, python, second_spp, result, cells, names, average))
     if radiance:
         second = out / f"{stem}_radiance.csv"
         house_reference.render(scene, second, python, script="radiance_reference.py")
@@ -223,6 +244,10 @@ def main():
                              "(drawn independently of our elements), ours interpolated there")
     parser.add_argument("--radiance", action="store_true",
                         help="with --reference: also Radiance's rtrace (pyradiance, in the same venv) at the same probes")
+    parser.add_argument("--second-reference", type=int, default=0, metavar="SPP",
+                        help="with --reference: a second Mitsuba render of the same probes at SPP paths (another "
+                             "seed): the two renders' noise, and our error against their mean as well")
+    parser.add_argument("--save", metavar="PATH.vtp", help="also write the solved mesh (every array) to PATH.vtp")
     parser.add_argument("--mitsuba-python", default="out/mitsuba-venv/bin/python", help="a Python with mitsuba installed")
     args = parser.parse_args()
     if args.accuracy:
@@ -255,9 +280,16 @@ def main():
                shots=solver.GetLastShots(), converged=bool(solver.GetLastConverged()),
                peak_mib=round(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024),
                warnings=len(warnings))
+    if args.save:
+        from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+        writer = vtkXMLPolyDataWriter()
+        writer.SetFileName(args.save)
+        writer.SetInputData(result)
+        if not writer.Write():
+            raise OSError(f"could not write {args.save}")
     if args.reference:
         row.update(accuracy(result, out, args.mitsuba_python, [f"Lamp{i}" for i in range(k)], args.element_average,
-                            args.traced_probes, args.radiance))
+                            args.traced_probes, args.radiance, args.second_reference))
     exposure = render(solver, [camera(rays, *lamps[0]), camera(rays, *lamps[-1])], out)  # one per storey
     summary = "\n".join([f"{key}: {value}" for key, value in row.items()] + [f"SolverMethod: {method}",
                          f"exposure: {exposure:.4g}"] + [f"warning: {w.strip().splitlines()[-1]}" for w in warnings])

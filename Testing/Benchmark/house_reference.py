@@ -136,16 +136,17 @@ def export(mesh, path, probes=600, seed=7, average=0, traced=False):
     return [(int(c), np.asarray(x, float)) for x, c in zip(spots, pick)]
 
 
-def render(scene_path, csv_path, python, spp=8192, script="mitsuba_reference.py"):
+def render(scene_path, csv_path, python, spp=8192, script="mitsuba_reference.py", seed=0):
     """A reference's radiosity at the probes (Mitsuba's, or with `script`
-    radiance_reference.py Radiance's), rendered once per scene, sample count and version of
-    the script (a digest of the three beside the csv says what it was made from)."""
+    radiance_reference.py Radiance's), rendered once per scene, sample count, seed and version
+    of the script (a digest of them beside the csv says what it was made from)."""
     script = HERE / script
-    made_from = hashlib.sha256(scene_path.read_bytes() + str(spp).encode() + script.read_bytes()).hexdigest()
+    made_from = hashlib.sha256(scene_path.read_bytes() + str(spp).encode() + script.read_bytes()
+                               + (f" seed {seed}".encode() if seed else b"")).hexdigest()
     key = csv_path.with_suffix(".key")
     if csv_path.exists() and key.exists() and key.read_text() == made_from:
         return
-    extra = ["--spp", str(spp)] if script.name == "mitsuba_reference.py" else []
+    extra = ["--spp", str(spp), "--seed", str(seed)] if script.name == "mitsuba_reference.py" else []
     subprocess.run([str(python), str(script), str(scene_path), str(csv_path), *extra], check=True)
     key.write_text(made_from)
 
