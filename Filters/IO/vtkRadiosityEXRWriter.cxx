@@ -130,7 +130,9 @@ bool vtkRadiosityEXRWriter::Render(std::vector<std::string>& names, std::vector<
   std::string error = vtkRadiosityAdapter::FailedUpstream(input) ? "a filter upstream failed (see its error)" : "";
   // A mesh kept prepared (an animation's earlier frame, the solver's output) was copied and
   // checked when it was prepared: each frame's write skips the copy.
-  radiosity::PreparedScene prepared = error.empty() ? vtkRadiosityPreparedScenes::Find(input, false) : radiosity::PreparedScene();
+  const vtkRadiosityPreparedScenes::MeshKey key =
+    error.empty() ? vtkRadiosityPreparedScenes::KeyOf(input) : vtkRadiosityPreparedScenes::MeshKey();
+  radiosity::PreparedScene prepared = error.empty() ? vtkRadiosityPreparedScenes::Find(input, key, false) : radiosity::PreparedScene();
   if (error.empty() && !prepared.Rays)
   {
     vtkRadiosityAdapter::CopyPolygons(input, mesh, error);
@@ -145,7 +147,7 @@ bool vtkRadiosityEXRWriter::Render(std::vector<std::string>& names, std::vector<
     ++this->RaySceneBuilds;
     if ((error = radiosity::PrepareRays(mesh, vtkRadiosityAdapter::Threads(0), prepared)).empty())
     {
-      vtkRadiosityPreparedScenes::Keep(input, prepared);
+      vtkRadiosityPreparedScenes::Keep(input, key, prepared);
     }
   }
   const radiosity::PinholeCamera camera = this->Camera();

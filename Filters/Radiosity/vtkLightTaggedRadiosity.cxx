@@ -99,10 +99,10 @@ namespace
 /// The preparation kept for `input`'s mesh where every rank has one (MarkEnclosed is
 /// collective: the ranks must all prepare or all reuse), else a new one, kept for the next
 /// solve, the relight and the pictures of this mesh.
-std::string PrepareOrReuse(vtkPolyData* input, const radiosity::SceneMesh& mesh, int threads,
+std::string PrepareOrReuse(vtkPolyData* input, const vtkRadiositySolveOutput::SceneInput& scene, int threads,
   const radiosity::ProcessGroup& group, radiosity::PreparedScene& prepared, bool& reused)
 {
-  prepared = vtkRadiosityPreparedScenes::Find(input, true);
+  prepared = vtkRadiosityPreparedScenes::Find(input, scene.Key, true);
   reused = radiosity::AgreeOnFailure(group, prepared.Geometry ? "" : "not kept", "not kept").empty();
   if (reused)
   {
@@ -111,10 +111,10 @@ std::string PrepareOrReuse(vtkPolyData* input, const radiosity::SceneMesh& mesh,
   // Kept here but not on every rank: all prepare again (rays kept here are reused).
   prepared.Geometry.reset();
   prepared.SplitPatches = 0;
-  const std::string error = radiosity::PrepareTransport(mesh, threads, group, prepared);
+  const std::string error = radiosity::PrepareTransport(scene.Mesh, threads, group, prepared);
   if (error.empty())
   {
-    vtkRadiosityPreparedScenes::Keep(input, prepared);
+    vtkRadiosityPreparedScenes::Keep(input, scene.Key, prepared);
   }
   return error;
 }
@@ -283,7 +283,8 @@ int vtkLightTaggedRadiosity::Solve(
   if (error.empty())
   {
     vtkLogScopeF(TRACE, "prepare the scene");
-    error = PrepareOrReuse(input, scene.Mesh, threads, group, prepared, this->LastPreparationReused);
+    scene.Key = vtkRadiosityPreparedScenes::KeyOf(input);
+    error = PrepareOrReuse(input, scene, threads, group, prepared, this->LastPreparationReused);
   }
   const radiosity::RadiositySolver solver(scene.Mesh, prepared);
   if (error.empty() && (error = solver.Error()).empty())
@@ -338,7 +339,7 @@ int vtkLightTaggedRadiosity::WriteResult(vtkPolyData* input, vtkPolyData* output
   }
   // The output shares the input's points and polygons: the relight's moving lights and
   // the EXR writer find the solver's preparation under it, patches in the basis's order.
-  vtkRadiosityPreparedScenes::Keep(output, solver.Prepared());
+  vtkRadiosityPreparedScenes::Keep(output, vtkRadiosityPreparedScenes::WithPatchesOf(scene.Key, output), solver.Prepared());
   vtkNew<vtkFieldData> fields; // fresh: the input's arrays are shared, ours are added on top
   fields->ShallowCopy(input->GetFieldData());
   if (!combined)

@@ -176,11 +176,12 @@ int vtkRadiosityWorkPlane::RequestData(
     const radiosity::WorkPlaneGrid grid =
       error.empty() ? radiosity::LayWorkPlane(bounds, UpOf(this->UpAxis, bounds), this->Height, this->Border, this->Spacing, error)
                     : radiosity::WorkPlaneGrid();
-    radiosity::PreparedScene prepared = vtkRadiosityPreparedScenes::Find(input, true);
+    const vtkRadiosityPreparedScenes::MeshKey key = vtkRadiosityPreparedScenes::KeyOf(input);
+    radiosity::PreparedScene prepared = vtkRadiosityPreparedScenes::Find(input, key, true);
     if (error.empty() && !prepared.Geometry)
     {
       error = radiosity::PrepareTransport(scene.Mesh, vtkRadiosityAdapter::Threads(0), radiosity::ProcessGroup(), prepared);
-      vtkRadiosityPreparedScenes::Keep(input, prepared);
+      vtkRadiosityPreparedScenes::Keep(input, key, prepared);
     }
     if (!error.empty())
     {

@@ -260,14 +260,15 @@ bool vtkRadiosityMovingScene::Rebuild(vtkPolyData* scene, vtkPolyData* dynamic, 
   }
   // The solver's preparation where it is kept (its patches are the basis's), else one
   // made here the same way and kept for the EXR writer.
-  radiosity::PreparedScene prepared = vtkRadiosityPreparedScenes::Find(scene, true);
+  const vtkRadiosityPreparedScenes::MeshKey key = vtkRadiosityPreparedScenes::KeyOf(scene);
+  radiosity::PreparedScene prepared = vtkRadiosityPreparedScenes::Find(scene, key, true);
   state.Reused = prepared.Geometry != nullptr;
   if (!prepared.Geometry &&
     !(error = radiosity::PrepareTransport(state.Scene, vtkRadiosityAdapter::Threads(0), {}, prepared)).empty())
   {
     return false;
   }
-  vtkRadiosityPreparedScenes::Keep(scene, prepared);
+  vtkRadiosityPreparedScenes::Keep(scene, key, prepared);
   vtkRadiosityAdapter::SharedPool()->Within([&] {
     state.Shader.reset(new radiosity::MovingLightShader(
       state.Scene, prepared, state.Dynamic.NumberOfPolygons() > 0 ? &state.Dynamic : nullptr));

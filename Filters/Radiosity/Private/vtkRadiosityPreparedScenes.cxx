@@ -73,32 +73,10 @@ std::uint64_t HashArray(vtkDataArray* array, std::uint64_t h)
   return h;
 }
 
-/// What a preparation was made from, by content: the points, the polygons and the patch
-/// ids hashed. Modification times would miss edits in place (numpy writes, InsertNextCell,
-/// a cell array's own arrays), and hashing the 10 MB of a 217,800-element mesh costs a few
-/// milliseconds against a second of preparation.
-struct Fingerprint
-{
-  std::uint64_t Mesh = 0, Patches = 0;
-
-  static Fingerprint Of(vtkPolyData* data)
-  {
-    Fingerprint f;
-    vtkCellArray* polygons = data->GetPolys();
-    f.Mesh = HashArray(data->GetPoints() ? data->GetPoints()->GetData() : nullptr, 1);
-    f.Mesh = HashArray(polygons ? polygons->GetOffsetsArray() : nullptr, f.Mesh);
-    f.Mesh = HashArray(polygons ? polygons->GetConnectivityArray() : nullptr, f.Mesh);
-    // The points' precision sets what counts as touching (MarkEnclosed), a part of the preparation.
-    f.Mesh = HashArray(data->GetFieldData()->GetArray(vtkRadiosityAdapter::PointQuantumName), f.Mesh);
-    f.Patches = HashArray(data->GetCellData()->GetArray("PatchId"), 2);
-    return f;
-  }
-};
-
 struct Entry
 {
   vtkWeakPointer<vtkPoints> Owner; ///< the points it was kept for: it goes with them
-  Fingerprint From;
+  MeshKey From;
   radiosity::PreparedScene Scene;
 };
 
@@ -120,7 +98,7 @@ Store& Kept()
 /// Drops the entries whose points are gone or are `points` (being deleted), and those kept
 /// for `points` whose mesh is no longer `now` (edited since: they would never match again,
 /// and a new preparation is about to be built beside them).
-void Drop(std::vector<Entry>& entries, vtkObject* points, const Fingerprint* now = nullptr)
+void Drop(std::vector<Entry>& entries, vtkObject* points, const MeshKey* now = nullptr)
 {
   entries.erase(std::remove_if(entries.begin(), entries.end(),
                   [&](const Entry& e) {
@@ -141,9 +119,26 @@ void PointsDeleted(vtkObject* points, unsigned long, void*, void*)
 
 } // namespace
 
-radiosity::PreparedScene Find(vtkPolyData* data, bool transport)
+MeshKey KeyOf(vtkPolyData* data)
 {
-  const Fingerprint now = Fingerprint::Of(data);
+  MeshKey key;
+  vtkCellArray* polygons = data->GetPolys();
+  key.Mesh = HashArray(data->GetPoints() ? data->GetPoints()->GetData() : nullptr, 1);
+  key.Mesh = HashArray(polygons ? polygons->GetOffsetsArray() : nullptr, key.Mesh);
+  key.Mesh = HashArray(polygons ? polygons->GetConnectivityArray() : nullptr, key.Mesh);
+  // The points' precision sets what counts as touching (MarkEnclosed), a part of the preparation.
+  key.Mesh = HashArray(data->GetFieldData()->GetArray(vtkRadiosityAdapter::PointQuantumName), key.Mesh);
+  return WithPatchesOf(key, data);
+}
+
+MeshKey WithPatchesOf(MeshKey key, vtkPolyData* data)
+{
+  key.Patches = HashArray(data->GetCellData()->GetArray("PatchId"), 2);
+  return key;
+}
+
+radiosity::PreparedScene Find(vtkPolyData* data, const MeshKey& now, bool transport)
+{
   Store& store = Kept();
   std::lock_guard<std::mutex> hold(store.Lock);
   Drop(store.Entries, data->GetPoints(), &now);
@@ -169,13 +164,12 @@ radiosity::PreparedScene Find(vtkPolyData* data, bool transport)
   return rays;
 }
 
-void Keep(vtkPolyData* data, const radiosity::PreparedScene& scene)
+void Keep(vtkPolyData* data, const MeshKey& now, const radiosity::PreparedScene& scene)
 {
   if (!data->GetPoints() || !data->GetPolys() || !scene.Rays)
   {
     return;
   }
-  const Fingerprint now = Fingerprint::Of(data);
   Store& store = Kept();
   std::lock_guard<std::mutex> hold(store.Lock);
   Drop(store.Entries, data->GetPoints(), &now);

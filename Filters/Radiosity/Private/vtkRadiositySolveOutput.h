@@ -5,6 +5,7 @@
 #define vtkRadiositySolveOutput_h
 
 #include "vtkRadiosityAdapter.h"
+#include "vtkRadiosityPreparedScenes.h"
 
 #include "Solve/LightSolutions.h"
 #include "Solve/RadiositySolver.h"
@@ -30,6 +31,9 @@ struct SceneInput
   /// The luminaires (field arrays Luminaire*), each a solution after the grouping's.
   std::vector<radiosity::PointLight> PointLights;
   std::vector<std::string> PointLightNames;
+  /// The input mesh's content, hashed once per solve: the preparation is found and kept
+  /// under it, for the input and for the output that shares the input's points.
+  vtkRadiosityPreparedScenes::MeshKey Key;
 };
 
 /// Converts and checks the input, groups its lights (field arrays LightBanks and
