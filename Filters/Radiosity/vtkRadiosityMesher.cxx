@@ -103,6 +103,7 @@ radiosity::MesherOptions OptionsFor(vtkRadiosityMesher* self, const radiosity::S
   options.SharePatches = self->GetSharePatches();
   options.ClusterAngle = self->GetClusterAngle();
   options.LampGrading = self->GetLampGradingInUse();
+  options.ShadowGrading = self->GetShadowGradingInUse();
   // The lamps' bins are sized by the grading's reach (whatever the scene's unit).
   options.ElementSize = self->GetElementSizeInUse() > 0 ? self->GetElementSizeInUse() : options.ElementSize;
   options.WholeScene = whole;
@@ -153,6 +154,16 @@ void vtkRadiosityMesher::ResolveSizes(double suggestedPatch)
 double vtkRadiosityMesher::GetLampGradingInUse() const
 {
   return this->Accuracy >= 0 ? radiosity::AccuracyLevelOf(this->Accuracy).LampGrading : this->LampGrading;
+}
+
+double vtkRadiosityMesher::GetShadowGradingInUse() const
+{
+  return this->Accuracy >= 0 ? radiosity::AccuracyLevelOf(this->Accuracy).ShadowGrading : this->ShadowGrading;
+}
+
+double vtkRadiosityMesher::GetAccuracyShadowGrading(int level)
+{
+  return radiosity::AccuracyLevelOf(level).ShadowGrading;
 }
 
 double vtkRadiosityMesher::GetAccuracyElementScale(int level)
@@ -212,6 +223,7 @@ void vtkRadiosityMesher::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SharePatches: " << this->SharePatches << "\n";
   os << indent << "ClusterAngle: " << this->ClusterAngle << "\n";
   os << indent << "LampGrading: " << this->LampGrading << "\n";
+  os << indent << "ShadowGrading: " << this->ShadowGrading << "\n";
   os << indent << "Accuracy: " << this->Accuracy << (this->Accuracy < 0 ? " (custom)" : "") << "\n";
 }
 

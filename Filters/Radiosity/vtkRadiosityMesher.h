@@ -93,7 +93,7 @@ public:
   /// One setting for what a solve costs and how close it comes: -1 (Custom, the default)
   /// leaves everything to the settings themselves; 0 (Preview) to 4 (Reference) scale
   /// ElementSize (the one given or suggested: 2, 2, 1, 1/2, 1/2 times, at most the patch)
-  /// and set LampGrading here, and stamp the level on the output (field array Accuracy),
+  /// and set LampGrading and ShadowGrading here, and stamp the level on the output (field array Accuracy),
   /// from which the solver takes its GatherRays, ClusterSeparation and GatherSweeps (64 / 2
   /// / 1, 256 / 3 / 1, 256 / 3 / 1, 256 / 3 / 2, 1024 / 4 / 2). Level 2 is the filters'
   /// defaults. What each costs and
@@ -101,9 +101,10 @@ public:
   vtkSetClampMacro(Accuracy, int, -1, 4);
   vtkGetMacro(Accuracy, int);
   /// The level's numbers (relight.levels reads them): element scale, LampGrading,
-  /// GatherRays, ClusterSeparation, GatherSweeps, and its name.
+  /// ShadowGrading, GatherRays, ClusterSeparation, GatherSweeps, and its name.
   static double GetAccuracyElementScale(int level);
   static double GetAccuracyLampGrading(int level);
+  static double GetAccuracyShadowGrading(int level);
   static int GetAccuracyGatherRays(int level);
   static double GetAccuracyClusterSeparation(int level);
   static int GetAccuracyGatherSweeps(int level);
@@ -120,6 +121,18 @@ public:
   /// default 0.2, at most 2.
   vtkSetClampMacro(LampGrading, double, 0.0, 2.0);
   vtkGetMacro(LampGrading, double);
+  ///@}
+
+  ///@{
+  /// Finer elements where a shadow's edge crosses a patch a lamp lights (some of its
+  /// points see the lamp, others do not: a table's shadow on the floor, a door's head on
+  /// the wall under a lamp): elements of ShadowGrading times ElementSize there (down to a
+  /// quarter), graded as LampGrading grades and only with it. 0 (default) turns it off;
+  /// the Fine and Reference accuracy levels use 0.5.
+  vtkSetClampMacro(ShadowGrading, double, 0.0, 1.0);
+  vtkGetMacro(ShadowGrading, double);
+  /// The ShadowGrading this filter meshes with: Accuracy's where a level is chosen.
+  double GetShadowGradingInUse() const;
   ///@}
 
   ///@{
@@ -180,6 +193,7 @@ private:
   bool SharePatches = true;
   double ClusterAngle = 30;
   double LampGrading = 0.2;
+  double ShadowGrading = 0;
   int Accuracy = -1;
   double SuggestedPatchSize = 0.0;
   double SuggestedElementSize = 0.0;

@@ -113,13 +113,14 @@ def setting(text):
 
 
 def solve(scene, patch, element, cluster_angle=30.0, time_budget=0.0, method="Auto", separation=3.0, gather_rays=256,
-          lamp_grading=0.2, gather_sweeps=1, gather_cache=None, settings=()):
+          lamp_grading=0.2, gather_sweeps=1, gather_cache=None, settings=(), shadow_grading=0.0):
     """Mesh + solve at the solver's default settings (Auto picks the clustered method here);
     keeps warnings and errors."""
     mesher = relight.vtkRadiosityMesher()
     mesher.SetInputData(scene)
     mesher.SetPatchSize(patch), mesher.SetElementSize(element), mesher.SetClusterAngle(cluster_angle)
     mesher.SetLampGrading(lamp_grading)
+    mesher.SetShadowGrading(shadow_grading)
     solver = relight.vtkLightTaggedRadiosity()
     solver.SetInputConnection(mesher.GetOutputPort())
     solver.SetTimeBudget(time_budget)
@@ -230,8 +231,10 @@ def main():
     parser.add_argument("--gather-sweeps", type=int, default=1, help="GatherSweeps: the gather's passes over the elements")
     parser.add_argument("--lamp-grading", type=float, default=0.2,
                         help="the mesher's LampGrading: finer elements by the lamps (0: one size everywhere)")
+    parser.add_argument("--shadow-grading", type=float, default=0.0,
+                        help="the mesher's ShadowGrading: finer elements where a shadow's edge crosses a patch (0: off)")
     parser.add_argument("--accuracy", choices=["preview", "draft", "default", "fine", "reference"],
-                        help="the one knob (relight.levels): sets the element size (times --element), LampGrading, "
+                        help="the one knob (relight.levels): sets the element size (times --element), LampGrading, ShadowGrading, "
                              "GatherRays and ClusterSeparation, over their flags")
     parser.add_argument("--set", action="append", default=[], metavar="NAME=VALUE", type=setting,
                         help="any other solver setting, e.g. FormFactorSamples=8 (shadow rays per link); repeatable")
@@ -254,6 +257,7 @@ def main():
         chosen = relight.levels.level(args.accuracy)
         args.element = min(args.element * chosen.element_scale, args.patch)
         args.lamp_grading, args.gather_rays = chosen.lamp_grading, chosen.gather_rays
+        args.shadow_grading = chosen.shadow_grading
         args.cluster_separation, args.gather_sweeps = chosen.cluster_separation, chosen.gather_sweeps
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
@@ -268,7 +272,7 @@ def main():
     scene = add_lamps(house, lamps)
     solver, warnings = solve(scene, args.patch, args.element, args.cluster_angle, args.time_budget, args.method,
                              args.cluster_separation, args.gather_rays, args.lamp_grading, args.gather_sweeps,
-                             args.gather_cache, args.set)
+                             args.gather_cache, args.set, args.shadow_grading)
     result = solver.GetOutput()
     method = result.GetFieldData().GetAbstractArray("SolverMethod").GetValue(0)
     commit = subprocess.run(["git", "describe", "--always", "--dirty"], capture_output=True, text=True).stdout.strip()
@@ -276,7 +280,7 @@ def main():
                elements=result.GetNumberOfCells(),
                patches=len(np.unique(relight.cell_array(result, "PatchId"))), lights=k,
                element=args.element, patch=args.patch, method=args.method, separation=args.cluster_separation,
-               gather_rays=args.gather_rays, gather_sweeps=args.gather_sweeps, gather_cache=args.gather_cache, settings=" ".join(f"{n}={v}" for n, v in args.set), lamp_grading=args.lamp_grading, solve_s=round(solver.GetLastSolveSeconds(), 2),
+               gather_rays=args.gather_rays, gather_sweeps=args.gather_sweeps, gather_cache=args.gather_cache, settings=" ".join(f"{n}={v}" for n, v in args.set), lamp_grading=args.lamp_grading, shadow_grading=args.shadow_grading, solve_s=round(solver.GetLastSolveSeconds(), 2),
                shots=solver.GetLastShots(), converged=bool(solver.GetLastConverged()),
                peak_mib=round(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024),
                warnings=len(warnings))

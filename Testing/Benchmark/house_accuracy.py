@@ -52,15 +52,16 @@ def main():
         r = rows[-1]
         print(f"{level:10s} {int(r['elements']):8,d} elements  solve {float(r['solve_s']):6.1f} s  "
               f"peak {r['peak_mib']} MiB  error {r['mean_error_pct']} %  lit median {r['lit_median_ratio']}", flush=True)
-    keys = ["accuracy", "elements", "element", "lamp_grading", "gather_rays", "separation", "solve_s", "peak_mib",
+    keys = ["accuracy", "elements", "element", "lamp_grading", "shadow_grading", "gather_rays", "separation", "solve_s", "peak_mib",
             "mean_error_pct", "lit_median_ratio", "commit"]
     with (out / "accuracy_house.csv").open("w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=keys, extrasaction="ignore")
         writer.writeheader()
         writer.writerows(rows)
-    lines = ["| level | elements | element (m) | LampGrading | GatherRays | separation | solve (s) | peak (MiB) "
-             "| error vs Mitsuba 3 | lit median |", "|---|---|---|---|---|---|---|---|---|---|"]
-    lines += [f"| {r['accuracy']} | {int(r['elements']):,} | {r['element']} | {r['lamp_grading']} | {r['gather_rays']} "
+    lines = ["| level | elements | element (m) | LampGrading | ShadowGrading | GatherRays | separation | solve (s) "
+             "| peak (MiB) | error vs Mitsuba 3 | lit median |", "|---|---|---|---|---|---|---|---|---|---|---|"]
+    lines += [f"| {r['accuracy']} | {int(r['elements']):,} | {r['element']} | {r['lamp_grading']} "
+              f"| {r['shadow_grading']} | {r['gather_rays']} "
               f"| {r['separation']} | {r['solve_s']} | {r['peak_mib']} | {r['mean_error_pct']} % | {r['lit_median_ratio']} |"
               for r in rows]
     (out / "accuracy_house.md").write_text("\n".join(lines) + "\n")

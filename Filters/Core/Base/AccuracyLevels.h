@@ -12,6 +12,7 @@ struct AccuracyLevel
   const char* Name;
   double ElementScale;      ///< times the element size given or suggested (at most the patch)
   double LampGrading;       ///< MesherOptions::LampGrading
+  double ShadowGrading;     ///< MesherOptions::ShadowGrading
   int GatherRays;           ///< GatherSettings::Rays
   double ClusterSeparation; ///< ClusteredSettings::Separation
   int GatherSweeps;         ///< GatherSettings::Sweeps
@@ -23,11 +24,11 @@ constexpr int kAccuracyLevels = 5;
 inline const AccuracyLevel& AccuracyLevelOf(int level)
 {
   static const AccuracyLevel levels[kAccuracyLevels] = {
-    { "preview", 2.0, 0.3, 64, 2.0, 1 },   // draft's elements, coarser grading, a light gather
-    { "draft", 2.0, 0.2, 256, 3.0, 1 },    // the default's gather on elements twice as large
-    { "default", 1.0, 0.2, 256, 3.0, 1 },  // the filters' defaults
-    { "fine", 0.5, 0.2, 256, 3.0, 2 },     // elements half as large, a second sweep
-    { "reference", 0.5, 0.15, 1024, 4.0, 2 },
+    { "preview", 2.0, 0.3, 0.0, 64, 2.0, 1 },   // draft's elements, coarser grading, a light gather
+    { "draft", 2.0, 0.2, 0.0, 256, 3.0, 1 },    // the default's gather on elements twice as large
+    { "default", 1.0, 0.2, 0.0, 256, 3.0, 1 },  // the filters' defaults
+    { "fine", 0.5, 0.2, 0.5, 256, 3.0, 2 },     // elements half as large, shadows' edges finer, a second sweep
+    { "reference", 0.5, 0.15, 0.5, 1024, 4.0, 2 },
   };
   return levels[level < 0 ? 0 : level >= kAccuracyLevels ? kAccuracyLevels - 1 : level];
 }

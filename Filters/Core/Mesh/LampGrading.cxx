@@ -1,4 +1,5 @@
 #include "Mesh/LampGrading.h"
+#include "Geometry/Visibility.h"
 #include "Geometry/Polygon.h"
 
 #include <algorithm>
@@ -111,6 +112,18 @@ double Apart(const LampSpot& lamp, const Vec3* corners, int count, const Vec3& u
   }
   return apart;
 }
+/// A flat patch's unit normal and the sphere around its corners; false where it has no area.
+bool FrameOf(const Vec3* corners, int count, Vec3& normal, Vec3& centre, double& radius)
+{
+  const Vec3 newell = NewellVector(corners, count);
+  if (!(Norm(newell) > 0))
+  {
+    return false;
+  }
+  normal = Normalized(newell);
+  std::tie(centre, radius) = CornerSphere(corners, count);
+  return true;
+}
 } // namespace
 
 double GradedElementSize(const LampSpots& lamps, const Vec3* corners, int count, double elementSize, double grading)
@@ -119,15 +132,12 @@ double GradedElementSize(const LampSpots& lamps, const Vec3* corners, int count,
   {
     return elementSize;
   }
-  const Vec3 newell = NewellVector(corners, count);
-  if (!(Norm(newell) > 0))
+  Vec3 normal, centre;
+  double radius = 0;
+  if (!FrameOf(corners, count, normal, centre, radius))
   {
     return elementSize;
   }
-  const Vec3 normal = Normalized(newell);
-  Vec3 centre;
-  double radius = 0;
-  std::tie(centre, radius) = CornerSphere(corners, count);
   double size = elementSize;
   lamps.Near(centre, radius, elementSize / grading, [&](const LampSpot& lamp) {
     // Lit only where some corner is in front of the lamp and the lamp is in front of the patch.
@@ -144,6 +154,64 @@ double GradedElementSize(const LampSpots& lamps, const Vec3* corners, int count,
     }
   });
   return std::max(size, elementSize / 4);
+}
+
+namespace
+{
+/// Points of a convex patch to test for a shadow's edge: its centre and, pulled a tenth of
+/// the way in (a corner may touch a wall standing on it), its corners and edge middles;
+/// lifted off its plane.
+std::vector<Vec3> ShadowProbes(const Vec3* corners, int count, const Vec3& centre, const Vec3& normal, double lift)
+{
+  std::vector<Vec3> probes{ centre + normal * lift };
+  for (int k = 0; k < count; ++k)
+  {
+    const Vec3 middle = (corners[k] + corners[(k + 1) % count]) * 0.5;
+    probes.push_back(corners[k] + (centre - corners[k]) * 0.1 + normal * lift);
+    probes.push_back(middle + (centre - middle) * 0.1 + normal * lift);
+  }
+  return probes;
+}
+
+/// Whether some of `probes` see the lamp and others do not (those behind it aside).
+bool EdgeOfShadow(const Visibility& rays, const LampSpot& lamp, const std::vector<Vec3>& probes)
+{
+  const bool oneSided = Dot(lamp.Normal, lamp.Normal) > 0;
+  const Vec3 target = lamp.Centre + lamp.Normal * (1e-3 * std::max(lamp.Radius, 1e-300)); // off its face
+  int open = 0, facing = 0;
+  for (const Vec3& p : probes)
+  {
+    if (!oneSided || Dot(p - lamp.Centre, lamp.Normal) > 0)
+    {
+      ++facing;
+      open += rays.Occluded(p, target) ? 0 : 1;
+    }
+  }
+  return open > 0 && open < facing;
+}
+} // namespace
+
+double ShadowGradedSize(const LampSpots& lamps, const Visibility* rays, const Vec3* corners, int count,
+  double elementSize, double grading, double reach)
+{
+  if (!rays || lamps.empty() || !(grading > 0) || count < 3)
+  {
+    return elementSize;
+  }
+  Vec3 normal, centre;
+  double radius = 0;
+  if (!FrameOf(corners, count, normal, centre, radius))
+  {
+    return elementSize;
+  }
+  const std::vector<Vec3> probes = ShadowProbes(corners, count, centre, normal, 1e-4 * std::max(radius, 1e-300));
+  bool edge = false;
+  lamps.Near(centre, radius, reach, [&](const LampSpot& lamp) {
+    // Within reach only, exactly (the bins hand over a few more), and in front of the patch.
+    edge = edge || (Dot(lamp.Centre - centre, normal) > 0 && Norm(lamp.Centre - centre) <= reach + radius &&
+                     EdgeOfShadow(*rays, lamp, probes));
+  });
+  return edge ? std::max(grading, 0.25) * elementSize : elementSize;
 }
 
 bool MayGrade(const LampSpots& lamps, const std::vector<Vec3>& loop, double elementSize, double grading)

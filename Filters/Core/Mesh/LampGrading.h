@@ -63,6 +63,17 @@ LampSpots FindLampSpots(const std::vector<Vec3>& points, const std::vector<int>&
 /// facing away, keeps the size.
 double GradedElementSize(const LampSpots& lamps, const Vec3* corners, int count, double elementSize, double grading);
 
+class Visibility;
+
+/// The element size wanted over a convex patch where a shadow's edge may cross it: where
+/// some of its points see a lamp within `reach` and others do not (`rays`, the scene's
+/// polygons), `grading` times `elementSize` (never below a quarter of it); else
+/// `elementSize`. Across such an edge direct light changes on the scale of its penumbra,
+/// which a furniture leg or a door's head makes a few centimetres wide, and the points of
+/// coarser elements smear it over their width.
+double ShadowGradedSize(const LampSpots& lamps, const Visibility* rays, const Vec3* corners, int count,
+  double elementSize, double grading, double reach);
+
 /// Whether any patch of the polygon `loop` may be graded: a lamp within the reach of the
 /// grading (`elementSize / grading`) of its bounding sphere. Cheap, and never wrong when false.
 bool MayGrade(const LampSpots& lamps, const std::vector<Vec3>& loop, double elementSize, double grading);

@@ -1,4 +1,5 @@
 #include "Mesh/Mesher.h"
+#include "Geometry/Visibility.h"
 #include "Mesh/AreaGrid.h"
 #include "Mesh/ConvexPieces.h"
 #include "Mesh/CoincidentCopies.h"
@@ -21,6 +22,10 @@
 
 namespace radiosity
 {
+
+/// How far, in LampGrading's reach (ElementSize / LampGrading), a lamp's shadows grade
+/// the patches (MesherOptions::ShadowGrading): the rooms it lights.
+constexpr double kShadowReach = 6.0;
 
 namespace
 {
@@ -60,7 +65,9 @@ int SplitQuad(const Vec3* q, const MesherOptions& o, double noise, const Emit& e
       const double s0 = static_cast<double>(i) / pu, s1 = (i + 1.0) / pu, t0 = static_cast<double>(j) / pv,
                    t1 = (j + 1.0) / pv;
       const Vec3 patch[4] = { at(s0, t0), at(s1, t0), at(s1, t1), at(s0, t1) };
-      const double size = GradedElementSize(o.GradingLamps, patch, 4, o.ElementSize, o.LampGrading);
+      const double size = std::min(GradedElementSize(o.GradingLamps, patch, 4, o.ElementSize, o.LampGrading),
+        ShadowGradedSize(o.GradingLamps, o.ShadowRays.get(), patch, 4, o.ElementSize, o.ShadowGrading,
+          kShadowReach * o.ElementSize / o.LampGrading));
       eu[i] = std::max(eu[i], Divisions(lu / pu, size, noise / pu));
       ev[j] = std::max(ev[j], Divisions(lv / pv, size, noise / pv));
     }
@@ -105,7 +112,9 @@ int SplitTriangle(const Vec3& a, const Vec3& b, const Vec3& c, const MesherOptio
   const double longest = std::max({ Norm(b - a), Norm(c - b), Norm(a - c) });
   const int np = TrianglePatchDivisions(a, b, c, longest, o.PatchSize, noise);
   const Vec3 corners[3] = { a, b, c };
-  const double size = GradedElementSize(o.GradingLamps, corners, 3, o.ElementSize, o.LampGrading);
+  const double size = std::min(GradedElementSize(o.GradingLamps, corners, 3, o.ElementSize, o.LampGrading),
+    ShadowGradedSize(o.GradingLamps, o.ShadowRays.get(), corners, 3, o.ElementSize, o.ShadowGrading,
+      kShadowReach * o.ElementSize / o.LampGrading));
   const int ne = Divisions(longest / np, size, noise / np);
   const int n = np * ne;
   auto at = [&](int i, int j) {
@@ -265,6 +274,24 @@ LampSpots GradingLampsFor(const std::vector<Vec3>& points, const std::vector<int
     : FindLampSpots(points, offsets, connectivity, options.Lamps, reach, options.PointLamps);
 }
 
+/// The scene's polygons for the grading's shadow test (none without LampGrading): the
+/// whole scene's where the polygons are one process's piece of it.
+std::shared_ptr<const Visibility> ShadowRaysFor(const std::vector<Vec3>& points, const std::vector<int>& offsets,
+  const std::vector<int>& connectivity, const MesherOptions& options)
+{
+  if (!(options.LampGrading > 0) || !(options.ShadowGrading > 0))
+  {
+    return nullptr;
+  }
+  SceneMesh scene;
+  const bool whole = options.WholeScene != nullptr;
+  scene.Points = whole ? options.WholeScene->Points : points;
+  scene.Offsets = whole ? options.WholeScene->Offsets : offsets;
+  scene.Connectivity = whole ? options.WholeScene->Connectivity : connectivity;
+  auto rays = std::make_shared<const Visibility>(scene);
+  return rays->Error().empty() ? rays : nullptr;
+}
+
 /// Surfaces closer than this stand on each other (relative, so units do not matter; and
 /// never finer than float input can place them: 10 km from the origin, a millimetre).
 double ContactTolerance(double span, double pointQuantum)
@@ -404,8 +431,11 @@ double CountWithContacts(const PolygonArrays& polygons, double patchSize, double
   sizes.ElementSize = elementSize;
   sizes.LampGrading = grading.LampGrading;
   sizes.GradingLamps = grading.GradingLamps;
+  sizes.ShadowRays = grading.ShadowRays;
+  sizes.ShadowGrading = grading.ShadowGrading;
   MesherOptions plainSizes = sizes;
   plainSizes.GradingLamps.clear();
+  plainSizes.ShadowRays.reset();
   std::vector<std::vector<Vec3>> parts;
   for (size_t i = 0; i + 1 < polygons.Offsets.size(); ++i)
   {
@@ -416,7 +446,8 @@ double CountWithContacts(const PolygonArrays& polygons, double patchSize, double
     }
     const double plain = CountPlain(loop, patchSize, elementSize, noise);
     const bool graded =
-      !IsLampPolygon(source, grading.Lamps, i) && MayGrade(sizes.GradingLamps, loop, elementSize, sizes.LampGrading);
+      !IsLampPolygon(source, grading.Lamps, i) && MayGrade(sizes.GradingLamps, loop, elementSize,
+        sizes.ShadowRays ? sizes.LampGrading / kShadowReach : sizes.LampGrading); // shadows reach farther
     if ((contacts.Segments[i].empty() && !graded) || !(plain <= kMostElementsCutToCount))
     {
       total += graded ? 16 * plain : plain; // too large to make: at most a quarter of the size
@@ -681,6 +712,8 @@ ElementCounter::ElementCounter(const std::vector<Vec3>& points, const std::vecto
   Impl->Grading.LampGrading = options.LampGrading;
   Impl->Grading.Lamps = options.Lamps;
   Impl->Grading.GradingLamps = GradingLampsFor(points, offsets, connectivity, options);
+  Impl->Grading.ShadowGrading = options.ShadowGrading;
+  Impl->Grading.ShadowRays = ShadowRaysFor(points, offsets, connectivity, options);
 }
 
 ElementCounter::~ElementCounter() = default;
@@ -945,6 +978,7 @@ std::string MeshPolygons(const std::vector<Vec3>& points, const std::vector<int>
   const Contacts contacts = FindSceneContacts(paired, options.WholeScene, options.PointQuantum);
   MesherOptions sized = options;
   sized.GradingLamps = GradingLampsFor(points, offsets, connectivity, options);
+  sized.ShadowRays = ShadowRaysFor(points, offsets, connectivity, options);
   sized.ElementSize = ChooseElementSize(paired, polygons.Source, contacts, sized);
   std::map<int, std::vector<Vec3>> outlines; // of the cells the overlaps cut
   const int first = options.WholeScene && options.WholeSurfaces ? options.WholeSurfaces->FirstPolygon : 0;

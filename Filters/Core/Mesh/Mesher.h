@@ -52,12 +52,19 @@ struct MesherOptions
   /// triangles their whole lattice; lamps, and convex polygons of many corners meshed by
   /// area (AreaGrid.h), are not graded.
   double LampGrading = 0;
+  /// Where a shadow's edge crosses a patch a lamp lights (some of its points see the lamp,
+  /// others do not), its elements are ShadowGrading times ElementSize (down to a quarter);
+  /// 0: never. Graded as LampGrading grades (whole rows and columns of a quad's grid), by
+  /// the lamps within six times LampGrading's reach; only with LampGrading.
+  double ShadowGrading = 0;
   /// Lamps at points (the scene's luminaires): graded by as the lamp polygons are, each
   /// with the normal of the side it lights (zero where it lights every side).
   std::vector<LampSpot> PointLamps;
   /// The lamps the grading looks at: filled by MeshPolygons from Lamps and PointLamps (the
   /// whole scene's with WholeSurfaces).
   LampSpots GradingLamps;
+  /// The scene's polygons for ShadowGrading's test: filled by MeshPolygons.
+  std::shared_ptr<const Visibility> ShadowRays;
   std::function<bool(double)> Progress; ///< return false to abort
   /// Told, before meshing, when the budget changed the element size or the mesh is huge.
   std::function<void(const std::string&)> Warning;

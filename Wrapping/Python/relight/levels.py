@@ -3,7 +3,8 @@ Accuracy, which the solver follows).
 
 Each level sets the settings that decide what a solve costs and how close it comes: the
 element size (a multiple of the size given or suggested for the scene), the mesher's
-LampGrading (finer elements by the lamps), the final gather's GatherRays and GatherSweeps
+LampGrading (finer elements by the lamps) and ShadowGrading (finer where a shadow's edge
+crosses a patch), the final gather's GatherRays and GatherSweeps
 and the clustered method's ClusterSeparation. "default" is the filters' own defaults (TestAccuracyLevels holds
 them to it). What each level measured on the FZK-Haus and the rooms, error against time:
 ``./relight bench accuracy house`` and docs/benchmarks.md.
@@ -13,11 +14,12 @@ from collections import namedtuple
 
 from .vtkRadiosityFilters import vtkRadiosityMesher
 
-Level = namedtuple("Level", "element_scale lamp_grading gather_rays cluster_separation gather_sweeps")
+Level = namedtuple("Level", "element_scale lamp_grading shadow_grading gather_rays cluster_separation gather_sweeps")
 
 # The table is the C++ one (Base/AccuracyLevels.h), which the mesher's Accuracy uses too.
 LEVELS = {vtkRadiosityMesher.GetAccuracyName(i): Level(vtkRadiosityMesher.GetAccuracyElementScale(i),
                                                        vtkRadiosityMesher.GetAccuracyLampGrading(i),
+                                                       vtkRadiosityMesher.GetAccuracyShadowGrading(i),
                                                        vtkRadiosityMesher.GetAccuracyGatherRays(i),
                                                        vtkRadiosityMesher.GetAccuracyClusterSeparation(i),
                                                        vtkRadiosityMesher.GetAccuracyGatherSweeps(i))

@@ -136,7 +136,8 @@ def solve(scene, patch_size=None, element_size=None, lamp_grading=None, accuracy
     (finer elements by the lamps; None: its default, 0: one size everywhere).
     `accuracy` is the one knob: "preview", "draft", "default", "fine" or "reference"
     (relight.levels) scales the element size given or suggested (up to the patch size) and
-    sets LampGrading, GatherRays, GatherSweeps and ClusterSeparation, unless given here too.
+    sets LampGrading, ShadowGrading, GatherRays, GatherSweeps and ClusterSeparation (those
+    of them given here too stay as given).
     `solver_settings` are vtkLightTaggedRadiosity properties, e.g. MaximumShots=500.
     Raises RuntimeError with the filters' message if meshing or solving fails; their
     warnings (a lamp drawn in a surface, an early stop) come as Python RuntimeWarnings.
@@ -160,6 +161,8 @@ def solve(scene, patch_size=None, element_size=None, lamp_grading=None, accuracy
     mesher.SetElementSize(min(element * chosen.element_scale, mesher.GetPatchSize()) if chosen else element)
     if lamp_grading is not None or chosen:
         mesher.SetLampGrading(lamp_grading if lamp_grading is not None else chosen.lamp_grading)
+    if chosen:
+        mesher.SetShadowGrading(chosen.shadow_grading)
     if chosen:
         solver_settings = {"GatherRays": chosen.gather_rays, "ClusterSeparation": chosen.cluster_separation,
                            "GatherSweeps": chosen.gather_sweeps, **solver_settings}

@@ -224,3 +224,54 @@ TEST(LampGrading, ALuminaireGradesWhatItLightsAsALampPolygonDoes)
   ASSERT_EQ(MeshPolygons(scene.Points, offsets, connectivity, { 0, 1, 2 }, o, none), "");
   EXPECT_EQ(ElementsOf(none, 0), 256);
 }
+
+TEST(LampGrading, AShadowsEdgeGradesThePatchesItCrosses)
+{
+  // A 4 x 4 floor, a 0.2 m lamp 2 m over (1, 1) facing down, and a 0.5 m table top 0.5 m
+  // over the floor at x, z in [2.4, 2.9]: its shadow falls on [2.87, 3.53] in both, across
+  // the floor patches of x and z in [2, 4]. The lamp is too far to grade the floor by its
+  // distance (0.35 * 2 m is more than the element size): only the shadow's edge does.
+  const std::vector<Vec3> points = { { 0, 0, 0 }, { 0, 0, 4 }, { 4, 0, 4 }, { 4, 0, 0 }, // floor
+    { 0.9, 2, 0.9 }, { 1.1, 2, 0.9 }, { 1.1, 2, 1.1 }, { 0.9, 2, 1.1 },                   // lamp
+    { 2.4, 0.5, 2.4 }, { 2.4, 0.5, 2.9 }, { 2.9, 0.5, 2.9 }, { 2.9, 0.5, 2.4 } };         // table top
+  const std::vector<int> offsets = { 0, 4, 8, 12 }, connectivity = { 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11 };
+  MesherOptions o;
+  o.PatchSize = 1;
+  o.ElementSize = 0.25;
+  o.Lamps = { 0, 1, 0 };
+  o.LampGrading = 0.35;
+  o.ShadowGrading = 0.5;
+  MeshedPolygons shadowed, plain, unshadowed;
+  ASSERT_EQ(MeshPolygons(points, offsets, connectivity, { 0, 1, 2 }, o, shadowed), "");
+  // On the shadow's edge, and over the patches it crosses: half the element size.
+  EXPECT_NEAR(EdgeNear(shadowed, 0, { 2.9, 0, 3.2 }), 0.125, 1e-9);
+  EXPECT_NEAR(EdgeNear(shadowed, 0, { 3.9, 0, 3.9 }), 0.125, 1e-9);
+  // Far from it, and in the lit patches' own rows and columns, the element size.
+  EXPECT_NEAR(EdgeNear(shadowed, 0, { 0.1, 0, 0.1 }), 0.25, 1e-9);
+  EXPECT_NEAR(EdgeNear(shadowed, 0, { 1.5, 0, 1.5 }), 0.25, 1e-9);
+  // The table top sees the lamp from every point: not graded.
+  EXPECT_EQ(ElementsOf(shadowed, 2), 4);
+  // The counter counts it; without ShadowGrading, or without LampGrading, none.
+  const ElementCounter count(points, offsets, connectivity, { 0, 1, 2 }, o);
+  EXPECT_EQ(count(o.PatchSize, o.ElementSize), static_cast<double>(shadowed.SourcePolygon.size()));
+  // Two of four patch columns and rows at half the size: (4 + 4 + 8 + 8) lines each way.
+  EXPECT_EQ(ElementsOf(shadowed, 0), 24 * 24);
+  // The same in millimetres far from the origin.
+  std::vector<Vec3> far = points;
+  for (Vec3& p : far)
+  {
+    p = p * 1000.0 + Vec3{ 5e4, -2e3, 7e4 };
+  }
+  MesherOptions mm = o;
+  mm.PatchSize *= 1000, mm.ElementSize *= 1000;
+  MeshedPolygons millimetres;
+  ASSERT_EQ(MeshPolygons(far, offsets, connectivity, { 0, 1, 2 }, mm, millimetres), "");
+  EXPECT_EQ(millimetres.SourcePolygon, shadowed.SourcePolygon);
+  o.ShadowGrading = 0;
+  ASSERT_EQ(MeshPolygons(points, offsets, connectivity, { 0, 1, 2 }, o, unshadowed), "");
+  EXPECT_EQ(ElementsOf(unshadowed, 0), 256);
+  o.ShadowGrading = 0.5;
+  o.LampGrading = 0;
+  ASSERT_EQ(MeshPolygons(points, offsets, connectivity, { 0, 1, 2 }, o, plain), "");
+  EXPECT_EQ(ElementsOf(plain, 0), 256);
+}

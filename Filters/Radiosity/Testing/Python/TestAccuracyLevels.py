@@ -18,9 +18,10 @@ from vtkmodules.vtkFiltersCore import vtkProbeFilter
 # --- the default level is the filters' defaults --------------------------------------------
 default = levels.LEVELS["default"]
 mesher, solver = relight.vtkRadiosityMesher(), relight.vtkLightTaggedRadiosity()
-check(default == levels.Level(1.0, mesher.GetLampGrading(), solver.GetGatherRays(), solver.GetClusterSeparation(),
-                              solver.GetGatherSweeps()),
-      f"level 'default' {default} is the filters' LampGrading {mesher.GetLampGrading()}, GatherRays "
+check(default == levels.Level(1.0, mesher.GetLampGrading(), mesher.GetShadowGrading(), solver.GetGatherRays(),
+                              solver.GetClusterSeparation(), solver.GetGatherSweeps()),
+      f"level 'default' {default} is the filters' LampGrading {mesher.GetLampGrading()}, ShadowGrading "
+      f"{mesher.GetShadowGrading()}, GatherRays "
       f"{solver.GetGatherRays()}, ClusterSeparation {solver.GetClusterSeparation()}, GatherSweeps "
       f"{solver.GetGatherSweeps()}")
 try:
@@ -74,11 +75,12 @@ for name in ("preview", "draft", "default", "fine"):
     errors[name] = probe_error(solved.GetOutput())
 chosen = levels.LEVELS["fine"]
 mesher = runs["fine"].GetInputAlgorithm()
-check((mesher.GetElementSize(), mesher.GetLampGrading(), runs["fine"].GetGatherRays(),
+check((mesher.GetElementSize(), mesher.GetLampGrading(), mesher.GetShadowGrading(), runs["fine"].GetGatherRays(),
        runs["fine"].GetClusterSeparation(), runs["fine"].GetGatherSweeps()) ==
-      (0.25 * chosen.element_scale, chosen.lamp_grading, chosen.gather_rays, chosen.cluster_separation,
-       chosen.gather_sweeps),
-      "accuracy='fine' sets the element size, LampGrading, GatherRays, ClusterSeparation and GatherSweeps")
+      (0.25 * chosen.element_scale, chosen.lamp_grading, chosen.shadow_grading, chosen.gather_rays,
+       chosen.cluster_separation, chosen.gather_sweeps) and chosen.shadow_grading > 0,
+      "accuracy='fine' sets the element size, LampGrading, ShadowGrading, GatherRays, ClusterSeparation and "
+      "GatherSweeps")
 given = relight.solve(scene, 1.0, 0.25, accuracy="fine", lamp_grading=0, GatherRays=16)
 check(given.GetInputAlgorithm().GetLampGrading() == 0 and given.GetGatherRays() == 16,
       "settings given beside the level win over it")
@@ -113,7 +115,7 @@ mesher, solver = pipeline(3)
 out = solver.GetOutput()
 stamp = out.GetFieldData().GetArray("Accuracy")
 check(mesher.GetElementSizeInUse() == 0.125 and mesher.GetLampGradingInUse() == chosen.lamp_grading and
-      stamp is not None and stamp.GetValue(0) == 3,
+      mesher.GetShadowGradingInUse() == chosen.shadow_grading and stamp is not None and stamp.GetValue(0) == 3,
       f"Accuracy Fine on the mesher: elements {mesher.GetElementSizeInUse()}, LampGrading "
       f"{mesher.GetLampGradingInUse()}, stamped {stamp.GetValue(0) if stamp else None}")
 check(out.GetNumberOfCells() == runs["fine"].GetOutput().GetNumberOfCells() and
