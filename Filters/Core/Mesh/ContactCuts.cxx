@@ -110,8 +110,8 @@ double Extent(const Bounds& box)
 /// Polygons by the grid cells their bounds cover: candidates near an edge. Those larger than
 /// a fine cell sit in a uniform grid over the scene (at most 64 cells a side); the many small
 /// ones of a tessellated model in a sparse grid of cells about their size. In the uniform
-/// grid alone, a 660k-triangle sphere in a room put about 800 triangles in every cell an edge
-/// looked through, and finding contacts took 190 s of a 310 s mesh.
+/// grid alone, a tessellated model's cells held hundreds of triangles each, and finding
+/// contacts took most of its meshing (docs/benchmarks.md, "Meshing real scenes").
 class PolygonGrid
 {
 public:

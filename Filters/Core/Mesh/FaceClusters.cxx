@@ -111,9 +111,9 @@ std::vector<std::vector<int>> Neighbours(const MeshedPolygons& mesh, const Polyg
 }
 /// How far a face cluster reaches from its first patch's centre, in PatchSize. A curved
 /// cluster shoots one value from surfaces turned up to ClusterAngle apart, so it is kept
-/// smaller than a flat patch: at 0.3 (0.6 PatchSize across) instead of 0.5, the sphere room
-/// of `bench polygons` (patch 0.5 m, 8 lamps) came 2.15 -> 1.83 % from Mitsuba 3 at 200k
-/// triangles in the same time (10.5 s), 2.20 -> 2.07 % at 1M (42.9 -> 40.8 s under Auto); 0.2 gained no more.
+/// smaller than a flat patch: 0.3 (0.6 PatchSize across) came closer to Mitsuba 3 than 0.5
+/// on the sphere rooms of `bench polygons` in the same time, and 0.2 gained no more
+/// (docs/benchmarks.md, "Curved models").
 constexpr double kClusterReach = 0.3;
 } // namespace
 

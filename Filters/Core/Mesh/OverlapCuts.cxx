@@ -456,8 +456,8 @@ std::vector<std::vector<Loop>> CutFaces(const std::vector<Face>& faces, const st
         const bool meant = !faces[j].Lamp && faces[j].LyingOn > faces[i].LyingOn;
         (meant ? onTop : differing).emplace_back(faces[j].Index, faces[i].Index);
       }
-      // A piece whose box stays clear of j's is kept whole (a floor after many decals of
-      // another material was cut quadratically: 1,600 in 1.0 s, now 0.1 s); a nearer one
+      // A piece whose box stays clear of j's is kept whole (a floor under many decals of
+      // another material was cut quadratically otherwise); a nearer one
       // is split along all of j's edges, also where clear of it: deciding by the overlap
       // itself let float noise decide a sliver's fate (TestInvariance).
       std::vector<Loop> left;

@@ -83,8 +83,8 @@ private:
   /// A node whose surfaces face apart (both sides of a wall, a box's faces) splits into
   /// the elements facing one way and those facing the other, where each side then faces
   /// within a right angle of its mean: volume clusters mixing both sides of a wall see
-  /// each other's rooms and must be linked from farther (FZK-Haus against Mitsuba 3: 13.8 %
-  /// mean error instead of 17.3 %, 18 M far links instead of 22 M). `mean`: the node's unit
+  /// each other's rooms and must be linked from farther (fewer links and less error on the
+  /// FZK-Haus, docs/benchmarks.md). `mean`: the node's unit
   /// mean normal. Returns false, leaving the order, where it does not split; else `left` is
   /// the first side's size.
   bool SplitByFacing(int first, int count, const Vec3& mean, int& left);

@@ -479,8 +479,8 @@ GatheredPoints GatherAtPoints(const SceneMesh& mesh, const SceneGeometry& geomet
     return out;
   }
   // (A sweep's small elements once took their corners' mean of it, and saved the sweep's
-  // shadow rays: 15 % of the solve at 341,616 elements; but a shadow ray grazing an edge then
-  // decided a cell's value too, and the cells lost their scale invariance, TestHardCases.)
+  // shadow rays; but a shadow ray grazing an edge then decided a cell's value too, and the
+  // cells lost their scale invariance, TestHardCases; docs/benchmarks.md has the cost.)
   const std::vector<PointFrame> elementFrames = ElementFrames(mesh, geometry);
   for (int sweep = 0; sweep < sweeps; ++sweep)
   {

@@ -60,8 +60,8 @@ bool AnyPositive(const Vec3* values, int count);
 /// Points at one place (equal coordinates) on one smooth surface of one material: the
 /// corners a curved model's triangles each hold of their own (the CGAL bunny: 237,203
 /// points for 89,163 elements). Each maps to the first of them whose elements' normals
-/// agree with its own within 30 degrees, and that one is gathered for all (bunny: its solve
-/// 26.7 s -> 19.9 s); a crease or another material keeps its own. -1 for points no polygon
+/// agree with its own within 30 degrees, and that one is gathered for all (a quarter of the
+/// bunny's solve, docs/benchmarks.md); a crease or another material keeps its own. -1 for points no polygon
 /// uses.
 std::vector<int> Representatives(const SceneMesh& mesh, const SceneGeometry& g);
 

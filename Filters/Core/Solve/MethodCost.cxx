@@ -173,13 +173,11 @@ double HierarchicalSeconds(double elements, double patches)
   return 100e-9 * elements * patches * std::pow(16.0 / std::max(16.0, perPatch), 0.3);
 }
 
-/// Fitted (2026-12-03) on five clustered solves of this machine, 62k to 149k elements
-/// with 9 to 1,300 estimated near pairs per element: the FZK-Haus at element 0.25 and 0.5 m
-/// (36.5 s, 19.5 s), the 2CylinderEngine in a room (88.4 s), the 100k-triangle sphere room
-/// (6.8 s), the furnished room of 102k elements (about 9.5 s); the estimates fall within
-/// 0.9-1.5x of them (house 32.7 s, engine 102 s). By elements alone the model before was
-/// 3-5x low on the house and the engine. Above 100k elements the node sums no longer stay
-/// in the caches (the 1M-triangle sphere room: 139 s at 512k elements).
+/// Fitted on five clustered solves, 62k to 149k elements with 9 to 1,300 estimated near
+/// pairs per element (the FZK-Haus, the 2CylinderEngine in a room, the sphere and furnished
+/// rooms; the solves and the fit's errors are in docs/benchmarks.md): the near pairs, not
+/// the elements alone, set the time. Above 100k elements the node sums no longer stay in
+/// the caches, which the last factor allows for.
 double ClusteredSeconds(double elements, double nearPairs)
 {
   const double caches = std::pow(std::max(1.0, elements / 1e5), 0.25);
