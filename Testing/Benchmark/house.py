@@ -169,16 +169,17 @@ def stronger_reference(scene, csv, python, spp, result, cells, names, average):
     """A second Mitsuba render of the same probes (another seed, `spp` paths): how far the two
     are apart, the noise that implies, and our error against their path-weighted mean."""
     import combine_references, house_reference
+    first, total = house_reference.PATHS, house_reference.PATHS + spp
     second = csv.with_name(csv.stem + f"_seed1_{spp}.csv")
     house_reference.render(scene, second, python, spp=spp, seed=1)
-    combined = csv.with_name(csv.stem + f"_combined_{8192 + spp}.csv")
-    noise = combine_references.combine(csv, 8192, second, spp, combined)
-    print(f"the two Mitsuba renders (8192 and {spp} paths) {100 * noise['apart']:.2f} % apart: noise about "
+    combined = csv.with_name(csv.stem + f"_combined_{total}.csv")
+    noise = combine_references.combine(csv, first, second, spp, combined)
+    print(f"the two Mitsuba renders ({first} and {spp} paths) {100 * noise['apart']:.2f} % apart: noise about "
           f"{100 * noise['noise_a']:.2f} % and {100 * noise['noise_b']:.2f} %, their mean {100 * noise['noise_mean']:.2f} %")
     errors, median, _ = house_reference.compare(result, cells, combined, names, average > 0)
-    print(f"error against their mean ({8192 + spp} paths): " + ", ".join(f"{n} {100 * e:.1f} %" for n, e in errors.items()))
+    print(f"error against their mean ({total} paths): " + ", ".join(f"{n} {100 * e:.1f} %" for n, e in errors.items()))
     return dict(strong_error_pct=round(100 * float(np.mean(list(errors.values()))), 2),
-                strong_lit_median_ratio=round(median, 3), strong_reference_paths=8192 + spp,
+                strong_lit_median_ratio=round(median, 3), strong_reference_paths=total,
                 strong_reference_noise_pct=round(100 * noise["noise_mean"], 2),
                 reference_noise_pct=round(100 * noise["noise_a"], 2))
 

@@ -136,7 +136,10 @@ def export(mesh, path, probes=600, seed=7, average=0, traced=False):
     return [(int(c), np.asarray(x, float)) for x, c in zip(spots, pick)]
 
 
-def render(scene_path, csv_path, python, spp=8192, script="mitsuba_reference.py", seed=0):
+PATHS = 8192  # Mitsuba's paths per probe and light in the first reference
+
+
+def render(scene_path, csv_path, python, spp=PATHS, script="mitsuba_reference.py", seed=0):
     """A reference's radiosity at the probes (Mitsuba's, or with `script`
     radiance_reference.py Radiance's), rendered once per scene, sample count, seed and version
     of the script (a digest of them beside the csv says what it was made from)."""
