@@ -3,7 +3,7 @@ glTF with one vertex attribute per light, for relighting outside VTK."""
 
 import warnings
 
-from .scene import ErrorCatcher, own_words
+from .errors import ErrorCatcher, own_words
 from .vtkRadiosityIO import vtkRadiosityGLTFWriter
 
 

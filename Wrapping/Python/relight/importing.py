@@ -5,7 +5,7 @@ luminaires and rooms) into a scene ready for the mesher."""
 import os
 import warnings
 
-from .scene import ErrorCatcher
+from .errors import ErrorCatcher
 from .vtkRadiosityIO import vtkRadiositySceneReader
 
 UNITS = {"m": 1.0, "cm": 0.01, "mm": 0.001, "km": 1000.0, "in": 0.0254, "ft": 0.3048}
@@ -82,7 +82,7 @@ def _import_ifc(path, require_lights):
     from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkIntArray, vtkStringArray
 
     from . import ifc as ifc_files
-    from .scene import make_scene
+    from .scenes import make_scene
     from .staging import mark_lights
 
     polygons, reflectance, materials, lights, rooms = ifc_files.read(str(path))

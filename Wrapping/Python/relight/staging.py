@@ -13,7 +13,7 @@ from collections import namedtuple
 
 from vtkmodules.vtkCommonDataModel import vtkDataSet
 
-from .scene import ErrorCatcher, _numbers, own_words
+from .errors import ErrorCatcher, _numbers, own_words
 from .vtkRadiosityFilters import vtkRadiosityLightMarker
 
 AreaLight = namedtuple("AreaLight", "name centre normal width height color disk")
@@ -333,3 +333,41 @@ def _same_arrays(source, target, reflectance, count=None, materials=0):
             for t, rgb in enumerate(reflectance):
                 array.SetTuple(t, rgb)
         target.AddArray(array)
+
+
+def point_lights(positions, intensity=1.0, color=(1, 1, 1), normal=None, like=None):
+    """Moving lights for vtkRadiosityRelight's second input: one point per light with the
+    point arrays Color, Intensity and (for small Lambertian emitters) Normal. With `like`
+    (a relight.luminaire), every light is that luminaire at its position: the string point
+    arrays Kind and Parameters, and Aim and Rotation, carry its kind, its photometric file
+    and lumens, and its turn."""
+    from vtkmodules.vtkCommonCore import vtkFloatArray, vtkPoints, vtkStringArray
+    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+
+    data, points, verts = vtkPolyData(), vtkPoints(), vtkCellArray()
+    arrays = {"Color": 3, "Intensity": 1, **({"Normal": 3} if normal is not None else {}),
+              **({"Aim": 3, "Rotation": 1} if like is not None else {})}
+    made = {}
+    for name, components in arrays.items():
+        made[name] = vtkFloatArray()
+        made[name].SetName(name)
+        made[name].SetNumberOfComponents(components)
+    texts = {name: vtkStringArray() for name in (("Kind", "Parameters") if like is not None else ())}
+    for name, array in texts.items():
+        array.SetName(name)
+    for p in positions:
+        verts.InsertNextCell(1, [points.InsertNextPoint(*p)])
+        made["Color"].InsertNextTuple3(*color)
+        made["Intensity"].InsertNextValue(intensity)
+        if normal is not None:
+            made["Normal"].InsertNextTuple3(*normal)
+        if like is not None:
+            made["Aim"].InsertNextTuple3(*like.aim)
+            made["Rotation"].InsertNextValue(like.rotation)
+            texts["Kind"].InsertNextValue(like.kind)
+            texts["Parameters"].InsertNextValue(like.parameters)
+    data.SetPoints(points)
+    data.SetVerts(verts)
+    for array in list(made.values()) + list(texts.values()):
+        data.GetPointData().AddArray(array)
+    return data

@@ -2,7 +2,7 @@
 calculation grid at a height over the floor (or in a room of an IFC file) and gathers the
 illuminance per light at its points, ``write_work_plane_csv`` writes it as a table."""
 
-from .scene import ErrorCatcher, _numbers
+from .errors import ErrorCatcher, _numbers
 from .staging import AXES
 from .vtkRadiosityFilters import vtkRadiosityWorkPlane
 

@@ -9,7 +9,7 @@ import argparse
 import pathlib
 import time
 
-from . import (
+from relight import (
     FrameRenderer,
     light_names,
     read_polydata,

@@ -12,11 +12,15 @@ import time
 
 import numpy as np
 
-from .importing import import_scene
-from .scene import light_names, point_array, render_png, solve, write_exr
-from .vtkRadiosityFilters import (
+from relight import (
+    import_scene,
+    light_names,
+    point_array,
+    render_png,
+    solve,
     vtkRadiosityLightMarker,
     vtkRadiosityRelight,
+    write_exr,
 )
 
 IFC = "/usr/share/assimp/models/IFC/AC14-FZK-Haus.ifc"

@@ -1,4 +1,4 @@
-"""What accuracy costs in time: ``./relight bench accuracy``.
+"""What accuracy costs in time on rooms: ``./relight bench accuracy``.
 
 Sweeps element size, form-factor method and samples, and the convergence threshold on
 (a) a scene with a closed-form answer (the furnace: a closed box, every face emitting,
@@ -18,14 +18,14 @@ that over the pixels that see a surface, "max" is its largest value (shadow edge
 import argparse
 import csv
 import pathlib
+import sys
 import time
 
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkFloatArray, vtkLogger
 
-from .demo import CAMERA as DEMO_CAMERA
-from . import (
+from relight import (
     cell_array,
     exr_writer,
     furnace_box,
@@ -33,6 +33,10 @@ from . import (
     read_polydata,
     solve as solve_scene,
 )
+
+# The demo's camera for its own scene (Wrapping/Python/demos/demo.py).
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "Wrapping" / "Python" / "demos"))
+from demo import CAMERA as DEMO_CAMERA  # noqa: E402
 
 METHODS = {"Analytic": 0, "Hemicube": 1, "MonteCarlo": 2}
 
