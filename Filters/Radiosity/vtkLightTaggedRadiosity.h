@@ -197,8 +197,10 @@ public:
   /// Passes of the final gather over the elements before the points read them (default
   /// 1, at most 4): each gathers every element's mean anew from rays, so what the element
   /// solution lost (light reaching dim places after several bounces) shrinks by the
-  /// reflectance at each pass. On the FZK-Haus 2 passes gave 2.23 % from Mitsuba 3 instead
-  /// of 2.50 %, in 30.9 s instead of 27.2 s (the Fine and Reference accuracy levels use 2).
+  /// reflectance at each pass; a pass after the first reuses the first's direct light. On
+  /// the FZK-Haus 4 passes gave 2.05 % from Mitsuba 3 instead of 2.28 %, for about a second
+  /// (the Fine and Reference accuracy levels use 3 and 4); a room's hierarchical solution
+  /// gains nothing from them (docs/benchmarks.md).
   vtkSetClampMacro(GatherSweeps, int, 0, 4);
   vtkGetMacro(GatherSweeps, int);
   ///@}

@@ -94,8 +94,8 @@ public:
   /// leaves everything to the settings themselves; 0 (Preview) to 4 (Reference) scale
   /// ElementSize (the one given or suggested: 2, 2, 1, 1/2, 1/2 times, at most the patch)
   /// and set LampGrading and ShadowGrading here, and stamp the level on the output (field array Accuracy),
-  /// from which the solver takes its GatherRays, ClusterSeparation and GatherSweeps (64 / 2
-  /// / 1, 256 / 3 / 1, 256 / 3 / 1, 256 / 3 / 2, 1024 / 4 / 2). Level 2 is the filters'
+  /// from which the solver takes its GatherRays, ClusterSeparation and GatherSweeps (each
+  /// level's numbers: the table in Core/Base/AccuracyLevels.h). Level 2 is the filters'
   /// defaults. What each costs and
   /// buys on a real building: docs/benchmarks.md, "One accuracy knob".
   vtkSetClampMacro(Accuracy, int, -1, 4);

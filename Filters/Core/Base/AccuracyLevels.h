@@ -27,8 +27,8 @@ inline const AccuracyLevel& AccuracyLevelOf(int level)
     { "preview", 2.0, 0.3, 0.0, 64, 2.0, 1 },   // draft's elements, coarser grading, a light gather
     { "draft", 2.0, 0.2, 0.0, 256, 3.0, 1 },    // the default's gather on elements twice as large
     { "default", 1.0, 0.2, 0.0, 256, 3.0, 1 },  // the filters' defaults
-    { "fine", 0.5, 0.2, 0.5, 256, 3.0, 2 },     // elements half as large, shadows' edges finer, a second sweep
-    { "reference", 0.5, 0.15, 0.5, 1024, 4.0, 2 },
+    { "fine", 0.5, 0.2, 0.5, 256, 3.0, 3 },     // elements half as large, shadows' edges finer, three sweeps
+    { "reference", 0.5, 0.15, 0.5, 1024, 4.0, 4 },
   };
   return levels[level < 0 ? 0 : level >= kAccuracyLevels ? kAccuracyLevels - 1 : level];
 }

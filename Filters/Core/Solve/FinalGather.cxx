@@ -94,20 +94,27 @@ long long ForEachItem(size_t count, const WorkerPool& pool, Collective& ranks,
 }
 
 /// A sweep: every element of `gather` evaluated whole, direct light and interreflection (each
-/// rank its share, then summed), in blocks between which `progress` may stop it.
+/// rank its share, then summed), in blocks between which `progress` may stop it. The direct
+/// light arriving ([point * solutions + m]) is computed into an empty `arriving` and read from
+/// a full one: a later sweep casts only its cosine rays.
 GatheredPoints Run(const Gather& gather, int solutions, const WorkerPool& pool, const ProcessGroup& group,
-  const std::function<bool(double)>& progress, double from, double to)
+  const std::function<bool(double)>& progress, double from, double to, std::vector<Vec3>& arriving)
 {
   Collective ranks(group);
   GatheredPoints out;
   const size_t points = gather.Points();
+  const bool known = arriving.size() == points * solutions;
+  if (!known)
+  {
+    arriving.assign(points * solutions, Vec3());
+  }
   out.Radiosity.assign(points * solutions, Vec3());
   out.Direct.assign(points * solutions, Vec3());
   out.Irradiance.assign(points * solutions, Vec3());
   out.Hidden.assign(points, 0);
   const long long rays = ForEachItem(points, pool, ranks, progress, from, to, [&](size_t p, std::vector<Vec3>& scratch) {
-    return gather.Evaluate(
-      p, &out.Radiosity[p * solutions], &out.Direct[p * solutions], &out.Irradiance[p * solutions], scratch, out.Hidden[p]);
+    return gather.Evaluate(p, &out.Radiosity[p * solutions], &out.Direct[p * solutions], &out.Irradiance[p * solutions],
+      &arriving[p * solutions], known, scratch, out.Hidden[p]);
   });
   out.Aborted = rays < 0;
   double total = static_cast<double>(std::max(0LL, rays));
@@ -116,6 +123,10 @@ GatheredPoints Run(const Gather& gather, int solutions, const WorkerPool& pool, 
     SumOverRanks(ranks, out.Radiosity);
     SumOverRanks(ranks, out.Direct);
     SumOverRanks(ranks, out.Irradiance);
+    if (!known)
+    {
+      SumOverRanks(ranks, arriving);
+    }
     std::vector<double> hidden(out.Hidden.begin(), out.Hidden.end());
     ranks.Sum(hidden);
     ranks.Sum(&total, 1);
@@ -482,11 +493,13 @@ GatheredPoints GatherAtPoints(const SceneMesh& mesh, const SceneGeometry& geomet
   // shadow rays; but a shadow ray grazing an edge then decided a cell's value too, and the
   // cells lost their scale invariance, TestHardCases; docs/benchmarks.md has the cost.)
   const std::vector<PointFrame> elementFrames = ElementFrames(mesh, geometry);
+  std::vector<Vec3> elementsArriving;
   for (int sweep = 0; sweep < sweeps; ++sweep)
   {
     const Gather pass(mesh, geometry, rays, emission, source, solutions, emitters, elementFrames, emission,
       settings.SweepRays, settings.SweepLightRays, shadows, sweep + 1, settings);
-    GatheredPoints elements = Run(pass, solutions, pool, settings.Group, progress, at(sweep), at(sweep + 1));
+    GatheredPoints elements =
+      Run(pass, solutions, pool, settings.Group, progress, at(sweep), at(sweep + 1), elementsArriving);
     cast += elements.Rays;
     if (elements.Aborted)
     {
@@ -563,7 +576,8 @@ GatheredPoints IrradianceAtPoints(const SceneMesh& mesh, const SceneGeometry& ge
   const std::vector<Vec3> none(points.size() * solutions);
   const Gather free(mesh, geometry, rays, emission, radiosity, solutions, emitters, frames, none,
     std::max(1, settings.Rays), settings.LightRays, true, 0x17, settings);
-  GatheredPoints out = Run(free, solutions, pool, settings.Group, progress, 0.0, 1.0);
+  std::vector<Vec3> arriving;
+  GatheredPoints out = Run(free, solutions, pool, settings.Group, progress, 0.0, 1.0, arriving);
   out.Hidden.clear();
   return out;
 }

@@ -45,19 +45,19 @@ Gather::Gather(const SceneMesh& mesh, const SceneGeometry& g, const Visibility& 
   }
 }
 
-long long Gather::Evaluate(size_t p, Vec3* radiosity, Vec3* direct, Vec3* irradiance, std::vector<Vec3>& scratch,
-  char& hidden) const
+long long Gather::Evaluate(size_t p, Vec3* radiosity, Vec3* direct, Vec3* irradiance, Vec3* arriving, bool known,
+  std::vector<Vec3>& scratch, char& hidden) const
 {
   if (!Frames[p].Used)
   {
     return 0;
   }
-  std::vector<Vec3> arriving(S), gathered(S);
+  std::vector<Vec3> gathered(S);
   HitDistances hits;
-  long long rays = DirectAt(p, arriving.data(), scratch);
+  long long rays = known ? 0 : DirectAt(p, arriving, scratch);
   rays += IndirectAt(p, gathered.data(), hits);
   hidden = SeesBacks(hits);
-  Compose(p, arriving.data(), gathered.data(), radiosity, direct, irradiance);
+  Compose(p, arriving, gathered.data(), radiosity, direct, irradiance);
   return rays;
 }
 

@@ -51,9 +51,11 @@ public:
     std::uint64_t salt, const GatherSettings& settings);
 
   /// Point p's values into radiosity[p * S ...], direct[p * S ...] and the light arriving,
-  /// irradiance[p * S ...]; returns its rays.
-  long long Evaluate(size_t p, Vec3* radiosity, Vec3* direct, Vec3* irradiance, std::vector<Vec3>& scratch,
-    char& hidden) const;
+  /// irradiance[p * S ...]; returns its rays. `arriving` [0 .. S) holds the direct light
+  /// arriving at p: computed into it, or with `known` read from it (a later sweep over the
+  /// same elements: direct light does not change from one sweep to the next).
+  long long Evaluate(size_t p, Vec3* radiosity, Vec3* direct, Vec3* irradiance, Vec3* arriving, bool known,
+    std::vector<Vec3>& scratch, char& hidden) const;
 
   /// The direct light arriving at point p (before its reflectance), per solution, into
   /// arriving[0 .. S); returns the shadow rays cast.

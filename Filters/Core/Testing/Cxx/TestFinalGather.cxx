@@ -82,6 +82,34 @@ TEST(FinalGather, FurnaceGivesTheClosedFormAtEveryPoint)
   }
 }
 
+TEST(FinalGather, EachSweepTakesUpWhatTheElementSolutionLostByTheReflectance)
+{
+  // The furnace again (B = 2), gathered over an element solution that lost every bounce
+  // (B = E = 1): sweep n gives 1 + rho * B(n-1), so 1.5, 1.75, 1.875. A later sweep reuses
+  // the first one's direct light: the same bits, and without cosine rays no rays at all.
+  const SceneMesh mesh = Box(1.0, 4, 2, { 0.5, 0.5, 0.5 }, [](int) { return 0; });
+  const RadiositySolver solver(mesh);
+  const std::vector<Vec3> emission = SolutionEmission(mesh, LightGrouping::OnePerLight(1), {});
+  auto sweep = [&](int sweeps, int rays) {
+    GatherSettings settings;
+    settings.Sweeps = sweeps;
+    settings.SweepRays = rays;
+    return GatherAtPoints(mesh, solver.Geometry(), solver.Rays(), emission, emission, 1, settings, 1);
+  };
+  const GatheredPoints one = sweep(1, 16);
+  for (int n = 1; n <= 3; ++n)
+  {
+    const GatheredPoints swept = sweep(n, 16);
+    ASSERT_EQ(swept.Cells.size(), emission.size());
+    for (size_t e = 0; e < swept.Cells.size(); ++e)
+    {
+      EXPECT_NEAR(swept.Cells[e].x, 2.0 - std::pow(0.5, n), 1e-3) << "sweep " << n << ", element " << e;
+      EXPECT_EQ(swept.CellsDirect[e].x, one.CellsDirect[e].x) << "sweep " << n << ", element " << e;
+    }
+  }
+  EXPECT_EQ(sweep(3, 0).Rays, sweep(1, 0).Rays);
+}
+
 /// What may reach the second room: nothing, but for the clustered method, whose far links
 /// deliver to every element of a node alike and so to a node's elements behind the wall
 /// (measured up to 3.1e-6 here, against 0.05-0.2 in the lit room; the gather reads it there).
