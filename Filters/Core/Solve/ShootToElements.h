@@ -27,7 +27,7 @@ double DistributeToElements(ShootingState<Channel>& state, const WorkerPool& poo
   {
     if (factors[e] > 0)
     {
-      received += state.ShotTotal() * factors[e] * state.G.Area[e];
+      received += state.ShotTotal() * factors[e] * state.Geometry.Area[e];
       state.Deposit(e, factors[e]);
     }
   }

@@ -30,8 +30,8 @@ public:
   ShootingState(const SceneMesh& mesh, const SceneGeometry& g, const std::vector<Vec3>& emission,
     int solutions, const SolverOptions& options, SolverClock::time_point start, Solution& out)
     : Mesh(mesh)
-    , G(g)
-    , L(solutions)
+    , Geometry(g)
+    , Solutions(solutions)
     , Elements(static_cast<int>(g.Normal.size()))
     , Patches(static_cast<int>(g.PatchElements.size()))
     , Options(options)
@@ -50,10 +50,9 @@ public:
     Initialize(emission);
   }
 
-  /// True for the patches (and their elements) this process receives for; all of them
-  /// unless several processes solve together.
-  bool Owns(int patch) const { return Owned[patch] != 0; }
-  bool OwnsElement(int e) const { return Owned[G.ElementPatch[e]] != 0; }
+  /// True for the elements (of the patches) this process receives for; all of them unless
+  /// several processes solve together.
+  bool OwnsElement(int e) const { return Owned[Geometry.ElementPatch[e]] != 0; }
   int OwnedElements() const { return OwnedElementCount; }
   const std::vector<char>& OwnedPatchFlags() const { return Owned; }
   /// The processes solving together (one, where its sums do nothing).
@@ -98,7 +97,7 @@ public:
   {
     ShotSum = 0;
     PendingEmission[shooter] = 0;
-    for (int m = 0; m < L; ++m)
+    for (int m = 0; m < Solutions; ++m)
     {
       const size_t i = Index(shooter, m);
       if (!Distribute[m])
@@ -117,14 +116,14 @@ public:
         UnshotEmission[i] = Value();
       }
     }
-    Stats.ShotPower += ShotSum * G.PatchOpenArea[shooter];
+    Stats.ShotPower += ShotSum * Geometry.PatchOpenArea[shooter];
   }
 
   /// Element e receives the shot through F(e -> shooter) = f. Thread-safe per element.
   void Gather(int e, double f)
   {
     const Vec3& rho = Mesh.Reflectance[e];
-    for (int m = 0; m < L; ++m)
+    for (int m = 0; m < Solutions; ++m)
     {
       Radiosity[Index(e, m)] += Channel::Reflect(rho, Shot[m], f);
       if (Direct)
@@ -142,13 +141,13 @@ public:
     {
       return; // direct light only: what is received is not shot again
     }
-    const int p = G.ElementPatch[e];
-    if (G.PatchOpenArea[p] <= 0)
+    const int p = Geometry.ElementPatch[e];
+    if (Geometry.PatchOpenArea[p] <= 0)
     {
       return;
     }
-    const double w = f * G.Area[e] / G.PatchOpenArea[p];
-    for (int m = 0; m < L; ++m)
+    const double w = f * Geometry.Area[e] / Geometry.PatchOpenArea[p];
+    for (int m = 0; m < Solutions; ++m)
     {
       Unshot[Index(p, m)] += Channel::Reflect(Mesh.Reflectance[e], Shot[m], w);
     }
@@ -161,14 +160,14 @@ public:
     for (int j = Nodes->Begin(q); j < Nodes->End(q); ++j)
     {
       const double f = nodeFactors[j - Nodes->Begin(q)];
-      for (int m = 0; m < L; ++m)
+      for (int m = 0; m < Solutions; ++m)
       {
         Gathered[Index(j, m)] += Shot[m] * f;
       }
     }
     if (Reflect)
     {
-      for (int m = 0; m < L; ++m)
+      for (int m = 0; m < Solutions; ++m)
       {
         Unshot[Index(q, m)] += Channel::Reflect(meanReflectance, Shot[m], meanFactor);
       }
@@ -181,14 +180,14 @@ public:
   {
     for (int j = Nodes->Begin(q); j < Nodes->End(q); ++j)
     {
-      for (int m = 0; m < L; ++m)
+      for (int m = 0; m < Solutions; ++m)
       {
         Gathered[Index(j, m)] += Shot[m] * factor;
       }
     }
     if (Reflect)
     {
-      for (int m = 0; m < L; ++m)
+      for (int m = 0; m < Solutions; ++m)
       {
         Unshot[Index(q, m)] += Channel::Reflect(meanReflectance, Shot[m], meanFactor);
       }
@@ -200,7 +199,7 @@ public:
   /// cluster's unshot energy now. Callers keep one cluster's nodes in one thread.
   void GatherCluster(int node, const Vec3& v)
   {
-    for (int m = 0; m < L; ++m)
+    for (int m = 0; m < Solutions; ++m)
     {
       for (int k = 0; k < 3; ++k)
       {
@@ -208,13 +207,13 @@ public:
       }
     }
     const int q = Clusters->Patch[node];
-    if (!Reflect || G.PatchOpenArea[q] <= 0)
+    if (!Reflect || Geometry.PatchOpenArea[q] <= 0)
     {
       return;
     }
     const Vec3* r = ClusterReflectance.data() + 3 * static_cast<size_t>(node);
-    const Vec3 reflected = Vec3{ Dot(r[0], v), Dot(r[1], v), Dot(r[2], v) } * (1.0 / G.PatchOpenArea[q]);
-    for (int m = 0; m < L; ++m)
+    const Vec3 reflected = Vec3{ Dot(r[0], v), Dot(r[1], v), Dot(r[2], v) } * (1.0 / Geometry.PatchOpenArea[q]);
+    for (int m = 0; m < Solutions; ++m)
     {
       Unshot[Index(q, m)] += Channel::Reflect(reflected, Shot[m], 1.0);
     }
@@ -226,16 +225,16 @@ public:
   void EnableClusterGathering(const ReceiverNodes& nodes)
   {
     Clusters = &nodes;
-    ClusterGathered.assign(3 * static_cast<size_t>(nodes.Count()) * L, Value());
+    ClusterGathered.assign(3 * static_cast<size_t>(nodes.Count()) * Solutions, Value());
     ClusterReflectance.assign(3 * static_cast<size_t>(nodes.Count()), Vec3());
     for (int n = 0; n < nodes.Count(); ++n)
     {
       for (int i = nodes.ElementBegin[n]; i < nodes.ElementEnd[n]; ++i)
       {
         const int e = nodes.Elements[i];
-        for (int c = 0; c < 3 && !G.Sheltered[e]; ++c)
+        for (int c = 0; c < 3 && !Geometry.Sheltered[e]; ++c)
         {
-          ClusterReflectance[3 * static_cast<size_t>(n) + c] += G.Normal[e] * (G.Area[e] * Mesh.Reflectance[e][c]);
+          ClusterReflectance[3 * static_cast<size_t>(n) + c] += Geometry.Normal[e] * (Geometry.Area[e] * Mesh.Reflectance[e][c]);
         }
       }
     }
@@ -245,13 +244,13 @@ public:
   void EnablePatchGathering(const PatchNodes& nodes)
   {
     Nodes = &nodes;
-    Gathered.assign(static_cast<size_t>(nodes.Count()) * L, Value());
+    Gathered.assign(static_cast<size_t>(nodes.Count()) * Solutions, Value());
   }
 
   /// Ledger and history after a shot; `received` is the power that reached receivers.
   void EndShot(int shooter, double received)
   {
-    Pending = { true, ShotSum * G.PatchOpenArea[shooter], received, Seconds() };
+    Pending = { true, ShotSum * Geometry.PatchOpenArea[shooter], received, Seconds() };
     ++Stats.Shots;
     OwnedRemaining();
     if (!Group.Distributed())
@@ -266,7 +265,7 @@ public:
   {
     Pending.Open = false;
     double remaining = 0;
-    for (int m = 0; m < L; ++m)
+    for (int m = 0; m < Solutions; ++m)
     {
       remaining += RemainingPer[m];
       Stats.RemainingPerSolution.push_back(InitialPer[m] > 0 ? RemainingPer[m] / InitialPer[m] : 0.0);
@@ -300,7 +299,7 @@ public:
     for (int e = 0; e < Elements; ++e)
     {
       const Vec3& rho = Mesh.Reflectance[e];
-      for (int m = 0; m < L && OwnsElement(e); ++m)
+      for (int m = 0; m < Solutions && OwnsElement(e); ++m)
       {
         const Vec3& a = Out.Ambient[m];
         Out.Radiosity[Index(e, m)] = Channel::To(Radiosity[Index(e, m)]) + Vec3{ rho.x * a.x, rho.y * a.y, rho.z * a.z };
@@ -311,7 +310,7 @@ public:
       Out.Direct.assign(DirectPart.size(), Vec3());
       for (size_t i = 0; i < DirectPart.size(); ++i)
       {
-        Out.Direct[i] = OwnsElement(static_cast<int>(i / L)) ? Channel::To(DirectPart[i]) : Vec3();
+        Out.Direct[i] = OwnsElement(static_cast<int>(i / Solutions)) ? Channel::To(DirectPart[i]) : Vec3();
       }
     }
     Stats.ReceivingElements = OwnedElementCount;
@@ -330,7 +329,7 @@ public:
     for (int e = 0; e < Elements; ++e)
     {
       factors[e] = OwnsElement(e) ? factors[e] : 0.0;
-      receiving += factors[e] * G.Area[e];
+      receiving += factors[e] * Geometry.Area[e];
     }
     Group.Sum(&receiving, 1);
     const double scale = estimator.ConservationScale(shooter, receiving);
@@ -357,44 +356,44 @@ public:
   }
 
   double Seconds() const { return std::chrono::duration<double>(SolverClock::now() - Start).count(); }
-  size_t Index(int item, int m) const { return static_cast<size_t>(item) * L + m; }
+  size_t Index(int item, int m) const { return static_cast<size_t>(item) * Solutions + m; }
   double ShotTotal() const { return ShotSum; }
   /// The largest fraction of its own emitted power that any solution's shot carries.
   double ShotFraction(int shooter) const
   {
     double most = 0;
-    for (int m = 0; m < L; ++m)
+    for (int m = 0; m < Solutions; ++m)
     {
       if (InitialPer[m] > 0)
       {
-        most = std::max(most, Channel::Sum(Shot[m]) * G.PatchOpenArea[shooter] / InitialPer[m]);
+        most = std::max(most, Channel::Sum(Shot[m]) * Geometry.PatchOpenArea[shooter] / InitialPer[m]);
       }
     }
     return most;
   }
 
   const SceneMesh& Mesh;
-  const SceneGeometry& G;
-  const int L, Elements, Patches;
+  const SceneGeometry& Geometry;
+  const int Solutions, Elements, Patches;
   const SolverOptions& Options;
 
 private:
   void Initialize(const std::vector<Vec3>& emission)
   {
-    Radiosity.assign(static_cast<size_t>(Elements) * L, Value());
-    Unshot.assign(static_cast<size_t>(Patches) * L, Value());
+    Radiosity.assign(static_cast<size_t>(Elements) * Solutions, Value());
+    Unshot.assign(static_cast<size_t>(Patches) * Solutions, Value());
     PendingEmission.assign(Patches, 0);
     for (int e = 0; e < Elements; ++e)
     {
-      const int p = G.ElementPatch[e];
-      for (int m = 0; m < L; ++m)
+      const int p = Geometry.ElementPatch[e];
+      for (int m = 0; m < Solutions; ++m)
       {
         const Value v = Channel::From(emission[Index(e, m)]);
         Radiosity[Index(e, m)] = v;
         // Unshot radiosity of a patch: its elements' emission spread over its open area.
-        if (G.PatchOpenArea[p] > 0 && !G.Enclosed[e]) // enclosed emission never gets out
+        if (Geometry.PatchOpenArea[p] > 0 && !Geometry.Enclosed[e]) // enclosed emission never gets out
         {
-          Unshot[Index(p, m)] += v * (G.Area[e] / G.PatchOpenArea[p]);
+          Unshot[Index(p, m)] += v * (Geometry.Area[e] / Geometry.PatchOpenArea[p]);
         }
         PendingEmission[p] = PendingEmission[p] || Channel::Sum(v) != 0;
       }
@@ -404,10 +403,10 @@ private:
       DirectPart = Radiosity;
       UnshotEmission = Unshot; // the part of the unshot energy that is still emission
     }
-    InitialPer.assign(L, 0.0);
+    InitialPer.assign(Solutions, 0.0);
     for (int p = 0; p < Patches; ++p)
     {
-      for (int m = 0; m < L; ++m)
+      for (int m = 0; m < Solutions; ++m)
       {
         InitialPer[m] += Power(p, m);
       }
@@ -436,7 +435,7 @@ private:
     }
   }
 
-  double Power(int p, int m) const { return Channel::Sum(Unshot[Index(p, m)]) * G.PatchOpenArea[p]; }
+  double Power(int p, int m) const { return Channel::Sum(Unshot[Index(p, m)]) * Geometry.PatchOpenArea[p]; }
 
   /// RemainingPer over this rank's patches (all of them for one process).
   void OwnedRemaining()
@@ -444,7 +443,7 @@ private:
     std::fill(RemainingPer.begin(), RemainingPer.end(), 0.0);
     for (int p : OwnedList)
     {
-      for (int m = 0; m < L; ++m)
+      for (int m = 0; m < Solutions; ++m)
       {
         RemainingPer[m] += Power(p, m);
       }
@@ -460,7 +459,7 @@ private:
     for (int p : OwnedList)
     {
       double sum = 0;
-      for (int m = 0; m < L; ++m)
+      for (int m = 0; m < Solutions; ++m)
       {
         sum += Distribute[m] ? Power(p, m) : 0.0;
       }
@@ -480,10 +479,10 @@ private:
   {
     const bool outOfTime = Options.TimeBudget > 0 && Seconds() >= Options.TimeBudget;
     const bool abort = !outOfTime && Options.Progress && !Options.Progress(Fraction());
-    RankTable<Channel> table(L, Direct);
+    RankTable<Channel> table(Solutions, Direct);
     table.Exchange(Group, MyRow(outOfTime, abort));
     Pending.Received = table.Received();
-    for (int m = 0; m < L; ++m)
+    for (int m = 0; m < Solutions; ++m)
     {
       RemainingPer[m] = table.Remaining(m);
     }
@@ -518,8 +517,8 @@ private:
   /// The solutions a shot carries: those still being shot (all with ConvergedLights On).
   std::vector<char> Mask() const
   {
-    std::vector<char> mask(L);
-    for (int m = 0; m < L; ++m)
+    std::vector<char> mask(Solutions);
+    for (int m = 0; m < Solutions; ++m)
     {
       mask[m] = Options.ConvergedLights != EffectMode::On ? Active[m] : 1;
     }
@@ -535,7 +534,7 @@ private:
     row.Candidate = BestOwnedPatch(row.BestPower);
     row.Received = Pending.Open ? Pending.Received : 0.0;
     row.Remaining = RemainingPer;
-    for (int m = 0; m < L && row.Candidate >= 0; ++m)
+    for (int m = 0; m < Solutions && row.Candidate >= 0; ++m)
     {
       row.Unshot.push_back(Unshot[Index(row.Candidate, m)]);
       if (Direct)
@@ -555,7 +554,7 @@ private:
     {
       return;
     }
-    for (int m = 0; m < L; ++m)
+    for (int m = 0; m < Solutions; ++m)
     {
       Unshot[Index(Next, m)] = unshot[m];
       if (Direct)
@@ -570,7 +569,7 @@ private:
   bool UpdateActive()
   {
     bool any = false;
-    for (int m = 0; m < L; ++m)
+    for (int m = 0; m < Solutions; ++m)
     {
       Active[m] = InitialPer[m] > 0 && RemainingPer[m] >= Options.ConvergenceThreshold * InitialPer[m];
       any = any || Active[m];
@@ -587,7 +586,7 @@ private:
     }
     for (int e = 0; e < Elements; ++e)
     {
-      const int q = G.ElementPatch[e];
+      const int q = Geometry.ElementPatch[e];
       if (!Owned[q])
       {
         continue;
@@ -596,7 +595,7 @@ private:
       for (int j = Nodes->Begin(q); j < Nodes->End(q); ++j)
       {
         const double weight = w[j - Nodes->Begin(q)];
-        for (int m = 0; m < L; ++m)
+        for (int m = 0; m < Solutions; ++m)
         {
           Radiosity[Index(e, m)] += Channel::Reflect(Mesh.Reflectance[e], Gathered[Index(j, m)], weight);
         }
@@ -617,8 +616,8 @@ private:
       for (int i = Clusters->ElementBegin[node]; i < Clusters->ElementEnd[node]; ++i)
       {
         const int e = Clusters->Elements[i];
-        const Vec3& n = G.Normal[e];
-        for (int m = 0; m < L && !G.Sheltered[e]; ++m)
+        const Vec3& n = Geometry.Normal[e];
+        for (int m = 0; m < Solutions && !Geometry.Sheltered[e]; ++m)
         {
           const Value* v = ClusterGathered.data() + 3 * Index(node, m);
           Radiosity[Index(e, m)] += Channel::Reflect(Mesh.Reflectance[e], v[0] * n.x + v[1] * n.y + v[2] * n.z, 1.0);
@@ -632,13 +631,13 @@ private:
   /// shows rho * ambient on top of what it received.
   void AddAmbient()
   {
-    const AmbientTerm ambient(Mesh, G, Elements);
-    for (int m = 0; m < L; ++m)
+    const AmbientTerm ambient(Mesh, Geometry, Elements);
+    for (int m = 0; m < Solutions; ++m)
     {
       Vec3 unshotPower;
       for (int p : OwnedList)
       {
-        unshotPower += Channel::To(Unshot[Index(p, m)]) * G.PatchOpenArea[p];
+        unshotPower += Channel::To(Unshot[Index(p, m)]) * Geometry.PatchOpenArea[p];
       }
       double summed[3] = { unshotPower.x, unshotPower.y, unshotPower.z };
       Group.Sum(summed, 3);
