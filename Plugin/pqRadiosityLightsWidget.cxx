@@ -1,6 +1,6 @@
 #include "pqRadiosityLightsWidget.h"
 
-#include "Relight/LightRig.h"
+#include "vtkRadiosityLights.h"
 
 #include <algorithm>
 #include <string>
@@ -82,29 +82,18 @@ std::vector<std::string> Strings(const QStringList& list)
 
 QVector<pqRadiosityLightsWidget::Light> pqRadiosityLightsWidget::readLights(vtkSMProperty* info) const
 {
-  // The rows are read as the core writes them (radiosity::SettingRow), so a new column is
-  // read here without a change.
-  const std::vector<radiosity::NamedSetting> mine = radiosity::ParseSettingRows(Strings(this->Rows));
+  // The rows are read as the filters write them (vtkRadiosityLights::ShownLights), so a
+  // new column is read there, not here.
   QVector<Light> lights;
-  for (const radiosity::NamedSetting& inEffect : radiosity::ParseSettingRows(Strings(info)))
+  for (const vtkRadiosityLights::ShownLight& shown : vtkRadiosityLights::ShownLights(Strings(info), Strings(this->Rows)))
   {
     Light light;
-    light.Name = QString::fromStdString(inEffect.Name);
-    radiosity::LightSetting shown = inEffect.Setting;
-    for (const radiosity::NamedSetting& row : mine)
-    {
-      if (row.Name == inEffect.Name)
-      {
-        row.Setting.ApplyTo(shown); // a 'nan' part keeps what is in effect
-        light.Edited = true;
-        light.ColorEdited = row.Setting.HasColor;
-      }
-    }
-    light.Color[0] = shown.Color.x;
-    light.Color[1] = shown.Color.y;
-    light.Color[2] = shown.Color.z;
+    light.Name = QString::fromStdString(shown.Name);
+    std::copy(shown.Color, shown.Color + 3, light.Color);
     light.Intensity = shown.Intensity;
     light.Enabled = shown.Enabled;
+    light.Edited = shown.Edited;
+    light.ColorEdited = shown.ColorEdited;
     lights.push_back(light);
   }
   return lights;
@@ -253,13 +242,13 @@ void pqRadiosityLightsWidget::push()
     {
       continue;
     }
-    radiosity::LightSetting setting;
-    setting.HasColor = light.ColorEdited;
-    setting.Color = { light.Color[0], light.Color[1], light.Color[2] };
-    setting.HasIntensity = setting.HasEnabled = true;
-    setting.Intensity = light.Intensity;
-    setting.Enabled = light.Enabled;
-    for (const std::string& item : radiosity::SettingInputRow(light.Name.toStdString(), setting))
+    vtkRadiosityLights::ShownLight edited;
+    edited.Name = light.Name.toStdString();
+    std::copy(light.Color, light.Color + 3, edited.Color);
+    edited.Intensity = light.Intensity;
+    edited.Enabled = light.Enabled;
+    edited.ColorEdited = light.ColorEdited;
+    for (const std::string& item : vtkRadiosityLights::EditedRow(edited))
     {
       rows.push_back(QString::fromStdString(item));
     }

@@ -1,6 +1,6 @@
 #include "pqRadiosityScheduleWidget.h"
 
-#include "Relight/LightRig.h"
+#include "vtkRadiosityLights.h"
 
 #include "vtkSMPropertyHelper.h"
 #include "vtkSMProxy.h"
@@ -24,14 +24,15 @@ QStringList Checked(const QStringList& row)
   {
     cells.push_back(cell.toStdString());
   }
-  radiosity::LightKeyframe key;
-  if (!radiosity::ParseKeyframe(cells, key))
+  std::string light;
+  bool enabled = false;
+  if (!vtkRadiosityLights::ReadScheduleRow(cells, light, enabled))
   {
     return {};
   }
   QStringList checked = row;
-  checked[1] = QString::fromStdString(key.Light);
-  checked[6] = key.Enabled ? "1" : "0";
+  checked[1] = QString::fromStdString(light);
+  checked[6] = enabled ? "1" : "0";
   return checked;
 }
 }

@@ -1,6 +1,6 @@
 // ParaView panel for the lights' schedule (Radiosity Relight and Relit Surface): one row per
 // keyframe under column headers (time, light, color, intensity, on), Add and Remove buttons;
-// a typed cell is checked as the schedule file's rows are (radiosity::ParseKeyframe).
+// a typed cell is checked as the schedule file's rows are (vtkRadiosityLights::ReadScheduleRow).
 #ifndef pqRadiosityScheduleWidget_h
 #define pqRadiosityScheduleWidget_h
 

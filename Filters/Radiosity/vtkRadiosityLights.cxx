@@ -295,3 +295,55 @@ void vtkRadiosityLights::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Schedule entries: " << this->Settings->Schedule.size() << " (+" << this->Settings->FileSchedule.size()
      << " from a file)\n";
 }
+
+std::vector<vtkRadiosityLights::ShownLight> vtkRadiosityLights::ShownLights(
+  const std::vector<std::string>& inEffect, const std::vector<std::string>& edited)
+{
+  const std::vector<radiosity::NamedSetting> mine = radiosity::ParseSettingRows(edited);
+  std::vector<ShownLight> lights;
+  for (const radiosity::NamedSetting& now : radiosity::ParseSettingRows(inEffect))
+  {
+    ShownLight light;
+    light.Name = now.Name;
+    radiosity::LightSetting shown = now.Setting;
+    for (const radiosity::NamedSetting& row : mine)
+    {
+      if (row.Name == now.Name)
+      {
+        row.Setting.ApplyTo(shown); // a 'nan' part keeps what is in effect
+        light.Edited = true;
+        light.ColorEdited = row.Setting.HasColor;
+      }
+    }
+    light.Color[0] = shown.Color.x;
+    light.Color[1] = shown.Color.y;
+    light.Color[2] = shown.Color.z;
+    light.Intensity = shown.Intensity;
+    light.Enabled = shown.Enabled;
+    lights.push_back(light);
+  }
+  return lights;
+}
+
+std::vector<std::string> vtkRadiosityLights::EditedRow(const ShownLight& light)
+{
+  radiosity::LightSetting setting;
+  setting.HasColor = light.ColorEdited;
+  setting.Color = { light.Color[0], light.Color[1], light.Color[2] };
+  setting.HasIntensity = setting.HasEnabled = true;
+  setting.Intensity = light.Intensity;
+  setting.Enabled = light.Enabled;
+  return radiosity::SettingInputRow(light.Name, setting);
+}
+
+bool vtkRadiosityLights::ReadScheduleRow(const std::vector<std::string>& cells, std::string& light, bool& enabled)
+{
+  radiosity::LightKeyframe key;
+  if (!radiosity::ParseKeyframe(cells, key))
+  {
+    return false;
+  }
+  light = key.Light;
+  enabled = key.Enabled;
+  return true;
+}

@@ -117,6 +117,27 @@ public:
   std::string Resolve(const std::vector<std::string>& names, const std::vector<radiosity::Vec3>& defaults,
     double time, std::vector<radiosity::LightSetting>& effective, std::vector<std::string>& warnings);
 
+  /// A light as the ParaView panel shows it: the plugin reads and writes the rows through
+  /// these (it sees this layer only), so a new column is parsed here, not in its widgets.
+  struct ShownLight
+  {
+    std::string Name;
+    double Color[3] = { 1, 1, 1 };
+    double Intensity = 1;
+    bool Enabled = true;
+    bool Edited = false;      ///< a row of the edited ones names it
+    bool ColorEdited = false; ///< and sets its color
+  };
+  /// The lights of `inEffect` (the filter's read-back rows, flat) with the rows `edited`
+  /// (the property's, flat) applied, in the read-back's order.
+  static std::vector<ShownLight> ShownLights(
+    const std::vector<std::string>& inEffect, const std::vector<std::string>& edited);
+  /// The property's row for an edited light (its color 'nan' unless ColorEdited).
+  static std::vector<std::string> EditedRow(const ShownLight& light);
+  /// Reads a schedule row as the schedule file does: false where it does not read; the
+  /// light's name and its on/off otherwise.
+  static bool ReadScheduleRow(const std::vector<std::string>& cells, std::string& light, bool& enabled);
+
 #endif
 
 protected:
