@@ -84,19 +84,8 @@ QVector<pqRadiosityLightsWidget::Light> pqRadiosityLightsWidget::readLights(vtkS
 {
   // The rows are read as the filters write them (vtkRadiosityLights::ShownLights), so a
   // new column is read there, not here.
-  QVector<Light> lights;
-  for (const vtkRadiosityLights::ShownLight& shown : vtkRadiosityLights::ShownLights(Strings(info), Strings(this->Rows)))
-  {
-    Light light;
-    light.Name = QString::fromStdString(shown.Name);
-    std::copy(shown.Color, shown.Color + 3, light.Color);
-    light.Intensity = shown.Intensity;
-    light.Enabled = shown.Enabled;
-    light.Edited = shown.Edited;
-    light.ColorEdited = shown.ColorEdited;
-    lights.push_back(light);
-  }
-  return lights;
+  const std::vector<Light> shown = vtkRadiosityLights::ShownLights(Strings(info), Strings(this->Rows));
+  return QVector<Light>(shown.begin(), shown.end());
 }
 
 void pqRadiosityLightsWidget::refreshInPlace(const QVector<Light>& lights)
@@ -123,7 +112,7 @@ void pqRadiosityLightsWidget::refreshInPlace(const QVector<Light>& lights)
 void pqRadiosityLightsWidget::addRow(int row)
 {
   const QVector<Light>& lights = this->Lights;
-  auto* name = new QTableWidgetItem(lights[row].Name);
+  auto* name = new QTableWidgetItem(QString::fromStdString(lights[row].Name));
   name->setFlags(Qt::ItemIsEnabled);
   this->Table->setItem(row, 0, name);
 
@@ -134,7 +123,7 @@ void pqRadiosityLightsWidget::addRow(int row)
     Light& light = this->Lights[row];
     const QColor chosen = QColorDialog::getColor(
       QColor::fromRgbF(std::min(1.0, light.Color[0]), std::min(1.0, light.Color[1]), std::min(1.0, light.Color[2])),
-      this, "Color of " + light.Name);
+      this, "Color of " + QString::fromStdString(light.Name));
     if (chosen.isValid())
     {
       light.Color[0] = chosen.redF();
@@ -242,13 +231,7 @@ void pqRadiosityLightsWidget::push()
     {
       continue;
     }
-    vtkRadiosityLights::ShownLight edited;
-    edited.Name = light.Name.toStdString();
-    std::copy(light.Color, light.Color + 3, edited.Color);
-    edited.Intensity = light.Intensity;
-    edited.Enabled = light.Enabled;
-    edited.ColorEdited = light.ColorEdited;
-    for (const std::string& item : vtkRadiosityLights::EditedRow(edited))
+    for (const std::string& item : vtkRadiosityLights::EditedRow(light))
     {
       rows.push_back(QString::fromStdString(item));
     }

@@ -4,6 +4,7 @@
 #define pqRadiosityLightsWidget_h
 
 #include "pqRadiosityRowsWidget.h"
+#include "vtkRadiosityLights.h" // the rows' face in the VTK layer
 
 #include <QList>
 #include <QStringList>
@@ -31,15 +32,9 @@ private Q_SLOTS:
   void rebuild();
 
 private:
-  struct Light
-  {
-    QString Name;
-    double Color[3] = { 1, 1, 1 };
-    double Intensity = 1;
-    bool Enabled = true;
-    bool Edited = false;      ///< only edited lights are written, others keep their defaults
-    bool ColorEdited = false; ///< an unedited color is written as NaN: keep the default
-  };
+  /// A light as the panel shows it (name, color, intensity, on/off, and whether and how it
+  /// was edited): only edited lights are written, an unedited color as NaN.
+  using Light = vtkRadiosityLights::ShownLight;
   void push();
   /// The table as tall as its rows (up to a limit), so the panel, not the table, scrolls.
   void fitHeight();
