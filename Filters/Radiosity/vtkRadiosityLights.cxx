@@ -285,6 +285,29 @@ int vtkRadiosityLights::GetSettingRowCells()
   return radiosity::kSettingRowCells;
 }
 
+const char* vtkRadiosityLights::GetSettingRowColumnName(int i)
+{
+  return i >= 0 && i < radiosity::kSettingRowCells ? radiosity::kSettingRowColumns[i].Name : nullptr;
+}
+
+int vtkRadiosityLights::GetSettingRowColumnType(int i)
+{
+  if (i < 0 || i >= radiosity::kSettingRowCells)
+  {
+    return 0;
+  }
+  switch (radiosity::kSettingRowColumns[i].Kind)
+  {
+    case radiosity::RowCell::Text:
+      return VTK_STRING;
+    case radiosity::RowCell::Number:
+      return VTK_DOUBLE;
+    case radiosity::RowCell::Flag:
+      return VTK_INT;
+  }
+  return 0;
+}
+
 void vtkRadiosityLights::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

@@ -43,6 +43,10 @@ public:
   /// Strings a row of LightSettings holds (name, r, g, b, intensity, enabled): the
   /// plugin's LightRig.xml sends rows of this many (checked by Python.TestNames).
   static int GetSettingRowCells();
+  /// Column `i` of that row: its name, and the VTK type of what it holds (VTK_STRING,
+  /// VTK_DOUBLE, VTK_INT for on/off); null and 0 past the row.
+  static const char* GetSettingRowColumnName(int i);
+  static int GetSettingRowColumnType(int i);
 
   ///@{
   /// Per-light settings by index (0..k-1, in LightNames order).

@@ -196,6 +196,11 @@ const char* vtkRadiosityMesher::GetAccuracyName(int level)
   return radiosity::AccuracyLevelOf(level).Name;
 }
 
+int vtkRadiosityMesher::GetNumberOfAccuracyLevels()
+{
+  return radiosity::kAccuracyLevels;
+}
+
 double vtkRadiosityMesher::EstimateElements(double patchSize, double elementSize)
 {
   if (this->GetNumberOfInputConnections(0) > 0)

@@ -92,8 +92,8 @@ public:
   ///@{
   /// One setting for what a solve costs and how close it comes: -1 (Custom, the default)
   /// leaves everything to the settings themselves; 0 (Preview) to 4 (Reference) scale
-  /// ElementSize (the one given or suggested: 2, 2, 1, 1/2, 1/2 times, at most the patch)
-  /// and set LampGrading and ShadowGrading here, and stamp the level on the output (field array Accuracy),
+  /// ElementSize (the one given or suggested, at most the patch) and set LampGrading and
+  /// ShadowGrading here, and stamp the level on the output (field array Accuracy),
   /// from which the solver takes its GatherRays, ClusterSeparation and GatherSweeps (each
   /// level's numbers: the table in Core/Base/AccuracyLevels.h). Level 2 is the filters'
   /// defaults. What each costs and
@@ -109,6 +109,7 @@ public:
   static double GetAccuracyClusterSeparation(int level);
   static int GetAccuracyGatherSweeps(int level);
   static const char* GetAccuracyName(int level);
+  static int GetNumberOfAccuracyLevels();
   /// The LampGrading this filter meshes with: Accuracy's where a level is chosen.
   double GetLampGradingInUse() const;
   ///@}

@@ -48,9 +48,26 @@ struct NamedSetting
   LightSetting Setting;
 };
 
-/// The strings of one light's row: name, red, green, blue, intensity, enabled. ParaView's
-/// LightSettings property (LightRig.xml), its panel and its tests count the same.
-constexpr int kSettingRowCells = 6;
+/// What a cell of a light's row holds: ParaView's element type for it (text, a real
+/// number, an integer used as on/off).
+enum class RowCell
+{
+  Text,
+  Number,
+  Flag
+};
+struct SettingColumn
+{
+  const char* Name;
+  RowCell Kind;
+};
+/// The columns of one light's row, in order: the one declaration of the row. ParaView's
+/// LightSettings property takes its element count, types and the columns it documents from
+/// here (the plugin's LightRig.xml is filled in from it at build time).
+inline constexpr SettingColumn kSettingRowColumns[] = { { "name", RowCell::Text }, { "red", RowCell::Number },
+  { "green", RowCell::Number }, { "blue", RowCell::Number }, { "intensity", RowCell::Number },
+  { "enabled", RowCell::Flag } };
+constexpr int kSettingRowCells = static_cast<int>(sizeof(kSettingRowColumns) / sizeof(kSettingRowColumns[0]));
 
 /// The rows of a flat LightSettings list (kSettingRowCells strings a light, as SettingRow
 /// and SettingInputRow write them): a color or intensity that is not a finite number ('nan')

@@ -7,11 +7,15 @@ import os
 import xml.etree.ElementTree as ElementTree
 
 import relight
+from vtkmodules import vtkCommonCore
 from settingstable import setting_rows
 from testlib import check, finish
 
 ROOT = os.environ.get("RELIGHT_ROOT", ".")
-XML_FILES = sorted(glob.glob(os.path.join(ROOT, "Plugin", "ServerManager", "*.xml")))
+# The XML as the plugin is built from it: Plugin/ServerManager's files with the tables'
+# facts filled in (RadiosityXmlTables), one for each file there.
+XML_FILES = sorted(glob.glob(os.path.join(os.environ["RELIGHT_PLUGIN_XML"], "*.xml")))
+TEMPLATES = sorted(glob.glob(os.path.join(ROOT, "Plugin", "ServerManager", "*.xml")))
 SETTINGS = os.path.join(ROOT, "docs", "settings.md")
 
 
@@ -76,8 +80,11 @@ for path in XML_FILES:
           f"{os.path.basename(path)} holds one proxy named for it ({proxies})")
 with open(os.path.join(ROOT, "Plugin", "CMakeLists.txt")) as cmake:
     listed = cmake.read()
-unlisted = [os.path.basename(p) for p in XML_FILES if os.path.splitext(os.path.basename(p))[0] not in listed]
+unlisted = [os.path.basename(p) for p in TEMPLATES if os.path.splitext(os.path.basename(p))[0] not in listed]
 check(not unlisted, f"Plugin/CMakeLists.txt builds every file of Plugin/ServerManager (not: {unlisted})")
+built = [os.path.basename(p) for p in XML_FILES]
+check(built == [os.path.basename(p) for p in TEMPLATES] and all("@" not in open(p).read() for p in XML_FILES),
+      f"the plugin is built from every file of Plugin/ServerManager, each fact filled in (built: {built})")
 check(not undocumented(), f"every property has help text (missing: {undocumented()})")
 commands = xml_commands()
 check(sorted(commands) == ["vtkLightTaggedRadiosity", "vtkRadiosityAppendPieces", "vtkRadiosityEXRWriter",
@@ -160,6 +167,13 @@ widths = {p.get("number_of_elements_per_command") for p in root.iter("StringVect
 check(widths == {str(relight.vtkRadiosityLights.GetSettingRowCells())},
       f"LightRig.xml sends LightSettings rows of {widths} strings, the light rig reads "
       f"{relight.vtkRadiosityLights.GetSettingRowCells()}")
+lights = relight.vtkRadiosityLights
+kinds = {"VTK_STRING": "2", "VTK_DOUBLE": "1", "VTK_INT": "0"}
+columns = " ".join(kinds[n] for i in range(lights.GetSettingRowCells()) for n in kinds
+                   if lights.GetSettingRowColumnType(i) == getattr(vtkCommonCore, n))
+types = {p.get("element_types") for p in root.iter("StringVectorProperty") if p.get("name") == "LightSettings"}
+check(types == {columns} and len(columns.split()) == lights.GetSettingRowCells(),
+      f"LightRig.xml's LightSettings cells are typed {types}, the light rig's columns {columns!r}")
 
 rows = setting_rows(SETTINGS)
 inputs = {"Input", "MovingLights", "DynamicObjects", "Selection", "DummyInput"}
