@@ -38,6 +38,7 @@ ShooterFormFactors::ShooterFormFactors(const SceneMesh& mesh, const SceneGeometr
   }
   const size_t patches = geometry.PatchElements.size();
   PatchTriangles.resize(patches);
+  PatchCdf.resize(patches);
   PatchCentre.resize(patches);
   PatchNormal.resize(patches);
   for (size_t p = 0; p < patches; ++p)
@@ -61,6 +62,7 @@ ShooterFormFactors::ShooterFormFactors(const SceneMesh& mesh, const SceneGeometr
     for (SampleTriangle& tri : PatchTriangles[p])
     {
       tri.Cdf = total > 0 ? tri.Cdf / total : 1.0;
+      PatchCdf[p].push_back(tri.Cdf);
     }
     PatchCentre[p] = centre * (1.0 / geometry.PatchArea[p]);
     PatchNormal[p] = Normalized(normal);
@@ -279,9 +281,9 @@ void ShooterFormFactors::BuildLoops()
 const ShooterFormFactors::SampleTriangle& ShooterFormFactors::PickTriangle(int patch, double u) const
 {
   const std::vector<SampleTriangle>& triangles = PatchTriangles[patch];
-  const auto it = std::lower_bound(triangles.begin(), triangles.end(), u,
-    [](const SampleTriangle& t, double value) { return t.Cdf < value; });
-  return it == triangles.end() ? triangles.back() : *it;
+  const std::vector<double>& cdf = PatchCdf[patch];
+  const size_t i = static_cast<size_t>(std::lower_bound(cdf.begin(), cdf.end(), u) - cdf.begin());
+  return i == triangles.size() ? triangles.back() : triangles[i];
 }
 
 int ShooterFormFactors::FrontHit(const Vec3& origin, const Vec3& direction) const
