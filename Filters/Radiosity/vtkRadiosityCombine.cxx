@@ -1,5 +1,6 @@
 #include "vtkRadiosityCombine.h"
 #include "vtkRadiosityAdapter.h"
+#include "vtkRadiosityLightDefaults.h"
 
 #include "Geometry/Polygon.h"
 #include "Relight/Exposure.h"
@@ -12,15 +13,23 @@
 #include "vtkFieldData.h"
 #include "vtkPolyData.h"
 #include "vtkFloatArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 
 #include <cmath>
 
-bool vtkRadiosityCombineSolutions(vtkFieldData* data, const std::vector<std::string>& arrays,
-  const std::vector<double>& weights, vtkIdType tuples, vtkFloatArray* out, std::string& error)
+namespace
 {
-  std::vector<const float*> floats;
-  std::vector<const double*> doubles;
+const std::string kPrefix = "Radiosity_";
+
+/// The arrays `arrays` of `data` as a table of `tuples` items; false with `error` naming
+/// the first that is missing or of the wrong shape or type.
+bool ReadTable(vtkFieldData* data, const std::vector<std::string>& arrays, vtkIdType tuples,
+  radiosity::SolutionTable& table, std::string& error)
+{
+  table = radiosity::SolutionTable();
+  table.Items = static_cast<size_t>(tuples);
   for (const std::string& name : arrays)
   {
     vtkAbstractArray* array = data->GetAbstractArray(name.c_str());
@@ -36,35 +45,34 @@ bool vtkRadiosityCombineSolutions(vtkFieldData* data, const std::vector<std::str
     }
     if (auto* f = vtkFloatArray::FastDownCast(array))
     {
-      floats.push_back(f->GetPointer(0));
+      table.Floats.push_back(f->GetPointer(0));
     }
     else if (auto* d = vtkDoubleArray::FastDownCast(array))
     {
-      doubles.push_back(d->GetPointer(0));
+      table.Doubles.push_back(d->GetPointer(0));
     }
     else
     {
-      error = "array '" + name + "' is a " + array->GetClassName() +
-        "; solutions must be float or double";
+      error = "array '" + name + "' is a " + array->GetClassName() + "; solutions must be float or double";
       return false;
     }
   }
-  if (!floats.empty() && !doubles.empty())
+  if (!table.Floats.empty() && !table.Doubles.empty())
   {
     error = "the solution arrays mix float and double; use one type";
     return false;
   }
+  return true;
+}
+
+/// out = `table` weighted by `weights`; false, with `error`, where the sum is not finite.
+bool CombineInto(const radiosity::SolutionTable& table, const std::vector<double>& weights, vtkFloatArray* out,
+  std::string& error)
+{
   out->SetNumberOfComponents(3);
-  out->SetNumberOfTuples(tuples);
+  out->SetNumberOfTuples(static_cast<vtkIdType>(table.Items));
   const auto pool = vtkRadiosityAdapter::SharedPool();
-  if (!floats.empty())
-  {
-    radiosity::CombineLights(floats, weights, static_cast<size_t>(tuples), out->GetPointer(0), pool.get());
-  }
-  else
-  {
-    radiosity::CombineLights(doubles, weights, static_cast<size_t>(tuples), out->GetPointer(0), pool.get());
-  }
+  radiosity::CombineTable(table, weights, out->GetPointer(0), pool.get());
   const vtkIdType bad = vtkRadiosityFirstNonFinite(out);
   if (bad >= 0)
   {
@@ -73,6 +81,161 @@ bool vtkRadiosityCombineSolutions(vtkFieldData* data, const std::vector<std::str
     return false;
   }
   return true;
+}
+
+/// The lights of `data`: LightNames, else the names of its Radiosity_<name> arrays; "" or
+/// why there are none to relight.
+std::string FindLights(vtkPolyData* data, std::vector<std::string>& names)
+{
+  names = vtkRadiosityLightNames(data->GetFieldData());
+  if (!data->GetFieldData()->GetAbstractArray("LightNames"))
+  {
+    vtkFieldData* source = data->GetPointData()->GetNumberOfArrays() > 0
+      ? static_cast<vtkFieldData*>(data->GetPointData())
+      : static_cast<vtkFieldData*>(data->GetCellData());
+    for (int a = 0; a < source->GetNumberOfArrays(); ++a)
+    {
+      const char* name = source->GetArrayName(a);
+      if (name && std::string(name).compare(0, kPrefix.size(), kPrefix) == 0)
+      {
+        names.push_back(std::string(name).substr(kPrefix.size()));
+      }
+    }
+  }
+  bool perLight = false;
+  for (const std::string& name : names)
+  {
+    perLight = perLight || data->GetCellData()->GetAbstractArray((kPrefix + name).c_str()) ||
+      data->GetPointData()->GetAbstractArray((kPrefix + name).c_str());
+  }
+  if (!perLight && data->GetCellData()->GetAbstractArray("Radiosity"))
+  {
+    return "the input holds one combined solution (SolutionMode StandardCombined); relighting needs the "
+           "per-light solutions of LightTagged or StandardSeparate";
+  }
+  return names.empty() ? "the input has no lights (no field array 'LightNames' and no 'Radiosity_<name>' "
+                         "arrays); run vtkLightTaggedRadiosity first"
+                       : "";
+}
+
+/// Radiosity_<name> per light and, `withDirect`, Direct_<name> after them; "" or why the
+/// direct parts cannot be had.
+std::string ArrayNames(vtkPolyData* data, const std::vector<std::string>& names, bool withDirect,
+  std::vector<std::string>& arrays)
+{
+  for (const std::string& name : names)
+  {
+    arrays.push_back(kPrefix + name);
+  }
+  if (!withDirect)
+  {
+    return "";
+  }
+  const std::string direct = "Direct_" + names[0];
+  if (!data->GetPointData()->GetAbstractArray(direct.c_str()) && !data->GetCellData()->GetAbstractArray(direct.c_str()))
+  {
+    return "IndirectScale needs the arrays '" + direct + "' etc.; turn on SeparateDirect in the solver";
+  }
+  for (const std::string& name : names)
+  {
+    arrays.push_back("Direct_" + name);
+  }
+  return "";
+}
+} // namespace
+
+bool vtkRadiosityCombineSolutions(vtkFieldData* data, const std::vector<std::string>& arrays,
+  const std::vector<double>& weights, vtkIdType tuples, vtkFloatArray* out, std::string& error)
+{
+  radiosity::SolutionTable table;
+  return ReadTable(data, arrays, tuples, table, error) && CombineInto(table, weights, out, error);
+}
+
+struct vtkRadiosityRelitInput::Internals
+{
+  std::vector<std::string> Names;
+  std::vector<radiosity::Vec3> Defaults;
+  radiosity::SolutionTable Points, Cells;
+};
+
+vtkRadiosityRelitInput::vtkRadiosityRelitInput()
+  : Impl(new Internals)
+{
+}
+
+vtkRadiosityRelitInput::~vtkRadiosityRelitInput() = default;
+
+std::string vtkRadiosityRelitInput::Read(vtkPolyData* data, bool withDirect)
+{
+  Internals& in = *this->Impl;
+  in = Internals();
+  std::vector<std::string> arrays;
+  std::string error = FindLights(data, in.Names);
+  if (error.empty())
+  {
+    error = ArrayNames(data, in.Names, withDirect, arrays);
+  }
+  if (!error.empty())
+  {
+    return error;
+  }
+  const std::pair<vtkFieldData*, vtkIdType> kinds[2] = { { data->GetPointData(), data->GetNumberOfPoints() },
+    { data->GetCellData(), data->GetNumberOfCells() } };
+  radiosity::SolutionTable* tables[2] = { &in.Points, &in.Cells };
+  for (int k = 0; k < 2; ++k)
+  {
+    if (kinds[k].first->GetAbstractArray(arrays[0].c_str()) &&
+      !ReadTable(kinds[k].first, arrays, kinds[k].second, *tables[k], error))
+    {
+      return error;
+    }
+  }
+  if (in.Points.Empty() && in.Cells.Empty())
+  {
+    return "no point or cell array '" + arrays[0] + "'";
+  }
+  in.Defaults = vtkRadiosityLightDefaultColors(data, static_cast<int>(in.Names.size()));
+  return "";
+}
+
+const std::vector<std::string>& vtkRadiosityRelitInput::GetNames() const
+{
+  return this->Impl->Names;
+}
+
+std::vector<radiosity::Vec3> vtkRadiosityRelitInput::GetDefaultColors() const
+{
+  return this->Impl->Defaults;
+}
+
+bool vtkRadiosityRelitInput::HasPoints() const
+{
+  return !this->Impl->Points.Empty();
+}
+
+bool vtkRadiosityRelitInput::HasCells() const
+{
+  return !this->Impl->Cells.Empty();
+}
+
+bool vtkRadiosityRelitInput::Combine(
+  bool cells, const std::vector<double>& weights, vtkFloatArray* out, std::string& error) const
+{
+  return CombineInto(cells ? this->Impl->Cells : this->Impl->Points, weights, out, error);
+}
+
+double vtkRadiosityRelitInput::MeterAtDefaults(vtkPolyData* data) const
+{
+  const bool cells = this->HasCells();
+  const radiosity::SolutionTable& table = cells ? this->Impl->Cells : this->Impl->Points;
+  // The direct parts, where the table holds them, weigh nothing here.
+  std::vector<double> weights = vtkRadiosityFlatColors(this->Impl->Defaults);
+  weights.resize(3 * (table.Floats.size() + table.Doubles.size()), 0.0);
+  vtkNew<vtkFloatArray> sum;
+  std::string error;
+  return !this->Impl->Names.empty() && this->Combine(cells, weights, sum, error)
+    ? vtkRadiosityMeteredExposure(data, sum, cells, 0.0)
+    : 0.0;
 }
 
 namespace

@@ -6,12 +6,51 @@
 #include "vtkRadiosityFiltersModule.h" // for export macro
 #include "vtkType.h"                   // for vtkIdType
 
+#include <memory> // for the reader's state
 #include <string> // for the array names and errors
 #include <vector> // for the weights
 
 class vtkFieldData;
 class vtkFloatArray;
 class vtkPolyData;
+namespace radiosity
+{
+struct Vec3;
+}
+
+/// What relighting reads of a solved data set, read once: its lights (LightNames, else the
+/// names of its Radiosity_<name> arrays) and their default colors, and per kind of item
+/// (points, cells) the per-light arrays, Radiosity_<name> and, where asked for,
+/// Direct_<name> after them, as pointers into the arrays' own memory. The relight filter
+/// and the glTF writer combine from it and meter with it; nothing is looked up twice.
+/// C++ only (Python relights through vtkRadiosityRelight).
+#ifndef __VTK_WRAP__
+class VTKRADIOSITYFILTERS_EXPORT vtkRadiosityRelitInput
+{
+public:
+  vtkRadiosityRelitInput();
+  ~vtkRadiosityRelitInput();
+  /// "" or why `data` cannot be relit: no lights, one combined solution, an array of the
+  /// wrong type or size, the direct parts asked for (`withDirect`) and missing.
+  std::string Read(vtkPolyData* data, bool withDirect = false);
+  const std::vector<std::string>& GetNames() const;
+  std::vector<radiosity::Vec3> GetDefaultColors() const;
+  bool HasPoints() const;
+  bool HasCells() const;
+  /// `out` = the points' (or the cells') arrays weighted by `weights` (3 a light; 6 with
+  /// the direct parts, as radiosity::LightWeights gives them); false, with `error` naming
+  /// the item, where the sum is not finite.
+  bool Combine(bool cells, const std::vector<double>& weights, vtkFloatArray* out, std::string& error) const;
+  /// The exposure a camera meters for `data` (the set read) with every light at its
+  /// default: on the cells where they hold the solutions (they know which ones are lamps),
+  /// else the points. 0 where that lights nothing.
+  double MeterAtDefaults(vtkPolyData* data) const;
+
+private:
+  struct Internals;
+  std::unique_ptr<Internals> Impl;
+};
+#endif
 
 /// out = sum over i of weights[3i .. 3i+2] times the RGB array `arrays[i]` of `data`, for
 /// `tuples` tuples. The arrays must all be float or all double, 3 components, `tuples`

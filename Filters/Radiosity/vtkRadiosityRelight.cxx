@@ -278,66 +278,6 @@ namespace
 {
 const std::string kPrefix = "Radiosity_";
 
-/// The lights: the solver's LightNames, else every Radiosity_* point or cell array; "" or
-/// why the input cannot be relit.
-std::string FindLights(vtkPolyData* input, std::vector<std::string>& names)
-{
-  names = vtkRadiosityLightNames(input->GetFieldData());
-  if (!input->GetFieldData()->GetAbstractArray("LightNames"))
-  {
-    vtkFieldData* source = input->GetPointData()->GetNumberOfArrays() > 0
-      ? static_cast<vtkFieldData*>(input->GetPointData())
-      : static_cast<vtkFieldData*>(input->GetCellData());
-    for (int a = 0; a < source->GetNumberOfArrays(); ++a)
-    {
-      const char* name = source->GetArrayName(a);
-      if (name && std::string(name).compare(0, kPrefix.size(), kPrefix) == 0)
-      {
-        names.push_back(std::string(name).substr(kPrefix.size()));
-      }
-    }
-  }
-  bool perLight = false;
-  for (const std::string& name : names)
-  {
-    perLight = perLight || input->GetCellData()->GetAbstractArray((kPrefix + name).c_str()) ||
-      input->GetPointData()->GetAbstractArray((kPrefix + name).c_str());
-  }
-  if (!perLight && input->GetCellData()->GetAbstractArray("Radiosity"))
-  {
-    return "the input holds one combined solution (SolutionMode StandardCombined); relighting needs the "
-           "per-light solutions of LightTagged or StandardSeparate";
-  }
-  return names.empty() ? "the input has no lights (no field array 'LightNames' and no 'Radiosity_<name>' "
-                         "arrays); run vtkLightTaggedRadiosity first"
-                       : "";
-}
-
-/// The arrays the weights apply to: Radiosity_<name> per light and, where IndirectScale
-/// is not 1, Direct_<name> too (B = s B_total + (1 - s) B_direct over 2k arrays).
-std::string SolutionArrays(
-  vtkPolyData* input, const std::vector<std::string>& names, bool withDirect, std::vector<std::string>& arrays)
-{
-  for (const std::string& name : names)
-  {
-    arrays.push_back(kPrefix + name);
-  }
-  if (!withDirect)
-  {
-    return "";
-  }
-  const std::string direct = "Direct_" + names[0];
-  if (!input->GetPointData()->GetAbstractArray(direct.c_str()) && !input->GetCellData()->GetAbstractArray(direct.c_str()))
-  {
-    return "IndirectScale needs the arrays '" + direct + "' etc.; turn on SeparateDirect in the solver";
-  }
-  for (const std::string& name : names)
-  {
-    arrays.push_back("Direct_" + name);
-  }
-  return "";
-}
-
 /// "" when the moving lights left every value finite, else where one is not.
 std::string CheckFinite(vtkFloatArray* points, vtkFloatArray* cells)
 {
@@ -355,14 +295,12 @@ std::string CheckFinite(vtkFloatArray* points, vtkFloatArray* cells)
 }
 
 std::string vtkRadiosityRelight::ResolveWeights(
-  vtkPolyData* input, const std::vector<std::string>& names, double time, std::vector<double>& weights)
+  const vtkRadiosityRelitInput& relit, double time, std::vector<double>& weights)
 {
-  // Default colors: the solver's, else the mean Emission of each light's cells.
-  const std::vector<radiosity::Vec3> defaultColors =
-    vtkRadiosityLightDefaultColors(input, static_cast<int>(names.size()));
   std::vector<radiosity::LightSetting> effective;
   std::vector<std::string> warnings;
-  const std::string invalid = this->Lights->Resolve(names, defaultColors, time, effective, warnings);
+  const std::string invalid =
+    this->Lights->Resolve(relit.GetNames(), relit.GetDefaultColors(), time, effective, warnings);
   if (!invalid.empty())
   {
     return invalid;
@@ -371,19 +309,18 @@ std::string vtkRadiosityRelight::ResolveWeights(
   {
     vtkWarningMacro(<< warning);
   }
-  this->Internal->Names = names;
+  this->Internal->Names = relit.GetNames();
   this->Internal->Effective = effective;
   weights = radiosity::LightWeights(effective, this->IndirectScale);
   return "";
 }
 
-std::string vtkRadiosityRelight::Combine(vtkPolyData* input, vtkPolyData* movers, vtkPolyData* dynamic,
-  const std::vector<std::string>& arrays, const std::vector<double>& weights, vtkFloatArray* points,
+std::string vtkRadiosityRelight::Combine(const vtkRadiosityRelitInput& relit, vtkPolyData* input,
+  vtkPolyData* movers, vtkPolyData* dynamic, const std::vector<double>& weights, vtkFloatArray* points,
   vtkFloatArray* cells)
 {
   std::string error;
-  if ((points && !vtkRadiosityCombineSolutions(input->GetPointData(), arrays, weights, input->GetNumberOfPoints(), points, error)) ||
-    (cells && !vtkRadiosityCombineSolutions(input->GetCellData(), arrays, weights, input->GetNumberOfCells(), cells, error)))
+  if ((points && !relit.Combine(false, weights, points, error)) || (cells && !relit.Combine(true, weights, cells, error)))
   {
     return error;
   }
@@ -401,7 +338,7 @@ std::string vtkRadiosityRelight::Combine(vtkPolyData* input, vtkPolyData* movers
 }
 
 double vtkRadiosityRelight::MeterAtDefaults(
-  vtkPolyData* input, const std::vector<std::string>& names, bool cells, vtkFloatArray* current)
+  const vtkRadiosityRelitInput& relit, vtkPolyData* input, vtkFloatArray* current)
 {
   // A camera meters the scene as its lights are by default (no setting, no schedule, no
   // moving light), once per solution: a light turned up then brightens the picture, one
@@ -409,25 +346,13 @@ double vtkRadiosityRelight::MeterAtDefaults(
   // picture instead, every change was undone by the meter (all lights at half: the same
   // picture).
   Internals& in = *this->Internal;
-  if (in.MeteredFor == input->GetMTime() && in.MeteredCells == cells && in.Metered > 0)
+  const bool cells = relit.HasCells();
+  if (in.MeteredFor != input->GetMTime() || in.MeteredCells != cells || !(in.Metered > 0))
   {
-    return in.Metered;
+    in.Metered = relit.MeterAtDefaults(input);
+    in.MeteredFor = input->GetMTime();
+    in.MeteredCells = cells;
   }
-  std::vector<std::string> arrays;
-  for (const std::string& name : names)
-  {
-    arrays.push_back("Radiosity_" + name);
-  }
-  const std::vector<double> defaults =
-    vtkRadiosityFlatColors(vtkRadiosityLightDefaultColors(input, static_cast<int>(names.size())));
-  vtkDataSetAttributes* data = cells ? static_cast<vtkDataSetAttributes*>(input->GetCellData()) : input->GetPointData();
-  vtkNew<vtkFloatArray> sum;
-  std::string error;
-  const bool summed = !names.empty() &&
-    vtkRadiosityCombineSolutions(data, arrays, defaults, cells ? input->GetNumberOfCells() : input->GetNumberOfPoints(), sum, error);
-  in.Metered = summed ? vtkRadiosityMeteredExposure(input, sum, cells, 0.0) : 0.0;
-  in.MeteredFor = input->GetMTime();
-  in.MeteredCells = cells;
   return in.Metered > 0 ? in.Metered : vtkRadiosityMeteredExposure(input, current, cells);
 }
 
@@ -452,31 +377,24 @@ void vtkRadiosityRelight::AddSettingsInUse(vtkPolyData* output)
 int vtkRadiosityRelight::Relight(
   vtkPolyData* input, vtkPolyData* movers, vtkPolyData* dynamic, double time, vtkPolyData* output)
 {
-  std::vector<std::string> names, arrays;
+  // Everything the combination needs is read once; then the weights, the sums, the meter.
+  vtkRadiosityRelitInput relit;
   std::vector<double> weights;
   std::string error = !(this->Exposure >= 0 && this->Exposure <= VTK_DOUBLE_MAX) ||
       !(this->IndirectScale >= 0 && this->IndirectScale <= VTK_DOUBLE_MAX)
     ? "Exposure (" + std::to_string(this->Exposure) + ") and IndirectScale (" + std::to_string(this->IndirectScale) +
       ") must be finite and not negative"
-    : FindLights(input, names);
+    : relit.Read(input, this->IndirectScale != 1.0);
   if (error.empty())
   {
-    error = this->ResolveWeights(input, names, time, weights);
+    error = this->ResolveWeights(relit, time, weights);
   }
-  if (error.empty())
-  {
-    error = SolutionArrays(input, names, this->IndirectScale != 1.0, arrays);
-  }
-  const bool hasPoints = error.empty() && input->GetPointData()->GetAbstractArray(arrays[0].c_str()) != nullptr;
-  const bool hasCells = error.empty() && input->GetCellData()->GetAbstractArray(arrays[0].c_str()) != nullptr;
-  if (error.empty() && !hasPoints && !hasCells)
-  {
-    error = "no point or cell array '" + arrays[0] + "'";
-  }
+  const bool hasPoints = error.empty() && relit.HasPoints();
+  const bool hasCells = error.empty() && relit.HasCells();
   vtkNew<vtkFloatArray> pointResult, cellResult;
   if (error.empty())
   {
-    error = this->Combine(input, movers, dynamic, arrays, weights, hasPoints ? pointResult.Get() : nullptr,
+    error = this->Combine(relit, input, movers, dynamic, weights, hasPoints ? pointResult.Get() : nullptr,
       hasCells ? cellResult.Get() : nullptr);
   }
   if (!error.empty())
@@ -488,7 +406,7 @@ int vtkRadiosityRelight::Relight(
   // Metered on the cells where there are some: they know which ones are lamps.
   this->ExposureInUse = this->Exposure > 0
     ? this->Exposure
-    : this->MeterAtDefaults(input, names, hasCells, hasCells ? cellResult.Get() : pointResult.Get());
+    : this->MeterAtDefaults(relit, input, hasCells ? cellResult.Get() : pointResult.Get());
   vtkNew<vtkDoubleArray> exposure;
   exposure->SetName("Exposure");
   exposure->InsertNextValue(this->ExposureInUse);

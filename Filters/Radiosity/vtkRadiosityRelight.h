@@ -46,6 +46,7 @@
 class vtkFloatArray;
 class vtkStringArray;
 class vtkRadiosityMovingScene;
+class vtkRadiosityRelitInput;
 
 #include <memory>  // for the internals
 #include <string>  // for names
@@ -187,18 +188,16 @@ private:
   /// into `output`; 0 with the error reported when it cannot.
   int Relight(vtkPolyData* input, vtkPolyData* movers, vtkPolyData* dynamic, double time, vtkPolyData* output);
   vtkRadiosityMovingScene* Moving = nullptr; ///< scene and Embree shader, rebuilt only when inputs change
-  /// The weights of the lights `names` at `time` (settings, schedule, defaults); "" or
+  /// The weights of the lights `relit` read at `time` (settings, schedule, defaults); "" or
   /// why they are invalid. Keeps the names and settings in effect for the Info properties.
-  std::string ResolveWeights(
-    vtkPolyData* input, const std::vector<std::string>& names, double time, std::vector<double>& weights);
-  /// The exposure metered on `input` with its lights at their defaults; `current` (the
-  /// result, of the cells where `cells`, else of the points) is metered where they light nothing.
-  double MeterAtDefaults(vtkPolyData* input, const std::vector<std::string>& names, bool cells, vtkFloatArray* current);
-  /// The weighted sum of `arrays` into `points` and `cells` (either may be null), plus the
-  /// moving lights; "" or the problem.
-  std::string Combine(vtkPolyData* input, vtkPolyData* movers, vtkPolyData* dynamic,
-    const std::vector<std::string>& arrays, const std::vector<double>& weights, vtkFloatArray* points,
-    vtkFloatArray* cells);
+  std::string ResolveWeights(const vtkRadiosityRelitInput& relit, double time, std::vector<double>& weights);
+  /// The exposure metered on `input` with its lights at their defaults, once per input;
+  /// `current` (the result, of the cells where `relit` has them) where they light nothing.
+  double MeterAtDefaults(const vtkRadiosityRelitInput& relit, vtkPolyData* input, vtkFloatArray* current);
+  /// The weighted sum of what `relit` read into `points` and `cells` (either may be null),
+  /// plus the moving lights; "" or the problem.
+  std::string Combine(const vtkRadiosityRelitInput& relit, vtkPolyData* input, vtkPolyData* movers,
+    vtkPolyData* dynamic, const std::vector<double>& weights, vtkFloatArray* points, vtkFloatArray* cells);
   bool AddMovingLights(vtkPolyData* scene, vtkPolyData* lights, vtkPolyData* dynamic,
     vtkFloatArray* pointResult, vtkFloatArray* cellResult, std::string& error);
   long long LastMovingRays = 0;

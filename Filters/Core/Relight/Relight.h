@@ -69,6 +69,30 @@ void CombineLights(const std::vector<const T*>& solutions, const std::vector<dou
   });
 }
 
+/// One kind of item's per-light solutions (a data set's points, or its cells), as a relight
+/// reads them: arrays of Items RGB tuples in their own memory, all float or all double.
+struct SolutionTable
+{
+  std::size_t Items = 0;
+  std::vector<const float*> Floats;
+  std::vector<const double*> Doubles;
+  bool Empty() const { return Floats.empty() && Doubles.empty(); }
+};
+
+/// CombineLights over whichever type the table holds.
+template <typename Out>
+void CombineTable(const SolutionTable& table, const std::vector<double>& weights, Out* out, const WorkerPool* pool)
+{
+  if (!table.Floats.empty())
+  {
+    CombineLights(table.Floats, weights, table.Items, out, pool);
+  }
+  else
+  {
+    CombineLights(table.Doubles, weights, table.Items, out, pool);
+  }
+}
+
 /// Linear radiosity to 8-bit display color: exposure, clamp, sRGB transfer curve.
 inline unsigned char ToDisplay(double linear, double exposure)
 {
