@@ -180,28 +180,32 @@ bool AddPatchBasis(vtkAlgorithm* self, int level, const radiosity::RadiositySolv
 
 }
 
-int vtkLightTaggedRadiosity::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+void vtkLightTaggedRadiosity::BeforeRun(const Run& run)
 {
-  vtkTable* history = vtkTable::GetData(outputVector, 1);
-  history->Initialize();
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  vtkMultiProcessController* parallel = vtkRadiosityPieces::Parallel(outputVector->GetInformationObject(0));
+  vtkTable::GetData(run.Outputs, 1)->Initialize(); // the convergence history
+}
+
+bool vtkLightTaggedRadiosity::GuardsInput(const Run& run)
+{
   // On ParaView's MPI server every rank joins the gather even when its input failed
   // upstream (rank 0 then fails them all), so none is left waiting.
-  return vtkRadiosityAdapter::Guarded(this, parallel ? nullptr : input, output, [&]() -> int {
-    if (!parallel)
-    {
-      return this->Solve(input, output, history);
-    }
-    // Light transport needs the whole scene: every rank holds it, computes the transport
-    // to its share of the receivers, and keeps its own piece of the result.
-    return vtkRadiosityPieces::SolveTogether(parallel, input, output, history,
-      [this, parallel](vtkPolyData* whole, vtkPolyData* solved, vtkTable* table) {
-        return this->Solve(whole, solved, table, parallel);
-      });
-  }, parallel);
+  return !run.Parallel;
+}
+
+int vtkLightTaggedRadiosity::Execute(const Run& run)
+{
+  vtkTable* history = vtkTable::GetData(run.Outputs, 1);
+  vtkMultiProcessController* parallel = run.Parallel;
+  if (!parallel)
+  {
+    return this->Solve(run.Input, run.Output, history);
+  }
+  // Light transport needs the whole scene: every rank holds it, computes the transport
+  // to its share of the receivers, and keeps its own piece of the result.
+  return vtkRadiosityPieces::SolveTogether(parallel, run.Input, run.Output, history,
+    [this, parallel](vtkPolyData* whole, vtkPolyData* solved, vtkTable* table) {
+      return this->Solve(whole, solved, table, parallel);
+    });
 }
 
 // Options() converts SolverMethod and FormFactorMethod by a cast: the filter's numbers are the core's.

@@ -38,7 +38,7 @@
 #ifndef vtkLightTaggedRadiosity_h
 #define vtkLightTaggedRadiosity_h
 
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkRadiosityAlgorithm.h"
 #include "vtkRadiosityFiltersModule.h" // for export macro
 
 #include <chrono> // for the solve's start time
@@ -62,11 +62,11 @@ namespace vtkRadiosityAdapter
 class WarningList;
 }
 
-class VTKRADIOSITYFILTERS_EXPORT vtkLightTaggedRadiosity : public vtkPolyDataAlgorithm
+class VTKRADIOSITYFILTERS_EXPORT vtkLightTaggedRadiosity : public vtkRadiosityAlgorithm
 {
 public:
   static vtkLightTaggedRadiosity* New();
-  vtkTypeMacro(vtkLightTaggedRadiosity, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkLightTaggedRadiosity, vtkRadiosityAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum SolutionModes
@@ -354,7 +354,9 @@ public:
 protected:
   vtkLightTaggedRadiosity();
   ~vtkLightTaggedRadiosity() override = default;
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int Execute(const Run& run) override;
+  void BeforeRun(const Run& run) override;
+  bool GuardsInput(const Run& run) override;
   int FillOutputPortInformation(int port, vtkInformation* info) override;
 
 private:

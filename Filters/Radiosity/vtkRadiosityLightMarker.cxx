@@ -518,67 +518,64 @@ void ReportMarked(vtkObject* self, vtkPolyData* output, const std::vector<std::s
 }
 } // namespace
 
-int vtkRadiosityLightMarker::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkRadiosityLightMarker::Execute(const Run& run)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  vtkMultiProcessController* parallel = vtkRadiosityPieces::Parallel(outputVector->GetInformationObject(0));
-  return vtkRadiosityAdapter::Guarded(this, input, output, [&]() -> int {
-    if (input->GetNumberOfCells() == 0 && parallel)
-    {
-      output->ShallowCopy(input); // this rank's piece of the scene is empty: nothing to mark
-      return 1;
-    }
-    const auto fail = [&](const std::string& error) {
-      vtkErrorMacro(<< "Cannot mark lights: " << error << ".");
-      return 0;
-    };
-    std::string error = SettingsProblem(input, this->Emission, GetEmissionMinValue());
-    if (!error.empty())
-    {
-      return fail(error);
-    }
-    output->DeepCopy(input); // area lights grow its arrays; the input stays as it was
-    LightArrays lights = ReadLights(output);
-    std::vector<char> chosen(output->GetNumberOfCells(), 0);
-    int selected = 0;
-    error = ChooseCells(output, this->MaterialPattern, this->Chosen->CellIds, vtkSelection::GetData(inputVector[1]),
-      chosen, selected);
-    if (!error.empty())
-    {
-      return fail(error);
-    }
-    vtkRadiosityAdapter::WarningList warnings;
-    if (selected == 0)
-    {
-      warnings.Add(this, "The selection holds no cell of the scene.");
-    }
-    const int count = static_cast<int>(std::count(chosen.begin(), chosen.end(), 1));
-    if (count)
-    {
-      const int light = LightIndex(lights, this->LightName ? this->LightName : "Light");
-      MarkCells(chosen, light, { this->Emission[0], this->Emission[1], this->Emission[2] }, lights);
-    }
-    if (!(error = AddAreaLights(this->Chosen->AreaLights, output, lights)).empty())
-    {
-      return fail(error);
-    }
-    if (!count && this->Chosen->AreaLights.empty() && this->Chosen->Luminaires.empty())
-    {
-      warnings.Add(this, "No cells chosen, no area lights and no luminaires: the scene passes unchanged.");
-    }
-    radiosity::CompactLights(lights.Id, lights.Names);
-    WriteLights(lights, output);
-    if (!(error = AddLuminaires(this->Chosen->Luminaires, lights.Names, output)).empty())
-    {
-      return fail(error);
-    }
-    ReportMarked(this, output, lights.Names, warnings,
-      Marked(count, this->LightName ? this->LightName : "Light", this->Chosen->AreaLights.size(),
-        this->Chosen->Luminaires.size()));
+  vtkPolyData* input = run.Input;
+  vtkPolyData* output = run.Output;
+  vtkMultiProcessController* parallel = run.Parallel;
+  if (input->GetNumberOfCells() == 0 && parallel)
+  {
+    output->ShallowCopy(input); // this rank's piece of the scene is empty: nothing to mark
     return 1;
-  }, parallel);
+  }
+  const auto fail = [&](const std::string& error) {
+    vtkErrorMacro(<< "Cannot mark lights: " << error << ".");
+    return 0;
+  };
+  std::string error = SettingsProblem(input, this->Emission, GetEmissionMinValue());
+  if (!error.empty())
+  {
+    return fail(error);
+  }
+  output->DeepCopy(input); // area lights grow its arrays; the input stays as it was
+  LightArrays lights = ReadLights(output);
+  std::vector<char> chosen(output->GetNumberOfCells(), 0);
+  int selected = 0;
+  error = ChooseCells(output, this->MaterialPattern, this->Chosen->CellIds, vtkSelection::GetData(run.Inputs[1]),
+    chosen, selected);
+  if (!error.empty())
+  {
+    return fail(error);
+  }
+  vtkRadiosityAdapter::WarningList warnings;
+  if (selected == 0)
+  {
+    warnings.Add(this, "The selection holds no cell of the scene.");
+  }
+  const int count = static_cast<int>(std::count(chosen.begin(), chosen.end(), 1));
+  if (count)
+  {
+    const int light = LightIndex(lights, this->LightName ? this->LightName : "Light");
+    MarkCells(chosen, light, { this->Emission[0], this->Emission[1], this->Emission[2] }, lights);
+  }
+  if (!(error = AddAreaLights(this->Chosen->AreaLights, output, lights)).empty())
+  {
+    return fail(error);
+  }
+  if (!count && this->Chosen->AreaLights.empty() && this->Chosen->Luminaires.empty())
+  {
+    warnings.Add(this, "No cells chosen, no area lights and no luminaires: the scene passes unchanged.");
+  }
+  radiosity::CompactLights(lights.Id, lights.Names);
+  WriteLights(lights, output);
+  if (!(error = AddLuminaires(this->Chosen->Luminaires, lights.Names, output)).empty())
+  {
+    return fail(error);
+  }
+  ReportMarked(this, output, lights.Names, warnings,
+    Marked(count, this->LightName ? this->LightName : "Light", this->Chosen->AreaLights.size(),
+      this->Chosen->Luminaires.size()));
+  return 1;
 }
 
 void vtkRadiosityLightMarker::PrintSelf(ostream& os, vtkIndent indent)

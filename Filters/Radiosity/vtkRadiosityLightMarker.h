@@ -22,16 +22,16 @@
 #ifndef vtkRadiosityLightMarker_h
 #define vtkRadiosityLightMarker_h
 
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkRadiosityAlgorithm.h"
 #include "vtkRadiosityFiltersModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
 
-class VTKRADIOSITYFILTERS_EXPORT vtkRadiosityLightMarker : public vtkPolyDataAlgorithm
+class VTKRADIOSITYFILTERS_EXPORT vtkRadiosityLightMarker : public vtkRadiosityAlgorithm
 {
 public:
   static vtkRadiosityLightMarker* New();
-  vtkTypeMacro(vtkRadiosityLightMarker, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkRadiosityLightMarker, vtkRadiosityAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -99,7 +99,7 @@ protected:
   vtkRadiosityLightMarker();
   ~vtkRadiosityLightMarker() override;
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int Execute(const Run& run) override;
 
 private:
   vtkRadiosityLightMarker(const vtkRadiosityLightMarker&) = delete;

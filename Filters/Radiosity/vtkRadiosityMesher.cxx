@@ -487,70 +487,76 @@ void vtkRadiosityMesher::ChooseSizes(vtkDataSet* given, bool parallel, const std
   this->MesherPatchSize = this->MesherElementSize = 0.0; // until this run has meshed
 }
 
-int vtkRadiosityMesher::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+vtkSmartPointer<vtkPolyData> vtkRadiosityMesher::InputOf(vtkInformationVector** inputs)
 {
-  vtkSmartPointer<vtkPolyData> surface = AsPolyData(vtkDataSet::GetData(inputVector[0]));
-  vtkPolyData* input = surface;
+  return AsPolyData(vtkDataSet::GetData(inputs[0]));
+}
+
+bool vtkRadiosityMesher::GuardsInput(const Run& run)
+{
   // On ParaView's MPI server each rank meshes its piece, and a rank may hold none. Every
   // rank joins the same collectives, whatever happened to it (an upstream failure, an
   // exception), so one that fails never leaves the others waiting; patch ids then follow
   // those of the ranks before.
-  vtkMultiProcessController* parallel = vtkRadiosityPieces::Parallel(outputVector->GetInformationObject(0));
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  return vtkRadiosityAdapter::Guarded(this, parallel ? nullptr : input, output, [&]() -> int {
-    const bool upstream = vtkRadiosityAdapter::FailedUpstream(input);
-    const bool empty = !input || input->GetNumberOfCells() == 0;
-    vtkRadiosityAdapter::WarningList warnings;
-    using vtkRadiosityMeshPieces::GatheredScene;
-    const GatheredScene gathered =
-      parallel ? vtkRadiosityMeshPieces::GatherWholeScene(this, parallel, input, upstream, warnings) : GatheredScene();
-    const radiosity::SceneMesh& whole = gathered.Mesh;
-    const radiosity::PolygonArrays wholeArrays{ whole.Points, whole.Offsets, whole.Connectivity };
-    const WholeScene wholeScene{ parallel ? &wholeArrays : nullptr,
-      parallel ? vtkRadiosityPieces::MaxOverRanks(parallel, vtkRadiosityMeshPieces::OwnQuantum(input, upstream)) : 0.0,
-      parallel && gathered.HasSurfaces ? &gathered.Surfaces : nullptr };
-    // Sizes from the scene are taken from all of it, so every rank meshes alike.
-    this->ChooseSizes(vtkDataSet::GetData(inputVector[0]), parallel != nullptr,
-      [&]() { return SuggestedPatch(parallel ? &whole : nullptr, input); });
-    const ElementSizing sizing = parallel && this->MaximumElements > 0
-      ? ElementSizeEverywhere(this, parallel, input, wholeScene, warnings)
-      : ElementSizing{ this->ElementSizeInUse, true };
-    const double localBudget = parallel ? 0.0 : static_cast<double>(this->MaximumElements);
-    radiosity::MeshedPolygons meshed;
-    std::string error = upstream ? "a filter upstream failed"
-      : parallel && empty        ? std::string()
-                                 : vtkRadiosityAdapter::Caught([&]() {
-                                     return MeshPiece(this, input, sizing, localBudget, wholeScene, meshed, warnings);
-                                   });
-    long long firstPatch = 0;
-    if (parallel)
+  return !run.Parallel;
+}
+
+int vtkRadiosityMesher::Execute(const Run& run)
+{
+  vtkPolyData* input = run.Input;
+  vtkMultiProcessController* parallel = run.Parallel;
+  vtkPolyData* output = run.Output;
+  const bool upstream = vtkRadiosityAdapter::FailedUpstream(input);
+  const bool empty = !input || input->GetNumberOfCells() == 0;
+  vtkRadiosityAdapter::WarningList warnings;
+  using vtkRadiosityMeshPieces::GatheredScene;
+  const GatheredScene gathered =
+    parallel ? vtkRadiosityMeshPieces::GatherWholeScene(this, parallel, input, upstream, warnings) : GatheredScene();
+  const radiosity::SceneMesh& whole = gathered.Mesh;
+  const radiosity::PolygonArrays wholeArrays{ whole.Points, whole.Offsets, whole.Connectivity };
+  const WholeScene wholeScene{ parallel ? &wholeArrays : nullptr,
+    parallel ? vtkRadiosityPieces::MaxOverRanks(parallel, vtkRadiosityMeshPieces::OwnQuantum(input, upstream)) : 0.0,
+    parallel && gathered.HasSurfaces ? &gathered.Surfaces : nullptr };
+  // Sizes from the scene are taken from all of it, so every rank meshes alike.
+  this->ChooseSizes(vtkDataSet::GetData(run.Inputs[0]), parallel != nullptr,
+    [&]() { return SuggestedPatch(parallel ? &whole : nullptr, input); });
+  const ElementSizing sizing = parallel && this->MaximumElements > 0
+    ? ElementSizeEverywhere(this, parallel, input, wholeScene, warnings)
+    : ElementSizing{ this->ElementSizeInUse, true };
+  const double localBudget = parallel ? 0.0 : static_cast<double>(this->MaximumElements);
+  radiosity::MeshedPolygons meshed;
+  std::string error = upstream ? "a filter upstream failed"
+    : parallel && empty        ? std::string()
+                               : vtkRadiosityAdapter::Caught([&]() {
+                                   return MeshPiece(this, input, sizing, localBudget, wholeScene, meshed, warnings);
+                                 });
+  long long firstPatch = 0;
+  if (parallel)
+  {
+    error = vtkRadiosityMeshPieces::AgreeOnPieces(parallel, error, empty, input, meshed, firstPatch);
+    warnings = vtkRadiosityMeshPieces::EveryRanksWarnings(parallel, warnings);
+  }
+  if (!error.empty())
+  {
+    if (!upstream) // that filter has said why
     {
-      error = vtkRadiosityMeshPieces::AgreeOnPieces(parallel, error, empty, input, meshed, firstPatch);
-      warnings = vtkRadiosityMeshPieces::EveryRanksWarnings(parallel, warnings);
+      vtkErrorMacro(<< "Cannot mesh: " << error << ".");
     }
-    if (!error.empty())
-    {
-      if (!upstream) // that filter has said why
-      {
-        vtkErrorMacro(<< "Cannot mesh: " << error << ".");
-      }
-      return 0;
-    }
-    if (empty)
-    {
-      output->GetFieldData()->ShallowCopy(input->GetFieldData());
-      return 1;
-    }
-    WriteMeshed(output, input, meshed, firstPatch, this->PatchSizeInUse, wholeScene.PointQuantum, warnings);
-    // The level for the solver (which takes its gather rays and separation from it).
-    output->GetFieldData()->RemoveArray("Accuracy");
-    if (this->Accuracy >= 0)
-    {
-      AddFieldInt(output->GetFieldData(), "Accuracy", this->Accuracy);
-    }
-    this->MesherPatchSize = this->PatchSizeInUse;
-    this->MesherElementSize = meshed.ElementSize;
+    return 0;
+  }
+  if (empty)
+  {
+    output->GetFieldData()->ShallowCopy(input->GetFieldData());
     return 1;
-  }, parallel);
+  }
+  WriteMeshed(output, input, meshed, firstPatch, this->PatchSizeInUse, wholeScene.PointQuantum, warnings);
+  // The level for the solver (which takes its gather rays and separation from it).
+  output->GetFieldData()->RemoveArray("Accuracy");
+  if (this->Accuracy >= 0)
+  {
+    AddFieldInt(output->GetFieldData(), "Accuracy", this->Accuracy);
+  }
+  this->MesherPatchSize = this->PatchSizeInUse;
+  this->MesherElementSize = meshed.ElementSize;
+  return 1;
 }

@@ -20,17 +20,17 @@
 #ifndef vtkRadiosityMesher_h
 #define vtkRadiosityMesher_h
 
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkRadiosityAlgorithm.h"
 #include "vtkRadiosityFiltersModule.h" // for export macro
 
 #include <functional> // for std::function
 #include <memory>     // for std::unique_ptr
 
-class VTKRADIOSITYFILTERS_EXPORT vtkRadiosityMesher : public vtkPolyDataAlgorithm
+class VTKRADIOSITYFILTERS_EXPORT vtkRadiosityMesher : public vtkRadiosityAlgorithm
 {
 public:
   static vtkRadiosityMesher* New();
-  vtkTypeMacro(vtkRadiosityMesher, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkRadiosityMesher, vtkRadiosityAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -169,7 +169,9 @@ protected:
   ~vtkRadiosityMesher() override;
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int Execute(const Run& run) override;
+  vtkSmartPointer<vtkPolyData> InputOf(vtkInformationVector** inputs) override;
+  bool GuardsInput(const Run& run) override;
 
 private:
   vtkRadiosityMesher(const vtkRadiosityMesher&) = delete;

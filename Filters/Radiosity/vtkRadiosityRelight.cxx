@@ -222,12 +222,23 @@ vtkSmartPointer<vtkUnsignedCharArray> Display(vtkFloatArray* linear, double expo
 }
 }
 
-int vtkRadiosityRelight::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+void vtkRadiosityRelight::BeforeRun(const Run&)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  this->Internal->Names.clear();
+  this->Internal->Effective.clear();
+}
+
+bool vtkRadiosityRelight::GuardsInput(const Run& run)
+{
+  // Moving lights on ParaView's MPI server: every rank joins the gather of the whole scene.
+  return !(run.Parallel && (this->GetNumberOfInputConnections(1) || this->GetNumberOfInputConnections(2)));
+}
+
+int vtkRadiosityRelight::Execute(const Run& run)
+{
+  vtkPolyData* input = run.Input;
+  vtkPolyData* output = run.Output;
+  vtkInformation* outInfo = run.Outputs->GetInformationObject(0);
   double time = 0;
   if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
   {
@@ -237,41 +248,35 @@ int vtkRadiosityRelight::RequestData(
   {
     time = outInfo->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS())[0];
   }
-  vtkPolyData* movers = this->GetNumberOfInputConnections(1) ? vtkPolyData::GetData(inputVector[1], 0) : nullptr;
-  vtkPolyData* dynamic = this->GetNumberOfInputConnections(2) ? vtkPolyData::GetData(inputVector[2], 0) : nullptr;
-  this->Internal->Names.clear();
-  this->Internal->Effective.clear();
-  vtkMultiProcessController* parallel = vtkRadiosityPieces::Parallel(outInfo);
+  vtkPolyData* movers = this->GetNumberOfInputConnections(1) ? vtkPolyData::GetData(run.Inputs[1], 0) : nullptr;
+  vtkPolyData* dynamic = this->GetNumberOfInputConnections(2) ? vtkPolyData::GetData(run.Inputs[2], 0) : nullptr;
+  vtkMultiProcessController* parallel = run.Parallel;
   if (parallel && (this->GetNumberOfInputConnections(1) || this->GetNumberOfInputConnections(2)))
   {
     // Moving lights shoot into the whole scene past every occluder: each rank relights
     // the whole (the pieces of all three inputs gathered) and keeps its own piece.
-    return vtkRadiosityAdapter::Guarded(this, nullptr, output, [&]() -> int {
-      vtkNew<vtkPolyData> allMovers, allDynamic;
-      vtkRadiosityPieces::AllGather(parallel, movers, allMovers);
-      vtkRadiosityPieces::AllGather(parallel, dynamic, allDynamic);
-      vtkNew<vtkTable> unused;
-      // The whole scene is kept between frames, so the moving-light shader is too.
-      const int ok = vtkRadiosityPieces::SolveTogether(parallel, input, output, unused,
-        [&](vtkPolyData* whole, vtkPolyData* result, vtkTable*) {
-          return this->Relight(whole, movers ? allMovers.Get() : nullptr, dynamic ? allDynamic.Get() : nullptr, time, result);
-        },
-        &this->Internal->Gathered);
-      if (ok && !this->Lights->Rig().KeyframeTimes().empty())
-      {
-        output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);
-      }
-      return ok;
-    }, parallel);
-  }
-  return vtkRadiosityAdapter::Guarded(this, input, output, [&]() -> int {
-    if (input->GetNumberOfCells() == 0 && parallel)
+    vtkNew<vtkPolyData> allMovers, allDynamic;
+    vtkRadiosityPieces::AllGather(parallel, movers, allMovers);
+    vtkRadiosityPieces::AllGather(parallel, dynamic, allDynamic);
+    vtkNew<vtkTable> unused;
+    // The whole scene is kept between frames, so the moving-light shader is too.
+    const int ok = vtkRadiosityPieces::SolveTogether(parallel, input, output, unused,
+      [&](vtkPolyData* whole, vtkPolyData* result, vtkTable*) {
+        return this->Relight(whole, movers ? allMovers.Get() : nullptr, dynamic ? allDynamic.Get() : nullptr, time, result);
+      },
+      &this->Internal->Gathered);
+    if (ok && !this->Lights->Rig().KeyframeTimes().empty())
     {
-      output->ShallowCopy(input); // this rank's piece of the scene is empty: nothing to relight
-      return 1;
+      output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);
     }
-    return this->Relight(input, movers, dynamic, time, output);
-  }, parallel);
+    return ok;
+  }
+  if (input->GetNumberOfCells() == 0 && parallel)
+  {
+    output->ShallowCopy(input); // this rank's piece of the scene is empty: nothing to relight
+    return 1;
+  }
+  return this->Relight(input, movers, dynamic, time, output);
 }
 
 namespace

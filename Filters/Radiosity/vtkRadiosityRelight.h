@@ -38,7 +38,7 @@
 #ifndef vtkRadiosityRelight_h
 #define vtkRadiosityRelight_h
 
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkRadiosityAlgorithm.h"
 #include "vtkRadiosityFiltersModule.h" // for export macro
 #include "vtkRadiosityLights.h"        // for the shortcuts to the light settings
 #include "vtkSmartPointer.h"             // for the info arrays
@@ -52,11 +52,11 @@ class vtkRadiosityRelitInput;
 #include <string>  // for names
 #include <vector>  // for names and weights
 
-class VTKRADIOSITYFILTERS_EXPORT vtkRadiosityRelight : public vtkPolyDataAlgorithm
+class VTKRADIOSITYFILTERS_EXPORT vtkRadiosityRelight : public vtkRadiosityAlgorithm
 {
 public:
   static vtkRadiosityRelight* New();
-  vtkTypeMacro(vtkRadiosityRelight, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkRadiosityRelight, vtkRadiosityAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -170,7 +170,9 @@ protected:
   vtkRadiosityRelight();
   ~vtkRadiosityRelight() override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int Execute(const Run& run) override;
+  void BeforeRun(const Run& run) override;
+  bool GuardsInput(const Run& run) override;
   int FillInputPortInformation(int port, vtkInformation* info) override;
 
 private:

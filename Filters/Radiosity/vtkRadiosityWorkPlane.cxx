@@ -156,62 +156,59 @@ int UpOf(int asked, const double bounds[6])
 }
 }
 
-int vtkRadiosityWorkPlane::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkRadiosityWorkPlane::Execute(const Run& run)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  return vtkRadiosityAdapter::Guarded(this, input, output, [&]() -> int {
-    namespace steps = vtkRadiositySolveOutput;
-    steps::SceneInput scene;
-    std::string error = steps::ReadInput(input, radiosity::EffectMode::Auto, scene);
-    const std::vector<std::string> names = steps::SolutionNames(scene, false);
-    const std::vector<radiosity::Vec3> solution = error.empty() ? ElementSolution(input, names, error) : std::vector<radiosity::Vec3>();
-    double bounds[6];
-    input->GetBounds(bounds);
-    if (std::any_of(this->Area, this->Area + 6, [](double v) { return v != 0; }))
-    {
-      std::copy(this->Area, this->Area + 6, bounds);
-    }
-    const radiosity::WorkPlaneGrid grid =
-      error.empty() ? radiosity::LayWorkPlane(bounds, UpOf(this->UpAxis, bounds), this->Height, this->Border, this->Spacing, error)
-                    : radiosity::WorkPlaneGrid();
-    const vtkRadiosityPreparedScenes::MeshKey key = vtkRadiosityPreparedScenes::KeyOf(input);
-    radiosity::PreparedScene prepared = vtkRadiosityPreparedScenes::Find(input, key, true);
-    if (error.empty() && !prepared.Geometry)
-    {
-      error = radiosity::PrepareTransport(scene.Mesh, vtkRadiosityAdapter::Threads(0), radiosity::ProcessGroup(), prepared);
-      vtkRadiosityPreparedScenes::Keep(input, key, prepared);
-    }
-    if (!error.empty())
-    {
-      vtkErrorMacro(<< "Cannot lay the work plane: " << error << ".");
-      return 0;
-    }
-    const int s = static_cast<int>(names.size());
-    radiosity::GatherSettings settings;
-    settings.Rays = this->GatherRays;
-    settings.PointLights = &scene.PointLights;
-    settings.FirstPointSolution = scene.Grouping.Solutions;
-    const vtkRadiosityAbortWatch abort(this);
-    const radiosity::GatheredPoints at = radiosity::IrradianceAtPoints(scene.Mesh, *prepared.Geometry, *prepared.Rays,
-      EveryEmission(scene, s),
-      solution, s, grid.Points, std::vector<radiosity::Vec3>(grid.Points.size(), grid.Normal), settings,
-      vtkRadiosityAdapter::Threads(0), [this, &abort](double f) {
-        this->UpdateProgress(f);
-        return !abort.Stop();
-      });
-    if (at.Aborted)
-    {
-      vtkErrorMacro(<< "Cannot lay the work plane: aborted.");
-      return 0;
-    }
-    WriteGrid(grid, output);
-    const radiosity::PlaneStatistics stats = AddIlluminance(scene, names, at, output);
-    vtkLogF(INFO, "Work plane: %d x %d points, %.3g apart; mean %.4g, minimum %.4g, uniformity %.3f", grid.Nu, grid.Nv,
-      std::max(grid.SpacingU, grid.SpacingV), stats.Mean, stats.Minimum, stats.Uniformity);
-    return 1;
-  });
+  vtkPolyData* input = run.Input;
+  vtkPolyData* output = run.Output;
+  namespace steps = vtkRadiositySolveOutput;
+  steps::SceneInput scene;
+  std::string error = steps::ReadInput(input, radiosity::EffectMode::Auto, scene);
+  const std::vector<std::string> names = steps::SolutionNames(scene, false);
+  const std::vector<radiosity::Vec3> solution = error.empty() ? ElementSolution(input, names, error) : std::vector<radiosity::Vec3>();
+  double bounds[6];
+  input->GetBounds(bounds);
+  if (std::any_of(this->Area, this->Area + 6, [](double v) { return v != 0; }))
+  {
+    std::copy(this->Area, this->Area + 6, bounds);
+  }
+  const radiosity::WorkPlaneGrid grid =
+    error.empty() ? radiosity::LayWorkPlane(bounds, UpOf(this->UpAxis, bounds), this->Height, this->Border, this->Spacing, error)
+                  : radiosity::WorkPlaneGrid();
+  const vtkRadiosityPreparedScenes::MeshKey key = vtkRadiosityPreparedScenes::KeyOf(input);
+  radiosity::PreparedScene prepared = vtkRadiosityPreparedScenes::Find(input, key, true);
+  if (error.empty() && !prepared.Geometry)
+  {
+    error = radiosity::PrepareTransport(scene.Mesh, vtkRadiosityAdapter::Threads(0), radiosity::ProcessGroup(), prepared);
+    vtkRadiosityPreparedScenes::Keep(input, key, prepared);
+  }
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< "Cannot lay the work plane: " << error << ".");
+    return 0;
+  }
+  const int s = static_cast<int>(names.size());
+  radiosity::GatherSettings settings;
+  settings.Rays = this->GatherRays;
+  settings.PointLights = &scene.PointLights;
+  settings.FirstPointSolution = scene.Grouping.Solutions;
+  const vtkRadiosityAbortWatch abort(this);
+  const radiosity::GatheredPoints at = radiosity::IrradianceAtPoints(scene.Mesh, *prepared.Geometry, *prepared.Rays,
+    EveryEmission(scene, s),
+    solution, s, grid.Points, std::vector<radiosity::Vec3>(grid.Points.size(), grid.Normal), settings,
+    vtkRadiosityAdapter::Threads(0), [this, &abort](double f) {
+      this->UpdateProgress(f);
+      return !abort.Stop();
+    });
+  if (at.Aborted)
+  {
+    vtkErrorMacro(<< "Cannot lay the work plane: aborted.");
+    return 0;
+  }
+  WriteGrid(grid, output);
+  const radiosity::PlaneStatistics stats = AddIlluminance(scene, names, at, output);
+  vtkLogF(INFO, "Work plane: %d x %d points, %.3g apart; mean %.4g, minimum %.4g, uniformity %.3f", grid.Nu, grid.Nv,
+    std::max(grid.SpacingU, grid.SpacingV), stats.Mean, stats.Minimum, stats.Uniformity);
+  return 1;
 }
 
 void vtkRadiosityWorkPlane::PrintSelf(ostream& os, vtkIndent indent)

@@ -19,14 +19,14 @@
 #ifndef vtkRadiosityWorkPlane_h
 #define vtkRadiosityWorkPlane_h
 
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkRadiosityAlgorithm.h"
 #include "vtkRadiosityFiltersModule.h" // for export macro
 
-class VTKRADIOSITYFILTERS_EXPORT vtkRadiosityWorkPlane : public vtkPolyDataAlgorithm
+class VTKRADIOSITYFILTERS_EXPORT vtkRadiosityWorkPlane : public vtkRadiosityAlgorithm
 {
 public:
   static vtkRadiosityWorkPlane* New();
-  vtkTypeMacro(vtkRadiosityWorkPlane, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkRadiosityWorkPlane, vtkRadiosityAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -69,7 +69,7 @@ public:
 protected:
   vtkRadiosityWorkPlane() = default;
   ~vtkRadiosityWorkPlane() override = default;
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int Execute(const Run& run) override;
 
 private:
   vtkRadiosityWorkPlane(const vtkRadiosityWorkPlane&) = delete;
