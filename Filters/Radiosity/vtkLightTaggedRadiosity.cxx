@@ -27,6 +27,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <cstdio>
 
 vtkStandardNewMacro(vtkLightTaggedRadiosity);
 
@@ -247,16 +249,72 @@ namespace
 {
 /// The mesher's Accuracy level, stamped on the input (field array Accuracy), sets the
 /// gather's rays and the clustered method's separation; without it the filter's own do.
-void FollowAccuracy(vtkPolyData* input, radiosity::SolverOptions& options)
+/// Returns the level (-1: none).
+int FollowAccuracy(vtkPolyData* input, radiosity::SolverOptions& options)
 {
   vtkDataArray* level = input ? input->GetFieldData()->GetArray("Accuracy") : nullptr;
   const double value = level && level->GetNumberOfTuples() == 1 ? level->GetTuple1(0) : -1;
-  if (value >= 0 && value < radiosity::kAccuracyLevels)
+  if (!(value >= 0 && value < radiosity::kAccuracyLevels))
   {
-    const radiosity::AccuracyLevel& chosen = radiosity::AccuracyLevelOf(static_cast<int>(value));
-    options.Gather.Rays = chosen.GatherRays;
-    options.Gather.Sweeps = chosen.GatherSweeps;
-    options.Clustered.Separation = chosen.ClusterSeparation;
+    return -1;
+  }
+  const radiosity::AccuracyLevel& chosen = radiosity::AccuracyLevelOf(static_cast<int>(value));
+  options.Gather.Rays = chosen.GatherRays;
+  options.Gather.Sweeps = chosen.GatherSweeps;
+  options.Clustered.Separation = chosen.ClusterSeparation;
+  return static_cast<int>(value);
+}
+
+/// A setting the user changed that the solve did not use says so: one an Accuracy level
+/// replaced (`level`, -1: none), or one only another method than `ran` reads (the
+/// method table's OwnSettings). Changed: unlike a new filter's.
+void SayUnusedSettings(vtkLightTaggedRadiosity* self, int level, radiosity::SolverMethod ran,
+  vtkRadiosityAdapter::WarningList& warnings)
+{
+  vtkNew<vtkLightTaggedRadiosity> fresh;
+  const radiosity::AccuracyLevel& chosen = radiosity::AccuracyLevelOf(std::max(level, 0));
+  const double none = std::nan("");
+  const struct
+  {
+    const char* Name;
+    double Value, Default, Stamped;
+  } settings[] = {
+    { "GatherRays", double(self->GetGatherRays()), double(fresh->GetGatherRays()), double(chosen.GatherRays) },
+    { "GatherSweeps", double(self->GetGatherSweeps()), double(fresh->GetGatherSweeps()), double(chosen.GatherSweeps) },
+    { "ClusterSeparation", self->GetClusterSeparation(), fresh->GetClusterSeparation(), chosen.ClusterSeparation },
+    { "FormFactorMethod", double(self->GetFormFactorMethod()), double(fresh->GetFormFactorMethod()), none },
+  };
+  const radiosity::MethodEntry* ranEntry = radiosity::FindSolverMethod(ran);
+  char text[320];
+  for (const auto& s : settings)
+  {
+    const radiosity::MethodEntry* owner = radiosity::MethodOwning(s.Name);
+    if (s.Value == s.Default)
+    {
+      continue;
+    }
+    if (level >= 0 && !std::isnan(s.Stamped))
+    {
+      if (s.Value == s.Stamped)
+      {
+        continue;
+      }
+      std::snprintf(text, sizeof(text), "%s %g was not used: the input's Accuracy level (%s, set in the mesher) sets %g; "
+        "set the mesher's Accuracy to Custom to use the solver's own", s.Name, s.Value, chosen.Name, s.Stamped);
+      warnings.Add(self, text);
+    }
+    else if (owner && ranEntry && owner != ranEntry)
+    {
+      static const char* const estimators[] = { "Analytic", "Hemicube", "MonteCarlo" };
+      char number[32];
+      std::snprintf(number, sizeof(number), "%g", s.Value);
+      const std::string value = std::string(s.Name) == "FormFactorMethod" && s.Value >= 0 && s.Value <= 2
+        ? estimators[static_cast<int>(s.Value)]
+        : number;
+      std::snprintf(text, sizeof(text), "%s %s was not used: only the %s method reads it, and %s ran", s.Name,
+        value.c_str(), owner->Name, ranEntry->Name);
+      warnings.Add(self, text);
+    }
   }
 }
 } // namespace
@@ -307,7 +365,7 @@ int vtkLightTaggedRadiosity::Solve(
     warnings.Add(this, warning);
   }
   radiosity::SolverOptions options = this->Options(threads, group);
-  FollowAccuracy(input, options);
+  const int level = FollowAccuracy(input, options);
   const vtkRadiosityAbortWatch abort(this);
   options.Progress = [this, abort](double f) {
     this->UpdateProgress(f);
@@ -317,6 +375,7 @@ int vtkLightTaggedRadiosity::Solve(
   vtkLogStartScope(TRACE, "shoot");
   const radiosity::Solution result = radiosity::SolveLights(solver, scene.Mesh, scene.Grouping, scene.Emission, mode, options, scene.PointLights);
   vtkLogEndScope("shoot");
+  SayUnusedSettings(this, level, result.Statistics.SolverMethod, warnings);
   return this->WriteResult(input, output, history, scene, solver, result, options, abort.Stop(), start, warnings,
     ranks ? ranks->GetLocalProcessId() : 0);
 }

@@ -4,6 +4,7 @@
 #include "Solve/ProgressiveRadiosity.h"
 
 #include <cstdio>
+#include <sstream>
 
 namespace radiosity
 {
@@ -36,9 +37,10 @@ std::string DescribeClustered(const SolverStatistics& stats)
 const std::vector<MethodEntry>& SolverMethodTable()
 {
   static const std::vector<MethodEntry> table = {
-    { SolverMethod::ProgressiveRefinement, "ProgressiveRefinement", SolveProgressive, DescribeProgressive },
-    { SolverMethod::Hierarchical, "Hierarchical", SolveHierarchical, DescribeHierarchical },
-    { SolverMethod::Clustered, "Clustered", SolveClustered, DescribeClustered },
+    { SolverMethod::ProgressiveRefinement, "ProgressiveRefinement", SolveProgressive, DescribeProgressive,
+      "FormFactorMethod" },
+    { SolverMethod::Hierarchical, "Hierarchical", SolveHierarchical, DescribeHierarchical, "" },
+    { SolverMethod::Clustered, "Clustered", SolveClustered, DescribeClustered, "ClusterSeparation" },
   };
   return table;
 }
@@ -50,6 +52,22 @@ const MethodEntry* FindSolverMethod(SolverMethod method)
     if (entry.Method == method)
     {
       return &entry;
+    }
+  }
+  return nullptr;
+}
+
+const MethodEntry* MethodOwning(const std::string& setting)
+{
+  for (const MethodEntry& entry : SolverMethodTable())
+  {
+    std::istringstream names(entry.OwnSettings);
+    for (std::string name; names >> name;)
+    {
+      if (name == setting)
+      {
+        return &entry;
+      }
     }
   }
   return nullptr;

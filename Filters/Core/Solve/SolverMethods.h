@@ -19,6 +19,9 @@ struct MethodEntry
   SolveFunction Solve;
   /// What the method's transport held, from its statistics (the start of SolverMethod).
   std::string (*Describe)(const SolverStatistics& stats);
+  /// The filter's settings this method alone reads, by name, space-separated: one set for
+  /// a solve that another method ran is reported as unused (MethodOwning).
+  const char* OwnSettings;
 };
 
 /// Every method, in the order of their SolverMethod values (Auto, which is a choice
@@ -26,6 +29,8 @@ struct MethodEntry
 const std::vector<MethodEntry>& SolverMethodTable();
 /// The entry of `method`; null for Auto or a value no method has.
 const MethodEntry* FindSolverMethod(SolverMethod method);
+/// The method whose OwnSettings name `setting`; null where every method reads it (or none).
+const MethodEntry* MethodOwning(const std::string& setting);
 /// The method that ran, what its transport held, the face clusters and why it was chosen
 /// (the field array SolverMethod), e.g. "Hierarchical: ...; chosen by Auto: ...".
 std::string DescribeSolve(const SolverStatistics& stats);

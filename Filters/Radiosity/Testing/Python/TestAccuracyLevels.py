@@ -104,6 +104,11 @@ def pipeline(level, gather_rays=None):
     return mesher, solver
 
 
+def warnings_of(data):
+    listed = data.GetFieldData().GetAbstractArray("Warnings")
+    return [listed.GetValue(i) for i in range(listed.GetNumberOfValues())] if listed else []
+
+
 def effect(data, name):
     fields = data.GetFieldData()
     names = fields.GetAbstractArray("Effects")
@@ -124,9 +129,27 @@ check(out.GetNumberOfCells() == runs["fine"].GetOutput().GetNumberOfCells() and
 mesher, solver = pipeline(0, gather_rays=0)  # the level's 64 rays, not the solver's own 0
 check("then 64 rays" in effect(solver.GetOutput(), "FinalGather"),
       f"the solver takes Preview's gather rays from the mesher's stamp: {effect(solver.GetOutput(), 'FinalGather')}")
+said = warnings_of(solver.GetOutput())
+check(any("GatherRays 0 was not used" in w and "sets 64" in w for w in said),
+      f"...and says that its own GatherRays 0 was not used: {said}")
 mesher, solver = pipeline(-1, gather_rays=0)
 check(solver.GetOutput().GetFieldData().GetArray("Accuracy") is None and
       "not asked for" in effect(solver.GetOutput(), "FinalGather"),
       "Custom stamps nothing: the solver's own GatherRays 0 holds")
+
+check(not any("was not used" in w for w in warnings_of(solver.GetOutput())),
+      "...and says nothing of it, the solver's own being used")
+
+# --- a setting only another method reads is reported, not silently dropped ----------------
+for method, separation, reported in (("Hierarchical", 6.0, True), ("Clustered", 6.0, False),
+                                     ("Hierarchical", solver.GetClusterSeparation(), False)):
+    alone = relight.vtkLightTaggedRadiosity()
+    alone.SetInputConnection(mesher.GetOutputPort())
+    getattr(alone, "SetSolverMethodTo" + method)()
+    alone.SetClusterSeparation(separation)
+    alone.Update()
+    said = [w for w in warnings_of(alone.GetOutput()) if "ClusterSeparation" in w]
+    check(bool(said) == reported and all("only the Clustered method reads it, and Hierarchical ran" in w for w in said),
+          f"ClusterSeparation {separation:g} with the {method} method: {'reported' if reported else 'nothing said'} ({said})")
 
 finish("TestAccuracyLevels")
