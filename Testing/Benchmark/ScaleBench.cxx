@@ -132,6 +132,7 @@ int main(int argc, char* argv[])
   int gatherRays = 256;      // the final gather, as the solver filter does by default (0: off)
   double cache = GatherSettings().CacheAccuracy; // the gather's irradiance cache (0: every point gathers)
   int sweeps = GatherSettings().Sweeps, sweepRays = GatherSettings().SweepRays; // the gather's passes over the elements
+  SolverMethod method = SolverMethod::Hierarchical; // --method: another (auto: Auto's choice)
   double lampGrading = 0.2;  // finer elements by the lamps, as the mesher filter does by default (0: off)
   int lightRays = GatherSettings().LightRays; // shadow rays a point casts to each lamp it sees
   bool combinedToo = true;   // also solve k = 1 combined, for the k=8 / k=1 ratio
@@ -174,6 +175,8 @@ int main(int argc, char* argv[])
       cache = std::atof(argv[i + 1]);
     else if (key == "--grading")
       lampGrading = std::atof(argv[i + 1]);
+    else if (key == "--method")
+      method = MethodNamed(argv[i + 1]);
     else if (key == "--combined")
       combinedToo = std::atoi(argv[i + 1]) != 0;
   }
@@ -245,7 +248,7 @@ int main(int argc, char* argv[])
     const double t2 = Now();
     const int patches = static_cast<int>(solver.Geometry().PatchElements.size());
     SolverOptions options;
-    options.SolverMethod = SolverMethod::Hierarchical;
+    options.SolverMethod = method;
     options.MaximumShots = 1000000;
     options.Gather.Rays = gatherRays;
     options.Gather.CacheAccuracy = cache;
@@ -256,7 +259,7 @@ int main(int argc, char* argv[])
     const Run tagged = SolveRoom(solver, mesh, lights, SolutionMode::LightTagged, options);
     const std::vector<double> sampled = Sample(solver, mesh, tagged.Result, probes);
     mean = MeanError(sampled, referenceValues, lights, &worst);
-    Print("hierarchical, k=8 tagged", mesh, patches, tagged, mean, worst);
+    Print((ShortMethodName(tagged.Result.Statistics.SolverMethod) + ", k=8 tagged").c_str(), mesh, patches, tagged, mean, worst);
     if (!valuesPath.empty())
     {
       std::ofstream values(valuesPath);
