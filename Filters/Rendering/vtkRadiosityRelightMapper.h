@@ -64,8 +64,8 @@ public:
   ///@}
 
   /// The lights of `data` (the solver's output) and their settings in effect at Time:
-  /// `names` gets one name per light, `settings` six strings per light (name, r, g, b,
-  /// intensity, enabled 1/0), as vtkRadiosityRelight's LightSettingsInfo.
+  /// `names` gets one name per light, `settings` one row per light (the columns of
+  /// vtkRadiosityLights::GetSettingRowColumnName), as vtkRadiosityRelight's LightSettingsInfo.
   void DescribeLights(vtkPolyData* data, vtkStringArray* names, vtkStringArray* settings);
 
   ///@{

@@ -61,7 +61,7 @@ public:
   void SetComputedColors(int computed);
 
   ///@{
-  /// The lights of the shown data, and the settings in effect (six strings per light).
+  /// The lights of the shown data, and the settings in effect (a row per light, as LightSettings).
   vtkStringArray* GetLightNames();
   vtkStringArray* GetLightSettingsInfo();
   ///@}
