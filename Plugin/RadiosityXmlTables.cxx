@@ -26,9 +26,20 @@ std::string Number(double value)
   return text;
 }
 
+/// `text` as XML text or an attribute's value.
+std::string Escaped(const std::string& text)
+{
+  std::string out;
+  for (char c : text)
+  {
+    out += c == '&' ? "&amp;" : c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '"' ? "&quot;" : std::string(1, c);
+  }
+  return out;
+}
+
 std::string Entry(int value, const std::string& text)
 {
-  return "<Entry value=\"" + std::to_string(value) + "\" text=\"" + text + "\" />";
+  return "<Entry value=\"" + std::to_string(value) + "\" text=\"" + Escaped(text) + "\" />";
 }
 
 std::string SolverMethodEntries()
@@ -108,12 +119,12 @@ const std::map<std::string, std::function<std::string()>>& Facts()
 {
   static const std::map<std::string, std::function<std::string()>> facts = {
     { "SOLVER_METHOD_ENTRIES", SolverMethodEntries },
-    { "SCENE_FILE_EXTENSIONS", [] { return vtkRadiositySceneReader::GetFileExtensions(); } },
+    { "SCENE_FILE_EXTENSIONS", [] { return Escaped(vtkRadiositySceneReader::GetFileExtensions()); } },
     { "LIGHT_ROW_CELLS", [] { return std::to_string(vtkRadiosityLights::GetSettingRowCells()); } },
     { "LIGHT_ROW_TYPES", LightRowTypes },
-    { "LIGHT_ROW_COLUMNS", LightRowColumns },
+    { "LIGHT_ROW_COLUMNS", [] { return Escaped(LightRowColumns()); } },
     { "ACCURACY_LEVEL_ENTRIES", AccuracyEntries },
-    { "ACCURACY_LEVEL_TABLE", AccuracyTable },
+    { "ACCURACY_LEVEL_TABLE", [] { return Escaped(AccuracyTable()); } },
   };
   return facts;
 }
@@ -167,6 +178,15 @@ int main(int argc, char* argv[])
   {
     std::cerr << argv[1] << ": " << (in ? "no table gives @" + unknown + "@" : std::string("cannot be read")) << "\n";
     return 1;
+  }
+  // Unchanged, the file is left as it is (its time too), so that a relinked library does
+  // not remake the plugin's XML and everything after it.
+  std::ifstream before(argv[2], std::ios::binary);
+  std::stringstream written;
+  written << before.rdbuf();
+  if (before && written.str() == filled)
+  {
+    return 0;
   }
   std::ofstream out(argv[2], std::ios::binary);
   out << filled;

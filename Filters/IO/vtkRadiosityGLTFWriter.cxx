@@ -205,14 +205,23 @@ vtkSmartPointer<vtkFloatArray> RelitRadiosity(vtkPolyData* input, bool cells)
     }
     return values;
   }
-  // The lights at the colors the relight filter starts from (its ResolveWeights).
-  vtkRadiosityRelitInput solved;
+  const std::vector<std::string> names = vtkRadiosityLightNames(input->GetFieldData());
+  // The colors the relight filter starts from (vtkRadiosityRelight::ResolveWeights).
+  const std::vector<double> weights =
+    vtkRadiosityFlatColors(vtkRadiosityLightDefaultColors(input, static_cast<int>(names.size())));
+  std::vector<std::string> arrays;
+  for (const std::string& name : names)
+  {
+    arrays.push_back("Radiosity_" + name);
+  }
   auto combined = vtkSmartPointer<vtkFloatArray>::New();
   std::string error;
-  const bool read = solved.Read(input).empty() && (cells ? solved.HasCells() : solved.HasPoints());
-  return read && solved.Combine(cells, vtkRadiosityFlatColors(solved.GetDefaultColors()), combined, error)
-    ? combined
-    : nullptr;
+  const vtkIdType tuples = cells ? input->GetNumberOfCells() : input->GetNumberOfPoints();
+  if (arrays.empty() || !vtkRadiosityCombineSolutions(data, arrays, weights, tuples, combined, error))
+  {
+    return nullptr;
+  }
+  return combined;
 }
 
 /// Exposure 0 (the default): the relight filter's, from its field array Exposure, so the

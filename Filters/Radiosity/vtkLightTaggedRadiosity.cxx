@@ -265,9 +265,21 @@ int FollowAccuracy(vtkPolyData* input, radiosity::SolverOptions& options)
   return static_cast<int>(value);
 }
 
-/// A setting the user changed that the solve did not use says so: one an Accuracy level
-/// replaced (`level`, -1: none), or one only another method than `ran` reads (the
-/// method table's OwnSettings). Changed: unlike a new filter's.
+/// The text of a setting's value: an estimator by name, a number as %g.
+std::string SettingText(const char* name, double value)
+{
+  static const char* const estimators[] = { "Analytic", "Hemicube", "MonteCarlo" };
+  char number[32];
+  std::snprintf(number, sizeof(number), "%g", value);
+  return std::string(name) == "FormFactorMethod" && value >= 0 && value <= 2 ? estimators[static_cast<int>(value)]
+                                                                             : number;
+}
+
+/// A setting the user changed that the solve did not use says so: one only another method
+/// than `ran` reads (the method table's OwnSettings) where the method was set, not chosen
+/// by Auto (whose estimate reads them all), else one the input's Accuracy level (`level`,
+/// -1: none) replaced. Changed: unlike a new filter's. The patch basis reads
+/// FormFactorMethod whatever method ran.
 void SayUnusedSettings(vtkLightTaggedRadiosity* self, int level, radiosity::SolverMethod ran,
   vtkRadiosityAdapter::WarningList& warnings)
 {
@@ -285,36 +297,33 @@ void SayUnusedSettings(vtkLightTaggedRadiosity* self, int level, radiosity::Solv
     { "FormFactorMethod", double(self->GetFormFactorMethod()), double(fresh->GetFormFactorMethod()), none },
   };
   const radiosity::MethodEntry* ranEntry = radiosity::FindSolverMethod(ran);
+  const bool chosenByAuto = self->GetSolverMethod() == vtkLightTaggedRadiosity::SOLVER_AUTO;
+  const bool stamped = level >= 0;
   char text[320];
   for (const auto& s : settings)
   {
     const radiosity::MethodEntry* owner = radiosity::MethodOwning(s.Name);
+    const bool basisReads = self->GetPatchBasis() && std::string(s.Name) == "FormFactorMethod";
+    const std::string value = SettingText(s.Name, s.Value);
     if (s.Value == s.Default)
     {
       continue;
     }
-    if (level >= 0 && !std::isnan(s.Stamped))
+    if (owner && ranEntry && owner != ranEntry && !basisReads && !chosenByAuto)
     {
-      if (s.Value == s.Stamped)
-      {
-        continue;
-      }
-      std::snprintf(text, sizeof(text), "%s %g was not used: the input's Accuracy level (%s, set in the mesher) sets %g; "
-        "set the mesher's Accuracy to Custom to use the solver's own", s.Name, s.Value, chosen.Name, s.Stamped);
-      warnings.Add(self, text);
-    }
-    else if (owner && ranEntry && owner != ranEntry)
-    {
-      static const char* const estimators[] = { "Analytic", "Hemicube", "MonteCarlo" };
-      char number[32];
-      std::snprintf(number, sizeof(number), "%g", s.Value);
-      const std::string value = std::string(s.Name) == "FormFactorMethod" && s.Value >= 0 && s.Value <= 2
-        ? estimators[static_cast<int>(s.Value)]
-        : number;
       std::snprintf(text, sizeof(text), "%s %s was not used: only the %s method reads it, and %s ran", s.Name,
         value.c_str(), owner->Name, ranEntry->Name);
-      warnings.Add(self, text);
     }
+    else if (stamped && !std::isnan(s.Stamped) && s.Value != s.Stamped)
+    {
+      std::snprintf(text, sizeof(text), "%s %s was not used: the input's Accuracy level (%s, set in the mesher) sets %g; "
+        "set the mesher's Accuracy to Custom to use the solver's own", s.Name, value.c_str(), chosen.Name, s.Stamped);
+    }
+    else
+    {
+      continue;
+    }
+    warnings.Add(self, text);
   }
 }
 } // namespace

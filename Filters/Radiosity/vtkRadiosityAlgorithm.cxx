@@ -15,7 +15,7 @@ int vtkRadiosityAlgorithm::RequestData(vtkInformation*, vtkInformationVector** i
   run.Outputs = outputs;
   this->BeforeRun(run);
   return vtkRadiosityAdapter::Guarded(this, this->GuardsInput(run) ? run.Input.Get() : nullptr, run.Output,
-    [&]() -> int { return this->Execute(run); }, run.Parallel);
+    [&]() -> int { return this->Execute(run); }, this->AgreesAcrossRanks() ? run.Parallel : nullptr);
 }
 
 vtkSmartPointer<vtkPolyData> vtkRadiosityAlgorithm::InputOf(vtkInformationVector** inputs)

@@ -41,6 +41,10 @@ protected:
   /// Whether the guard refuses an input an upstream filter failed before Execute runs. Not
   /// where the ranks must all reach a collective first (they take it up themselves).
   virtual bool GuardsInput(const Run& run);
+  /// Whether the ranks of ParaView's MPI server agree on failure (one fails, all fail):
+  /// for the filters whose work meets in collectives; one that works on its own piece
+  /// alone must not wait for the others.
+  virtual bool AgreesAcrossRanks() const { return true; }
 
 private:
   vtkRadiosityAlgorithm(const vtkRadiosityAlgorithm&) = delete;

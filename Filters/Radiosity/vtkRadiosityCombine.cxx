@@ -165,16 +165,24 @@ vtkRadiosityRelitInput::vtkRadiosityRelitInput()
 
 vtkRadiosityRelitInput::~vtkRadiosityRelitInput() = default;
 
-std::string vtkRadiosityRelitInput::Read(vtkPolyData* data, bool withDirect)
+std::string vtkRadiosityRelitInput::ReadLights(vtkPolyData* data)
 {
   Internals& in = *this->Impl;
   in = Internals();
-  std::vector<std::string> arrays;
-  std::string error = FindLights(data, in.Names);
+  const std::string error = FindLights(data, in.Names);
   if (error.empty())
   {
-    error = ArrayNames(data, in.Names, withDirect, arrays);
+    in.Defaults = vtkRadiosityLightDefaultColors(data, static_cast<int>(in.Names.size()));
   }
+  return error;
+}
+
+std::string vtkRadiosityRelitInput::ReadTables(vtkPolyData* data, bool withDirect)
+{
+  Internals& in = *this->Impl;
+  in.Points = in.Cells = radiosity::SolutionTable();
+  std::vector<std::string> arrays;
+  std::string error = in.Names.empty() ? "no lights read" : ArrayNames(data, in.Names, withDirect, arrays);
   if (!error.empty())
   {
     return error;
@@ -190,12 +198,7 @@ std::string vtkRadiosityRelitInput::Read(vtkPolyData* data, bool withDirect)
       return error;
     }
   }
-  if (in.Points.Empty() && in.Cells.Empty())
-  {
-    return "no point or cell array '" + arrays[0] + "'";
-  }
-  in.Defaults = vtkRadiosityLightDefaultColors(data, static_cast<int>(in.Names.size()));
-  return "";
+  return in.Points.Empty() && in.Cells.Empty() ? "no point or cell array '" + arrays[0] + "'" : "";
 }
 
 const std::vector<std::string>& vtkRadiosityRelitInput::GetNames() const

@@ -21,18 +21,21 @@ struct Vec3;
 /// What relighting reads of a solved data set, read once: its lights (LightNames, else the
 /// names of its Radiosity_<name> arrays) and their default colors, and per kind of item
 /// (points, cells) the per-light arrays, Radiosity_<name> and, where asked for,
-/// Direct_<name> after them, as pointers into the arrays' own memory. The relight filter
-/// and the glTF writer combine from it and meter with it; nothing is looked up twice.
-/// C++ only (Python relights through vtkRadiosityRelight).
+/// Direct_<name> after them, as pointers into the arrays' own memory: the data set must
+/// outlive it with those arrays unchanged. The relight filter resolves, combines and meters
+/// from it; nothing is looked up twice. C++ only (Python relights through vtkRadiosityRelight).
 #ifndef __VTK_WRAP__
 class VTKRADIOSITYFILTERS_EXPORT vtkRadiosityRelitInput
 {
 public:
   vtkRadiosityRelitInput();
   ~vtkRadiosityRelitInput();
-  /// "" or why `data` cannot be relit: no lights, one combined solution, an array of the
-  /// wrong type or size, the direct parts asked for (`withDirect`) and missing.
-  std::string Read(vtkPolyData* data, bool withDirect = false);
+  /// The lights of `data` and their default colors; "" or why there are none to relight
+  /// (no lights, one combined solution).
+  std::string ReadLights(vtkPolyData* data);
+  /// Then their arrays; "" or why they cannot be combined (an array of the wrong type or
+  /// size, the direct parts asked for, `withDirect`, and missing).
+  std::string ReadTables(vtkPolyData* data, bool withDirect = false);
   const std::vector<std::string>& GetNames() const;
   std::vector<radiosity::Vec3> GetDefaultColors() const;
   bool HasPoints() const;

@@ -281,8 +281,6 @@ int vtkRadiosityRelight::Execute(const Run& run)
 
 namespace
 {
-const std::string kPrefix = "Radiosity_";
-
 /// "" when the moving lights left every value finite, else where one is not.
 std::string CheckFinite(vtkFloatArray* points, vtkFloatArray* cells)
 {
@@ -389,10 +387,14 @@ int vtkRadiosityRelight::Relight(
       !(this->IndirectScale >= 0 && this->IndirectScale <= VTK_DOUBLE_MAX)
     ? "Exposure (" + std::to_string(this->Exposure) + ") and IndirectScale (" + std::to_string(this->IndirectScale) +
       ") must be finite and not negative"
-    : relit.Read(input, this->IndirectScale != 1.0);
+    : relit.ReadLights(input);
   if (error.empty())
   {
     error = this->ResolveWeights(relit, time, weights);
+  }
+  if (error.empty())
+  {
+    error = relit.ReadTables(input, this->IndirectScale != 1.0);
   }
   const bool hasPoints = error.empty() && relit.HasPoints();
   const bool hasCells = error.empty() && relit.HasCells();

@@ -70,6 +70,8 @@ protected:
   vtkRadiosityWorkPlane() = default;
   ~vtkRadiosityWorkPlane() override = default;
   int Execute(const Run& run) override;
+  /// Each rank lays its own piece's plane: no collective to agree in.
+  bool AgreesAcrossRanks() const override { return false; }
 
 private:
   vtkRadiosityWorkPlane(const vtkRadiosityWorkPlane&) = delete;

@@ -176,7 +176,14 @@ int main(int argc, char* argv[])
     else if (key == "--grading")
       lampGrading = std::atof(argv[i + 1]);
     else if (key == "--method")
+    {
       method = MethodNamed(argv[i + 1]);
+      if (method == SolverMethod::Auto && std::string(argv[i + 1]) != "auto")
+      {
+        std::fprintf(stderr, "--method: no method '%s' (progressive, hierarchical, clustered or auto)\n", argv[i + 1]);
+        return 2;
+      }
+    }
     else if (key == "--combined")
       combinedToo = std::atoi(argv[i + 1]) != 0;
   }
@@ -230,7 +237,7 @@ int main(int argc, char* argv[])
   }
 
   Csv csv;
-  std::vector<std::pair<double, double>> growth; // (elements, seconds) of hierarchical k = 8
+  std::vector<std::pair<double, double>> growth; // (elements, seconds) of the method k = 8
   double lastTagged = 0, lastCombined = 0;
   for (long long target : sizes)
   {
@@ -290,7 +297,8 @@ int main(int argc, char* argv[])
       continue;
     }
     const Run combined = SolveRoom(solver, mesh, lights, SolutionMode::StandardCombined, options);
-    Print("hierarchical, k=1 combined", mesh, patches, combined, std::nan(""), std::nan(""));
+    Print((ShortMethodName(combined.Result.Statistics.SolverMethod) + ", k=1 combined").c_str(), mesh, patches, combined,
+      std::nan(""), std::nan(""));
     csv.Add(mesh, patches, combined, "combined", 1, std::nan(""), std::nan(""));
     std::printf("  k=8 tagged / k=1 combined: %.2fx; before solving: meshing %.2f s, geometry and Embree %.2f s "
                 "(k=8 end to end %.2f s)\n",
@@ -313,9 +321,9 @@ int main(int argc, char* argv[])
       csv.Add(mesh, patches, progressive, "tagged", lights, mean, worst);
       const double methodError = MeanError(Sample(solver, mesh, tagged.Result, probes),
         Sample(solver, mesh, progressive.Result, probes), lights, &worst);
-      std::printf("  progressive / hierarchical: %.2fx time; hierarchical vs progressive on this mesh: %.2f%% mean, "
-                  "%.2f%% worst light\n",
-        progressive.Seconds / tagged.Seconds, 100 * methodError, 100 * worst);
+      const std::string ran = ShortMethodName(tagged.Result.Statistics.SolverMethod);
+      std::printf("  progressive / %s: %.2fx time; %s vs progressive on this mesh: %.2f%% mean, %.2f%% worst light\n",
+        ran.c_str(), progressive.Seconds / tagged.Seconds, ran.c_str(), 100 * methodError, 100 * worst);
     }
   }
   std::printf("\n");

@@ -14,7 +14,8 @@ from testlib import check, finish
 ROOT = os.environ.get("RELIGHT_ROOT", ".")
 # The XML as the plugin is built from it: Plugin/ServerManager's files with the tables'
 # facts filled in (RadiosityXmlTables), one for each file there.
-XML_FILES = sorted(glob.glob(os.path.join(os.environ["RELIGHT_PLUGIN_XML"], "*.xml")))
+XML_FILES = sorted(glob.glob(os.path.join(os.environ.get("RELIGHT_PLUGIN_XML") or
+                                          os.path.join(ROOT, "build", "Plugin", "ServerManager"), "*.xml")))
 TEMPLATES = sorted(glob.glob(os.path.join(ROOT, "Plugin", "ServerManager", "*.xml")))
 SETTINGS = os.path.join(ROOT, "docs", "settings.md")
 
