@@ -29,6 +29,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 
 vtkStandardNewMacro(vtkLightTaggedRadiosity);
 
@@ -72,9 +73,56 @@ const char* vtkLightTaggedRadiosity::GetSolverMethodName(int value)
   return entry ? entry->Name : nullptr;
 }
 
+void vtkLightTaggedRadiosity::SetMethodSetting(const char* name, double value)
+{
+  const std::string key = name ? name : "";
+  const auto found = this->MethodSettings.find(key);
+  if (found == this->MethodSettings.end() || !(found->second == value))
+  {
+    this->MethodSettings[key] = value;
+    this->Modified();
+  }
+}
+
+void vtkLightTaggedRadiosity::ClearMethodSettings()
+{
+  if (!this->MethodSettings.empty())
+  {
+    this->MethodSettings.clear();
+    this->Modified();
+  }
+}
+
+int vtkLightTaggedRadiosity::GetNumberOfMethodSettings() const
+{
+  return static_cast<int>(this->MethodSettings.size());
+}
+
+const char* vtkLightTaggedRadiosity::GetMethodSettingName(int i) const
+{
+  if (i < 0 || i >= this->GetNumberOfMethodSettings())
+  {
+    return nullptr;
+  }
+  return std::next(this->MethodSettings.begin(), i)->first.c_str();
+}
+
+double vtkLightTaggedRadiosity::GetMethodSettingValue(int i) const
+{
+  if (i < 0 || i >= this->GetNumberOfMethodSettings())
+  {
+    return 0.0;
+  }
+  return std::next(this->MethodSettings.begin(), i)->second;
+}
+
 void vtkLightTaggedRadiosity::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  for (const auto& setting : this->MethodSettings)
+  {
+    os << indent << "MethodSetting " << setting.first << ": " << setting.second << "\n";
+  }
   os << indent << "SolutionMode: " << this->SolutionMode << "\n";
   os << indent << "FormFactorMethod: " << this->FormFactorMethod << "\n";
   os << indent << "FormFactorSamples: " << this->FormFactorSamples << "\n";
@@ -242,6 +290,10 @@ radiosity::SolverOptions vtkLightTaggedRadiosity::Options(int threads, const rad
   options.Color = this->Effect(this->ColorEffect);
   options.ConvergedLights = this->Effect(this->ConvergedLightsEffect);
   options.Group = group;
+  for (const auto& setting : this->MethodSettings)
+  {
+    radiosity::ApplyMethodSetting(setting.first, setting.second, options); // checked in Solve
+  }
   return options;
 }
 
@@ -325,6 +377,17 @@ void SayUnusedSettings(vtkLightTaggedRadiosity* self, int level, radiosity::Solv
     }
     warnings.Add(self, text);
   }
+  // Settings by name: Auto's estimate reads none of them.
+  for (int i = 0; i < self->GetNumberOfMethodSettings(); ++i)
+  {
+    const radiosity::MethodEntry* owner = radiosity::MethodOwning(self->GetMethodSettingName(i));
+    if (owner && ranEntry && owner != ranEntry)
+    {
+      std::snprintf(text, sizeof(text), "%s %g was not used: only the %s method reads it, and %s ran",
+        self->GetMethodSettingName(i), self->GetMethodSettingValue(i), owner->Name, ranEntry->Name);
+      warnings.Add(self, text);
+    }
+  }
 }
 } // namespace
 
@@ -341,7 +404,13 @@ int vtkLightTaggedRadiosity::Solve(
   steps::SceneInput scene;
   const bool combined = this->SolutionMode == STANDARD_COMBINED;
   const radiosity::ProcessGroup group = vtkRadiosityPieces::Group(ranks);
-  std::string error = radiosity::OptionsProblem(this->Options(1, group));
+  std::string error;
+  for (const auto& setting : this->MethodSettings)
+  {
+    radiosity::SolverOptions unused;
+    error = error.empty() ? radiosity::ApplyMethodSetting(setting.first, setting.second, unused) : error;
+  }
+  error = error.empty() ? radiosity::OptionsProblem(this->Options(1, group)) : error;
   error = error.empty() ? steps::ReadInput(input, this->Effect(this->LightSeparationEffect), scene) : error;
   if (error.empty())
   {

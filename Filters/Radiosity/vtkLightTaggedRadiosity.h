@@ -42,6 +42,8 @@
 #include "vtkRadiosityFiltersModule.h" // for export macro
 
 #include <chrono> // for the solve's start time
+#include <map>    // for the settings by name
+#include <string> // for the settings by name
 
 class vtkMultiProcessController;
 class vtkTable;
@@ -179,6 +181,22 @@ public:
   static double GetClusterSeparationMinValue() { return 2.0; }
   static double GetClusterSeparationMaxValue() { return VTK_DOUBLE_MAX; }
   vtkGetMacro(ClusterSeparation, double);
+  ///@}
+
+  ///@{
+  /// Settings one method alone reads, by name (the method table's rows name them and
+  /// their ranges, Filters/Core/Solve/SolverMethods.cxx): Hierarchical's
+  /// RefinementThreshold (a far link carrying this fraction of a solution's power is
+  /// resolved per element; 0, the default, refines by geometry alone), Clustered's
+  /// ClusterMemoryLimit (bytes its links may take; 0, the default, 90 % of the free
+  /// memory). A name no method has, or a value out of its range, is an error at the
+  /// update; one the method that ran does not read is said as a warning.
+  void SetMethodSetting(const char* name, double value);
+  void ClearMethodSettings();
+  int GetNumberOfMethodSettings() const;
+  /// Setting `i` (in the order of their names): its name and value; null and 0 past them.
+  const char* GetMethodSettingName(int i) const;
+  double GetMethodSettingValue(int i) const;
   ///@}
 
   ///@{
@@ -386,6 +404,7 @@ private:
   int FormFactorSamples = 4;
   double TimeBudget = 0;
   double ClusterSeparation = 3.0;
+  std::map<std::string, double> MethodSettings;
   int GatherRays = 256;
   int GatherSweeps = 1;
   double GatherCache = 0.15;

@@ -37,7 +37,7 @@ std::string CheckMemory(double bytes, const std::string& what, double limit)
   }
   char text[512];
   std::snprintf(text, sizeof(text), "%s needs about %.3g GB, more than the %.3g GB of memory %s", what.c_str(),
-    bytes / 1073741824.0, available / 1073741824.0, limit > 0 ? "allowed (MemoryLimit)" : "available");
+    bytes / 1073741824.0, available / 1073741824.0, limit > 0 ? "allowed (ClusterMemoryLimit)" : "available");
   return text;
 }
 

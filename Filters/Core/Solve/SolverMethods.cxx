@@ -38,9 +38,12 @@ const std::vector<MethodEntry>& SolverMethodTable()
 {
   static const std::vector<MethodEntry> table = {
     { SolverMethod::ProgressiveRefinement, "ProgressiveRefinement", SolveProgressive, DescribeProgressive,
-      "FormFactorMethod" },
-    { SolverMethod::Hierarchical, "Hierarchical", SolveHierarchical, DescribeHierarchical, "" },
-    { SolverMethod::Clustered, "Clustered", SolveClustered, DescribeClustered, "ClusterSeparation" },
+      "FormFactorMethod", {} },
+    { SolverMethod::Hierarchical, "Hierarchical", SolveHierarchical, DescribeHierarchical, "",
+      { { "RefinementThreshold", 0.0, 1.0,
+        [](SolverOptions& o, double v) { o.Hierarchical.RefinementThreshold = v; } } } },
+    { SolverMethod::Clustered, "Clustered", SolveClustered, DescribeClustered, "ClusterSeparation",
+      { { "ClusterMemoryLimit", 0.0, 1e18, [](SolverOptions& o, double v) { o.Clustered.MemoryLimit = v; } } } },
   };
   return table;
 }
@@ -69,8 +72,39 @@ const MethodEntry* MethodOwning(const std::string& setting)
         return &entry;
       }
     }
+    for (const MethodSetting& own : entry.Settings)
+    {
+      if (setting == own.Name)
+      {
+        return &entry;
+      }
+    }
   }
   return nullptr;
+}
+
+std::string ApplyMethodSetting(const std::string& name, double value, SolverOptions& options)
+{
+  std::string known;
+  for (const MethodEntry& entry : SolverMethodTable())
+  {
+    for (const MethodSetting& own : entry.Settings)
+    {
+      if (name != own.Name)
+      {
+        known += (known.empty() ? "" : ", ") + std::string(own.Name) + " (" + entry.Name + ")";
+        continue;
+      }
+      if (!(value >= own.Min && value <= own.Max))
+      {
+        return name + " is " + std::to_string(value) + "; it is from " + std::to_string(own.Min) + " to " +
+          std::to_string(own.Max);
+      }
+      own.Set(options, value);
+      return "";
+    }
+  }
+  return "no method has a setting '" + name + "'; the methods' settings by name are " + known;
 }
 
 std::string DescribeSolve(const SolverStatistics& stats)

@@ -12,6 +12,15 @@
 namespace radiosity
 {
 
+/// A setting a method owns that is set by name (vtkLightTaggedRadiosity::SetMethodSetting):
+/// its range and where it goes.
+struct MethodSetting
+{
+  const char* Name;
+  double Min, Max;
+  void (*Set)(SolverOptions& options, double value);
+};
+
 struct MethodEntry
 {
   SolverMethod Method;
@@ -22,6 +31,8 @@ struct MethodEntry
   /// The filter's settings this method alone reads, by name, space-separated: one set for
   /// a solve that another method ran is reported as unused (MethodOwning).
   const char* OwnSettings;
+  /// Its settings set by name, which it alone reads too.
+  std::vector<MethodSetting> Settings;
 };
 
 /// Every method, in the order of their SolverMethod values (Auto, which is a choice
@@ -29,8 +40,12 @@ struct MethodEntry
 const std::vector<MethodEntry>& SolverMethodTable();
 /// The entry of `method`; null for Auto or a value no method has.
 const MethodEntry* FindSolverMethod(SolverMethod method);
-/// The method whose OwnSettings name `setting`; null where every method reads it (or none).
+/// The method whose OwnSettings or Settings name `setting`; null where every method reads
+/// it (or none).
 const MethodEntry* MethodOwning(const std::string& setting);
+/// Sets the method setting `name` to `value` in `options`; "" or why not (no method has
+/// it, or the value is out of its range).
+std::string ApplyMethodSetting(const std::string& name, double value, SolverOptions& options);
 /// The method that ran, what its transport held, the face clusters and why it was chosen
 /// (the field array SolverMethod), e.g. "Hierarchical: ...; chosen by Auto: ...".
 std::string DescribeSolve(const SolverStatistics& stats);

@@ -154,4 +154,30 @@ for method, separation, expected in (("Hierarchical", 6.0, HIERARCHICAL_RAN), ("
           f"ClusterSeparation {separation:g} with the {method} method: {'nothing said' if expected is None else 'reported'}"
           f" ({said})")
 
+# --- settings by name: each method's own, from the method table -----------------------------
+def by_name(method, name, value):
+    solver = relight.vtkLightTaggedRadiosity()
+    solver.SetInputConnection(mesher.GetOutputPort())
+    getattr(solver, "SetSolverMethodTo" + method)()
+    solver.SetMethodSetting(name, value)
+    solver.errors = relight.ErrorCatcher(solver).errors
+    solver.Update()
+    return solver
+
+
+tight = by_name("Clustered", "ClusterMemoryLimit", 1e4)  # 10 kB: the links cannot fit
+stopped = [w for w in warnings_of(tight.GetOutput()) if "memory" in w.lower()] + \
+    [effect(tight.GetOutput(), "Interreflection")]
+check(tight.GetMethodSettingName(0) == "ClusterMemoryLimit" and tight.GetMethodSettingValue(0) == 1e4 and
+      any("memory" in text.lower() for text in stopped),
+      f"SetMethodSetting('ClusterMemoryLimit', 1e4) reaches the clustered method, which stops for memory: {stopped}")
+said = [w for w in warnings_of(by_name("Hierarchical", "ClusterMemoryLimit", 1e9).GetOutput()) if "ClusterMemoryLimit" in w]
+check(len(said) == 1 and "only the Clustered method reads it, and Hierarchical ran" in said[0],
+      f"...and under Hierarchical is said to be unused: {said}")
+for name, value, words in (("Separation", 4.0, "no method has a setting 'Separation'"),
+                           ("RefinementThreshold", 2.0, "RefinementThreshold is 2.000000; it is from 0")):
+    bad = by_name("Hierarchical", name, value)
+    check(bad.GetOutput().GetNumberOfCells() == 0 and any(words in e for e in bad.errors),
+          f"SetMethodSetting('{name}', {value:g}) fails the update, saying so: {bad.errors}")
+
 finish("TestAccuracyLevels")
