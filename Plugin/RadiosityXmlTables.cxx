@@ -125,6 +125,7 @@ const std::map<std::string, std::function<std::string()>>& Facts()
     { "LIGHT_ROW_COLUMNS", [] { return Escaped(LightRowColumns()); } },
     { "ACCURACY_LEVEL_ENTRIES", AccuracyEntries },
     { "ACCURACY_LEVEL_TABLE", [] { return Escaped(AccuracyTable()); } },
+    { "METHOD_SETTINGS", [] { return Escaped(vtkLightTaggedRadiosity::DescribeMethodSettings()); } },
   };
   return facts;
 }

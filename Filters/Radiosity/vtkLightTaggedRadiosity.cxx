@@ -93,6 +93,22 @@ void vtkLightTaggedRadiosity::ClearMethodSettings()
   }
 }
 
+std::string vtkLightTaggedRadiosity::DescribeMethodSettings()
+{
+  std::string text;
+  for (const radiosity::MethodEntry& entry : radiosity::SolverMethodTable())
+  {
+    for (const radiosity::MethodSetting& own : entry.Settings)
+    {
+      char row[160];
+      std::snprintf(row, sizeof(row), "%s%s (%s, %g to %g)", text.empty() ? "" : "; ", own.Name, entry.Name, own.Min,
+        own.Max);
+      text += row;
+    }
+  }
+  return text + ".";
+}
+
 int vtkLightTaggedRadiosity::GetNumberOfMethodSettings() const
 {
   return static_cast<int>(this->MethodSettings.size());

@@ -194,6 +194,9 @@ public:
   void SetMethodSetting(const char* name, double value);
   void ClearMethodSettings();
   int GetNumberOfMethodSettings() const;
+  /// Every method's settings by name, their methods and ranges, as one sentence (the
+  /// plugin's XML documents the property with it).
+  static std::string DescribeMethodSettings();
   /// Setting `i` (in the order of their names): its name and value; null and 0 past them.
   const char* GetMethodSettingName(int i) const;
   double GetMethodSettingValue(int i) const;

@@ -174,6 +174,14 @@ def check_scene_files(scene_reader):
     values = numpy_support.vtk_to_numpy(relit.GetCellData().GetArray("Radiosity"))
     check(names is not None and names.GetValue(0) == "Lamp" and values.max() > 0,
           "an OBJ read by the plugin's reader solves and relights (light 'Lamp')")
+    # A method's setting by name, as ParaView sends it (name, value rows): said unused
+    # where another method runs.
+    by_name = LightTaggedRadiosity(Input=mesher, SolverMethod="Hierarchical",
+                                   MethodSettings=["ClusterMemoryLimit", "1e9"])
+    listed = servermanager.Fetch(by_name).GetFieldData().GetAbstractArray("Warnings")
+    said = [listed.GetValue(i) for i in range(listed.GetNumberOfValues())] if listed else []
+    check(any("ClusterMemoryLimit 1e+09 was not used" in w for w in said),
+          f"MethodSettings reaches SetMethodSetting: {said}")
     glb = os.path.join(tempfile.mkdtemp(), "room.glb")
     SaveData(glb, proxy=RadiosityRelight(Input=solver))
     head = open(glb, "rb").read(4096) if os.path.exists(glb) else b""
