@@ -109,6 +109,67 @@ std::string vtkLightTaggedRadiosity::DescribeMethodSettings()
   return text + ".";
 }
 
+namespace
+{
+/// Setting i over every row of the method table, with its method; null past them.
+const radiosity::MethodSetting* KnownSetting(int i, const char** method = nullptr)
+{
+  for (const radiosity::MethodEntry& entry : radiosity::SolverMethodTable())
+  {
+    if (i >= 0 && i < static_cast<int>(entry.Settings.size()))
+    {
+      if (method)
+      {
+        *method = entry.Name;
+      }
+      return &entry.Settings[i];
+    }
+    i -= static_cast<int>(entry.Settings.size());
+  }
+  return nullptr;
+}
+} // namespace
+
+int vtkLightTaggedRadiosity::GetNumberOfKnownMethodSettings()
+{
+  int count = 0;
+  while (KnownSetting(count))
+  {
+    ++count;
+  }
+  return count;
+}
+
+const char* vtkLightTaggedRadiosity::GetKnownMethodSettingName(int i)
+{
+  const radiosity::MethodSetting* known = KnownSetting(i);
+  return known ? known->Name : nullptr;
+}
+
+const char* vtkLightTaggedRadiosity::GetKnownMethodSettingMethod(int i)
+{
+  const char* method = nullptr;
+  return KnownSetting(i, &method) ? method : nullptr;
+}
+
+double vtkLightTaggedRadiosity::GetKnownMethodSettingDefault(int i)
+{
+  const radiosity::MethodSetting* known = KnownSetting(i);
+  return known ? known->Default : 0.0;
+}
+
+double vtkLightTaggedRadiosity::GetKnownMethodSettingMinimum(int i)
+{
+  const radiosity::MethodSetting* known = KnownSetting(i);
+  return known ? known->Min : 0.0;
+}
+
+double vtkLightTaggedRadiosity::GetKnownMethodSettingMaximum(int i)
+{
+  const radiosity::MethodSetting* known = KnownSetting(i);
+  return known ? known->Max : 0.0;
+}
+
 int vtkLightTaggedRadiosity::GetNumberOfMethodSettings() const
 {
   return static_cast<int>(this->MethodSettings.size());

@@ -197,6 +197,14 @@ public:
   /// Every method's settings by name, their methods and ranges, as one sentence (the
   /// plugin's XML documents the property with it).
   static std::string DescribeMethodSettings();
+  /// The settings any method has, flat over the method table: name, method, default and
+  /// range (the panel's Method Settings table offers and checks them); null/0 past them.
+  static int GetNumberOfKnownMethodSettings();
+  static const char* GetKnownMethodSettingName(int i);
+  static const char* GetKnownMethodSettingMethod(int i);
+  static double GetKnownMethodSettingDefault(int i);
+  static double GetKnownMethodSettingMinimum(int i);
+  static double GetKnownMethodSettingMaximum(int i);
   /// Setting `i` (in the order of their names): its name and value; null and 0 past them.
   const char* GetMethodSettingName(int i) const;
   double GetMethodSettingValue(int i) const;

@@ -40,10 +40,11 @@ const std::vector<MethodEntry>& SolverMethodTable()
     { SolverMethod::ProgressiveRefinement, "ProgressiveRefinement", SolveProgressive, DescribeProgressive,
       "FormFactorMethod", {} },
     { SolverMethod::Hierarchical, "Hierarchical", SolveHierarchical, DescribeHierarchical, "",
-      { { "RefinementThreshold", 0.0, 1.0,
+      { { "RefinementThreshold", HierarchicalSettings{}.RefinementThreshold, 0.0, 1.0,
         [](SolverOptions& o, double v) { o.Hierarchical.RefinementThreshold = v; } } } },
     { SolverMethod::Clustered, "Clustered", SolveClustered, DescribeClustered, "ClusterSeparation",
-      { { "ClusterMemoryLimit", 0.0, 1e18, [](SolverOptions& o, double v) { o.Clustered.MemoryLimit = v; } } } },
+      { { "ClusterMemoryLimit", ClusteredSettings{}.MemoryLimit, 0.0, 1e18,
+        [](SolverOptions& o, double v) { o.Clustered.MemoryLimit = v; } } } },
   };
   return table;
 }

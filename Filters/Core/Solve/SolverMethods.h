@@ -17,7 +17,7 @@ namespace radiosity
 struct MethodSetting
 {
   const char* Name;
-  double Min, Max;
+  double Default, Min, Max;
   void (*Set)(SolverOptions& options, double value);
 };
 
