@@ -60,13 +60,17 @@ void pqRadiosityMethodSettingsWidget::cellEdited(int row, int column)
   {
     return;
   }
+  // The row as it would be: a name any method has and no other row holds, a value in its range.
   const QStringList parts = this->typed(row, column, true);
-  const int known = Known(column == 0 ? parts[0] : this->cell(row, 0)[0]);
+  const QString name = column == 0 ? parts[0] : this->cell(row, 0)[0];
+  const int known = Known(name);
   bool number = false;
-  const double value = parts[0].toDouble(&number);
-  const bool usable = column == 0 ? known >= 0
-                                  : known >= 0 && number && value >= vtkLightTaggedRadiosity::GetKnownMethodSettingMinimum(known) &&
-      value <= vtkLightTaggedRadiosity::GetKnownMethodSettingMaximum(known);
+  const double value = (column == 1 ? parts[0] : this->cell(row, 1)[0]).toDouble(&number);
+  QStringList others = this->names();
+  others.removeAt(row);
+  const bool usable = known >= 0 && !others.contains(name) && number &&
+    value >= vtkLightTaggedRadiosity::GetKnownMethodSettingMinimum(known) &&
+    value <= vtkLightTaggedRadiosity::GetKnownMethodSettingMaximum(known);
   this->takeOrPutBack(row, column, parts, usable);
 }
 
@@ -81,7 +85,5 @@ QStringList pqRadiosityMethodSettingsWidget::newRow() const
       return { name, QString::number(vtkLightTaggedRadiosity::GetKnownMethodSettingDefault(i), 'g', 10) };
     }
   }
-  const int first = 0;
-  return { QString::fromUtf8(vtkLightTaggedRadiosity::GetKnownMethodSettingName(first)),
-    QString::number(vtkLightTaggedRadiosity::GetKnownMethodSettingDefault(first), 'g', 10) };
+  return {}; // every setting has its row
 }

@@ -16,9 +16,10 @@ public:
 
 protected:
   void fillCell(int row, int column) override;
-  /// The first setting not in the table yet, at its default.
+  /// The first setting not in the table yet, at its default (none when all are).
   QStringList newRow() const override;
-  /// A name any method has, or a number in the row's setting's range; else put back.
+  /// Taken where the row then holds a name any method has and no other row does, and a
+  /// number in that setting's range; else put back.
   void cellEdited(int row, int column) override;
 };
 

@@ -105,7 +105,12 @@ void pqRadiosityTableWidget::takeOrPutBack(int row, int column, const QStringLis
 
 void pqRadiosityTableWidget::addRow()
 {
-  this->Rows << this->newRow();
+  const QStringList added = this->newRow();
+  if (added.isEmpty())
+  {
+    return; // nothing left to add
+  }
+  this->Rows << added;
   this->fill();
   Q_EMIT this->rowsChanged();
 }

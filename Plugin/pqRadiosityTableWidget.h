@@ -37,7 +37,7 @@ protected:
   void fill();
   /// Cell (row, column) from the entry's elements.
   virtual void fillCell(int row, int column) = 0;
-  /// A new entry's elements, for Add.
+  /// A new entry's elements, for Add (none: Add does nothing).
   virtual QStringList newRow() const = 0;
   /// A typed cell into Rows (or put back).
   virtual void cellEdited(int row, int column) = 0;

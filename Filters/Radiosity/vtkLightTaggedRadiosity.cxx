@@ -454,11 +454,13 @@ void SayUnusedSettings(vtkLightTaggedRadiosity* self, int level, radiosity::Solv
     }
     warnings.Add(self, text);
   }
-  // Settings by name: Auto's estimate reads none of them.
+  // Settings by name: Auto's estimate reads none of them; the patch basis runs the
+  // hierarchical method whatever ran (BasisOptions), so it reads that method's.
   for (int i = 0; i < self->GetNumberOfMethodSettings(); ++i)
   {
     const radiosity::MethodEntry* owner = radiosity::MethodOwning(self->GetMethodSettingName(i));
-    if (owner && ranEntry && owner != ranEntry)
+    const bool basisReads = self->GetPatchBasis() && owner && owner->Method == radiosity::SolverMethod::Hierarchical;
+    if (owner && ranEntry && owner != ranEntry && !basisReads)
     {
       std::snprintf(text, sizeof(text), "%s %g was not used: only the %s method reads it, and %s ran",
         self->GetMethodSettingName(i), self->GetMethodSettingValue(i), owner->Name, ranEntry->Name);

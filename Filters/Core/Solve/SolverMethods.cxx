@@ -98,8 +98,9 @@ std::string ApplyMethodSetting(const std::string& name, double value, SolverOpti
       }
       if (!(value >= own.Min && value <= own.Max))
       {
-        return name + " is " + std::to_string(value) + "; it is from " + std::to_string(own.Min) + " to " +
-          std::to_string(own.Max);
+        char text[160];
+        std::snprintf(text, sizeof(text), " is %g; it is from %g to %g", value, own.Min, own.Max);
+        return name + text;
       }
       own.Set(options, value);
       return "";

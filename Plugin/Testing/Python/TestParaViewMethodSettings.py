@@ -45,6 +45,19 @@ if result.check(len(tables) == 1, f"the solver's advanced panel shows one method
     result.check(table.item(0, 0).text() == "RefinementThreshold",
                  f"a name no method has is put back: {table.item(0, 0).text()}")
     table.item(0, 1).setText("0.01")
+    named(QPushButton, "AddMethodSetting")[0].click()
+    guitest.settle(0.3)
+    second = [table.item(1, c).text() for c in range(2)] if table.rowCount() > 1 else []
+    result.check(second == ["ClusterMemoryLimit", "0"], f"a second Add offers the next setting: {second}")
+    table.item(1, 0).setText("RefinementThreshold")
+    result.check(table.item(1, 0).text() == "ClusterMemoryLimit",
+                 f"a name another row holds is put back: {table.item(1, 0).text()}")
+    named(QPushButton, "AddMethodSetting")[0].click()
+    guitest.settle(0.3)
+    result.check(table.rowCount() == 2, f"with every setting in the table, Add adds nothing ({table.rowCount()} rows)")
+    table.selectRow(1)
+    named(QPushButton, "RemoveMethodSettings")[0].click()
+    guitest.settle(0.3)
     accept = [b for b in named(QPushButton, "Accept") if b.isVisible()]
     if result.check(len(accept) == 1 and accept[0].isEnabled(), "an edit of the settings waits for Apply"):
         accept[0].click()

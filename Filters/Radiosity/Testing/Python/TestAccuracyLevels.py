@@ -175,7 +175,7 @@ said = [w for w in warnings_of(by_name("Hierarchical", "ClusterMemoryLimit", 1e9
 check(len(said) == 1 and "only the Clustered method reads it, and Hierarchical ran" in said[0],
       f"...and under Hierarchical is said to be unused: {said}")
 for name, value, words in (("Separation", 4.0, "no method has a setting 'Separation'"),
-                           ("RefinementThreshold", 2.0, "RefinementThreshold is 2.000000; it is from 0")):
+                           ("RefinementThreshold", 2.0, "RefinementThreshold is 2; it is from 0 to 1")):
     bad = by_name("Hierarchical", name, value)
     check(bad.GetOutput().GetNumberOfCells() == 0 and any(words in e for e in bad.errors),
           f"SetMethodSetting('{name}', {value:g}) fails the update, saying so: {bad.errors}")
