@@ -133,9 +133,9 @@ const radiosity::MethodSetting* KnownSetting(int i, const char** method = nullpt
 int vtkLightTaggedRadiosity::GetNumberOfKnownMethodSettings()
 {
   int count = 0;
-  while (KnownSetting(count))
+  for (const radiosity::MethodEntry& entry : radiosity::SolverMethodTable())
   {
-    ++count;
+    count += static_cast<int>(entry.Settings.size());
   }
   return count;
 }

@@ -54,15 +54,15 @@ ShooterFormFactors::ShooterFormFactors(const SceneMesh& mesh, const SceneGeometr
         const Vec3 &a = loop[corners[t]], &b = loop[corners[t + 1]], &c = loop[corners[t + 2]];
         const Vec3 cross = Cross(b - a, c - a);
         total += 0.5 * Norm(cross);
-        PatchTriangles[p].push_back({ a, b, c, Normalized(cross), total });
+        PatchTriangles[p].push_back({ a, b, c, Normalized(cross) });
+        PatchCdf[p].push_back(total);
       }
       centre += geometry.Centroid[e] * geometry.Area[e];
       normal += geometry.Normal[e] * geometry.Area[e];
     }
-    for (SampleTriangle& tri : PatchTriangles[p])
+    for (double& cdf : PatchCdf[p])
     {
-      tri.Cdf = total > 0 ? tri.Cdf / total : 1.0;
-      PatchCdf[p].push_back(tri.Cdf);
+      cdf = total > 0 ? cdf / total : 1.0;
     }
     PatchCentre[p] = centre * (1.0 / geometry.PatchArea[p]);
     PatchNormal[p] = Normalized(normal);

@@ -141,11 +141,11 @@ private:
   struct SampleTriangle
   {
     Vec3 A, B, C, Normal;
-    double Cdf; ///< cumulative area fraction within its patch, ending at 1
   };
   std::vector<std::vector<SampleTriangle>> PatchTriangles;
-  /// Each patch's triangles' Cdf alone: PickTriangle's search reads 8 bytes a step, not a
-  /// triangle's 104 (a shooter of a million-element room has thousands of triangles).
+  /// Per patch, each of its triangles' cumulative area fraction, ending at 1: apart from
+  /// the triangles, so PickTriangle's search reads 8 bytes a step, not a triangle's 96 (a
+  /// shooter of a million-element room has thousands of triangles).
   std::vector<std::vector<double>> PatchCdf;
   std::vector<Vec3> PatchCentre, PatchNormal;
   std::vector<double> PatchRadius;
