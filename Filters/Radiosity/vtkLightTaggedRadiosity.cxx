@@ -506,6 +506,7 @@ int vtkLightTaggedRadiosity::Solve(
     error = PrepareOrReuse(input, scene, threads, group, prepared, this->LastPreparationReused);
   }
   const radiosity::RadiositySolver solver(scene.Mesh, prepared);
+  const double preparing = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (error.empty() && (error = solver.Error()).empty())
   {
     error = radiosity::NoFiniteSolution(scene.Mesh, solver.Geometry(), solver.Rays());
@@ -530,8 +531,10 @@ int vtkLightTaggedRadiosity::Solve(
   };
   const auto mode = static_cast<radiosity::SolutionMode>(this->SolutionMode);
   vtkLogStartScope(TRACE, "shoot");
-  const radiosity::Solution result = radiosity::SolveLights(solver, scene.Mesh, scene.Grouping, scene.Emission, mode, options, scene.PointLights);
+  radiosity::Solution result = radiosity::SolveLights(solver, scene.Mesh, scene.Grouping, scene.Emission, mode, options, scene.PointLights);
   vtkLogEndScope("shoot");
+  std::vector<radiosity::SolverStatistics::Step>& booked = result.Statistics.Steps;
+  booked.insert(booked.begin(), { this->LastPreparationReused ? "scene kept" : "prepare the scene", preparing });
   SayUnusedSettings(this, level, result.Statistics.SolverMethod, warnings);
   return this->WriteResult(input, output, history, scene, solver, result, options, abort.Stop(), start, warnings,
     ranks ? ranks->GetLocalProcessId() : 0);

@@ -284,6 +284,12 @@ int main(int argc, char* argv[])
     std::printf("\n");
     std::printf("  links: %lld to patches, %lld to elements\n", tagged.Result.Statistics.PatchLinks,
       tagged.Result.Statistics.ElementLinks);
+    std::printf("  steps:");
+    for (const SolverStatistics::Step& step : tagged.Result.Statistics.Steps)
+    {
+      std::printf(" %s %.1f s;", step.Name.c_str(), step.Seconds);
+    }
+    std::printf("\n");
     if (tagged.Result.GatherRecords > 0)
     {
       std::printf("  irradiance cache: %d of %d points gathered for themselves\n", tagged.Result.GatherRecords,

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numeric>
 
 namespace radiosity
@@ -200,6 +201,7 @@ private:
   /// Each emitter's direct light to every element, with its own shadow rays.
   void ShootEmitters(ShooterFormFactors& estimator)
   {
+    const StepTimer timer(Stats, "direct light");
     const int samples = Options.Visibility == EffectMode::Off ? 0 : Options.FormFactorSamples;
     std::vector<double> factors(N);
     for (size_t i = 0; i < Emitters.size(); ++i)
@@ -255,6 +257,7 @@ private:
 
   void Interreflect(ShooterFormFactors& estimator)
   {
+    auto linking = std::make_unique<StepTimer>(Stats, "links"); // the tree and the gather's sums too
     const ElementTree tree(Mesh, G);
     ClusterLinkSet links;
     if (!Link(tree, estimator, links))
@@ -263,6 +266,7 @@ private:
     }
     Normalize(tree, links, estimator);
     ClusterGather<Value> gather(G, tree, links, Pool);
+    linking.reset();
     if (KeepGoing(IterationFraction()))
     {
       SolveAlong(gather);
@@ -298,6 +302,7 @@ private:
   /// one more bounce would add is below the threshold or the solve is stopped.
   void SolveAlong(ClusterGather<Value>& gather)
   {
+    const StepTimer timer(Stats, "bounces");
     std::vector<Value> sent;
     Gather(gather, Last, sent);
     ConjugateBounces<Value> solve(G.Area, Weights(), L, static_cast<int>(Channel::Doubles));

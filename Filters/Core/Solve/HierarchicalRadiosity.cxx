@@ -817,13 +817,16 @@ void Shoot(const SceneMesh& mesh, const SceneGeometry& g, const Visibility& rays
     if (emitting)
     {
       // Direct light: every element, per-element shadow rays, nothing kept.
+      const StepTimer timer(stats, "direct light");
       ShootToElements(state, pool, estimator, shooter, FormFactorMethod::Analytic, samples, stats, factors);
       continue;
     }
     if (!links[shooter].Built)
     {
+      const StepTimer timer(stats, "links");
       links[shooter] = builder.Build(shooter, state.ShotFraction(shooter), stats);
     }
+    const StepTimer timer(stats, "shots");
     state.EndShot(shooter, DistributeAlongLinks(state, pool, builder, links[shooter], meanReflectance));
   }
   state.Finish(estimator);

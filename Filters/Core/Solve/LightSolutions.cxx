@@ -288,6 +288,7 @@ void GatherInto(const RadiositySolver& solver, const SceneMesh& mesh, const std:
   {
     progress = [&options](double f) { return options.Progress(kSolveShare + (1 - kSolveShare) * f); };
   }
+  const StepTimer timer(out.Statistics, "final gather");
   GatheredPoints points = GatherAtPoints(mesh, solver.Geometry(), solver.Rays(), emission, out.Radiosity,
     out.Solutions, settings, options.Threads, progress, out.Statistics.BlockingSurfaces != 0);
   out.GatherRays = points.Rays;

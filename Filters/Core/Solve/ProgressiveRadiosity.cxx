@@ -24,6 +24,7 @@ void Shoot(const SceneMesh& mesh, const SceneGeometry& g, const Visibility& rays
   const int samples =
     options.Visibility == EffectMode::Off && options.FormFactorMethod == FormFactorMethod::Analytic ? 0 : options.FormFactorSamples;
   std::vector<double> factors;
+  const StepTimer timer(stats, "shots");
   while (state.Continue())
   {
     const int shooter = state.PickShooter();

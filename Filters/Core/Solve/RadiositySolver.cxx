@@ -270,6 +270,23 @@ void SolverStatistics::Append(const SolverStatistics& next)
   CollectiveSeconds += next.CollectiveSeconds;
   ReceivingElements = next.ReceivingElements;
   OwnRays += next.OwnRays;
+  for (const Step& step : next.Steps)
+  {
+    Took(step.Name, step.Seconds);
+  }
+}
+
+void SolverStatistics::Took(const std::string& step, double seconds)
+{
+  const auto same = std::find_if(Steps.begin(), Steps.end(), [&](const Step& s) { return s.Name == step; });
+  if (same == Steps.end())
+  {
+    Steps.push_back({ step, seconds });
+  }
+  else
+  {
+    same->Seconds += seconds;
+  }
 }
 
 std::vector<char> OwnedPatches(const SceneGeometry& geometry, int rank, int ranks)

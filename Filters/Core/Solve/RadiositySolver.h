@@ -152,6 +152,16 @@ struct SolverStatistics
   double CollectiveSeconds = 0;   ///< this rank's time in the sums (waits for others too)
   int ReceivingElements = 0; ///< the elements this rank received for
   long long OwnRays = 0;     ///< the rays this rank cast (RayCount is the sum over ranks)
+  /// Where the time went, step by step in the order each first ran ("direct light",
+  /// "links", "bounces", "final gather", ...): a step run again, as each solve of the
+  /// StandardSeparate mode runs them, adds to its own.
+  struct Step
+  {
+    std::string Name;
+    double Seconds = 0;
+  };
+  std::vector<Step> Steps;
+  void Took(const std::string& step, double seconds);
 
   /// Takes in the statistics of a solve run after the ones already in (the
   /// StandardSeparate mode's solutions, one by one, into Sequence()): counts, links and
@@ -167,6 +177,26 @@ struct SolverStatistics
     s.SingleChannel = true;
     return s;
   }
+};
+
+/// Books the time from its making to its end as a step of a solve (SolverStatistics::Steps).
+class StepTimer
+{
+public:
+  StepTimer(SolverStatistics& stats, const char* step)
+    : Stats(stats)
+    , Name(step)
+    , Begin(std::chrono::steady_clock::now())
+  {
+  }
+  ~StepTimer() { Stats.Took(Name, std::chrono::duration<double>(std::chrono::steady_clock::now() - Begin).count()); }
+  StepTimer(const StepTimer&) = delete;
+  StepTimer& operator=(const StepTimer&) = delete;
+
+private:
+  SolverStatistics& Stats;
+  const char* Name;
+  std::chrono::steady_clock::time_point Begin;
 };
 
 /// One line of the solver's account of what it simulated and what it skipped.

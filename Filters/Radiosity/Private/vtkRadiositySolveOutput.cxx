@@ -24,6 +24,7 @@
 #include "vtkTable.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <sstream>
 
 namespace vtkRadiositySolveOutput
@@ -240,6 +241,16 @@ void AddStatusFields(vtkFieldData* fields, const std::vector<radiosity::EffectDe
   took->SetName("SolveSeconds");
   took->InsertNextValue(seconds);
   fields->AddArray(took);
+  std::vector<std::string> steps;
+  vtkNew<vtkDoubleArray> stepSeconds;
+  stepSeconds->SetName("SolveStepSeconds");
+  for (const radiosity::SolverStatistics::Step& step : stats.Steps)
+  {
+    steps.push_back(step.Name);
+    stepSeconds->InsertNextValue(step.Seconds);
+  }
+  vtkRadiosityAdapter::AddStrings(fields, "SolveSteps", steps);
+  fields->AddArray(stepSeconds);
   vtkNew<vtkDoubleArray> unshot;
   unshot->SetName("UnshotHistory");
   for (double r : stats.RemainingHistory)
@@ -304,8 +315,15 @@ std::string DescribeEarlyStop(const radiosity::SolverStatistics& stats, double b
 void LogSolve(const radiosity::SolverStatistics& stats, double seconds, int elements, int rank,
   const std::vector<radiosity::EffectDecision>& effects)
 {
-  vtkLogF(INFO, "LightTaggedRadiosity: %s; %d shots, %.3f s; %s", radiosity::DescribeSolve(stats).c_str(),
-    stats.Shots, seconds, radiosity::SummarizeEffects(effects).c_str());
+  std::string steps;
+  for (const radiosity::SolverStatistics::Step& step : stats.Steps)
+  {
+    char text[96];
+    std::snprintf(text, sizeof(text), "%s%s %.1f s", steps.empty() ? "" : ", ", step.Name.c_str(), step.Seconds);
+    steps += text;
+  }
+  vtkLogF(INFO, "LightTaggedRadiosity: %s; %d shots, %.3f s (%s); %s", radiosity::DescribeSolve(stats).c_str(),
+    stats.Shots, seconds, steps.c_str(), radiosity::SummarizeEffects(effects).c_str());
   if (stats.Ranks > 1)
   {
     vtkLogF(INFO,

@@ -352,7 +352,7 @@ TEST(Solver, StatisticsAppendTakesInEveryField)
   // all of them, any of them or the most held at once, as its comment says. The size check
   // fails when a field is added, so that it is merged in Append and checked here too.
   // The size is that of this project's platform (x86-64, libstdc++); elsewhere it is skipped.
-  static_assert(sizeof(void*) != 8 || sizeof(std::string) != 32 || sizeof(SolverStatistics) == 344,
+  static_assert(sizeof(void*) != 8 || sizeof(std::string) != 32 || sizeof(SolverStatistics) == 368,
     "SolverStatistics changed: merge the new field in SolverStatistics::Append and check it below");
   auto run = [](int k) {
     SolverStatistics s;
@@ -392,6 +392,9 @@ TEST(Solver, StatisticsAppendTakesInEveryField)
     s.TimeHistory.assign(k, 1.0);
     s.RemainingHistory.assign(k, 0.5);
     s.RemainingPerSolution.assign(k, 0.25);
+    s.Took("links", 1.0 * k);
+    s.Took(k == 1 ? "direct light" : "final gather", 0.5 * k);
+    s.Took("links", 0.25);
     return s;
   };
   SolverStatistics all = SolverStatistics::Sequence();
@@ -430,6 +433,14 @@ TEST(Solver, StatisticsAppendTakesInEveryField)
   EXPECT_DOUBLE_EQ(all.CollectiveSeconds, 0.375);
   EXPECT_EQ(all.ReceivingElements, 22);
   EXPECT_EQ(all.OwnRays, 1800);
+  // Steps add up by name, in the order each first ran.
+  ASSERT_EQ(all.Steps.size(), 3u);
+  EXPECT_EQ(all.Steps[0].Name, "links");
+  EXPECT_DOUBLE_EQ(all.Steps[0].Seconds, 3.5);
+  EXPECT_EQ(all.Steps[1].Name, "direct light");
+  EXPECT_DOUBLE_EQ(all.Steps[1].Seconds, 0.5);
+  EXPECT_EQ(all.Steps[2].Name, "final gather");
+  EXPECT_DOUBLE_EQ(all.Steps[2].Seconds, 1.0);
   // The histories are the caller's, weighted by each solution's power.
   EXPECT_TRUE(all.TimeHistory.empty() && all.RemainingHistory.empty() && all.RemainingPerSolution.empty());
 }

@@ -168,6 +168,15 @@ check(auto.startswith("Hierarchical") and "chosen by Auto" in auto, f"Auto on th
 took = chosen.GetOutput().GetFieldData().GetArray("SolveSeconds")
 check(took is not None and took.GetValue(0) == chosen.GetLastSolveSeconds() > 0,
       "SolveSeconds says what the solve took, beside the estimate in SolverMethod")
+fields = chosen.GetOutput().GetFieldData()
+steps = fields.GetAbstractArray("SolveSteps")
+step_seconds = np.array([fields.GetArray("SolveStepSeconds").GetValue(i) for i in range(steps.GetNumberOfValues())])
+names = [steps.GetValue(i) for i in range(steps.GetNumberOfValues())]
+check(names[:1] == ["prepare the scene"] and {"links", "shots", "final gather"} <= set(names)
+      and len(step_seconds) == len(names) and (step_seconds >= 0).all()
+      and 0.5 * took.GetValue(0) < step_seconds.sum() <= took.GetValue(0),
+      f"SolveSteps books most of the solve's {took.GetValue(0):.3f} s to its steps: "
+      + ", ".join(f"{n} {t:.3f} s" for n, t in zip(names, step_seconds)))
 tiny = relight.solve(scene, 8.0, 8.0).GetOutput().GetFieldData().GetAbstractArray("SolverMethod").GetValue(0)
 check(tiny.startswith("Progressive") and "< 5000" in tiny, f"Auto on a few dozen elements: '{tiny}'")
 finish("TestHierarchical")
