@@ -227,6 +227,26 @@ bool vtkRadiosityRelitInput::Combine(
   return CombineInto(cells ? this->Impl->Cells : this->Impl->Points, weights, out, error);
 }
 
+std::vector<float> vtkRadiosityRelitInput::Interleaved(bool cells) const
+{
+  const radiosity::SolutionTable& table = cells ? this->Impl->Cells : this->Impl->Points;
+  const size_t k = table.Floats.size() + table.Doubles.size();
+  std::vector<float> values(table.Items * k * 3);
+  for (size_t l = 0; l < k; ++l)
+  {
+    const float* floats = l < table.Floats.size() ? table.Floats[l] : nullptr;
+    const double* doubles = floats ? nullptr : table.Doubles[l];
+    for (size_t i = 0; i < table.Items; ++i)
+    {
+      for (size_t c = 0; c < 3; ++c)
+      {
+        values[(i * k + l) * 3 + c] = floats ? floats[3 * i + c] : static_cast<float>(doubles[3 * i + c]);
+      }
+    }
+  }
+  return values;
+}
+
 double vtkRadiosityRelitInput::MeterAtDefaults(vtkPolyData* data) const
 {
   const bool cells = this->HasCells();

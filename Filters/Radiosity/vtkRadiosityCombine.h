@@ -44,6 +44,9 @@ public:
   /// the direct parts, as radiosity::LightWeights gives them); false, with `error` naming
   /// the item, where the sum is not finite.
   bool Combine(bool cells, const std::vector<double>& weights, vtkFloatArray* out, std::string& error) const;
+  /// The points' (or the cells') solutions item by item, each item's lights side by side
+  /// (3 floats a light, in GetNames order): what the GPU mapper's buffer holds.
+  std::vector<float> Interleaved(bool cells) const;
   /// The exposure a camera meters for `data` (the set read) with every light at its
   /// default: on the cells where they hold the solutions (they know which ones are lamps),
   /// else the points. 0 where that lights nothing.

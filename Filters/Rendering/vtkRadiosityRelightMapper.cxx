@@ -3,10 +3,7 @@
 #include "Relight/LightRig.h"
 #include "vtkRadiosityLights.h"
 #include "vtkRadiosityCombine.h"
-#include "vtkRadiosityLightDefaults.h"
 
-#include "vtkDataArray.h"
-#include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -39,7 +36,8 @@ struct vtkRadiosityRelightMapper::Internals
   double Metered = 1;                 ///< the metered exposure, for the weights and data below
   std::vector<float> MeteredWeights;  ///< empty where metered at the lights' defaults
   vtkMTimeType MeteredFor = 0;
-  std::vector<std::string> Names;       ///< of the data uploaded
+  vtkRadiosityRelitInput Input;         ///< the lights and solutions of the data uploaded
+  std::vector<std::string> Names;       ///< its lights, where it has a problem none
   std::vector<radiosity::Vec3> Defaults; ///< their default colors
   vtkNew<vtkOpenGLBufferObject> Buffer;
   vtkNew<vtkTextureObject> Texture;
@@ -171,31 +169,24 @@ void vtkRadiosityRelightMapper::UploadIfNeeded(vtkRenderer* ren)
   }
   in.UploadedData = data;
   in.UploadedTime = data->GetMTime();
-  in.Names = vtkRadiosityLightNames(data->GetFieldData());
-  in.Defaults.assign(in.Names.size(), { 1, 1, 1 });
-  in.Problem.clear();
-  const size_t points = static_cast<size_t>(data->GetNumberOfPoints());
-  const size_t k = in.Names.size();
-  std::vector<vtkDataArray*> arrays;
-  for (const std::string& name : in.Names)
+  // The relight filter's reading of its input: the same lights, defaults and arrays.
+  in.Problem = in.Input.ReadLights(data);
+  in.Problem = in.Problem.empty() ? in.Input.ReadTables(data) : in.Problem;
+  if (in.Problem.empty() && !in.Input.HasPoints())
   {
-    vtkDataArray* array = data->GetPointData()->GetArray(("Radiosity_" + name).c_str());
-    if (!array || array->GetNumberOfComponents() != 3)
-    {
-      in.Problem = "the input has no 3-component point array 'Radiosity_" + name + "'";
-    }
-    arrays.push_back(array);
+    in.Problem = "the input has no point arrays 'Radiosity_<light>' (this mapper colors the points; the light-tagged "
+                 "solver writes them)";
   }
-  if (k == 0)
-  {
-    in.Problem = "the input has no LightNames (the light-tagged solver's output has them)";
-  }
+  in.Names.clear();
+  in.Defaults.clear();
   if (!in.Problem.empty())
   {
-    in.Names.clear();
     return;
   }
-  in.Defaults = vtkRadiosityLightDefaultColors(data, static_cast<int>(k));
+  in.Names = in.Input.GetNames();
+  in.Defaults = in.Input.GetDefaultColors();
+  const size_t points = static_cast<size_t>(data->GetNumberOfPoints());
+  const size_t k = in.Names.size();
   GLint most = 0, vectors = 0;
   glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &most);
   glGetIntegerv(GL_MAX_VERTEX_UNIFORM_VECTORS, &vectors);
@@ -214,22 +205,7 @@ void vtkRadiosityRelightMapper::UploadIfNeeded(vtkRenderer* ren)
     return; // the solutions stay on the CPU
   }
   // Point-major: the k solutions of a vertex lie together, for one texel run per vertex.
-  std::vector<float> values(points * k * 3);
-  for (size_t l = 0; l < k; ++l)
-  {
-    // The solver writes float: read its memory directly, other types through the API.
-    auto* floats = vtkFloatArray::FastDownCast(arrays[l]);
-    const float* direct = floats ? floats->GetPointer(0) : nullptr;
-    for (size_t p = 0; p < points; ++p)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        values[(p * k + l) * 3 + c] = direct
-          ? direct[3 * p + c]
-          : static_cast<float>(arrays[l]->GetComponent(static_cast<vtkIdType>(p), c));
-      }
-    }
-  }
+  const std::vector<float> values = in.Input.Interleaved(false);
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   in.Texture->SetContext(window);
   in.Buffer->Upload(values, vtkOpenGLBufferObject::TextureBuffer);
@@ -245,11 +221,15 @@ void vtkRadiosityRelightMapper::DescribeLights(vtkPolyData* data, vtkStringArray
   {
     return;
   }
-  const std::vector<std::string> lights = vtkRadiosityLightNames(data->GetFieldData());
+  vtkRadiosityRelitInput input;
+  if (!input.ReadLights(data).empty())
+  {
+    return;
+  }
+  const std::vector<std::string>& lights = input.GetNames();
   std::vector<radiosity::LightSetting> effective;
   std::vector<std::string> warnings;
-  const std::vector<radiosity::Vec3> defaults = vtkRadiosityLightDefaultColors(data, static_cast<int>(lights.size()));
-  if (!this->Internal->Lights->Resolve(lights, defaults, this->Internal->Time, effective, warnings).empty())
+  if (!this->Internal->Lights->Resolve(lights, input.GetDefaultColors(), this->Internal->Time, effective, warnings).empty())
   {
     return;
   }
@@ -355,14 +335,8 @@ void vtkRadiosityRelightMapper::SumOnCpu(const std::vector<float>& weights, vtkF
   vtkPolyData* data = this->Internal->UploadedData;
   const vtkIdType points = data->GetNumberOfPoints();
   // The relight filter's sum (in parallel, on the arrays' own memory), as the shader's.
-  std::vector<std::string> arrays;
-  for (const std::string& name : this->Internal->Names)
-  {
-    arrays.push_back("Radiosity_" + name);
-  }
   std::string error;
-  if (!vtkRadiosityCombineSolutions(data->GetPointData(), arrays,
-        std::vector<double>(weights.begin(), weights.end()), points, linear, error))
+  if (!this->Internal->Input.Combine(false, std::vector<double>(weights.begin(), weights.end()), linear, error))
   {
     vtkErrorMacro(<< "Cannot relight on the CPU: " << error << ".");
     linear->SetNumberOfComponents(3);

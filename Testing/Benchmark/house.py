@@ -191,6 +191,9 @@ def stronger_reference(scene, csv, python, spp, result, cells, names, average):
                 reference_noise_pct=round(100 * noise["noise_a"], 2))
 
 
+RADIANCE_RAYS = 512  # Radiance's ambient rays at a probe, in two draws of half as many
+
+
 def accuracy(result, out, python, names, average, traced=False, radiance=False, second_spp=0):
     """Mean per-light error against Mitsuba at probe points (or element means), and how ours
     compares where the house is lit (median ratio); with `radiance`, the same against
@@ -208,16 +211,43 @@ def accuracy(result, out, python, names, average, traced=False, radiance=False, 
     if second_spp > 0:
         row.update(stronger_reference(scene, csv, python, second_spp, result, cells, names, average))
     if radiance:
-        second = out / f"{stem}_radiance.csv"
-        house_reference.render(scene, second, python, script="radiance_reference.py")
-        theirs, their_median, _ = house_reference.compare(result, cells, second, names, average > 0)
-        apart = house_reference.references_apart(csv, second)
-        print("error against Radiance: " + ", ".join(f"{n} {100 * e:.1f} %" for n, e in theirs.items()))
-        print("Radiance against Mitsuba: " + ", ".join(f"{100 * e:.1f} %" for e in apart))
-        row.update(radiance_error_pct=round(100 * float(np.mean(list(theirs.values()))), 2),
-                   radiance_lit_median_ratio=round(their_median, 3),
-                   references_apart_pct=round(100 * float(np.mean(apart)), 2))
+        row.update(radiance_reference(scene, csv, python, result, cells, names, average, row))
     return row
+
+
+def radiance_reference(scene, mitsuba_csv, python, result, cells, names, average, row):
+    """Radiance's rtrace at the same probes, as two draws of RADIANCE_RAYS / 2 ambient rays
+    (another probe order each): their difference is Radiance's noise, their mean the
+    reference. How far it is from Mitsuba's, against what the two references' noise alone
+    would put between them (Mitsuba's from --second-reference, else unknown)."""
+    import combine_references, house_reference
+    half = RADIANCE_RAYS // 2
+    draws = [mitsuba_csv.with_name(mitsuba_csv.stem.replace("reference", f"radiance_{half}_seed{seed}") + ".csv")
+             for seed in (0, 1)]
+    for seed, draw in enumerate(draws):
+        house_reference.render(scene, draw, python, spp=half, script="radiance_reference.py", seed=seed)
+    mean = draws[0].with_name(draws[0].name.replace(f"_{half}_seed0", f"_{RADIANCE_RAYS}"))
+    noise = combine_references.combine(draws[0], half, draws[1], half, mean)["noise_mean"]
+    theirs, their_median, _ = house_reference.compare(result, cells, mean, names, average > 0)
+    apart = float(np.mean(house_reference.references_apart(mitsuba_csv, mean)))
+    print("error against Radiance: " + ", ".join(f"{n} {100 * e:.1f} %" for n, e in theirs.items()))
+    out = dict(radiance_error_pct=round(100 * float(np.mean(list(theirs.values()))), 2),
+               radiance_lit_median_ratio=round(their_median, 3), radiance_noise_pct=round(100 * noise, 2),
+               references_apart_pct=round(100 * apart, 2))
+    mitsuba = row.get("reference_noise_pct")
+    if mitsuba is None:
+        print(f"Radiance against Mitsuba {100 * apart:.2f} % apart; Radiance's noise {100 * noise:.2f} % "
+              "(Mitsuba's: run with --second-reference)")
+        return out
+    # Two independent draws differ by the root of their squared noises (the benches' measure):
+    # what is apart beyond that is the two renderers' models.
+    expected = np.hypot(noise, mitsuba / 100)
+    models = np.sqrt(max(0.0, apart ** 2 - expected ** 2))
+    print(f"Radiance against Mitsuba {100 * apart:.2f} % apart; their noise alone would put them "
+          f"{100 * expected:.2f} % apart (Radiance {100 * noise:.2f} %, Mitsuba {mitsuba:.2f} %): "
+          f"{'within' if apart <= expected else 'beyond'} their noise, the models' own difference about {100 * models:.2f} %")
+    out.update(references_noise_pct=round(100 * expected, 2), references_models_pct=round(100 * models, 2))
+    return out
 
 
 def main():
@@ -254,7 +284,8 @@ def main():
                         help="with --reference: probes where rays from the lamps meet surfaces, and one bounce further "
                              "(drawn independently of our elements), ours interpolated there")
     parser.add_argument("--radiance", action="store_true",
-                        help="with --reference: also Radiance's rtrace (pyradiance, in the same venv) at the same probes")
+                        help="with --reference: also Radiance's rtrace (pyradiance, in the same venv) at the same probes, in "
+                             "two draws whose difference gives its noise")
     parser.add_argument("--second-reference", type=int, default=0, metavar="SPP",
                         help="with --reference: a second Mitsuba render of the same probes at SPP paths (another "
                              "seed): the two renders' noise, and our error against their mean as well")

@@ -149,7 +149,8 @@ def render(scene_path, csv_path, python, spp=PATHS, script="mitsuba_reference.py
     key = csv_path.with_suffix(".key")
     if csv_path.exists() and key.exists() and key.read_text() == made_from:
         return
-    extra = ["--spp", str(spp), "--seed", str(seed)] if script.name == "mitsuba_reference.py" else []
+    extra = ["--spp", str(spp)] if script.name == "mitsuba_reference.py" else ["--ad", str(spp)]
+    extra += ["--seed", str(seed)]
     subprocess.run([str(python), str(script), str(scene_path), str(csv_path), *extra], check=True)
     key.write_text(made_from)
 

@@ -56,9 +56,12 @@ def write_scene(polygons, light, path):
 
 
 def irradiance(octree, probes, args, eps):
-    """rtrace -I at each probe, a hair above it along its normal."""
+    """rtrace -I at each probe, a hair above it along its normal. With a seed, the probes go
+    to rtrace in an order shuffled by it (and come back in theirs): Radiance takes no seed,
+    but a ray's samples follow its place in the run, so another order is another draw."""
+    order = np.random.default_rng(args.seed).permutation(len(probes)) if args.seed else np.arange(len(probes))
     rows = []
-    for p in probes:
+    for p in (probes[i] for i in order):
         n = np.asarray(p["normal"], float)
         x = np.asarray(p["point"], float) + eps * n
         rows.append(f"{x[0]:.9g} {x[1]:.9g} {x[2]:.9g} {n[0]:.9g} {n[1]:.9g} {n[2]:.9g}")
@@ -66,7 +69,10 @@ def irradiance(octree, probes, args, eps):
                "-lw", "1e-7", "-lr", "-" + str(args.ab), "-dj", "0.7", "-ds", "0.05", "-dt", "0", "-dc", "1", "-st", "0", "-n", str(os.cpu_count() or 1),
                octree]
     done = subprocess.run(command, input="\n".join(rows) + "\n", capture_output=True, text=True, check=True)
-    return np.array([[float(v) for v in line.split()[:3]] for line in done.stdout.splitlines() if line.strip()])
+    traced = np.array([[float(v) for v in line.split()[:3]] for line in done.stdout.splitlines() if line.strip()])
+    values = np.empty_like(traced)
+    values[order] = traced
+    return values
 
 
 def main():
@@ -75,6 +81,9 @@ def main():
     parser.add_argument("csv")
     parser.add_argument("--ab", type=int, default=16, help="ambient bounces")
     parser.add_argument("--ad", type=int, default=512, help="ambient divisions (rays) at the probe")
+    parser.add_argument("--seed", type=int, default=0,
+                        help="another draw of the same render (the probes traced in an order shuffled by it): "
+                             "two seeds' difference is Radiance's noise")
     args = parser.parse_args()
     data = json.loads(pathlib.Path(args.scene).read_text())
     polygons, probes = data["polygons"], [p for p in data["probes"] if p["seen"]]

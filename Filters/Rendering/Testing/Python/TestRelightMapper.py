@@ -6,7 +6,8 @@ import os
 
 import numpy as np
 from vtkmodules.util import numpy_support
-from vtkmodules.vtkCommonCore import vtkLogger
+from vtkmodules.vtkCommonCore import vtkIntArray, vtkLogger
+from vtkmodules.vtkCommonDataModel import vtkPolyData
 
 import relight
 from relight import FrameRenderer, read_polydata
@@ -91,6 +92,43 @@ for _ in range(3):
 said = [w for w in catcher.warnings if "index 9" in w]
 check(len(said) == 1, f"a light index past the lights, over 3 frames: said {len(said)} time(s)")
 cpu_mapper.GetLights().SetLightEnabled(0, True)
+
+# --- bad input: said as the relight filter says it (the two read their input alike) ---------------
+def problem_of(data):
+    """The mapper's problem with `data` after a frame, and the relight filter's error."""
+    bad = relight.vtkRadiosityRelightMapper()
+    bad.SetInputData(data)
+    catcher = relight.ErrorCatcher(bad)
+    FrameRenderer(ROOM_CAMERA, SIZE, bad).render()
+    filter_ = relight.vtkRadiosityRelight()
+    filter_.SetInputData(data)
+    caught = relight.ErrorCatcher(filter_)
+    filter_.Update()
+    return bad.GetLastProblem(), " ".join(caught.errors), len(catcher.errors), bad.GetNumberOfLights()
+
+
+cells_only = vtkPolyData()
+cells_only.DeepCopy(solved)
+names = relight.light_names(solved)
+for name in names:
+    cells_only.GetPointData().RemoveArray(f"Radiosity_{name}")
+problem, said, errors, lights = problem_of(cells_only)
+check("no point arrays 'Radiosity_<light>'" in problem and errors == 1 and lights == 0,
+      f"solutions on the cells only: '{problem}' (said {errors} time(s))")
+integers = vtkPolyData()
+integers.DeepCopy(solved)
+whole_numbers = vtkIntArray()
+whole_numbers.DeepCopy(solved.GetPointData().GetArray(f"Radiosity_{names[0]}"))
+whole_numbers.SetName(f"Radiosity_{names[0]}")
+integers.GetPointData().AddArray(whole_numbers)
+problem, said, errors, lights = problem_of(integers)
+check("solutions must be float or double" in problem and problem in said and lights == 0,
+      f"an integer solution array: '{problem}', as the filter says it")
+plain = vtkPolyData()
+plain.DeepCopy(read_polydata(os.path.join(DATA, "paper_3lights.vtp")))
+plain.GetFieldData().RemoveArray("LightNames")
+problem, said, errors, lights = problem_of(plain)
+check("has no lights" in problem and problem in said, f"a scene not solved: '{problem}', as the filter says it")
 
 # --- a room with 40 lamps (a 5 x 8 grid in the ceiling) and 64 lamps (8 x 8) ----------------------
 def lamp_room(columns, rows, size=8.0, height=3.0):
