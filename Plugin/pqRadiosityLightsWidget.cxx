@@ -22,22 +22,48 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+namespace
+{
+/// The first cell of each part of a light's row (cells sharing a heading are one part),
+/// and past the last: the panel's columns.
+QVector<int> Parts()
+{
+  QVector<int> starts{ 0 };
+  for (int c = 1; c < vtkRadiosityLights::GetSettingRowCells(); ++c)
+  {
+    if (std::string(vtkRadiosityLights::GetSettingRowColumnHeading(c)) !=
+      vtkRadiosityLights::GetSettingRowColumnHeading(c - 1))
+    {
+      starts.push_back(c);
+    }
+  }
+  starts.push_back(vtkRadiosityLights::GetSettingRowCells());
+  return starts;
+}
+} // namespace
+
 pqRadiosityLightsWidget::pqRadiosityLightsWidget(vtkSMProxy* proxy, vtkSMProperty* property, QWidget* parent)
   : Superclass(proxy, parent)
+  , PartStart(Parts())
   , Property(property)
-  , Table(new QTableWidget(0, 4, this))
+  , Table(new QTableWidget(0, Parts().size() - 1, this))
   , Connection(vtkEventQtSlotConnect::New())
 {
   this->setShowLabel(false);
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addWidget(new QLabel("Lights (after the first Apply):", this));
-  this->Table->setHorizontalHeaderLabels({ "Light", "Color", "Intensity", "On" });
+  QStringList headings;
+  for (int column = 0; column + 1 < this->PartStart.size(); ++column)
+  {
+    headings.push_back(vtkRadiosityLights::GetSettingRowColumnHeading(this->PartStart[column]));
+  }
+  this->Table->setHorizontalHeaderLabels(headings);
   this->Table->verticalHeader()->hide();
   // The table fits the panel's width: names take what is left, and nothing hides past a
   // horizontal scroll bar (the panel is often narrower than the table would like).
   this->Table->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
-  for (int column = 1; column < 4; ++column)
+  for (int column = 1; column < headings.size(); ++column)
   {
     this->Table->horizontalHeader()->setSectionResizeMode(column, QHeaderView::ResizeToContents);
   }
@@ -95,67 +121,102 @@ void pqRadiosityLightsWidget::refreshInPlace(const QVector<Light>& lights)
   this->Lights = lights;
   for (int row = 0; row < lights.size(); ++row)
   {
-    if (auto* intensity = qobject_cast<QDoubleSpinBox*>(this->Table->cellWidget(row, 2)))
+    for (int column = 1; column + 1 < this->PartStart.size(); ++column)
     {
-      const QSignalBlocker block(intensity);
-      intensity->setValue(lights[row].Intensity);
+      const double value = lights[row].Cells[this->PartStart[column]];
+      QWidget* editor = this->Table->cellWidget(row, column);
+      if (auto* number = qobject_cast<QDoubleSpinBox*>(editor))
+      {
+        const QSignalBlocker block(number);
+        number->setValue(value);
+      }
+      else if (auto* flag = qobject_cast<QCheckBox*>(editor))
+      {
+        const QSignalBlocker block(flag);
+        flag->setChecked(value != 0);
+      }
+      else
+      {
+        this->paintColorButton(row, column);
+      }
     }
-    if (auto* enabled = qobject_cast<QCheckBox*>(this->Table->cellWidget(row, 3)))
-    {
-      const QSignalBlocker block(enabled);
-      enabled->setChecked(lights[row].Enabled);
-    }
-    this->paintColorButton(row);
   }
 }
 
 void pqRadiosityLightsWidget::addRow(int row)
 {
-  const QVector<Light>& lights = this->Lights;
-  auto* name = new QTableWidgetItem(QString::fromStdString(lights[row].Name));
+  auto* name = new QTableWidgetItem(QString::fromStdString(this->Lights[row].Name));
   name->setFlags(Qt::ItemIsEnabled);
   this->Table->setItem(row, 0, name);
-
-  auto* color = new QPushButton(this->Table);
-  color->setMaximumWidth(48);
-  this->Table->setCellWidget(row, 1, color);
-  QObject::connect(color, &QPushButton::clicked, this, [this, row]() {
-    Light& light = this->Lights[row];
-    const QColor chosen = QColorDialog::getColor(
-      QColor::fromRgbF(std::min(1.0, light.Color[0]), std::min(1.0, light.Color[1]), std::min(1.0, light.Color[2])),
-      this, "Color of " + QString::fromStdString(light.Name));
-    if (chosen.isValid())
+  for (int column = 1; column + 1 < this->PartStart.size(); ++column)
+  {
+    this->Table->setCellWidget(row, column, this->makeEditor(row, column));
+    if (vtkRadiosityLights::GetSettingRowColumnEditor(this->PartStart[column]) == vtkRadiosityLights::COLOR_CELL)
     {
-      light.Color[0] = chosen.redF();
-      light.Color[1] = chosen.greenF();
-      light.Color[2] = chosen.blueF();
-      light.Edited = light.ColorEdited = true;
-      this->paintColorButton(row);
-      this->push();
+      this->paintColorButton(row, column);
     }
-  });
-  this->paintColorButton(row);
+  }
+}
 
-  auto* intensity = new QDoubleSpinBox(this->Table);
-  intensity->setMaximumWidth(90);
-  intensity->setRange(0.0, 1e9);
-  intensity->setDecimals(3);
-  intensity->setValue(lights[row].Intensity);
-  this->Table->setCellWidget(row, 2, intensity);
-  QObject::connect(intensity, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this, row](double v) {
-    this->Lights[row].Intensity = v;
-    this->Lights[row].Edited = true;
-    this->push();
-  });
+QWidget* pqRadiosityLightsWidget::makeEditor(int row, int column)
+{
+  const int first = this->PartStart[column], end = this->PartStart[column + 1];
+  const double value = this->Lights[row].Cells[first];
+  switch (vtkRadiosityLights::GetSettingRowColumnEditor(first))
+  {
+    case vtkRadiosityLights::COLOR_CELL:
+    {
+      auto* color = new QPushButton(this->Table);
+      color->setMaximumWidth(48);
+      QObject::connect(color, &QPushButton::clicked, this, [this, row, column, first, end]() {
+        std::vector<double>& cells = this->Lights[row].Cells;
+        const QColor chosen = QColorDialog::getColor(QColor::fromRgbF(std::min(1.0, cells[first]),
+                                                       std::min(1.0, cells[first + 1]), std::min(1.0, cells[first + 2])),
+          this, "Color of " + QString::fromStdString(this->Lights[row].Name));
+        if (chosen.isValid())
+        {
+          cells[first] = chosen.redF();
+          cells[first + 1] = chosen.greenF();
+          cells[first + 2] = chosen.blueF();
+          this->paintColorButton(row, column);
+          this->edited(row, first, end);
+        }
+      });
+      return color;
+    }
+    case vtkRadiosityLights::FLAG_CELL:
+    {
+      auto* flag = new QCheckBox(this->Table);
+      flag->setChecked(value != 0);
+      QObject::connect(flag, &QCheckBox::toggled, this, [this, row, first, end](bool on) {
+        this->Lights[row].Cells[first] = on ? 1.0 : 0.0;
+        this->edited(row, first, end);
+      });
+      return flag;
+    }
+    default:
+    {
+      auto* number = new QDoubleSpinBox(this->Table);
+      number->setMaximumWidth(90);
+      number->setRange(vtkRadiosityLights::GetSettingRowColumnLow(first), vtkRadiosityLights::GetSettingRowColumnHigh(first));
+      number->setDecimals(3);
+      number->setValue(value);
+      QObject::connect(number, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
+        [this, row, first, end](double v) {
+          this->Lights[row].Cells[first] = v;
+          this->edited(row, first, end);
+        });
+      return number;
+    }
+  }
+}
 
-  auto* enabled = new QCheckBox(this->Table);
-  enabled->setChecked(lights[row].Enabled);
-  this->Table->setCellWidget(row, 3, enabled);
-  QObject::connect(enabled, &QCheckBox::toggled, this, [this, row](bool on) {
-    this->Lights[row].Enabled = on;
-    this->Lights[row].Edited = true;
-    this->push();
-  });
+void pqRadiosityLightsWidget::edited(int row, int first, int end)
+{
+  Light& light = this->Lights[row];
+  std::fill(light.CellEdited.begin() + first, light.CellEdited.begin() + end, 1);
+  light.Edited = true;
+  this->push();
 }
 
 void pqRadiosityLightsWidget::rebuild()
@@ -204,18 +265,24 @@ void pqRadiosityLightsWidget::fitHeight()
   this->Table->setFixedHeight(height);
 }
 
-void pqRadiosityLightsWidget::paintColorButton(int row)
+void pqRadiosityLightsWidget::paintColorButton(int row, int column)
 {
-  auto* button = qobject_cast<QPushButton*>(this->Table->cellWidget(row, 1));
+  auto* button = qobject_cast<QPushButton*>(this->Table->cellWidget(row, column));
+  if (!button)
+  {
+    return;
+  }
+  const int first = this->PartStart[column];
   const Light& light = this->Lights[row];
+  const double* rgb = light.Cells.data() + first;
   // A default color is the light's Emission, often brighter than 1: its hue is shown.
-  const double brightest = std::max({ light.Color[0], light.Color[1], light.Color[2], 1.0 });
-  const QColor shown = QColor::fromRgbF(std::max(0.0, light.Color[0] / brightest),
-    std::max(0.0, light.Color[1] / brightest), std::max(0.0, light.Color[2] / brightest));
+  const double brightest = std::max({ rgb[0], rgb[1], rgb[2], 1.0 });
+  const QColor shown = QColor::fromRgbF(
+    std::max(0.0, rgb[0] / brightest), std::max(0.0, rgb[1] / brightest), std::max(0.0, rgb[2] / brightest));
   button->setText(QString());
   button->setStyleSheet(QString("background-color: %1").arg(shown.name()));
-  button->setToolTip(light.ColorEdited ? QString("Color %1 (click to change)").arg(shown.name())
-                                       : QString("The light's own color, from its Emission (click to change)"));
+  button->setToolTip(light.CellEdited[first] ? QString("Color %1 (click to change)").arg(shown.name())
+                                             : QString("The light's own color, from its Emission (click to change)"));
 }
 
 void pqRadiosityLightsWidget::push()

@@ -1,5 +1,6 @@
 // ParaView panel for the relight filter's per-light settings: one row per light, by name,
-// with a color button, an intensity box and an on/off check box.
+// and a column per part of the light's row as the row's declaration gives them (a color
+// button, a number box, an on/off check box: vtkRadiosityLights::GetSettingRowColumnEditor).
 #ifndef pqRadiosityLightsWidget_h
 #define pqRadiosityLightsWidget_h
 
@@ -32,20 +33,25 @@ private Q_SLOTS:
   void rebuild();
 
 private:
-  /// A light as the panel shows it (name, color, intensity, on/off, and whether and how it
-  /// was edited): only edited lights are written, an unedited color as NaN.
+  /// A light as the panel shows it (name, its row's values, which parts were edited): only
+  /// edited lights are written, a part not edited as NaN.
   using Light = vtkRadiosityLights::ShownLight;
   void push();
   /// The table as tall as its rows (up to a limit), so the panel, not the table, scrolls.
   void fitHeight();
-  void paintColorButton(int row);
+  void paintColorButton(int row, int column);
   /// The lights in effect (the information property), with the user's own rows on top.
   QVector<Light> readLights(vtkSMProperty* info) const;
   /// Same lights as shown: new values into the widgets, which someone may be typing in.
   void refreshInPlace(const QVector<Light>& lights);
-  /// The name, color button, intensity box and on/off box of Lights[row].
+  /// The name and one editor per part of Lights[row].
   void addRow(int row);
-
+  /// The editor of the part shown in table column `column` of Lights[row].
+  QWidget* makeEditor(int row, int column);
+  /// Marks cells [first, end) of Lights[row] edited and sends the rows.
+  void edited(int row, int first, int end);
+  /// The first cell of each table column's part (the name's is 0), and past the last.
+  QVector<int> PartStart;
   vtkSMProperty* Property;
   QTableWidget* Table;
   QVector<Light> Lights;

@@ -11,6 +11,9 @@
 #include <QStringList>
 #include <QVariant>
 
+class vtkEventQtSlotConnect;
+class vtkSMProperty;
+
 class pqRadiosityRowsWidget : public pqPropertyWidget
 {
   Q_OBJECT
@@ -19,6 +22,7 @@ class pqRadiosityRowsWidget : public pqPropertyWidget
 
 public:
   pqRadiosityRowsWidget(vtkSMProxy* proxy, QWidget* parent = nullptr);
+  ~pqRadiosityRowsWidget() override;
 
   QList<QVariant> rows() const;
   void setRows(const QList<QVariant>& values);
@@ -26,6 +30,11 @@ public:
 Q_SIGNALS:
   /// The rows changed in the widget: the links set the property, a change is available.
   void rowsChanged();
+
+private Q_SLOTS:
+  /// The property's rows were set (from Python, a state file, Apply): where they are not
+  /// the widget's, show them. The links alone miss a property emptied from Python.
+  void followProperty();
 
 protected:
   /// Links `rows` to the property; called at the end of a subclass's constructor (the
@@ -35,6 +44,10 @@ protected:
   virtual void rowsSet() = 0;
 
   QStringList Rows; ///< the property's elements as the links last gave or took them
+
+private:
+  vtkSMProperty* Linked = nullptr;
+  vtkEventQtSlotConnect* Watch = nullptr;
 };
 
 #endif

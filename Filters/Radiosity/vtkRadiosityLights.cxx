@@ -300,12 +300,51 @@ int vtkRadiosityLights::GetSettingRowColumnType(int i)
   {
     case radiosity::RowCell::Text:
       return VTK_STRING;
+    case radiosity::RowCell::Color:
     case radiosity::RowCell::Number:
       return VTK_DOUBLE;
     case radiosity::RowCell::Flag:
       return VTK_INT;
   }
   return 0;
+}
+
+namespace
+{
+const radiosity::SettingColumn* Column(int i)
+{
+  return i >= 0 && i < radiosity::kSettingRowCells ? &radiosity::kSettingRowColumns[i] : nullptr;
+}
+} // namespace
+
+const char* vtkRadiosityLights::GetSettingRowColumnHeading(int i)
+{
+  return Column(i) ? Column(i)->Heading : nullptr;
+}
+
+int vtkRadiosityLights::GetSettingRowColumnEditor(int i)
+{
+  switch (Column(i) ? Column(i)->Kind : radiosity::RowCell::Text)
+  {
+    case radiosity::RowCell::Color:
+      return COLOR_CELL;
+    case radiosity::RowCell::Number:
+      return NUMBER_CELL;
+    case radiosity::RowCell::Flag:
+      return FLAG_CELL;
+    default:
+      return NAME_CELL;
+  }
+}
+
+double vtkRadiosityLights::GetSettingRowColumnLow(int i)
+{
+  return Column(i) ? Column(i)->Low : 0.0;
+}
+
+double vtkRadiosityLights::GetSettingRowColumnHigh(int i)
+{
+  return Column(i) ? Column(i)->High : 0.0;
 }
 
 void vtkRadiosityLights::PrintSelf(ostream& os, vtkIndent indent)
@@ -328,6 +367,8 @@ std::vector<vtkRadiosityLights::ShownLight> vtkRadiosityLights::ShownLights(
   {
     ShownLight light;
     light.Name = now.Name;
+    light.Cells.assign(radiosity::kSettingRowCells, 0.0);
+    light.CellEdited.assign(radiosity::kSettingRowCells, 0);
     radiosity::LightSetting shown = now.Setting;
     for (const radiosity::NamedSetting& row : mine)
     {
@@ -335,14 +376,16 @@ std::vector<vtkRadiosityLights::ShownLight> vtkRadiosityLights::ShownLights(
       {
         row.Setting.ApplyTo(shown); // a 'nan' part keeps what is in effect
         light.Edited = true;
-        light.ColorEdited = row.Setting.HasColor;
+        for (int c = 1; c < radiosity::kSettingRowCells; ++c)
+        {
+          light.CellEdited[c] = light.CellEdited[c] || radiosity::kSettingRowColumns[c].Has(row.Setting);
+        }
       }
     }
-    light.Color[0] = shown.Color.x;
-    light.Color[1] = shown.Color.y;
-    light.Color[2] = shown.Color.z;
-    light.Intensity = shown.Intensity;
-    light.Enabled = shown.Enabled;
+    for (int c = 1; c < radiosity::kSettingRowCells; ++c)
+    {
+      light.Cells[c] = radiosity::kSettingRowColumns[c].Get(shown);
+    }
     lights.push_back(light);
   }
   return lights;
@@ -351,11 +394,14 @@ std::vector<vtkRadiosityLights::ShownLight> vtkRadiosityLights::ShownLights(
 std::vector<std::string> vtkRadiosityLights::EditedRow(const ShownLight& light)
 {
   radiosity::LightSetting setting;
-  setting.HasColor = light.ColorEdited;
-  setting.Color = { light.Color[0], light.Color[1], light.Color[2] };
-  setting.HasIntensity = setting.HasEnabled = true;
-  setting.Intensity = light.Intensity;
-  setting.Enabled = light.Enabled;
+  for (int c = 1; c < radiosity::kSettingRowCells && c < static_cast<int>(light.Cells.size()); ++c)
+  {
+    const radiosity::SettingColumn& column = radiosity::kSettingRowColumns[c];
+    if (column.Kind == radiosity::RowCell::Flag || (c < static_cast<int>(light.CellEdited.size()) && light.CellEdited[c]))
+    {
+      column.Set(setting, light.Cells[c]);
+    }
+  }
   return radiosity::SettingInputRow(light.Name, setting);
 }
 

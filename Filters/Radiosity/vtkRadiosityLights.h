@@ -47,6 +47,20 @@ public:
   /// VTK_DOUBLE, VTK_INT for on/off); null and 0 past the row.
   static const char* GetSettingRowColumnName(int i);
   static int GetSettingRowColumnType(int i);
+  /// How ParaView's lights panel shows cell `i`: the heading of its column (cells with one
+  /// heading are one part, shown together: a color's three), its editor (ColumnEditor) and
+  /// the range a number takes there.
+  enum ColumnEditor
+  {
+    NAME_CELL,
+    COLOR_CELL,
+    NUMBER_CELL,
+    FLAG_CELL
+  };
+  static const char* GetSettingRowColumnHeading(int i);
+  static int GetSettingRowColumnEditor(int i);
+  static double GetSettingRowColumnLow(int i);
+  static double GetSettingRowColumnHigh(int i);
 
   ///@{
   /// Per-light settings by index (0..k-1, in LightNames order).
@@ -121,22 +135,21 @@ public:
   std::string Resolve(const std::vector<std::string>& names, const std::vector<radiosity::Vec3>& defaults,
     double time, std::vector<radiosity::LightSetting>& effective, std::vector<std::string>& warnings);
 
-  /// A light as the ParaView panel shows it: the plugin reads and writes the rows through
-  /// these (it sees this layer only), so a new column is parsed here, not in its widgets.
+  /// A light as the ParaView panel shows it, cell by cell of its row: the plugin reads and
+  /// writes the rows through these (it sees this layer only) and takes its columns from
+  /// the row's declaration above, so a new column is neither parsed nor shown by hand.
   struct ShownLight
   {
     std::string Name;
-    double Color[3] = { 1, 1, 1 };
-    double Intensity = 1;
-    bool Enabled = true;
-    bool Edited = false;      ///< a row of the edited ones names it
-    bool ColorEdited = false; ///< and sets its color
+    std::vector<double> Cells;    ///< the value in effect of each cell (the name's: 0)
+    std::vector<char> CellEdited; ///< per cell: a row of the edited ones sets its part
+    bool Edited = false;          ///< a row of the edited ones names it
   };
   /// The lights of `inEffect` (the filter's read-back rows, flat) with the rows `edited`
   /// (the property's, flat) applied, in the read-back's order.
   static std::vector<ShownLight> ShownLights(
     const std::vector<std::string>& inEffect, const std::vector<std::string>& edited);
-  /// The property's row for an edited light (its color 'nan' unless ColorEdited).
+  /// The property's row for an edited light: the parts it edited, the others 'nan' (kept).
   static std::vector<std::string> EditedRow(const ShownLight& light);
   /// Reads a schedule row as the schedule file does: false where it does not read; the
   /// light's name and its on/off otherwise.

@@ -115,13 +115,16 @@ void LightRig::SetByName(const std::string& name, const Vec3& color, double inte
 
 std::vector<std::string> SettingRow(const std::string& name, const LightSetting& setting)
 {
-  const auto number = [](double value) {
+  std::vector<std::string> row{ name };
+  for (int c = 1; c < kSettingRowCells; ++c)
+  {
+    const SettingColumn& column = kSettingRowColumns[c];
+    const double value = column.Get(setting);
     char text[32];
     std::snprintf(text, sizeof(text), "%.9g", value);
-    return std::string(text);
-  };
-  return { name, number(setting.Color.x), number(setting.Color.y), number(setting.Color.z),
-    number(setting.Intensity), setting.Enabled ? "1" : "0" };
+    row.emplace_back(column.Kind == RowCell::Flag ? (value != 0 ? "1" : "0") : text);
+  }
+  return row;
 }
 
 bool ParseOnOff(const std::string& text, bool& on)
@@ -139,16 +142,53 @@ bool ParseOnOff(const std::string& text, bool& on)
 std::vector<std::string> SettingInputRow(const std::string& name, const LightSetting& setting)
 {
   std::vector<std::string> row = SettingRow(name, setting);
-  for (size_t i = 1; i < 4 && !setting.HasColor; ++i)
+  for (int c = 1; c < kSettingRowCells; ++c)
   {
-    row[i] = "nan";
-  }
-  if (!setting.HasIntensity)
-  {
-    row[4] = "nan";
+    const SettingColumn& column = kSettingRowColumns[c];
+    if (column.Kind != RowCell::Flag && !column.Has(setting))
+    {
+      row[c] = "nan";
+    }
   }
   return row;
 }
+
+namespace
+{
+/// Cells [first, end) of a row that share column `first`'s heading: one part of a setting.
+int PartEnd(int first)
+{
+  int end = first + 1;
+  while (end < kSettingRowCells && std::string(kSettingRowColumns[end].Heading) == kSettingRowColumns[first].Heading)
+  {
+    ++end;
+  }
+  return end;
+}
+
+/// Reads cells [first, end) of `row` into `setting` where every one of them reads (a Flag
+/// as ParseOnOff takes it); false, leaving the part unset, where one does not.
+bool ReadPart(const std::string* row, int first, int end, LightSetting& setting)
+{
+  std::vector<double> values;
+  for (int c = first; c < end; ++c)
+  {
+    double value = 0;
+    bool on = false;
+    const bool flag = kSettingRowColumns[c].Kind == RowCell::Flag;
+    if (!(flag ? ParseOnOff(row[c], on) : ParseNumber(row[c], value)))
+    {
+      return false;
+    }
+    values.push_back(flag ? (on ? 1.0 : 0.0) : value);
+  }
+  for (int c = first; c < end; ++c)
+  {
+    kSettingRowColumns[c].Set(setting, values[c - first]);
+  }
+  return true;
+}
+} // namespace
 
 std::vector<NamedSetting> ParseSettingRows(const std::vector<std::string>& flat)
 {
@@ -157,14 +197,15 @@ std::vector<NamedSetting> ParseSettingRows(const std::vector<std::string>& flat)
   {
     NamedSetting row;
     row.Name = flat[i];
-    LightSetting& s = row.Setting;
-    s.HasColor = ParseNumber(flat[i + 1], s.Color.x) && ParseNumber(flat[i + 2], s.Color.y) &&
-      ParseNumber(flat[i + 3], s.Color.z);
-    s.Color = s.HasColor ? s.Color : Vec3(1, 1, 1);
-    s.HasIntensity = ParseNumber(flat[i + 4], s.Intensity);
-    s.Intensity = s.HasIntensity ? s.Intensity : 1.0;
-    s.HasEnabled = ParseOnOff(flat[i + 5], s.Enabled);
-    if (!row.Name.empty() && s.HasEnabled)
+    bool readable = !row.Name.empty();
+    for (int first = 1; first < kSettingRowCells; first = PartEnd(first))
+    {
+      // A number that does not read leaves its part to what lies below; an on/off that does
+      // not read leaves the row out.
+      const bool read = ReadPart(&flat[i], first, PartEnd(first), row.Setting);
+      readable = readable && (read || kSettingRowColumns[first].Kind != RowCell::Flag);
+    }
+    if (readable)
     {
       rows.push_back(row);
     }

@@ -48,25 +48,51 @@ struct NamedSetting
   LightSetting Setting;
 };
 
-/// What a cell of a light's row holds: ParaView's element type for it (text, a real
-/// number, an integer used as on/off).
+/// What a cell of a light's row holds: ParaView's element type for it (text; a real
+/// number, alone or one of a color's three parts; an integer used as on/off), and the
+/// editor the panel gives it.
 enum class RowCell
 {
   Text,
+  Color,
   Number,
   Flag
 };
+/// One cell of a light's row: its name, what it holds, the panel's column it is shown in
+/// (cells with one heading are one part of the setting, set together or not at all), the
+/// range a Number takes there, and how it is read from and written into a LightSetting
+/// (none for the name).
 struct SettingColumn
 {
   const char* Name;
   RowCell Kind;
+  const char* Heading;
+  double Low, High;
+  double (*Get)(const LightSetting&);
+  void (*Set)(LightSetting&, double);
+  bool (*Has)(const LightSetting&);
 };
-/// The columns of one light's row, in order: the one declaration of the row. ParaView's
-/// LightSettings property takes its element count, types and the columns it documents from
-/// here (the plugin's LightRig.xml is filled in from it at build time).
-inline constexpr SettingColumn kSettingRowColumns[] = { { "name", RowCell::Text }, { "red", RowCell::Number },
-  { "green", RowCell::Number }, { "blue", RowCell::Number }, { "intensity", RowCell::Number },
-  { "enabled", RowCell::Flag } };
+/// The columns of one light's row, in order: the one declaration of the row. Its writing
+/// (SettingRow, SettingInputRow) and reading (ParseSettingRows) go through it, ParaView's
+/// LightSettings property takes its element count, types and documented columns from it
+/// (the plugin's LightRig.xml is filled in at build time) and the panel its columns and
+/// editors. A new per-light setting: its LightSetting field (with ApplyTo and what it
+/// does in Weight) and its row here.
+inline constexpr SettingColumn kSettingRowColumns[] = {
+  { "name", RowCell::Text, "Light", 0, 0, nullptr, nullptr, nullptr },
+  { "red", RowCell::Color, "Color", 0, 0, [](const LightSetting& s) { return s.Color.x; },
+    [](LightSetting& s, double v) { s.Color.x = v, s.HasColor = true; }, [](const LightSetting& s) { return s.HasColor; } },
+  { "green", RowCell::Color, "Color", 0, 0, [](const LightSetting& s) { return s.Color.y; },
+    [](LightSetting& s, double v) { s.Color.y = v, s.HasColor = true; }, [](const LightSetting& s) { return s.HasColor; } },
+  { "blue", RowCell::Color, "Color", 0, 0, [](const LightSetting& s) { return s.Color.z; },
+    [](LightSetting& s, double v) { s.Color.z = v, s.HasColor = true; }, [](const LightSetting& s) { return s.HasColor; } },
+  { "intensity", RowCell::Number, "Intensity", 0, 1e9, [](const LightSetting& s) { return s.Intensity; },
+    [](LightSetting& s, double v) { s.Intensity = v, s.HasIntensity = true; },
+    [](const LightSetting& s) { return s.HasIntensity; } },
+  { "enabled", RowCell::Flag, "On", 0, 1, [](const LightSetting& s) { return s.Enabled ? 1.0 : 0.0; },
+    [](LightSetting& s, double v) { s.Enabled = v != 0, s.HasEnabled = true; },
+    [](const LightSetting& s) { return s.HasEnabled; } },
+};
 constexpr int kSettingRowCells = static_cast<int>(sizeof(kSettingRowColumns) / sizeof(kSettingRowColumns[0]));
 
 /// The rows of a flat LightSettings list (kSettingRowCells strings a light, as SettingRow

@@ -11,7 +11,7 @@ import guitest  # noqa: E402
 from paraview.simple import FindSource, GetActiveViewOrCreate, Render, SaveScreenshot, SetActiveSource  # noqa: E402
 from PyQt5.QtCore import Qt, QTimer  # noqa: E402
 from PyQt5.QtTest import QTest  # noqa: E402
-from PyQt5.QtWidgets import QApplication, QCheckBox, QColorDialog, QPushButton, QScrollArea, QTableWidget  # noqa: E402
+from PyQt5.QtWidgets import QApplication, QCheckBox, QColorDialog, QDoubleSpinBox, QPushButton, QScrollArea, QTableWidget  # noqa: E402
 
 result = guitest.Result()
 demo = guitest.data_file("demo_pipeline.py")
@@ -84,6 +84,39 @@ if result.check(len(boxes) == 8 and len(apply_buttons) == 1, "found %d On boxes 
     result.check(pending and applied[cool + 5 : cool + 6] == ["0"],
                  "an On box is a pending change until Apply (pending %s; after Apply %s)" % (pending, applied[cool:cool + 6]))
     relit.LightSettings = before  # back to the demo's lights for the screenshot below
+    for _ in range(50):
+        app.processEvents()
+
+# The columns come from the row's declaration: a number's box writes that part alone, the
+# parts not touched going as 'nan' (kept as they are in effect).
+spins = [b for t in app.allWidgets() if isinstance(t, QTableWidget) and t.isVisible()
+         and t.horizontalHeaderItem(2) is not None and t.horizontalHeaderItem(2).text() == "Intensity"
+         for b in (t.cellWidget(r, 2) for r in range(t.rowCount())) if isinstance(b, QDoubleSpinBox)]
+if result.check(len(spins) == 8 and len(apply_buttons) == 1, "found %d Intensity boxes" % len(spins)):
+    names = [t.item(r, 0).text() for t in app.allWidgets() if isinstance(t, QTableWidget) and t.isVisible()
+             and t.horizontalHeaderItem(2) is not None and t.horizontalHeaderItem(2).text() == "Intensity"
+             for r in range(t.rowCount())]
+    relit.LightSettings = ["Rose", "nan", "nan", "nan", "3", "1"]  # from Python: the panel follows
+    for _ in range(50):
+        app.processEvents()
+    fresh = names.index("Amber")
+    spins[fresh].setValue(2.5)
+    apply_buttons[0].click()
+    for _ in range(50):
+        app.processEvents()
+    rows = list(relit.LightSettings)
+    result.check(rows == ["Amber", "nan", "nan", "nan", "2.5", "1", "Rose", "nan", "nan", "nan", "3", "1"],
+                 "an Intensity box writes its part alone, beside a row set from Python: %s" % rows)
+    relit.LightSettings = []
+    for _ in range(50):
+        app.processEvents()
+    spins[fresh].setValue(1.5)
+    apply_buttons[0].click()
+    for _ in range(50):
+        app.processEvents()
+    result.check(list(relit.LightSettings) == ["Amber", "nan", "nan", "nan", "1.5", "1"],
+                 "LightSettings emptied from Python, then a box edited: %s" % list(relit.LightSettings))
+    relit.LightSettings = before
 
 settings = list(relit.LightSettings)
 # Turn the warm light off and make the amber one strong and red.

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
 
 using namespace radiosity;
 
@@ -149,6 +150,34 @@ TEST(LightRig, SettingRowsReadBackAsWritten)
   const std::vector<NamedSetting> two = ParseSettingRows({ "A", "1", "1", "1", "1", "2" }); // the server's integer: on
   ASSERT_EQ(two.size(), 1u);
   EXPECT_TRUE(two[0].Setting.Enabled);
+}
+
+TEST(LightRig, TheRowIsReadAndWrittenThroughItsDeclaration)
+{
+  // Each column writes what it reads (a setting set part by part through the table is
+  // the setting written by hand), a part is one heading's cells, set together or not at
+  // all, and only an on/off that does not read leaves the row out.
+  LightSetting bySetters;
+  const double values[kSettingRowCells] = { 0, 0.25, 0.5, 0.75, 3.5, 0 };
+  for (int c = 1; c < kSettingRowCells; ++c)
+  {
+    kSettingRowColumns[c].Set(bySetters, values[c]);
+    EXPECT_TRUE(kSettingRowColumns[c].Has(bySetters)) << kSettingRowColumns[c].Name;
+    EXPECT_DOUBLE_EQ(kSettingRowColumns[c].Get(bySetters), values[c]) << kSettingRowColumns[c].Name;
+  }
+  EXPECT_EQ(SettingRow("L", bySetters), (std::vector<std::string>{ "L", "0.25", "0.5", "0.75", "3.5", "0" }));
+  std::set<std::string> headings;
+  for (const SettingColumn& column : kSettingRowColumns)
+  {
+    headings.insert(column.Heading);
+    EXPECT_TRUE(column.Kind == RowCell::Text || (column.Get && column.Set && column.Has)) << column.Name;
+  }
+  EXPECT_EQ(headings, (std::set<std::string>{ "Light", "Color", "Intensity", "On" }));
+  const std::vector<NamedSetting> half = ParseSettingRows({ "L", "0.5", "x", "0.2", "2", "off" });
+  ASSERT_EQ(half.size(), 1u);
+  EXPECT_FALSE(half[0].Setting.HasColor); // one of its three cells does not read: none is taken
+  EXPECT_DOUBLE_EQ(half[0].Setting.Color.x, 1.0);
+  EXPECT_TRUE(half[0].Setting.HasIntensity && !half[0].Setting.Enabled);
 }
 
 TEST(LightRig, LightScenesDimGroupsOfLightsAndTheScheduleBlendsThem)
