@@ -453,6 +453,27 @@ def check_render(solver, relight, relit, screenshot):
     del display, view
 
 
+def check_method_settings_in_state(data_path):
+    """A state file keeps a solver's settings by name, and loading it gives them to the
+    solver again (said unused where another method runs, as when first set)."""
+    reader = XMLPolyDataReader(FileName=[data_path])
+    mesher = RadiosityMesher(Input=reader, PatchSize=200.0, ElementSize=100.0)
+    LightTaggedRadiosity(registrationName="ByName", Input=mesher, SolverMethod="Hierarchical",
+                         MethodSettings=["ClusterMemoryLimit", "2e9"])
+    state = os.path.join(tempfile.mkdtemp(), "method_settings.pvsm")
+    SaveState(state)
+    ResetSession()
+    LoadState(state)
+    loaded = FindSource("ByName")
+    rows = [str(v) for v in loaded.MethodSettings] if loaded else []
+    check(rows == ["ClusterMemoryLimit", "2e9"] or rows == ["ClusterMemoryLimit", "2000000000"],
+          f"MethodSettings from the state file: {rows}")
+    listed = servermanager.Fetch(loaded).GetFieldData().GetAbstractArray("Warnings")
+    said = [listed.GetValue(i) for i in range(listed.GetNumberOfValues())] if listed else []
+    check(any("ClusterMemoryLimit 2e+09 was not used" in w for w in said),
+          f"the loaded solver has the setting by name: {said}")
+
+
 def main(argv):
     if len(argv) < 3:
         print("usage: pvbatch %s <plugin.so> <cornell_box.vtp> [screenshot.png]" % argv[0])
@@ -472,6 +493,7 @@ def main(argv):
     relit, mean = check_results(solver, relight)
     check_render(solver, relight, relit, screenshot)
     check_scene_files(scene_reader)
+    check_method_settings_in_state(data_path)  # last: it resets the session
     print("TestPluginProxies passed: %d elements, %d points, light(s) %s, "
           "mean relit radiosity %.6g" % (relit.GetNumberOfCells(), relit.GetNumberOfPoints(),
                                          ";".join(names), mean))
