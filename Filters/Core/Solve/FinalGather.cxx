@@ -468,6 +468,13 @@ GatheredPoints GatherAtPoints(const SceneMesh& mesh, const SceneGeometry& geomet
   const GatherSettings& settings, int threads, const std::function<bool(double)>& progress, bool shadows)
 {
   const auto start = std::chrono::steady_clock::now();
+  std::vector<std::pair<std::string, double>> steps;
+  auto lapStart = start;
+  const auto lap = [&](const char* step) {
+    const auto now = std::chrono::steady_clock::now();
+    steps.emplace_back(step, std::chrono::duration<double>(now - lapStart).count());
+    lapStart = now;
+  };
   const std::vector<Emitter> emitters = MakeEmitters(mesh, geometry, emission, solutions);
   const WorkerPool pool(threads);
   Collective ranks(settings.Group);
@@ -480,9 +487,11 @@ GatheredPoints GatherAtPoints(const SceneMesh& mesh, const SceneGeometry& geomet
   const std::vector<int> items = UsedFrames(frames);
   // The points' direct light first (it does not depend on the sweeps).
   std::vector<Vec3> arriving(frames.size() * solutions);
+  lap("gather: the points' frames");
   const Gather lit(mesh, geometry, rays, emission, source, solutions, emitters, frames, pointEmission, 1,
     settings.LightRays, shadows, 0, settings);
   long long cast = PointsDirect(lit, items, solutions, pool, ranks, progress, 0.0, 0.2, arriving);
+  lap("gather: direct light at the points");
   GatheredPoints out;
   if (cast < 0)
   {
@@ -511,6 +520,10 @@ GatheredPoints GatherAtPoints(const SceneMesh& mesh, const SceneGeometry& geomet
     source = std::move(elements.Radiosity);
     cellDirect = std::move(elements.Direct);
     cellIrradiance = std::move(elements.Irradiance);
+  }
+  if (sweeps > 0)
+  {
+    lap("gather: sweeps over the elements");
   }
   const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
   // Every rank gathers its share of the points: all take the fewest rays any can afford.
@@ -550,6 +563,8 @@ GatheredPoints GatherAtPoints(const SceneMesh& mesh, const SceneGeometry& geomet
     out.CellsDirect = std::move(cellDirect);
     out.CellsIrradiance = std::move(cellIrradiance);
   }
+  lap("gather: interreflection at the points");
+  out.Steps = std::move(steps);
   return out;
 }
 

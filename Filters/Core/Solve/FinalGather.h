@@ -12,6 +12,8 @@
 #include "Solve/GatherSettings.h"
 
 #include <functional>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace radiosity
@@ -38,6 +40,9 @@ struct GatheredPoints
   int Points = 0;           ///< points evaluated (each copy's representative once)
   bool OutOfTime = false;   ///< the TimeBudget left the points ungathered (Cells kept)
   bool Aborted = false;
+  /// Where its time went, step by step (the points' frames, their direct light, the
+  /// sweeps, the points' interreflection), in seconds.
+  std::vector<std::pair<std::string, double>> Steps;
 };
 
 /// The gather at every point of `mesh` used by a polygon (others get 0): `radiosity` and

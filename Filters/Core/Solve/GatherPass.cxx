@@ -306,14 +306,14 @@ long long Gather::Interreflection(size_t p, const PointFrame& f, std::vector<Vec
     for (int j = 0; j < Side; ++j)
     {
       const double u = (i + random.Next()) / Side, phi = 2 * M_PI * (j + random.Next()) / Side;
-      const double r = std::sqrt(u);
-      const Vec3 d = t * (r * std::cos(phi)) + b * (r * std::sin(phi)) + f.Normal * std::sqrt(1 - u);
+      const double r = std::sqrt(u), cosine = std::cos(phi), sine = std::sin(phi);
+      const Vec3 d = t * (r * cosine) + b * (r * sine) + f.Normal * std::sqrt(1 - u);
       const int start = ((i * Side + j) * RayStep + 1) % (Side * Side);
       const size_t cell = static_cast<size_t>(i) * Side + j;
       if (hits.Samples)
       {
         hits.Samples->U[cell] = u;
-        hits.Samples->Phi[cell] = phi;
+        hits.Samples->SetPhi(cell, cosine, sine);
       }
       if (!Rays.Intersect(Spot(f, start, Side * Side, random), d, hit) || hit.Polygon < 0)
       {

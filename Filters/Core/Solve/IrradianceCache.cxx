@@ -49,29 +49,31 @@ void StratifiedRays::Reset(int side, int solutions)
   Solutions = solutions;
   const size_t cells = static_cast<size_t>(side) * side;
   U.assign(cells, 0.0);
-  Phi.assign(cells, 0.0);
+  CosPhi.assign(cells, 1.0);
+  SinPhi.assign(cells, 0.0);
   Distance.assign(cells, std::numeric_limits<double>::infinity());
   Values.assign(cells * solutions, Vec3());
 }
-
-namespace
-{
-/// Adds weight times each channel of `value` along `direction` to out[0..3).
-void AddAlong(const Vec3& direction, double weight, const Vec3& value, Vec3* out)
-{
-  out[0] += direction * (weight * value.x);
-  out[1] += direction * (weight * value.y);
-  out[2] += direction * (weight * value.z);
-}
-} // namespace
 
 void IrradianceGradients(const StratifiedRays& rays, Vec3* translation, Vec3* rotation)
 {
   const int n = rays.Side, S = rays.Solutions;
   std::fill(translation, translation + 3 * S, Vec3());
   std::fill(rotation, rotation + 3 * S, Vec3());
-  auto value = [&](int i, int j, int m) -> const Vec3& { return rays.Values[(static_cast<size_t>(i) * n + j) * S + m]; };
-  auto distance = [&](int i, int j) { return rays.Distance[static_cast<size_t>(i) * n + j]; };
+  const size_t cells = static_cast<size_t>(n) * n;
+  auto at = [n](int i, int k) { return static_cast<size_t>(i) * n + k; };
+  auto distance = [&](int i, int k) { return rays.Distance[at(i, k)]; };
+  // Each cell's value enters the gradients once, by a vector (summed by parts from the
+  // boundaries' differences): the solutions' loop then does the least per cell.
+  thread_local std::vector<Vec3> move, turn;
+  move.assign(cells, Vec3());
+  turn.resize(cells);
+  thread_local std::vector<double> radius;
+  radius.resize(n + 1);
+  for (int i = 0; i <= n; ++i)
+  {
+    radius[i] = std::sqrt(static_cast<double>(i) / n);
+  }
   // The values are radiosities, the irradiance their mean: a radiance is value / pi.
   for (int k = 0; k < n; ++k)
   {
@@ -81,34 +83,42 @@ void IrradianceGradients(const StratifiedRays& rays, Vec3* translation, Vec3* ro
     const int before = (k + n - 1) % n;
     for (int i = 0; i < n; ++i)
     {
-      const double low = std::sqrt(static_cast<double>(i) / n), high = std::sqrt(static_cast<double>(i + 1) / n);
+      const double low = radius[i], high = radius[i + 1];
       // The boundary with the stratum nearer the normal, moving as the point goes along it.
       const double rTheta = i > 0 ? std::min(distance(i, k), distance(i - 1, k)) : 0.0;
       const double wTheta = i > 0 && std::isfinite(rTheta) ? 2.0 / n * low * (1 - low * low) / rTheta : 0.0;
+      if (wTheta > 0)
+      {
+        move[at(i, k)] += along * wTheta;
+        move[at(i - 1, k)] += along * -wTheta;
+      }
       // The boundary with the stratum before in phi, moving as the point goes across it.
       const double rPhi = std::min(distance(i, k), distance(i, before));
       const double wPhi = std::isfinite(rPhi) ? (high - low) / rPhi / M_PI : 0.0;
-      for (int m = 0; m < S; ++m)
+      if (wPhi > 0)
       {
-        if (wTheta > 0)
-        {
-          AddAlong(along, wTheta, value(i, k, m) - value(i - 1, k, m), translation + 3 * m);
-        }
-        if (wPhi > 0)
-        {
-          AddAlong(across, wPhi, value(i, k, m) - value(i, before, m), translation + 3 * m);
-        }
+        move[at(i, k)] += across * wPhi;
+        move[at(i, before)] += across * -wPhi;
       }
     }
   }
-  for (size_t cell = 0; cell < rays.U.size(); ++cell)
+  for (size_t cell = 0; cell < cells; ++cell)
   {
-    const double u = std::min(rays.U[cell], 1 - 1e-6), phi = rays.Phi[cell];
-    const Vec3 turn = rays.T * -std::sin(phi) + rays.B * std::cos(phi);
-    const double w = std::sqrt(u / (1 - u)) / rays.U.size();
+    const double u = std::min(rays.U[cell], 1 - 1e-6);
+    turn[cell] = (rays.T * -rays.SinPhi[cell] + rays.B * rays.CosPhi[cell]) * (std::sqrt(u / (1 - u)) / cells);
+  }
+  for (size_t cell = 0; cell < cells; ++cell)
+  {
+    const Vec3* values = &rays.Values[cell * S];
     for (int m = 0; m < S; ++m)
     {
-      AddAlong(turn, w, rays.Values[cell * S + m], rotation + 3 * m);
+      const Vec3& v = values[m];
+      translation[3 * m] += move[cell] * v.x;
+      translation[3 * m + 1] += move[cell] * v.y;
+      translation[3 * m + 2] += move[cell] * v.z;
+      rotation[3 * m] += turn[cell] * v.x;
+      rotation[3 * m + 1] += turn[cell] * v.y;
+      rotation[3 * m + 2] += turn[cell] * v.z;
     }
   }
 }

@@ -38,15 +38,21 @@ inline double LargestReach(double diagonal)
 }
 
 /// A record's Side x Side stratified cosine rays in its tangent frame (T, B, normal): cell
-/// i * Side + j is stratum i of u = sin^2(theta) and stratum j of phi; each ray's u, phi,
-/// hit distance (infinity for a miss) and what it brought back per solution (0 for a miss
-/// or a back face), Values[cell * Solutions + m].
+/// i * Side + j is stratum i of u = sin^2(theta) and stratum j of phi; each ray's u, the
+/// cosine and sine of its phi (the gather has them for its direction), hit distance
+/// (infinity for a miss) and what it brought back per solution (0 for a miss or a back
+/// face), Values[cell * Solutions + m].
 struct StratifiedRays
 {
   void Reset(int side, int solutions);
+  void SetPhi(size_t cell, double cosine, double sine)
+  {
+    CosPhi[cell] = cosine;
+    SinPhi[cell] = sine;
+  }
   int Side = 0, Solutions = 0;
   Vec3 T, B;
-  std::vector<double> U, Phi, Distance;
+  std::vector<double> U, CosPhi, SinPhi, Distance;
   std::vector<Vec3> Values;
 };
 

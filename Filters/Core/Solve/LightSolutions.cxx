@@ -288,7 +288,6 @@ void GatherInto(const RadiositySolver& solver, const SceneMesh& mesh, const std:
   {
     progress = [&options](double f) { return options.Progress(kSolveShare + (1 - kSolveShare) * f); };
   }
-  const StepTimer timer(out.Statistics, "final gather");
   GatheredPoints points = GatherAtPoints(mesh, solver.Geometry(), solver.Rays(), emission, out.Radiosity,
     out.Solutions, settings, options.Threads, progress, out.Statistics.BlockingSurfaces != 0);
   out.GatherRays = points.Rays;
@@ -296,6 +295,10 @@ void GatherInto(const RadiositySolver& solver, const SceneMesh& mesh, const std:
   out.GatherRecords = points.Records;
   out.GatherPoints = points.Points;
   out.GatherOutOfTime = points.OutOfTime;
+  for (const auto& step : points.Steps)
+  {
+    out.Statistics.Took(step.first, step.second);
+  }
   if (points.Aborted)
   {
     out.Statistics.Aborted = true;

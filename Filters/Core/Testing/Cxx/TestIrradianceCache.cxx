@@ -79,7 +79,7 @@ StratifiedRays RaysAtWall(double d, int side)
       const Vec3 dir{ std::sqrt(u) * std::cos(phi), std::sqrt(u) * std::sin(phi), std::sqrt(1 - u) };
       const size_t cell = static_cast<size_t>(i) * side + j;
       rays.U[cell] = u;
-      rays.Phi[cell] = phi;
+      rays.SetPhi(cell, std::cos(phi), std::sin(phi));
       const double t = dir.x > 0 ? d / dir.x : -1;
       if (t > 0 && t * dir.z <= 1 && std::abs(t * dir.y) <= 1000)
       {

@@ -172,7 +172,7 @@ fields = chosen.GetOutput().GetFieldData()
 steps = fields.GetAbstractArray("SolveSteps")
 step_seconds = np.array([fields.GetArray("SolveStepSeconds").GetValue(i) for i in range(steps.GetNumberOfValues())])
 names = [steps.GetValue(i) for i in range(steps.GetNumberOfValues())]
-check(names[:1] == ["prepare the scene"] and {"links", "shots", "final gather"} <= set(names)
+check(names[:1] == ["prepare the scene"] and {"links", "shots", "gather: interreflection at the points"} <= set(names)
       and len(step_seconds) == len(names) and (step_seconds >= 0).all()
       and 0.5 * took.GetValue(0) < step_seconds.sum() <= took.GetValue(0),
       f"SolveSteps books most of the solve's {took.GetValue(0):.3f} s to its steps: "
