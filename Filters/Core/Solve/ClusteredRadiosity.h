@@ -21,9 +21,8 @@ struct ClusteredSettings
 {
   /// Two groups of elements exchange light as a whole when their centres are farther
   /// apart than this many times the sum of their radii (1.5 times it where one side
-  /// does not all face the other). Larger is more accurate and slower: the FZK-Haus
-  /// (112,740 elements) against Mitsuba 3, 16.4 % mean error at 3, 13.4 % at 4, 10.5 % at
-  /// 6, 9.4 % at 8, in 20, 28, 48 and 69 s (docs/benchmarks.md, 2026-12-05).
+  /// does not all face the other). Larger is more accurate and slower (what each costs
+  /// and buys on the FZK-Haus: docs/benchmarks.md; the accuracy levels set it).
   double Separation = 4.0;
   /// Bytes the links, and then the links and per-node sums, may take (0: 90 % of the
   /// memory the system has free when they are made). A solve that would need more stops

@@ -255,8 +255,8 @@ struct PointLightSolutions
   int First = -1;
 };
 
-/// The share of a solve's progress the shots report when a gather follows (it took about
-/// a third of the FZK-Haus's solve at 256 rays: 9.5 of 26 s).
+/// The share of a solve's progress the shots report when a gather follows (the gather
+/// takes about a third of a solve at its default rays: SolverStatistics::Steps).
 constexpr double kSolveShare = 0.7;
 
 /// The final gather over the solve's elements into out's point values, and the cell
