@@ -135,7 +135,14 @@ double vtkRadiosityRelightMapper::GetTime() const
 
 void vtkRadiosityRelightMapper::SetExposure(double exposure)
 {
-  this->Internal->Exposure = exposure < 0 ? 0.0 : exposure; // as the relight filter clamps it
+  if (!(exposure >= 0 && exposure <= VTK_DOUBLE_MAX))
+  {
+    // As the relight filter refuses it; the picture keeps the exposure it had.
+    vtkErrorMacro(<< "Exposure (" << exposure << ") must be finite and not negative; kept at "
+                  << this->Internal->Exposure << ".");
+    return;
+  }
+  this->Internal->Exposure = exposure;
 }
 
 double vtkRadiosityRelightMapper::GetExposure() const
@@ -183,10 +190,22 @@ void vtkRadiosityRelightMapper::UploadIfNeeded(vtkRenderer* ren)
   {
     return;
   }
+  // Point-major: the k solutions of a vertex lie together, for one texel run per vertex.
+  const std::vector<float> values = in.Input.Interleaved(false);
+  const size_t k = in.Input.GetNames().size();
+  const auto bad = std::find_if(values.begin(), values.end(), [](float v) { return !std::isfinite(v); });
+  if (bad != values.end())
+  {
+    // Said once, as the relight filter says it, and drawn black: a NaN would blank the
+    // shader's sum, and the CPU path's metering would say it at every frame.
+    const size_t at = static_cast<size_t>(bad - values.begin()) / 3;
+    in.Problem = "the solution of light '" + in.Input.GetNames()[at % k] + "' is not finite at point " +
+      std::to_string(at / k) + "; the input's Radiosity_<light> arrays must hold finite numbers";
+    return;
+  }
   in.Names = in.Input.GetNames();
   in.Defaults = in.Input.GetDefaultColors();
   const size_t points = static_cast<size_t>(data->GetNumberOfPoints());
-  const size_t k = in.Names.size();
   GLint most = 0, vectors = 0;
   glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &most);
   glGetIntegerv(GL_MAX_VERTEX_UNIFORM_VECTORS, &vectors);
@@ -204,8 +223,6 @@ void vtkRadiosityRelightMapper::UploadIfNeeded(vtkRenderer* ren)
   {
     return; // the solutions stay on the CPU
   }
-  // Point-major: the k solutions of a vertex lie together, for one texel run per vertex.
-  const std::vector<float> values = in.Input.Interleaved(false);
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   in.Texture->SetContext(window);
   in.Buffer->Upload(values, vtkOpenGLBufferObject::TextureBuffer);
@@ -335,8 +352,9 @@ void vtkRadiosityRelightMapper::SumOnCpu(const std::vector<float>& weights, vtkF
   vtkPolyData* data = this->Internal->UploadedData;
   const vtkIdType points = data->GetNumberOfPoints();
   // The relight filter's sum (in parallel, on the arrays' own memory), as the shader's.
-  std::string error;
-  if (!this->Internal->Input.Combine(false, std::vector<double>(weights.begin(), weights.end()), linear, error))
+  std::string error = this->Internal->Problem.empty() ? "" : this->Internal->Problem;
+  if (!error.empty() ||
+    !this->Internal->Input.Combine(false, std::vector<double>(weights.begin(), weights.end()), linear, error))
   {
     vtkErrorMacro(<< "Cannot relight on the CPU: " << error << ".");
     linear->SetNumberOfComponents(3);
@@ -352,7 +370,7 @@ double vtkRadiosityRelightMapper::GetExposureInUse()
   // where the defaults light nothing.
   Internals& in = *this->Internal;
   vtkPolyData* data = in.UploadedData;
-  if (in.Exposure > 0 || !data)
+  if (in.Exposure > 0 || !data || !in.Problem.empty()) // nothing to meter where the input has a problem
   {
     return in.Exposure > 0 ? in.Exposure : in.Metered;
   }

@@ -124,6 +124,18 @@ integers.GetPointData().AddArray(whole_numbers)
 problem, said, errors, lights = problem_of(integers)
 check("solutions must be float or double" in problem and problem in said and lights == 0,
       f"an integer solution array: '{problem}', as the filter says it")
+nan = vtkPolyData()
+nan.DeepCopy(solved)
+nan.GetPointData().GetArray(f"Radiosity_{names[1]}").SetComponent(100, 1, float("nan"))
+problem, said, errors, lights = problem_of(nan)
+check(f"light '{names[1]}' is not finite at point 100" in problem and errors == 1 and lights == 0,
+      f"a NaN in a solution array: '{problem}' (said {errors} time(s) over a frame)")
+exposed = relight.vtkRadiosityRelightMapper()
+caught = relight.ErrorCatcher(exposed)
+exposed.SetExposure(2.0)
+exposed.SetExposure(-5.0)
+check(exposed.GetExposure() == 2.0 and len(caught.errors) == 1 and "must be finite and not negative" in caught.errors[0],
+      f"a negative exposure is refused as the relight filter refuses it, the last one kept: {caught.errors}")
 plain = vtkPolyData()
 plain.DeepCopy(read_polydata(os.path.join(DATA, "paper_3lights.vtp")))
 plain.GetFieldData().RemoveArray("LightNames")
