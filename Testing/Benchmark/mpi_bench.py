@@ -21,7 +21,7 @@ import subprocess
 HERE = os.path.dirname(os.path.abspath(__file__))
 SHARE = re.compile(r"rank (\d+) of (\d+) received for (\d+) of (\d+) elements and cast (\d+) rays; (\d+) sums over "
                    r"the ranks, (\d+) bytes per shot, ([\d.]+) MB in all, ([\d.]+) s in sums")
-SHOTS = re.compile(r"; (\d+) shots, ([\d.]+) s;")
+SHOTS = re.compile(r"; (\d+) shots, ([\d.]+) s[ ;]")
 
 
 def run(ranks, scene, elements, threads):
