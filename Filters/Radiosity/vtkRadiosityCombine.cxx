@@ -247,6 +247,27 @@ std::vector<float> vtkRadiosityRelitInput::Interleaved(bool cells) const
   return values;
 }
 
+bool vtkRadiosityRelitInput::FindNonFinite(bool cells, size_t& item, size_t& light) const
+{
+  const radiosity::SolutionTable& table = cells ? this->Impl->Cells : this->Impl->Points;
+  const size_t k = table.Floats.size() + table.Doubles.size();
+  for (size_t l = 0; l < k; ++l)
+  {
+    const float* floats = l < table.Floats.size() ? table.Floats[l] : nullptr;
+    const double* doubles = floats ? nullptr : table.Doubles[l];
+    for (size_t i = 0; i < 3 * table.Items; ++i)
+    {
+      if (!std::isfinite(floats ? static_cast<double>(floats[i]) : doubles[i]))
+      {
+        item = i / 3;
+        light = l;
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
 double vtkRadiosityRelitInput::MeterAtDefaults(vtkPolyData* data) const
 {
   const bool cells = this->HasCells();

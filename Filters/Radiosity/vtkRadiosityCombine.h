@@ -47,6 +47,9 @@ public:
   /// The points' (or the cells') solutions item by item, each item's lights side by side
   /// (3 floats a light, in GetNames order): what the GPU mapper's buffer holds.
   std::vector<float> Interleaved(bool cells) const;
+  /// True where a value of the points' (or the cells') solutions is not finite: `item`
+  /// and `light` (an index into GetNames) say the first.
+  bool FindNonFinite(bool cells, size_t& item, size_t& light) const;
   /// The exposure a camera meters for `data` (the set read) with every light at its
   /// default: on the cells where they hold the solutions (they know which ones are lamps),
   /// else the points. 0 where that lights nothing.

@@ -184,25 +184,23 @@ void vtkRadiosityRelightMapper::UploadIfNeeded(vtkRenderer* ren)
     in.Problem = "the input has no point arrays 'Radiosity_<light>' (this mapper colors the points; the light-tagged "
                  "solver writes them)";
   }
+  size_t item = 0, light = 0;
+  if (in.Problem.empty() && in.Input.FindNonFinite(false, item, light))
+  {
+    // Said once, as a problem of the input, and drawn black: a NaN would blank the shader's
+    // sum, and the CPU path's metering would say it at every frame.
+    in.Problem = "the solution of light '" + in.Input.GetNames()[light] + "' is not finite at point " +
+      std::to_string(item) + "; the input's Radiosity_<light> arrays must hold finite numbers";
+  }
   in.Names.clear();
   in.Defaults.clear();
   if (!in.Problem.empty())
   {
+    in.OnCPU = false; // drawn black by the GPU path's shader of no lights, whatever drew before
+    in.WhyCPU.clear();
     return;
   }
-  // Point-major: the k solutions of a vertex lie together, for one texel run per vertex.
-  const std::vector<float> values = in.Input.Interleaved(false);
   const size_t k = in.Input.GetNames().size();
-  const auto bad = std::find_if(values.begin(), values.end(), [](float v) { return !std::isfinite(v); });
-  if (bad != values.end())
-  {
-    // Said once, as the relight filter says it, and drawn black: a NaN would blank the
-    // shader's sum, and the CPU path's metering would say it at every frame.
-    const size_t at = static_cast<size_t>(bad - values.begin()) / 3;
-    in.Problem = "the solution of light '" + in.Input.GetNames()[at % k] + "' is not finite at point " +
-      std::to_string(at / k) + "; the input's Radiosity_<light> arrays must hold finite numbers";
-    return;
-  }
   in.Names = in.Input.GetNames();
   in.Defaults = in.Input.GetDefaultColors();
   const size_t points = static_cast<size_t>(data->GetNumberOfPoints());
@@ -223,6 +221,8 @@ void vtkRadiosityRelightMapper::UploadIfNeeded(vtkRenderer* ren)
   {
     return; // the solutions stay on the CPU
   }
+  // Point-major: the k solutions of a vertex lie together, for one texel run per vertex.
+  const std::vector<float> values = in.Input.Interleaved(false);
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   in.Texture->SetContext(window);
   in.Buffer->Upload(values, vtkOpenGLBufferObject::TextureBuffer);
@@ -370,7 +370,9 @@ double vtkRadiosityRelightMapper::GetExposureInUse()
   // where the defaults light nothing.
   Internals& in = *this->Internal;
   vtkPolyData* data = in.UploadedData;
-  if (in.Exposure > 0 || !data || !in.Problem.empty()) // nothing to meter where the input has a problem
+  // Nothing to meter where the input has a problem, or changed since its tables were read
+  // (their pointers would be stale): the last value stands until the next upload.
+  if (in.Exposure > 0 || !data || !in.Problem.empty() || data->GetMTime() > in.UploadedTime)
   {
     return in.Exposure > 0 ? in.Exposure : in.Metered;
   }

@@ -130,6 +130,18 @@ nan.GetPointData().GetArray(f"Radiosity_{names[1]}").SetComponent(100, 1, float(
 problem, said, errors, lights = problem_of(nan)
 check(f"light '{names[1]}' is not finite at point 100" in problem and errors == 1 and lights == 0,
       f"a NaN in a solution array: '{problem}' (said {errors} time(s) over a frame)")
+# A mapper that relit the last input on the CPU draws a bad one black, as the GPU path does.
+was_cpu = relight.vtkRadiosityRelightMapper()
+was_cpu.SetUseGPU(False)
+was_cpu.SetInputData(solved)
+relight.ErrorCatcher(was_cpu)
+cpu_frame = FrameRenderer(ROOM_CAMERA, SIZE, was_cpu)
+cpu_frame.render()
+on_cpu_before = was_cpu.GetRelitOnCPU()
+was_cpu.SetInputData(nan)
+dark = pixels(cpu_frame.render())
+check(on_cpu_before and not was_cpu.GetRelitOnCPU() and "not finite" in was_cpu.GetLastProblem() and dark.max() < 40,
+      f"after a CPU frame, a NaN input is drawn dark (brightest {dark.max():.0f}) and no longer relit on the CPU")
 exposed = relight.vtkRadiosityRelightMapper()
 caught = relight.ErrorCatcher(exposed)
 exposed.SetExposure(2.0)
