@@ -22,8 +22,9 @@ struct ClusteredSettings
   /// Two groups of elements exchange light as a whole when their centres are farther
   /// apart than this many times the sum of their radii (1.5 times it where one side
   /// does not all face the other). Larger is more accurate and slower (what each costs
-  /// and buys on the FZK-Haus: docs/benchmarks.md; the accuracy levels set it).
-  double Separation = 4.0;
+  /// and buys on the FZK-Haus: docs/benchmarks.md; the accuracy levels set it, and this
+  /// default is the default level's, as the solver filter's is).
+  double Separation = 3.0;
   /// Bytes the links, and then the links and per-node sums, may take (0: 90 % of the
   /// memory the system has free when they are made). A solve that would need more stops
   /// with the direct light, the reason in SolverStatistics::OutOfMemory.

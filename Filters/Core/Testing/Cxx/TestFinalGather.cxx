@@ -111,11 +111,13 @@ TEST(FinalGather, EachSweepTakesUpWhatTheElementSolutionLostByTheReflectance)
 }
 
 /// What may reach the second room: nothing, but for the clustered method, whose far links
-/// deliver to every element of a node alike and so to a node's elements behind the wall
-/// (measured up to 3.1e-6 here, against 0.05-0.2 in the lit room; the gather reads it there).
+/// deliver to every element of a node alike and so to a node's elements behind the wall,
+/// and a sweep's rays from a cell there read it (at the default separation, 3, measured up
+/// to 2.0e-5 on the cells here and 1.9e-6 at the points, which read those cells, against
+/// 0.05-0.2 in the lit room; at separation 4, 3.1e-6 on the cells).
 double Leak(SolverMethod method)
 {
-  return method == SolverMethod::Clustered ? 1e-5 : 0.0;
+  return method == SolverMethod::Clustered ? 3e-5 : 0.0;
 }
 
 TEST(FinalGather, NoLightReachesTheRoomBehindAWallAtAnyMethod)
