@@ -46,7 +46,7 @@ pqRadiosityLightsWidget::pqRadiosityLightsWidget(vtkSMProxy* proxy, vtkSMPropert
   : Superclass(proxy, parent)
   , PartStart(Parts())
   , Property(property)
-  , Table(new QTableWidget(0, Parts().size() - 1, this))
+  , Table(new QTableWidget(0, static_cast<int>(this->PartStart.size()) - 1, this))
   , Connection(vtkEventQtSlotConnect::New())
 {
   this->setShowLabel(false);
