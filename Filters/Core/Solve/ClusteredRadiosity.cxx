@@ -78,16 +78,21 @@ private:
     Radiosity.assign(static_cast<size_t>(N) * L, Value());
     Last.assign(Radiosity.size(), Value());
     Unshot.assign(static_cast<size_t>(P) * L, Value());
+    std::vector<double> reflected(L, 0.0);
     for (int e = 0; e < N; ++e)
     {
       const int p = G.ElementPatch[e];
       for (int m = 0; m < L; ++m)
       {
-        const Value v = Channel::From(emission[At(e, m)]);
-        Radiosity[At(e, m)] = v;
+        const Value v = Channel::From(emission[At(e, m)]), r = ReflectedAt(e, m);
+        // The reflected part waits in Last (each rank its own elements', summed after the
+        // shots), to be added to the radiosity with the shots' reflected light.
+        Radiosity[At(e, m)] = v - r;
+        Last[At(e, m)] = Owned[p] ? r : Value();
+        reflected[m] += Channel::Sum(r) * G.Area[e];
         if (G.PatchOpenArea[p] > 0 && !G.Enclosed[e]) // enclosed emission never gets out
         {
-          Unshot[At(p, m)] += v * (G.Area[e] / G.PatchOpenArea[p]);
+          Unshot[At(p, m)] += (v - r) * (G.Area[e] / G.PatchOpenArea[p]);
         }
       }
     }
@@ -109,10 +114,23 @@ private:
     // The brightest first, as the shooting methods do: a stopped solve has the most light.
     std::stable_sort(Emitters.begin(), Emitters.end(), [&](int a, int b) { return power[a] > power[b]; });
     PendingPer = RemainingPer = InitialPer;
+    for (int m = 0; m < L; ++m)
+    {
+      InitialPer[m] += reflected[m];
+      RemainingPer[m] += reflected[m];
+    }
     Initial = std::accumulate(InitialPer.begin(), InitialPer.end(), 0.0);
     Stats.EmittedPower = Stats.UnshotPower = Initial;
     Stats.ShotCap = ShotCap(Options, P);
     ReceiverScale.assign(N, 1.0);
+  }
+
+  /// Light of the start already reflected once: sent along the links, not shot (where the
+  /// interreflection runs and the element can exchange light; elsewhere it is emission).
+  Value ReflectedAt(int e, int m) const
+  {
+    const std::vector<Vec3>* r = Options.ReflectedStart;
+    return r && Reflect && !G.Enclosed[e] && r->size() == Radiosity.size() ? Channel::From((*r)[At(e, m)]) : Value();
   }
 
   bool AnyActive() const

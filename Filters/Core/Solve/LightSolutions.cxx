@@ -387,6 +387,17 @@ std::vector<Vec3> StartingRadiosity(const SceneMesh& mesh, const std::vector<Vec
   return start;
 }
 
+/// a - b, element by element (the same size).
+std::vector<Vec3> Minus(const std::vector<Vec3>& a, const std::vector<Vec3>& b)
+{
+  std::vector<Vec3> out(a.size());
+  for (size_t i = 0; i < a.size(); ++i)
+  {
+    out[i] = a[i] - b[i];
+  }
+  return out;
+}
+
 Solution SolveInMode(const RadiositySolver& solver, const std::vector<Vec3>& start, int solutions,
   SolutionMode mode, const SolverOptions& options, int polygons)
 {
@@ -419,8 +430,11 @@ Solution SolveLights(const RadiositySolver& solver, const SceneMesh& mesh,
   {
     points.Irradiance = PointLightIrradiance(mesh, solver.Geometry(), solver.Rays(), pointLights, options.Threads);
   }
-  Solution out = SolveInMode(solver, k > 0 ? StartingRadiosity(mesh, emission, solutions, points) : emission,
-    solutions, mode, solving, mesh.NumberOfPolygons());
+  const std::vector<Vec3> starting = k > 0 ? StartingRadiosity(mesh, emission, solutions, points) : std::vector<Vec3>();
+  const std::vector<Vec3> reflected =
+    k > 0 && mode != SolutionMode::StandardSeparate ? Minus(starting, emission) : std::vector<Vec3>();
+  solving.ReflectedStart = reflected.empty() ? nullptr : &reflected;
+  Solution out = SolveInMode(solver, k > 0 ? starting : emission, solutions, mode, solving, mesh.NumberOfPolygons());
   if (k > 0)
   {
     SettlePointLights(mesh, solver.Geometry(), pointLights, points.Irradiance, points.First, out);

@@ -90,6 +90,12 @@ struct SolverOptions
   /// Called between shots with the fraction done; returning false aborts the solve, which
   /// then keeps the valid partial result of the shots made so far.
   std::function<bool(double)> Progress;
+  /// The part of the starting radiosity that is light already reflected once (the point
+  /// lights' reflected direct light, [element * solutions + m]; null: none). The clustered
+  /// method sends it along its links with the reflected light of its own emitters instead
+  /// of shooting every lit patch as an emitter (a building lit by luminaires: thousands of
+  /// shots); the other methods take it as emission.
+  const std::vector<Vec3>* ReflectedStart = nullptr;
   /// What one method alone reads, defined beside that method.
   HierarchicalSettings Hierarchical;
   ClusteredSettings Clustered;

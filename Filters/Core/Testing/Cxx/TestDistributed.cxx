@@ -80,7 +80,8 @@ private:
 /// Solves `mesh` (with `lights` lights) on `ranks` threads as ranks, each with its own
 /// solver (as each MPI rank prepares the whole scene); `tweak` may change a rank's options.
 std::vector<Solution> SolveOnRanks(const SceneMesh& mesh, int ranks, const SolverOptions& options,
-  const std::function<void(int, SolverOptions&)>& tweak = nullptr, int lights = 8, long long* rounds = nullptr)
+  const std::function<void(int, SolverOptions&)>& tweak = nullptr, int lights = 8, long long* rounds = nullptr,
+  const std::vector<PointLight>& points = {})
 {
   ThreadRanks group(ranks);
   std::vector<Solution> results(ranks);
@@ -96,7 +97,8 @@ std::vector<Solution> SolveOnRanks(const SceneMesh& mesh, int ranks, const Solve
         tweak(r, mine);
       }
       const RadiositySolver solver(mesh, mine.Threads, mine.Group); // the ranks share its probes too
-      results[r] = SolveLights(solver, mesh, LightGrouping::OnePerLight(lights), {}, SolutionMode::LightTagged, mine);
+      results[r] =
+        SolveLights(solver, mesh, LightGrouping::OnePerLight(lights), {}, SolutionMode::LightTagged, mine, points);
     });
   }
   for (std::thread& t : threads)
@@ -133,7 +135,7 @@ double LargestDifference(const std::vector<Vec3>& a, const std::vector<Vec3>& b)
 
 /// `tolerance`: relative, for the sums whose order differs between one process and several.
 void ExpectSerialAnswer(SolverMethod method, int ranks, bool direct, const SceneMesh& mesh = Room(), int lights = 8,
-  double tolerance = 1e-9)
+  double tolerance = 1e-9, const std::vector<PointLight>& points = {})
 {
   SolverOptions options = Converged(1e-4);
   options.SolverMethod = method;
@@ -142,8 +144,8 @@ void ExpectSerialAnswer(SolverMethod method, int ranks, bool direct, const Scene
   options.Threads = 1;
   const RadiositySolver serial(mesh);
   const Solution one =
-    SolveLights(serial, mesh, LightGrouping::OnePerLight(lights), {}, SolutionMode::LightTagged, options);
-  const std::vector<Solution> many = SolveOnRanks(mesh, ranks, options, nullptr, lights);
+    SolveLights(serial, mesh, LightGrouping::OnePerLight(lights), {}, SolutionMode::LightTagged, options, points);
+  const std::vector<Solution> many = SolveOnRanks(mesh, ranks, options, nullptr, lights, nullptr, points);
   for (int r = 0; r < ranks; ++r)
   {
     const SolverStatistics& s = many[r].Statistics;
@@ -172,7 +174,7 @@ void ExpectSerialAnswer(SolverMethod method, int ranks, bool direct, const Scene
     {
       peak = std::max({ peak, b.x, b.y, b.z });
     }
-    for (int m = 0; m < lights; ++m)
+    for (int m = 0; m < lights + static_cast<int>(points.size()); ++m)
     {
       EXPECT_NEAR(many[r].Ambient[m].x, one.Ambient[m].x, tolerance * peak);
     }
@@ -195,6 +197,17 @@ TEST(Distributed, ClusteredOnThreeRanksGivesTheSerialAnswerWithDirectAndAmbient)
   // Each rank links its share of the node pairs; the bounce's node sums meet in one sum.
   // They are floats: summed in another order, they round differently (about 1e-7).
   ExpectSerialAnswer(SolverMethod::Clustered, 3, true, Room(), 8, 1e-6);
+}
+
+TEST(Distributed, ClusteredWithPointLightsOnTwoRanksGivesTheSerialAnswer)
+{
+  // The point lights' reflected light starts on every rank's own elements and travels the
+  // links with the lamps' (counted once, not once per rank).
+  std::vector<PointLight> points(2);
+  points[0].Position = { 1.5, 1.2, 2.2 };
+  points[1].Position = { 3.0, 2.5, 1.0 };
+  points[1].Aim = { 1, 0, 0 };
+  ExpectSerialAnswer(SolverMethod::Clustered, 2, true, Room(), 8, 1e-6, points);
 }
 
 TEST(Distributed, FaceClustersOnTwoRanksGiveTheSerialAnswer)

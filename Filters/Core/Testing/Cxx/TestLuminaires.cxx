@@ -53,8 +53,10 @@ TEST(Luminaires, TheClosedCubeTakesItsMeanIlluminanceInClosedForm)
   // CIE 171:2006 test 5.x: a 4 m cube (S = 96 m^2) of uniform reflectance lit by 10,000 lm
   // has a mean illuminance of 10,000 / (96 (1 - rho)) lx: 130.21, 208.33 and 520.83 at
   // 0.2, 0.5 and 0.8, whatever the luminaire's distribution (here a real ERCO spot, aimed
-  // down from the centre). Measured: 0.036 % over at every method (CIE 171 reports
-  // 0.16-0.34 % for published software).
+  // down from the centre). Measured: 0.036 % over with the shooting methods (CIE 171
+  // reports 0.16-0.34 % for published software); the clustered method, whose links carry
+  // the luminaire's reflected light from the first bounce on (a building lit by luminaires
+  // would otherwise shoot every lit patch), +0.007, -0.042 and -0.10 %.
   for (double rho : { 0.2, 0.5, 0.8 })
   {
     const SceneMesh cube = Box(4, 16, 4, { rho, rho, rho }, [](int) { return -1; });
@@ -66,7 +68,8 @@ TEST(Luminaires, TheClosedCubeTakesItsMeanIlluminanceInClosedForm)
         SolveLights(solver, cube, LightGrouping::OnePerLight(0), {}, SolutionMode::LightTagged, Method(method), lights);
       ASSERT_EQ(s.Solutions, 1);
       const double expected = 10000 / (96 * (1 - rho));
-      EXPECT_NEAR(MeanIlluminance(cube, s, 0), expected, 1e-3 * expected)
+      const double tolerance = method == SolverMethod::Clustered ? 2e-3 : 1e-3;
+      EXPECT_NEAR(MeanIlluminance(cube, s, 0), expected, tolerance * expected)
         << "rho " << rho << ", method " << static_cast<int>(method);
       const SolverStatistics& t = s.Statistics;
       EXPECT_NEAR(t.EmittedPower, 3 * 10000, 1e-6 * 3 * 10000);
