@@ -24,6 +24,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 vtkStandardNewMacro(vtkRadiosityWorkPlane);
 
@@ -64,13 +65,10 @@ void WriteGrid(const radiosity::WorkPlaneGrid& grid, vtkPolyData* output)
     points->InsertNextPoint(p.x, p.y, p.z);
   }
   vtkNew<vtkCellArray> quads;
-  for (int j = 0; j + 1 < grid.Nv; ++j)
+  for (const std::array<int, 4>& q : grid.Quads)
   {
-    for (int i = 0; i + 1 < grid.Nu; ++i)
-    {
-      const vtkIdType a = j * grid.Nu + i, ids[4] = { a, a + 1, a + grid.Nu + 1, a + grid.Nu };
-      quads->InsertNextCell(4, ids);
-    }
+    const vtkIdType ids[4] = { q[0], q[1], q[2], q[3] };
+    quads->InsertNextCell(4, ids);
   }
   output->SetPoints(points);
   output->SetPolys(quads);
@@ -167,19 +165,34 @@ int vtkRadiosityWorkPlane::Execute(const Run& run)
   const std::vector<radiosity::Vec3> solution = error.empty() ? ElementSolution(input, names, error) : std::vector<radiosity::Vec3>();
   double bounds[6];
   input->GetBounds(bounds);
-  if (std::any_of(this->Area, this->Area + 6, [](double v) { return v != 0; }))
+  const bool room = std::any_of(this->Area, this->Area + 6, [](double v) { return v != 0; });
+  if (room)
   {
     std::copy(this->Area, this->Area + 6, bounds);
   }
-  const radiosity::WorkPlaneGrid grid =
-    error.empty() ? radiosity::LayWorkPlane(bounds, UpOf(this->UpAxis, bounds), this->Height, this->Border, this->Spacing, error)
-                  : radiosity::WorkPlaneGrid();
+  const int up = UpOf(this->UpAxis, bounds);
+  const radiosity::WorkPlaneGrid laid = error.empty()
+    ? radiosity::LayWorkPlane(bounds, up, this->Height, this->Border, this->Spacing, error)
+    : radiosity::WorkPlaneGrid();
   const vtkRadiosityPreparedScenes::MeshKey key = vtkRadiosityPreparedScenes::KeyOf(input);
   radiosity::PreparedScene prepared = vtkRadiosityPreparedScenes::Find(input, key, true);
   if (error.empty() && !prepared.Geometry)
   {
     error = radiosity::PrepareTransport(scene.Mesh, vtkRadiosityAdapter::Threads(0), radiosity::ProcessGroup(), prepared);
     vtkRadiosityPreparedScenes::Keep(input, key, prepared);
+  }
+  // In a room's box, only the points inside the room (its floor below, its ceiling above);
+  // over the whole scene, those over a floor.
+  const radiosity::WorkPlaneGrid grid = error.empty()
+    ? radiosity::KeptPoints(laid,
+        radiosity::PointsInRoom(laid, up, this->Height, room, *prepared.Rays, prepared.Geometry->Normal))
+    : laid;
+  if (error.empty() && grid.Points.empty())
+  {
+    std::ostringstream none;
+    none << "none of its " << laid.Points.size() << " points stands " << this->Height << " over a floor"
+         << (room ? " under a ceiling (is the room's box right?)" : "");
+    error = none.str();
   }
   if (!error.empty())
   {
@@ -206,8 +219,9 @@ int vtkRadiosityWorkPlane::Execute(const Run& run)
   }
   WriteGrid(grid, output);
   const radiosity::PlaneStatistics stats = AddIlluminance(scene, names, at, output);
-  vtkLogF(INFO, "Work plane: %d x %d points, %.3g apart; mean %.4g, minimum %.4g, uniformity %.3f", grid.Nu, grid.Nv,
-    std::max(grid.SpacingU, grid.SpacingV), stats.Mean, stats.Minimum, stats.Uniformity);
+  vtkLogF(INFO, "Work plane: %d x %d points, %.3g apart, %d of them outside %s; mean %.4g, minimum %.4g, uniformity %.3f",
+    grid.Nu, grid.Nv, std::max(grid.SpacingU, grid.SpacingV), static_cast<int>(laid.Points.size() - grid.Points.size()),
+    room ? "the room" : "any floor", stats.Mean, stats.Minimum, stats.Uniformity);
   return 1;
 }
 

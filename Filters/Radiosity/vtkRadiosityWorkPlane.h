@@ -61,8 +61,9 @@ public:
   ///@}
 
   ///@{
-  /// Cosine rays per point into the element solution for the reflected light. Default 256.
-  vtkSetClampMacro(GatherRays, int, 1, 65536);
+  /// Cosine rays per point into the element solution for the reflected light. Default 256;
+  /// 0: direct light alone.
+  vtkSetClampMacro(GatherRays, int, 0, 65536);
   vtkGetMacro(GatherRays, int);
   ///@}
 

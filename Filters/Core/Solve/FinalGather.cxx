@@ -590,7 +590,7 @@ GatheredPoints IrradianceAtPoints(const SceneMesh& mesh, const SceneGeometry& ge
   const WorkerPool pool(threads);
   const std::vector<Vec3> none(points.size() * solutions);
   const Gather free(mesh, geometry, rays, emission, radiosity, solutions, emitters, frames, none,
-    std::max(1, settings.Rays), settings.LightRays, true, 0x17, settings);
+    std::max(0, settings.Rays), settings.LightRays, true, 0x17, settings); // 0 rays: direct light alone
   std::vector<Vec3> arriving;
   GatheredPoints out = Run(free, solutions, pool, settings.Group, progress, 0.0, 1.0, arriving);
   out.Hidden.clear();

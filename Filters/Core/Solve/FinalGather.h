@@ -62,7 +62,7 @@ GatheredPoints GatherAtPoints(const SceneMesh& mesh, const SceneGeometry& geomet
 /// The irradiance at free points (a work plane in the air, a meter's cell) facing
 /// `normals`, per solution ([point * solutions + m] in Irradiance, and in Radiosity as a
 /// white surface there would send it; the direct part in Direct), gathered as the mesh's points are: direct light from every emitter and point
-/// light with shadow rays, interreflection along `settings.Rays` cosine rays into the
+/// light with shadow rays, interreflection along `settings.Rays` cosine rays (0: none) into the
 /// element solution `radiosity` (whose emitters' `emission` is left out: they were taken
 /// as direct light). No point is on a surface, so none is hidden and none takes a
 /// neighbour's value.

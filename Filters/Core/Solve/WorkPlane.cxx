@@ -1,5 +1,7 @@
 #include "Solve/WorkPlane.h"
 
+#include "Geometry/Visibility.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -56,9 +58,56 @@ WorkPlaneGrid LayWorkPlane(const double bounds[6], int up, double height, double
       point[a] = lowA + (i + 0.5) * grid.SpacingU;
       point[b] = lowB + (j + 0.5) * grid.SpacingV;
       grid.Points.push_back(point);
+      if (i + 1 < grid.Nu && j + 1 < grid.Nv)
+      {
+        const int a = j * grid.Nu + i;
+        grid.Quads.push_back({ a, a + 1, a + grid.Nu + 1, a + grid.Nu });
+      }
     }
   }
   return grid;
+}
+
+std::vector<char> PointsInRoom(
+  const WorkPlaneGrid& grid, int up, double height, bool ceiling, const Visibility& rays, const std::vector<Vec3>& normals)
+{
+  std::vector<char> keep(grid.Points.size(), 1);
+  Vec3 axis;
+  axis[up] = 1;
+  for (size_t p = 0; p < grid.Points.size() && height > 0; ++p)
+  {
+    Visibility::Hit floor, top;
+    const bool below = rays.Intersect(grid.Points[p], axis * -1.0, floor) && floor.Polygon >= 0 &&
+      floor.Distance <= 1.5 * height && Dot(normals[floor.Polygon], axis) > 0;
+    const bool above = !ceiling ||
+      (rays.Intersect(grid.Points[p], axis, top) && top.Polygon >= 0 && Dot(normals[top.Polygon], axis) < 0);
+    keep[p] = below && above;
+  }
+  return keep;
+}
+
+WorkPlaneGrid KeptPoints(const WorkPlaneGrid& grid, const std::vector<char>& keep)
+{
+  WorkPlaneGrid kept = grid;
+  kept.Points.clear();
+  kept.Quads.clear();
+  std::vector<int> index(grid.Points.size(), -1);
+  for (size_t p = 0; p < grid.Points.size(); ++p)
+  {
+    if (keep[p])
+    {
+      index[p] = static_cast<int>(kept.Points.size());
+      kept.Points.push_back(grid.Points[p]);
+    }
+  }
+  for (const std::array<int, 4>& q : grid.Quads)
+  {
+    if (index[q[0]] >= 0 && index[q[1]] >= 0 && index[q[2]] >= 0 && index[q[3]] >= 0)
+    {
+      kept.Quads.push_back({ index[q[0]], index[q[1]], index[q[2]], index[q[3]] });
+    }
+  }
+  return kept;
 }
 
 PlaneStatistics WorkPlaneStatistics(const std::vector<double>& illuminance)

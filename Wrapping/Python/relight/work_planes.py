@@ -13,7 +13,9 @@ def work_plane(solved, height=0.8, border=0.5, spacing=0.0, up=None, rays=256, r
     area), gathered from the solver's output (`solved`: its output data or the solver).
     `up`: "x", "y" or "z" (None: the scene's shortest side). `room`: the name of a room of
     an IFC file (its IfcSpace, field arrays RoomNames and RoomBounds): the plane is laid in
-    that room's box instead of the whole scene. Returns the grid (vtkPolyData:
+    that room's box instead of the whole scene. Only the points over a floor (at most 1.5
+    `height` down) are kept, in a room only those under a ceiling too. `rays`: cosine rays
+    per point for the reflected light (0: direct light alone). Returns the grid (vtkPolyData:
     point arrays Illuminance_<light> and Illuminance, field arrays IlluminanceMean,
     IlluminanceMinimum, IlluminanceMaximum, Uniformity). Raises RuntimeError with the
     filter's message where it cannot be laid."""

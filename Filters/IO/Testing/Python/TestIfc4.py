@@ -88,6 +88,7 @@ box = relight.make_scene(
                              [(0, 0, 0), (0, 0, 3), (0, 4, 3), (0, 4, 0)], [(5, 0, 0), (5, 4, 0), (5, 4, 3), (5, 0, 3)]]],
     [(0.5, 0.5, 0.5)] * 6, [-1] * 6)
 from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkStringArray  # noqa: E402
+from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
 room_names, room_bounds = vtkStringArray(), vtkDoubleArray()
 room_names.SetName("RoomNames")
 room_bounds.SetName("RoomBounds")
@@ -101,6 +102,16 @@ solved = relight.solve(relight.mark_lights(box, relight.luminaire("Bulb", kind="
 plane = relight.work_plane(solved, room="Küche", up="z", border=0.25)
 low, high = plane.GetBounds()[0:2]
 check(0.25 <= low and high <= 1.75, f"the plane lies in the kitchen, inside its border: x {low:.2f} to {high:.2f}")
+# rays=0: the bulb's direct light alone, I cos(theta) / d^2 with I = 1000 lm / 4 pi sr;
+# every bounce adds to it.
+direct = relight.work_plane(solved, room="Küche", up="z", border=0.25, rays=0)
+at = vtk_to_numpy(direct.GetPoints().GetData())
+d = np.array([1, 2, 2.9]) - at
+lambert = 1000 / (4 * np.pi) * d[:, 2] / np.linalg.norm(d, axis=1) ** 3
+alone = relight.point_array(direct, "Illuminance_Bulb")[:, 0]
+check(np.allclose(alone, lambert, rtol=1e-6), f"direct light alone at the plane: {alone[:3]} against {lambert[:3]}")
+check(np.all(relight.point_array(plane, "Illuminance_Bulb")[:, 0] > 1.05 * alone),
+      "the reflected light adds to every point")
 try:
     relight.work_plane(solved, room="Garage", up="z")
     check(False, "an unknown room is refused")
