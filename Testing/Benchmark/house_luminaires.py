@@ -8,7 +8,7 @@ weighs them) against Radiance's rtrace of the group (pyradiance, bench-only, in 
 
 Usage:
   ./relight python Testing/Benchmark/house_luminaires.py [--radiance out/radiance-venv]
-      [--ad 2048] [--ab 16] [--spacing 2.5] [--out out/bench-house-luminaires]
+      [--ad 2048] [--ab 16] [--spacing 2.5] [--out out/bench-house-luminaires] [--cost]
 
 Radiance gets the building's surfaces as our solver does (the imported triangles, each
 surface style a matte plastic of its colour) and each luminaire through ies2rad. Per
@@ -123,6 +123,21 @@ def rtrace(venv, group, members, at, ad, ab, folder, runs=2):
     return [rtrace_lux(venv, f"{group}.oct", rays, bounces, ad, folder, env) for bounces in [ab] * runs + [0]]
 
 
+def cost(house, lights, runs=2):
+    """Solve seconds at the defaults with the luminaires, and with area lights in their places
+    (disks of 0.15 m facing down, each its own light): medians of `runs`, taken in turn."""
+    lit = relight.mark_lights(house, *[relight.luminaire(n, DOWNLIGHT, position=p) for n, _, p, _ in lights])
+    disks = relight.mark_lights(house, *[relight.area_light(n, centre=p, normal=(0, 0, -1), size=0.15, disk=True)
+                                         for n, _, p, _ in lights])
+    seconds = {"luminaires": [], "area lights": []}
+    for _ in range(runs):
+        for label, marked in (("luminaires", lit), ("area lights", disks)):
+            start = time.perf_counter()
+            relight.solve(marked)
+            seconds[label].append(time.perf_counter() - start)
+    return {label: float(np.median(values)) for label, values in seconds.items()}
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--radiance", default=str(ROOT / "out" / "radiance-venv"))
@@ -131,6 +146,7 @@ def main():
                         help="Radiance's bounces (8 gave the same to 0.1 %% here; ours run until they converge)")
     parser.add_argument("--spacing", type=float, default=2.5, help="the downlights' grid in each room, at most (m)")
     parser.add_argument("--out", default=str(ROOT / "out" / "bench-house-luminaires"))
+    parser.add_argument("--cost", action="store_true", help="only time the solve against area lights in the same places")
     args = parser.parse_args()
     out_dir = pathlib.Path(args.out)
     out_dir.mkdir(parents=True, exist_ok=True)
@@ -138,6 +154,11 @@ def main():
     house = relight.import_scene(HOUSE, require_lights=False)
     rooms = rooms_of(house)
     lights = place(house, rooms, args.spacing)
+    if args.cost:
+        times = cost(house, lights)
+        print(f"{len(lights)} luminaires {times['luminaires']:.1f} s, area lights {times['area lights']:.1f} s, "
+              f"ratio {times['luminaires'] / times['area lights']:.2f} (medians of 2, one run)")
+        return
     groups = {}
     for light in lights:
         groups.setdefault(light[3], []).append(light)
