@@ -95,6 +95,8 @@ room_bounds.SetName("RoomBounds")
 room_bounds.SetNumberOfComponents(6)
 room_names.InsertNextValue("Küche")
 room_bounds.InsertNextTuple((0.0, 2.0, 0.0, 4.0, 0.0, 3.0))
+room_names.InsertNextValue("Garten")  # a box outside the house: no floor, no ceiling
+room_bounds.InsertNextTuple((6.0, 8.0, 0.0, 4.0, 0.0, 3.0))
 box.GetFieldData().AddArray(room_names)
 box.GetFieldData().AddArray(room_bounds)
 solved = relight.solve(relight.mark_lights(box, relight.luminaire("Bulb", kind="point", position=(1, 2, 2.9), lumens=1000)),
@@ -112,6 +114,11 @@ alone = relight.point_array(direct, "Illuminance_Bulb")[:, 0]
 check(np.allclose(alone, lambert, rtol=1e-6), f"direct light alone at the plane: {alone[:3]} against {lambert[:3]}")
 check(np.all(relight.point_array(plane, "Illuminance_Bulb")[:, 0] > 1.05 * alone),
       "the reflected light adds to every point")
+try:
+    relight.work_plane(solved, room="Garten", up="z")
+    check(False, "a room's box with no point in the house is refused")
+except RuntimeError as error:
+    check("none of its" in str(error) and "over a floor under a ceiling" in str(error), f"no point in the room: {error}")
 try:
     relight.work_plane(solved, room="Garage", up="z")
     check(False, "an unknown room is refused")
