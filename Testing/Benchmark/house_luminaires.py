@@ -2,7 +2,7 @@
 """A real building lit by a manufacturer's luminaires in light groups, against Radiance:
 KIT's FZK-Haus as IFC4 (through IfcOpenShell), ERCO downlights (their IES file) on a grid
 under the ceiling of each room, each its own light, switched in 8 groups (a room each, the
-living room in two halves), and a work plane 0.8 m up in every room; the illuminance of
+room with the largest box, the attic, in two halves), and a work plane 0.8 m up in every room; the illuminance of
 each group at the planes' points ours (the sum of its lights' solutions, as a light scene
 weighs them) against Radiance's rtrace of the group (pyradiance, bench-only, in a venv).
 
@@ -85,7 +85,7 @@ def place(scene, rooms, spacing):
                 group = ascii_name(name)
                 if name == largest:
                     group += "_A" if (x < (b[0] + b[1]) / 2 if longer_x else y < (b[2] + b[3]) / 2) else "_B"
-                lights.append((f"{ascii_name(name)}{i}{j}", name, (x, y, top), group))
+                lights.append((f"{ascii_name(name)}_{i}_{j}", name, (x, y, top), group))
     return lights
 
 
@@ -125,7 +125,7 @@ def rtrace(venv, group, members, at, ad, ab, folder, runs=2):
 
 def cost(house, lights, runs=2):
     """Solve seconds at the defaults with the luminaires, and with area lights in their places
-    (disks of 0.15 m facing down, each its own light): medians of `runs`, taken in turn."""
+    (disks of 0.15 m facing down, each its own light): means of `runs`, taken in turn."""
     lit = relight.mark_lights(house, *[relight.luminaire(n, DOWNLIGHT, position=p) for n, _, p, _ in lights])
     disks = relight.mark_lights(house, *[relight.area_light(n, centre=p, normal=(0, 0, -1), size=0.15, disk=True)
                                          for n, _, p, _ in lights])
@@ -135,7 +135,7 @@ def cost(house, lights, runs=2):
             start = time.perf_counter()
             relight.solve(marked)
             seconds[label].append(time.perf_counter() - start)
-    return {label: float(np.median(values)) for label, values in seconds.items()}
+    return {label: float(np.mean(values)) for label, values in seconds.items()}
 
 
 def main():
@@ -157,7 +157,7 @@ def main():
     if args.cost:
         times = cost(house, lights)
         print(f"{len(lights)} luminaires {times['luminaires']:.1f} s, area lights {times['area lights']:.1f} s, "
-              f"ratio {times['luminaires'] / times['area lights']:.2f} (medians of 2, one run)")
+              f"ratio {times['luminaires'] / times['area lights']:.2f} (means of 2, one run)")
         return
     groups = {}
     for light in lights:
@@ -167,8 +167,13 @@ def main():
     solver = relight.solve(marked)
     seconds = time.perf_counter() - start
     solved = solver.GetOutput()
-    planes = {room: relight.work_plane(solver, room=room, up="z") for room in rooms}
-    direct = {room: relight.work_plane(solver, room=room, up="z", rays=0) for room in rooms}  # no reflected light
+    planes, direct = {}, {}
+    for room in rooms:
+        try:
+            planes[room] = relight.work_plane(solver, room=room, up="z")
+            direct[room] = relight.work_plane(solver, room=room, up="z", rays=0)  # no reflected light
+        except RuntimeError as error:  # no point of its box stands in it
+            print(f"{room}: no work plane ({error})")
     at = np.vstack([vtk_to_numpy(p.GetPoints().GetData()).astype(float) for p in planes.values()])
     which = np.concatenate([[room] * planes[room].GetNumberOfPoints() for room in planes])
     print(f"{HOUSE.name}: {solved.GetNumberOfCells()} elements, {len(lights)} luminaires in {len(groups)} groups, "
@@ -180,6 +185,9 @@ def main():
         write_radiance(house, folder)
         for group, members in groups.items():
             room = members[0][1]
+            if room not in planes:
+                continue
+
             def at_planes(source):
                 # The mean of the channels, as rtrace_lux takes Radiance's (the roof's inside is
                 # orange: its red channel alone reflects twice the mean).

@@ -407,6 +407,19 @@ Solution SolveInMode(const RadiositySolver& solver, const std::vector<Vec3>& sta
   }
   return SeparateSolves(solver, start, polygons, solutions, options).Run();
 }
+/// The solve from the cells' emission plus the point lights' reflected direct light, a
+/// method that may be the clustered one told which part is the reflected light
+/// (ReflectedStart); the starting vectors live only as long as the solve.
+Solution SolveFromPointLights(const RadiositySolver& solver, const SceneMesh& mesh, const std::vector<Vec3>& emission,
+  const PointLightSolutions& points, int solutions, SolutionMode mode, SolverOptions solving)
+{
+  const std::vector<Vec3> starting = StartingRadiosity(mesh, emission, solutions, points);
+  const bool tell = mode != SolutionMode::StandardSeparate &&
+    (solving.SolverMethod == SolverMethod::Auto || solving.SolverMethod == SolverMethod::Clustered);
+  const std::vector<Vec3> reflected = tell ? Minus(starting, emission) : std::vector<Vec3>();
+  solving.ReflectedStart = tell ? &reflected : nullptr;
+  return SolveInMode(solver, starting, solutions, mode, solving, mesh.NumberOfPolygons());
+}
 } // namespace
 
 Solution SolveLights(const RadiositySolver& solver, const SceneMesh& mesh,
@@ -430,11 +443,8 @@ Solution SolveLights(const RadiositySolver& solver, const SceneMesh& mesh,
   {
     points.Irradiance = PointLightIrradiance(mesh, solver.Geometry(), solver.Rays(), pointLights, options.Threads);
   }
-  const std::vector<Vec3> starting = k > 0 ? StartingRadiosity(mesh, emission, solutions, points) : std::vector<Vec3>();
-  const std::vector<Vec3> reflected =
-    k > 0 && mode != SolutionMode::StandardSeparate ? Minus(starting, emission) : std::vector<Vec3>();
-  solving.ReflectedStart = reflected.empty() ? nullptr : &reflected;
-  Solution out = SolveInMode(solver, k > 0 ? starting : emission, solutions, mode, solving, mesh.NumberOfPolygons());
+  Solution out = k > 0 ? SolveFromPointLights(solver, mesh, emission, points, solutions, mode, solving)
+                        : SolveInMode(solver, emission, solutions, mode, solving, mesh.NumberOfPolygons());
   if (k > 0)
   {
     SettlePointLights(mesh, solver.Geometry(), pointLights, points.Irradiance, points.First, out);

@@ -60,8 +60,8 @@ WorkPlaneGrid LayWorkPlane(const double bounds[6], int up, double height, double
       grid.Points.push_back(point);
       if (i + 1 < grid.Nu && j + 1 < grid.Nv)
       {
-        const int a = j * grid.Nu + i;
-        grid.Quads.push_back({ a, a + 1, a + grid.Nu + 1, a + grid.Nu });
+        const int corner = j * grid.Nu + i;
+        grid.Quads.push_back({ corner, corner + 1, corner + grid.Nu + 1, corner + grid.Nu });
       }
     }
   }
@@ -74,13 +74,17 @@ std::vector<char> PointsInRoom(
   std::vector<char> keep(grid.Points.size(), 1);
   Vec3 axis;
   axis[up] = 1;
+  // Both rays start a hair above the point, so a point lying on a desk stands on it and
+  // does not see its top as a ceiling.
+  const double lift = 1e-4 * std::max({ height, grid.SpacingU, grid.SpacingV });
   for (size_t p = 0; p < grid.Points.size() && height > 0; ++p)
   {
+    const Vec3 from = grid.Points[p] + axis * lift;
     Visibility::Hit floor, top;
-    const bool below = rays.Intersect(grid.Points[p], axis * -1.0, floor) && floor.Polygon >= 0 &&
-      floor.Distance <= 1.5 * height && Dot(normals[floor.Polygon], axis) > 0;
-    const bool above = !ceiling ||
-      (rays.Intersect(grid.Points[p], axis, top) && top.Polygon >= 0 && Dot(normals[top.Polygon], axis) < 0);
+    const bool below = rays.Intersect(from, axis * -1.0, floor) && floor.Polygon >= 0 &&
+      floor.Distance <= 1.5 * height + lift && Dot(normals[floor.Polygon], axis) > 0;
+    const bool above =
+      !ceiling || (rays.Intersect(from, axis, top) && top.Polygon >= 0 && Dot(normals[top.Polygon], axis) < 0);
     keep[p] = below && above;
   }
   return keep;

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace radiosity;
@@ -84,4 +85,33 @@ TEST(WorkPlane, OnlyPointsOverAFloorAndUnderACeilingStandInTheRoom)
   EXPECT_EQ(Count(Kept(floor, box, 0.8, true, grid)), 0);
   // Height 0 keeps every point (the plane is the floor).
   EXPECT_EQ(Count(Kept(room, wide, 0.0, true, grid)), 128);
+  // Inside a solid (the same box facing out): its bottom faces down, its top up.
+  SceneMesh solid = room;
+  for (int e = 0; e < solid.NumberOfPolygons(); ++e)
+  {
+    std::reverse(solid.Connectivity.begin() + solid.Offsets[e], solid.Connectivity.begin() + solid.Offsets[e + 1]);
+  }
+  EXPECT_EQ(Count(Kept(solid, wide, 0.8, false, grid)), 0);
+  EXPECT_EQ(Count(Kept(solid, wide, 0.8, true, grid)), 0);
+}
+
+TEST(WorkPlane, APointOnADeskStandsOnItAtAnyUpAxis)
+{
+  // A 4 m room with a desk top 0.8 m up over half of it, the plane at 0.8 m: the points over
+  // the desk lie on it and stay (the desk is their floor, the ceiling above). With y up.
+  SceneMesh room;
+  int patch = 0;
+  const Vec3 grey{ 0.5, 0.5, 0.5 };
+  AddGrid(room, { 0, 0, 0 }, { 0, 0, 4 }, { 4, 0, 0 }, 4, 2, grey, -1, patch);   // floor y = 0, facing +y
+  AddGrid(room, { 0, 4, 0 }, { 4, 0, 0 }, { 0, 0, 4 }, 4, 2, grey, -1, patch);   // ceiling y = 4, facing -y
+  AddGrid(room, { 0, 0.8, 0 }, { 0, 0, 2 }, { 4, 0, 0 }, 4, 2, grey, -1, patch); // desk top, z < 2
+  const SceneGeometry g(room);
+  ASSERT_GT(g.Normal[0].y, 0.99);
+  ASSERT_LT(g.Normal[16].y, -0.99);
+  std::string error;
+  const double box[6] = { 0, 4, 0, 4, 0, 4 };
+  const WorkPlaneGrid grid = LayWorkPlane(box, 1, 0.8, 0.0, 0.5, error);
+  ASSERT_EQ(error, "");
+  const Visibility rays(room);
+  EXPECT_EQ(Count(PointsInRoom(grid, 1, 0.8, true, rays, g.Normal)), 64);
 }
