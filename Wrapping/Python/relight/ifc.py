@@ -44,11 +44,25 @@ def schema(path):
     return head[quote + 1:end].strip() if 0 <= quote < end else ""
 
 
+def _cut_short(path):
+    """Whether a STEP file lacks its closing END-ISO-10303-21; (IfcOpenShell reads a cut one
+    without a word, as the part of the building before the cut; the C++ reader checks the
+    same for assimp)."""
+    with open(path, "rb") as f:
+        if f.read(13) != b"ISO-10303-21;":
+            return False  # not STEP at all: IfcOpenShell says what it makes of it
+        f.seek(0, os.SEEK_END)
+        f.seek(max(0, f.tell() - 256))
+        return not f.read().rstrip().endswith(b"END-ISO-10303-21;")
+
+
 def _open(path):
     import ifcopenshell
 
     if not available():
         raise OSError(f"{path}: IFC4 and later need IfcOpenShell (./relight setup installs it into the build)")
+    if os.path.isfile(str(path)) and _cut_short(str(path)):
+        raise OSError(f"{path}: does not end with END-ISO-10303-21; (the file is cut short)")
     try:
         return ifcopenshell.open(str(path))
     except Exception as error:  # IfcOpenShell raises its own kinds for broken files

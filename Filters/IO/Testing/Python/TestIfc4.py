@@ -142,4 +142,15 @@ try:
 except (OSError, ValueError) as error:
     check("relight_broken_ifc4.ifc" in str(error), f"a truncated IFC4 file is refused, named: {str(error)[:160]}")
 
+# The house cut in half: IfcOpenShell alone would read the first half without a word.
+half = os.path.join(os.environ.get("TMPDIR", "/tmp"), "relight_half_house.ifc")
+with open(IFC4_HOUSE, "rb") as source, open(half, "wb") as target:
+    whole = source.read()
+    target.write(whole[:len(whole) // 2])
+try:
+    relight.import_scene(half, require_lights=False)
+    check(False, "the house cut in half is refused")
+except OSError as error:
+    check("relight_half_house.ifc" in str(error) and "cut short" in str(error), f"the house cut in half: {error}")
+
 finish("TestIfc4")
