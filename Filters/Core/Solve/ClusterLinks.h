@@ -71,12 +71,13 @@ inline void FarDirection(const Vec3& receiver, const Vec3& source, float* u)
 
 /// How fine the links are: a pair of nodes is linked whole when their centres are
 /// farther apart than Separation x the sum of their radii and each faces the other's centre.
+/// The clustered method sets both from ClusteredSettings::Separation, where the default lives.
 struct ClusterLinkOptions
 {
-  double Separation = 3.0;
+  double Separation = 0;
   /// The same for a pair where one side's elements do not all face the other (a corner, a
   /// curved object's rim): farther, as the series errs by up to 1/16 of head-on.
-  double MixedSeparation = 4.5;
+  double MixedSeparation = 0;
   int Samples = 4;     ///< shadow rays per link (0: none)
   /// A partly hidden pair of nodes whose form factor either way exceeds this is split.
   double PartialFactor = 0.01;

@@ -364,38 +364,26 @@ std::vector<Vec3> ModeEmission(const SceneMesh& mesh, const LightGrouping& group
   return wider;
 }
 
-/// What the solve starts from: the cells' emission plus the point lights' reflected direct
-/// light (StandardCombined: at their colors, into the one solution).
-std::vector<Vec3> StartingRadiosity(const SceneMesh& mesh, const std::vector<Vec3>& emission, int solutions,
-  const PointLightSolutions& points)
+/// The point lights' reflected direct light, laid out as the solve's start ([element *
+/// solutions + m]; StandardCombined: at their colors, into the one solution).
+std::vector<Vec3> ReflectedLight(const SceneMesh& mesh, size_t size, int solutions, const PointLightSolutions& points)
 {
-  std::vector<Vec3> start = emission;
+  std::vector<Vec3> reflected(size);
   const int k = static_cast<int>(points.Lights.size());
   if (points.First >= 0)
   {
-    AddReflectedDirect(mesh, points.Irradiance, k, start, solutions, points.First);
-    return start;
+    AddReflectedDirect(mesh, points.Irradiance, k, reflected, solutions, points.First);
+    return reflected;
   }
   for (int e = 0; e < mesh.NumberOfPolygons(); ++e)
   {
     for (int i = 0; i < k; ++i)
     {
       const Vec3 colored = Times(points.Lights[i].Color, points.Irradiance[static_cast<size_t>(e) * k + i]);
-      start[e] += Times(mesh.Reflectance[e], colored);
+      reflected[e] += Times(mesh.Reflectance[e], colored);
     }
   }
-  return start;
-}
-
-/// a - b, element by element (the same size).
-std::vector<Vec3> Minus(const std::vector<Vec3>& a, const std::vector<Vec3>& b)
-{
-  std::vector<Vec3> out(a.size());
-  for (size_t i = 0; i < a.size(); ++i)
-  {
-    out[i] = a[i] - b[i];
-  }
-  return out;
+  return reflected;
 }
 
 Solution SolveInMode(const RadiositySolver& solver, const std::vector<Vec3>& start, int solutions,
@@ -413,10 +401,18 @@ Solution SolveInMode(const RadiositySolver& solver, const std::vector<Vec3>& sta
 Solution SolveFromPointLights(const RadiositySolver& solver, const SceneMesh& mesh, const std::vector<Vec3>& emission,
   const PointLightSolutions& points, int solutions, SolutionMode mode, SolverOptions solving)
 {
-  const std::vector<Vec3> starting = StartingRadiosity(mesh, emission, solutions, points);
+  std::vector<Vec3> reflected = ReflectedLight(mesh, emission.size(), solutions, points);
+  std::vector<Vec3> starting = emission;
+  for (size_t i = 0; i < starting.size(); ++i)
+  {
+    starting[i] += reflected[i];
+  }
   const bool tell = mode != SolutionMode::StandardSeparate &&
     (solving.SolverMethod == SolverMethod::Auto || solving.SolverMethod == SolverMethod::Clustered);
-  const std::vector<Vec3> reflected = tell ? Minus(starting, emission) : std::vector<Vec3>();
+  if (!tell)
+  {
+    std::vector<Vec3>().swap(reflected);
+  }
   solving.ReflectedStart = tell ? &reflected : nullptr;
   return SolveInMode(solver, starting, solutions, mode, solving, mesh.NumberOfPolygons());
 }

@@ -159,7 +159,7 @@ struct SolverStatistics
   int ReceivingElements = 0; ///< the elements this rank received for
   long long OwnRays = 0;     ///< the rays this rank cast (RayCount is the sum over ranks)
   /// Where the time went, step by step in the order each first ran ("direct light",
-  /// "links", "bounces", "final gather", ...): a step run again, as each solve of the
+  /// "links", "bounces", "gather: ...", ...): a step run again, as each solve of the
   /// StandardSeparate mode runs them, adds to its own.
   struct Step
   {

@@ -83,18 +83,20 @@ std::vector<char> PointsInRoom(
     Visibility::Hit floor, top;
     const bool below = rays.Intersect(from, axis * -1.0, floor) && floor.Polygon >= 0 &&
       floor.Distance <= 1.5 * height + lift && Dot(normals[floor.Polygon], axis) > 0;
-    const bool above =
-      !ceiling || (rays.Intersect(from, axis, top) && top.Polygon >= 0 && Dot(normals[top.Polygon], axis) < 0);
-    keep[p] = below && above;
+    keep[p] = below &&
+      (!ceiling || (rays.Intersect(from, axis, top) && top.Polygon >= 0 && Dot(normals[top.Polygon], axis) < 0));
   }
   return keep;
 }
 
 WorkPlaneGrid KeptPoints(const WorkPlaneGrid& grid, const std::vector<char>& keep)
 {
-  WorkPlaneGrid kept = grid;
-  kept.Points.clear();
-  kept.Quads.clear();
+  WorkPlaneGrid kept;
+  kept.Nu = grid.Nu;
+  kept.Nv = grid.Nv;
+  kept.Normal = grid.Normal;
+  kept.SpacingU = grid.SpacingU;
+  kept.SpacingV = grid.SpacingV;
   std::vector<int> index(grid.Points.size(), -1);
   for (size_t p = 0; p < grid.Points.size(); ++p)
   {
